@@ -1,0 +1,22 @@
+# All third-party libraries come from Debian packages (see scripts/setup); nothing is
+# downloaded at build time.
+find_package(MPI REQUIRED COMPONENTS C CXX)
+find_package(PkgConfig REQUIRED)
+# PETSc's pkg-config file carries no MPI include path: link MPI::MPI_CXX alongside it.
+pkg_check_modules(PETSC REQUIRED IMPORTED_TARGET PETSc)
+
+# python3-h5py pulls in the serial HDF5 runtime; PETSc loads the parallel one. Both must
+# be the same library, so insist on the parallel build.
+set(HDF5_PREFER_PARALLEL TRUE)
+find_package(HDF5 REQUIRED COMPONENTS C)
+if(NOT HDF5_IS_PARALLEL)
+  message(FATAL_ERROR "cosim needs the parallel HDF5 (libhdf5-openmpi-dev); found a serial one")
+endif()
+
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(yaml-cpp REQUIRED)
+find_package(cppzmq REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(spdlog REQUIRED)
+find_package(GTest REQUIRED)
+find_package(benchmark REQUIRED)

@@ -1,0 +1,84 @@
+// The run's HDF5 file: what a run leaves behind, and what --resume starts from.
+//
+// Layout (every series is a chunked, extendible dataset; one row per written window):
+//   /run                 attrs: scene_text, scene_file, git_hash, cosim_version,
+//                        protocol_version, started (ISO time), wall_seconds, status
+//                        ("running", "finished", "failed: ...", "interrupted")
+//   /bodies/<name>/      time (n), position (n x 3), orientation (n x 4, w x y z),
+//                        velocity (n x 3), angular_velocity (n x 3), force (n x 3),
+//                        torque (n x 3)
+//   /coupling/           window (n, uint64), time (n), iterations (n), residual (n),
+//                        wall_seconds (n): the whole window
+//   /coupling/participants/<name>/  wall_seconds (n), substeps (n)
+//   /checkpoint/         attrs: window (last committed window index + 1 = next window),
+//                        time; datasets poses (b x 13), forces (b x 6), and
+//                        /checkpoint/participants/<name>/state (opaque float64 array)
+// After every committed window the file is flushed, so a crash loses nothing committed.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cosim::output {
+
+struct RunInfo {
+  std::string scene_text;
+  std::string scene_file;
+  std::string git_hash;
+  std::string cosim_version;
+  int protocol_version = 0;
+};
+
+// One committed window, as the coupler writes it.
+struct WindowRecord {
+  std::uint64_t window = 0;
+  double time = 0.0;                      // end of the window
+  int iterations = 0;
+  double residual = 0.0;
+  double wall_seconds = 0.0;
+  std::vector<double> poses;              // bodies x 13, row-major (scene body order)
+  std::vector<double> forces;             // bodies x 6
+  std::map<std::string, double> participant_wall_seconds;
+  std::map<std::string, double> participant_substeps;
+};
+
+struct Checkpoint {
+  std::uint64_t next_window = 0;          // the window to run next
+  double time = 0.0;                      // its start time
+  std::vector<double> poses;              // bodies x 13 at `time`
+  std::vector<double> forces;             // bodies x 6 at `time`
+  std::map<std::string, std::vector<double>> states;  // participant -> opaque state
+};
+
+class RunFile {
+ public:
+  // Creates (truncates) path and writes /run.
+  static RunFile create(const std::filesystem::path& path, const RunInfo& info,
+                        const std::vector<std::string>& bodies,
+                        const std::vector<std::string>& participants);
+  // Opens an existing run file for --resume: reads /run and /checkpoint, cuts every series
+  // back to the checkpoint time so the resumed run appends exactly after it.
+  static RunFile resume(const std::filesystem::path& path);
+
+  RunFile(RunFile&&) noexcept;
+  RunFile& operator=(RunFile&&) noexcept;
+  ~RunFile();  // closes; the file is always readable afterwards
+
+  const RunInfo& info() const;
+  const Checkpoint& checkpoint() const;  // resume(): what was read; throws if none
+
+  void append(const WindowRecord& w);    // writes one row everywhere and flushes
+  void write_checkpoint(const Checkpoint& c);  // replaces /checkpoint, flushes
+  void set_status(const std::string& status, double wall_seconds);
+
+ private:
+  struct Impl;
+  explicit RunFile(std::unique_ptr<Impl>);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cosim::output

@@ -1,0 +1,127 @@
+// The scene: one YAML file describes a whole run. Every program reads it through
+// load_scene(), so a key means the same thing everywhere and a typo is caught once.
+// Units are SI throughout (m, kg, s, N, Pa).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+namespace cosim::scene {
+
+using Vec3 = std::array<double, 3>;
+using Quat = std::array<double, 4>;  // w, x, y, z
+
+enum class Scheme { SerialExplicit, ParallelExplicit, SerialImplicit, ParallelImplicit };
+enum class Acceleration { None, Constant, Aitken, IqnIls };
+enum class Transport { Ipc, Tcp };
+
+// What a participant puts on the wire or takes from it.
+enum class Data : std::uint32_t { Poses = 1u << 0, Forces = 1u << 1, Fields = 1u << 2 };
+using DataSet = std::uint32_t;  // bit set of Data
+constexpr bool has(DataSet set, Data d) { return (set & static_cast<std::uint32_t>(d)) != 0; }
+
+enum class Effect { Gravity, Buoyancy, Hydrodynamics, Contact, Friction, RarefiedGas, Tracers };
+
+struct Time {
+  double end = 0.0;
+};
+
+struct Coupling {
+  double window = 0.0;                     // coupling window length W [s]
+  Scheme scheme = Scheme::SerialImplicit;
+  Acceleration acceleration = Acceleration::IqnIls;
+  double relaxation = 0.5;                 // constant factor, or Aitken's first factor
+  int max_iterations = 50;
+  double tolerance = 1e-6;                 // relative residual of the exchanged data
+  Transport transport = Transport::Ipc;
+  double timeout = 60.0;                   // seconds a participant may take to answer
+};
+
+struct Output {
+  std::string file = "run.h5";             // relative to the working directory
+  int every = 1;                           // write body series every N windows
+  int checkpoint_every = 10;               // checkpoint every N windows
+};
+
+struct Domain {
+  Vec3 min{};
+  Vec3 max{};
+};
+
+enum class ShapeType { Sphere, Ellipsoid, Box, Cylinder, Capsule, Plane, Mesh };
+
+struct Shape {
+  ShapeType type = ShapeType::Sphere;
+  double radius = 0.0;                     // sphere, cylinder, capsule
+  Vec3 radii{};                            // ellipsoid semi-axes
+  Vec3 half_extents{};                     // box
+  double height = 0.0;                     // cylinder, capsule: length of the axis (body z)
+  Vec3 normal{0, 0, 1};                    // plane: outward normal, through the body position
+  std::filesystem::path file;              // mesh: STL or OBJ, resolved against the scene dir
+};
+
+struct Material {
+  double density = 0.0;                    // kg/m^3
+  double restitution = 0.0;
+  double friction = 0.0;                   // Coulomb coefficient
+};
+
+struct Body {
+  std::string name;
+  Shape shape;
+  Material material;
+  bool fixed = false;
+  Vec3 position{};
+  Quat orientation{1, 0, 0, 0};
+  Vec3 velocity{};
+  Vec3 angular_velocity{};
+};
+
+// One section per participant. The built-in programs are `rigidbody`, `fluid` and
+// `tracker`; any other name is an external program that speaks the protocol and must say
+// what it provides and needs. `options` is passed verbatim to the program, which validates
+// it through the same Reader (so its errors name file, line and key too).
+struct Participant {
+  std::string name;
+  std::vector<std::string> command;        // empty: the built-in program of that name
+  int ranks = 1;                           // > 1: started under mpirun -n ranks
+  double dt = 0.0;                         // its own time step; subcycles to the window end
+  DataSet provides = 0;
+  DataSet needs = 0;
+  YAML::Node options;                      // program-specific keys
+  int line = 0;                            // 1-based line of the section in the scene file
+};
+
+struct Scene {
+  std::filesystem::path file;              // where it was read from ("<string>" if not a file)
+  std::string text;                        // the YAML exactly as read, stored in every run file
+  Time time;
+  Coupling coupling;
+  Output output;
+  Vec3 gravity{0, 0, -9.81};
+  Domain domain;
+  std::vector<Body> bodies;
+  std::vector<Effect> effects;
+  std::vector<Participant> participants;   // in file order
+
+  bool has_effect(Effect e) const;
+  const Participant* participant(const std::string& name) const;
+  std::size_t windows() const;             // time.end / coupling.window, exact by validation
+};
+
+// Reads and validates. Throws SceneError (see error.hpp) naming file, line, key and value.
+Scene load_scene(const std::filesystem::path& file);
+Scene load_scene_from_string(const std::string& text, const std::filesystem::path& file = "<string>");
+
+const char* to_string(Scheme);
+const char* to_string(Acceleration);
+const char* to_string(Effect);
+
+}  // namespace cosim::scene
