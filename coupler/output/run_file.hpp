@@ -1,19 +1,26 @@
 // The run's HDF5 file: what a run leaves behind, and what --resume starts from.
 //
 // Layout (every series is a chunked, extendible dataset; one row per written window):
-//   /run                 attrs: scene_text, scene_file, git_hash, cosim_version,
-//                        protocol_version, started (ISO time), wall_seconds, status
-//                        ("running", "finished", "failed: ...", "interrupted")
+//   /run                 attrs: scene_file, git_hash, cosim_version, protocol_version,
+//                        started (ISO 8601 UTC), wall_seconds, status ("running", "finished",
+//                        "failed: ...", "interrupted"), body_names, participant_names
+//                        (string lists, scene order); dataset scene_text (scalar string:
+//                        a scene can exceed the 64 KiB attribute limit)
 //   /bodies/<name>/      time (n), position (n x 3), orientation (n x 4, w x y z),
 //                        velocity (n x 3), angular_velocity (n x 3), force (n x 3),
 //                        torque (n x 3)
-//   /coupling/           window (n, uint64), time (n), iterations (n), residual (n),
+//   /coupling/           window (n, uint64), time (n), iterations (n, int32), residual (n),
 //                        wall_seconds (n): the whole window
-//   /coupling/participants/<name>/  wall_seconds (n), substeps (n)
+//   /coupling/participants/<name>/  wall_seconds (n), substeps (n); NaN where a window's
+//                        record had no value for that participant
 //   /checkpoint/         attrs: window (last committed window index + 1 = next window),
 //                        time; datasets poses (b x 13), forces (b x 6), and
 //                        /checkpoint/participants/<name>/state (opaque float64 array)
-// After every committed window the file is flushed, so a crash loses nothing committed.
+// Strings are variable-length UTF-8. After every committed window the file is flushed, so
+// a crash (even SIGKILL) after append() returns loses nothing committed. A crash inside
+// append() can leave some series one row longer than others: resume() cuts them back and
+// readers should use the shortest length.
+// Errors are std::runtime_error naming the file and the HDF5 object.
 #pragma once
 
 #include <cstdint>
@@ -72,7 +79,11 @@ class RunFile {
   const Checkpoint& checkpoint() const;  // resume(): what was read; throws if none
 
   void append(const WindowRecord& w);    // writes one row everywhere and flushes
-  void write_checkpoint(const Checkpoint& c);  // replaces /checkpoint, flushes
+  // Replaces /checkpoint: writes /checkpoint_new, flushes, swaps it in, flushes. Known
+  // hole: HDF5 1.10 shrinks the file (ftruncate) before rewriting its superblock when the
+  // old checkpoint sat at the end, so a SIGKILL exactly then leaves a file HDF5 refuses to
+  // open ("truncated file"; extending it to the superblock's end-of-file address repairs it).
+  void write_checkpoint(const Checkpoint& c);
   void set_status(const std::string& status, double wall_seconds);
 
  private:

@@ -91,15 +91,22 @@ struct Message {
 
   const Array* find(Tag tag) const;   // first array with this tag, or nullptr
   const Array& get(Tag tag) const;    // throws ProtocolError if missing
+  std::vector<const Array*> all(Tag tag) const;  // every array with this tag, in order
 };
 
-// Header frame + one frame per array. The encoder copies once into each frame.
+// Header frame + one frame per array. The encoder copies once into each frame and applies
+// the decoder's rules first, so an invalid message fails at its sender.
 std::vector<zmq::message_t> encode(const Message& m);
+// The same for a header and arrays kept apart (sending one payload under another name).
+std::vector<zmq::message_t> encode(const Header& header, std::span<const Array> arrays);
 // Validates magic, version, type, name, frame count, sizes against the header, dtype,
 // and finite values in Poses/Forces/Stats arrays.
 Message decode(std::span<const zmq::message_t> frames);
 // Same checks on raw buffers (used by the fuzz test and the decoder itself).
 Message decode(std::span<const std::span<const std::byte>> frames);
+
+// Throws ProtocolError unless name is 1 to kNameSize - 1 characters of [A-Za-z0-9_.-].
+void check_participant_name(std::string_view name);
 
 const char* to_string(Type);
 const char* to_string(Tag);

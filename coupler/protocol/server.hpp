@@ -19,9 +19,12 @@ class Server {
   // The bound address, with the chosen port for tcp; give this to participants.
   const std::string& endpoint() const { return endpoint_; }
 
+  // Sends m with its participant field set to the addressee. A name that is not connected
+  // throws ProtocolError.
   void send(const std::string& participant, const Message& m);
-  // Next message from any participant, or nullopt after timeout. The ZeroMQ identity must
-  // match the name in the header, else ProtocolError.
+  // Next message from any participant, or nullopt after timeout (or sooner, when a signal
+  // interrupts the wait). The ZeroMQ identity must match the name in the header, else
+  // ProtocolError.
   std::optional<Message> receive(std::chrono::milliseconds timeout);
 
  private:

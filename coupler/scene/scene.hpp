@@ -109,6 +109,7 @@ struct Scene {
   Domain domain;
   std::vector<Body> bodies;
   std::vector<Effect> effects;
+  int effects_line = 0;                    // 1-based line of `effects`: plan errors about effects point here
   std::vector<Participant> participants;   // in file order
 
   bool has_effect(Effect e) const;

@@ -1,0 +1,72 @@
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <zmq_addon.hpp>
+
+#include "cases.hpp"
+
+namespace cosim::bench {
+namespace {
+
+// Echoes each frame from a buffer of its own (a solver's outputs), copied once into the
+// frame like encode() does; an empty frame ends it.
+void peer(const std::string& endpoint, const std::string& name, std::size_t doubles) {
+  zmq::context_t context;
+  zmq::socket_t socket(context, zmq::socket_type::dealer);
+  socket.set(zmq::sockopt::routing_id, name);
+  socket.set(zmq::sockopt::linger, 1000);
+  socket.connect(endpoint);
+  const std::vector<double> outputs(doubles, 2.0);
+  socket.send(zmq::message_t(), zmq::send_flags::none);  // lets the router learn this name
+  for (zmq::message_t in; socket.recv(in) && in.size() > 0;)
+    socket.send(zmq::message_t(outputs.data(), outputs.size() * sizeof(double)),
+                zmq::send_flags::none);
+}
+
+}  // namespace
+
+void raw(benchmark::State& state, Case c) {
+  zmq::context_t context;
+  zmq::socket_t router(context, zmq::socket_type::router);
+  router.set(zmq::sockopt::linger, 0);
+  router.bind(bind_address(c.transport));
+  const std::string endpoint = router.get(zmq::sockopt::last_endpoint);
+
+  std::vector<std::jthread> threads;
+  for (int i = 0; i < c.participants; ++i)
+    threads.emplace_back(peer, endpoint, "peer" + std::to_string(i), c.doubles);
+  std::vector<zmq::message_t> frames;
+  std::vector<std::string> ids;
+  for (int i = 0; i < c.participants; ++i) {
+    frames.clear();
+    (void)zmq::recv_multipart(router, std::back_inserter(frames));
+    ids.push_back(frames.front().to_string());
+  }
+
+  const std::vector<double> inputs(c.doubles, 1.0);
+  const std::size_t bytes = inputs.size() * sizeof(double);
+  for (auto _ : state) {
+    for (const auto& id : ids) {
+      router.send(zmq::buffer(id), zmq::send_flags::sndmore);
+      router.send(zmq::message_t(inputs.data(), bytes), zmq::send_flags::none);
+    }
+    for (int i = 0; i < c.participants; ++i) {
+      frames.clear();
+      (void)zmq::recv_multipart(router, std::back_inserter(frames));
+      if (frames.size() != 2 || frames[1].size() != bytes)
+        throw std::runtime_error("raw reply of the wrong size");
+    }
+  }
+
+  for (const auto& id : ids) {
+    router.send(zmq::buffer(id), zmq::send_flags::sndmore);
+    router.send(zmq::message_t(), zmq::send_flags::none);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * window_bytes(c)));
+}
+
+}  // namespace cosim::bench

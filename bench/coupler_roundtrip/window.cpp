@@ -1,0 +1,83 @@
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cases.hpp"
+#include "protocol/client.hpp"
+#include "protocol/server.hpp"
+
+namespace cosim::bench {
+namespace {
+
+using namespace protocol;
+constexpr std::chrono::seconds kTimeout(30);
+
+Message of_type(Type type) {
+  Message m;
+  m.header.type = type;
+  return m;
+}
+
+// Answers every Advance with a Result of the same size, as a solver would after its
+// substeps; the inputs it was sent become its outputs so that no extra copy is timed.
+void participant(const std::string& endpoint, const std::string& name) {
+  Client client(endpoint, name);
+  client.hello(0, 0);
+  for (;;) {
+    Message in = client.wait_for({Type::Advance, Type::Stop}, kTimeout);
+    if (in.header.type == Type::Stop) break;
+    Message out = of_type(Type::Result);
+    out.header.window = in.header.window;
+    out.header.t0 = in.header.t0;
+    out.header.t1 = in.header.t1;
+    out.arrays.push_back(std::move(in.arrays.front()));
+    out.arrays.push_back(Array::of(Tag::Stats, 1, 2, {1.0, 0.0}));
+    client.reply(std::move(out));
+  }
+  client.reply(of_type(Type::Bye));
+}
+
+Message expect(Server& server, Type type) {
+  auto m = server.receive(kTimeout);
+  if (!m) throw std::runtime_error(std::string("no ") + to_string(type) + " within the timeout");
+  if (m->header.type != type)
+    throw std::runtime_error(std::string("expected ") + to_string(type) + ", received " +
+                             to_string(m->header.type));
+  return std::move(*m);
+}
+
+}  // namespace
+
+void window(benchmark::State& state, Case c) {
+  Server server(bind_address(c.transport));
+  std::vector<std::string> names;
+  std::vector<std::jthread> threads;
+  for (int i = 0; i < c.participants; ++i) {
+    names.push_back("solver" + std::to_string(i));
+    threads.emplace_back(participant, server.endpoint(), names.back());
+  }
+  for (int i = 0; i < c.participants; ++i) expect(server, Type::Hello);
+  for (const auto& name : names) server.send(name, of_type(Type::Init));
+
+  Message advance = of_type(Type::Advance);
+  advance.arrays.push_back(payload(c.doubles));
+  for (auto _ : state) {
+    for (const auto& name : names) server.send(name, advance);
+    for (int i = 0; i < c.participants; ++i) {
+      const Message result = expect(server, Type::Result);
+      if (result.arrays.front().values.size() != c.doubles)
+        throw std::runtime_error("result of the wrong size");
+    }
+    advance.header.window += 1;
+    advance.header.t0 = advance.header.t1;
+    advance.header.t1 += 0.01;
+  }
+
+  for (const auto& name : names) server.send(name, of_type(Type::Stop));
+  for (int i = 0; i < c.participants; ++i) expect(server, Type::Bye);
+  state.SetItemsProcessed(state.iterations());
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * window_bytes(c)));
+}
+
+}  // namespace cosim::bench

@@ -1,0 +1,41 @@
+// Child processes of the launcher. Each participant runs in its own process group, so a
+// Ctrl-C at the terminal reaches only the coupler, which then shuts the participants down
+// in order; and it dies with the coupler (PR_SET_PDEATHSIG), so nothing is left orphaned
+// even if the coupler itself is killed.
+#pragma once
+
+#include <sys/types.h>
+
+#include <chrono>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cosim::launcher {
+
+class Process {
+ public:
+  // Starts argv[0] (resolved with PATH) with `env` added to this process's environment.
+  Process(std::string name, const std::vector<std::string>& argv,
+          const std::map<std::string, std::string>& env);
+  Process(Process&&) noexcept;
+  Process& operator=(Process&&) = delete;
+  ~Process();  // kills the group if still running
+
+  const std::string& name() const { return name_; }
+  pid_t pid() const { return pid_; }
+
+  // nullopt while running; otherwise how it ended ("exited with status 3",
+  // "killed by signal 9 (Killed)").
+  std::optional<std::string> poll();
+  // Waits up to `grace` for a voluntary exit, then SIGTERM, then SIGKILL to the group.
+  void stop(std::chrono::milliseconds grace);
+
+ private:
+  std::string name_;
+  pid_t pid_ = -1;
+  std::optional<std::string> ended_;
+};
+
+}  // namespace cosim::launcher

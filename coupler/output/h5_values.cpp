@@ -1,0 +1,175 @@
+#include "output/h5_values.hpp"
+
+#include <cstdint>
+#include <type_traits>
+
+#include "output/h5_handle.hpp"
+#include "output/h5_types.hpp"
+
+namespace cosim::output {
+namespace {
+
+std::string attribute_where(hid_t object, const std::string& name) {
+  return "attribute " + name + " of " + path_of(object);
+}
+
+std::string dataset_where(hid_t group, const std::string& name) {
+  return "dataset " + child_path(group, name);
+}
+
+Handle simple_space(const std::vector<hsize_t>& dims, const std::string& where) {
+  return Handle(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose,
+                "make dataspace for " + where);
+}
+
+Handle scalar_space(const std::string& where) {
+  return Handle(H5Screate(H5S_SCALAR), H5Sclose, "make dataspace for " + where);
+}
+
+std::size_t points(hid_t space, const std::string& where) {
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  if (n < 0) fail("size of " + where);
+  return static_cast<std::size_t>(n);
+}
+
+void write_attribute_raw(hid_t object, const std::string& name, hid_t type, hid_t space,
+                         const void* data) {
+  const std::string where = attribute_where(object, name);
+  const htri_t exists = H5Aexists(object, name.c_str());
+  if (exists < 0) fail("look up " + where);
+  if (exists > 0) check(H5Adelete(object, name.c_str()), "replace " + where);
+  Handle attr(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+              "create " + where);
+  check(H5Awrite(attr.get(), type, data), "write " + where);
+}
+
+std::size_t attribute_points(hid_t attr, const std::string& where) {
+  Handle space(H5Aget_space(attr), H5Sclose, "dataspace of " + where);
+  return points(space.get(), where);
+}
+
+Handle open_attribute(hid_t object, const std::string& name, const std::string& where) {
+  return Handle(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose, "open " + where);
+}
+
+// Copies HDF5-allocated variable-length strings and hands their memory back to HDF5.
+std::vector<std::string> take_strings(std::vector<char*>& raw, hid_t type,
+                                      const std::string& where) {
+  std::vector<std::string> out;
+  out.reserve(raw.size());
+  for (const char* s : raw) out.emplace_back(s != nullptr ? s : "");
+  if (!raw.empty()) {
+    Handle space = simple_space({raw.size()}, where);
+    check(H5Dvlen_reclaim(type, space.get(), H5P_DEFAULT, raw.data()), "free strings of " + where);
+  }
+  return out;
+}
+
+}  // namespace
+
+template <class T>
+void write_attribute(hid_t object, const std::string& name, T value) {
+  write_attribute_raw(object, name, native_type<T>(), scalar_space(name).get(), &value);
+}
+
+void write_attribute(hid_t object, const std::string& name, const std::string& value) {
+  const char* data = value.c_str();
+  write_attribute_raw(object, name, utf8_string_type().get(), scalar_space(name).get(), &data);
+}
+
+void write_attribute(hid_t object, const std::string& name,
+                     const std::vector<std::string>& values) {
+  std::vector<const char*> data;
+  for (const auto& v : values) data.push_back(v.c_str());
+  // An empty list still needs a valid buffer pointer.
+  if (data.empty()) data.push_back(nullptr);
+  write_attribute_raw(object, name, utf8_string_type().get(),
+                      simple_space({values.size()}, name).get(), data.data());
+}
+
+template <class T>
+T read_attribute(hid_t object, const std::string& name) {
+  const std::string where = attribute_where(object, name);
+  Handle attr = open_attribute(object, name, where);
+  const std::size_t n = attribute_points(attr.get(), where);
+  if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+    Handle type = utf8_string_type();
+    std::vector<char*> raw(n);
+    if (n > 0) check(H5Aread(attr.get(), type.get(), raw.data()), "read " + where);
+    return take_strings(raw, type.get(), where);
+  } else {
+    if (n != 1) throw ObjectError(where + " is not a single value");
+    if constexpr (std::is_same_v<T, std::string>) {
+      return read_attribute<std::vector<std::string>>(object, name).front();
+    } else {
+      T value{};
+      check(H5Aread(attr.get(), native_type<T>(), &value), "read " + where);
+      return value;
+    }
+  }
+}
+
+template void write_attribute<double>(hid_t, const std::string&, double);
+template void write_attribute<int>(hid_t, const std::string&, int);
+template void write_attribute<std::uint64_t>(hid_t, const std::string&, std::uint64_t);
+template double read_attribute<double>(hid_t, const std::string&);
+template int read_attribute<int>(hid_t, const std::string&);
+template std::uint64_t read_attribute<std::uint64_t>(hid_t, const std::string&);
+template std::string read_attribute<std::string>(hid_t, const std::string&);
+template std::vector<std::string> read_attribute<std::vector<std::string>>(hid_t,
+                                                                          const std::string&);
+
+void write_doubles(hid_t group, const std::string& name, const std::vector<double>& values,
+                   hsize_t columns) {
+  const std::string where = dataset_where(group, name);
+  if (columns == 0 || values.size() % columns != 0) {
+    throw ObjectError(where + ": " + std::to_string(values.size()) +
+                    " values do not make rows of " + std::to_string(columns));
+  }
+  std::vector<hsize_t> dims{values.size() / columns};
+  if (columns > 1) dims.push_back(columns);
+  Handle space = simple_space(dims, where);
+  Handle ds(H5Dcreate2(group, name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
+                       H5P_DEFAULT, H5P_DEFAULT),
+            H5Dclose, "create " + where);
+  if (!values.empty()) {
+    check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+          "write " + where);
+  }
+}
+
+std::vector<double> read_doubles(hid_t group, const std::string& name) {
+  const std::string where = dataset_where(group, name);
+  Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
+  Handle space(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
+  std::vector<double> values(points(space.get(), where));
+  if (!values.empty()) {
+    check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+          "read " + where);
+  }
+  return values;
+}
+
+void write_text(hid_t group, const std::string& name, const std::string& text) {
+  const std::string where = dataset_where(group, name);
+  Handle type = utf8_string_type();
+  Handle ds(H5Dcreate2(group, name.c_str(), type.get(), scalar_space(where).get(), H5P_DEFAULT,
+                       H5P_DEFAULT, H5P_DEFAULT),
+            H5Dclose, "create " + where);
+  const char* data = text.c_str();
+  check(H5Dwrite(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &data), "write " + where);
+}
+
+std::string read_text(hid_t group, const std::string& name) {
+  const std::string where = dataset_where(group, name);
+  Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
+  Handle space(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
+  if (points(space.get(), where) != 1) throw ObjectError(where + " is not a single string");
+  Handle type = utf8_string_type();
+  std::vector<char*> raw(1);
+  check(H5Dread(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()),
+        "read " + where);
+  return take_strings(raw, type.get(), where).front();
+}
+
+}  // namespace cosim::output

@@ -1,0 +1,43 @@
+// A time series stored as a chunked dataset with an unlimited first dimension: one row per
+// committed window, grown by one row at a time (n, or n x columns when columns > 1).
+#pragma once
+
+#include <hdf5.h>
+
+#include <string>
+#include <vector>
+
+#include "output/h5_handle.hpp"
+#include "output/h5_types.hpp"
+
+namespace cosim::output {
+
+class Series {
+ public:
+  static Series create(hid_t group, const std::string& name, hsize_t columns, hid_t type);
+  static Series open(hid_t group, const std::string& name);
+
+  // Adds one row of `columns()` values.
+  template <class T>
+  void append(const T* row) {
+    append_raw(row, native_type<T>());
+  }
+  // Keeps the first `rows` rows (no more than there are); the next append writes row `rows`.
+  void truncate(hsize_t rows);
+  std::vector<double> read_all() const;
+
+  hsize_t rows() const { return rows_; }
+  hsize_t columns() const { return columns_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  Series(Handle dataset, std::string path, hsize_t rows, hsize_t columns);
+  void append_raw(const void* row, hid_t type);
+
+  Handle dataset_;
+  std::string path_;
+  hsize_t rows_ = 0;
+  hsize_t columns_ = 1;
+};
+
+}  // namespace cosim::output

@@ -1,0 +1,54 @@
+// What a program must offer to take part in a coupled run. The adapter of each program
+// implements this over its library; run_participant() does all the talking.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace cosim::participant {
+
+struct Window {
+  std::uint64_t index = 0;
+  std::uint32_t iteration = 1;  // > 1: an implicit scheme repeats the window
+  double t0 = 0.0;
+  double t1 = 0.0;
+};
+
+// The coupler's values at the window's start and end, bodies in scene order (poses
+// b x 13, forces b x 6, row-major). A solver evaluates them at an instant s in [t0, t1]
+// by linear interpolation (lerp(), below): constant in explicit schemes, where start and
+// end are equal, and second order in implicit ones.
+struct Inputs {
+  std::vector<double> poses_start, poses_end;
+  std::vector<double> forces_start, forces_end;
+};
+
+// The value at s in [w.t0, w.t1] of an input that goes linearly from start to end.
+inline double lerp(double start, double end, const Window& w, double s) {
+  return w.t1 > w.t0 ? start + (s - w.t0) / (w.t1 - w.t0) * (end - start) : end;
+}
+
+struct Outputs {
+  std::vector<double> poses;   // if the solver provides poses
+  std::vector<double> forces;  // if the solver provides forces
+  double substeps = 0;
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  // Set up from the scene (its own section: scene.participant(name)); `state` is
+  // non-empty when resuming a run. Returns the outputs at the start time.
+  virtual Outputs initialise(const scene::Scene& scene, const std::string& name,
+                             const std::vector<double>& poses, const std::vector<double>& state) = 0;
+  // From the state at w.t0, subcycle to exactly w.t1.
+  virtual Outputs advance(const Window& w, const Inputs& in) = 0;
+  // Everything needed to continue from here: used for rollback and checkpoints.
+  virtual std::vector<double> state() const = 0;
+  virtual void restore(const std::vector<double>& state) = 0;
+};
+
+}  // namespace cosim::participant

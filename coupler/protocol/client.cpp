@@ -1,0 +1,91 @@
+#include "protocol/client.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include <zmq_addon.hpp>
+
+#include "protocol/socket.hpp"
+
+namespace cosim::protocol {
+namespace {
+
+// Long enough for a last Bye or Error to leave, short enough that exit never hangs.
+constexpr std::chrono::milliseconds kLinger(1000);
+
+std::string one_of(std::initializer_list<Type> types) {
+  std::string out;
+  for (Type t : types) out += (out.empty() ? "" : " or ") + std::string(to_string(t));
+  return out;
+}
+
+}  // namespace
+
+Client::Client(const std::string& endpoint, const std::string& name)
+    : socket_(context_, zmq::socket_type::dealer), name_(name) {
+  check_participant_name(name);
+  socket_.set(zmq::sockopt::routing_id, name);
+  socket::configure(socket_, kLinger);
+  try {
+    socket_.connect(endpoint);
+  } catch (const zmq::error_t& e) {
+    throw ProtocolError("participant '" + name + "' cannot connect to '" + endpoint +
+                        "': " + e.what());
+  }
+}
+
+std::optional<Client> Client::from_environment() {
+  const char* endpoint = std::getenv(kEndpointEnv);
+  const char* name = std::getenv(kParticipantEnv);
+  if (!endpoint && !name) return std::nullopt;
+  if (!endpoint || !name)
+    throw ProtocolError(std::string(endpoint ? kEndpointEnv : kParticipantEnv) +
+                        " is set but " + (endpoint ? kParticipantEnv : kEndpointEnv) +
+                        " is not");
+  return Client(endpoint, name);
+}
+
+Message Client::hello(std::uint32_t provides, std::uint32_t needs, std::uint32_t ranks) {
+  Message m;
+  m.header.type = Type::Hello;
+  m.header.provides = provides;
+  m.header.needs = needs;
+  m.header.ranks = ranks;
+  reply(std::move(m));
+  return wait_for({Type::Init});
+}
+
+Message Client::wait_for(std::initializer_list<Type> types, std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  auto left = timeout;
+  while (!socket::readable(socket_, left)) {  // a signal ends a wait early: wait on
+    left = std::chrono::ceil<std::chrono::milliseconds>(deadline -
+                                                         std::chrono::steady_clock::now());
+    if (left <= left.zero())
+      throw ProtocolError("participant '" + name_ + "' waited " +
+                          std::to_string(timeout.count()) + " ms for " + one_of(types) +
+                          " and the coupler sent nothing");
+  }
+  Message m = decode(socket::receive(socket_));
+  if (std::ranges::find(types, m.header.type) != types.end()) return m;
+  if (m.header.type == Type::Abort) {
+    const Array* why = m.find(Tag::Text);
+    throw Aborted("the coupler aborted the run" + (why ? ": " + why->bytes : std::string()));
+  }
+  throw ProtocolError("participant '" + name_ + "' expected " + one_of(types) +
+                      " from the coupler and received " + to_string(m.header.type));
+}
+
+void Client::reply(Message m) {
+  m.header.participant = name_;
+  zmq::send_multipart(socket_, encode(m));
+}
+
+void Client::error(const std::string& text) {
+  Message m;
+  m.header.type = Type::Error;
+  m.arrays.push_back(Array::text(text));
+  reply(std::move(m));
+}
+
+}  // namespace cosim::protocol

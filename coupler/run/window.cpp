@@ -1,0 +1,161 @@
+#include "run/window.hpp"
+
+#include <algorithm>
+
+#include "run/failure.hpp"
+
+namespace cosim::run {
+namespace {
+
+double relative(const Eigen::VectorXd& change, const Eigen::VectorXd& value) {
+  const double c = change.norm();
+  return c == 0.0 ? 0.0 : c / std::max(value.norm(), 1e-300);
+}
+
+Eigen::VectorXd stack(const Exchange& e) {
+  Eigen::VectorXd x(e.poses.size() + e.forces.size());
+  x << e.poses, e.forces;
+  return x;
+}
+
+Exchange unstack(const Eigen::VectorXd& x, Eigen::Index n_poses) {
+  return {x.head(n_poses), x.tail(x.size() - n_poses)};
+}
+
+// Each block divided by its norm, so poses in metres and forces in newtons weigh alike.
+Eigen::VectorXd block_weights(const Exchange& e) {
+  const auto weight = [](const Eigen::VectorXd& v) { return v.norm() > 0 ? 1.0 / v.norm() : 1.0; };
+  Eigen::VectorXd w(e.poses.size() + e.forces.size());
+  w << Eigen::VectorXd::Constant(e.poses.size(), weight(e.poses)),
+      Eigen::VectorXd::Constant(e.forces.size(), weight(e.forces));
+  return w;
+}
+
+}  // namespace
+
+WindowRunner::WindowRunner(Peers& peers, Roles roles, const scene::Coupling& coupling)
+    : peers_(peers),
+      roles_(std::move(roles)),
+      coupling_(coupling),
+      accelerator_(coupling::make_accelerator(coupling.acceleration, coupling.relaxation)) {}
+
+WindowResult WindowRunner::advance(std::uint64_t window, double t0, double t1,
+                                   const Exchange& start) {
+  const Span s{window, t0, t1};
+  // With nobody on one side there is no loop to close: one pass is exact.
+  const bool closed = !roles_.pose_providers.empty() && !roles_.force_providers.empty();
+  switch (coupling_.scheme) {
+    case scene::Scheme::SerialExplicit: return serial_explicit(s, start);
+    case scene::Scheme::ParallelExplicit: return parallel_explicit(s, start);
+    case scene::Scheme::SerialImplicit:
+      return closed ? serial_implicit(s, start) : serial_explicit(s, start);
+    case scene::Scheme::ParallelImplicit:
+      return closed ? parallel_implicit(s, start) : parallel_explicit(s, start);
+  }
+  return {};
+}
+
+Exchange WindowRunner::call(const std::vector<std::string>& names, const Span& s, int iteration,
+                            const Exchange& start, const Exchange& end, WindowResult& r) {
+  std::map<std::string, protocol::Message> requests;
+  for (const auto& name : names) {
+    protocol::Message m;
+    m.header.type = protocol::Type::Advance;
+    m.header.window = s.window;
+    m.header.iteration = static_cast<std::uint32_t>(iteration);
+    m.header.t0 = s.t0;
+    m.header.t1 = s.t1;
+    if (scene::has(roles_.needs.at(name), scene::Data::Poses)) {
+      m.arrays.push_back(poses_array(start.poses));
+      m.arrays.push_back(poses_array(end.poses));
+    }
+    if (scene::has(roles_.needs.at(name), scene::Data::Forces)) {
+      m.arrays.push_back(forces_array(start.forces));
+      m.arrays.push_back(forces_array(end.forces));
+    }
+    requests.emplace(name, std::move(m));
+  }
+  const auto replies = peers_.exchange(std::move(requests), protocol::Type::Result, s.window);
+
+  Exchange out = end;
+  bool forces_returned = false;
+  Eigen::VectorXd force_sum = Eigen::VectorXd::Zero(end.forces.size());
+  for (const auto& [name, m] : replies) {
+    const auto& stats = m.get(protocol::Tag::Stats).values;
+    r.substeps[name] += stats.at(0);
+    r.wall_seconds[name] += stats.at(1);
+    const auto take = [&](protocol::Tag tag, const Eigen::VectorXd& like) {
+      Eigen::VectorXd v = vector_of(m.get(tag));
+      if (v.size() != like.size())
+        throw ParticipantFailure(name, s.window,
+                                 std::string("returned ") + protocol::to_string(tag) + " for " +
+                                     std::to_string(v.size()) + " values, expected " +
+                                     std::to_string(like.size()));
+      return v;
+    };
+    if (scene::has(roles_.provides.at(name), scene::Data::Poses))
+      out.poses = take(protocol::Tag::Poses, end.poses);
+    if (scene::has(roles_.provides.at(name), scene::Data::Forces)) {
+      force_sum += take(protocol::Tag::Forces, end.forces);
+      forces_returned = true;
+    }
+  }
+  if (forces_returned) out.forces = force_sum;
+  return out;
+}
+
+WindowResult WindowRunner::serial_explicit(const Span& s, const Exchange& start) {
+  WindowResult r;
+  r.iterations = 1;
+  r.end = start;
+  if (!roles_.pose_providers.empty()) r.end = call(roles_.pose_providers, s, 1, start, r.end, r);
+  if (!roles_.force_providers.empty()) r.end = call(roles_.force_providers, s, 1, start, r.end, r);
+  return r;
+}
+
+WindowResult WindowRunner::parallel_explicit(const Span& s, const Exchange& start) {
+  WindowResult r;
+  r.iterations = 1;
+  r.end = call(roles_.all(), s, 1, start, start, r);
+  return r;
+}
+
+WindowResult WindowRunner::serial_implicit(const Span& s, const Exchange& start) {
+  WindowResult r;
+  accelerator_->new_window();
+  Eigen::VectorXd x = start.forces;
+  for (int it = 1; it <= coupling_.max_iterations; ++it) {
+    const Exchange moved = call(roles_.pose_providers, s, it, start, {start.poses, x}, r);
+    r.end = call(roles_.force_providers, s, it, start, moved, r);
+    r.iterations = it;
+    r.residual = relative(r.end.forces - x, r.end.forces);
+    if (r.residual <= coupling_.tolerance) return r;
+    x = accelerator_->next(x, r.end.forces);
+  }
+  r.converged = false;
+  return r;
+}
+
+WindowResult WindowRunner::parallel_implicit(const Span& s, const Exchange& start) {
+  WindowResult r;
+  accelerator_->new_window();
+  const auto n_poses = start.poses.size();
+  Eigen::VectorXd x = stack(start);
+  Eigen::VectorXd weights;
+  for (int it = 1; it <= coupling_.max_iterations; ++it) {
+    const Exchange guess = unstack(x, n_poses);
+    r.end = call(roles_.all(), s, it, start, guess, r);
+    r.iterations = it;
+    r.residual = std::max(relative(r.end.poses - guess.poses, r.end.poses),
+                          relative(r.end.forces - guess.forces, r.end.forces));
+    if (r.residual <= coupling_.tolerance) return r;
+    if (it == 1) weights = block_weights(r.end);
+    const Eigen::VectorXd next =
+        accelerator_->next(x.cwiseProduct(weights), stack(r.end).cwiseProduct(weights));
+    x = next.cwiseQuotient(weights);
+  }
+  r.converged = false;
+  return r;
+}
+
+}  // namespace cosim::run

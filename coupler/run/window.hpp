@@ -1,0 +1,56 @@
+// One coupling window [t0, t1] under the scene's scheme.
+//
+// Explicit schemes call each participant once: serial-explicit advances the pose provider
+// (rigid bodies) with the forces of t0, then the force providers with its new poses;
+// parallel-explicit advances everyone with the values of t0. Implicit schemes repeat the
+// window until the exchanged data stop changing (relative residual below the tolerance)
+// or max_iterations is reached: serial-implicit iterates on the forces, parallel-implicit
+// on poses and forces stacked (each block scaled by its size in the first iteration so
+// neither dominates the accelerator).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "coupling/acceleration.hpp"
+#include "run/exchange.hpp"
+#include "run/peers.hpp"
+
+namespace cosim::run {
+
+struct WindowResult {
+  Exchange end;
+  int iterations = 0;
+  double residual = 0.0;
+  bool converged = true;
+  std::map<std::string, double> wall_seconds;  // per participant, summed over iterations
+  std::map<std::string, double> substeps;
+};
+
+class WindowRunner {
+ public:
+  WindowRunner(Peers& peers, Roles roles, const scene::Coupling& coupling);
+  WindowResult advance(std::uint64_t window, double t0, double t1, const Exchange& start);
+
+ private:
+  struct Span {
+    std::uint64_t window;
+    double t0, t1;
+  };
+  // Advance `names` over the span with inputs interpolated from start to end; returns
+  // `end` with the outputs of those participants in place, and adds their stats to r.
+  Exchange call(const std::vector<std::string>& names, const Span& s, int iteration,
+                const Exchange& start, const Exchange& end, WindowResult& r);
+  WindowResult serial_explicit(const Span& s, const Exchange& start);
+  WindowResult parallel_explicit(const Span& s, const Exchange& start);
+  WindowResult serial_implicit(const Span& s, const Exchange& start);
+  WindowResult parallel_implicit(const Span& s, const Exchange& start);
+
+  Peers& peers_;
+  Roles roles_;
+  scene::Coupling coupling_;
+  std::unique_ptr<coupling::Accelerator> accelerator_;
+};
+
+}  // namespace cosim::run

@@ -1,0 +1,107 @@
+// The top level of the scene file and the small sections; bodies and participants have
+// their own files.
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "scene/error.hpp"
+#include "scene/names.hpp"
+#include "scene/plan.hpp"
+#include "scene/sections.hpp"
+
+namespace cosim::scene {
+namespace {
+
+namespace fs = std::filesystem;
+
+YAML::Node parse(const std::string& text, const std::string& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw SceneError(file, e.mark.line + 1, "", "", "invalid YAML: " + e.msg);
+  }
+}
+
+Time read_time(const Reader& r) {
+  const Time t{r.number("end", Range::above(0))};
+  r.finish();
+  return t;
+}
+
+Coupling read_coupling(const Reader& r, const Time& time) {
+  Coupling c;
+  c.window = r.number("window", Range::above(0));
+  if (c.window > time.end) r.fail("window", fmt::format("must be <= time.end (time.end = {})", time.end));
+  if (!whole_multiple(time.end, c.window))
+    r.fail("window", fmt::format("time.end is not a whole number of windows (time.end = {})", time.end));
+  c.scheme = pick(r, "scheme", scheme_names, c.scheme);
+  c.acceleration = pick(r, "acceleration", acceleration_names, c.acceleration);
+  c.relaxation = r.number("relaxation", c.relaxation, Range::left_open(0, 1));
+  c.max_iterations = r.integer("max_iterations", c.max_iterations, Range::at_least(1));
+  c.tolerance = r.number("tolerance", c.tolerance, Range::open(0, 1));
+  c.transport = pick(r, "transport", transport_names, c.transport);
+  c.timeout = r.number("timeout", c.timeout, Range::above(0));
+  r.finish();
+  return c;
+}
+
+Output read_output(const Reader& r) {
+  Output o;
+  o.file = r.string("file", o.file);
+  if (o.file.empty()) r.fail("file", "must not be empty");
+  o.every = r.integer("every", o.every, Range::at_least(1));
+  o.checkpoint_every = r.integer("checkpoint_every", o.checkpoint_every, Range::at_least(1));
+  r.finish();
+  return o;
+}
+
+Domain read_domain(const Reader& r) {
+  const Domain d{r.vec3("min"), r.vec3("max")};
+  for (int k = 0; k < 3; ++k)
+    if (d.max[k] <= d.min[k]) r.fail("max", "must be greater than domain.min in every component");
+  r.finish();
+  return d;
+}
+
+std::vector<Effect> read_effects(const Reader& r) {
+  std::vector<Effect> effects;
+  for (std::size_t i : r.choices("effects", effect_names)) effects.push_back(static_cast<Effect>(i));
+  return effects;
+}
+
+}  // namespace
+
+Scene load_scene(const fs::path& file) {
+  if (!fs::is_regular_file(file)) throw SceneError(file.string(), 0, "", "", "no such scene file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw SceneError(file.string(), 0, "", "", "cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return load_scene_from_string(text.str(), file);
+}
+
+Scene load_scene_from_string(const std::string& text, const fs::path& file) {
+  Scene s;
+  s.file = file;
+  s.text = text;
+  const Reader r(parse(text, file.string()), file.string(), "");
+  s.time = read_time(r.map("time"));
+  s.coupling = read_coupling(r.map("coupling"), s.time);
+  if (r.has("output")) s.output = read_output(r.map("output"));
+  s.gravity = r.vec3("gravity", s.gravity);
+  s.domain = read_domain(r.map("domain"));
+  if (r.has("bodies")) s.bodies = read_bodies(r.maps("bodies"), s.domain, file.parent_path());
+  if (r.has("effects")) {
+    s.effects = read_effects(r);
+    s.effects_line = r.line("effects");
+  }
+  if (r.has("participants")) s.participants = read_participants(r.map("participants"), s.coupling);
+  r.finish();
+  // A scene whose effects no set of participants can serve is as wrong as a negative
+  // radius, and must be caught before anything starts.
+  plan_participants(s);
+  return s;
+}
+
+}  // namespace cosim::scene

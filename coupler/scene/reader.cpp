@@ -1,0 +1,247 @@
+#include "scene/reader.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "scene/error.hpp"
+
+namespace cosim::scene {
+namespace {
+
+// Messages quote values; a whole section pasted into one line helps nobody.
+constexpr std::size_t max_value_chars = 40;
+
+std::string shorten(std::string text) {
+  if (text.size() > max_value_chars) text = text.substr(0, max_value_chars - 3) + "...";
+  return text;
+}
+
+// The value as the user wrote it: scalars verbatim (quoted ones with their quotes, so that
+// "expected a number" next to "0.5" makes sense), collections in flow form.
+std::string text_of(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "";
+  if (node.IsScalar()) return shorten(node.Tag() == "!" ? "\"" + node.Scalar() + "\"" : node.Scalar());
+  YAML::Emitter out;
+  out.SetMapFormat(YAML::Flow);
+  out.SetSeqFormat(YAML::Flow);
+  out << node;
+  return shorten(out.c_str());
+}
+
+int line_of(const YAML::Node& node) { return node.IsDefined() ? node.Mark().line + 1 : 0; }
+
+// Plain scalars only: a quoted "1.5" is a string in YAML and stays one here.
+std::optional<double> number_of(const YAML::Node& node) {
+  double value = 0;
+  if (!node.IsScalar() || node.Tag() == "!" || !YAML::convert<double>::decode(node, value)) return std::nullopt;
+  return value;
+}
+
+std::string one_of(std::span<const char* const> names) {
+  return fmt::format("expected one of: {}", fmt::join(names, ", "));
+}
+
+std::size_t index_of(std::span<const char* const> names, const std::string& name) {
+  return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
+}  // namespace
+
+bool Range::contains(double v) const { return (open_lo_ ? v > lo_ : v >= lo_) && (open_hi_ ? v < hi_ : v <= hi_); }
+
+std::string Range::requirement() const {
+  if (hi_ == inf) return fmt::format("must be {} {}", open_lo_ ? ">" : ">=", lo_);
+  return fmt::format("must be in {}{}, {}{}", open_lo_ ? '(' : '[', lo_, hi_, open_hi_ ? ')' : ']');
+}
+
+Reader::Reader(YAML::Node map, std::string file, std::string path)
+    : map_(std::move(map)), file_(std::move(file)), path_(std::move(path)) {
+  if (!map_.IsDefined() || !map_.IsMap())
+    throw SceneError(file_, line_of(map_), path_, text_of(map_), "expected a mapping");
+  // yaml-cpp keeps the first of two equal keys without a word; a repeated key is almost
+  // always an edit gone wrong, so refuse it.
+  for (const auto& kv : map_) {
+    if (!kv.first.IsScalar())
+      throw SceneError(file_, line_of(kv.first), path_, text_of(kv.first), "expected a plain key");
+    const std::string key = kv.first.Scalar();
+    if (const Entry* first = find(key))
+      throw SceneError(file_, line_of(kv.first), this->path(key), text_of(kv.second),
+                       fmt::format("duplicate key (first at line {})", line_of(first->key_node)));
+    entries_.push_back({key, kv.first, kv.second});
+  }
+}
+
+std::string Reader::path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+std::vector<std::string> Reader::keys() const {
+  std::vector<std::string> out;
+  for (const Entry& e : entries_) out.push_back(e.key);
+  return out;
+}
+
+const Reader::Entry* Reader::find(const std::string& key) const {
+  auto it = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.key == key; });
+  return it == entries_.end() ? nullptr : &*it;
+}
+
+bool Reader::has(const std::string& key) const {
+  if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.push_back(key);
+  return find(key) != nullptr;
+}
+
+const YAML::Node& Reader::get(const std::string& key) const {
+  if (!has(key)) fail(key, "missing required key");
+  read_.insert(key);
+  return find(key)->value;
+}
+
+double Reader::finite(const std::string& key) const {
+  const std::optional<double> value = number_of(get(key));
+  if (!value) fail(key, "expected a number");
+  if (!std::isfinite(*value)) fail(key, "must be finite");
+  return *value;
+}
+
+double Reader::checked(const std::string& key, double value, const Range& range) const {
+  if (!range.contains(value)) fail(key, range.requirement());
+  return value;
+}
+
+double Reader::number(const std::string& key, const Range& range) const { return checked(key, finite(key), range); }
+
+double Reader::number(const std::string& key, double fallback, const Range& range) const {
+  return has(key) ? number(key, range) : fallback;
+}
+
+int Reader::integer(const std::string& key, const Range& range) const {
+  const double value = finite(key);
+  if (value != std::floor(value) || std::abs(value) > std::numeric_limits<int>::max()) fail(key, "expected an integer");
+  return static_cast<int>(checked(key, value, range));
+}
+
+int Reader::integer(const std::string& key, int fallback, const Range& range) const {
+  return has(key) ? integer(key, range) : fallback;
+}
+
+std::string Reader::string(const std::string& key) const {
+  const YAML::Node& node = get(key);
+  if (!node.IsScalar()) fail(key, "expected a string");
+  return node.Scalar();
+}
+
+std::string Reader::string(const std::string& key, const std::string& fallback) const {
+  return has(key) ? string(key) : fallback;
+}
+
+bool Reader::boolean(const std::string& key) const {
+  bool value = false;
+  if (!YAML::convert<bool>::decode(get(key), value)) fail(key, "expected true or false");
+  return value;
+}
+
+bool Reader::boolean(const std::string& key, bool fallback) const { return has(key) ? boolean(key) : fallback; }
+
+void Reader::numbers(const std::string& key, std::span<double> out, const Range& range) const {
+  const YAML::Node& node = get(key);
+  const std::string expected = fmt::format("expected a list of {} numbers", out.size());
+  if (!node.IsSequence() || node.size() != out.size()) fail(key, expected);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const std::optional<double> value = number_of(node[i]);
+    if (!value || !std::isfinite(*value)) fail(key, expected);
+    if (!range.contains(*value)) fail(key, "every entry " + range.requirement());
+    out[i] = *value;
+  }
+}
+
+Vec3 Reader::vec3(const std::string& key, const Range& range) const {
+  Vec3 v{};
+  numbers(key, v, range);
+  return v;
+}
+
+Vec3 Reader::vec3(const std::string& key, const Vec3& fallback, const Range& range) const {
+  return has(key) ? vec3(key, range) : fallback;
+}
+
+std::vector<std::string> Reader::strings(const std::string& key) const {
+  const YAML::Node& node = get(key);
+  if (!node.IsSequence()) fail(key, "expected a list of strings");
+  std::vector<std::string> out;
+  for (const YAML::Node& item : node) {
+    if (!item.IsScalar()) fail(key, "expected a list of strings");
+    out.push_back(item.Scalar());
+  }
+  return out;
+}
+
+std::size_t Reader::choice(const std::string& key, std::span<const char* const> names) const {
+  const std::size_t i = index_of(names, string(key));
+  if (i == names.size()) fail(key, one_of(names));
+  return i;
+}
+
+std::size_t Reader::choice(const std::string& key, std::span<const char* const> names, std::size_t fallback) const {
+  return has(key) ? choice(key, names) : fallback;
+}
+
+std::vector<std::size_t> Reader::choices(const std::string& key, std::span<const char* const> names) const {
+  const YAML::Node& node = get(key);
+  if (!node.IsSequence()) fail(key, fmt::format("expected a list of: {}", fmt::join(names, ", ")));
+  std::vector<std::size_t> out;
+  for (std::size_t n = 0; n < node.size(); ++n) {
+    const std::size_t i = node[n].IsScalar() ? index_of(names, node[n].Scalar()) : names.size();
+    if (i == names.size()) fail_item(key, n, one_of(names));
+    if (std::find(out.begin(), out.end(), i) != out.end()) fail_item(key, n, "listed twice");
+    out.push_back(i);
+  }
+  return out;
+}
+
+Reader Reader::map(const std::string& key) const {
+  const YAML::Node& node = get(key);
+  if (!node.IsMap()) fail(key, "expected a mapping");
+  return Reader(node, file_, path(key));
+}
+
+std::vector<Reader> Reader::maps(const std::string& key) const {
+  const YAML::Node& node = get(key);
+  if (!node.IsSequence()) fail(key, "expected a list of mappings");
+  std::vector<Reader> out;
+  for (std::size_t n = 0; n < node.size(); ++n) out.emplace_back(node[n], file_, fmt::format("{}[{}]", path(key), n));
+  return out;
+}
+
+YAML::Node Reader::node(const std::string& key) const { return get(key); }
+
+int Reader::line(const std::string& key) const {
+  const Entry* e = find(key);
+  return line_of(e ? e->key_node : map_);
+}
+
+void Reader::fail(const std::string& key, const std::string& problem) const {
+  const Entry* e = find(key);
+  throw SceneError(file_, line(key), path(key), e ? text_of(e->value) : "", problem);
+}
+
+void Reader::fail_item(const std::string& key, std::size_t index, const std::string& problem) const {
+  const YAML::Node item = get(key)[index];
+  throw SceneError(file_, line_of(item), fmt::format("{}[{}]", path(key), index), text_of(item), problem);
+}
+
+void Reader::finish() const {
+  for (const Entry& e : entries_) {
+    if (read_.contains(e.key)) continue;
+    fail(e.key, known_.empty() ? "unknown key; none are expected here"
+                               : fmt::format("unknown key; expected one of: {}", fmt::join(known_, ", ")));
+  }
+}
+
+Reader options_of(const Scene& scene, const Participant& participant) {
+  return Reader(participant.options, scene.file.string(), "participants." + participant.name + ".options");
+}
+
+}  // namespace cosim::scene

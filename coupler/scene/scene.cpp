@@ -1,0 +1,24 @@
+#include "scene/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/names.hpp"
+
+namespace cosim::scene {
+
+bool Scene::has_effect(Effect e) const { return std::find(effects.begin(), effects.end(), e) != effects.end(); }
+
+const Participant* Scene::participant(const std::string& name) const {
+  auto it =
+      std::find_if(participants.begin(), participants.end(), [&](const Participant& p) { return p.name == name; });
+  return it == participants.end() ? nullptr : &*it;
+}
+
+std::size_t Scene::windows() const { return static_cast<std::size_t>(std::llround(time.end / coupling.window)); }
+
+const char* to_string(Scheme s) { return scheme_names.at(static_cast<std::size_t>(s)); }
+const char* to_string(Acceleration a) { return acceleration_names.at(static_cast<std::size_t>(a)); }
+const char* to_string(Effect e) { return effect_names.at(static_cast<std::size_t>(e)); }
+
+}  // namespace cosim::scene

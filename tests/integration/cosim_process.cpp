@@ -1,0 +1,66 @@
+#include "cosim_process.hpp"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace cosim::testing {
+namespace fs = std::filesystem;
+
+fs::path scratch_dir(const std::string& test_name) {
+  const auto dir = fs::temp_directory_path() / ("cosim-test-" + std::to_string(getpid())) / test_name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write_file(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+CosimProcess::CosimProcess(const std::vector<std::string>& args) {
+  static int counter = 0;
+  log_ = fs::temp_directory_path() /
+         ("cosim-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + ".log");
+  const auto cosim = fs::read_symlink("/proc/self/exe").parent_path() / "cosim";
+  std::vector<std::string> argv{cosim.string()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::vector<char*> cargs;
+  for (auto& a : argv) cargs.push_back(a.data());
+  cargs.push_back(nullptr);
+  pid_ = fork();
+  if (pid_ == 0) {
+    const int fd = open(log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    execv(cargs[0], cargs.data());
+    _exit(127);
+  }
+}
+
+Finished CosimProcess::wait() {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int status = 0;
+  while (waitpid(pid_, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, &status, 0);
+      throw std::runtime_error("cosim did not finish within 60 s");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  Finished f;
+  f.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  std::stringstream text;
+  text << std::ifstream(log_).rdbuf();
+  f.output = text.str();
+  fs::remove(log_);
+  return f;
+}
+
+}  // namespace cosim::testing

@@ -1,0 +1,35 @@
+// Runs the real `cosim` program (next to the test binary) the way a user would, capturing
+// what it prints.
+#pragma once
+
+#include <sys/types.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace cosim::testing {
+
+struct Finished {
+  int exit_code = -1;  // 128 + signal if killed
+  std::string output;  // stdout and stderr together
+};
+
+class CosimProcess {
+ public:
+  explicit CosimProcess(const std::vector<std::string>& args);
+  pid_t pid() const { return pid_; }
+  Finished wait();  // fails the test (exception) after 60 s
+
+ private:
+  pid_t pid_ = -1;
+  std::filesystem::path log_;
+};
+
+inline Finished run_cosim(const std::vector<std::string>& args) { return CosimProcess(args).wait(); }
+
+// A fresh folder for one test's files.
+std::filesystem::path scratch_dir(const std::string& test_name);
+void write_file(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace cosim::testing

@@ -1,0 +1,156 @@
+// What the coupler does when things go wrong: a participant killed or hung, Ctrl-C, a
+// resumed run, a bad scene.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <csignal>
+#include <fstream>
+#include <regex>
+#include <thread>
+
+#include "cosim_process.hpp"
+#include "h5_read.hpp"
+#include "launcher/command.hpp"
+#include "launcher/process.hpp"
+#include "oscillator_scene.hpp"
+
+namespace cosim::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+namespace fs = std::filesystem;
+
+OscillatorScene scene_for_failures() {
+  OscillatorScene s;
+  s.end = 1.0;
+  s.window = 0.01;
+  s.dt_mass = s.dt_spring = 0.001;
+  s.checkpoint_every = 10;
+  return s;
+}
+
+TEST(Failures, KilledParticipantEndsTheRunAndResumeFinishesIdentically) {
+  const auto dir = scratch_dir("kill_resume");
+  auto s = scene_for_failures();
+
+  write_file(dir / "whole.yaml", s.yaml());
+  const auto whole = run_cosim({"run", (dir / "whole.yaml").string(), "-o", (dir / "whole.h5").string(), "-q"});
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+
+  s.spring_extra = {"kill_at: 0.555", "kill_marker: " + (dir / "killed").string()};
+  write_file(dir / "killed.yaml", s.yaml());
+  const auto file = dir / "killed.h5";
+  const auto died = run_cosim({"run", (dir / "killed.yaml").string(), "-o", file.string(), "-q"});
+  EXPECT_EQ(died.exit_code, 1);
+  EXPECT_THAT(died.output, HasSubstr("participant 'spring' killed by signal 9"));
+  EXPECT_THAT(died.output, HasSubstr("in window 56"));
+  EXPECT_THAT(died.output, HasSubstr("cosim run --resume " + file.string()));
+  // Every committed window is in the file, which opens.
+  EXPECT_EQ(read_series(file, "/bodies/m1/time").rows, 57u);  // initial row + windows 0..55
+  EXPECT_THAT(read_string_attribute(file, "/run", "status"), HasSubstr("failed"));
+
+  const auto resumed = run_cosim({"run", "--resume", file.string(), "-q"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_EQ(read_string_attribute(file, "/run", "status"), "finished");
+  const auto t = read_series(file, "/bodies/m1/time");
+  const auto t_whole = read_series(dir / "whole.h5", "/bodies/m1/time");
+  ASSERT_EQ(t.rows, t_whole.rows);
+  EXPECT_EQ(t.values, t_whole.values);  // cut back to the checkpoint, no duplicate rows
+  EXPECT_EQ(read_series(file, "/bodies/m1/position").values,
+            read_series(dir / "whole.h5", "/bodies/m1/position").values);
+}
+
+TEST(Failures, HungParticipantTimesOut) {
+  const auto dir = scratch_dir("hang");
+  auto s = scene_for_failures();
+  s.timeout = 1.0;
+  s.spring_extra = {"hang_at: 0.2"};
+  write_file(dir / "scene.yaml", s.yaml());
+  const auto r = run_cosim({"run", (dir / "scene.yaml").string(), "-o", (dir / "run.h5").string(), "-q"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.output, HasSubstr("participant 'spring' did not answer Result within 1"));
+  EXPECT_THAT(r.output, HasSubstr("in window 20"));
+  EXPECT_GE(read_series(dir / "run.h5", "/bodies/m1/time").rows, 20u);
+}
+
+bool process_gone(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  if (!stat) return true;
+  std::string content((std::istreambuf_iterator<char>(stat)), {});
+  const auto close = content.rfind(')');
+  return close != std::string::npos && content.size() > close + 2 && content[close + 2] == 'Z';
+}
+
+TEST(Failures, CtrlCStopsEverythingAndLeavesAReadableFile) {
+  const auto dir = scratch_dir("ctrl_c");
+  auto s = scene_for_failures();
+  s.end = 100.0;
+  s.spring_extra = {"delay: 0.002"};
+  write_file(dir / "scene.yaml", s.yaml());
+  CosimProcess cosim({"run", (dir / "scene.yaml").string(), "-o", (dir / "run.h5").string(), "-q"});
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  kill(cosim.pid(), SIGINT);
+  const auto r = cosim.wait();
+  EXPECT_EQ(r.exit_code, 130) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("interrupted"));
+  EXPECT_EQ(read_string_attribute(dir / "run.h5", "/run", "status"), "interrupted");
+  EXPECT_GT(read_series(dir / "run.h5", "/bodies/m1/time").rows, 10u);
+  // The participants it started are gone.
+  const std::regex started(R"(started (\w+) \(pid (\d+)\))");
+  int seen = 0;
+  for (std::sregex_iterator it(r.output.begin(), r.output.end(), started), end; it != end; ++it) {
+    EXPECT_TRUE(process_gone(std::stoi((*it)[2]))) << (*it)[1];
+    ++seen;
+  }
+  EXPECT_EQ(seen, 2) << r.output;
+}
+
+TEST(Failures, MissingProgramIsASceneErrorBeforeAnythingStarts) {
+  const auto dir = scratch_dir("missing_program");
+  auto yaml = scene_for_failures().yaml();
+  yaml.replace(yaml.find("cosim-test-oscillator-spring"), 28, "no-such-program-xyz");
+  write_file(dir / "scene.yaml", yaml);
+  const auto r = run_cosim({"run", (dir / "scene.yaml").string(), "-o", (dir / "run.h5").string(), "-q"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr("participants.spring.command = no-such-program-xyz: program not found"));
+  EXPECT_THAT(r.output, Not(HasSubstr("started")));
+  EXPECT_FALSE(fs::exists(dir / "run.h5"));
+}
+
+TEST(Failures, CheckValidatesWithoutRunning) {
+  const auto dir = scratch_dir("check");
+  write_file(dir / "good.yaml", scene_for_failures().yaml());
+  const auto good = run_cosim({"check", (dir / "good.yaml").string()});
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  EXPECT_THAT(good.output, HasSubstr("valid; 1 bodies, 100 windows"));
+  EXPECT_FALSE(fs::exists(dir / "run.h5"));
+
+  auto yaml = scene_for_failures().yaml();
+  const auto at = yaml.find("radius: 0.1");
+  yaml.replace(at, 11, "radius: -0.1");
+  const auto line = 1 + std::count(yaml.begin(), yaml.begin() + static_cast<long>(at), '\n');
+  write_file(dir / "bad.yaml", yaml);
+  const auto bad = run_cosim({"check", (dir / "bad.yaml").string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_THAT(bad.output, HasSubstr((dir / "bad.yaml").string() + ":" + std::to_string(line) +
+                                    ": bodies[0].shape.radius = -0.1: must be > 0"));
+}
+
+TEST(Launcher, MpirunWorksAsRootWithoutExportedVariables) {
+  // What a user's shell would have: none of the variables Open MPI needs as root.
+  for (const char* v : {"OMPI_ALLOW_RUN_AS_ROOT", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM",
+                        "OMPI_MCA_rmaps_base_oversubscribe", "OMPI_MCA_btl"})
+    unsetenv(v);
+  launcher::Process p("mpi", {"mpirun", "-n", "2", "true"}, launcher::mpi_environment());
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!p.poll() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_EQ(p.poll().value_or("still running"), "exited with status 0");
+}
+
+}  // namespace
+}  // namespace cosim::testing
