@@ -3,10 +3,12 @@
 //   cosim run scene.yaml [-o f.h5]  run it
 //   cosim run --resume f.h5         continue a run from its last checkpoint
 #include <CLI/CLI.hpp>
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include <iostream>
 
+#include "launcher/command.hpp"
 #include "run/coupler.hpp"
 #include "scene/error.hpp"
 #include "scene/plan.hpp"
@@ -19,9 +21,11 @@ int check(const std::string& file) {
   std::cout << file << ": valid; " << scene.bodies.size() << " bodies, " << scene.windows()
             << " windows of " << scene.coupling.window << " s ("
             << cosim::scene::to_string(scene.coupling.scheme) << ")\n";
-  for (const auto& p : plan.start)
-    std::cout << "  starts " << p.name << " (dt " << p.dt << " s, " << p.ranks << " rank"
-              << (p.ranks > 1 ? "s" : "") << ")\n";
+  for (const auto& p : plan.start) {
+    const auto command = cosim::launcher::participant_command(scene, p, cosim::launcher::own_directory());
+    std::cout << "  starts " << p.name << " (dt " << p.dt << " s): " << fmt::format("{}", fmt::join(command, " "))
+              << "\n";
+  }
   for (const auto& s : plan.skipped) std::cout << "  not started: " << s << "\n";
   return 0;
 }

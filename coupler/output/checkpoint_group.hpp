@@ -1,6 +1,5 @@
-// /checkpoint: what a resumed run starts from.
-//   attrs window (the next window), time; datasets poses (b x 13), forces (b x 6);
-//   participants/<name>/state (1-d float64, any length, absent if the participant gave none)
+// /checkpoint: what a resumed run starts from, in two slots a and b (layout in run_file.hpp)
+// so that writing one never touches the other and never frees file space.
 #pragma once
 
 #include <hdf5.h>
@@ -13,12 +12,13 @@
 
 namespace cosim::output {
 
-// Writes c as /checkpoint_new and flushes, then swaps it for /checkpoint and flushes again:
-// a failure or a kill while the bulk is written leaves the previous checkpoint in place,
-// and the swap itself is a small metadata change.
+// Writes c into the slot `current` does not name and flushes, then points `current` at it
+// (an in-place overwrite of one attribute) and flushes again. A failure or a kill before
+// the second flush leaves the previous checkpoint current and intact; nothing is deleted or
+// shrunk, so HDF5 never truncates the file (see run_file.hpp).
 void write_checkpoint(hid_t file, const Checkpoint& c, std::size_t bodies,
                       const std::vector<std::string>& participants);
-// nullopt if the file has no /checkpoint.
+// The slot `current` names; nullopt if no checkpoint was completed.
 std::optional<Checkpoint> read_checkpoint(hid_t file, const std::vector<std::string>& participants);
 
 }  // namespace cosim::output

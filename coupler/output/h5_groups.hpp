@@ -11,9 +11,8 @@ namespace cosim::output {
 
 Handle create_group(hid_t parent, const std::string& name);
 Handle open_group(hid_t parent, const std::string& name);
+Handle open_or_create_group(hid_t parent, const std::string& name);
 bool has_link(hid_t parent, const std::string& name);
-void remove_link(hid_t parent, const std::string& name);
-void move_link(hid_t parent, const std::string& from, const std::string& to);
 // Writes everything HDF5 holds in memory for the file (metadata and raw-data caches).
 void flush(hid_t file);
 

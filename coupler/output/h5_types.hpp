@@ -4,6 +4,7 @@
 
 #include <hdf5.h>
 
+#include <cstddef>
 #include <cstdint>
 
 #include "output/h5_handle.hpp"
@@ -24,6 +25,14 @@ inline Handle utf8_string_type() {
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "copy string type");
   check(H5Tset_size(type.get(), H5T_VARIABLE), "make variable-length string type");
   check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "make UTF-8 string type");
+  return type;
+}
+
+// Fixed-length ASCII of `size` bytes (at least 1), padded with NULs.
+inline Handle fixed_string_type(std::size_t size) {
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "copy string type");
+  check(H5Tset_size(type.get(), size), "make fixed-length string type");
+  check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "make NUL-padded string type");
   return type;
 }
 

@@ -32,17 +32,6 @@ std::size_t points(hid_t space, const std::string& where) {
   return static_cast<std::size_t>(n);
 }
 
-void write_attribute_raw(hid_t object, const std::string& name, hid_t type, hid_t space,
-                         const void* data) {
-  const std::string where = attribute_where(object, name);
-  const htri_t exists = H5Aexists(object, name.c_str());
-  if (exists < 0) fail("look up " + where);
-  if (exists > 0) check(H5Adelete(object, name.c_str()), "replace " + where);
-  Handle attr(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
-              "create " + where);
-  check(H5Awrite(attr.get(), type, data), "write " + where);
-}
-
 std::size_t attribute_points(hid_t attr, const std::string& where) {
   Handle space(H5Aget_space(attr), H5Sclose, "dataspace of " + where);
   return points(space.get(), where);
@@ -50,6 +39,38 @@ std::size_t attribute_points(hid_t attr, const std::string& where) {
 
 Handle open_attribute(hid_t object, const std::string& name, const std::string& where) {
   return Handle(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose, "open " + where);
+}
+
+// Whether `attr` can take a value of `type` and `space` by overwriting its bytes. Never for
+// variable-length strings: their text sits in the global heap, not in the attribute.
+bool fits_in_place(hid_t attr, hid_t type, hid_t space, const std::string& where) {
+  Handle stored_type(H5Aget_type(attr), H5Tclose, "type of " + where);
+  Handle stored_space(H5Aget_space(attr), H5Sclose, "dataspace of " + where);
+  const htri_t same_type = H5Tequal(stored_type.get(), type);
+  const htri_t same_space = H5Sextent_equal(stored_space.get(), space);
+  const htri_t variable = H5Tis_variable_str(type);
+  if (same_type < 0 || same_space < 0 || variable < 0) fail("compare " + where);
+  return same_type > 0 && same_space > 0 && variable == 0;
+}
+
+// An in-place overwrite where possible: deleting an attribute and creating it again can
+// move or free object header space, and the checkpoint relies on writes that free nothing.
+void write_attribute_raw(hid_t object, const std::string& name, hid_t type, hid_t space,
+                         const void* data) {
+  const std::string where = attribute_where(object, name);
+  if (has_attribute(object, name)) {
+    {
+      Handle attr = open_attribute(object, name, where);
+      if (fits_in_place(attr.get(), type, space, where)) {
+        check(H5Awrite(attr.get(), type, data), "write " + where);
+        return;
+      }
+    }
+    check(H5Adelete(object, name.c_str()), "replace " + where);
+  }
+  Handle attr(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+              "create " + where);
+  check(H5Awrite(attr.get(), type, data), "write " + where);
 }
 
 // Copies HDF5-allocated variable-length strings and hands their memory back to HDF5.
@@ -66,6 +87,13 @@ std::vector<std::string> take_strings(std::vector<char*>& raw, hid_t type,
 }
 
 }  // namespace
+
+bool has_attribute(hid_t object, const std::string& name) {
+  const std::string where = attribute_where(object, name);
+  const htri_t exists = H5Aexists(object, name.c_str());
+  if (exists < 0) fail("look up " + where);
+  return exists > 0;
+}
 
 template <class T>
 void write_attribute(hid_t object, const std::string& name, T value) {
@@ -87,6 +115,15 @@ void write_attribute(hid_t object, const std::string& name,
                       simple_space({values.size()}, name).get(), data.data());
 }
 
+void write_fixed_string_attribute(hid_t object, const std::string& name,
+                                  const std::string& value) {
+  if (value.empty()) {
+    throw ObjectError(attribute_where(object, name) + ": a fixed-length string cannot be empty");
+  }
+  write_attribute_raw(object, name, fixed_string_type(value.size()).get(),
+                      scalar_space(name).get(), value.data());
+}
+
 template <class T>
 T read_attribute(hid_t object, const std::string& name) {
   const std::string where = attribute_where(object, name);
@@ -100,7 +137,15 @@ T read_attribute(hid_t object, const std::string& name) {
   } else {
     if (n != 1) throw ObjectError(where + " is not a single value");
     if constexpr (std::is_same_v<T, std::string>) {
-      return read_attribute<std::vector<std::string>>(object, name).front();
+      Handle stored(H5Aget_type(attr.get()), H5Tclose, "type of " + where);
+      if (H5Tget_class(stored.get()) != H5T_STRING) throw ObjectError(where + " is not a string");
+      const htri_t variable = H5Tis_variable_str(stored.get());
+      if (variable < 0) fail("type of " + where);
+      if (variable > 0) return read_attribute<std::vector<std::string>>(object, name).front();
+      // Fixed length: the stored bytes without their padding.
+      std::string value(H5Tget_size(stored.get()), '\0');
+      check(H5Aread(attr.get(), stored.get(), value.data()), "read " + where);
+      return value.substr(0, value.find('\0'));
     } else {
       T value{};
       check(H5Aread(attr.get(), native_type<T>(), &value), "read " + where);
@@ -118,37 +163,6 @@ template std::uint64_t read_attribute<std::uint64_t>(hid_t, const std::string&);
 template std::string read_attribute<std::string>(hid_t, const std::string&);
 template std::vector<std::string> read_attribute<std::vector<std::string>>(hid_t,
                                                                           const std::string&);
-
-void write_doubles(hid_t group, const std::string& name, const std::vector<double>& values,
-                   hsize_t columns) {
-  const std::string where = dataset_where(group, name);
-  if (columns == 0 || values.size() % columns != 0) {
-    throw ObjectError(where + ": " + std::to_string(values.size()) +
-                    " values do not make rows of " + std::to_string(columns));
-  }
-  std::vector<hsize_t> dims{values.size() / columns};
-  if (columns > 1) dims.push_back(columns);
-  Handle space = simple_space(dims, where);
-  Handle ds(H5Dcreate2(group, name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
-                       H5P_DEFAULT, H5P_DEFAULT),
-            H5Dclose, "create " + where);
-  if (!values.empty()) {
-    check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
-          "write " + where);
-  }
-}
-
-std::vector<double> read_doubles(hid_t group, const std::string& name) {
-  const std::string where = dataset_where(group, name);
-  Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
-  Handle space(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
-  std::vector<double> values(points(space.get(), where));
-  if (!values.empty()) {
-    check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
-          "read " + where);
-  }
-  return values;
-}
 
 void write_text(hid_t group, const std::string& name, const std::string& text) {
   const std::string where = dataset_where(group, name);

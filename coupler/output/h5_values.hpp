@@ -1,5 +1,5 @@
-// Whole values in one call: attributes (numbers, strings, string lists) and small datasets
-// written or read at once (checkpoint arrays, the scene text). Errors name the object.
+// Whole values in one call: attributes (numbers, strings, string lists) and the scene text.
+// Errors name the object.
 #pragma once
 
 #include <hdf5.h>
@@ -9,20 +9,24 @@
 
 namespace cosim::output {
 
-// Numbers: T is double, int or std::uint64_t. A present attribute is replaced.
+bool has_attribute(hid_t object, const std::string& name);
+
+// Numbers: T is double, int or std::uint64_t. A present attribute of the same type and
+// shape is overwritten in place (no file space is freed or allocated); otherwise replaced.
 template <class T>
 void write_attribute(hid_t object, const std::string& name, T value);
+// Variable-length UTF-8, always replaced: the text lives in the file's global heap.
 void write_attribute(hid_t object, const std::string& name, const std::string& value);
 void write_attribute(hid_t object, const std::string& name, const std::vector<std::string>& values);
+// Fixed-length ASCII of value.size() bytes, held in the object header itself, so writing
+// another value of the same length is an in-place overwrite of those bytes.
+void write_fixed_string_attribute(hid_t object, const std::string& name,
+                                  const std::string& value);
 
-// T is double, int, std::uint64_t, std::string or std::vector<std::string>.
+// T is double, int, std::uint64_t, std::string (variable or fixed length) or
+// std::vector<std::string>.
 template <class T>
 T read_attribute(hid_t object, const std::string& name);
-
-// values is rows x columns, row-major; columns == 1 makes a 1-d dataset.
-void write_doubles(hid_t group, const std::string& name, const std::vector<double>& values,
-                   hsize_t columns);
-std::vector<double> read_doubles(hid_t group, const std::string& name);
 
 // A scalar string dataset: unlike an attribute it has no 64 KiB limit.
 void write_text(hid_t group, const std::string& name, const std::string& text);

@@ -13,13 +13,23 @@
 //                        wall_seconds (n): the whole window
 //   /coupling/participants/<name>/  wall_seconds (n), substeps (n); NaN where a window's
 //                        record had no value for that participant
-//   /checkpoint/         attrs: window (last committed window index + 1 = next window),
+//   /checkpoint/         attr current ("a" or "b", fixed-length ASCII): the slot holding the
+//                        checkpoint; absent until the first checkpoint is complete
+//   /checkpoint/{a,b}/   attrs window (last committed window index + 1 = next window),
 //                        time; datasets poses (b x 13), forces (b x 6), and
-//                        /checkpoint/participants/<name>/state (opaque float64 array)
-// Strings are variable-length UTF-8. After every committed window the file is flushed, so
-// a crash (even SIGKILL) after append() returns loses nothing committed. A crash inside
-// append() can leave some series one row longer than others: resume() cuts them back and
-// readers should use the shortest length.
+//                        participants/<name>/state (opaque float64 array), one group per
+//                        participant with attr present (int; 0: no state in this checkpoint).
+//                        Each of these datasets holds its value in its first `length` rows
+//                        (uint64 attr); rows after that are space kept from a longer value.
+// Strings are variable-length UTF-8, but for /checkpoint's current. After every committed
+// window the file is flushed, so a crash (even SIGKILL) after append() returns loses nothing
+// committed. A crash inside append() can leave some series one row longer than others:
+// resume() cuts them back and readers should use the shortest length. A checkpoint is
+// written into the slot `current` does not name, flushed, and only then committed by
+// overwriting `current` in place and flushing again: a crash at any point leaves the
+// previous checkpoint whole. Checkpoint writes never free file space (datasets are only
+// overwritten and grown) because HDF5 1.10 can shrink the file before it rewrites the
+// superblock, and a kill between the two leaves a file it refuses to open ("truncated file").
 // Errors are std::runtime_error naming the file and the HDF5 object.
 #pragma once
 
@@ -79,10 +89,7 @@ class RunFile {
   const Checkpoint& checkpoint() const;  // resume(): what was read; throws if none
 
   void append(const WindowRecord& w);    // writes one row everywhere and flushes
-  // Replaces /checkpoint: writes /checkpoint_new, flushes, swaps it in, flushes. Known
-  // hole: HDF5 1.10 shrinks the file (ftruncate) before rewriting its superblock when the
-  // old checkpoint sat at the end, so a SIGKILL exactly then leaves a file HDF5 refuses to
-  // open ("truncated file"; extending it to the superblock's end-of-file address repairs it).
+  // Replaces the checkpoint: writes the other slot, flushes, switches `current`, flushes.
   void write_checkpoint(const Checkpoint& c);
   void set_status(const std::string& status, double wall_seconds);
 

@@ -16,18 +16,23 @@ int rank_for(hsize_t columns) { return columns > 1 ? 2 : 1; }
 Series::Series(Handle dataset, std::string path, hsize_t rows, hsize_t columns)
     : dataset_(std::move(dataset)), path_(std::move(path)), rows_(rows), columns_(columns) {}
 
-Series Series::create(hid_t group, const std::string& name, hsize_t columns, hid_t type) {
-  const std::string where = "series " + child_path(group, name);
+Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize_t columns,
+                         hsize_t chunk_rows) {
+  const std::string where = "dataset " + child_path(group, name);
   const hsize_t dims[2] = {0, columns};
   const hsize_t max_dims[2] = {H5S_UNLIMITED, columns};
-  const hsize_t chunk[2] = {kChunkRows, columns};
+  const hsize_t chunk[2] = {chunk_rows, columns};
   const int rank = rank_for(columns);
   Handle space(H5Screate_simple(rank, dims, max_dims), H5Sclose, "make dataspace for " + where);
   Handle props(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "make properties for " + where);
   check(H5Pset_chunk(props.get(), rank, chunk), "set chunks of " + where);
-  Handle ds(H5Dcreate2(group, name.c_str(), type, space.get(), H5P_DEFAULT, props.get(),
-                       H5P_DEFAULT),
-            H5Dclose, "create " + where);
+  return Handle(H5Dcreate2(group, name.c_str(), type, space.get(), H5P_DEFAULT, props.get(),
+                           H5P_DEFAULT),
+                H5Dclose, "create " + where);
+}
+
+Series Series::create(hid_t group, const std::string& name, hsize_t columns, hid_t type) {
+  Handle ds = create_extendible(group, name, type, columns, kChunkRows);
   std::string path = path_of(ds.get());
   return Series(std::move(ds), std::move(path), 0, columns);
 }

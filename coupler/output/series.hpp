@@ -12,6 +12,11 @@
 
 namespace cosim::output {
 
+// A chunked dataset of 0 rows of `columns` values (1-d when columns == 1) with an unlimited
+// first dimension, so rows can be added later without moving what is written.
+Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize_t columns,
+                         hsize_t chunk_rows);
+
 class Series {
  public:
   static Series create(hid_t group, const std::string& name, hsize_t columns, hid_t type);

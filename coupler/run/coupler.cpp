@@ -6,6 +6,7 @@
 #include <chrono>
 #include <numeric>
 
+#include "cosim_git_hash.hpp"
 #include "launcher/command.hpp"
 #include "output/run_file.hpp"
 #include "protocol/client.hpp"
@@ -15,12 +16,6 @@
 #include "run/window.hpp"
 #include "scene/plan.hpp"
 
-#ifndef COSIM_GIT_HASH
-#define COSIM_GIT_HASH "unknown"
-#endif
-#ifndef COSIM_VERSION
-#define COSIM_VERSION "unknown"
-#endif
 
 namespace cosim::run {
 namespace fs = std::filesystem;

@@ -18,12 +18,13 @@ namespace cosim::scene {
 std::vector<Body> read_bodies(const std::vector<Reader>& items, const Domain& domain, const std::filesystem::path& dir);
 std::vector<Participant> read_participants(const Reader& r, const Coupling& coupling);
 
-// Body and participant names end up in file names, HDF5 paths and ZeroMQ identities.
+// Body and participant names end up in file names, HDF5 paths and ZeroMQ identities (the
+// protocol header holds 31 bytes of name).
 inline bool is_name(std::string_view s) {
-  return !s.empty() &&
+  return !s.empty() && s.size() <= 31 &&
          std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; });
 }
-inline constexpr const char* name_rule = "expected a name made of letters, digits, '_' and '-'";
+inline constexpr const char* name_rule = "expected a name of 1 to 31 letters, digits, '_' and '-'";
 
 // Whether `part` fits into `whole` a whole number of times, to 1e-9 relative: 0.1 into 1.0
 // must pass although 1.0 / 0.1 is not exactly 10 in floating point.

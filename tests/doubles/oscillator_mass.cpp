@@ -1,11 +1,9 @@
 // Test double in the rigid-body role: moves every dynamic sphere of the scene under the
 // force the coupler gives it (translation only). See README.md.
 #include <cmath>
-#include <iostream>
 #include <numbers>
 
-#include "hooks.hpp"
-#include "participant/run_participant.hpp"
+#include "double_common.hpp"
 
 namespace cosim::doubles {
 namespace {
@@ -69,14 +67,7 @@ class MassSolver final : public participant::Solver {
 }  // namespace cosim::doubles
 
 int main() {
-  auto client = cosim::protocol::Client::from_environment();
-  if (!client) {
-    std::cerr << "cosim-test-oscillator-mass is a test participant: start it through cosim run\n";
-    return 2;
-  }
   cosim::doubles::MassSolver solver;
   using cosim::scene::Data;
-  return cosim::participant::run_participant(*client, solver,
-                                             static_cast<std::uint32_t>(Data::Poses),
-                                             static_cast<std::uint32_t>(Data::Forces));
+  return cosim::doubles::serve("cosim-test-oscillator-mass", solver, Data::Poses, Data::Forces);
 }

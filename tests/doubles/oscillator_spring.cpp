@@ -1,10 +1,8 @@
 // Test double in the fluid role: owns the second mass and both springs and returns the
 // spring force on the first dynamic body. See README.md.
 #include <cmath>
-#include <iostream>
 
-#include "hooks.hpp"
-#include "participant/run_participant.hpp"
+#include "double_common.hpp"
 
 namespace cosim::doubles {
 namespace {
@@ -76,14 +74,7 @@ class SpringSolver final : public participant::Solver {
 }  // namespace cosim::doubles
 
 int main() {
-  auto client = cosim::protocol::Client::from_environment();
-  if (!client) {
-    std::cerr << "cosim-test-oscillator-spring is a test participant: start it through cosim run\n";
-    return 2;
-  }
   cosim::doubles::SpringSolver solver;
   using cosim::scene::Data;
-  return cosim::participant::run_participant(*client, solver,
-                                             static_cast<std::uint32_t>(Data::Forces),
-                                             static_cast<std::uint32_t>(Data::Poses));
+  return cosim::doubles::serve("cosim-test-oscillator-spring", solver, Data::Forces, Data::Poses);
 }

@@ -23,6 +23,15 @@ fs::path scratch_dir(const std::string& test_name) {
 
 void write_file(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
+std::vector<std::string> run_args(const fs::path& dir, const std::string& stem) {
+  return {"run", (dir / (stem + ".yaml")).string(), "-o", (dir / (stem + ".h5")).string(), "-q"};
+}
+
+Finished run_scene_text(const fs::path& dir, const std::string& yaml, const std::string& stem) {
+  write_file(dir / (stem + ".yaml"), yaml);
+  return run_cosim(run_args(dir, stem));
+}
+
 CosimProcess::CosimProcess(const std::vector<std::string>& args) {
   static int counter = 0;
   log_ = fs::temp_directory_path() /

@@ -28,6 +28,11 @@ class CosimProcess {
 
 inline Finished run_cosim(const std::vector<std::string>& args) { return CosimProcess(args).wait(); }
 
+// Writes dir/<stem>.yaml and runs `cosim run` on it, writing dir/<stem>.h5.
+Finished run_scene_text(const std::filesystem::path& dir, const std::string& yaml,
+                        const std::string& stem = "scene");
+std::vector<std::string> run_args(const std::filesystem::path& dir, const std::string& stem = "scene");
+
 // A fresh folder for one test's files.
 std::filesystem::path scratch_dir(const std::string& test_name);
 void write_file(const std::filesystem::path& path, const std::string& text);

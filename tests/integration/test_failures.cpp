@@ -37,14 +37,12 @@ TEST(Failures, KilledParticipantEndsTheRunAndResumeFinishesIdentically) {
   const auto dir = scratch_dir("kill_resume");
   auto s = scene_for_failures();
 
-  write_file(dir / "whole.yaml", s.yaml());
-  const auto whole = run_cosim({"run", (dir / "whole.yaml").string(), "-o", (dir / "whole.h5").string(), "-q"});
+  const auto whole = run_scene_text(dir, s.yaml(), "whole");
   ASSERT_EQ(whole.exit_code, 0) << whole.output;
 
   s.spring_extra = {"kill_at: 0.555", "kill_marker: " + (dir / "killed").string()};
-  write_file(dir / "killed.yaml", s.yaml());
   const auto file = dir / "killed.h5";
-  const auto died = run_cosim({"run", (dir / "killed.yaml").string(), "-o", file.string(), "-q"});
+  const auto died = run_scene_text(dir, s.yaml(), "killed");
   EXPECT_EQ(died.exit_code, 1);
   EXPECT_THAT(died.output, HasSubstr("participant 'spring' killed by signal 9"));
   EXPECT_THAT(died.output, HasSubstr("in window 56"));
@@ -69,12 +67,11 @@ TEST(Failures, HungParticipantTimesOut) {
   auto s = scene_for_failures();
   s.timeout = 1.0;
   s.spring_extra = {"hang_at: 0.2"};
-  write_file(dir / "scene.yaml", s.yaml());
-  const auto r = run_cosim({"run", (dir / "scene.yaml").string(), "-o", (dir / "run.h5").string(), "-q"});
+  const auto r = run_scene_text(dir, s.yaml());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.output, HasSubstr("participant 'spring' did not answer Result within 1"));
   EXPECT_THAT(r.output, HasSubstr("in window 20"));
-  EXPECT_GE(read_series(dir / "run.h5", "/bodies/m1/time").rows, 20u);
+  EXPECT_GE(read_series(dir / "scene.h5", "/bodies/m1/time").rows, 20u);
 }
 
 bool process_gone(pid_t pid) {
@@ -91,14 +88,14 @@ TEST(Failures, CtrlCStopsEverythingAndLeavesAReadableFile) {
   s.end = 100.0;
   s.spring_extra = {"delay: 0.002"};
   write_file(dir / "scene.yaml", s.yaml());
-  CosimProcess cosim({"run", (dir / "scene.yaml").string(), "-o", (dir / "run.h5").string(), "-q"});
+  CosimProcess cosim(run_args(dir));
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   kill(cosim.pid(), SIGINT);
   const auto r = cosim.wait();
   EXPECT_EQ(r.exit_code, 130) << r.output;
   EXPECT_THAT(r.output, HasSubstr("interrupted"));
-  EXPECT_EQ(read_string_attribute(dir / "run.h5", "/run", "status"), "interrupted");
-  EXPECT_GT(read_series(dir / "run.h5", "/bodies/m1/time").rows, 10u);
+  EXPECT_EQ(read_string_attribute(dir / "scene.h5", "/run", "status"), "interrupted");
+  EXPECT_GT(read_series(dir / "scene.h5", "/bodies/m1/time").rows, 10u);
   // The participants it started are gone.
   const std::regex started(R"(started (\w+) \(pid (\d+)\))");
   int seen = 0;
@@ -113,12 +110,11 @@ TEST(Failures, MissingProgramIsASceneErrorBeforeAnythingStarts) {
   const auto dir = scratch_dir("missing_program");
   auto yaml = scene_for_failures().yaml();
   yaml.replace(yaml.find("cosim-test-oscillator-spring"), 28, "no-such-program-xyz");
-  write_file(dir / "scene.yaml", yaml);
-  const auto r = run_cosim({"run", (dir / "scene.yaml").string(), "-o", (dir / "run.h5").string(), "-q"});
+  const auto r = run_scene_text(dir, yaml);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.output, HasSubstr("participants.spring.command = no-such-program-xyz: program not found"));
   EXPECT_THAT(r.output, Not(HasSubstr("started")));
-  EXPECT_FALSE(fs::exists(dir / "run.h5"));
+  EXPECT_FALSE(fs::exists(dir / "scene.h5"));
 }
 
 TEST(Failures, CheckValidatesWithoutRunning) {
@@ -127,6 +123,7 @@ TEST(Failures, CheckValidatesWithoutRunning) {
   const auto good = run_cosim({"check", (dir / "good.yaml").string()});
   EXPECT_EQ(good.exit_code, 0) << good.output;
   EXPECT_THAT(good.output, HasSubstr("valid; 1 bodies, 100 windows"));
+  EXPECT_THAT(good.output, HasSubstr("starts spring (dt 0.001 s): /"));
   EXPECT_FALSE(fs::exists(dir / "run.h5"));
 
   auto yaml = scene_for_failures().yaml();

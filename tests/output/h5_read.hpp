@@ -50,10 +50,20 @@ class ReadFile {
     return values<double>(dataset, H5T_NATIVE_DOUBLE);
   }
 
+  // Variable-length or fixed-length (without its NUL padding).
   std::string string_attribute(const std::string& object, const std::string& name) const {
     const hid_t attr = H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
     if (attr < 0) throw std::runtime_error("no attribute " + object + " " + name);
-    std::string out = read_string([&](hid_t type, char** raw) { H5Aread(attr, type, raw); });
+    const hid_t stored = H5Aget_type(attr);
+    std::string out;
+    if (H5Tis_variable_str(stored) > 0) {
+      out = read_string([&](hid_t type, char** raw) { H5Aread(attr, type, raw); });
+    } else {
+      std::string bytes(H5Tget_size(stored), '\0');
+      H5Aread(attr, stored, bytes.data());
+      out = bytes.substr(0, bytes.find('\0'));
+    }
+    H5Tclose(stored);
     H5Aclose(attr);
     return out;
   }

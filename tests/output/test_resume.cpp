@@ -1,7 +1,9 @@
 // Checkpoints and --resume: the file is cut back to the checkpoint and continues from it.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "h5_read.hpp"
 #include "output/run_file.hpp"
@@ -60,7 +62,7 @@ TEST_F(ResumeTest, CutsSeriesToTheCheckpointAndContinues) {
   ReadFile f(path);
   EXPECT_EQ(f.string_attribute("/run", "status"), "running");
   EXPECT_EQ(f.double_attribute("/run", "wall_seconds"), 3.0);
-  EXPECT_FALSE(f.has("/checkpoint_new"));
+  EXPECT_EQ(f.string_attribute("/checkpoint", "current"), "b");  // the second checkpoint
   std::vector<double> times;
   for (std::uint64_t k = 0; k < 7; ++k) times.push_back(sample_window(k, kDt, 1, {}).time);
   EXPECT_EQ(f.doubles("/coupling/time"), times);
@@ -135,6 +137,94 @@ TEST_F(ResumeTest, MalformedCheckpointKeepsThePreviousOne) {
   EXPECT_EQ(run.checkpoint().next_window, 1u);
   run = RunFile::create(file("other.h5"), RunInfo{}, {}, {});
   EXPECT_EQ(RunFile::resume(path).checkpoint().next_window, 1u);
+}
+
+void expect_same(const Checkpoint& got, const Checkpoint& want) {
+  EXPECT_EQ(got.next_window, want.next_window);
+  EXPECT_EQ(got.time, want.time);
+  EXPECT_EQ(got.poses, want.poses);
+  EXPECT_EQ(got.forces, want.forces);
+  EXPECT_EQ(got.states, want.states);
+}
+
+// Checkpoints alternate between the slots, within a run and across a resume, and resume()
+// always starts from the latest.
+TEST_F(ResumeTest, AlternatingCheckpointsResumeToTheLatest) {
+  const auto path = file("run.h5");
+  for (std::uint64_t k = 0; k < 6; ++k) {
+    {
+      RunFile run = k == 0 ? RunFile::create(path, RunInfo{}, kBodies, kParticipants)
+                           : RunFile::resume(path);
+      run.append(sample_window(k, kDt, kBodies.size(), kParticipants));
+      Checkpoint c = checkpoint_after(k);
+      c.states["fluid"].push_back(static_cast<double>(k));  // tells the checkpoints apart
+      run.write_checkpoint(c);
+    }
+    EXPECT_EQ(ReadFile(path).string_attribute("/checkpoint", "current"), k % 2 == 0 ? "a" : "b");
+    Checkpoint want = checkpoint_after(k);
+    want.states["fluid"].push_back(static_cast<double>(k));
+    expect_same(RunFile::resume(path).checkpoint(), want);
+  }
+  EXPECT_EQ(ReadFile(path).doubles("/coupling/time").size(), 6u);
+}
+
+// A state may shrink, vanish, come back and grow: each checkpoint reads back exactly, and
+// the slots keep the space of their longest state instead of freeing it.
+TEST_F(ResumeTest, StatesThatShrinkAndGrowRoundTripExactly) {
+  const auto path = file("run.h5");
+  // Lengths of fluid's and rigid's states per checkpoint; -1: no state.
+  const std::vector<std::pair<int, int>> lengths{{1000, -1}, {10, 7},   {0, 2000},
+                                                 {-1, 1},    {5000, -1}, {3, 0}};
+  for (std::size_t k = 0; k < lengths.size(); ++k) {
+    Checkpoint c = checkpoint_after(k);
+    c.states.clear();
+    for (const auto& [name, n] : {std::pair{"fluid", lengths[k].first},
+                                  std::pair{"rigid", lengths[k].second}}) {
+      if (n < 0) continue;
+      std::vector<double>& state = c.states[name];
+      for (int i = 0; i < n; ++i) state.push_back(static_cast<double>(k) + 1e-4 * i);
+    }
+    {
+      RunFile run = k == 0 ? RunFile::create(path, RunInfo{}, kBodies, kParticipants)
+                           : RunFile::resume(path);
+      run.write_checkpoint(c);
+    }
+    expect_same(RunFile::resume(path).checkpoint(), c);
+  }
+  // Slot a held fluid states of 1000 (and 0, 5000), slot b of 1000 (the first checkpoint
+  // fills both), 10 and 3.
+  ReadFile f(path);
+  EXPECT_EQ(f.dims("/checkpoint/a/participants/fluid/state"), std::vector<hsize_t>{5000});
+  EXPECT_EQ(f.dims("/checkpoint/b/participants/fluid/state"), std::vector<hsize_t>{1000});
+  EXPECT_EQ(f.double_attribute("/checkpoint/b/participants/fluid/state", "length"), 3.0);
+  EXPECT_EQ(f.double_attribute("/checkpoint/a/participants/rigid", "present"), 0.0);
+  EXPECT_EQ(f.double_attribute("/checkpoint/a/participants/tracer", "present"), 0.0);
+}
+
+// A checkpoint write never frees file space, so the file never gets shorter: HDF5 shrinking
+// it is what could leave a file it cannot open after a kill.
+TEST_F(ResumeTest, FileSizeNeverDecreasesAcrossCheckpoints) {
+  const auto path = file("run.h5");
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> length(-2000, 20000);  // below 0: no state
+  RunFile run = RunFile::create(path, RunInfo{}, kBodies, kParticipants);
+  std::uintmax_t size = std::filesystem::file_size(path);
+  Checkpoint c;
+  for (std::uint64_t k = 0; k < 50; ++k) {
+    run.append(sample_window(k, kDt, kBodies.size(), kParticipants));
+    c = checkpoint_after(k);
+    c.states.clear();
+    for (const std::string& name : kParticipants) {
+      const int n = length(rng);
+      if (n >= 0) c.states[name].assign(static_cast<std::size_t>(n), static_cast<double>(k));
+    }
+    run.write_checkpoint(c);
+    const std::uintmax_t now = std::filesystem::file_size(path);
+    EXPECT_GE(now, size) << "after checkpoint " << k;
+    size = now;
+  }
+  run = RunFile::create(file("other.h5"), RunInfo{}, {}, {});
+  expect_same(RunFile::resume(path).checkpoint(), c);
 }
 
 }  // namespace

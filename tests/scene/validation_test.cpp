@@ -220,9 +220,12 @@ TEST(Validation, DuplicateBodyName) {
 
 TEST(Validation, BadNames) {
   EXPECT_EQ(load_error(head + "bodies:\n  - {name: my ball}\n"),
-            "scene.yaml:5: bodies[0].name = my ball: expected a name made of letters, digits, '_' and '-'");
+            "scene.yaml:5: bodies[0].name = my ball: expected a name of 1 to 31 letters, digits, '_' and '-'");
   EXPECT_EQ(load_error(head + "participants:\n  my/spring: {}\n"),
-            "scene.yaml:5: participants.my/spring = {}: expected a name made of letters, digits, '_' and '-'");
+            "scene.yaml:5: participants.my/spring = {}: expected a name of 1 to 31 letters, digits, '_' and '-'");
+  const std::string too_long(32, 'a');  // it would not fit the protocol header
+  EXPECT_EQ(load_error(head + "participants:\n  " + too_long + ": {}\n"),
+            "scene.yaml:5: participants." + too_long + " = {}: expected a name of 1 to 31 letters, digits, '_' and '-'");
 }
 
 TEST(Validation, NonUnitQuaternion) {

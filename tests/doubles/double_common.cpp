@@ -1,8 +1,11 @@
-#include "hooks.hpp"
+#include "double_common.hpp"
 
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+
+#include "participant/run_participant.hpp"
 #include <thread>
 
 namespace cosim::doubles {
@@ -11,6 +14,17 @@ const scene::Participant& section(const scene::Scene& scene, const std::string& 
   const auto* p = scene.participant(name);
   if (p == nullptr) throw std::runtime_error("no section participants." + name + " in the scene");
   return *p;
+}
+
+int serve(const char* program, participant::Solver& solver, scene::Data provides,
+          scene::Data needs) {
+  auto client = protocol::Client::from_environment();
+  if (!client) {
+    std::cerr << program << " is a test participant: start it through cosim run\n";
+    return 2;
+  }
+  return participant::run_participant(*client, solver, static_cast<std::uint32_t>(provides),
+                                      static_cast<std::uint32_t>(needs));
 }
 
 Common Common::read(const scene::Scene&, const scene::Participant& p,

@@ -1,5 +1,5 @@
-// Failure injection for the coupler's robustness tests: a double can be told to die or
-// hang at a given time, or to be slow.
+// What the oscillator doubles share: common options, failure injection for the
+// coupler's robustness tests (die, hang, be slow), the integrator step and main().
 #pragma once
 
 #include <limits>
@@ -27,6 +27,10 @@ struct Common {
 };
 
 const scene::Participant& section(const scene::Scene& scene, const std::string& name);
+
+// main() of a double: connect to the coupler that started it and serve until Stop.
+int serve(const char* program, participant::Solver& solver, scene::Data provides,
+          scene::Data needs);
 
 // One step of the chosen integrator for x'' = a(x, s), from s to s + h.
 template <class Accel>
