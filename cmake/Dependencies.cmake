@@ -20,3 +20,8 @@ find_package(CLI11 REQUIRED)
 find_package(spdlog REQUIRED)
 find_package(GTest REQUIRED)
 find_package(benchmark REQUIRED)
+
+# Rigid-body geometry and collision.
+find_package(assimp REQUIRED)                             # assimp::assimp: STL and OBJ meshes
+find_package(Qhull REQUIRED)                              # Qhull::qhullcpp, Qhull::qhull_r: convex hulls
+pkg_check_modules(CCD REQUIRED IMPORTED_TARGET ccd)       # PkgConfig::CCD: GJK, EPA, MPR

@@ -70,6 +70,8 @@ struct OrderCase {
   double order;
 };
 
+void PrintTo(const OrderCase& c, std::ostream* os) { *os << c.scheme << " with " << c.integrator; }
+
 class ObservedOrder : public ::testing::TestWithParam<OrderCase> {};
 
 TEST_P(ObservedOrder, MatchesTheScheme) {
