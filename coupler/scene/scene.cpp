@@ -21,4 +21,11 @@ const char* to_string(Scheme s) { return scheme_names.at(static_cast<std::size_t
 const char* to_string(Acceleration a) { return acceleration_names.at(static_cast<std::size_t>(a)); }
 const char* to_string(Effect e) { return effect_names.at(static_cast<std::size_t>(e)); }
 
+std::string describe(DataSet set) {
+  std::string out;
+  for (std::size_t i = 0; i < data_names.size(); ++i)
+    if (set & (1u << i)) out += (out.empty() ? "" : ", ") + std::string(data_names[i]);
+  return out.empty() ? "nothing" : out;
+}
+
 }  // namespace cosim::scene

@@ -124,5 +124,6 @@ Scene load_scene_from_string(const std::string& text, const std::filesystem::pat
 const char* to_string(Scheme);
 const char* to_string(Acceleration);
 const char* to_string(Effect);
+std::string describe(DataSet set);  // "poses, forces", or "nothing"
 
 }  // namespace cosim::scene

@@ -1,0 +1,221 @@
+#include "run/session.hpp"
+
+#include <spdlog/spdlog.h>
+#include <stdlib.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+
+#include "launcher/command.hpp"
+#include "protocol/client.hpp"
+#include "run/failure.hpp"
+#include "run/progress.hpp"
+
+namespace cosim::run {
+namespace fs = std::filesystem;
+namespace {
+
+using clock = std::chrono::steady_clock;
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+// A private folder for the ipc socket, removed when the run ends.
+struct RunDirectory {
+  RunDirectory() {
+    std::string pattern = (fs::temp_directory_path() / "cosim-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot create a run folder");
+    path = pattern;
+  }
+  ~RunDirectory() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+  fs::path path;
+};
+
+}  // namespace
+
+Session::Session(scene::Scene scene)
+    : scene_(std::move(scene)), plan_(scene::plan_participants(scene_)), roles_(plan_.start) {
+  for (const auto& p : plan_.start)
+    commands_.push_back(launcher::participant_command(scene_, p, launcher::own_directory()));
+}
+
+void Session::attach(output::RunFile file, std::optional<output::Checkpoint> resume_from, bool progress) {
+  file_.emplace(std::move(file));
+  resume_ = std::move(resume_from);
+  progress_ = progress;
+}
+
+void Session::execute() {
+  announce();
+  RunDirectory dir;
+  protocol::Server server(scene_.coupling.transport == scene::Transport::Ipc
+                              ? "ipc://" + (dir.path / "coupler").string()
+                              : "tcp://127.0.0.1:*");
+  Peers peers(server, std::chrono::milliseconds(
+                          static_cast<long>(scene_.coupling.timeout * 1000.0)));
+  auto env = launcher::mpi_environment();
+  env[protocol::kEndpointEnv] = server.endpoint();
+  for (std::size_t i = 0; i < plan_.start.size(); ++i) {
+    env[protocol::kParticipantEnv] = plan_.start[i].name;
+    peers.start(plan_.start[i].name, commands_[i], env);
+  }
+  try {
+    handshake(peers);
+    windows(peers);
+    peers.stop_all(scene_.windows());
+  } catch (const ParticipantFailure& e) {
+    peers.abort_all(e.what());
+    throw;
+  } catch (const Interrupted&) {
+    peers.abort_all("the coupler was interrupted");
+    throw;
+  } catch (const std::exception& e) {
+    peers.abort_all(e.what());
+    throw;
+  }
+}
+
+void Session::announce() const {
+  std::vector<std::string> effects, started;
+  for (auto e : scene_.effects) effects.emplace_back(scene::to_string(e));
+  for (const auto& p : plan_.start)
+    started.push_back(p.name + " (provides " + scene::describe(p.provides) + ", needs " +
+                      scene::describe(p.needs) + ")");
+  spdlog::info("effects: {}", effects.empty() ? "none" : join(effects));
+  spdlog::info("participants: {}", join(started));
+  for (const auto& s : plan_.skipped) spdlog::info("not started: {}", s);
+  spdlog::info("{} windows of {} s, {}", scene_.windows(), scene_.coupling.window,
+               scene::to_string(scene_.coupling.scheme));
+}
+
+std::uint64_t Session::first_window() const { return resume_ ? resume_->next_window : 0; }
+
+double Session::window_start(std::uint64_t k) const {
+  return static_cast<double>(k) * scene_.coupling.window;
+}
+
+void Session::handshake(Peers& peers) {
+  const auto w = first_window();
+  for (const auto& [name, hello] : peers.gather(roles_.all(), protocol::Type::Hello, w)) {
+    const auto* p = scene_.participant(name);
+    const auto& planned = *std::find_if(plan_.start.begin(), plan_.start.end(),
+                                        [&](const auto& s) { return s.name == name; });
+    if (hello.header.provides != planned.provides || hello.header.needs != planned.needs)
+      throw ParticipantFailure(name, w,
+                               "provides " + scene::describe(hello.header.provides) + " and needs " +
+                                   scene::describe(hello.header.needs) + ", but the scene expects " +
+                                   scene::describe(planned.provides) + " and " +
+                                   scene::describe(planned.needs));
+    if (static_cast<int>(hello.header.ranks) != p->ranks)
+      throw ParticipantFailure(name, w,
+                               "runs on " + std::to_string(hello.header.ranks) +
+                                   " ranks, the scene asks for " + std::to_string(p->ranks));
+  }
+
+  const Eigen::VectorXd poses =
+      resume_ ? Eigen::Map<const Eigen::VectorXd>(resume_->poses.data(),
+                                                  static_cast<Eigen::Index>(resume_->poses.size()))
+              : initial_poses(scene_);
+  std::map<std::string, protocol::Message> inits;
+  for (const auto& name : roles_.all()) {
+    protocol::Message m;
+    m.header.type = protocol::Type::Init;
+    m.header.window = w;
+    m.header.t0 = window_start(w);
+    m.header.t1 = scene_.time.end;
+    m.arrays.push_back(protocol::Array::text(scene_.file.string()));
+    m.arrays.push_back(protocol::Array::text(scene_.text));
+    m.arrays.push_back(poses_array(poses));
+    if (resume_) {
+      auto state = resume_->states.at(name);
+      const auto n = static_cast<std::uint32_t>(state.size());
+      m.arrays.push_back(protocol::Array::of(protocol::Tag::State, 1, n, std::move(state)));
+    }
+    inits.emplace(name, std::move(m));
+  }
+  const auto ready = peers.exchange(std::move(inits), protocol::Type::Ready, w);
+
+  current_.poses = poses;
+  current_.forces = Eigen::VectorXd::Zero(kForceSize * static_cast<Eigen::Index>(scene_.bodies.size()));
+  for (const auto& name : roles_.pose_providers)
+    current_.poses = vector_of(ready.at(name).get(protocol::Tag::Poses));
+  for (const auto& name : roles_.force_providers)
+    current_.forces += vector_of(ready.at(name).get(protocol::Tag::Forces));
+  committed_ = checkpointed_ = w;
+  if (!resume_) {
+    record(0, 0.0, WindowResult{current_, 0, 0.0, true, {}, {}}, 0.0);
+    checkpoint(peers, 0);
+  }
+}
+
+void Session::windows(Peers& peers) {
+  WindowRunner runner(peers, roles_, scene_.coupling);
+  const auto n = scene_.windows();
+  Progress progress(first_window(), n, scene_.time.end, progress_);
+  for (auto k = first_window(); k < n; ++k) {
+    const auto started = clock::now();
+    const double t1 = window_start(k + 1);
+    WindowResult r = runner.advance(k, window_start(k), t1, current_);
+    if (!r.converged)
+      spdlog::warn("window {} (t = {} s): not converged after {} iterations, residual {:.3g}",
+                   k, t1, r.iterations, r.residual);
+    protocol::Message commit;
+    commit.header.type = protocol::Type::Commit;
+    commit.header.window = k;
+    for (const auto& name : roles_.all()) peers.send(name, commit);
+    current_ = r.end;
+    committed_ = k + 1;
+    const bool last = k + 1 == n;
+    const double wall = std::chrono::duration<double>(clock::now() - started).count();
+    if ((k + 1) % static_cast<std::uint64_t>(scene_.output.every) == 0 || last)
+      record(k + 1, t1, r, wall);
+    if ((k + 1) % static_cast<std::uint64_t>(scene_.output.checkpoint_every) == 0 || last)
+      checkpoint(peers, k + 1);
+    progress.update(k, t1, r.iterations);
+  }
+  progress.finish();
+}
+
+void Session::record(std::uint64_t window, double time, const WindowResult& r, double wall) {
+  output::WindowRecord rec;
+  rec.window = window;
+  rec.time = time;
+  rec.iterations = r.iterations;
+  rec.residual = r.residual;
+  rec.wall_seconds = wall;
+  rec.poses.assign(r.end.poses.data(), r.end.poses.data() + r.end.poses.size());
+  rec.forces.assign(r.end.forces.data(), r.end.forces.data() + r.end.forces.size());
+  for (const auto& name : roles_.all()) {
+    rec.participant_wall_seconds[name] = r.wall_seconds.contains(name) ? r.wall_seconds.at(name) : 0.0;
+    rec.participant_substeps[name] = r.substeps.contains(name) ? r.substeps.at(name) : 0.0;
+  }
+  file_->append(rec);
+}
+
+void Session::checkpoint(Peers& peers, std::uint64_t next_window) {
+  std::map<std::string, protocol::Message> requests;
+  for (const auto& name : roles_.all()) {
+    protocol::Message m;
+    m.header.type = protocol::Type::Checkpoint;
+    m.header.window = next_window;
+    requests.emplace(name, std::move(m));
+  }
+  output::Checkpoint c;
+  c.next_window = next_window;
+  c.time = window_start(next_window);
+  c.poses.assign(current_.poses.data(), current_.poses.data() + current_.poses.size());
+  c.forces.assign(current_.forces.data(), current_.forces.data() + current_.forces.size());
+  for (auto& [name, m] : peers.exchange(std::move(requests), protocol::Type::State, next_window))
+    c.states[name] = m.get(protocol::Tag::State).values;
+  file_->write_checkpoint(c);
+  checkpointed_ = next_window;
+}
+
+}  // namespace cosim::run

@@ -1,0 +1,57 @@
+// One coupled run with its participants: start them, shake hands, run the windows, record
+// every committed window and checkpoint, stop them. Whatever goes wrong is thrown after the
+// participants have been aborted; the caller reports it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "output/run_file.hpp"
+#include "run/exchange.hpp"
+#include "run/peers.hpp"
+#include "run/window.hpp"
+#include "scene/plan.hpp"
+#include "scene/scene.hpp"
+
+namespace cosim::run {
+
+class Session {
+ public:
+  // Everything that can be wrong with the scene is found here, before the run file is
+  // touched or any process starts.
+  explicit Session(scene::Scene scene);
+
+  // Where to write, and where to start from (a checkpoint when resuming).
+  void attach(output::RunFile file, std::optional<output::Checkpoint> resume_from, bool progress);
+  void execute();
+
+  const scene::Scene& scene() const { return scene_; }
+  std::vector<std::string> participant_names() const { return roles_.all(); }
+  output::RunFile& file() { return *file_; }
+  std::uint64_t committed() const { return committed_; }
+  std::uint64_t checkpointed() const { return checkpointed_; }
+
+ private:
+  void announce() const;
+  std::uint64_t first_window() const;
+  double window_start(std::uint64_t k) const;
+  void handshake(Peers& peers);
+  void windows(Peers& peers);
+  void record(std::uint64_t window, double time, const WindowResult& r, double wall);
+  void checkpoint(Peers& peers, std::uint64_t next_window);
+
+  scene::Scene scene_;
+  scene::Plan plan_;
+  Roles roles_;
+  std::vector<std::vector<std::string>> commands_;  // per plan_.start
+  std::optional<output::RunFile> file_;
+  std::optional<output::Checkpoint> resume_;
+  bool progress_ = true;
+  Exchange current_;
+  std::uint64_t committed_ = 0;
+  std::uint64_t checkpointed_ = 0;
+};
+
+}  // namespace cosim::run
