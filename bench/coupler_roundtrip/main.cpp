@@ -1,6 +1,7 @@
-// Coupling-window round trips per second for 2 and 3 participants exchanging 1, 1000 and
-// 1e6 doubles over ipc and tcp, next to a raw ZeroMQ exchange of the same bytes, then a
-// table of the overhead. Extra arguments go to Google Benchmark (--benchmark_filter=...).
+// Coupling-window round trips per second for 2 and 3 participants with N = 1, 1000 and 1e6
+// doubles per input and output (2N out, N back) over ipc and tcp, next to a raw ZeroMQ
+// exchange of the same bytes, then a table of the overhead. Extra arguments go to Google
+// Benchmark (--benchmark_filter=...).
 #include <benchmark/benchmark.h>
 
 #include "cases.hpp"

@@ -11,19 +11,24 @@
 namespace cosim::bench {
 namespace {
 
-// Echoes each frame from a buffer of its own (a solver's outputs), copied once into the
-// frame like encode() does; an empty frame ends it.
+// Answers each pair of frames (the input at the window start and at its end) with one
+// frame of outputs computed into a buffer of its own and copied once into the frame, like
+// encode() does; an empty frame ends it.
 void peer(const std::string& endpoint, const std::string& name, std::size_t doubles) {
   zmq::context_t context;
   zmq::socket_t socket(context, zmq::socket_type::dealer);
   socket.set(zmq::sockopt::routing_id, name);
   socket.set(zmq::sockopt::linger, 1000);
   socket.connect(endpoint);
-  const std::vector<double> outputs(doubles, 2.0);
+  std::vector<double> outputs(doubles);
   socket.send(zmq::message_t(), zmq::send_flags::none);  // lets the router learn this name
-  for (zmq::message_t in; socket.recv(in) && in.size() > 0;)
+  for (std::vector<zmq::message_t> in;; in.clear()) {
+    (void)zmq::recv_multipart(socket, std::back_inserter(in));
+    if (in.size() != 2) break;
+    answer(in[0].data(), in[1].data(), outputs);
     socket.send(zmq::message_t(outputs.data(), outputs.size() * sizeof(double)),
                 zmq::send_flags::none);
+  }
 }
 
 }  // namespace
@@ -46,12 +51,14 @@ void raw(benchmark::State& state, Case c) {
     ids.push_back(frames.front().to_string());
   }
 
-  const std::vector<double> inputs(c.doubles, 1.0);
-  const std::size_t bytes = inputs.size() * sizeof(double);
+  const std::vector<double> start(c.doubles, 1.0);
+  const std::vector<double> end(c.doubles, 1.5);
+  const std::size_t bytes = c.doubles * sizeof(double);
   for (auto _ : state) {
     for (const auto& id : ids) {
       router.send(zmq::buffer(id), zmq::send_flags::sndmore);
-      router.send(zmq::message_t(inputs.data(), bytes), zmq::send_flags::none);
+      router.send(zmq::message_t(start.data(), bytes), zmq::send_flags::sndmore);
+      router.send(zmq::message_t(end.data(), bytes), zmq::send_flags::none);
     }
     for (int i = 0; i < c.participants; ++i) {
       frames.clear();

@@ -28,10 +28,14 @@ void Summary::ReportRuns(const std::vector<Run>& runs) {
 
 void Summary::print_table(const std::vector<Case>& cases) const {
   std::printf(
-      "\nOne window = Advance with N doubles to every participant, a Result with N doubles\n"
-      "back from each (encoded, sent, decoded and validated). Raw = the same scatter/gather\n"
-      "to the same number of peers, one plain frame of the same bytes each way.\n"
-      "overhead = raw windows/s / coupler windows/s; GB/s counts both directions.\n\n");
+      "\nOne window = an Advance to every participant carrying its input at the window start\n"
+      "and at its end (two arrays of N doubles), a Result back from each with its outputs\n"
+      "(N doubles, computed from both inputs into a buffer of its own) and its Stats; all\n"
+      "encoded, sent, decoded and validated. Raw = the same scatter/gather to the same number\n"
+      "of peers with plain frames of the same payload (two of N doubles out, one back) and\n"
+      "the same computation, but no header, no validation, received in place.\n"
+      "overhead = raw windows/s / coupler windows/s; GB/s counts the 3N doubles per\n"
+      "participant (both directions).\n\n");
   std::printf("%5s %9s %5s %16s %16s %9s %10s %10s\n", "parts", "N", "via", "coupler win/s",
               "raw win/s", "overhead", "cpl GB/s", "raw GB/s");
   for (const Case& c : cases) {

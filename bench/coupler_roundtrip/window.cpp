@@ -19,19 +19,26 @@ Message of_type(Type type) {
   return m;
 }
 
-// Answers every Advance with a Result of the same size, as a solver would after its
-// substeps; the inputs it was sent become its outputs so that no extra copy is timed.
+// Answers every Advance as a solver would after its substeps: its outputs, computed into a
+// buffer of its own, and its Stats.
 void participant(const std::string& endpoint, const std::string& name) {
   Client client(endpoint, name);
   client.hello(0, 0);
+  std::vector<double> outputs;
   for (;;) {
-    Message in = client.wait_for({Type::Advance, Type::Stop}, kTimeout);
+    const Message in = client.wait_for({Type::Advance, Type::Stop}, kTimeout);
     if (in.header.type == Type::Stop) break;
+    if (in.arrays.size() != 2 || in.arrays[0].values.size() != in.arrays[1].values.size())
+      throw std::runtime_error("Advance without the input at the window start and end");
+    const Array& start = in.arrays[0];
+    outputs.resize(start.values.size());
+    answer(start.values.data(), in.arrays[1].values.data(), outputs);
     Message out = of_type(Type::Result);
     out.header.window = in.header.window;
     out.header.t0 = in.header.t0;
     out.header.t1 = in.header.t1;
-    out.arrays.push_back(std::move(in.arrays.front()));
+    // Copies the outputs into the message, as run_participant does with a solver's.
+    out.arrays.push_back(Array::of(start.tag, start.rows, start.cols, outputs));
     out.arrays.push_back(Array::of(Tag::Stats, 1, 2, {1.0, 0.0}));
     client.reply(std::move(out));
   }
@@ -60,13 +67,17 @@ void window(benchmark::State& state, Case c) {
   for (int i = 0; i < c.participants; ++i) expect(server, Type::Hello);
   for (const auto& name : names) server.send(name, of_type(Type::Init));
 
+  // The coupler sends each input twice, at the window start and at its end.
   Message advance = of_type(Type::Advance);
   advance.arrays.push_back(payload(c.doubles));
+  advance.arrays.push_back(payload(c.doubles));
+  for (double& v : advance.arrays.back().values) v += 0.5;
   for (auto _ : state) {
     for (const auto& name : names) server.send(name, advance);
     for (int i = 0; i < c.participants; ++i) {
       const Message result = expect(server, Type::Result);
-      if (result.arrays.front().values.size() != c.doubles)
+      if (result.arrays.size() != 2 || result.arrays.front().values.size() != c.doubles ||
+          result.get(Tag::Stats).values.size() != 2)
         throw std::runtime_error("result of the wrong size");
     }
     advance.header.window += 1;

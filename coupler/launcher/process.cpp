@@ -7,6 +7,8 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <thread>
 
@@ -60,7 +62,7 @@ Process::Process(std::string name, const std::vector<std::string>& argv,
 }
 
 Process::Process(Process&& o) noexcept
-    : name_(std::move(o.name_)), pid_(o.pid_), ended_(std::move(o.ended_)) {
+    : name_(std::move(o.name_)), pid_(o.pid_), ended_(std::move(o.ended_)), group_ended_(o.group_ended_) {
   o.pid_ = -1;
 }
 
@@ -85,14 +87,29 @@ void Process::stop(std::chrono::milliseconds grace) {
   if (pid_ <= 0) return;
   if (!wait_until(clock::now() + grace)) {
     kill(-pid_, SIGTERM);
-    if (!wait_until(clock::now() + std::chrono::seconds(2))) {
+    // mpirun needs a moment to pass SIGTERM on to its ranks and collect them.
+    if (!wait_until(clock::now() + std::chrono::seconds(5))) {
       kill(-pid_, SIGKILL);
       int status = 0;
       if (waitpid(pid_, &status, 0) == pid_) ended_ = describe(status);
     }
   }
-  // Ranks under mpirun or helpers the participant forked may outlive its main process.
-  kill(-pid_, SIGKILL);
+  // Helpers the participant forked into its group may outlive its main process. Once
+  // only: after that the group id could in principle be reused.
+  if (!group_ended_) kill(-pid_, SIGKILL);
+  group_ended_ = true;
+}
+
+void adopt_orphans() { prctl(PR_SET_CHILD_SUBREAPER, 1); }
+
+void end_orphans() {
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+    std::ifstream children(task.path() / "children");
+    for (pid_t pid = 0; children >> pid;) {
+      kill(pid, SIGKILL);
+      waitpid(pid, nullptr, 0);
+    }
+  }
 }
 
 }  // namespace cosim::launcher

@@ -1,7 +1,7 @@
 // Child processes of the launcher. Each participant runs in its own process group, so a
 // Ctrl-C at the terminal reaches only the coupler, which then shuts the participants down
-// in order; and it dies with the coupler (PR_SET_PDEATHSIG), so nothing is left orphaned
-// even if the coupler itself is killed.
+// in order; and it gets SIGTERM when the coupler dies (PR_SET_PDEATHSIG), so it does not
+// outlive even a killed coupler (mpirun forwards the SIGTERM to its ranks).
 #pragma once
 
 #include <sys/types.h>
@@ -36,6 +36,14 @@ class Process {
   std::string name_;
   pid_t pid_ = -1;
   std::optional<std::string> ended_;
+  bool group_ended_ = false;
 };
+
+// Makes this process adopt its descendants orphaned below it (PR_SET_CHILD_SUBREAPER):
+// mpirun puts every rank in a process group of its own, so if mpirun dies the ranks would
+// otherwise escape to init.
+void adopt_orphans();
+// Kills and reaps every child of this process still alive: orphans adopted as above.
+void end_orphans();
 
 }  // namespace cosim::launcher

@@ -3,8 +3,10 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "output/h5_groups.hpp"
 #include "output/h5_handle.hpp"
 #include "output/h5_types.hpp"
+#include "output/series.hpp"
 
 namespace cosim::output {
 namespace {
@@ -25,6 +27,9 @@ Handle simple_space(const std::vector<hsize_t>& dims, const std::string& where) 
 Handle scalar_space(const std::string& where) {
   return Handle(H5Screate(H5S_SCALAR), H5Sclose, "make dataspace for " + where);
 }
+
+// A text list holds a few entries (one per resume), so its chunks are small.
+constexpr hsize_t kTextListChunk = 16;
 
 std::size_t points(hid_t space, const std::string& where) {
   const hssize_t n = H5Sget_simple_extent_npoints(space);
@@ -184,6 +189,40 @@ std::string read_text(hid_t group, const std::string& name) {
   check(H5Dread(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()),
         "read " + where);
   return take_strings(raw, type.get(), where).front();
+}
+
+void create_text_list(hid_t group, const std::string& name) {
+  create_extendible(group, name, utf8_string_type().get(), 1, kTextListChunk);
+}
+
+void append_text(hid_t group, const std::string& name, const std::string& text) {
+  const std::string where = dataset_where(group, name);
+  Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
+  Handle space(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
+  const hsize_t start = points(space.get(), where);
+  const hsize_t one = 1;
+  const hsize_t grown = start + 1;
+  check(H5Dset_extent(ds.get(), &grown), "extend " + where);
+  space = Handle(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
+  check(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, &start, nullptr, &one, nullptr),
+        "select end of " + where);
+  const char* data = text.c_str();
+  check(H5Dwrite(ds.get(), utf8_string_type().get(), simple_space({1}, where).get(), space.get(),
+                 H5P_DEFAULT, &data),
+        "write " + where);
+}
+
+std::vector<std::string> read_text_list(hid_t group, const std::string& name) {
+  const std::string where = dataset_where(group, name);
+  Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
+  Handle space(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
+  Handle type = utf8_string_type();
+  std::vector<char*> raw(points(space.get(), where));
+  if (!raw.empty()) {
+    check(H5Dread(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()),
+          "read " + where);
+  }
+  return take_strings(raw, type.get(), where);
 }
 
 }  // namespace cosim::output

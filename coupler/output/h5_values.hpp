@@ -32,4 +32,11 @@ T read_attribute(hid_t object, const std::string& name);
 void write_text(hid_t group, const std::string& name, const std::string& text);
 std::string read_text(hid_t group, const std::string& name);
 
+// A list of strings that only ever grows: a chunked 1-d dataset. Appending frees no file
+// space, where replacing a growing list attribute does (see run_file.hpp on why that
+// matters).
+void create_text_list(hid_t group, const std::string& name);
+void append_text(hid_t group, const std::string& name, const std::string& text);
+std::vector<std::string> read_text_list(hid_t group, const std::string& name);
+
 }  // namespace cosim::output

@@ -1,6 +1,10 @@
 #include "output/run_file.hpp"
 
+#include <fcntl.h>
+
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <ctime>
 #include <optional>
 #include <set>
@@ -56,6 +60,49 @@ void write_status(hid_t file, const std::string& status, double wall_seconds) {
   write_attribute(run.get(), "wall_seconds", wall_seconds);
 }
 
+// The coupler forks its participants while the file is open. An inherited descriptor
+// shares HDF5's lock (it belongs to the open file description), so a participant outliving
+// a killed coupler would keep --resume from opening the file.
+void close_on_exec(hid_t file) {
+  Handle fapl(H5Fget_access_plist(file), H5Pclose, "get file access properties");
+  // Only the sec2 driver's handle is an int*.
+  if (H5Pget_driver(fapl.get()) != H5FD_SEC2) throw ObjectError("file driver is not sec2");
+  void* handle = nullptr;
+  check(H5Fget_vfd_handle(file, fapl.get(), &handle), "get file descriptor");
+  const int fd = *static_cast<int*>(handle);
+  const int flags = fcntl(fd, F_GETFD);
+  if (flags < 0 || fcntl(fd, F_SETFD, flags | FD_CLOEXEC) < 0) {
+    throw ObjectError(std::string("set close-on-exec: ") + std::strerror(errno));
+  }
+}
+
+Handle open_run_file(const std::filesystem::path& path, unsigned flags) {
+  // Said before H5Fopen would: its message for this is "file signature not found".
+  if (H5Fis_hdf5(path.c_str()) == 0) throw ObjectError("not a cosim run file (not HDF5)");
+  Handle file(H5Fopen(path.c_str(), flags, H5P_DEFAULT), H5Fclose, "open file");
+  close_on_exec(file.get());
+  if (!has_link(file.get(), "run")) throw ObjectError("not a cosim run file (no /run group)");
+  return file;
+}
+
+const char* const kResumedBy = "resumed_by";
+
+RunSummary read_summary(hid_t file) {
+  RunSummary s;
+  Handle run = open_group(file, "run");
+  s.info.scene_text = read_text(run.get(), "scene_text");
+  s.info.scene_file = read_attribute<std::string>(run.get(), "scene_file");
+  s.info.git_hash = read_attribute<std::string>(run.get(), "git_hash");
+  s.info.cosim_version = read_attribute<std::string>(run.get(), "cosim_version");
+  s.info.protocol_version = read_attribute<int>(run.get(), "protocol_version");
+  s.bodies = read_attribute<std::vector<std::string>>(run.get(), "body_names");
+  s.participants = read_attribute<std::vector<std::string>>(run.get(), "participant_names");
+  s.status = read_attribute<std::string>(run.get(), "status");
+  s.wall_seconds = read_attribute<double>(run.get(), "wall_seconds");
+  if (has_link(run.get(), kResumedBy)) s.resumed_by = read_text_list(run.get(), kResumedBy);
+  return s;
+}
+
 }  // namespace
 
 struct RunFile::Impl {
@@ -66,6 +113,7 @@ struct RunFile::Impl {
   std::vector<std::string> participants;
   std::optional<Checkpoint> checkpoint;
   std::optional<RunSeries> series;
+  double earlier_wall_seconds = 0.0;  // of the sessions before this one
 
   // Closes the series before the file, with errors quiet: a destructor cannot report them.
   ~Impl() {
@@ -94,6 +142,7 @@ RunFile RunFile::create(const std::filesystem::path& path, const RunInfo& info,
     impl->file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
                         H5Fclose, "create file");
     const hid_t file = impl->file.get();
+    close_on_exec(file);
     {
       Handle run = create_group(file, "run");
       write_text(run.get(), "scene_text", info.scene_text);
@@ -104,6 +153,7 @@ RunFile RunFile::create(const std::filesystem::path& path, const RunInfo& info,
       write_attribute(run.get(), "started", utc_now_iso8601());
       write_attribute(run.get(), "body_names", bodies);
       write_attribute(run.get(), "participant_names", participants);
+      create_text_list(run.get(), kResumedBy);
     }
     write_status(file, "running", 0.0);
     impl->series = RunSeries::create(file, bodies, participants);
@@ -112,31 +162,40 @@ RunFile RunFile::create(const std::filesystem::path& path, const RunInfo& info,
   });
 }
 
-RunFile RunFile::resume(const std::filesystem::path& path) {
+RunSummary RunFile::peek(const std::filesystem::path& path) {
+  return in_file(path, [&] {
+    const Handle file = open_run_file(path, H5F_ACC_RDONLY);
+    RunSummary s = read_summary(file.get());
+    const std::optional<Checkpoint> c = read_checkpoint(file.get(), s.participants);
+    s.has_checkpoint = c.has_value();
+    if (c) s.checkpoint_window = c->next_window;
+    return s;
+  });
+}
+
+RunFile RunFile::resume(const std::filesystem::path& path, const std::string& git_hash) {
   return in_file(path, [&] {
     auto impl = std::make_unique<Impl>();
     impl->path = path;
-    impl->file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, "open file");
+    impl->file = open_run_file(path, H5F_ACC_RDWR);
     const hid_t file = impl->file.get();
-    double wall_seconds = 0.0;
-    {
-      Handle run = open_group(file, "run");
-      impl->info.scene_text = read_text(run.get(), "scene_text");
-      impl->info.scene_file = read_attribute<std::string>(run.get(), "scene_file");
-      impl->info.git_hash = read_attribute<std::string>(run.get(), "git_hash");
-      impl->info.cosim_version = read_attribute<std::string>(run.get(), "cosim_version");
-      impl->info.protocol_version = read_attribute<int>(run.get(), "protocol_version");
-      impl->bodies = read_attribute<std::vector<std::string>>(run.get(), "body_names");
-      impl->participants = read_attribute<std::vector<std::string>>(run.get(), "participant_names");
-      wall_seconds = read_attribute<double>(run.get(), "wall_seconds");
-    }
+    RunSummary s = read_summary(file);
+    impl->info = s.info;
+    impl->bodies = s.bodies;
+    impl->participants = s.participants;
+    impl->earlier_wall_seconds = s.wall_seconds;
     impl->checkpoint = read_checkpoint(file, impl->participants);
     if (!impl->checkpoint) {
       throw std::runtime_error("no checkpoint in " + path.string() + ": it cannot be resumed");
     }
     impl->series = RunSeries::open(file, impl->bodies, impl->participants);
     impl->series->cut_after(impl->checkpoint->time);
-    write_status(file, "running", wall_seconds);
+    write_status(file, "running", s.wall_seconds);
+    {
+      Handle run = open_group(file, "run");
+      if (!has_link(run.get(), kResumedBy)) create_text_list(run.get(), kResumedBy);  // older file
+      append_text(run.get(), kResumedBy, git_hash);
+    }
     flush(file);
     return RunFile(std::move(impl));
   });
@@ -165,7 +224,7 @@ void RunFile::write_checkpoint(const Checkpoint& c) {
 
 void RunFile::set_status(const std::string& status, double wall_seconds) {
   in_file(impl_->path, [&] {
-    write_status(impl_->file.get(), status, wall_seconds);
+    write_status(impl_->file.get(), status, impl_->earlier_wall_seconds + wall_seconds);
     flush(impl_->file.get());
   });
 }

@@ -1,11 +1,14 @@
 // The run's HDF5 file: what a run leaves behind, and what --resume starts from.
 //
 // Layout (every series is a chunked, extendible dataset; one row per written window):
-//   /run                 attrs: scene_file, git_hash, cosim_version, protocol_version,
-//                        started (ISO 8601 UTC), wall_seconds, status ("running", "finished",
-//                        "failed: ...", "interrupted"), body_names, participant_names
-//                        (string lists, scene order); dataset scene_text (scalar string:
-//                        a scene can exceed the 64 KiB attribute limit)
+//   /run                 attrs: scene_file, git_hash, cosim_version, protocol_version (of
+//                        the build that created the file), started (ISO 8601 UTC),
+//                        wall_seconds (summed over all sessions of the run), status
+//                        ("running", "finished", "failed: ...", "interrupted"), body_names,
+//                        participant_names (string lists, scene order); datasets
+//                        scene_text (scalar string: a scene can exceed the 64 KiB attribute
+//                        limit), resumed_by (n strings: the git hash of the build of each
+//                        resume, in order; a dataset because it only grows, see below)
 //   /bodies/<name>/      time (n), position (n x 3), orientation (n x 4, w x y z),
 //                        velocity (n x 3), angular_velocity (n x 3), force (n x 3),
 //                        torque (n x 3)
@@ -30,6 +33,11 @@
 // previous checkpoint whole. Checkpoint writes never free file space (datasets are only
 // overwritten and grown) because HDF5 1.10 can shrink the file before it rewrites the
 // superblock, and a kill between the two leaves a file it refuses to open ("truncated file").
+// For the same reason resume() appends to the resumed_by dataset: rewriting a growing list
+// attribute moves /run's object header, and kills inside resume() then left files HDF5
+// could not open ("addr overflow").
+// The file's descriptor is close-on-exec: participants forked while it is open must not
+// inherit it, nor with it HDF5's lock, which would keep --resume out after a crash.
 // Errors are std::runtime_error naming the file and the HDF5 object.
 #pragma once
 
@@ -48,6 +56,18 @@ struct RunInfo {
   std::string git_hash;
   std::string cosim_version;
   int protocol_version = 0;
+};
+
+// What peek() finds in a run file.
+struct RunSummary {
+  RunInfo info;                           // as the run was created
+  std::vector<std::string> bodies;        // scene order
+  std::vector<std::string> participants;  // scene order
+  std::string status;                     // as the last session left it
+  double wall_seconds = 0.0;              // summed over the sessions that set a status
+  std::vector<std::string> resumed_by;    // git hashes, one per resume
+  bool has_checkpoint = false;            // false: resume() would throw
+  std::uint64_t checkpoint_window = 0;    // with a checkpoint: the window a resume runs next
 };
 
 // One committed window, as the coupler writes it.
@@ -77,9 +97,14 @@ class RunFile {
   static RunFile create(const std::filesystem::path& path, const RunInfo& info,
                         const std::vector<std::string>& bodies,
                         const std::vector<std::string>& participants);
+  // Reads /run and the checkpoint's window without changing the file (opened read-only),
+  // so that --resume can validate what it found before resume() writes anything. Throws
+  // naming the file if it is not a run file (or HDF5 cannot open or lock it).
+  static RunSummary peek(const std::filesystem::path& path);
   // Opens an existing run file for --resume: reads /run and /checkpoint, cuts every series
-  // back to the checkpoint time so the resumed run appends exactly after it.
-  static RunFile resume(const std::filesystem::path& path);
+  // back to the checkpoint time so the resumed run appends exactly after it, sets status
+  // "running" and appends git_hash (the resuming build's) to resumed_by.
+  static RunFile resume(const std::filesystem::path& path, const std::string& git_hash);
 
   RunFile(RunFile&&) noexcept;
   RunFile& operator=(RunFile&&) noexcept;
@@ -91,6 +116,7 @@ class RunFile {
   void append(const WindowRecord& w);    // writes one row everywhere and flushes
   // Replaces the checkpoint: writes the other slot, flushes, switches `current`, flushes.
   void write_checkpoint(const Checkpoint& c);
+  // wall_seconds: this session's; the file stores it added to the earlier sessions' total.
   void set_status(const std::string& status, double wall_seconds);
 
  private:

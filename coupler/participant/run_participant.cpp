@@ -23,9 +23,10 @@ Message outputs_message(Type type, const Outputs& out, std::uint32_t provides, d
     return static_cast<std::uint32_t>(v.size() / cols);
   };
   if (scene::has(provides, scene::Data::Poses))
-    m.arrays.push_back(Array::of(Tag::Poses, rows(out.poses, 13), 13, out.poses));
+    m.arrays.push_back(Array::of(Tag::Poses, rows(out.poses, protocol::kPoseWidth), protocol::kPoseWidth, out.poses));
   if (scene::has(provides, scene::Data::Forces))
-    m.arrays.push_back(Array::of(Tag::Forces, rows(out.forces, 6), 6, out.forces));
+    m.arrays.push_back(
+        Array::of(Tag::Forces, rows(out.forces, protocol::kForceWidth), protocol::kForceWidth, out.forces));
   m.arrays.push_back(Array::of(Tag::Stats, 1, 2, {out.substeps, wall}));
   return m;
 }
@@ -98,7 +99,7 @@ int run_participant(protocol::Client& client, Solver& solver, std::uint32_t prov
   try {
     return serve(client, solver, provides, needs);
   } catch (const protocol::Aborted& e) {
-    std::cerr << client.name() << ": the coupler aborted the run: " << e.what() << "\n";
+    std::cerr << client.name() << ": " << e.what() << "\n";
   } catch (const std::exception& e) {
     std::cerr << client.name() << ": " << e.what() << "\n";
     try {

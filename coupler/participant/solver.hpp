@@ -19,8 +19,10 @@ struct Window {
 
 // The coupler's values at the window's start and end, bodies in scene order (poses
 // b x 13, forces b x 6, row-major). A solver evaluates them at an instant s in [t0, t1]
-// by linear interpolation (lerp(), below): constant in explicit schemes, where start and
-// end are equal, and second order in implicit ones.
+// by linear interpolation (lerp(), below). Where the scheme has no newer value yet, start
+// and end are equal (the first participant of serial-explicit, everyone in
+// parallel-explicit): held constant, first order. Implicit schemes converge the end value:
+// second order.
 struct Inputs {
   std::vector<double> poses_start, poses_end;
   std::vector<double> forces_start, forces_end;

@@ -83,22 +83,15 @@ Array read_descriptor(std::size_t index, const std::byte* d, Bytes payload) {
   return Array{.tag = tag, .rows = rows, .cols = cols, .values = {}, .bytes = {}};
 }
 
-// The one copy out of the frame. Large frames from ZeroMQ are 8-byte aligned and are read
-// as doubles, so the vector is filled in a single pass; small ones may sit at any offset
-// in ZeroMQ's receive buffer and are zeroed, then copied bytewise.
+// The one copy out of the frame, bytewise: frames may sit at any offset in ZeroMQ's
+// receive buffer, and reading their bytes as doubles in place would break aliasing rules.
 void fill(std::size_t index, Array& a, Bytes payload) {
   if (rules::dtype_of(a.tag) == DType::Bytes) {
     a.bytes.assign(reinterpret_cast<const char*>(payload.data()), payload.size());
     return;
   }
-  const std::size_t n = payload.size() / sizeof(double);
-  if (reinterpret_cast<std::uintptr_t>(payload.data()) % alignof(double) == 0) {
-    const auto* first = reinterpret_cast<const double*>(payload.data());
-    a.values.assign(first, first + n);
-  } else if (n > 0) {
-    a.values.resize(n);
-    std::memcpy(a.values.data(), payload.data(), payload.size());
-  }
+  a.values.resize(payload.size() / sizeof(double));
+  if (!payload.empty()) std::memcpy(a.values.data(), payload.data(), payload.size());
   rules::check_values(index, a.tag, a.cols, a.values);
 }
 

@@ -22,6 +22,11 @@ inline constexpr std::uint16_t kVersion = 1;
 inline constexpr std::size_t kNameSize = 32;          // participant name, NUL padded
 inline constexpr std::size_t kMaxArrays = 64;
 
+// Columns of the per-body arrays and of the stats row.
+inline constexpr std::uint32_t kPoseWidth = 13;   // position, quaternion w x y z, velocity, angular velocity
+inline constexpr std::uint32_t kForceWidth = 6;   // force, torque
+inline constexpr std::uint32_t kStatsWidth = 2;   // substeps, wall seconds
+
 struct ProtocolError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

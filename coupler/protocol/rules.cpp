@@ -65,8 +65,13 @@ void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t c
       throw ProtocolError(array_label(index, tag) + " has " + std::to_string(cols) +
                           " columns, expected " + std::to_string(n));
   };
-  if (tag == Tag::Poses) need_cols(13);
-  if (tag == Tag::Forces) need_cols(6);
+  if (tag == Tag::Poses) need_cols(kPoseWidth);
+  if (tag == Tag::Forces) need_cols(kForceWidth);
+  if (tag == Tag::Stats) {
+    need_cols(kStatsWidth);
+    if (rows != 1)
+      throw ProtocolError(array_label(index, tag) + " has " + std::to_string(rows) + " rows, expected 1");
+  }
   if (tag == Tag::Text && rows != 1)
     throw ProtocolError(array_label(index, tag) + " has " + std::to_string(rows) +
                         " rows, text is a single row of bytes");

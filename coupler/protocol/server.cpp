@@ -35,7 +35,7 @@ void Server::send(const std::string& participant, const Message& m) {
     socket_.send(zmq::buffer(participant), zmq::send_flags::sndmore);
   } catch (const zmq::error_t& e) {
     if (e.num() != EHOSTUNREACH) throw;
-    throw ProtocolError("participant '" + participant + "' is not connected to the coupler");
+    throw PeerError(participant, "is not connected to the coupler");
   }
   zmq::send_multipart(socket_, frames);
 }
@@ -49,11 +49,10 @@ std::optional<Message> Server::receive(std::chrono::milliseconds timeout) {
   try {
     m = decode(std::span(frames).subspan(1));
   } catch (const ProtocolError& e) {
-    throw ProtocolError("message from '" + peer + "': " + e.what());
+    throw PeerError(peer, std::string("sent a message the coupler cannot read: ") + e.what());
   }
   if (m.header.participant != frames.front().to_string_view())
-    throw ProtocolError("participant connected as '" + peer + "' sent a message signed '" +
-                        m.header.participant + "'");
+    throw PeerError(peer, "sent a message signed '" + m.header.participant + "'");
   return m;
 }
 

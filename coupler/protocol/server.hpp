@@ -12,6 +12,17 @@
 
 namespace cosim::protocol {
 
+// A failure that belongs to one participant: it cannot be reached, or what it sent is not
+// a valid message. what() = "participant '<peer>' <problem>".
+struct PeerError : ProtocolError {
+  PeerError(std::string peer, std::string problem)
+      : ProtocolError("participant '" + peer + "' " + problem),
+        peer(std::move(peer)),
+        problem(std::move(problem)) {}
+  std::string peer;
+  std::string problem;
+};
+
 class Server {
  public:
   // Binds endpoint: "ipc:///path" or "tcp://127.0.0.1:0" (port 0 = pick a free one).

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "cosim_git_hash.hpp"
+#include "launcher/process.hpp"
 #include "output/run_file.hpp"
 #include "run/failure.hpp"
 #include "run/interrupt.hpp"
@@ -31,15 +32,20 @@ std::vector<std::string> names_of(const scene::Scene& scene) {
 
 int run(const RunRequest& request) {
   install_interrupt_handlers();
+  launcher::adopt_orphans();
   const auto wall_start = clock::now();
   const auto wall = [&] { return std::chrono::duration<double>(clock::now() - wall_start).count(); };
 
   std::optional<Session> session;
   fs::path path;
   if (request.resume) {
+    // Validate what the file holds before resume() writes anything to it.
     path = *request.resume;
-    auto file = output::RunFile::resume(path);
-    session.emplace(scene::load_scene_from_string(file.info().scene_text, file.info().scene_file));
+    const auto summary = output::RunFile::peek(path);
+    if (!summary.has_checkpoint)
+      throw std::runtime_error(path.string() + " has no checkpoint: it cannot be resumed");
+    session.emplace(scene::load_scene_from_string(summary.info.scene_text, summary.info.scene_file));
+    auto file = output::RunFile::resume(path, COSIM_GIT_HASH);
     auto from = file.checkpoint();
     spdlog::info("resuming {} from window {} (t = {} s)", path.string(), from.next_window, from.time);
     session->attach(std::move(file), std::move(from), request.progress);
@@ -53,8 +59,11 @@ int run(const RunRequest& request) {
   }
 
   const auto resume_hint = [&] {
-    return fmt::format("the run file {} keeps {} committed windows; continue with: cosim run --resume {}",
-                       path.string(), session->committed(), path.string());
+    const auto from = session->checkpointed();
+    return from ? fmt::format("the run file {} keeps {} committed windows; continue from its checkpoint at "
+                              "window {} with: cosim run --resume {}",
+                              path.string(), session->committed(), *from, path.string())
+                : fmt::format("{} has no checkpoint to resume from", path.string());
   };
   try {
     session->execute();
@@ -65,7 +74,7 @@ int run(const RunRequest& request) {
   } catch (const std::exception& e) {
     session->file().set_status(std::string("failed: ") + e.what(), wall());
     spdlog::error("{}", e.what());
-    spdlog::error("{} (last checkpoint: window {})", resume_hint(), session->checkpointed());
+    spdlog::error("{}", resume_hint());
     return 1;
   }
   session->file().set_status("finished", wall());

@@ -1,11 +1,19 @@
 #include "run/exchange.hpp"
 
+#include <fmt/format.h>
+
+#include "run/failure.hpp"
+
 namespace cosim::run {
 
 Roles::Roles(const std::vector<scene::Participant>& started) {
   for (const auto& p : started) {
-    if (scene::has(p.provides, scene::Data::Poses)) pose_providers.push_back(p.name);
-    if (scene::has(p.provides, scene::Data::Forces)) force_providers.push_back(p.name);
+    if (scene::has(p.provides, scene::Data::Poses))
+      pose_providers.push_back(p.name);
+    else if (scene::has(p.provides, scene::Data::Forces))
+      force_providers.push_back(p.name);
+    else
+      others.push_back(p.name);
     needs[p.name] = p.needs;
     provides[p.name] = p.provides;
   }
@@ -48,8 +56,18 @@ protocol::Array forces_array(const Eigen::VectorXd& forces) {
   return array_of(protocol::Tag::Forces, forces, kForceSize);
 }
 
-Eigen::VectorXd vector_of(const protocol::Array& a) {
-  return Eigen::Map<const Eigen::VectorXd>(a.values.data(), static_cast<Eigen::Index>(a.values.size()));
+Eigen::VectorXd take(const protocol::Message& m, protocol::Tag tag, Eigen::Index size,
+                     const std::string& when) {
+  const auto* a = m.find(tag);
+  const auto* name = protocol::to_string(tag);
+  if (a == nullptr)
+    throw ParticipantFailure(m.header.participant,
+                             fmt::format("sent {} without {}", protocol::to_string(m.header.type), name), when);
+  if (static_cast<Eigen::Index>(a->values.size()) != size)
+    throw ParticipantFailure(m.header.participant,
+                             fmt::format("sent {} with {} values, expected {}", name, a->values.size(), size),
+                             when);
+  return Eigen::Map<const Eigen::VectorXd>(a->values.data(), size);
 }
 
 }  // namespace cosim::run

@@ -13,8 +13,8 @@
 
 namespace cosim::run {
 
-inline constexpr int kPoseSize = 13;  // position, quaternion w x y z, velocity, angular velocity
-inline constexpr int kForceSize = 6;  // force, torque
+inline constexpr int kPoseSize = protocol::kPoseWidth;
+inline constexpr int kForceSize = protocol::kForceWidth;
 
 // Bodies in scene order.
 struct Exchange {
@@ -25,6 +25,7 @@ struct Exchange {
 struct Roles {
   std::vector<std::string> pose_providers;   // at most one (validated by the scene plan)
   std::vector<std::string> force_providers;  // their forces add up
+  std::vector<std::string> others;           // provide neither: advanced after the rest
   std::map<std::string, scene::DataSet> needs;
   std::map<std::string, scene::DataSet> provides;
 
@@ -37,6 +38,9 @@ Eigen::VectorXd initial_poses(const scene::Scene& scene);
 
 protocol::Array poses_array(const Eigen::VectorXd& poses);
 protocol::Array forces_array(const Eigen::VectorXd& forces);
-Eigen::VectorXd vector_of(const protocol::Array& a);
+// The `tag` array of a participant's message, which must hold exactly `size` values;
+// anything else is that participant's failure.
+Eigen::VectorXd take(const protocol::Message& m, protocol::Tag tag, Eigen::Index size,
+                     const std::string& when);
 
 }  // namespace cosim::run

@@ -1,10 +1,10 @@
 #include "run/peers.hpp"
 
-#include <algorithm>
-#include <set>
-
+#include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
+
+#include <thread>
 
 #include "run/failure.hpp"
 #include "run/interrupt.hpp"
@@ -22,11 +22,16 @@ std::string text_of(const protocol::Message& m) {
 
 }  // namespace
 
+std::string in_window(std::uint64_t k, double t0, double t1) {
+  return fmt::format("in window {} (t = {} .. {} s)", k, t0, t1);
+}
+
 Peers::Peers(protocol::Server& server, std::chrono::milliseconds timeout)
     : server_(server), timeout_(timeout) {}
 
 Peers::~Peers() {
   for (auto& [name, p] : processes_) p.stop(std::chrono::milliseconds(0));
+  launcher::end_orphans();
 }
 
 void Peers::start(const std::string& name, const std::vector<std::string>& command,
@@ -41,14 +46,29 @@ std::vector<std::string> Peers::names() const {
   return out;
 }
 
-void Peers::send(const std::string& name, protocol::Message m) {
-  m.header.participant = name;
-  server_.send(name, m);
+// A participant that cannot be reached has usually just died: say how, if it did.
+void Peers::fail(const std::string& name, const std::string& problem, const std::string& when) {
+  auto it = processes_.find(name);
+  if (it != processes_.end()) {
+    const auto deadline = clock::now() + std::chrono::milliseconds(200);
+    while (!it->second.poll() && clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (auto ended = it->second.poll()) throw ParticipantFailure(name, *ended, when);
+  }
+  throw ParticipantFailure(name, problem, when);
+}
+
+void Peers::send(const std::string& name, protocol::Message m, const std::string& when) {
+  try {
+    server_.send(name, m);
+  } catch (const protocol::PeerError& e) {
+    fail(name, e.problem, when);
+  }
 }
 
 std::map<std::string, protocol::Message> Peers::gather(const std::vector<std::string>& names,
                                                        protocol::Type type,
-                                                       std::uint64_t window) {
+                                                       const std::string& when) {
   std::set<std::string> pending(names.begin(), names.end());
   std::map<std::string, protocol::Message> replies;
   const auto deadline = clock::now() + timeout_;
@@ -57,20 +77,19 @@ std::map<std::string, protocol::Message> Peers::gather(const std::vector<std::st
     std::optional<protocol::Message> m;
     try {
       m = server_.receive(kTick);
-    } catch (const protocol::ProtocolError& e) {
-      throw ParticipantFailure(*pending.begin(), window,
-                               std::string("sent a message the coupler cannot read (") +
-                                   e.what() + ")");
+    } catch (const protocol::PeerError& e) {
+      fail(e.peer, e.problem, when);
     }
     if (m) {
       const auto& from = m->header.participant;
-      if (m->header.type == protocol::Type::Error)
-        throw ParticipantFailure(from, window, "reported an error: " + text_of(*m));
-      if (m->header.type != type || !pending.contains(from))
-        throw ParticipantFailure(from, window,
-                                 std::string("sent ") + protocol::to_string(m->header.type) +
-                                     " while the coupler waited for " +
-                                     protocol::to_string(type));
+      if (!processes_.contains(from)) fail(from, "is not part of this run", when);
+      if (m->header.type == protocol::Type::Error) fail(from, "reported an error: " + text_of(*m), when);
+      if (m->header.type != type)
+        fail(from,
+             fmt::format("sent {} while the coupler waited for {}", protocol::to_string(m->header.type),
+                         protocol::to_string(type)),
+             when);
+      if (!pending.contains(from)) fail(from, fmt::format("sent {} twice", protocol::to_string(type)), when);
       pending.erase(from);
       if (type == protocol::Type::Bye) said_bye_.insert(from);
       replies.emplace(from, std::move(*m));
@@ -78,32 +97,32 @@ std::map<std::string, protocol::Message> Peers::gather(const std::vector<std::st
     }
     for (auto& [name, p] : processes_)
       if (auto ended = p.poll(); ended && !said_bye_.contains(name))
-        throw ParticipantFailure(name, window, *ended);
+        throw ParticipantFailure(name, *ended, when);
     if (clock::now() > deadline)
-      throw ParticipantFailure(*pending.begin(), window,
-                               "did not answer " + std::string(protocol::to_string(type)) +
-                                   " within " + std::to_string(timeout_.count() / 1000.0) +
-                                   " s (coupling.timeout)");
+      throw ParticipantFailure(*pending.begin(),
+                               fmt::format("did not answer {} within {} s (coupling.timeout)",
+                                           protocol::to_string(type), timeout_.count() / 1000.0),
+                               when);
   }
   return replies;
 }
 
 std::map<std::string, protocol::Message> Peers::exchange(
     std::map<std::string, protocol::Message> requests, protocol::Type reply,
-    std::uint64_t window) {
+    const std::string& when) {
   std::vector<std::string> names;
   for (auto& [name, m] : requests) {
-    send(name, std::move(m));
+    send(name, std::move(m), when);
     names.push_back(name);
   }
-  return gather(names, reply, window);
+  return gather(names, reply, when);
 }
 
-void Peers::stop_all(std::uint64_t window) {
+void Peers::stop_all() {
   protocol::Message stop;
   stop.header.type = protocol::Type::Stop;
-  for (const auto& name : names()) send(name, stop);
-  gather(names(), protocol::Type::Bye, window);
+  for (const auto& name : names()) send(name, stop, "while stopping");
+  gather(names(), protocol::Type::Bye, "while stopping");
   for (auto& [name, p] : processes_) p.stop(std::chrono::seconds(10));
 }
 
@@ -114,8 +133,8 @@ void Peers::abort_all(const std::string& reason) {
   for (auto& [name, p] : processes_) {
     if (p.poll()) continue;
     try {
-      send(name, abort);
-    } catch (const std::exception&) {
+      server_.send(name, abort);
+    } catch (const protocol::ProtocolError&) {
       // It is being ended below anyway; a dead peer cannot take the message.
     }
   }

@@ -1,6 +1,7 @@
 // The participants as the coupler sees them: a process it started and a name on the
-// ROUTER socket. Every wait watches for the three ways a participant fails (its process
-// ends, it stays silent past the timeout, it reports an error) and for Ctrl-C.
+// ROUTER socket. Every wait watches for the ways a participant fails (its process ends,
+// it stays silent past the timeout, it reports an error or sends garbage) and for Ctrl-C.
+// `when` in every call labels failures for the user ("in window 12 (t = ...)").
 #pragma once
 
 #include <chrono>
@@ -18,27 +19,30 @@ namespace cosim::run {
 class Peers {
  public:
   Peers(protocol::Server& server, std::chrono::milliseconds timeout);
-  ~Peers();  // stops every process still running
+  ~Peers();  // ends every process still running, and any process they left behind
 
   void start(const std::string& name, const std::vector<std::string>& command,
              const std::map<std::string, std::string>& env);
   std::vector<std::string> names() const;
 
-  void send(const std::string& name, protocol::Message m);
-  // One message of `type` from each of `names`; `window` only labels failures.
+  void send(const std::string& name, protocol::Message m, const std::string& when);
+  // One message of `type` from each of `names`.
   std::map<std::string, protocol::Message> gather(const std::vector<std::string>& names,
-                                                  protocol::Type type, std::uint64_t window);
+                                                  protocol::Type type, const std::string& when);
   // Send one message to each, then gather the replies of `reply` type.
   std::map<std::string, protocol::Message> exchange(
       std::map<std::string, protocol::Message> requests, protocol::Type reply,
-      std::uint64_t window);
+      const std::string& when);
 
   // Stop (answered by Bye) to all, then wait for the processes; anything left is killed.
-  void stop_all(std::uint64_t window);
+  void stop_all();
   // Abort with a reason to all that still run, then end the processes.
   void abort_all(const std::string& reason);
 
  private:
+  [[noreturn]] void fail(const std::string& name, const std::string& problem,
+                         const std::string& when);
+
   protocol::Server& server_;
   std::chrono::milliseconds timeout_;
   std::map<std::string, launcher::Process> processes_;

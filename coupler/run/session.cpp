@@ -11,6 +11,7 @@
 #include "protocol/client.hpp"
 #include "run/failure.hpp"
 #include "run/progress.hpp"
+#include "scene/error.hpp"
 
 namespace cosim::run {
 namespace fs = std::filesystem;
@@ -42,8 +43,12 @@ struct RunDirectory {
 
 Session::Session(scene::Scene scene)
     : scene_(std::move(scene)), plan_(scene::plan_participants(scene_)), roles_(plan_.start) {
-  for (const auto& p : plan_.start)
+  for (const auto& p : plan_.start) {
+    if (scene::has(p.needs, scene::Data::Fields))
+      throw scene::SceneError(scene_.file.string(), p.line, "participants." + p.name, "",
+                              "needs fields, which the coupler does not exchange yet");
     commands_.push_back(launcher::participant_command(scene_, p, launcher::own_directory()));
+  }
 }
 
 void Session::attach(output::RunFile file, std::optional<output::Checkpoint> resume_from, bool progress) {
@@ -69,10 +74,7 @@ void Session::execute() {
   try {
     handshake(peers);
     windows(peers);
-    peers.stop_all(scene_.windows());
-  } catch (const ParticipantFailure& e) {
-    peers.abort_all(e.what());
-    throw;
+    peers.stop_all();
   } catch (const Interrupted&) {
     peers.abort_all("the coupler was interrupted");
     throw;
@@ -103,26 +105,31 @@ double Session::window_start(std::uint64_t k) const {
 
 void Session::handshake(Peers& peers) {
   const auto w = first_window();
-  for (const auto& [name, hello] : peers.gather(roles_.all(), protocol::Type::Hello, w)) {
-    const auto* p = scene_.participant(name);
+  const std::string when = "during start-up";
+  for (const auto& [name, hello] : peers.gather(roles_.all(), protocol::Type::Hello, when)) {
     const auto& planned = *std::find_if(plan_.start.begin(), plan_.start.end(),
                                         [&](const auto& s) { return s.name == name; });
     if (hello.header.provides != planned.provides || hello.header.needs != planned.needs)
-      throw ParticipantFailure(name, w,
+      throw ParticipantFailure(name,
                                "provides " + scene::describe(hello.header.provides) + " and needs " +
                                    scene::describe(hello.header.needs) + ", but the scene expects " +
                                    scene::describe(planned.provides) + " and " +
-                                   scene::describe(planned.needs));
-    if (static_cast<int>(hello.header.ranks) != p->ranks)
-      throw ParticipantFailure(name, w,
+                                   scene::describe(planned.needs),
+                               when);
+    if (static_cast<int>(hello.header.ranks) != planned.ranks)
+      throw ParticipantFailure(name,
                                "runs on " + std::to_string(hello.header.ranks) +
-                                   " ranks, the scene asks for " + std::to_string(p->ranks));
+                                   " ranks, the scene asks for " + std::to_string(planned.ranks),
+                               when);
   }
 
-  const Eigen::VectorXd poses =
-      resume_ ? Eigen::Map<const Eigen::VectorXd>(resume_->poses.data(),
-                                                  static_cast<Eigen::Index>(resume_->poses.size()))
-              : initial_poses(scene_);
+  // A resumed run starts from exactly what was committed: the participants' Ready answers
+  // would recompute the forces from the committed poses, which in parallel schemes is not
+  // what the committed forces were computed from.
+  const auto b = static_cast<Eigen::Index>(scene_.bodies.size());
+  current_ = resume_ ? Exchange{Eigen::Map<const Eigen::VectorXd>(resume_->poses.data(), b * kPoseSize),
+                                Eigen::Map<const Eigen::VectorXd>(resume_->forces.data(), b * kForceSize)}
+                     : Exchange{initial_poses(scene_), Eigen::VectorXd::Zero(b * kForceSize)};
   std::map<std::string, protocol::Message> inits;
   for (const auto& name : roles_.all()) {
     protocol::Message m;
@@ -132,7 +139,7 @@ void Session::handshake(Peers& peers) {
     m.header.t1 = scene_.time.end;
     m.arrays.push_back(protocol::Array::text(scene_.file.string()));
     m.arrays.push_back(protocol::Array::text(scene_.text));
-    m.arrays.push_back(poses_array(poses));
+    m.arrays.push_back(poses_array(current_.poses));
     if (resume_) {
       auto state = resume_->states.at(name);
       const auto n = static_cast<std::uint32_t>(state.size());
@@ -140,19 +147,18 @@ void Session::handshake(Peers& peers) {
     }
     inits.emplace(name, std::move(m));
   }
-  const auto ready = peers.exchange(std::move(inits), protocol::Type::Ready, w);
-
-  current_.poses = poses;
-  current_.forces = Eigen::VectorXd::Zero(kForceSize * static_cast<Eigen::Index>(scene_.bodies.size()));
-  for (const auto& name : roles_.pose_providers)
-    current_.poses = vector_of(ready.at(name).get(protocol::Tag::Poses));
-  for (const auto& name : roles_.force_providers)
-    current_.forces += vector_of(ready.at(name).get(protocol::Tag::Forces));
-  committed_ = checkpointed_ = w;
-  if (!resume_) {
-    record(0, 0.0, WindowResult{current_, 0, 0.0, true, {}, {}}, 0.0);
-    checkpoint(peers, 0);
+  const auto ready = peers.exchange(std::move(inits), protocol::Type::Ready, when);
+  committed_ = w;
+  if (resume_) {
+    checkpointed_ = w;
+    return;
   }
+  for (const auto& name : roles_.pose_providers)
+    current_.poses = take(ready.at(name), protocol::Tag::Poses, b * kPoseSize, when);
+  for (const auto& name : roles_.force_providers)
+    current_.forces += take(ready.at(name), protocol::Tag::Forces, b * kForceSize, when);
+  record(0, 0.0, WindowResult{current_, 0, 0.0, true, {}, {}}, 0.0);
+  checkpoint(peers, 0);
 }
 
 void Session::windows(Peers& peers) {
@@ -169,7 +175,7 @@ void Session::windows(Peers& peers) {
     protocol::Message commit;
     commit.header.type = protocol::Type::Commit;
     commit.header.window = k;
-    for (const auto& name : roles_.all()) peers.send(name, commit);
+    for (const auto& name : roles_.all()) peers.send(name, commit, in_window(k, window_start(k), t1));
     current_ = r.end;
     committed_ = k + 1;
     const bool last = k + 1 == n;
@@ -212,8 +218,12 @@ void Session::checkpoint(Peers& peers, std::uint64_t next_window) {
   c.time = window_start(next_window);
   c.poses.assign(current_.poses.data(), current_.poses.data() + current_.poses.size());
   c.forces.assign(current_.forces.data(), current_.forces.data() + current_.forces.size());
-  for (auto& [name, m] : peers.exchange(std::move(requests), protocol::Type::State, next_window))
-    c.states[name] = m.get(protocol::Tag::State).values;
+  const auto when = fmt::format("while checkpointing at t = {} s", c.time);
+  for (auto& [name, m] : peers.exchange(std::move(requests), protocol::Type::State, when)) {
+    const auto* state = m.find(protocol::Tag::State);
+    if (state == nullptr) throw ParticipantFailure(name, "sent State without its state", when);
+    c.states[name] = state->values;
+  }
   file_->write_checkpoint(c);
   checkpointed_ = next_window;
 }

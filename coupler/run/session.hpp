@@ -31,7 +31,7 @@ class Session {
   std::vector<std::string> participant_names() const { return roles_.all(); }
   output::RunFile& file() { return *file_; }
   std::uint64_t committed() const { return committed_; }
-  std::uint64_t checkpointed() const { return checkpointed_; }
+  std::optional<std::uint64_t> checkpointed() const { return checkpointed_; }
 
  private:
   void announce() const;
@@ -51,7 +51,7 @@ class Session {
   bool progress_ = true;
   Exchange current_;
   std::uint64_t committed_ = 0;
-  std::uint64_t checkpointed_ = 0;
+  std::optional<std::uint64_t> checkpointed_;  // next window of the last checkpoint
 };
 
 }  // namespace cosim::run

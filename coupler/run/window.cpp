@@ -22,6 +22,16 @@ Exchange unstack(const Eigen::VectorXd& x, Eigen::Index n_poses) {
   return {x.head(n_poses), x.tail(x.size() - n_poses)};
 }
 
+// The accelerator mixes iterates linearly, which shortens quaternions; participants are
+// given rotations.
+Exchange with_unit_quaternions(Exchange e) {
+  for (Eigen::Index i = 0; i + kPoseSize <= e.poses.size(); i += kPoseSize) {
+    auto q = e.poses.segment<4>(i + 3);
+    if (q.norm() > 0) q.normalize();
+  }
+  return e;
+}
+
 // Each block divided by its norm, so poses in metres and forces in newtons weigh alike.
 Eigen::VectorXd block_weights(const Exchange& e) {
   const auto weight = [](const Eigen::VectorXd& v) { return v.norm() > 0 ? 1.0 / v.norm() : 1.0; };
@@ -41,7 +51,7 @@ WindowRunner::WindowRunner(Peers& peers, Roles roles, const scene::Coupling& cou
 
 WindowResult WindowRunner::advance(std::uint64_t window, double t0, double t1,
                                    const Exchange& start) {
-  const Span s{window, t0, t1};
+  const Span s{window, t0, t1, in_window(window, t0, t1)};
   // With nobody on one side there is no loop to close: one pass is exact.
   const bool closed = !roles_.pose_providers.empty() && !roles_.force_providers.empty();
   switch (coupling_.scheme) {
@@ -75,33 +85,28 @@ Exchange WindowRunner::call(const std::vector<std::string>& names, const Span& s
     }
     requests.emplace(name, std::move(m));
   }
-  const auto replies = peers_.exchange(std::move(requests), protocol::Type::Result, s.window);
+  const auto replies = peers_.exchange(std::move(requests), protocol::Type::Result, s.when);
 
   Exchange out = end;
   bool forces_returned = false;
   Eigen::VectorXd force_sum = Eigen::VectorXd::Zero(end.forces.size());
   for (const auto& [name, m] : replies) {
-    const auto& stats = m.get(protocol::Tag::Stats).values;
-    r.substeps[name] += stats.at(0);
-    r.wall_seconds[name] += stats.at(1);
-    const auto take = [&](protocol::Tag tag, const Eigen::VectorXd& like) {
-      Eigen::VectorXd v = vector_of(m.get(tag));
-      if (v.size() != like.size())
-        throw ParticipantFailure(name, s.window,
-                                 std::string("returned ") + protocol::to_string(tag) + " for " +
-                                     std::to_string(v.size()) + " values, expected " +
-                                     std::to_string(like.size()));
-      return v;
-    };
+    const Eigen::VectorXd stats = take(m, protocol::Tag::Stats, 2, s.when);
+    r.substeps[name] += stats(0);
+    r.wall_seconds[name] += stats(1);
     if (scene::has(roles_.provides.at(name), scene::Data::Poses))
-      out.poses = take(protocol::Tag::Poses, end.poses);
+      out.poses = take(m, protocol::Tag::Poses, end.poses.size(), s.when);
     if (scene::has(roles_.provides.at(name), scene::Data::Forces)) {
-      force_sum += take(protocol::Tag::Forces, end.forces);
+      force_sum += take(m, protocol::Tag::Forces, end.forces.size(), s.when);
       forces_returned = true;
     }
   }
   if (forces_returned) out.forces = force_sum;
   return out;
+}
+
+void WindowRunner::observe(const Span& s, int iteration, const Exchange& start, WindowResult& r) {
+  if (!roles_.others.empty()) call(roles_.others, s, iteration, start, r.end, r);
 }
 
 WindowResult WindowRunner::serial_explicit(const Span& s, const Exchange& start) {
@@ -110,6 +115,7 @@ WindowResult WindowRunner::serial_explicit(const Span& s, const Exchange& start)
   r.end = start;
   if (!roles_.pose_providers.empty()) r.end = call(roles_.pose_providers, s, 1, start, r.end, r);
   if (!roles_.force_providers.empty()) r.end = call(roles_.force_providers, s, 1, start, r.end, r);
+  observe(s, 1, start, r);
   return r;
 }
 
@@ -127,6 +133,7 @@ WindowResult WindowRunner::serial_implicit(const Span& s, const Exchange& start)
   for (int it = 1; it <= coupling_.max_iterations; ++it) {
     const Exchange moved = call(roles_.pose_providers, s, it, start, {start.poses, x}, r);
     r.end = call(roles_.force_providers, s, it, start, moved, r);
+    observe(s, it, start, r);
     r.iterations = it;
     r.residual = relative(r.end.forces - x, r.end.forces);
     if (r.residual <= coupling_.tolerance) return r;
@@ -143,7 +150,7 @@ WindowResult WindowRunner::parallel_implicit(const Span& s, const Exchange& star
   Eigen::VectorXd x = stack(start);
   Eigen::VectorXd weights;
   for (int it = 1; it <= coupling_.max_iterations; ++it) {
-    const Exchange guess = unstack(x, n_poses);
+    const Exchange guess = with_unit_quaternions(unstack(x, n_poses));
     r.end = call(roles_.all(), s, it, start, guess, r);
     r.iterations = it;
     r.residual = std::max(relative(r.end.poses - guess.poses, r.end.poses),

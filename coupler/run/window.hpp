@@ -1,12 +1,14 @@
 // One coupling window [t0, t1] under the scene's scheme.
 //
 // Explicit schemes call each participant once: serial-explicit advances the pose provider
-// (rigid bodies) with the forces of t0, then the force providers with its new poses;
-// parallel-explicit advances everyone with the values of t0. Implicit schemes repeat the
-// window until the exchanged data stop changing (relative residual below the tolerance)
-// or max_iterations is reached: serial-implicit iterates on the forces, parallel-implicit
-// on poses and forces stacked (each block scaled by its size in the first iteration so
-// neither dominates the accelerator).
+// (rigid bodies) with the forces of t0 held constant, then the force providers with poses
+// going from those of t0 to the new ones; parallel-explicit advances everyone with the
+// values of t0 held constant. Implicit schemes repeat the window until the exchanged data
+// stop changing (relative residual below the tolerance) or max_iterations is reached:
+// serial-implicit iterates on the forces, parallel-implicit on poses and forces stacked
+// (each block divided by its norm in the first iteration so neither dominates the
+// accelerator). Participants that provide neither (observers) go last with the final
+// values, in every iteration so their rollback stays in step.
 #pragma once
 
 #include <map>
@@ -37,6 +39,7 @@ class WindowRunner {
   struct Span {
     std::uint64_t window;
     double t0, t1;
+    std::string when;  // labels failures
   };
   // Advance `names` over the span with inputs interpolated from start to end; returns
   // `end` with the outputs of those participants in place, and adds their stats to r.
@@ -46,6 +49,7 @@ class WindowRunner {
   WindowResult parallel_explicit(const Span& s, const Exchange& start);
   WindowResult serial_implicit(const Span& s, const Exchange& start);
   WindowResult parallel_implicit(const Span& s, const Exchange& start);
+  void observe(const Span& s, int iteration, const Exchange& start, WindowResult& r);
 
   Peers& peers_;
   Roles roles_;

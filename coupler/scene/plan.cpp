@@ -74,6 +74,11 @@ void assign_roles(const Scene& s, std::vector<Participant>& start) {
 }
 
 void check_supply(const Scene& s, const std::vector<Participant>& start) {
+  // The coupler moves bodies with one participant's poses and the others' forces; one
+  // program in both roles would have to answer twice per window.
+  for (const Participant& p : start)
+    if (has(p.provides, Data::Poses) && has(p.provides, Data::Forces))
+      fail(s, p, "provides both poses and forces; a participant takes one of the two roles");
   for (std::size_t i = 0; i < data_names.size(); ++i) {
     const Data d = static_cast<Data>(1u << i);
     std::vector<const Participant*> providers, consumers;

@@ -4,12 +4,13 @@
 #include <numbers>
 
 #include "double_common.hpp"
+#include "protocol/message.hpp"
 
 namespace cosim::doubles {
 namespace {
 
-constexpr int kPose = 13;
-constexpr int kLoad = 6;
+constexpr auto kPose = protocol::kPoseWidth;
+constexpr auto kLoad = protocol::kForceWidth;
 
 class MassSolver final : public participant::Solver {
  public:

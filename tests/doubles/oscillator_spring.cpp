@@ -3,12 +3,13 @@
 #include <cmath>
 
 #include "double_common.hpp"
+#include "protocol/message.hpp"
 
 namespace cosim::doubles {
 namespace {
 
-constexpr int kPose = 13;
-constexpr int kLoad = 6;
+constexpr auto kPose = protocol::kPoseWidth;
+constexpr auto kLoad = protocol::kForceWidth;
 
 class SpringSolver final : public participant::Solver {
  public:
@@ -25,6 +26,7 @@ class SpringSolver final : public participant::Solver {
     anchor_ = options.number("anchor", 0.0);
     x2_ = options.number("position");
     v2_ = options.number("velocity", 0.0);
+    extra_rows_ = options.integer("extra_force_rows", 0);
     if (k_ <= 0) options.fail("stiffness", "must be > 0");
     if (m2_ <= 0) options.fail("mass", "must be > 0");
     options.finish();
@@ -59,7 +61,7 @@ class SpringSolver final : public participant::Solver {
 
  private:
   std::vector<double> force_on_body(double x1) const {
-    std::vector<double> forces(kLoad * bodies_, 0.0);
+    std::vector<double> forces(kLoad * (bodies_ + static_cast<std::size_t>(extra_rows_)), 0.0);
     forces[kLoad * body_] = k_ * (x2_ - x1 - rest_);
     return forces;
   }
@@ -68,6 +70,7 @@ class SpringSolver final : public participant::Solver {
   double k_ = 0, k2_ = 0, m2_ = 0, rest_ = 0, anchor_ = 0;
   double x2_ = 0, v2_ = 0;
   std::size_t bodies_ = 0, body_ = 0;
+  int extra_rows_ = 0;  // > 0: a broken participant, for the coupler's tests
 };
 
 }  // namespace

@@ -15,7 +15,15 @@ namespace cosim::testing {
 namespace fs = std::filesystem;
 
 fs::path scratch_dir(const std::string& test_name) {
-  const auto dir = fs::temp_directory_path() / ("cosim-test-" + std::to_string(getpid())) / test_name;
+  // One folder per test process, removed when it exits.
+  static const struct Root {
+    fs::path path = fs::temp_directory_path() / ("cosim-test-" + std::to_string(getpid()));
+    ~Root() {
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  } root;
+  const auto dir = root.path / test_name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

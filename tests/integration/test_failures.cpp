@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <csignal>
 #include <fstream>
+#include <filesystem>
 #include <regex>
 #include <thread>
 
@@ -33,10 +34,16 @@ OscillatorScene scene_for_failures() {
   return s;
 }
 
-TEST(Failures, KilledParticipantEndsTheRunAndResumeFinishesIdentically) {
-  const auto dir = scratch_dir("kill_resume");
-  auto s = scene_for_failures();
+// Killed at an odd time with checkpoints every 7 windows, so the resume has to replay
+// windows past the checkpoint; in every scheme it must end bit-identical.
+class KillAndResume : public ::testing::TestWithParam<std::string> {};
 
+TEST_P(KillAndResume, EndsTheRunAndResumeFinishesIdentically) {
+  const auto dir = scratch_dir("kill_resume_" + GetParam());
+  auto s = scene_for_failures();
+  s.scheme = GetParam();
+  s.acceleration = "aitken";
+  s.checkpoint_every = 7;
   const auto whole = run_scene_text(dir, s.yaml(), "whole");
   ASSERT_EQ(whole.exit_code, 0) << whole.output;
 
@@ -45,8 +52,8 @@ TEST(Failures, KilledParticipantEndsTheRunAndResumeFinishesIdentically) {
   const auto died = run_scene_text(dir, s.yaml(), "killed");
   EXPECT_EQ(died.exit_code, 1);
   EXPECT_THAT(died.output, HasSubstr("participant 'spring' killed by signal 9"));
-  EXPECT_THAT(died.output, HasSubstr("in window 56"));
-  EXPECT_THAT(died.output, HasSubstr("cosim run --resume " + file.string()));
+  EXPECT_THAT(died.output, HasSubstr("in window 56 (t = 0.56"));
+  EXPECT_THAT(died.output, HasSubstr("checkpoint at window 56 with: cosim run --resume " + file.string()));
   // Every committed window is in the file, which opens.
   EXPECT_EQ(read_series(file, "/bodies/m1/time").rows, 57u);  // initial row + windows 0..55
   EXPECT_THAT(read_string_attribute(file, "/run", "status"), HasSubstr("failed"));
@@ -54,12 +61,55 @@ TEST(Failures, KilledParticipantEndsTheRunAndResumeFinishesIdentically) {
   const auto resumed = run_cosim({"run", "--resume", file.string(), "-q"});
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   EXPECT_EQ(read_string_attribute(file, "/run", "status"), "finished");
-  const auto t = read_series(file, "/bodies/m1/time");
-  const auto t_whole = read_series(dir / "whole.h5", "/bodies/m1/time");
-  ASSERT_EQ(t.rows, t_whole.rows);
-  EXPECT_EQ(t.values, t_whole.values);  // cut back to the checkpoint, no duplicate rows
-  EXPECT_EQ(read_series(file, "/bodies/m1/position").values,
-            read_series(dir / "whole.h5", "/bodies/m1/position").values);
+  for (const std::string series : {"/bodies/m1/time", "/bodies/m1/position", "/bodies/m1/force"})
+    EXPECT_EQ(read_series(file, series).values, read_series(dir / "whole.h5", series).values) << series;
+}
+
+INSTANTIATE_TEST_SUITE_P(Failures, KillAndResume,
+                         ::testing::Values("serial-explicit", "parallel-explicit", "serial-implicit",
+                                           "parallel-implicit"),
+                         [](const auto& info) {
+                           auto name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+TEST(Failures, ParticipantKilledFromOutsideIsNamedWithItsSignal) {
+  const auto dir = scratch_dir("external_kill");
+  auto s = scene_for_failures();
+  s.end = 100.0;
+  s.spring_extra = {"delay: 0.002"};  // the coupler mostly waits for the spring
+  write_file(dir / "scene.yaml", s.yaml());
+  CosimProcess cosim(run_args(dir));
+  std::this_thread::sleep_for(std::chrono::milliseconds(800));
+  // The mass, which the coupler is usually not waiting for when it dies.
+  pid_t mass = 0;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    std::ifstream cmdline(entry.path() / "cmdline");
+    std::string command;
+    std::getline(cmdline, command, '\0');
+    std::ifstream stat(entry.path() / "stat");
+    std::string pid, name, state;
+    pid_t parent = 0;
+    stat >> pid >> name >> state >> parent;
+    if (parent == cosim.pid() && command.ends_with("cosim-test-oscillator-mass")) mass = std::stoi(pid);
+  }
+  ASSERT_GT(mass, 0);
+  kill(mass, SIGKILL);
+  const auto r = cosim.wait();
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.output, HasSubstr("participant 'mass' killed by signal 9"));
+  EXPECT_THAT(r.output, HasSubstr("in window"));
+}
+
+TEST(Failures, ParticipantSendingTheWrongSizeIsNamed) {
+  const auto dir = scratch_dir("wrong_size");
+  auto s = scene_for_failures();
+  s.spring_extra = {"extra_force_rows: 1"};
+  const auto r = run_scene_text(dir, s.yaml());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.output, HasSubstr("participant 'spring' sent Forces with 12 values, expected 6 during start-up"));
+  EXPECT_THAT(r.output, HasSubstr("has no checkpoint to resume from"));
 }
 
 TEST(Failures, HungParticipantTimesOut) {

@@ -68,6 +68,23 @@ class ReadFile {
     return out;
   }
 
+  // A 1-d dataset of variable-length strings.
+  std::vector<std::string> strings(const std::string& dataset) const {
+    const hid_t ds = open(dataset);
+    const hid_t space = H5Dget_space(ds);
+    std::vector<char*> raw(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    if (!raw.empty()) H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data());
+    std::vector<std::string> out(raw.begin(), raw.end());
+    H5Dvlen_reclaim(type, space, H5P_DEFAULT, raw.data());
+    H5Tclose(type);
+    H5Sclose(space);
+    H5Dclose(ds);
+    return out;
+  }
+
   std::string text(const std::string& dataset) const {
     const hid_t ds = open(dataset);
     std::string out = read_string(

@@ -1,9 +1,12 @@
 // Checkpoints and --resume: the file is cut back to the checkpoint and continues from it.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
+#include <utility>
 
 #include "h5_read.hpp"
 #include "output/run_file.hpp"
@@ -45,7 +48,7 @@ TEST_F(ResumeTest, CutsSeriesToTheCheckpointAndContinues) {
   const auto path = file("run.h5");
   write_interrupted_run(path);
   {
-    RunFile run = RunFile::resume(path);
+    RunFile run = RunFile::resume(path, "d1e2f3");
     EXPECT_EQ(run.info().scene_text, "scene: 1\n");
     EXPECT_EQ(run.info().protocol_version, 2);
     const Checkpoint& c = run.checkpoint();
@@ -74,11 +77,84 @@ TEST_F(ResumeTest, CutsSeriesToTheCheckpointAndContinues) {
   EXPECT_EQ(f.dims("/coupling/participants/tracer/substeps"), (std::vector<hsize_t>{7}));
 }
 
+std::string file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// --resume validates what peek() read before resume() changes anything: peek() must leave
+// every byte as it was.
+TEST_F(ResumeTest, PeekReadsWithoutChangingTheFile) {
+  const auto path = file("run.h5");
+  write_interrupted_run(path);
+  const std::string before = file_bytes(path);
+  const RunSummary s = RunFile::peek(path);
+  EXPECT_EQ(file_bytes(path), before);
+  EXPECT_EQ(s.info.scene_text, "scene: 1\n");
+  EXPECT_EQ(s.info.scene_file, "s.yaml");
+  EXPECT_EQ(s.info.git_hash, "abc");
+  EXPECT_EQ(s.info.cosim_version, "0.1.0");
+  EXPECT_EQ(s.info.protocol_version, 2);
+  EXPECT_EQ(s.bodies, kBodies);
+  EXPECT_EQ(s.participants, kParticipants);
+  EXPECT_EQ(s.status, "interrupted");
+  EXPECT_EQ(s.wall_seconds, 3.0);
+  EXPECT_EQ(s.resumed_by, std::vector<std::string>{});
+  EXPECT_TRUE(s.has_checkpoint);
+  EXPECT_EQ(s.checkpoint_window, 3u);
+  EXPECT_EQ(ReadFile(path).doubles("/coupling/time").size(), 5u);  // not cut back
+}
+
+TEST_F(ResumeTest, PeekWithoutCheckpoint) {
+  const auto path = file("run.h5");
+  RunFile::create(path, RunInfo{}, kBodies, kParticipants)
+      .append(sample_window(0, kDt, kBodies.size(), kParticipants));
+  const RunSummary s = RunFile::peek(path);
+  EXPECT_EQ(s.status, "running");
+  EXPECT_FALSE(s.has_checkpoint);
+}
+
+// The file keeps the wall time of the whole run, its creator's git hash, and the hash of
+// every build that resumed it.
+TEST_F(ResumeTest, SessionsAddWallSecondsAndRecordTheirBuild) {
+  const auto path = file("run.h5");
+  write_interrupted_run(path);  // 3 s
+  for (const auto& [hash, seconds] : {std::pair{"def", 2.5}, std::pair{"0123", 1.0}}) {
+    RunFile run = RunFile::resume(path, hash);
+    EXPECT_EQ(run.info().git_hash, "abc");
+    run.set_status("interrupted", seconds);
+  }
+  {
+    RunFile run = RunFile::resume(path, "def");
+    run.set_status("running", 0.25);  // a later call replaces this session's time
+    run.set_status("finished", 0.5);
+  }
+  ReadFile f(path);
+  EXPECT_EQ(f.double_attribute("/run", "wall_seconds"), 3.0 + 2.5 + 1.0 + 0.5);
+  EXPECT_EQ(f.string_attribute("/run", "git_hash"), "abc");
+  const std::vector<std::string> builds{"def", "0123", "def"};
+  EXPECT_EQ(f.strings("/run/resumed_by"), builds);
+  EXPECT_EQ(RunFile::peek(path).resumed_by, builds);
+  EXPECT_EQ(RunFile::peek(path).wall_seconds, 7.0);
+}
+
+// Files written before resumed_by existed get it at their first resume.
+TEST_F(ResumeTest, ResumesAFileWithoutResumedBy) {
+  const auto path = file("run.h5");
+  write_interrupted_run(path);
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(H5Ldelete(f, "/run/resumed_by", H5P_DEFAULT), 0);
+  H5Fclose(f);
+  EXPECT_EQ(RunFile::peek(path).resumed_by, std::vector<std::string>{});
+  { RunFile run = RunFile::resume(path, "def"); }
+  EXPECT_EQ(RunFile::peek(path).resumed_by, std::vector<std::string>{"def"});
+}
+
 TEST_F(ResumeTest, ResumeTwiceFromTheSameCheckpoint) {
   const auto path = file("run.h5");
   write_interrupted_run(path);
-  { RunFile first = RunFile::resume(path); }
-  RunFile second = RunFile::resume(path);
+  { RunFile first = RunFile::resume(path, "d1e2f3"); }
+  RunFile second = RunFile::resume(path, "d1e2f3");
   second.append(sample_window(3, kDt, kBodies.size(), kParticipants));
   second = RunFile::create(file("other.h5"), RunInfo{}, {}, {});
   EXPECT_EQ(ReadFile(path).doubles("/coupling/time").size(), 4u);
@@ -95,7 +171,7 @@ TEST_F(ResumeTest, CheckpointAtStartKeepsNoRows) {
     run.append(sample_window(0, kDt, kBodies.size(), kParticipants));
     EXPECT_EQ(run.checkpoint().next_window, 0u);
   }
-  RunFile run = RunFile::resume(path);
+  RunFile run = RunFile::resume(path, "d1e2f3");
   run.append(sample_window(0, kDt, kBodies.size(), kParticipants));
   run = RunFile::create(file("other.h5"), RunInfo{}, {}, {});
   EXPECT_EQ(ReadFile(path).doubles("/coupling/time"), std::vector<double>{kDt});
@@ -106,22 +182,35 @@ TEST_F(ResumeTest, WithoutCheckpointThrows) {
   { RunFile::create(path, RunInfo{}, kBodies, kParticipants).append(
         sample_window(0, kDt, kBodies.size(), kParticipants)); }
   try {
-    RunFile::resume(path);
+    RunFile::resume(path, "d1e2f3");
     FAIL() << "resumed a run without checkpoint";
   } catch (const std::runtime_error& e) {
     EXPECT_STREQ(e.what(), ("no checkpoint in " + path.string() + ": it cannot be resumed").c_str());
   }
 }
 
+// Not HDF5, or HDF5 without /run: both peek() and resume() refuse, naming the file.
 TEST_F(ResumeTest, NotARunFileThrowsNamingIt) {
-  const auto path = file("scene.yaml");
-  std::ofstream(path) << "not hdf5\n";
-  try {
-    RunFile::resume(path);
-    FAIL() << "resumed a text file";
-  } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(path.string() + ": open file", 0), 0u) << e.what();
+  const auto text = file("scene.yaml");
+  std::ofstream(text) << "not hdf5\n";
+  const auto other = file("other.h5");
+  const auto open_objects = H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL);
+  H5Fclose(H5Fcreate(other.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  const std::pair<std::filesystem::path, std::string> cases[] = {
+      {text, text.string() + ": not a cosim run file (not HDF5)"},
+      {other, other.string() + ": not a cosim run file (no /run group)"}};
+  for (const auto& [path, message] : cases) {
+    for (const bool peek : {true, false}) {
+      try {
+        if (peek) RunFile::peek(path);
+        else RunFile::resume(path, "d1e2f3");
+        FAIL() << (peek ? "peeked into " : "resumed ") << path;
+      } catch (const std::runtime_error& e) {
+        EXPECT_EQ(e.what(), message);
+      }
+    }
   }
+  EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), open_objects);  // nothing left open
 }
 
 TEST_F(ResumeTest, MalformedCheckpointKeepsThePreviousOne) {
@@ -136,7 +225,7 @@ TEST_F(ResumeTest, MalformedCheckpointKeepsThePreviousOne) {
   EXPECT_THROW(run.write_checkpoint(bad), std::runtime_error);
   EXPECT_EQ(run.checkpoint().next_window, 1u);
   run = RunFile::create(file("other.h5"), RunInfo{}, {}, {});
-  EXPECT_EQ(RunFile::resume(path).checkpoint().next_window, 1u);
+  EXPECT_EQ(RunFile::resume(path, "d1e2f3").checkpoint().next_window, 1u);
 }
 
 void expect_same(const Checkpoint& got, const Checkpoint& want) {
@@ -154,7 +243,7 @@ TEST_F(ResumeTest, AlternatingCheckpointsResumeToTheLatest) {
   for (std::uint64_t k = 0; k < 6; ++k) {
     {
       RunFile run = k == 0 ? RunFile::create(path, RunInfo{}, kBodies, kParticipants)
-                           : RunFile::resume(path);
+                           : RunFile::resume(path, "d1e2f3");
       run.append(sample_window(k, kDt, kBodies.size(), kParticipants));
       Checkpoint c = checkpoint_after(k);
       c.states["fluid"].push_back(static_cast<double>(k));  // tells the checkpoints apart
@@ -163,7 +252,7 @@ TEST_F(ResumeTest, AlternatingCheckpointsResumeToTheLatest) {
     EXPECT_EQ(ReadFile(path).string_attribute("/checkpoint", "current"), k % 2 == 0 ? "a" : "b");
     Checkpoint want = checkpoint_after(k);
     want.states["fluid"].push_back(static_cast<double>(k));
-    expect_same(RunFile::resume(path).checkpoint(), want);
+    expect_same(RunFile::resume(path, "d1e2f3").checkpoint(), want);
   }
   EXPECT_EQ(ReadFile(path).doubles("/coupling/time").size(), 6u);
 }
@@ -186,10 +275,10 @@ TEST_F(ResumeTest, StatesThatShrinkAndGrowRoundTripExactly) {
     }
     {
       RunFile run = k == 0 ? RunFile::create(path, RunInfo{}, kBodies, kParticipants)
-                           : RunFile::resume(path);
+                           : RunFile::resume(path, "d1e2f3");
       run.write_checkpoint(c);
     }
-    expect_same(RunFile::resume(path).checkpoint(), c);
+    expect_same(RunFile::resume(path, "d1e2f3").checkpoint(), c);
   }
   // Slot a held fluid states of 1000 (and 0, 5000), slot b of 1000 (the first checkpoint
   // fills both), 10 and 3.
@@ -224,7 +313,7 @@ TEST_F(ResumeTest, FileSizeNeverDecreasesAcrossCheckpoints) {
     size = now;
   }
   run = RunFile::create(file("other.h5"), RunInfo{}, {}, {});
-  expect_same(RunFile::resume(path).checkpoint(), c);
+  expect_same(RunFile::resume(path, "d1e2f3").checkpoint(), c);
 }
 
 }  // namespace

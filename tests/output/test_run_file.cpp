@@ -1,9 +1,12 @@
 // Writing a run: what create() and append() put in the file, read back with the C API.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <mpi.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <regex>
 
 #include "h5_read.hpp"
@@ -181,8 +184,40 @@ TEST_F(RunFileTest, ClosesEverything) {
     moved.set_status("finished", 1.0);
   }
   EXPECT_EQ(open_hdf5_objects(), before);
-  EXPECT_THROW(RunFile::resume(file("not-there.h5")), std::runtime_error);
+  EXPECT_THROW(RunFile::resume(file("not-there.h5"), "d1e2f3"), std::runtime_error);
   EXPECT_EQ(open_hdf5_objects(), before);
+  RunFile::peek(file("run.h5"));
+  EXPECT_EQ(open_hdf5_objects(), before);
+}
+
+// What a program started from this process finds open: its /proc/self/fd listing.
+std::string descriptors_of_a_child() {
+  FILE* ls = popen("ls -l /proc/self/fd", "r");  // fork and exec of /bin/sh, as a launcher
+  if (ls == nullptr) throw std::runtime_error("popen failed");
+  std::string listing;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, ls)) > 0;) listing.append(buffer, n);
+  pclose(ls);
+  return listing;
+}
+
+// The coupler starts its participants while the file is open: they must not inherit its
+// descriptor, which would share HDF5's lock and keep --resume out while they live.
+TEST_F(RunFileTest, ProgramsStartedMeanwhileDoNotInheritTheFile) {
+  const auto path = file("run.h5");
+  const auto named = [&](const std::string& listing) {
+    return listing.find("-> " + path.string() + "\n") != std::string::npos;
+  };
+  RunFile run = RunFile::create(path, sample_info(), kBodies, kParticipants);
+  const int plain = open(path.c_str(), O_RDONLY);  // shows that the listing would name it
+  ASSERT_GE(plain, 0);
+  EXPECT_TRUE(named(descriptors_of_a_child()));
+  close(plain);
+  EXPECT_FALSE(named(descriptors_of_a_child())) << "after create()";
+  run.write_checkpoint(Checkpoint{1, 0.1, std::vector<double>(26), std::vector<double>(12), {}});
+  run = RunFile::create(file("other.h5"), RunInfo{}, {}, {});
+  run = RunFile::resume(path, "d1e2f3");
+  EXPECT_FALSE(named(descriptors_of_a_child())) << "after resume()";
 }
 
 // The coupler is a serial program linked against the parallel HDF5: it must work without

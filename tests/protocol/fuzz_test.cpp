@@ -94,9 +94,10 @@ class Fuzzer {
       return Array::text(std::string(reinterpret_cast<const char*>(b.data()), b.size()));
     }
     const bool physics = tag == Tag::Poses || tag == Tag::Forces || tag == Tag::Stats;
-    const auto rows = static_cast<std::uint32_t>(between(0, 3));
-    const auto cols = static_cast<std::uint32_t>(tag == Tag::Poses    ? 13
-                                                 : tag == Tag::Forces ? 6
+    const auto rows = static_cast<std::uint32_t>(tag == Tag::Stats ? 1 : between(0, 3));
+    const auto cols = static_cast<std::uint32_t>(tag == Tag::Poses    ? kPoseWidth
+                                                 : tag == Tag::Forces ? kForceWidth
+                                                 : tag == Tag::Stats  ? kStatsWidth
                                                                       : between(0, 6));
     std::vector<double> v(std::size_t{rows} * cols);
     for (double& x : v) x = value(!physics);

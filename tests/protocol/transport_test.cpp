@@ -183,9 +183,10 @@ TEST_P(Transport, IdentityMustMatchHeader) {
   zmq::send_multipart(impostor, encode(m));
   try {
     server.receive(kWait);
-    FAIL() << "no ProtocolError";
-  } catch (const ProtocolError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("connected as 'fluid' sent a message signed 'rigid'"));
+    FAIL() << "no PeerError";
+  } catch (const PeerError& e) {
+    EXPECT_EQ(e.peer, "fluid");
+    EXPECT_THAT(e.what(), HasSubstr("participant 'fluid' sent a message signed 'rigid'"));
   }
 }
 
@@ -199,9 +200,11 @@ TEST_P(Transport, UndecodableMessageNamesItsSender) {
   peer.send(zmq::str_buffer("GET / HTTP/1.0"));
   try {
     server.receive(kWait);
-    FAIL() << "no ProtocolError";
-  } catch (const ProtocolError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("message from 'fluid': not a cosim message"));
+    FAIL() << "no PeerError";
+  } catch (const PeerError& e) {
+    EXPECT_EQ(e.peer, "fluid");
+    EXPECT_THAT(e.what(),
+                HasSubstr("participant 'fluid' sent a message the coupler cannot read: not a cosim message"));
   }
 }
 
@@ -209,8 +212,9 @@ TEST_P(Transport, SendingToUnknownParticipantThrows) {
   Server server(bind_address());
   try {
     server.send("nobody", make(Type::Stop));
-    FAIL() << "no ProtocolError";
-  } catch (const ProtocolError& e) {
+    FAIL() << "no PeerError";
+  } catch (const PeerError& e) {
+    EXPECT_EQ(e.peer, "nobody");
     EXPECT_THAT(e.what(), HasSubstr("'nobody' is not connected"));
   }
 }

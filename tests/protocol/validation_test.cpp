@@ -208,6 +208,21 @@ TEST(Validation, NonFinitePoses) {
   EXPECT_THAT(decode_error(f), HasSubstr("array 1 (Poses) holds -inf at row 0, column 12"));
 }
 
+TEST(Validation, StatsAreOneRowOfTwo) {
+  Message m;
+  m.header.type = Type::Result;
+  m.header.participant = "fluid";
+  m.arrays.push_back(Array::of(Tag::Stats, 1, 1, {3.0}));
+  EXPECT_THROW(encode(m), ProtocolError);
+  m.arrays.back() = Array::of(Tag::Stats, 2, 2, {3.0, 0.1, 4.0, 0.2});
+  try {
+    encode(m);
+    FAIL() << "no ProtocolError";
+  } catch (const ProtocolError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("array 0 (Stats) has 2 rows, expected 1"));
+  }
+}
+
 TEST(Validation, NonFiniteStats) {
   Frames f = valid_frames();
   set_value(f, 2, 1, kInf);
