@@ -206,46 +206,5 @@ TEST_F(DurabilityTest, SigkillDuringCheckpointWritesKeepsTheLastCheckpoint) {
               kKills, static_cast<unsigned long long>(written), after_commit, seconds);
 }
 
-// SIGKILL at random moments of a loop that only resumes and sets a status (nothing to cut
-// back): every kill leaves a file that opens, with one resumed_by entry per finished resume
-// or one more. Rewriting a growing resumed_by attribute failed this within ~150 kills.
-TEST_F(DurabilityTest, SigkillInsideResumeLeavesAResumableFile) {
-  const auto path = file("run.h5");
-  {
-    RunFile run = RunFile::create(path, RunInfo{}, kBodies, kParticipants);
-    const WindowRecord w = sample_window(0, 0.5, kBodies.size(), kParticipants);
-    run.write_checkpoint(Checkpoint{0, 0.0, w.poses, w.forces, {}});
-  }
-  std::mt19937 rng(7);
-  std::uniform_int_distribution<int> delay_us(0, 3000);
-  std::size_t resumes = 0;
-  for (int k = 0; k < 300; ++k) {
-    const pid_t child = fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-      try {
-        for (;;) RunFile::resume(path, "loop").set_status("interrupted", 1.0);
-      } catch (...) {
-        _exit(3);
-      }
-    }
-    usleep(static_cast<useconds_t>(delay_us(rng)));
-    kill(child, SIGKILL);
-    int status = 0;
-    ASSERT_EQ(waitpid(child, &status, 0), child);
-    ASSERT_TRUE(WIFSIGNALED(status)) << "kill " << k << ": child exited with " << WEXITSTATUS(status);
-    RunSummary s;
-    try {
-      s = RunFile::peek(path);
-    } catch (const std::exception& e) {
-      FAIL() << "kill " << k << " left a file that cannot be read: " << e.what();
-    }
-    ASSERT_GE(s.resumed_by.size(), resumes) << "kill " << k;
-    ASSERT_TRUE(s.has_checkpoint) << "kill " << k;
-    resumes = s.resumed_by.size();
-  }
-  std::printf("[ stress   ] 300 kills, %zu resumes completed\n", resumes);
-}
-
 }  // namespace
 }  // namespace cosim::output::test
