@@ -1,0 +1,107 @@
+#include <ccd/ccd.h>
+
+#include <cmath>
+
+#include "rigidbody/narrowphase/gjk.hpp"
+#include "rigidbody/narrowphase/pairs.hpp"
+
+namespace cosim::narrowphase::detail {
+namespace {
+
+struct CcdShape {
+  const Shape* shape;
+  const Pose* pose;
+};
+
+void ccd_support(const void* object, const ccd_vec3_t* direction, ccd_vec3_t* out) {
+  const auto& s = *static_cast<const CcdShape*>(object);
+  const Vec3 p = geometry::support(*s.shape, *s.pose, Vec3(direction->v[0], direction->v[1], direction->v[2]));
+  ccdVec3Set(out, p.x(), p.y(), p.z());
+}
+
+void ccd_center(const void* object, ccd_vec3_t* out) {
+  const Vec3& p = static_cast<const CcdShape*>(object)->pose->position();
+  ccdVec3Set(out, p.x(), p.y(), p.z());
+}
+
+}  // namespace
+
+void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Candidates& out) {
+  const double scale = std::min(geometry::bounding_radius(a), geometry::bounding_radius(b));
+  const double tolerance = 1e-10 * scale;
+  const GjkResult g = gjk_distance(a, pa, b, pb, tolerance);
+  if (!g.overlap) {
+    out.add(g.on_a, (g.on_b - g.on_a) / g.distance, g.distance, 0);
+    return;
+  }
+  // Overlapping or touching: libccd's EPA and MPR each give a direction (a to b) to push b
+  // out along. libccd 2.1's EPA has no iteration limit, compares its tolerance with squared
+  // distances, and sometimes stops at zero depth on a clear overlap, so its answer is only
+  // a start: along any unit n the depth is h(n) = max_A n.x - min_B n.x, an upper bound of
+  // the penetration depth, which is the minimum of h. Both directions are scored, then
+  // refined by the fixed point n <- S_A(n) - S_B(-n) (exact at the minimum; one step for
+  // spheres) and a compass search; the smallest h seen wins.
+  const CcdShape ca{&a, &pa}, cb{&b, &pb};
+  ccd_t ccd;
+  CCD_INIT(&ccd);
+  ccd.support1 = ccd_support;
+  ccd.support2 = ccd_support;
+  ccd.center1 = ccd_center;
+  ccd.center2 = ccd_center;
+  ccd.max_iterations = 1000;
+  ccd.epa_tolerance = 1e-7 * scale;
+  ccd.mpr_tolerance = 1e-7 * scale;
+  ccd.dist_tolerance = tolerance;
+  struct Push {
+    Vec3 normal;
+    double depth;
+    Vec3 on_a, on_b;
+  };
+  const auto push = [&](Vec3 n) {
+    n.normalize();
+    const Vec3 sa = geometry::support(a, pa, n), sb = geometry::support(b, pb, -n);
+    return Push{n, n.dot(sa - sb), sa, sb};
+  };
+  Push best{Vec3::UnitZ(), INFINITY, g.on_a, g.on_b};
+  const auto consider = [&](int status, const ccd_vec3_t& d) {
+    const Vec3 n(d.v[0], d.v[1], d.v[2]);
+    if (status != 0 || !(n.norm() > 0.0)) return;
+    if (const Push p = push(n); p.depth < best.depth) best = p;
+  };
+  ccd_real_t depth = 0.0;
+  ccd_vec3_t direction, position;
+  consider(ccdGJKPenetration(&ca, &cb, &ccd, &depth, &direction, &position), direction);
+  consider(ccdMPRPenetration(&ca, &cb, &ccd, &depth, &direction, &position), direction);
+  if (!std::isfinite(best.depth)) {
+    // Neither sees an overlap: the shapes touch within the tolerance where GJK stopped.
+    const Vec3 d = pb.position() - pa.position();
+    best = push(d.norm() > 0.0 ? d : Vec3::UnitZ());
+    best.depth = 0.0;
+  }
+  for (int i = 0; i < 32; ++i) {
+    const Vec3 w = best.on_a - best.on_b;
+    if (!(w.dot(best.normal) > 0.0) || w.normalized().dot(best.normal) > 1.0 - 1e-15) break;
+    const Push p = push(w);
+    if (!(p.depth < best.depth)) break;
+    best = p;
+  }
+  // The fixed point stalls at corners (polyhedra) and libccd's direction can be off, so a
+  // compass search on the sphere finishes the descent to the nearest local minimum of h.
+  for (double step = 0.25; step > 1e-9; step *= 0.5) {
+    for (bool improved = true; improved;) {
+      improved = false;
+      const Vec3 u = best.normal.unitOrthogonal(), v = best.normal.cross(u);
+      for (const Vec3& t : {u, Vec3(-u), v, Vec3(-v)}) {
+        if (const Push p = push(best.normal + step * t); p.depth < best.depth) {
+          best = p;
+          improved = true;
+        }
+      }
+    }
+  }
+  // For faces in contact the supports are arbitrary corners; the middle of the two
+  // support points is still between the surfaces, on the segment the depth is measured on.
+  out.add(best.on_a, best.normal, -best.depth, 0);
+}
+
+}  // namespace cosim::narrowphase::detail

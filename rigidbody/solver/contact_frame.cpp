@@ -1,0 +1,74 @@
+#include "rigidbody/solver/contact_frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cosim::solver {
+
+namespace {
+
+Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
+  Eigen::Matrix3d m;
+  m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
+  return m;
+}
+
+// Change of point velocity per unit impulse at offset r from the centre of mass.
+Eigen::Matrix3d point_response(const Mobility& m, const Eigen::Vector3d& r) {
+  const Eigen::Matrix3d rx = cross_matrix(r);
+  return m.inverse_mass * Eigen::Matrix3d::Identity() - rx * m.inverse_inertia * rx;
+}
+
+Eigen::Vector3d any_tangent(const Eigen::Vector3d& n) {
+  const Eigen::Vector3d helper =
+      std::abs(n.x()) < 0.57735 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  return n.cross(helper).normalized();
+}
+
+}  // namespace
+
+std::vector<Mobility> mobilities(std::span<const dynamics::BodyState> states,
+                                 std::span<const dynamics::BodyInertia> inertias) {
+  std::vector<Mobility> out(states.size());
+  for (std::size_t i = 0; i < states.size(); ++i)
+    out[i] = {inertias[i].inverse_mass, inertias[i].inverse_inertia_world(states[i].orientation)};
+  return out;
+}
+
+Eigen::Vector3d ContactFrame::relative_velocity(std::span<const dynamics::BodyState> s) const {
+  return s[b].velocity + s[b].angular_velocity.cross(rb) - s[a].velocity -
+         s[a].angular_velocity.cross(ra);
+}
+
+void ContactFrame::apply(const Eigen::Vector3d& impulse, std::span<dynamics::BodyState> s,
+                         std::span<const Mobility> m) const {
+  s[a].velocity -= m[a].inverse_mass * impulse;
+  s[a].angular_velocity -= m[a].inverse_inertia * ra.cross(impulse);
+  s[b].velocity += m[b].inverse_mass * impulse;
+  s[b].angular_velocity += m[b].inverse_inertia * rb.cross(impulse);
+}
+
+Eigen::Matrix3d ContactFrame::local_response(std::span<const Mobility> m) const {
+  return basis * (point_response(m[a], ra) + point_response(m[b], rb)) * basis.transpose();
+}
+
+ContactFrame make_frame(const contact::Manifold& m, const contact::ContactPoint& p,
+                        std::span<const dynamics::BodyState> states) {
+  ContactFrame f;
+  f.a = m.a;
+  f.b = m.b;
+  f.ra = p.position - states[m.a].position;
+  f.rb = p.position - states[m.b].position;
+  const Eigen::Vector3d n = p.normal.normalized();
+  const Eigen::Vector3d v = f.relative_velocity(states);
+  const Eigen::Vector3d slip = v - v.dot(n) * n;
+  // Relative threshold: a slip at round-off level would give a random direction.
+  const bool sliding = slip.norm() > 1e-9 * std::max(1.0, v.norm());
+  const Eigen::Vector3d t1 = sliding ? Eigen::Vector3d(slip.normalized()) : any_tangent(n);
+  f.basis.row(0) = n;
+  f.basis.row(1) = t1;
+  f.basis.row(2) = n.cross(t1);
+  return f;
+}
+
+}  // namespace cosim::solver

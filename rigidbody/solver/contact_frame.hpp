@@ -1,0 +1,55 @@
+// The kinematics every contact solver shares: where a point sits on each body, how fast
+// the bodies move relative to each other there, and how an impulse changes that.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "rigidbody/contact/contact.hpp"
+#include "rigidbody/dynamics/body.hpp"
+
+namespace cosim::solver {
+
+// Inverse mass and world inverse inertia, evaluated once per step (orientation is fixed
+// while the solver runs).
+struct Mobility {
+  double inverse_mass = 0.0;
+  Eigen::Matrix3d inverse_inertia = Eigen::Matrix3d::Zero();
+};
+
+std::vector<Mobility> mobilities(std::span<const dynamics::BodyState> states,
+                                 std::span<const dynamics::BodyInertia> inertias);
+
+// A contact point between bodies a and b. Rows of `basis` are the normal (a to b) and
+// two tangents; local vectors (velocity, impulse) are (normal, tangent1, tangent2).
+struct ContactFrame {
+  std::uint32_t a = 0;
+  std::uint32_t b = 0;
+  Eigen::Vector3d ra = Eigen::Vector3d::Zero();  // point relative to each centre of mass
+  Eigen::Vector3d rb = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d basis = Eigen::Matrix3d::Identity();
+
+  // Velocity of b relative to a at the point, world frame.
+  Eigen::Vector3d relative_velocity(std::span<const dynamics::BodyState> states) const;
+  Eigen::Vector3d local_velocity(std::span<const dynamics::BodyState> states) const {
+    return basis * relative_velocity(states);
+  }
+  // +impulse on b, -impulse on a (world frame).
+  void apply(const Eigen::Vector3d& impulse, std::span<dynamics::BodyState> states,
+             std::span<const Mobility> mobility) const;
+  void apply_local(const Eigen::Vector3d& local, std::span<dynamics::BodyState> states,
+                   std::span<const Mobility> mobility) const {
+    apply(basis.transpose() * local, states, mobility);
+  }
+  // Delassus block: change of local relative velocity per unit local impulse.
+  Eigen::Matrix3d local_response(std::span<const Mobility> mobility) const;
+};
+
+// First tangent along `slip` when it has a tangential part (so the friction pyramid is
+// aligned with the sliding direction and does not bias it), otherwise any.
+ContactFrame make_frame(const contact::Manifold& m, const contact::ContactPoint& p,
+                        std::span<const dynamics::BodyState> states);
+
+}  // namespace cosim::solver

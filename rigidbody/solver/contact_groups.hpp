@@ -1,0 +1,20 @@
+// Independent sub-problems: manifolds connected through shared dynamic bodies. A fixed
+// body (the ground) touches everything but transmits nothing, so it links no groups.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "rigidbody/contact/contact.hpp"
+#include "rigidbody/dynamics/body.hpp"
+
+namespace cosim::solver {
+
+// Manifold indices per group, each group in increasing index order, groups ordered by
+// their first manifold. Manifolds between two fixed bodies belong to no group.
+std::vector<std::vector<std::uint32_t>> contact_groups(
+    std::span<const dynamics::BodyInertia> inertias,
+    std::span<const contact::Manifold> manifolds);
+
+}  // namespace cosim::solver

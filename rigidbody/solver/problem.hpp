@@ -1,0 +1,33 @@
+// What every contact solver takes and gives back.
+#pragma once
+
+#include <span>
+
+#include "rigidbody/contact/contact.hpp"
+#include "rigidbody/dynamics/body.hpp"
+
+namespace cosim::solver {
+
+// Combined material of one body pair (the caller mixes the two bodies' values).
+struct Material {
+  double friction = 0.5;     // Coulomb coefficient mu
+  double restitution = 0.0;  // e: separating speed / approaching speed after an impact
+};
+
+// One step's contact problem. The solvers change `states[i].velocity` and
+// `.angular_velocity` in place (positions are integrated afterwards by the caller).
+struct ContactScene {
+  std::span<dynamics::BodyState> states;
+  std::span<const dynamics::BodyInertia> inertias;
+  std::span<const contact::Manifold> manifolds;
+  std::span<const Material> materials;  // one per manifold
+  double dt = 0.0;
+};
+
+struct SolveReport {
+  int iterations = 0;     // largest over the contact groups
+  double residual = 0.0;  // largest over the groups; meaning depends on the solver
+  bool converged = true;  // every group met the tolerance
+};
+
+}  // namespace cosim::solver

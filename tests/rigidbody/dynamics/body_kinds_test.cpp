@@ -1,0 +1,92 @@
+// Fixed and translation-only bodies, buoyancy, and the velocity hook.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include "bodies.hpp"
+
+namespace cosim::dynamics::test {
+namespace {
+
+BodyState moving() {
+  BodyState s;
+  s.position = {1.0, 2.0, 3.0};
+  s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitX()));
+  s.velocity = {0.5, 0.0, -1.0};
+  s.angular_velocity = {0.0, 3.0, 1.0};
+  return s;
+}
+
+const WindowWrench kPush{{{1.0, 2.0, 3.0}, {0.5, -0.5, 0.2}}, {{3.0, 2.0, 1.0}, {0.1, 0.2, 0.3}}};
+
+// The hook tries to change every velocity; it must not get through to the frozen parts.
+void meddle(double, std::span<BodyState> states) {
+  for (BodyState& s : states) {
+    s.velocity += Eigen::Vector3d::Constant(1.0);
+    s.angular_velocity += Eigen::Vector3d::Constant(1.0);
+  }
+}
+
+TEST(BodyKinds, FixedAndTranslationOnlyBodies) {
+  for (const Scheme scheme : {Scheme::semi_implicit_euler, Scheme::leapfrog}) {
+    const std::vector<BodyInertia> inertia{BodyInertia::fixed(), box_body({0.1, 0.2, 0.3}, false)};
+    std::vector<BodyState> states{moving(), moving()};
+    const std::vector<WindowWrench> push{kPush, kPush};
+    advance(states, inertia, push, 0.0, 1.0, {scheme, 0.01, {.gravity = true}}, meddle);
+    EXPECT_EQ(states[0].position, moving().position);
+    EXPECT_EQ(states[0].velocity, moving().velocity);
+    EXPECT_EQ(states[0].orientation.coeffs(), moving().orientation.coeffs());
+    EXPECT_EQ(states[0].angular_velocity, moving().angular_velocity);
+    EXPECT_NE(states[1].position, moving().position);
+    EXPECT_EQ(states[1].orientation.coeffs(), moving().orientation.coeffs());
+    EXPECT_EQ(states[1].angular_velocity, moving().angular_velocity);
+  }
+}
+
+TEST(BodyKinds, BuoyancyOfANeutralBodyCancelsGravityExactly) {
+  const BodyInertia body = box_body({0.1, 0.2, 0.3});
+  const BodyForces neutral{.gravity = true, .buoyancy = true, .fluid_density = body.density};
+  for (const Scheme scheme : {Scheme::semi_implicit_euler, Scheme::leapfrog}) {
+    const BodyState end = run(moving(), body, scheme, 0.01, 1.0, neutral);
+    EXPECT_EQ(end.velocity, moving().velocity);
+  }
+}
+
+TEST(BodyKinds, BuoyancyIsMinusFluidDensityTimesVolumeTimesG) {
+  BodyInertia body = box_body({0.1, 0.2, 0.3});
+  const BodyForces forces{.buoyancy = true, .fluid_density = 250.0};  // a quarter of the body's
+  EXPECT_LT((forces.acceleration(body) + 0.25 * forces.g).norm(), 1e-15);
+  body.density = 0.0;
+  EXPECT_THROW((void)forces.acceleration(body), std::invalid_argument);
+}
+
+TEST(BodyKinds, HookRunsOncePerSubstepBetweenVelocityAndPosition) {
+  const BodyInertia body = box_body({0.1, 0.2, 0.3});
+  BodyState state = moving();
+  int calls = 0;
+  const auto stop = [&](double dt, std::span<BodyState> states) {
+    EXPECT_DOUBLE_EQ(dt, 0.1);
+    ++calls;
+    states[0].velocity.setZero();  // a perfectly sticky contact
+  };
+  advance({&state, 1}, {&body, 1}, {}, 0.0, 1.0, {Scheme::semi_implicit_euler, 0.1, {.gravity = true}}, stop);
+  EXPECT_EQ(calls, 10);
+  EXPECT_EQ(state.position, moving().position);  // positions moved with the hook's velocities
+}
+
+TEST(BodyKinds, SubstepCountIsTheRoundedRatio) {
+  const BodyInertia body = box_body({0.1, 0.2, 0.3});
+  BodyState state;
+  int calls = 0;
+  advance({&state, 1}, {&body, 1}, {}, 0.0, 1.0, {Scheme::leapfrog, 0.3, {}},
+          [&](double dt, std::span<BodyState>) {
+            ++calls;
+            EXPECT_DOUBLE_EQ(dt, 1.0 / 3.0);
+          });
+  EXPECT_EQ(calls, 3);
+  EXPECT_THROW(advance({&state, 1}, {}, {}, 0.0, 1.0, {}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cosim::dynamics::test

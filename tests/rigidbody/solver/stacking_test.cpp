@@ -1,0 +1,72 @@
+// Warm starting on a resting box, and a 1:1000 mass-ratio stack.
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "world.hpp"
+
+namespace cosim::solver::test {
+namespace {
+
+TEST(WarmStart, ReducesIterationsOnRestingBox) {
+  const Eigen::Vector3d half(0.2, 0.3, 0.1);
+  World world;
+  const Plane plane{.body = world.add_fixed()};
+  const std::uint32_t box = world.add_box(5.0, half, {0.0, 0.0, half.z()});
+  world.material.friction = 0.5;
+  const Contacts contacts = [&](std::span<const dynamics::BodyState> s) {
+    std::vector<contact::Manifold> out;
+    keep(out, box_plane(plane, box, half, s, 0.01));
+    return out;
+  };
+  ImpulseOptions options = ImpulseOptions::sequential_impulses();
+  options.tolerance = 1e-8;
+  options.max_iterations = 1000;
+  for (int i = 0; i < 200; ++i) world.step(1e-3, contacts, impulses(options));
+
+  World cold = world;
+  cold.cache.clear();
+  const SolveReport warm_report = world.step(1e-3, contacts, impulses(options));
+  const SolveReport cold_report = cold.step(1e-3, contacts, impulses(options));
+  std::cout << "resting box, 4 contacts: warm start " << warm_report.iterations
+            << " iterations, cold start " << cold_report.iterations << '\n';
+  EXPECT_TRUE(warm_report.converged);
+  EXPECT_TRUE(cold_report.converged);
+  EXPECT_LT(warm_report.iterations, cold_report.iterations);
+  EXPECT_LT(world.states[box].velocity.norm(), 1e-9);
+}
+
+// A 1000 kg sphere on a 1 kg sphere on the ground: Gauss-Seidel propagates the heavy
+// load slowly through the light body, so this needs many iterations (or warm starting).
+class MassRatioStack : public ::testing::TestWithParam<Preset> {};
+
+TEST_P(MassRatioStack, StaysAtRest) {
+  constexpr double r = 0.5;
+  World world;
+  const Plane plane{.body = world.add_fixed()};
+  const std::uint32_t light = world.add_sphere(1.0, r, {0.0, 0.0, r});
+  const std::uint32_t heavy = world.add_sphere(1000.0, r, {0.0, 0.0, 3.0 * r});
+  const Contacts contacts = [&](std::span<const dynamics::BodyState> s) {
+    std::vector<contact::Manifold> out;
+    keep(out, sphere_plane(plane, light, r, s, 0.01));
+    keep(out, sphere_sphere(light, r, heavy, r, s, 0.01));
+    return out;
+  };
+  ImpulseOptions options = GetParam().options;
+  // Cold Gauss-Seidel converges like (1 - 1/1000)^k on this chain.
+  options.max_iterations = 30000;
+  options.tolerance = 1e-8;
+  SolveReport last;
+  for (int i = 0; i < 100; ++i) last = world.step(1e-3, contacts, impulses(options));
+  std::cout << GetParam().name << ", 1:1000 stack: " << last.iterations << " iterations in the last step\n";
+  EXPECT_TRUE(last.converged);
+  EXPECT_GT(world.states[light].position.z(), r - options.slop);
+  EXPECT_GT(world.states[heavy].position.z() - world.states[light].position.z(), 2.0 * r - options.slop);
+  EXPECT_LT(world.states[heavy].velocity.norm(), 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(Impulses, MassRatioStack, ::testing::Values(kPgs, kSi),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace cosim::solver::test
