@@ -1,0 +1,13 @@
+#include "rigidbody/world/materials.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cosim::world {
+
+solver::Material combine(const BodyMaterial& a, const BodyMaterial& b) {
+  return {.friction = std::sqrt(a.friction * b.friction),
+          .restitution = std::max(a.restitution, b.restitution)};
+}
+
+}  // namespace cosim::world

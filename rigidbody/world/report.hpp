@@ -1,0 +1,19 @@
+// What one World::advance did, for logs, tests and the coupler's RESULT stats.
+#pragma once
+
+#include <cstddef>
+
+namespace cosim::world {
+
+struct StepReport {
+  int substeps = 0;
+  std::size_t broadphase_updates = 0;  // 0 when contact is off or there is one body
+  std::size_t pairs_tested = 0;        // narrow-phase calls, summed over substeps
+  std::size_t contacts = 0;            // contact points in the last substep
+  int solver_iterations = 0;           // worst substep's worst contact group
+  double residual = 0.0;               // worst substep's worst contact group
+  bool converged = true;               // every substep and group met the tolerance
+  double wall_seconds = 0.0;
+};
+
+}  // namespace cosim::world

@@ -1,0 +1,37 @@
+// What a World does each substep, and with which solver.
+#pragma once
+
+#include "rigidbody/dynamics/body_forces.hpp"
+#include "rigidbody/solver/dem_solver.hpp"
+#include "rigidbody/solver/impulse_solver.hpp"
+
+namespace cosim::world {
+
+enum class SolverKind {
+  pgs,                  // projected Gauss-Seidel, cold start
+  jacobi,               // projected Jacobi
+  sequential_impulses,  // warm-started Gauss-Seidel: the default for resting stacks
+  dem,                  // soft spring-dashpot contacts (settings in `dem`)
+};
+
+struct Settings {
+  SolverKind solver = SolverKind::sequential_impulses;
+  int iterations = 0;        // impulse solvers' max iterations; 0: the preset's
+  double tolerance = 1e-6;   // impulse solvers' relative residual
+  // Simultaneous (Catto) or sequential (Newton's cradle passes momentum through).
+  solver::Restitution restitution = solver::Restitution::simultaneous;
+  solver::DemOptions dem{};
+  // Pairs whose bounding spheres are this close become graph edges, and points with a gap
+  // below it are speculative contacts the solver keeps from closing too fast. It should
+  // exceed the distance a body travels in one substep. 0: a tenth of the smallest bounded
+  // body's bounding radius.
+  double contact_margin = 0.0;
+  double dt = 1e-3;  // substep [s]
+  dynamics::BodyForces body_forces{.gravity = true};  // gravity on/off and g, buoyancy
+  // Off: no broad phase, no narrow phase, no solver; bodies pass through each other.
+  bool contact = true;
+
+  solver::ImpulseOptions impulse_options() const;
+};
+
+}  // namespace cosim::world

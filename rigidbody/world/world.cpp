@@ -1,0 +1,77 @@
+#include "rigidbody/world/world.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "rigidbody/dynamics/integrator.hpp"
+#include "rigidbody/geometry/mass_properties.hpp"
+
+namespace cosim::world {
+
+solver::ImpulseOptions Settings::impulse_options() const {
+  solver::ImpulseOptions o = solver == SolverKind::pgs      ? solver::ImpulseOptions::projected_gauss_seidel()
+                             : solver == SolverKind::jacobi ? solver::ImpulseOptions::projected_jacobi()
+                                                            : solver::ImpulseOptions::sequential_impulses();
+  if (iterations > 0) o.max_iterations = iterations;
+  o.tolerance = tolerance;
+  o.restitution = restitution;
+  return o;
+}
+
+World::World(const Settings& settings)
+    : settings_(settings), smallest_radius_(std::numeric_limits<double>::infinity()) {
+  if (!(settings.dt > 0.0)) throw std::invalid_argument("world: dt must be positive");
+  if (!(settings.contact_margin >= 0.0)) throw std::invalid_argument("world: contact margin must be >= 0");
+}
+
+std::uint32_t World::add(const BodyDesc& body) {
+  const bool bounded = geometry::is_bounded(body.shape);
+  if (!bounded && !body.fixed)
+    throw std::invalid_argument("world: a " + std::string(geometry::name(geometry::kind(body.shape))) +
+                                " body must be fixed");
+  dynamics::BodyInertia inertia;  // fixed: all zero
+  if (!body.fixed) {
+    if (!(body.density > 0.0)) throw std::invalid_argument("world: a dynamic body needs a positive density");
+    const geometry::MassProperties mp = geometry::mass_properties(body.shape, body.density);
+    inertia = dynamics::BodyInertia::of(mp.mass, mp.inertia, body.rotates);
+    inertia.density = body.density;
+  }
+  shapes_.push_back(body.shape);
+  states_.push_back(body.state);
+  states_.back().orientation.normalize();
+  inertias_.push_back(inertia);
+  materials_.push_back(body.material);
+  if (bounded) smallest_radius_ = std::min(smallest_radius_, geometry::bounding_radius(body.shape));
+  // The grid's margin is fixed at construction and the default margin depends on the bodies.
+  grid_ = broadphase::HashGrid({.margin = margin()});
+  return static_cast<std::uint32_t>(states_.size() - 1);
+}
+
+double World::margin() const {
+  if (settings_.contact_margin > 0.0 || !std::isfinite(smallest_radius_)) return settings_.contact_margin;
+  return 0.1 * smallest_radius_;
+}
+
+StepReport World::advance(double window, std::span<const dynamics::WindowWrench> external) {
+  const auto start = std::chrono::steady_clock::now();
+  StepReport report;
+  const dynamics::IntegratorSettings integrator{dynamics::Scheme::semi_implicit_euler, settings_.dt,
+                                                settings_.body_forces};
+  // "Only what the scene needs": without contacts (or with nothing to collide with) the
+  // integrator runs without a hook, so no broad or narrow phase is ever called.
+  dynamics::VelocityHook hook;
+  if (settings_.contact && size() > 1)
+    hook = [&](double h, std::span<dynamics::BodyState> states) { resolve_contacts(h, states, report); };
+  else
+    hook = [&](double, std::span<dynamics::BodyState>) { ++report.substeps; };
+  dynamics::advance(states_, inertias_, external, time_, time_ + window, integrator, hook);
+  time_ += window;
+  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace cosim::world

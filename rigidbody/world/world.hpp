@@ -1,0 +1,74 @@
+// The rigid-body simulator's state: bodies with shapes, materials and inertia, stepped
+// over coupling windows with contacts (README.md).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "rigidbody/broadphase/hash_grid.hpp"
+#include "rigidbody/dynamics/body.hpp"
+#include "rigidbody/dynamics/body_forces.hpp"
+#include "rigidbody/geometry/shape.hpp"
+#include "rigidbody/narrowphase/narrowphase.hpp"
+#include "rigidbody/world/contact_graph.hpp"
+#include "rigidbody/world/materials.hpp"
+#include "rigidbody/world/report.hpp"
+#include "rigidbody/world/settings.hpp"
+
+namespace cosim::world {
+
+struct BodyDesc {
+  geometry::Shape shape;  // body frame, centre of mass at the origin
+  dynamics::BodyState state{};
+  double density = 1000.0;  // [kg/m^3]; mass and inertia follow from the shape
+  BodyMaterial material{};
+  bool fixed = false;    // never moves (half-spaces must be fixed)
+  bool rotates = true;   // false: translation only
+};
+
+class World {
+ public:
+  // Throws std::invalid_argument for a non-positive dt or a negative contact margin.
+  explicit World(const Settings& settings = {});
+
+  // Returns the body's index. Throws std::invalid_argument for an unbounded shape that is
+  // not fixed or a dynamic body without positive density.
+  std::uint32_t add(const BodyDesc& body);
+
+  // Advances all bodies by `window` in substeps of about settings().dt. `external` is
+  // empty or one wrench per body (the coupler's forces over this window).
+  StepReport advance(double window, std::span<const dynamics::WindowWrench> external = {});
+
+  std::size_t size() const { return states_.size(); }
+  double time() const { return time_; }
+  const Settings& settings() const { return settings_; }
+  std::span<dynamics::BodyState> states() { return states_; }
+  std::span<const dynamics::BodyState> states() const { return states_; }
+  std::span<const dynamics::BodyInertia> inertias() const { return inertias_; }
+  const geometry::Shape& shape(std::uint32_t i) const { return shapes_[i]; }
+  const ContactGraph& graph() const { return graph_; }
+
+ private:
+  // The contact part of one substep (step.cpp), run between the velocity and the position
+  // update of dynamics::advance.
+  void resolve_contacts(double dt, std::span<dynamics::BodyState> states, StepReport& report);
+  double margin() const;
+
+  Settings settings_;
+  double time_ = 0.0;
+  std::vector<geometry::Shape> shapes_;
+  std::vector<dynamics::BodyState> states_;
+  std::vector<dynamics::BodyInertia> inertias_;
+  std::vector<BodyMaterial> materials_;
+  double smallest_radius_ = 0.0;  // of the bounded bodies, for the default margin
+
+  broadphase::HashGrid grid_;
+  std::vector<broadphase::Object> objects_;
+  std::vector<broadphase::Pair> pairs_;
+  ContactGraph graph_;
+  std::vector<solver::Material> pair_materials_;
+  narrowphase::MeshMaps mesh_maps_;
+};
+
+}  // namespace cosim::world

@@ -1,0 +1,39 @@
+// Issue case 6: a pyramid of spheres settling with friction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scenes.hpp"
+
+namespace cosim::world::test {
+namespace {
+
+TEST(Pyramid, SpheresSettleWithoutPenetrationOrEnergyGain) {
+  constexpr double r = 0.05, gap = 1e-3 * r;
+  World world;
+  const BodyMaterial rough{.friction = 0.6};
+  add_ground(world, rough);
+  // A square pyramid 3x3, 2x2, 1 (14 spheres), each layer in the hollows of the one below,
+  // dropped from a small gap so every contact closes during the run.
+  for (int layer = 0; layer < 3; ++layer) {
+    const int n = 3 - layer;
+    const double z = r + gap + layer * (std::sqrt(2.0) * r + gap);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        add_sphere(world, r, {(2 * i + layer) * (r + gap), (2 * j + layer) * (r + gap), z}, rough);
+  }
+  double energy = total_energy(world);
+  double deepest = 0.0;
+  for (int step = 0; step < 2000; ++step) {
+    world.advance(world.settings().dt);
+    const double e = total_energy(world);
+    ASSERT_LE(e, energy + 1e-12) << "step " << step;
+    energy = e;
+    for (const auto& edge : world.graph().edges())
+      for (int k = 0; k < edge.manifold.count; ++k) deepest = std::max(deepest, -edge.manifold.points[k].distance);
+  }
+  EXPECT_LT(deepest, 0.01 * r);
+}
+
+}  // namespace
+}  // namespace cosim::world::test
