@@ -109,11 +109,15 @@ void Session::handshake(Peers& peers) {
   for (const auto& [name, hello] : peers.gather(roles_.all(), protocol::Type::Hello, when)) {
     const auto& planned = *std::find_if(plan_.start.begin(), plan_.start.end(),
                                         [&](const auto& s) { return s.name == name; });
-    if (hello.header.provides != planned.provides || hello.header.needs != planned.needs)
+    // Hello says what a program can exchange; the scene decides what it will. A program
+    // announces its roles before it has seen the scene, so the planned roles must only be
+    // within what it can do (the rigid bodies can take forces even when no one sends any).
+    const auto within = [](scene::DataSet planned, scene::DataSet offered) { return (planned & ~offered) == 0; };
+    if (!within(planned.provides, hello.header.provides) || !within(planned.needs, hello.header.needs))
       throw ParticipantFailure(name,
-                               "provides " + scene::describe(hello.header.provides) + " and needs " +
-                                   scene::describe(hello.header.needs) + ", but the scene expects " +
-                                   scene::describe(planned.provides) + " and " +
+                               "can provide " + scene::describe(hello.header.provides) + " and take " +
+                                   scene::describe(hello.header.needs) + ", but the scene needs it to provide " +
+                                   scene::describe(planned.provides) + " and take " +
                                    scene::describe(planned.needs),
                                when);
     if (static_cast<int>(hello.header.ranks) != planned.ranks)
