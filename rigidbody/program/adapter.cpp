@@ -1,0 +1,93 @@
+#include "rigidbody/program/adapter.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "protocol/message.hpp"
+#include "rigidbody/program/scene_world.hpp"
+
+namespace cosim::program {
+namespace {
+
+constexpr std::size_t kPoseWidth = protocol::kPoseWidth;
+constexpr std::size_t kForceWidth = protocol::kForceWidth;
+
+dynamics::Wrench wrench_at(const std::vector<double>& forces, std::size_t body) {
+  const double* f = forces.data() + kForceWidth * body;
+  return {{f[0], f[1], f[2]}, {f[3], f[4], f[5]}};
+}
+
+// Empty forces: nobody sends any in this run, so the bodies feel only their own effects.
+std::vector<dynamics::WindowWrench> wrenches(const participant::Inputs& in, std::size_t bodies) {
+  if (in.forces_start.empty()) return {};
+  const auto& end = in.forces_end.empty() ? in.forces_start : in.forces_end;
+  if (in.forces_start.size() != kForceWidth * bodies || end.size() != kForceWidth * bodies)
+    throw std::runtime_error("forces for " + std::to_string(in.forces_start.size() / kForceWidth) +
+                             " bodies, the scene has " + std::to_string(bodies));
+  std::vector<dynamics::WindowWrench> out;
+  for (std::size_t b = 0; b < bodies; ++b) out.push_back({wrench_at(in.forces_start, b), wrench_at(end, b)});
+  return out;
+}
+
+void write(const dynamics::BodyState& s, double* out) {
+  const auto& q = s.orientation;
+  const double values[kPoseWidth] = {s.position.x(), s.position.y(), s.position.z(), q.w(), q.x(), q.y(), q.z(),
+                                     s.velocity.x(), s.velocity.y(), s.velocity.z(), s.angular_velocity.x(),
+                                     s.angular_velocity.y(), s.angular_velocity.z()};
+  std::copy(std::begin(values), std::end(values), out);
+}
+
+dynamics::BodyState read(const double* v) {
+  dynamics::BodyState s;
+  s.position = {v[0], v[1], v[2]};
+  s.orientation = Eigen::Quaterniond(v[3], v[4], v[5], v[6]);
+  s.velocity = {v[7], v[8], v[9]};
+  s.angular_velocity = {v[10], v[11], v[12]};
+  return s;
+}
+
+}  // namespace
+
+participant::Outputs RigidSolver::initialise(const scene::Scene& scene, const std::string&,
+                                             const std::vector<double>&, const std::vector<double>& state) {
+  // The scene gives the initial poses (with each mesh's centre-of-mass shift), so the
+  // coupler's are not needed; a resumed run brings its own state.
+  scene_ = scene;
+  world_ = make_world(scene_);
+  time_ = 0.0;
+  if (!state.empty()) restore(state);
+  return {poses(), {}, 0};
+}
+
+participant::Outputs RigidSolver::advance(const participant::Window& w, const participant::Inputs& in) {
+  const auto external = wrenches(in, world_->size());
+  const auto report = world_->advance(w.t1 - w.t0, external);
+  time_ = w.t1;
+  return {poses(), {}, static_cast<double>(report.substeps)};
+}
+
+std::vector<double> RigidSolver::state() const {
+  std::vector<double> s{time_};
+  const auto p = poses();
+  s.insert(s.end(), p.begin(), p.end());
+  return s;
+}
+
+void RigidSolver::restore(const std::vector<double>& state) {
+  const std::size_t bodies = scene_.bodies.size();
+  if (state.size() != 1 + kPoseWidth * bodies)
+    throw std::runtime_error("restart state has " + std::to_string(state.size()) + " values, expected " +
+                             std::to_string(1 + kPoseWidth * bodies));
+  world_ = make_world(scene_);
+  time_ = state[0];
+  for (std::size_t b = 0; b < bodies; ++b) world_->states()[b] = read(state.data() + 1 + kPoseWidth * b);
+}
+
+std::vector<double> RigidSolver::poses() const {
+  std::vector<double> out(kPoseWidth * world_->size());
+  for (std::size_t b = 0; b < world_->size(); ++b) write(world_->states()[b], out.data() + kPoseWidth * b);
+  return out;
+}
+
+}  // namespace cosim::program

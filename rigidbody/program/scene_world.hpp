@@ -1,0 +1,23 @@
+// The scene as the rigid-body world sees it: shapes, materials and the effects that switch
+// gravity, contact, friction and buoyancy on.
+#pragma once
+
+#include <memory>
+
+#include "rigidbody/world/world.hpp"
+#include "scene/scene.hpp"
+
+namespace cosim::program {
+
+// Reads participants.rigidbody (dt and options) and the effects. Throws SceneError naming
+// the key for a bad or unknown option, or a missing rigidbody section.
+world::Settings settings_of(const scene::Scene& scene);
+
+// One world body per scene body, in scene order. Mesh bodies are placed by their centre of
+// mass, so their state position is the scene position plus the rotated com_shift.
+world::BodyDesc body_of(const scene::Body& body, bool friction);
+
+// On the heap: a World is neither copyable nor movable.
+std::unique_ptr<world::World> make_world(const scene::Scene& scene);
+
+}  // namespace cosim::program

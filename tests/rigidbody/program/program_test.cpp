@@ -1,0 +1,62 @@
+// The real programs: `cosim run` starting only cosim-rigidbody, and the standalone mode.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "cosim_process.hpp"
+#include "h5_read.hpp"
+
+namespace cosim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const double radius = 0.1;
+
+const std::string sphere_on_plane =
+    "time: {end: 1.0}\n"
+    "coupling: {window: 0.01, scheme: serial-explicit}\n"
+    "output: {file: unused.h5, every: 1, checkpoint_every: 50}\n"
+    "domain: {min: [-1, -1, -1], max: [1, 1, 1]}\n"
+    "effects: [gravity, contact]\n"
+    "bodies:\n"
+    "  - {name: floor, shape: {type: plane, normal: [0, 0, 1]}, fixed: true, position: [0, 0, 0]}\n"
+    "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2500}, position: [0, 0, 0.3]}\n"
+    "participants:\n"
+    "  rigidbody: {dt: 1.0e-3}\n";
+
+int run_standalone(const fs::path& scene, const fs::path& out) {
+  const auto program = fs::read_symlink("/proc/self/exe").parent_path() / "cosim-rigidbody";
+  const auto command = program.string() + " --standalone " + scene.string() + " -o " + out.string() + " > /dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(RigidProgram, CoupledAndStandaloneRestTheSphereAtItsRadius) {
+  const auto dir = scratch_dir("sphere_on_plane");
+  const auto run = run_scene_text(dir, sphere_on_plane);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("participants: rigidbody"), std::string::npos) << run.output;
+
+  const auto coupled = read_series(dir / "scene.h5", "/bodies/ball/position");
+  ASSERT_EQ(coupled.rows, 101u);  // t = 0 and 100 windows
+  EXPECT_NEAR(coupled.at(coupled.rows - 1, 2), radius, 0.01 * radius);
+
+  ASSERT_EQ(run_standalone(dir / "scene.yaml", dir / "alone.h5"), 0);
+  const auto alone = read_series(dir / "alone.h5", "/bodies/ball/position");
+  ASSERT_EQ(alone.rows, coupled.rows);
+  for (std::size_t i = 0; i < alone.values.size(); ++i) EXPECT_NEAR(alone.values[i], coupled.values[i], 1e-12) << i;
+  EXPECT_EQ(read_string_attribute(dir / "alone.h5", "/run", "status"), "finished");
+}
+
+TEST(RigidProgram, StandaloneReportsSceneErrorsWithExitCode2) {
+  const auto dir = scratch_dir("bad_option");
+  auto bad = sphere_on_plane;
+  bad.replace(bad.find("{dt: 1.0e-3}"), 12, "{dt: 1.0e-3, options: {solver: newton}}");
+  write_file(dir / "bad.yaml", bad);
+  EXPECT_EQ(run_standalone(dir / "bad.yaml", dir / "bad.h5"), 2);
+}
+
+}  // namespace
+}  // namespace cosim::testing

@@ -1,0 +1,127 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cosim_process.hpp"
+#include "rigidbody/program/scene_world.hpp"
+#include "scene/error.hpp"
+
+namespace cosim::program {
+namespace {
+
+using std::numbers::pi;
+
+std::string scene_text(const std::string& effects, const std::string& bodies, const std::string& options = "{}") {
+  return "time: {end: 0.1}\ncoupling: {window: 0.01, scheme: serial-explicit}\n"
+         "domain: {min: [-5, -5, -5], max: [5, 5, 5]}\neffects: " +
+         effects + "\nbodies:\n" + bodies + "participants:\n  rigidbody: {dt: 1.0e-3, options: " + options + "}\n";
+}
+
+const std::string ball = "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2500}, position: [0, 0, 1]}\n";
+
+double mass(const world::World& w, std::uint32_t i) { return 1.0 / w.inertias()[i].inverse_mass; }
+
+TEST(SceneWorld, EveryShapeHasTheMassOfItsVolume) {
+  const auto dir = testing::scratch_dir("shapes");
+  // A unit cube as an ASCII STL, its corner at the origin: the centre of mass is at 0.5.
+  std::string stl = "solid cube\n";
+  const auto facet = [&](std::array<double, 9> v) {
+    stl += "facet normal 0 0 0\nouter loop\n";
+    for (int k = 0; k < 3; ++k)
+      stl += "vertex " + std::to_string(v[3 * k]) + " " + std::to_string(v[3 * k + 1]) + " " + std::to_string(v[3 * k + 2]) + "\n";
+    stl += "endloop\nendfacet\n";
+  };
+  facet({0, 0, 0, 0, 1, 0, 1, 1, 0}); facet({0, 0, 0, 1, 1, 0, 1, 0, 0});
+  facet({0, 0, 1, 1, 0, 1, 1, 1, 1}); facet({0, 0, 1, 1, 1, 1, 0, 1, 1});
+  facet({0, 0, 0, 1, 0, 0, 1, 0, 1}); facet({0, 0, 0, 1, 0, 1, 0, 0, 1});
+  facet({0, 1, 0, 0, 1, 1, 1, 1, 1}); facet({0, 1, 0, 1, 1, 1, 1, 1, 0});
+  facet({0, 0, 0, 0, 0, 1, 0, 1, 1}); facet({0, 0, 0, 0, 1, 1, 0, 1, 0});
+  facet({1, 0, 0, 1, 1, 0, 1, 1, 1}); facet({1, 0, 0, 1, 1, 1, 1, 0, 1});
+  testing::write_file(dir / "cube.stl", stl + "endsolid cube\n");
+  const std::string body = "    material: {density: 1000}\n    position: [1, 2, 3]\n";
+  const auto scene = scene::load_scene_from_string(
+      scene_text("[gravity]",
+                 "  - {name: s, shape: {type: sphere, radius: 0.1}, material: {density: 1000}, position: [0, 0, 0]}\n"
+                 "  - {name: e, shape: {type: ellipsoid, radii: [0.1, 0.2, 0.3]}, material: {density: 1000}, position: [0, 0, 0]}\n"
+                 "  - {name: b, shape: {type: box, half_extents: [0.1, 0.2, 0.3]}, material: {density: 1000}, position: [0, 0, 0]}\n"
+                 "  - {name: c, shape: {type: cylinder, radius: 0.1, height: 0.4}, material: {density: 1000}, position: [0, 0, 0]}\n"
+                 "  - {name: k, shape: {type: capsule, radius: 0.1, height: 0.4}, material: {density: 1000}, position: [0, 0, 0]}\n"
+                 "  - {name: p, shape: {type: plane, normal: [0, 0, 1]}, fixed: true, position: [0, 0, -1]}\n"
+                 "  - name: m\n    shape: {type: mesh, file: cube.stl}\n" + body),
+      dir / "scene.yaml");
+  const auto world = make_world(scene);
+  const auto& w = *world;
+  const double r = 0.1;
+  EXPECT_NEAR(mass(w, 0), 1000 * 4.0 / 3.0 * pi * r * r * r, 1e-9);
+  EXPECT_NEAR(mass(w, 1), 1000 * 4.0 / 3.0 * pi * 0.1 * 0.2 * 0.3, 1e-9);
+  EXPECT_NEAR(mass(w, 2), 1000 * 0.2 * 0.4 * 0.6, 1e-9);
+  EXPECT_NEAR(mass(w, 3), 1000 * pi * r * r * 0.4, 1e-9);
+  EXPECT_NEAR(mass(w, 4), 1000 * (pi * r * r * 0.4 + 4.0 / 3.0 * pi * r * r * r), 1e-9);
+  EXPECT_TRUE(w.inertias()[5].is_fixed());
+  EXPECT_EQ(geometry::kind(w.shape(5)), geometry::ShapeKind::HalfSpace);
+  EXPECT_DOUBLE_EQ(w.states()[5].position.z(), -1.0);  // the plane passes through the body position
+  EXPECT_NEAR(mass(w, 6), 1000.0, 1e-6);
+  // The file put the cube's centre at (0.5, 0.5, 0.5) of its frame; the body sits there.
+  EXPECT_NEAR((w.states()[6].position - Eigen::Vector3d(1.5, 2.5, 3.5)).norm(), 0.0, 1e-6);
+}
+
+TEST(SceneWorld, UnknownOptionIsNamed) {
+  const auto scene = scene::load_scene_from_string(scene_text("[gravity]", ball, "{iteration: 5}"));
+  try {
+    settings_of(scene);
+    FAIL() << "no error";
+  } catch (const scene::SceneError& e) {
+    EXPECT_EQ(e.key, "participants.rigidbody.options.iteration");
+  }
+}
+
+TEST(SceneWorld, BadSolverIsNamed) {
+  const auto scene = scene::load_scene_from_string(scene_text("[gravity]", ball, "{solver: newton}"));
+  EXPECT_THROW(
+      try { settings_of(scene); } catch (const scene::SceneError& e) {
+        EXPECT_EQ(e.key, "participants.rigidbody.options.solver");
+        throw;
+      },
+      scene::SceneError);
+}
+
+TEST(SceneWorld, BuoyancyNeedsFluidDensity) {
+  const auto scene = scene::load_scene_from_string(scene_text("[gravity, buoyancy]", ball));
+  EXPECT_THROW(
+      try { settings_of(scene); } catch (const scene::SceneError& e) {
+        EXPECT_EQ(e.key, "participants.rigidbody.options.fluid_density");
+        throw;
+      },
+      scene::SceneError);
+  const auto with = scene::load_scene_from_string(scene_text("[gravity, buoyancy]", ball, "{fluid_density: 1000}"));
+  EXPECT_EQ(settings_of(with).body_forces.fluid_density, 1000.0);
+}
+
+TEST(SceneWorld, OptionsReachTheSettings) {
+  const auto scene = scene::load_scene_from_string(scene_text(
+      "[gravity]", ball, "{solver: pgs, iterations: 7, tolerance: 1.0e-4, contact_margin: 0.01, restitution: sequential}"));
+  const auto s = settings_of(scene);
+  EXPECT_EQ(s.solver, world::SolverKind::pgs);
+  EXPECT_EQ(s.iterations, 7);
+  EXPECT_EQ(s.tolerance, 1e-4);
+  EXPECT_EQ(s.contact_margin, 0.01);
+  EXPECT_EQ(s.restitution, solver::Restitution::sequential);
+  EXPECT_EQ(s.dt, 1e-3);
+}
+
+TEST(SceneWorld, EffectsSwitchGravityContactAndFriction) {
+  const std::string rough = "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2500, friction: 0.4}, position: [0, 0, 1]}\n";
+  const auto bare = settings_of(scene::load_scene_from_string(scene_text("[contact]", ball)));
+  EXPECT_FALSE(bare.body_forces.gravity);
+  EXPECT_TRUE(bare.contact);
+  const auto falling = settings_of(scene::load_scene_from_string(scene_text("[gravity]", ball)));
+  EXPECT_TRUE(falling.body_forces.gravity);
+  EXPECT_FALSE(falling.contact);
+  const auto frictionless = scene::load_scene_from_string(scene_text("[gravity, contact]", rough));
+  EXPECT_EQ(body_of(frictionless.bodies[0], false).material.friction, 0.0);
+  EXPECT_EQ(body_of(frictionless.bodies[0], true).material.friction, 0.4);
+}
+
+}  // namespace
+}  // namespace cosim::program
