@@ -5,11 +5,15 @@
 #include <limits>
 
 #include "participant/solver.hpp"
+#include "protocol/message.hpp"
 #include "scene/reader.hpp"
 
 namespace cosim::doubles {
 
 enum class Integrator { Verlet, Euler };
+
+inline constexpr auto kPose = protocol::kPoseWidth;
+inline constexpr auto kLoad = protocol::kForceWidth;
 
 struct Common {
   Integrator integrator = Integrator::Verlet;

@@ -4,13 +4,9 @@
 #include <numbers>
 
 #include "double_common.hpp"
-#include "protocol/message.hpp"
 
 namespace cosim::doubles {
 namespace {
-
-constexpr auto kPose = protocol::kPoseWidth;
-constexpr auto kLoad = protocol::kForceWidth;
 
 class MassSolver final : public participant::Solver {
  public:

@@ -3,13 +3,9 @@
 #include <cmath>
 
 #include "double_common.hpp"
-#include "protocol/message.hpp"
 
 namespace cosim::doubles {
 namespace {
-
-constexpr auto kPose = protocol::kPoseWidth;
-constexpr auto kLoad = protocol::kForceWidth;
 
 class SpringSolver final : public participant::Solver {
  public:
