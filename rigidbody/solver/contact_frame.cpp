@@ -52,7 +52,7 @@ Eigen::Matrix3d ContactFrame::local_response(std::span<const Mobility> m) const 
   return basis * (point_response(m[a], ra) + point_response(m[b], rb)) * basis.transpose();
 }
 
-ContactFrame make_frame(const contact::Manifold& m, const contact::ContactPoint& p,
+ContactFrame make_frame(const contact::PairContacts& m, const contact::ContactPoint& p,
                         std::span<const dynamics::BodyState> states) {
   ContactFrame f;
   f.a = m.a;

@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "rigidbody/contact/contact.hpp"
+#include "rigidbody/contact/contact_set.hpp"
 #include "rigidbody/dynamics/body.hpp"
 
 namespace cosim::solver {
@@ -49,7 +49,7 @@ struct ContactFrame {
 
 // First tangent along `slip` when it has a tangential part (so the friction pyramid is
 // aligned with the sliding direction and does not bias it), otherwise any.
-ContactFrame make_frame(const contact::Manifold& m, const contact::ContactPoint& p,
+ContactFrame make_frame(const contact::PairContacts& pair, const contact::ContactPoint& p,
                         std::span<const dynamics::BodyState> states);
 
 }  // namespace cosim::solver

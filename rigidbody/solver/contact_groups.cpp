@@ -21,16 +21,16 @@ struct DisjointSets {
 
 std::vector<std::vector<std::uint32_t>> contact_groups(
     std::span<const dynamics::BodyInertia> inertias,
-    std::span<const contact::Manifold> manifolds) {
+    std::span<const contact::PairContacts> pairs) {
   DisjointSets sets(inertias.size());
-  for (const auto& m : manifolds)
+  for (const auto& m : pairs)
     if (!inertias[m.a].is_fixed() && !inertias[m.b].is_fixed()) sets.join(m.a, m.b);
 
   constexpr std::uint32_t kNone = ~0u;
   std::vector<std::uint32_t> group_of_root(inertias.size(), kNone);
   std::vector<std::vector<std::uint32_t>> groups;
-  for (std::uint32_t i = 0; i < manifolds.size(); ++i) {
-    const auto& m = manifolds[i];
+  for (std::uint32_t i = 0; i < pairs.size(); ++i) {
+    const auto& m = pairs[i];
     const std::uint32_t body = inertias[m.a].is_fixed() ? m.b : m.a;
     if (inertias[body].is_fixed()) continue;
     auto& g = group_of_root[sets.root(body)];

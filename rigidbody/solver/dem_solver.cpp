@@ -16,27 +16,30 @@ double damping_ratio(double restitution) {
   return -l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l);
 }
 
-DemReport solve_dem(const ContactScene& scene, ContactImpulses& cache, const DemOptions& options) {
+DemReport solve_dem(const ContactScene& scene, std::span<CachedContact> memory, const DemOptions& options) {
   const std::vector<Mobility> mobility = mobilities(scene.states, scene.inertias);
   const double dt = scene.dt;
   DemReport report;
   report.iterations = 1;
-  ContactImpulses next;
   std::vector<ContactFrame> frames;
   std::vector<Eigen::Vector3d> forces;
 
-  for (std::size_t i = 0; i < scene.manifolds.size(); ++i) {
-    const auto& m = scene.manifolds[i];
+  for (std::size_t i = 0; i < scene.contacts.pairs.size(); ++i) {
+    const contact::PairContacts& m = scene.contacts.pairs[i];
     const Material& material = scene.materials[i];
     // Translational reduced mass, the usual DEM choice (rotation does not soften the spring).
     const double inverse_mass = mobility[m.a].inverse_mass + mobility[m.b].inverse_mass;
     if (inverse_mass == 0.0) continue;
     const double mass = 1.0 / inverse_mass;
     const double zeta = damping_ratio(material.restitution);
-    for (std::size_t k = 0; k < m.count; ++k) {
-      const auto& p = m.points[k];
+    for (std::uint32_t k = m.first; k < m.first + m.count; ++k) {
+      const contact::ContactPoint& p = scene.contacts.points[k];
+      CachedContact& remembered = memory[k];
       const double overlap = -p.distance;
-      if (overlap <= 0.0) continue;
+      if (overlap <= 0.0) {
+        remembered = {};
+        continue;
+      }
       const ContactFrame frame = make_frame(m, p, scene.states);
       const Eigen::Vector3d n = frame.basis.row(0);
       const Eigen::Vector3d v = frame.relative_velocity(scene.states);
@@ -59,14 +62,10 @@ DemReport solve_dem(const ContactScene& scene, ContactImpulses& cache, const Dem
       const double fn = spring - cn * vn_end;
       report.stable_dt = std::min(report.stable_dt, 2.0 / std::sqrt(kn / mass) / options.safety);
 
-      const ContactKey key{m.a, m.b, p.feature};
-      Eigen::Vector3d stretch = Eigen::Vector3d::Zero();
-      if (const CachedContact* c = cache.find(key)) {
-        // Turn the old spring into the new tangent plane, keeping its length.
-        const double length = c->stretch.norm();
-        stretch = c->stretch - c->stretch.dot(n) * n;
-        if (stretch.norm() > 0.0) stretch *= length / stretch.norm();
-      }
+      // Turn the old spring into the new tangent plane, keeping its length.
+      const double length = remembered.tangential.norm();
+      Eigen::Vector3d stretch = remembered.tangential - remembered.tangential.dot(n) * n;
+      if (stretch.norm() > 0.0) stretch *= length / stretch.norm();
       stretch += dt * vt;
       Eigen::Vector3d ft = -kt * stretch - 2.0 * zeta * std::sqrt(mass * kt) * vt;
       const double cap = material.friction * std::max(0.0, fn);
@@ -74,7 +73,7 @@ DemReport solve_dem(const ContactScene& scene, ContactImpulses& cache, const Dem
         ft *= cap / ft.norm();
         stretch = -ft / kt;  // sliding: the spring holds exactly the Coulomb force
       }
-      next.store(key, {.normal = dt * fn, .tangent = dt * ft, .stretch = stretch});
+      remembered = {.normal = dt * fn, .tangential = stretch};
       frames.push_back(frame);
       forces.push_back(fn * n + ft);
     }
@@ -83,7 +82,6 @@ DemReport solve_dem(const ContactScene& scene, ContactImpulses& cache, const Dem
   // does not depend on the order of the contacts.
   for (std::size_t i = 0; i < frames.size(); ++i)
     frames[i].apply(dt * forces[i], scene.states, mobility);
-  cache.swap(next);
 
   if (dt > report.stable_dt && options.log)
     *options.log << "cosim DEM: dt = " << dt << " s exceeds the stable estimate " << report.stable_dt

@@ -5,7 +5,7 @@
 #include <iostream>
 #include <limits>
 
-#include "rigidbody/solver/impulse_cache.hpp"
+#include "rigidbody/solver/contact_memory.hpp"
 #include "rigidbody/solver/problem.hpp"
 
 namespace cosim::solver {
@@ -33,8 +33,9 @@ struct DemReport : SolveReport {
 // zeta = -ln e / sqrt(pi^2 + ln^2 e) (1 for e = 0: critical damping).
 double damping_ratio(double restitution);
 
-// Applies dt * contact forces to the velocities; the cache carries each point's
-// tangential spring (Cundall-Strack) and forgets points that no longer overlap.
-DemReport solve_dem(const ContactScene& scene, ContactImpulses& cache, const DemOptions& options);
+// Applies dt * contact forces to the velocities. `memory` has one entry per contact point:
+// its tangential spring (Cundall-Strack) of last step on entry, this step's on return
+// (zero for points that do not overlap, so a spring starts anew at each touch).
+DemReport solve_dem(const ContactScene& scene, std::span<CachedContact> memory, const DemOptions& options);
 
 }  // namespace cosim::solver

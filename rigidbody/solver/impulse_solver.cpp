@@ -27,7 +27,7 @@ ImpulseOptions ImpulseOptions::sequential_impulses() { return {}; }
 namespace {
 
 struct Row {
-  ContactKey key;
+  std::uint32_t point = 0;  // index into the ContactSet's points and the memory
   ContactFrame frame;
   PointLaw law;
   double restitution = 0.0;
@@ -41,9 +41,8 @@ class GroupSolver {
               std::span<const int> points_on, const ImpulseOptions& options)
       : scene_(scene), mobility_(mobility), points_on_(points_on), options_(options) {}
 
-  SolveReport solve(std::span<const std::uint32_t> manifolds, const ContactImpulses& previous,
-                    ContactImpulses& next) {
-    build_rows(manifolds, previous);
+  SolveReport solve(std::span<const std::uint32_t> pairs, std::span<CachedContact> memory) {
+    build_rows(pairs, memory);
     if (options_.restitution == Restitution::sequential) resolve_impacts();
     for (const Row& r : rows_) r.frame.apply_local(r.impulse, scene_.states, mobility_);
 
@@ -55,21 +54,21 @@ class GroupSolver {
       report.converged = report.residual <= options_.tolerance;
     }
     for (const Row& r : rows_)
-      next.store(r.key, {.normal = r.impulse[0],
-                         .tangent = r.frame.basis.bottomRows<2>().transpose() * r.impulse.tail<2>()});
+      memory[r.point] = {.normal = r.impulse[0],
+                         .tangential = r.frame.basis.bottomRows<2>().transpose() * r.impulse.tail<2>()};
     return report;
   }
 
  private:
-  void build_rows(std::span<const std::uint32_t> manifolds, const ContactImpulses& previous) {
+  void build_rows(std::span<const std::uint32_t> pairs, std::span<const CachedContact> memory) {
     const double dt = scene_.dt;
-    for (const std::uint32_t i : manifolds) {
-      const auto& m = scene_.manifolds[i];
+    for (const std::uint32_t i : pairs) {
+      const contact::PairContacts& m = scene_.contacts.pairs[i];
       const Material& material = scene_.materials[i];
-      for (std::size_t k = 0; k < m.count; ++k) {
-        const auto& p = m.points[k];
+      for (std::uint32_t k = m.first; k < m.first + m.count; ++k) {
+        const contact::ContactPoint& p = scene_.contacts.points[k];
         Row r;
-        r.key = {m.a, m.b, p.feature};
+        r.point = k;
         r.frame = make_frame(m, p, scene_.states);
         r.restitution = material.restitution;
         r.law = {.response = r.frame.local_response(mobility_),
@@ -82,8 +81,10 @@ class GroupSolver {
         const bool impact = approach < -options_.restitution_threshold && p.distance + dt * approach <= 0.0;
         if (options_.restitution == Restitution::simultaneous && impact)
           r.law.target_normal_velocity = std::max(r.law.target_normal_velocity, -r.restitution * approach);
-        if (const CachedContact* c = options_.warm_start ? previous.find(r.key) : nullptr)
-          r.impulse = {c->normal, r.frame.basis.row(1).dot(c->tangent), r.frame.basis.row(2).dot(c->tangent)};
+        if (options_.warm_start) {
+          const CachedContact& c = memory[k];
+          r.impulse = {c.normal, r.frame.basis.row(1).dot(c.tangential), r.frame.basis.row(2).dot(c.tangential)};
+        }
         rows_.push_back(r);
       }
     }
@@ -160,23 +161,21 @@ class GroupSolver {
 
 }  // namespace
 
-SolveReport solve_impulses(const ContactScene& scene, ContactImpulses& cache,
+SolveReport solve_impulses(const ContactScene& scene, std::span<CachedContact> memory,
                            const ImpulseOptions& options) {
   const std::vector<Mobility> mobility = mobilities(scene.states, scene.inertias);
   std::vector<int> points_on(scene.states.size(), 0);
-  for (const auto& m : scene.manifolds) {
-    points_on[m.a] += m.count;
-    points_on[m.b] += m.count;
+  for (const auto& m : scene.contacts.pairs) {
+    points_on[m.a] += static_cast<int>(m.count);
+    points_on[m.b] += static_cast<int>(m.count);
   }
-  ContactImpulses next;
   SolveReport total;
-  for (const auto& group : contact_groups(scene.inertias, scene.manifolds)) {
-    const SolveReport r = GroupSolver(scene, mobility, points_on, options).solve(group, cache, next);
+  for (const auto& group : contact_groups(scene.inertias, scene.contacts.pairs)) {
+    const SolveReport r = GroupSolver(scene, mobility, points_on, options).solve(group, memory);
     total.iterations = std::max(total.iterations, r.iterations);
     total.residual = std::max(total.residual, r.residual);
     total.converged = total.converged && r.converged;
   }
-  cache.swap(next);
   return total;
 }
 

@@ -3,7 +3,7 @@
 // defaults; see README.md for the formulation and the choices.
 #pragma once
 
-#include "rigidbody/solver/impulse_cache.hpp"
+#include "rigidbody/solver/contact_memory.hpp"
 #include "rigidbody/solver/point_update.hpp"
 #include "rigidbody/solver/problem.hpp"
 
@@ -46,8 +46,9 @@ struct ImpulseOptions {
   static ImpulseOptions sequential_impulses();     // warm started Gauss-Seidel
 };
 
-// Solves each contact group separately and replaces `cache` by this step's impulses.
-SolveReport solve_impulses(const ContactScene& scene, ContactImpulses& cache,
+// Solves each contact group separately. `memory` has one entry per contact point: last
+// step's impulses on entry (used when warm starting), this step's on return.
+SolveReport solve_impulses(const ContactScene& scene, std::span<CachedContact> memory,
                            const ImpulseOptions& options);
 
 }  // namespace cosim::solver

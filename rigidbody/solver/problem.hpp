@@ -3,7 +3,7 @@
 
 #include <span>
 
-#include "rigidbody/contact/contact.hpp"
+#include "rigidbody/contact/contact_set.hpp"
 #include "rigidbody/dynamics/body.hpp"
 
 namespace cosim::solver {
@@ -19,8 +19,8 @@ struct Material {
 struct ContactScene {
   std::span<dynamics::BodyState> states;
   std::span<const dynamics::BodyInertia> inertias;
-  std::span<const contact::Manifold> manifolds;
-  std::span<const Material> materials;  // one per manifold
+  const contact::ContactSet& contacts;
+  std::span<const Material> materials;  // one per contact pair
   double dt = 0.0;
 };
 

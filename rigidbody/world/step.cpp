@@ -35,27 +35,29 @@ void World::resolve_contacts(double dt, std::span<dynamics::BodyState> states, S
   ++report.broadphase_updates;
 
   graph_.update(pairs_);
-  for (ContactGraph::Edge& edge : graph_.edges()) {
-    contact::Manifold& m = edge.manifold;
-    m.count = 0;
-    const geometry::Pose pa(states[m.a].position, states[m.a].orientation);
-    const geometry::Pose pb(states[m.b].position, states[m.b].orientation);
-    narrowphase::collide(shapes_[m.a], pa, shapes_[m.b], pb, margin, m, mesh_maps_);
+  contact::ContactSet& contacts = graph_.contacts();
+  contacts.clear();
+  for (const auto& [a, b] : graph_.edges()) {
+    contact::Manifold m{.a = a, .b = b};
+    const geometry::Pose pa(states[a].position, states[a].orientation);
+    const geometry::Pose pb(states[b].position, states[b].orientation);
+    narrowphase::collide(shapes_[a], pa, shapes_[b], pb, margin, m, mesh_maps_);
+    contacts.add(m);
   }
   report.pairs_tested += graph_.edges().size();
+  report.contacts = contacts.points.size();
 
-  const std::span<const contact::Manifold> manifolds = graph_.touching();
   pair_materials_.clear();
-  for (const contact::Manifold& m : manifolds) pair_materials_.push_back(combine(materials_[m.a], materials_[m.b]));
-  report.contacts = 0;
-  for (const contact::Manifold& m : manifolds) report.contacts += m.count;
+  for (const contact::PairContacts& p : contacts.pairs) pair_materials_.push_back(combine(materials_[p.a], materials_[p.b]));
 
-  // The solvers split the manifolds into contact groups themselves (solver::contact_groups:
+  // The solvers split the pairs into contact groups themselves (solver::contact_groups:
   // components linked through dynamic bodies only) and report the worst group.
-  const solver::ContactScene scene{states, inertias_, manifolds, pair_materials_, dt};
-  const solver::SolveReport solved =
-      settings_.solver == SolverKind::dem ? solver::solve_dem(scene, graph_.impulses(), settings_.dem)
-                                          : solver::solve_impulses(scene, graph_.impulses(), settings_.impulse_options());
+  const solver::ContactScene scene{states, inertias_, contacts, pair_materials_, dt};
+  const std::span<solver::CachedContact> memory = graph_.recall();
+  const solver::SolveReport solved = settings_.solver == SolverKind::dem
+                                         ? solver::solve_dem(scene, memory, settings_.dem)
+                                         : solver::solve_impulses(scene, memory, settings_.impulse_options());
+  graph_.remember();
   report.solver_iterations = std::max(report.solver_iterations, solved.iterations);
   report.residual = std::max(report.residual, solved.residual);
   report.converged = report.converged && solved.converged;

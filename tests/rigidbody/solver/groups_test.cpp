@@ -6,11 +6,7 @@
 namespace cosim::solver {
 namespace {
 
-contact::Manifold between(std::uint32_t a, std::uint32_t b) {
-  contact::Manifold m{.a = a, .b = b};
-  m.add({});
-  return m;
-}
+contact::PairContacts between(std::uint32_t a, std::uint32_t b) { return {.a = a, .b = b, .count = 1}; }
 
 std::vector<dynamics::BodyInertia> ground_and(int dynamic) {
   std::vector<dynamics::BodyInertia> inertias{dynamics::BodyInertia::fixed()};
@@ -22,7 +18,7 @@ std::vector<dynamics::BodyInertia> ground_and(int dynamic) {
 TEST(ContactGroups, TwoPilesOnOneGroundAreSeparate) {
   const auto inertias = ground_and(4);
   // Piles {1, 2} and {3, 4}, both standing on the ground 0.
-  const std::vector<contact::Manifold> manifolds{between(0, 1), between(0, 3), between(1, 2), between(4, 3)};
+  const std::vector<contact::PairContacts> manifolds{between(0, 1), between(0, 3), between(1, 2), between(4, 3)};
   const auto groups = contact_groups(inertias, manifolds);
   ASSERT_EQ(groups.size(), 2u);
   EXPECT_EQ(groups[0], (std::vector<std::uint32_t>{0, 2}));
@@ -31,7 +27,7 @@ TEST(ContactGroups, TwoPilesOnOneGroundAreSeparate) {
 
 TEST(ContactGroups, ChainIsOneGroup) {
   const auto inertias = ground_and(4);
-  const std::vector<contact::Manifold> manifolds{between(0, 1), between(1, 2), between(3, 2), between(3, 4),
+  const std::vector<contact::PairContacts> manifolds{between(0, 1), between(1, 2), between(3, 2), between(3, 4),
                                                  between(4, 0)};
   const auto groups = contact_groups(inertias, manifolds);
   ASSERT_EQ(groups.size(), 1u);
@@ -41,7 +37,7 @@ TEST(ContactGroups, ChainIsOneGroup) {
 TEST(ContactGroups, FixedPairsBelongNowhere) {
   auto inertias = ground_and(1);
   inertias.push_back(dynamics::BodyInertia::fixed());
-  const std::vector<contact::Manifold> manifolds{between(0, 2), between(1, 2)};
+  const std::vector<contact::PairContacts> manifolds{between(0, 2), between(1, 2)};
   const auto groups = contact_groups(inertias, manifolds);
   ASSERT_EQ(groups.size(), 1u);
   EXPECT_EQ(groups[0], (std::vector<std::uint32_t>{1}));

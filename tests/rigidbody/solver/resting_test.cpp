@@ -84,18 +84,20 @@ TEST(RestingSphereDem, SettlesToStaticDeflection) {
 TEST(RestingSphereDem, EstimatesStableStepAndWarns) {
   SphereOnPlane scene(kRadius - 1e-4);
   const std::vector<Material> materials(1);
-  const auto manifolds = scene.contacts()(scene.world.states);
+  contact::ContactSet contacts;
+  for (const contact::Manifold& m : scene.contacts()(scene.world.states)) contacts.add(m);
+  std::vector<CachedContact> memory(contacts.points.size());
   DemOptions options;
   std::ostringstream log;
   options.log = &log;
-  ContactScene problem{scene.world.states, scene.world.inertias, manifolds, materials, 1e-4};
+  ContactScene problem{scene.world.states, scene.world.inertias, contacts, materials, 1e-4};
   const double expected = 2.0 / std::sqrt(options.normal_stiffness / kMass) / options.safety;
-  const DemReport fine = solve_dem(problem, scene.world.cache, options);
+  const DemReport fine = solve_dem(problem, memory, options);
   std::cout << "DEM stable dt estimate " << fine.stable_dt << " s\n";
   EXPECT_NEAR(fine.stable_dt, expected, 1e-12);
   EXPECT_TRUE(log.str().empty());
   problem.dt = 1e-2;
-  solve_dem(problem, scene.world.cache, options);
+  solve_dem(problem, memory, options);
   EXPECT_NE(log.str().find("exceeds the stable estimate"), std::string::npos);
 }
 

@@ -25,7 +25,7 @@ TEST(WarmStart, ReducesIterationsOnRestingBox) {
   for (int i = 0; i < 200; ++i) world.step(1e-3, contacts, impulses(options));
 
   World cold = world;
-  cold.cache.clear();
+  cold.memory.clear();
   const SolveReport warm_report = world.step(1e-3, contacts, impulses(options));
   const SolveReport cold_report = cold.step(1e-3, contacts, impulses(options));
   std::cout << "resting box, 4 contacts: warm start " << warm_report.iterations

@@ -35,9 +35,12 @@ std::uint32_t World::add_box(double mass, const Eigen::Vector3d& half, const Eig
 SolveReport World::step(double dt, const Contacts& contacts, const Solver& solver) {
   for (std::size_t i = 0; i < states.size(); ++i)
     if (!inertias[i].is_fixed()) states[i].velocity += dt * gravity;
-  const std::vector<contact::Manifold> manifolds = contacts(states);
-  const std::vector<Material> materials(manifolds.size(), material);
-  const SolveReport report = solver({states, inertias, manifolds, materials, dt}, cache);
+  contact_set.clear();
+  for (const contact::Manifold& m : contacts(states)) contact_set.add(m);
+  const std::vector<Material> materials(contact_set.pairs.size(), material);
+  memory.recall(contact_set, values);
+  const SolveReport report = solver({states, inertias, contact_set, materials, dt}, values);
+  memory.remember(contact_set, values);
   for (auto& s : states) {
     s.position += dt * s.velocity;
     const Eigen::Quaterniond spin(0.0, s.angular_velocity.x(), s.angular_velocity.y(), s.angular_velocity.z());

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "rigidbody/solver/dem_solver.hpp"
-#include "rigidbody/solver/impulse_cache.hpp"
+#include "rigidbody/solver/contact_memory.hpp"
 #include "rigidbody/solver/impulse_solver.hpp"
 #include "rigidbody/solver/problem.hpp"
 
@@ -21,13 +21,13 @@ struct Plane {
 };
 
 using Contacts = std::function<std::vector<contact::Manifold>(std::span<const dynamics::BodyState>)>;
-using Solver = std::function<SolveReport(const ContactScene&, ContactImpulses&)>;
+using Solver = std::function<SolveReport(const ContactScene&, std::span<CachedContact>)>;
 
 inline Solver impulses(const ImpulseOptions& o) {
-  return [o](const ContactScene& s, ContactImpulses& c) { return solve_impulses(s, c, o); };
+  return [o](const ContactScene& s, std::span<CachedContact> m) { return solve_impulses(s, m, o); };
 }
 inline Solver dem(const DemOptions& o) {
-  return [o](const ContactScene& s, ContactImpulses& c) -> SolveReport { return solve_dem(s, c, o); };
+  return [o](const ContactScene& s, std::span<CachedContact> m) -> SolveReport { return solve_dem(s, m, o); };
 }
 
 // The impulse solvers by name, for parameterised tests.
@@ -44,7 +44,9 @@ struct World {
   std::vector<dynamics::BodyInertia> inertias;
   Eigen::Vector3d gravity = kGravity;
   Material material;
-  ContactImpulses cache;
+  ContactMemory memory;  // carried between steps, as the world's contact graph does
+  contact::ContactSet contact_set;  // of the last step
+  std::vector<CachedContact> values;  // of the last step, one per point
 
   std::uint32_t add_fixed();
   std::uint32_t add_sphere(double mass, double radius, const Eigen::Vector3d& position);

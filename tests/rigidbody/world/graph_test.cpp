@@ -3,26 +3,50 @@
 
 #include "rigidbody/world/contact_graph.hpp"
 #include "rigidbody/world/materials.hpp"
+#include <initializer_list>
+
 #include "scenes.hpp"
 
 namespace cosim::world::test {
 namespace {
 
-TEST(ContactGraph, KeepsManifoldsOfPersistingEdgesSortedAndDropsTheRest) {
+TEST(ContactGraph, KeepsEdgesSortedAndDropsThoseNoLongerReported) {
   ContactGraph graph;
   const std::vector<broadphase::Pair> first = {{2, 5}, {0, 1}};
   graph.update(first);
-  ASSERT_EQ(graph.edges().size(), 2u);
-  graph.edges()[1].manifold.add({});  // edge (2, 5) touches
+  EXPECT_EQ(std::vector(graph.edges().begin(), graph.edges().end()), (std::vector<broadphase::Pair>{{0, 1}, {2, 5}}));
   const std::vector<broadphase::Pair> second = {{3, 4}, {2, 5}};
   graph.update(second);
-  ASSERT_EQ(graph.edges().size(), 2u);
-  EXPECT_EQ(graph.edges()[0].manifold.a, 2u);
-  EXPECT_EQ(graph.edges()[0].manifold.count, 1);  // persisted with its manifold
-  EXPECT_EQ(graph.edges()[1].manifold.a, 3u);
-  EXPECT_EQ(graph.edges()[1].manifold.count, 0);  // new
-  ASSERT_EQ(graph.touching().size(), 1u);
-  EXPECT_EQ(graph.touching()[0].b, 5u);
+  EXPECT_EQ(std::vector(graph.edges().begin(), graph.edges().end()), (std::vector<broadphase::Pair>{{2, 5}, {3, 4}}));
+}
+
+contact::Manifold touching(std::uint32_t a, std::uint32_t b, std::initializer_list<std::uint32_t> features) {
+  contact::Manifold m{.a = a, .b = b};
+  for (const std::uint32_t f : features) m.add({.feature = f});
+  return m;
+}
+
+// Warm starting: a point keeps last substep's value only if its pair and feature persist.
+TEST(ContactGraph, RecallsValuesByPairAndFeature) {
+  ContactGraph graph;
+  graph.contacts().add(touching(0, 1, {7, 8}));
+  graph.contacts().add(touching(2, 3, {1}));
+  std::span<solver::CachedContact> values = graph.recall();
+  ASSERT_EQ(values.size(), 3u);
+  for (const auto& v : values) EXPECT_EQ(v.normal, 0.0);  // nothing remembered yet
+  values[0].normal = 1.0;
+  values[1].normal = 2.0;
+  values[2].normal = 3.0;
+  graph.remember();
+
+  graph.contacts().clear();
+  graph.contacts().add(touching(0, 1, {8, 9}));  // 7 vanished, 9 is new
+  graph.contacts().add(touching(2, 4, {1}));     // another pair, same feature
+  values = graph.recall();
+  ASSERT_EQ(values.size(), 3u);
+  EXPECT_EQ(values[0].normal, 2.0);
+  EXPECT_EQ(values[1].normal, 0.0);
+  EXPECT_EQ(values[2].normal, 0.0);
 }
 
 TEST(Materials, GeometricMeanFrictionAndMaximumRestitution) {

@@ -29,8 +29,7 @@ TEST(Pyramid, SpheresSettleWithoutPenetrationOrEnergyGain) {
     const double e = total_energy(world);
     ASSERT_LE(e, energy + 1e-12) << "step " << step;
     energy = e;
-    for (const auto& edge : world.graph().edges())
-      for (int k = 0; k < edge.manifold.count; ++k) deepest = std::max(deepest, -edge.manifold.points[k].distance);
+    deepest = std::max(deepest, world.graph().contacts().deepest_penetration());
   }
   EXPECT_LT(deepest, 0.01 * r);
 }

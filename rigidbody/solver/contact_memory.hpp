@@ -1,0 +1,48 @@
+// What a contact point carries from one substep to the next: the accumulated impulses that
+// warm-start the impulse solvers, or DEM's tangential spring. The solvers take one
+// CachedContact per point of the ContactSet (in: last step's, out: this step's);
+// ContactMemory finds last step's value for each new point.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "rigidbody/contact/contact_set.hpp"
+
+namespace cosim::solver {
+
+// World-frame vectors, so a normal that turns a little between steps only needs the
+// stored vector projected onto the new tangent plane, not a matching tangent basis.
+struct CachedContact {
+  double normal = 0.0;  // normal impulse of the step [N s]
+  // Impulse solvers: the friction impulse [N s]. DEM: the tangential spring's stretch [m]
+  // (Cundall-Strack); a world runs one solver, so one slot serves both.
+  Eigen::Vector3d tangential = Eigen::Vector3d::Zero();
+};
+
+// Last step's points, keyed by body pair and feature id. Matching by feature is what lets
+// a box resting on a box keep its four corner impulses while the points move a little.
+class ContactMemory {
+ public:
+  // One value per point of `contacts`: the remembered point of the same pair and feature,
+  // zero for a new point.
+  void recall(const contact::ContactSet& contacts, std::vector<CachedContact>& out) const;
+  // Replaces what is remembered by these points and values (memory: one per point).
+  void remember(const contact::ContactSet& contacts, std::span<const CachedContact> memory);
+  void clear();
+  std::size_t size() const { return entries_.size(); }  // points remembered
+
+ private:
+  struct Entry {
+    std::uint32_t feature;
+    CachedContact value;
+  };
+  std::vector<contact::PairContacts> pairs_;  // sorted by (a, b); first/count index entries_
+  std::vector<Entry> entries_;
+  std::vector<std::uint32_t> order_;  // scratch of remember(), kept for its capacity
+};
+
+}  // namespace cosim::solver
