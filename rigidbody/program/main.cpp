@@ -5,12 +5,16 @@
 
 #include <iostream>
 
+#include <spdlog/spdlog.h>
+
 #include "participant/run_participant.hpp"
 #include "rigidbody/program/adapter.hpp"
 #include "rigidbody/program/standalone.hpp"
 #include "scene/error.hpp"
 
 int main(int argc, char** argv) {
+  // The coupler prints participants' output among its own: say whose a warning is.
+  spdlog::set_pattern("cosim-rigidbody: %^%l%$: %v");
   if (auto client = cosim::protocol::Client::from_environment()) {
     cosim::program::RigidSolver solver;
     using cosim::scene::Data;

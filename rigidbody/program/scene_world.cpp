@@ -1,5 +1,6 @@
 #include "rigidbody/program/scene_world.hpp"
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 
@@ -20,6 +21,19 @@ const scene::Participant& section(const scene::Scene& scene) {
   return *p;
 }
 
+// A mesh listed in convex_hulls collides as the hull of its body-frame vertices. A convex
+// mesh's hull has the same centre of mass; any other's moves by the hull's own com_shift.
+geometry::Shape hull_of(const geometry::Shape& mesh) {
+  return geometry::ConvexHull(std::get<geometry::TriangleMesh>(mesh).vertices());
+}
+
+// A mesh's file frame is the scene frame of the body; its vertices were moved by com_shift.
+Eigen::Vector3d com_shift(const geometry::Shape& shape) {
+  if (const auto* mesh = std::get_if<geometry::TriangleMesh>(&shape)) return mesh->com_shift();
+  if (const auto* hull = std::get_if<geometry::ConvexHull>(&shape)) return hull->com_shift();
+  return Vector3d::Zero();
+}
+
 geometry::Shape shape_of(const scene::Shape& s) {
   switch (s.type) {
     case scene::ShapeType::Sphere: return geometry::Sphere(s.radius);
@@ -33,12 +47,29 @@ geometry::Shape shape_of(const scene::Shape& s) {
   throw std::invalid_argument("unknown shape type");
 }
 
+// The option names mesh bodies only, so a misspelt or non-mesh name is an error that lists
+// the meshes.
+std::vector<std::size_t> convex_hulls(const scene::Scene& scene, const scene::Reader& options) {
+  std::vector<std::size_t> meshes;
+  std::vector<const char*> names;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    if (scene.bodies[i].shape.type == scene::ShapeType::Mesh) {
+      meshes.push_back(i);
+      names.push_back(scene.bodies[i].name.c_str());
+    }
+  if (!options.has("convex_hulls")) return {};
+  std::vector<std::size_t> bodies;
+  for (std::size_t k : options.choices("convex_hulls", names)) bodies.push_back(meshes[k]);
+  return bodies;
+}
+
 }  // namespace
 
-world::Settings settings_of(const scene::Scene& scene) {
+ProgramOptions program_options(const scene::Scene& scene) {
   const auto& p = section(scene);
   const auto options = scene::options_of(scene, p);
-  world::Settings s;
+  ProgramOptions out;
+  world::Settings& s = out.settings;
   s.dt = p.dt;
 
   constexpr std::array solver_names{"sequential-impulses", "pgs", "jacobi", "dem"};
@@ -58,17 +89,27 @@ world::Settings settings_of(const scene::Scene& scene) {
   // Hydrostatic buoyancy needs the fluid's density, which the scene has nowhere else.
   if (s.body_forces.buoyancy) s.body_forces.fluid_density = options.number("fluid_density", scene::Range::above(0));
   s.contact = scene.has_effect(scene::Effect::Contact);
+
+  constexpr std::array law_names{"linear", "hertz"};
+  constexpr std::array laws{solver::NormalLaw::linear, solver::NormalLaw::hertz};
+  s.dem.law = laws[options.choice("dem_law", law_names, 0)];
+  s.dem.normal_stiffness = options.number("normal_stiffness", s.dem.normal_stiffness, scene::Range::above(0));
+  out.convex_hulls = convex_hulls(scene, options);
   options.finish();
-  return s;
+  return out;
 }
 
-world::BodyDesc body_of(const scene::Body& b, bool friction) {
-  world::BodyDesc d{.shape = shape_of(b.shape)};
+world::Settings settings_of(const scene::Scene& scene) { return program_options(scene).settings; }
+
+world::BodyDesc body_of(const scene::Body& b, bool friction, bool convex_hull) {
+  world::BodyDesc d{.shape = shape_of(b.shape), .name = b.name};
   const auto& o = b.orientation;
   d.state.orientation = Eigen::Quaterniond(o[0], o[1], o[2], o[3]);
-  d.state.position = vec(b.position);
-  if (const auto* mesh = std::get_if<geometry::TriangleMesh>(&d.shape))
-    d.state.position += d.state.orientation * mesh->com_shift();
+  d.state.position = vec(b.position) + d.state.orientation * com_shift(d.shape);
+  if (convex_hull) {
+    d.shape = hull_of(d.shape);
+    d.state.position += d.state.orientation * com_shift(d.shape);
+  }
   d.state.velocity = vec(b.velocity);
   d.state.angular_velocity = vec(b.angular_velocity);
   d.density = b.material.density;
@@ -78,9 +119,13 @@ world::BodyDesc body_of(const scene::Body& b, bool friction) {
 }
 
 std::unique_ptr<world::World> make_world(const scene::Scene& scene) {
-  auto w = std::make_unique<world::World>(settings_of(scene));
+  const ProgramOptions options = program_options(scene);
+  auto w = std::make_unique<world::World>(options.settings);
   const bool friction = scene.has_effect(scene::Effect::Friction);
-  for (const auto& b : scene.bodies) w->add(body_of(b, friction));
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const bool hull = std::find(options.convex_hulls.begin(), options.convex_hulls.end(), i) != options.convex_hulls.end();
+    w->add(body_of(scene.bodies[i], friction, hull));
+  }
   return w;
 }
 

@@ -3,19 +3,28 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "rigidbody/world/world.hpp"
 #include "scene/scene.hpp"
 
 namespace cosim::program {
 
+struct ProgramOptions {
+  world::Settings settings;
+  // Mesh bodies (scene indices) that collide as their convex hull: exact GJK/EPA contacts
+  // instead of distance-map samples, for meshes that are convex or nearly so.
+  std::vector<std::size_t> convex_hulls;
+};
+
 // Reads participants.rigidbody (dt and options) and the effects. Throws SceneError naming
 // the key for a bad or unknown option, or a missing rigidbody section.
-world::Settings settings_of(const scene::Scene& scene);
+ProgramOptions program_options(const scene::Scene& scene);
+world::Settings settings_of(const scene::Scene& scene);  // program_options(scene).settings
 
 // One world body per scene body, in scene order. Mesh bodies are placed by their centre of
 // mass, so their state position is the scene position plus the rotated com_shift.
-world::BodyDesc body_of(const scene::Body& body, bool friction);
+world::BodyDesc body_of(const scene::Body& body, bool friction, bool convex_hull = false);
 
 // On the heap: a World is neither copyable nor movable.
 std::unique_ptr<world::World> make_world(const scene::Scene& scene);

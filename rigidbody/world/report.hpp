@@ -13,6 +13,7 @@ struct StepReport {
   int solver_iterations = 0;           // worst substep's worst contact group
   double residual = 0.0;               // worst substep's worst contact group
   bool converged = true;               // every substep and group met the tolerance
+  std::size_t tunnelling_bodies = 0;   // bodies at risk at the window's start (tunnelling.hpp)
   double wall_seconds = 0.0;
 };
 

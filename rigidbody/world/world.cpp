@@ -45,6 +45,7 @@ std::uint32_t World::add(const BodyDesc& body) {
   states_.back().orientation.normalize();
   inertias_.push_back(inertia);
   materials_.push_back(body.material);
+  tunnelling_.add(body.name, body.shape);
   if (bounded) smallest_radius_ = std::min(smallest_radius_, geometry::bounding_radius(body.shape));
   // The grid's margin is fixed at construction and the default margin depends on the bodies.
   grid_ = broadphase::HashGrid({.margin = margin()});
@@ -64,10 +65,16 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
   // "Only what the scene needs": without contacts (or with nothing to collide with) the
   // integrator runs without a hook, so no broad or narrow phase is ever called.
   dynamics::VelocityHook hook;
-  if (settings_.contact && size() > 1)
+  if (settings_.contact && size() > 1) {
+    const double substep = window / std::max(1.0, std::round(window / settings_.dt));
+    const double gain = settings_.body_forces.gravity ? settings_.body_forces.g.norm() * window : 0.0;
+    const auto risks = tunnelling_risks(tunnelling_.thinnest(), states_, inertias_, substep, margin(), gain);
+    report.tunnelling_bodies = risks.size();
+    tunnelling_.warn(risks, substep);
     hook = [&](double h, std::span<dynamics::BodyState> states) { resolve_contacts(h, states, report); };
-  else
+  } else {
     hook = [&](double, std::span<dynamics::BodyState>) { ++report.substeps; };
+  }
   dynamics::advance(states_, inertias_, external, time_, time_ + window, integrator, hook);
   time_ += window;
   report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "rigidbody/broadphase/hash_grid.hpp"
@@ -15,6 +16,7 @@
 #include "rigidbody/world/materials.hpp"
 #include "rigidbody/world/report.hpp"
 #include "rigidbody/world/settings.hpp"
+#include "rigidbody/world/tunnelling.hpp"
 
 namespace cosim::world {
 
@@ -25,6 +27,7 @@ struct BodyDesc {
   BodyMaterial material{};
   bool fixed = false;    // never moves (half-spaces must be fixed)
   bool rotates = true;   // false: translation only
+  std::string name{};    // for warnings only
 };
 
 class World {
@@ -61,6 +64,7 @@ class World {
   std::vector<dynamics::BodyState> states_;
   std::vector<dynamics::BodyInertia> inertias_;
   std::vector<BodyMaterial> materials_;
+  TunnellingWarnings tunnelling_;
   double smallest_radius_ = 0.0;  // of the bounded bodies, for the default margin
 
   broadphase::HashGrid grid_;

@@ -1,11 +1,11 @@
 // The real programs: `cosim run` starting only cosim-rigidbody, and the standalone mode.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 
 #include "cosim_process.hpp"
 #include "h5_read.hpp"
+#include "standalone_run.hpp"
 
 namespace cosim::testing {
 namespace {
@@ -25,13 +25,6 @@ const std::string sphere_on_plane =
     "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2500}, position: [0, 0, 0.3]}\n"
     "participants:\n"
     "  rigidbody: {dt: 1.0e-3}\n";
-
-int run_standalone(const fs::path& scene, const fs::path& out) {
-  const auto program = fs::read_symlink("/proc/self/exe").parent_path() / "cosim-rigidbody";
-  const auto command = program.string() + " --standalone " + scene.string() + " -o " + out.string() + " > /dev/null 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 TEST(RigidProgram, CoupledAndStandaloneRestTheSphereAtItsRadius) {
   const auto dir = scratch_dir("sphere_on_plane");

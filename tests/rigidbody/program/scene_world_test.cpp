@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "cosim_process.hpp"
 #include "rigidbody/program/scene_world.hpp"
@@ -121,6 +122,59 @@ TEST(SceneWorld, EffectsSwitchGravityContactAndFriction) {
   const auto frictionless = scene::load_scene_from_string(scene_text("[gravity, contact]", rough));
   EXPECT_EQ(body_of(frictionless.bodies[0], false).material.friction, 0.0);
   EXPECT_EQ(body_of(frictionless.bodies[0], true).material.friction, 0.4);
+}
+
+TEST(SceneWorld, DemOptionsReachTheSettings) {
+  const auto scene = scene::load_scene_from_string(
+      scene_text("[gravity]", ball, "{solver: dem, dem_law: hertz, normal_stiffness: 2.0e6}"));
+  const auto s = settings_of(scene);
+  EXPECT_EQ(s.solver, world::SolverKind::dem);
+  EXPECT_EQ(s.dem.law, solver::NormalLaw::hertz);
+  EXPECT_EQ(s.dem.normal_stiffness, 2e6);
+  EXPECT_EQ(settings_of(scene::load_scene_from_string(scene_text("[gravity]", ball))).dem.law, solver::NormalLaw::linear);
+}
+
+// The error names file, line, key and value, as every scene error does.
+scene::SceneError error_of(const std::string& options, const std::string& bodies = ball) {
+  const auto scene = scene::load_scene_from_string(scene_text("[gravity]", bodies, options), "scene.yaml");
+  try {
+    make_world(scene);
+  } catch (const scene::SceneError& e) {
+    return e;
+  }
+  throw std::logic_error("no error for options " + options);
+}
+
+TEST(SceneWorld, BadDemOptionsAreNamed) {
+  const auto law = error_of("{dem_law: cubic}");
+  EXPECT_EQ(law.key, "participants.rigidbody.options.dem_law");
+  EXPECT_EQ(law.value, "cubic");
+  EXPECT_EQ(law.line, 8);  // the options line
+  EXPECT_NE(std::string(law.what()).find("scene.yaml:8: participants.rigidbody.options.dem_law = cubic: "),
+            std::string::npos) << law.what();
+  const auto k = error_of("{normal_stiffness: -1}");
+  EXPECT_EQ(k.key, "participants.rigidbody.options.normal_stiffness");
+  EXPECT_EQ(k.value, "-1");
+}
+
+const std::string gem_and_ball =
+    ball + "  - {name: gem, shape: {type: mesh, file: " COSIM_CONFIGS_DIR "/meshes/icosahedron.obj}, material: {density: 1000}, position: [1, 0, 1]}\n";
+
+TEST(SceneWorld, ConvexHullsTurnMeshBodiesIntoHulls) {
+  const auto mesh = make_world(scene::load_scene_from_string(scene_text("[gravity]", gem_and_ball)));
+  const auto hull = make_world(scene::load_scene_from_string(scene_text("[gravity]", gem_and_ball, "{convex_hulls: [gem]}")));
+  EXPECT_EQ(geometry::kind(mesh->shape(1)), geometry::ShapeKind::TriangleMesh);
+  EXPECT_EQ(geometry::kind(hull->shape(1)), geometry::ShapeKind::ConvexHull);
+  // A convex mesh and its hull are the same solid, at the same place.
+  EXPECT_NEAR(mass(*hull, 1), mass(*mesh, 1), 1e-9 * mass(*mesh, 1));
+  EXPECT_NEAR((hull->states()[1].position - mesh->states()[1].position).norm(), 0.0, 1e-12);
+}
+
+TEST(SceneWorld, ConvexHullsOfNonMeshesAreNamed) {
+  const auto e = error_of("{convex_hulls: [gem, ball]}", gem_and_ball);
+  EXPECT_EQ(e.key, "participants.rigidbody.options.convex_hulls[1]");
+  EXPECT_EQ(e.value, "ball");
+  EXPECT_NE(std::string(e.what()).find("gem"), std::string::npos) << e.what();  // the meshes it could name
 }
 
 }  // namespace

@@ -1,0 +1,59 @@
+// Which bodies move so far in one substep that contacts can miss them. Speculative contacts
+// only see gaps below the contact margin, and a body that enters another by more than half
+// its own thickness may be pushed out through the far side; both let a fast body pass
+// through a thin one. The check is a pure function; TunnellingWarnings logs its findings.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rigidbody/dynamics/body.hpp"
+#include "rigidbody/geometry/shape.hpp"
+
+namespace cosim::world {
+
+struct TunnellingRisk {
+  std::uint32_t body = 0;
+  double travel = 0.0;    // largest distance per substep: (|v| + speed_gain) dt [m]
+  double thinnest = 0.0;  // the body's thinnest extent [m]
+  double margin = 0.0;    // the contact margin [m]
+};
+
+// Width of the shape along its thinnest body axis, or across its thinnest face for a convex
+// hull; +infinity for a half-space. Exact for every analytic shape.
+double thinnest_extent(const geometry::Shape& shape);
+
+// Bodies (not fixed) whose travel in one substep of `dt` exceeds the margin or half their
+// thinnest extent (one per body, see thinnest_extent), in body order. `speed_gain` bounds how much faster a body may get during
+// the coming window (|g| times the window under gravity): a falling body is caught before
+// it reaches the speed, not one window later.
+std::vector<TunnellingRisk> tunnelling_risks(std::span<const double> thinnest,
+                                             std::span<const dynamics::BodyState> states,
+                                             std::span<const dynamics::BodyInertia> inertias, double dt,
+                                             double margin, double speed_gain);
+
+// "body 1 (plate) may move 0.0501 m per substep (dt = 0.001 s), more than the contact margin
+// 0.0141 m and half its thinnest extent 0.0025 m: it can pass through thin bodies or
+// planes; lower the rigidbody dt to 4.99e-05 s"
+std::string describe(const TunnellingRisk& risk, const std::string& name, double dt);
+
+// Logs describe() as a spdlog warning the first time each body is at risk, so a run that
+// keeps a body too fast says so once instead of every window; when many bodies are new at
+// once (a granular bed) it names the fastest few and counts the rest.
+class TunnellingWarnings {
+ public:
+  static constexpr std::size_t kNamedPerWindow = 3;
+
+  void add(std::string name, const geometry::Shape& shape);  // one per body, in body order
+  std::span<const double> thinnest() const { return thinnest_; }
+  void warn(std::span<const TunnellingRisk> risks, double dt);
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<double> thinnest_;  // thinnest_extent per body, computed once
+  std::vector<char> warned_;
+};
+
+}  // namespace cosim::world

@@ -1,0 +1,107 @@
+// Tunnelling: which bodies move too far per substep, and what really happens at the
+// scenes' dt (a thin plate thrown at a plane; a fast ball at a thin fixed plate).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "rigidbody/geometry/convex_hull.hpp"
+#include "rigidbody/world/tunnelling.hpp"
+#include "scenes.hpp"
+
+namespace cosim::world::test {
+namespace {
+
+using Eigen::Vector3d;
+
+constexpr double plate_half = 0.0025;  // the 0.2 x 0.2 x 0.005 m plate of configs/rigid_thin_box.yaml
+const Vector3d plate{0.1, 0.1, plate_half};
+
+TEST(Tunnelling, ThinnestExtentOfEveryShape) {
+  EXPECT_DOUBLE_EQ(thinnest_extent(geometry::Sphere(0.1)), 0.2);
+  EXPECT_DOUBLE_EQ(thinnest_extent(geometry::Ellipsoid({0.3, 0.05, 0.2})), 0.1);
+  EXPECT_DOUBLE_EQ(thinnest_extent(geometry::Box(plate)), 2 * plate_half);
+  EXPECT_DOUBLE_EQ(thinnest_extent(geometry::Cylinder(0.1, 0.01)), 0.01);  // a coin
+  EXPECT_DOUBLE_EQ(thinnest_extent(geometry::Cylinder(0.01, 0.5)), 0.02);  // a rod
+  EXPECT_DOUBLE_EQ(thinnest_extent(geometry::Capsule(0.01, 0.5)), 0.02);
+  EXPECT_EQ(thinnest_extent(geometry::HalfSpace(Vector3d::UnitZ())), std::numeric_limits<double>::infinity());
+  // A tilted slab 0.01 thick: its body axes see it thick, its faces see it thin.
+  const Eigen::Quaterniond tilt(Eigen::AngleAxisd(0.5, Vector3d(1, 1, 0).normalized()));
+  std::vector<Vector3d> corners;
+  for (int k = 0; k < 8; ++k)
+    corners.push_back(tilt * Vector3d((k & 1 ? 1 : -1) * 0.2, (k & 2 ? 1 : -1) * 0.2, (k & 4 ? 1 : -1) * 0.005));
+  EXPECT_NEAR(thinnest_extent(geometry::ConvexHull(corners)), 0.01, 1e-12);
+}
+
+TEST(Tunnelling, FlagsBodiesFasterThanTheMarginOrHalfTheirThickness) {
+  const std::vector<double> thinnest{0.2, 2 * plate_half, 0.2, 2 * plate_half};
+  std::vector<dynamics::BodyState> states(4);
+  std::vector<dynamics::BodyInertia> inertias(4, dynamics::BodyInertia::of(1.0, Eigen::Matrix3d::Identity(), true));
+  inertias[3] = {};  // fixed: never at risk, whatever its velocity says
+  const double dt = 1e-3, margin = 0.01;
+  states[0].velocity = {0, 0, -5};    // 5 mm per substep: within both limits
+  states[1].velocity = {0, 0, -5};    // 5 mm > half the plate's 5 mm thickness
+  states[2].velocity = {0, 11, 0};    // 11 mm > the 10 mm margin
+  states[3].velocity = {0, 0, -100};
+  const auto risks = tunnelling_risks(thinnest, states, inertias, dt, margin, 0.0);
+  ASSERT_EQ(risks.size(), 2u);
+  EXPECT_EQ(risks[0].body, 1u);
+  EXPECT_NEAR(risks[0].travel, 5e-3, 1e-15);
+  EXPECT_DOUBLE_EQ(risks[0].thinnest, 2 * plate_half);
+  EXPECT_EQ(risks[1].body, 2u);
+  EXPECT_DOUBLE_EQ(risks[1].margin, margin);
+  // The speed a body may gain in the window counts: the resting ball is caught early.
+  states[0].velocity.setZero();
+  EXPECT_EQ(tunnelling_risks(thinnest, states, inertias, dt, margin, 10.5)[0].body, 0u);
+  const std::string message = describe(risks[0], "plate", dt);
+  EXPECT_NE(message.find("body 1 (plate) may move 0.005 m per substep"), std::string::npos) << message;
+  EXPECT_NE(message.find("half its thinnest extent 0.0025 m"), std::string::npos) << message;
+  EXPECT_EQ(message.find("contact margin"), std::string::npos) << message;
+  EXPECT_NE(message.find("lower the rigidbody dt to 0.0005 s"), std::string::npos) << message;
+}
+
+// configs/rigid_thin_box.yaml: the plate moves 0.05 m per substep, ten times its thickness
+// and over three times the default margin. The world flags it, but a half-space reports
+// any depth with the right normal, so the plate cannot pass through the plane: it lands
+// and rests on it.
+TEST(Tunnelling, ThinPlateAt50MetresPerSecondStopsOnAPlane) {
+  World world;  // dt 1e-3, default margin: a tenth of the plate's bounding radius
+  add_ground(world);
+  const auto b = add_box(world, plate, {0, 0, 0.1});
+  world.states()[b].velocity = {0, 0, -50};
+  EXPECT_EQ(world.advance(0.01).tunnelling_bodies, 1u);
+  for (int window = 1; window < 50; ++window) {
+    world.advance(0.01);
+    ASSERT_GT(world.states()[b].position.z(), 0.0) << "window " << window;
+  }
+  EXPECT_NEAR(world.states()[b].position.z(), plate_half, 0.01 * plate_half);
+  EXPECT_LT(world.states()[b].velocity.norm(), 1e-3);
+}
+
+// A ball at 50 m/s against a fixed 5 mm plate: at dt 1e-3 it jumps the plate between two
+// substeps without a contact. The check flags it; at the dt the warning asks for, the ball
+// is caught by a speculative contact and bounces back.
+TEST(Tunnelling, BallThroughAThinPlateIsFlaggedAndStopsAtTheSuggestedDt) {
+  constexpr double r = 0.02, v = 50.0;
+  const auto shoot = [&](double dt) {
+    World world({.dt = dt, .body_forces = {.gravity = false}});
+    world.add({.shape = geometry::Box(plate), .fixed = true});
+    const auto ball = add_sphere(world, r, {0, 0, 0.125}, {.restitution = 1.0});
+    world.states()[ball].velocity = {0, 0, -v};
+    const auto report = world.advance(0.004);
+    return std::pair{report, world.states()[ball]};
+  };
+  const auto [fast, through] = shoot(1e-3);
+  EXPECT_EQ(fast.tunnelling_bodies, 1u);
+  EXPECT_LT(through.position.z(), -0.05);  // sampled at z = 0.025 and -0.025: never within the margin
+  EXPECT_DOUBLE_EQ(through.velocity.z(), -v);
+
+  const double margin = 0.1 * r;  // the default: a tenth of the ball's bounding radius
+  const auto [slow, bounced] = shoot(0.99 * margin / v);
+  EXPECT_EQ(slow.tunnelling_bodies, 0u);
+  EXPECT_GT(bounced.position.z(), plate_half + r);
+  EXPECT_NEAR(bounced.velocity.z(), v, 1e-6 * v);
+}
+
+}  // namespace
+}  // namespace cosim::world::test
