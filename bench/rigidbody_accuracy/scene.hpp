@@ -1,0 +1,25 @@
+// The two benchmark scenes. A builder fills an empty World and says in which length its
+// errors are measured and how long it runs.
+#pragma once
+
+#include <string>
+
+#include "rigidbody/world/world.hpp"
+
+namespace cosim::bench {
+
+struct Scene {
+  std::string name;
+  double size = 0.0;      // sphere radius or box half size: the unit of every length error
+  double duration = 0.0;  // simulated seconds
+  bool at_rest = false;   // the exact answer is the start state (nothing should move)
+};
+
+// 91 spheres (square layers 6x6 ... 1) with friction 0.5 on a fixed 7x7 layer of spheres
+// on a fixed floor, a 1e-3 r gap between all of them, settling under gravity for 1 s.
+Scene build_pyramid(world::World& world);
+
+// Ten 0.2 m boxes with friction 0.5 exactly touching on a fixed floor, for 2 s.
+Scene build_box_stack(world::World& world);
+
+}  // namespace cosim::bench
