@@ -1,0 +1,209 @@
+#include "fluid/navier_stokes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "fluid/convection.hpp"
+#include "fluid/mac_operators.hpp"
+#include "fluid/petsc_check.hpp"
+#include "fluid/viscous_cross_terms.hpp"
+#include "fluid/viscous_stencil.hpp"
+
+namespace cosim::fluid {
+
+namespace {
+
+// Checked before any member is built from them.
+const BoundaryConditions& checked(const BoundaryConditions& bc, const FluidProperties& fluid) {
+  if (!(fluid.density > 0)) throw std::invalid_argument("fluid: density must be > 0");
+  bool inflow = false;
+  for (int d = 0; d < 3; ++d)
+    for (Side s : {Side::lower, Side::upper}) inflow = inflow || bc.at(d, s).kind == BoundaryKind::inflow;
+  if (inflow && !bc.has_outflow())
+    throw std::invalid_argument(
+        "boundary conditions: fluid entering through an inflow face needs an outflow face");
+  return bc;
+}
+
+// Events for -log_view: where a step spends its time besides the KSP solves PETSc logs itself.
+struct LogEvents {
+  PetscLogEvent convection_and_rhs, projection;
+};
+
+const LogEvents& log_events() {
+  static const LogEvents events = [] {
+    PetscClassId id;
+    LogEvents e{};
+    COSIM_PETSC(PetscClassIdRegister("cosim fluid", &id));
+    COSIM_PETSC(PetscLogEventRegister("FluidMomentumRHS", id, &e.convection_and_rhs));
+    COSIM_PETSC(PetscLogEventRegister("FluidProjection", id, &e.projection));
+    return e;
+  }();
+  return events;
+}
+
+}  // namespace
+
+NavierStokes::NavierStokes(const Grid& grid, const BoundaryConditions& bc, FluidProperties fluid,
+                           TimeStepOptions steps)
+    : grid_(grid),
+      bc_(checked(bc, fluid)),
+      fluid_(fluid),
+      controller_(steps),
+      local_(grid),
+      viscosity_(grid, fluid.viscosity, fluid.density),
+      viscous_(grid, bc),
+      pressure_solver_(grid, bc) {
+  for (int c = 0; c < 3; ++c)
+    for (Vec* v : {&u_[c], &rhs_[c], &convection_[c], &previous_convection_[c]})
+      COSIM_PETSC(DMCreateGlobalVector(grid.velocity_dm(c), v));
+  COSIM_PETSC(DMCreateGlobalVector(grid.pressure_dm(), &p_));
+  COSIM_PETSC(DMCreateGlobalVector(grid.pressure_dm(), &phi_));
+  COSIM_PETSC(DMCreateLocalVector(grid.pressure_dm(), &p_local_));
+}
+
+NavierStokes::~NavierStokes() {
+  for (int c = 0; c < 3; ++c)
+    for (Vec* v : {&u_[c], &rhs_[c], &convection_[c], &previous_convection_[c]}) VecDestroy(v);
+  VecDestroy(&p_);
+  VecDestroy(&phi_);
+  VecDestroy(&p_local_);
+}
+
+double NavierStokes::boundary_value(int c, const Index& p, double t) const {
+  const Side side = p[c] == 0 ? Side::lower : Side::upper;
+  if (bc_.at(c, side).kind == BoundaryKind::outflow) return 0;
+  return bc_.velocity(c, side, grid_.position(c, p), t)[c];
+}
+
+void NavierStokes::set_velocity(const std::function<Point(const Point&)>& u0) {
+  for (int c = 0; c < 3; ++c) {
+    DM dm = grid_.velocity_dm(c);
+    PetscScalar*** u = nullptr;
+    COSIM_PETSC(DMDAVecGetArray(dm, u_[c], &u));
+    for_each_index(grid_.owned(dm), [&](const Index& p) {
+      const bool imposed = grid_.on_boundary(c, p) &&
+                           bc_.at(c, p[c] == 0 ? Side::lower : Side::upper).kind != BoundaryKind::outflow;
+      u[p[2]][p[1]][p[0]] = imposed ? boundary_value(c, p, time_) : u0(grid_.position(c, p))[c];
+    });
+    COSIM_PETSC(DMDAVecRestoreArray(dm, u_[c], &u));
+  }
+  previous_dt_ = 0;
+}
+
+double NavierStokes::stable_dt() {
+  local_.update(u_, bc_, time_);
+  return controller_.next(convective_rate(grid_, local_), previous_dt_);
+}
+
+StepReport NavierStokes::step() { return step(stable_dt()); }
+
+StepReport NavierStokes::step(double dt) {
+  if (!(dt > 0)) throw std::invalid_argument("fluid step: dt must be > 0");
+  report_ = {};
+  local_.update(u_, bc_, time_);
+  viscosity_.update(local_);
+  predict(dt);
+  project(dt);
+  std::swap(convection_, previous_convection_);
+  previous_dt_ = dt;
+  time_ += dt;
+  local_.update(u_, bc_, time_);
+  report_.time = time_;
+  report_.dt = dt;
+  report_.max_divergence = max_divergence(grid_, local_);
+  return report_;
+}
+
+std::vector<StepReport> NavierStokes::advance_to(double t_end) {
+  std::vector<StepReport> reports;
+  const double eps = 1e-12 * std::max(1.0, std::abs(t_end));
+  while (time_ < t_end - eps) {
+    double dt = stable_dt();
+    const double remaining = t_end - time_;
+    if (dt >= remaining)
+      dt = remaining;
+    else if (2 * dt > remaining)
+      dt = remaining / 2;
+    reports.push_back(step(dt));
+  }
+  time_ = std::max(time_, t_end);
+  return reports;
+}
+
+// Momentum with the old pressure gradient, convection extrapolated, viscosity implicit.
+void NavierStokes::predict(double dt) {
+  const double t = time_, t_next = time_ + dt;
+  const double theta = controller_.options().theta;
+  const bool have_history = previous_dt_ > 0;
+  const double ratio = have_history ? dt / previous_dt_ : 0;
+  DM pdm = grid_.pressure_dm();
+  COSIM_PETSC(DMGlobalToLocalBegin(pdm, p_, INSERT_VALUES, p_local_));
+  COSIM_PETSC(DMGlobalToLocalEnd(pdm, p_, INSERT_VALUES, p_local_));
+  const PetscScalar*** p_old = nullptr;
+  COSIM_PETSC(PetscLogEventBegin(log_events().convection_and_rhs, 0, 0, 0, 0));
+  COSIM_PETSC(DMDAVecGetArrayRead(pdm, p_local_, &p_old));
+  for (int c = 0; c < 3; ++c) {
+    DM dm = grid_.velocity_dm(c);
+    PetscScalar ***n_new = nullptr, ***rhs = nullptr;
+    const PetscScalar*** n_old = nullptr;
+    COSIM_PETSC(DMDAVecGetArray(dm, convection_[c], &n_new));
+    COSIM_PETSC(DMDAVecGetArrayRead(dm, previous_convection_[c], &n_old));
+    COSIM_PETSC(DMDAVecGetArray(dm, rhs_[c], &rhs));
+    for_each_index(grid_.owned(dm), [&](const Index& p) {
+      auto& out = rhs[p[2]][p[1]][p[0]];
+      auto& conv = n_new[p[2]][p[1]][p[0]];
+      if (grid_.on_boundary(c, p)) {
+        out = boundary_value(c, p, t_next);
+        conv = 0;
+        return;
+      }
+      conv = convection(grid_, local_, c, p);
+      if (!viscosity_.uniform()) conv -= viscous_cross_terms(grid_, local_, viscosity_, c, p);
+      const double extrapolated =
+          have_history ? (1 + ratio / 2) * conv - (ratio / 2) * n_old[p[2]][p[1]][p[0]] : conv;
+      const Stencil now = viscous_stencil(grid_, bc_, viscosity_, c, p, t);
+      double viscous = now.constant;
+      for (int e = 0; e < now.size; ++e)
+        viscous += now.entries[static_cast<std::size_t>(e)].weight *
+                   local_(c, now.entries[static_cast<std::size_t>(e)].at);
+      const double next_boundary = viscous_stencil(grid_, bc_, viscosity_, c, p, t_next).constant;
+      const double pressure_gradient = face_gradient(grid_, bc_, p_old, c, p) / fluid_.density;
+      out = local_(c, p) + dt * (-extrapolated + (1 - theta) * viscous + theta * next_boundary +
+                                 fluid_.body_force[c] - pressure_gradient);
+    });
+    COSIM_PETSC(DMDAVecRestoreArray(dm, rhs_[c], &rhs));
+    COSIM_PETSC(DMDAVecRestoreArrayRead(dm, previous_convection_[c], &n_old));
+    COSIM_PETSC(DMDAVecRestoreArray(dm, convection_[c], &n_new));
+  }
+  COSIM_PETSC(DMDAVecRestoreArrayRead(pdm, p_local_, &p_old));
+  COSIM_PETSC(PetscLogEventEnd(log_events().convection_and_rhs, 0, 0, 0, 0));
+  for (int c = 0; c < 3; ++c)
+    report_.viscous_iterations[c] = viscous_.solve(c, theta * dt, viscosity_, rhs_[c], u_[c]);
+}
+
+void NavierStokes::project(double dt) {
+  COSIM_PETSC(PetscLogEventBegin(log_events().projection, 0, 0, 0, 0));
+  local_.update(u_, bc_, time_ + dt);
+  report_.pressure_iterations = pressure_solver_.solve(local_, dt, phi_);
+  DM pdm = grid_.pressure_dm();
+  COSIM_PETSC(DMGlobalToLocalBegin(pdm, phi_, INSERT_VALUES, p_local_));
+  COSIM_PETSC(DMGlobalToLocalEnd(pdm, phi_, INSERT_VALUES, p_local_));
+  const PetscScalar*** phi = nullptr;
+  COSIM_PETSC(DMDAVecGetArrayRead(pdm, p_local_, &phi));
+  for (int c = 0; c < 3; ++c) {
+    DM dm = grid_.velocity_dm(c);
+    PetscScalar*** u = nullptr;
+    COSIM_PETSC(DMDAVecGetArray(dm, u_[c], &u));
+    for_each_index(grid_.owned(dm),
+                   [&](const Index& p) { u[p[2]][p[1]][p[0]] -= dt * face_gradient(grid_, bc_, phi, c, p); });
+    COSIM_PETSC(DMDAVecRestoreArray(dm, u_[c], &u));
+  }
+  COSIM_PETSC(DMDAVecRestoreArrayRead(pdm, p_local_, &phi));
+  COSIM_PETSC(VecAXPY(p_, fluid_.density, phi_));
+  COSIM_PETSC(PetscLogEventEnd(log_events().projection, 0, 0, 0, 0));
+}
+
+}  // namespace cosim::fluid

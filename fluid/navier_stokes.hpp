@@ -1,0 +1,85 @@
+#pragma once
+// Incompressible Navier-Stokes on the MAC grid by incremental pressure correction:
+//   (u* - u^n)/dt + AB2[div(u u)] = -grad(p^{n-1/2})/rho + nu/2 lap(u* + u^n) + f
+//   div grad(phi) = div(u*)/dt,  u^{n+1} = u* - dt grad(phi),  p^{n+1/2} = p^{n-1/2} + rho phi
+// Convection explicit (variable-step Adams-Bashforth 2, Euler on the first step),
+// viscosity implicit (Crank-Nicolson): second order in time for the velocity. A
+// generalized-Newtonian viscosity is evaluated from u^n (lagged, so first order in time
+// there), and the stress terms the implicit operator leaves out go with the convection.
+#include <petscvec.h>
+
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "fluid/boundary_conditions.hpp"
+#include "fluid/grid.hpp"
+#include "fluid/local_velocity.hpp"
+#include "fluid/pressure_solver.hpp"
+#include "fluid/time_step_controller.hpp"
+#include "fluid/viscosity_field.hpp"
+#include "fluid/viscosity_model.hpp"
+#include "fluid/viscous_solver.hpp"
+
+namespace cosim::fluid {
+
+struct FluidProperties {
+  double density = 1;                                       // kg/m^3
+  ViscosityModel viscosity = ViscosityModel::newtonian(1);  // dynamic, Pa s
+  Point body_force{};  // acceleration, m/s^2 (gravity, or a driving pressure gradient / density)
+};
+
+struct StepReport {
+  double time = 0;  // at the end of the step
+  double dt = 0;
+  double max_divergence = 0;  // after the projection, 1/s
+  int pressure_iterations = 0;
+  std::array<int, 3> viscous_iterations{};
+};
+
+class NavierStokes {
+ public:
+  // grid and bc must outlive the solver.
+  NavierStokes(const Grid& grid, const BoundaryConditions& bc, FluidProperties fluid, TimeStepOptions steps);
+  ~NavierStokes();
+  NavierStokes(const NavierStokes&) = delete;
+  NavierStokes& operator=(const NavierStokes&) = delete;
+
+  // Initial velocity (each component sampled at its faces; imposed boundary values win).
+  void set_velocity(const std::function<Point(const Point&)>& u0);
+
+  double stable_dt();          // from the CFL target and the controller's limits
+  StepReport step();           // one step of stable_dt()
+  StepReport step(double dt);  // one step of a given size
+  // Steps to exactly t_end, shortening the last two steps rather than leaving a sliver.
+  std::vector<StepReport> advance_to(double t_end);
+
+  double time() const { return time_; }
+  const Grid& grid() const { return grid_; }
+  // Global vectors of the component DMs / the pressure DM; the FBM writes rigid-body
+  // velocities into these faces and reads sigma from them.
+  Vec velocity(int c) const { return u_[static_cast<std::size_t>(c)]; }
+  Vec pressure() const { return p_; }
+
+ private:
+  void predict(double dt);
+  void project(double dt);
+  double boundary_value(int c, const Index& p, double t) const;
+
+  const Grid& grid_;
+  const BoundaryConditions& bc_;
+  FluidProperties fluid_;
+  TimeStepController controller_;
+  LocalVelocity local_;
+  ViscosityField viscosity_;
+  ViscousSolver viscous_;
+  PressureSolver pressure_solver_;
+  // convection_ holds the explicitly extrapolated terms (convection and cross stresses).
+  std::array<Vec, 3> u_{}, rhs_{}, convection_{}, previous_convection_{};
+  Vec p_ = nullptr, phi_ = nullptr, p_local_ = nullptr;
+  double time_ = 0;
+  double previous_dt_ = 0;  // 0: no convection history yet
+  StepReport report_;
+};
+
+}  // namespace cosim::fluid

@@ -1,0 +1,37 @@
+#pragma once
+// The pressure-correction Poisson equation div(grad phi) = div(u*)/dt on the cell-centred
+// DMDA. KSP options prefix `pressure_`: the defaults (CG + GAMG) can be replaced with any
+// -pressure_ksp_* / -pressure_pc_* flags, e.g. geometric multigrid on the DMDA hierarchy
+// with -pressure_pc_type mg -pressure_pc_mg_levels 3 -pressure_pc_mg_galerkin pmat.
+#include <petscksp.h>
+
+#include "fluid/boundary_conditions.hpp"
+#include "fluid/grid.hpp"
+#include "fluid/local_velocity.hpp"
+
+namespace cosim::fluid {
+
+class PressureSolver {
+ public:
+  PressureSolver(const Grid& grid, const BoundaryConditions& bc);
+  ~PressureSolver();
+  PressureSolver(const PressureSolver&) = delete;
+  PressureSolver& operator=(const PressureSolver&) = delete;
+
+  // Solves for the correction phi (global vector of the pressure DM) that makes
+  // u* - dt grad(phi) divergence-free; returns the number of Krylov iterations.
+  int solve(const LocalVelocity& u_star, double dt, Vec phi);
+
+ private:
+  void create();
+  void release();
+  static PetscErrorCode compute_operator(KSP ksp, Mat A, Mat P, void* self);
+
+  const Grid& grid_;
+  const BoundaryConditions& bc_;
+  KSP ksp_ = nullptr;
+  Vec rhs_ = nullptr;
+  MatNullSpace constants_ = nullptr;  // only when no outflow pins the pressure level
+};
+
+}  // namespace cosim::fluid

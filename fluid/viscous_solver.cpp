@@ -1,0 +1,78 @@
+#include "fluid/viscous_solver.hpp"
+
+#include <string>
+
+#include "fluid/petsc_check.hpp"
+#include "fluid/viscous_stencil.hpp"
+
+namespace cosim::fluid {
+
+ViscousSolver::ViscousSolver(const Grid& grid, const BoundaryConditions& bc) : grid_(grid), bc_(bc) {
+  // A bad -viscous_* option fails here.
+  create_or_release([this] { create(); }, [this] { release(); });
+}
+
+void ViscousSolver::create() {
+  const Grid& grid = grid_;
+  for (int c = 0; c < 3; ++c) {
+    COSIM_PETSC(DMCreateMatrix(grid.velocity_dm(c), &matrix_[c]));
+    COSIM_PETSC(KSPCreate(grid.comm(), &ksp_[c]));
+    COSIM_PETSC(KSPSetOptionsPrefix(ksp_[c], "viscous_"));
+    COSIM_PETSC(KSPSetType(ksp_[c], KSPGMRES));
+    COSIM_PETSC(KSPSetTolerances(ksp_[c], 1e-10, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
+    // The previous step's velocity is a good first guess.
+    COSIM_PETSC(KSPSetInitialGuessNonzero(ksp_[c], PETSC_TRUE));
+    COSIM_PETSC(KSPSetFromOptions(ksp_[c]));
+  }
+}
+
+ViscousSolver::~ViscousSolver() { release(); }
+
+void ViscousSolver::release() {
+  for (int c = 0; c < 3; ++c) {
+    KSPDestroy(&ksp_[c]);
+    MatDestroy(&matrix_[c]);
+  }
+}
+
+void ViscousSolver::assemble(int c, double s, const ViscosityField& nu) {
+  Mat A = matrix_[c];
+  COSIM_PETSC(MatZeroEntries(A));
+  for_each_index(grid_.owned(grid_.velocity_dm(c)), [&](const Index& p) {
+    MatStencil row{p[2], p[1], p[0], 0};
+    MatStencil cols[13];
+    PetscScalar vals[13];
+    int n = 0;
+    if (grid_.on_boundary(c, p)) {
+      const bool lower = p[c] == 0;
+      cols[n] = row;
+      vals[n++] = 1;
+      if (bc_.at(c, lower ? Side::lower : Side::upper).kind == BoundaryKind::outflow) {
+        const Index inside = shifted(p, c, lower ? 1 : -1);
+        cols[n] = {inside[2], inside[1], inside[0], 0};
+        vals[n++] = -1;
+      }
+    } else {
+      const Stencil st = viscous_stencil(grid_, bc_, nu, c, p, 0.0);
+      for (int e = 0; e < st.size; ++e) {
+        const Index& at = st.entries[static_cast<std::size_t>(e)].at;
+        cols[n] = {at[2], at[1], at[0], 0};
+        vals[n++] = -s * st.entries[static_cast<std::size_t>(e)].weight;
+      }
+      cols[n] = row;
+      vals[n++] = 1;
+    }
+    COSIM_PETSC(MatSetValuesStencil(A, 1, &row, n, cols, vals, ADD_VALUES));
+  });
+  COSIM_PETSC(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+  COSIM_PETSC(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+  COSIM_PETSC(KSPSetOperators(ksp_[c], A, A));
+  assembled_for_[c] = s;
+}
+
+int ViscousSolver::solve(int c, double s, const ViscosityField& nu, Vec rhs, Vec x) {
+  if (s != assembled_for_[c] || !nu.uniform()) assemble(c, s, nu);
+  return solve_or_throw(ksp_[c], rhs, x, "viscous solve for velocity component " + std::to_string(c));
+}
+
+}  // namespace cosim::fluid
