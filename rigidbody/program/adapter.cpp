@@ -55,32 +55,38 @@ participant::Outputs RigidSolver::initialise(const scene::Scene& scene, const st
   // coupler's are not needed; a resumed run brings its own state.
   scene_ = scene;
   world_ = make_world(scene_);
-  time_ = 0.0;
   if (!state.empty()) restore(state);
   return {poses(), {}, 0};
 }
 
 participant::Outputs RigidSolver::advance(const participant::Window& w, const participant::Inputs& in) {
   const auto external = wrenches(in, world_->size());
+  world_->set_time(w.t0);
   const auto report = world_->advance(w.t1 - w.t0, external);
-  time_ = w.t1;
   return {poses(), {}, static_cast<double>(report.substeps)};
 }
 
 std::vector<double> RigidSolver::state() const {
-  std::vector<double> s{time_};
+  std::vector<double> s{world_->time()};
   const auto p = poses();
   s.insert(s.end(), p.begin(), p.end());
+  world_->contact_memory().save(s);
   return s;
 }
 
 void RigidSolver::restore(const std::vector<double>& state) {
   const std::size_t bodies = scene_.bodies.size();
-  if (state.size() != 1 + kPoseWidth * bodies)
-    throw std::runtime_error("restart state has " + std::to_string(state.size()) + " values, expected " +
-                             std::to_string(1 + kPoseWidth * bodies));
-  world_ = make_world(scene_);
-  time_ = state[0];
+  const std::size_t fixed_part = 1 + kPoseWidth * bodies;
+  if (state.size() < fixed_part)
+    throw std::runtime_error("restart state has " + std::to_string(state.size()) + " values, expected at least " +
+                             std::to_string(fixed_part));
+  try {
+    world_->contact_memory().load(std::span(state).subspan(fixed_part));
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(std::string("restart state: ") + e.what());
+  }
+  // The world itself is kept: everything else in it is rebuilt every substep.
+  world_->set_time(state[0]);
   for (std::size_t b = 0; b < bodies; ++b) world_->states()[b] = read(state.data() + 1 + kPoseWidth * b);
 }
 

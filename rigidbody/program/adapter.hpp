@@ -15,9 +15,9 @@ class RigidSolver final : public participant::Solver {
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
                                   const std::vector<double>& poses, const std::vector<double>& state) override;
   participant::Outputs advance(const participant::Window& w, const participant::Inputs& in) override;
-  // [time, then per body its 13 pose values (protocol::kPoseWidth)]. Restoring rebuilds the world, which drops the
-  // contact graph and its warm-start impulses: the first substep after a rollback starts
-  // the solver cold, so it is not bit-identical to a run that never rolled back.
+  // [time, per body its 13 pose values (protocol::kPoseWidth), then the contact memory
+  // (solver::ContactMemory::save)]: everything a substep carries to the next, so a rollback
+  // repeats the windows bit for bit, warm starts included.
   std::vector<double> state() const override;
   void restore(const std::vector<double>& state) override;
 
@@ -28,7 +28,6 @@ class RigidSolver final : public participant::Solver {
 
   scene::Scene scene_;
   std::unique_ptr<world::World> world_;
-  double time_ = 0.0;  // absolute; the world's own clock restarts at a restore
 };
 
 }  // namespace cosim::program

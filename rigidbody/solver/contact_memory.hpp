@@ -35,6 +35,14 @@ class ContactMemory {
   void clear();
   std::size_t size() const { return entries_.size(); }  // points remembered
 
+  // As doubles, for a participant's saved state (a rollback then warm-starts exactly like
+  // the run it repeats): appends [pairs, points, (a, b, count) per pair, (feature, normal,
+  // tangential) per point]; every integer is exact in a double.
+  void save(std::vector<double>& out) const;
+  // Reads what save() wrote, which must be all of `in`. Throws std::invalid_argument for
+  // anything else, leaving the memory as it was.
+  void load(std::span<const double> in);
+
  private:
   struct Entry {
     std::uint32_t feature;

@@ -33,6 +33,9 @@ class ContactGraph {
   std::span<solver::CachedContact> recall();
   // Keeps the solved values for the next substep.
   void remember() { memory_.remember(contacts_, values_); }
+  // All the graph carries from one substep to the next (edges and contacts are rebuilt).
+  solver::ContactMemory& memory() { return memory_; }
+  const solver::ContactMemory& memory() const { return memory_; }
 
  private:
   std::vector<broadphase::Pair> edges_;  // sorted

@@ -45,12 +45,18 @@ class World {
 
   std::size_t size() const { return states_.size(); }
   double time() const { return time_; }
+  // A coupled run sets the clock to each window's start: the substep length follows from
+  // (t + window) - t in floating point, so a repeated window must start from the same t.
+  void set_time(double t) { time_ = t; }
   const Settings& settings() const { return settings_; }
   std::span<dynamics::BodyState> states() { return states_; }
   std::span<const dynamics::BodyState> states() const { return states_; }
   std::span<const dynamics::BodyInertia> inertias() const { return inertias_; }
   const geometry::Shape& shape(std::uint32_t i) const { return shapes_[i]; }
   const ContactGraph& graph() const { return graph_; }
+  // Besides the body states, the only thing a substep carries to the next: a rollback that
+  // restores both repeats the steps bit for bit.
+  solver::ContactMemory& contact_memory() { return graph_.memory(); }
 
  private:
   // The contact part of one substep (step.cpp), run between the velocity and the position

@@ -1,0 +1,37 @@
+#include <malloc.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+
+#include "result.hpp"
+#include "rigidbody/broadphase/hash_grid.hpp"
+
+namespace cosim::bench {
+
+double max_penetration(const std::vector<Eigen::Vector3d>& centres, double radius, double half_width) {
+  std::vector<broadphase::Object> objects;
+  objects.reserve(centres.size());
+  for (std::size_t i = 0; i < centres.size(); ++i)
+    objects.push_back({.id = static_cast<broadphase::Id>(i), .centre = centres[i], .radius = radius});
+  broadphase::HashGrid grid;
+  grid.update(objects);
+  std::vector<broadphase::Pair> pairs;
+  grid.find_pairs(pairs);
+  double deepest = 0.0;
+  for (const auto& [a, b] : pairs) deepest = std::max(deepest, 2 * radius - (centres[a] - centres[b]).norm());
+  for (const Eigen::Vector3d& c : centres) {
+    const double walls = std::min({c.z(), half_width - std::abs(c.x()), half_width - std::abs(c.y())});
+    deepest = std::max(deepest, radius - walls);
+  }
+  return deepest;
+}
+
+double heap_in_use() { return static_cast<double>(mallinfo2().uordblks); }
+
+double peak_rss() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return 1024.0 * static_cast<double>(usage.ru_maxrss);
+}
+
+}  // namespace cosim::bench
