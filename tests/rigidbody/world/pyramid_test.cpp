@@ -13,15 +13,16 @@ TEST(Pyramid, SpheresSettleWithoutPenetrationOrEnergyGain) {
   World world;
   const BodyMaterial rough{.friction = 0.6};
   add_ground(world, rough);
-  // A square pyramid 3x3, 2x2, 1 (14 spheres), each layer in the hollows of the one below,
-  // dropped from a small gap so every contact closes during the run.
-  for (int layer = 0; layer < 3; ++layer) {
-    const int n = 3 - layer;
+  // The 100 spheres: layers 8x5, 7x4, 6x3, 5x2, 4x1, each in the hollows of the
+  // one below, dropped from a small gap so every contact closes during the run. Spheres
+  // have no rolling resistance, so the base rolls apart: energy must only go down.
+  for (int layer = 0; layer < 5; ++layer) {
     const double z = r + gap + layer * (std::sqrt(2.0) * r + gap);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
+    for (int i = 0; i < 8 - layer; ++i)
+      for (int j = 0; j < 5 - layer; ++j)
         add_sphere(world, r, {(2 * i + layer) * (r + gap), (2 * j + layer) * (r + gap), z}, rough);
   }
+  ASSERT_EQ(world.size(), 101u);
   double energy = total_energy(world);
   double deepest = 0.0;
   for (int step = 0; step < 2000; ++step) {
