@@ -10,6 +10,16 @@ namespace {
 DMBoundaryType boundary_type(const Axis& a) {
   return a.periodic() ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_GHOSTED;
 }
+
+using CornersFunction = PetscErrorCode (*)(DM, PetscInt*, PetscInt*, PetscInt*, PetscInt*, PetscInt*, PetscInt*);
+
+Box corners(DM dm, CornersFunction get) {
+  Box b;
+  PetscInt m[3];
+  COSIM_PETSC(get(dm, &b.lo[0], &b.lo[1], &b.lo[2], &m[0], &m[1], &m[2]));
+  for (int d = 0; d < 3; ++d) b.hi[d] = b.lo[d] + m[d];
+  return b;
+}
 }  // namespace
 
 Grid::Grid(MPI_Comm comm, std::array<Axis, 3> axes) : comm_(comm), axes_(std::move(axes)) {
@@ -67,13 +77,9 @@ void Grid::release() {
 
 std::array<PetscInt, 3> Grid::cells() const { return {axes_[0].cells(), axes_[1].cells(), axes_[2].cells()}; }
 
-Box Grid::owned(DM dm) const {
-  Box b;
-  PetscInt m[3];
-  COSIM_PETSC(DMDAGetCorners(dm, &b.lo[0], &b.lo[1], &b.lo[2], &m[0], &m[1], &m[2]));
-  for (int d = 0; d < 3; ++d) b.hi[d] = b.lo[d] + m[d];
-  return b;
-}
+Box Grid::owned(DM dm) const { return corners(dm, DMDAGetCorners); }
+
+Box Grid::ghosted(DM dm) const { return corners(dm, DMDAGetGhostCorners); }
 
 Point Grid::position(int c, const Index& p) const {
   Point x;

@@ -53,6 +53,7 @@ class Grid {
   // (the viscosity; later the FBM indicator). Same partition as the pressure.
   DM cell_dm() const { return cells_; }
   Box owned(DM dm) const;
+  Box ghosted(DM dm) const;  // owned plus the ghost layer
   std::array<PetscInt, 3> cells() const;
 
   // Where unknown p of component c (or kCellCentre) sits.

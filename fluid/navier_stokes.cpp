@@ -91,6 +91,8 @@ void NavierStokes::set_velocity(const std::function<Point(const Point&)>& u0) {
     COSIM_PETSC(DMDAVecRestoreArray(dm, u_[c], &u));
   }
   previous_dt_ = 0;
+  local_.update(u_, bc_, time_);
+  viscosity_.update(local_);
 }
 
 double NavierStokes::stable_dt() {
@@ -174,6 +176,8 @@ void NavierStokes::predict(double dt) {
       out = local_(c, p) + dt * (-extrapolated + (1 - theta) * viscous + theta * next_boundary +
                                  fluid_.body_force[c] - pressure_gradient);
     });
+    if (imposed_)
+      for (const ImposedFace& f : imposed_->owned(c)) rhs[f.at[2]][f.at[1]][f.at[0]] = f.value;
     COSIM_PETSC(DMDAVecRestoreArray(dm, rhs_[c], &rhs));
     COSIM_PETSC(DMDAVecRestoreArrayRead(dm, previous_convection_[c], &n_old));
     COSIM_PETSC(DMDAVecRestoreArray(dm, convection_[c], &n_new));
@@ -181,13 +185,13 @@ void NavierStokes::predict(double dt) {
   COSIM_PETSC(DMDAVecRestoreArrayRead(pdm, p_local_, &p_old));
   COSIM_PETSC(PetscLogEventEnd(log_events().convection_and_rhs, 0, 0, 0, 0));
   for (int c = 0; c < 3; ++c)
-    report_.viscous_iterations[c] = viscous_.solve(c, theta * dt, viscosity_, rhs_[c], u_[c]);
+    report_.viscous_iterations[c] = viscous_.solve(c, theta * dt, viscosity_, imposed_, rhs_[c], u_[c]);
 }
 
 void NavierStokes::project(double dt) {
   COSIM_PETSC(PetscLogEventBegin(log_events().projection, 0, 0, 0, 0));
   local_.update(u_, bc_, time_ + dt);
-  report_.pressure_iterations = pressure_solver_.solve(local_, dt, phi_);
+  report_.pressure_iterations = pressure_solver_.solve(local_, dt, imposed_, phi_);
   DM pdm = grid_.pressure_dm();
   COSIM_PETSC(DMGlobalToLocalBegin(pdm, phi_, INSERT_VALUES, p_local_));
   COSIM_PETSC(DMGlobalToLocalEnd(pdm, phi_, INSERT_VALUES, p_local_));
@@ -197,8 +201,9 @@ void NavierStokes::project(double dt) {
     DM dm = grid_.velocity_dm(c);
     PetscScalar*** u = nullptr;
     COSIM_PETSC(DMDAVecGetArray(dm, u_[c], &u));
-    for_each_index(grid_.owned(dm),
-                   [&](const Index& p) { u[p[2]][p[1]][p[0]] -= dt * face_gradient(grid_, bc_, phi, c, p); });
+    for_each_index(grid_.owned(dm), [&](const Index& p) {
+      if (!imposed_ || !imposed_->contains(c, p)) u[p[2]][p[1]][p[0]] -= dt * face_gradient(grid_, bc_, phi, c, p);
+    });
     COSIM_PETSC(DMDAVecRestoreArray(dm, u_[c], &u));
   }
   COSIM_PETSC(DMDAVecRestoreArrayRead(pdm, p_local_, &phi));

@@ -14,6 +14,7 @@
 
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/grid.hpp"
+#include "fluid/imposed_faces.hpp"
 #include "fluid/local_velocity.hpp"
 #include "fluid/pressure_solver.hpp"
 #include "fluid/time_step_controller.hpp"
@@ -47,6 +48,11 @@ class NavierStokes {
 
   // Initial velocity (each component sampled at its faces; imposed boundary values win).
   void set_velocity(const std::function<Point(const Point&)>& u0);
+  // Faces whose velocity every following step prescribes (Dirichlet rows of the implicit
+  // viscous solve, walls for the projection): the fictitious-boundary bodies. `faces` must
+  // outlive the solver or be replaced; its owner may change the contents between steps.
+  // nullptr for none.
+  void impose(const ImposedFaces* faces) { imposed_ = faces; }
 
   double stable_dt();          // from the CFL target and the controller's limits
   StepReport step();           // one step of stable_dt()
@@ -60,6 +66,10 @@ class NavierStokes {
   // velocities into these faces and reads sigma from them.
   Vec velocity(int c) const { return u_[static_cast<std::size_t>(c)]; }
   Vec pressure() const { return p_; }
+  // The current velocity with ghosts and the viscosity of the last step, for the stress.
+  const LocalVelocity& local_velocity() const { return local_; }
+  const ViscosityField& viscosity() const { return viscosity_; }
+  const FluidProperties& fluid() const { return fluid_; }
 
  private:
   void predict(double dt);
@@ -80,6 +90,7 @@ class NavierStokes {
   double time_ = 0;
   double previous_dt_ = 0;  // 0: no convection history yet
   StepReport report_;
+  const ImposedFaces* imposed_ = nullptr;
 };
 
 }  // namespace cosim::fluid

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "fluid/cell_faces.hpp"
 #include "fluid/mac_operators.hpp"
 #include "fluid/petsc_check.hpp"
 
@@ -14,7 +15,7 @@ PressureSolver::PressureSolver(const Grid& grid, const BoundaryConditions& bc) :
 
 void PressureSolver::create() {
   const Grid& grid = grid_;
-  if (!bc_.has_outflow()) COSIM_PETSC(MatNullSpaceCreate(grid.comm(), PETSC_TRUE, 0, nullptr, &constants_));
+  update_null_space();
   COSIM_PETSC(KSPCreate(grid.comm(), &ksp_));
   COSIM_PETSC(KSPSetOptionsPrefix(ksp_, "pressure_"));
   COSIM_PETSC(KSPSetDM(ksp_, grid.pressure_dm()));
@@ -23,6 +24,9 @@ void PressureSolver::create() {
   PC pc;
   COSIM_PETSC(KSPGetPC(ksp_, &pc));
   COSIM_PETSC(PCSetType(pc, PCGAMG));
+  // Moving bodies change the operator: an aggregation built for the old one can make the
+  // preconditioner indefinite (seen as DIVERGED_INDEFINITE_PC), so rebuild it.
+  COSIM_PETSC(PCGAMGSetReuseInterpolation(pc, PETSC_FALSE));
   COSIM_PETSC(KSPSetTolerances(ksp_, 1e-10, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
   COSIM_PETSC(KSPSetFromOptions(ksp_));
   COSIM_PETSC(DMCreateGlobalVector(grid.pressure_dm(), &rhs_));
@@ -52,6 +56,9 @@ PetscErrorCode PressureSolver::compute_operator(KSP ksp, Mat, Mat P, void* self)
   PetscCall(DMDAGetCorners(dm, &owned.lo[0], &owned.lo[1], &owned.lo[2], &m_[0], &m_[1], &m_[2]));
   for (int d = 0; d < 3; ++d) owned.hi[d] = owned.lo[d] + m_[d];
   PetscErrorCode status = 0;
+  const ImposedFaces* imposed = s.imposed_;
+  // Called again whenever the imposed faces change: start from zero, as values are added.
+  PetscCall(MatZeroEntries(P));
   for_each_index(owned, [&](const Index& m) {
     if (status) return;
     MatStencil row{m[2], m[1], m[0], 0};
@@ -59,26 +66,24 @@ PetscErrorCode PressureSolver::compute_operator(KSP ksp, Mat, Mat P, void* self)
     PetscScalar vals[7];
     int n = 0;
     double diagonal = 0;
-    for (int d = 0; d < 3; ++d) {
-      const Axis& a = grid.axis(d);
-      if (a.degenerate()) continue;
-      const int id = static_cast<int>(m[d]);
-      const double area = grid.cell_volume(m) / a.width(id);
-      for (Side side : {Side::lower, Side::upper}) {
-        const bool at_boundary = !a.periodic() && (side == Side::lower ? id == 0 : id == a.cells() - 1);
-        if (at_boundary) {
-          if (s.bc_.at(d, side).kind == BoundaryKind::outflow)
-            diagonal += area / (side == Side::lower ? a.centre(0) - a.lo() : a.hi() - a.centre(id));
-          continue;
-        }
-        const int step = side == Side::lower ? -1 : 1;
-        const double coupling = area / std::abs(a.centre(id + step) - a.centre(id));
-        const Index nb = shifted(m, d, step);
-        cols[n] = {nb[2], nb[1], nb[0], 0};
-        vals[n++] = -coupling;
-        diagonal += coupling;
+    // A cell inside a body keeps phi = 0 (identity row, scaled like its neighbours).
+    const bool enclosed = imposed && imposed->encloses(m);
+    for_each_cell_face(grid, m, [&](const CellFace& f) {
+      if (f.boundary) {
+        if (s.bc_.at(f.axis, f.side).kind == BoundaryKind::outflow) diagonal += f.area / f.distance;
+        return;
       }
-    }
+      const double coupling = f.area / f.distance;
+      if (enclosed) {
+        diagonal += coupling;
+        return;
+      }
+      // An imposed face is a wall for the projection: no flux through it is corrected.
+      if (imposed && imposed->contains(f.axis, f.face)) return;
+      diagonal += coupling;
+      cols[n] = {f.neighbour[2], f.neighbour[1], f.neighbour[0], 0};
+      vals[n++] = -coupling;
+    });
     cols[n] = row;
     vals[n++] = diagonal;
     // ADD: on a periodic axis of two cells both neighbours are the same cell.
@@ -91,12 +96,41 @@ PetscErrorCode PressureSolver::compute_operator(KSP ksp, Mat, Mat P, void* self)
   PetscFunctionReturn(0);
 }
 
-int PressureSolver::solve(const LocalVelocity& u_star, double dt, Vec phi) {
+// Without an outflow phi is fixed up to a constant over the cells that are unknowns.
+void PressureSolver::update_null_space() {
+  if (bc_.has_outflow()) return;
+  COSIM_PETSC(MatNullSpaceDestroy(&constants_));
+  if (!imposed_ || !imposed_->any_enclosed()) {
+    COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_TRUE, 0, nullptr, &constants_));
+    return;
+  }
+  DM dm = grid_.pressure_dm();
+  Vec ones;
+  COSIM_PETSC(DMCreateGlobalVector(dm, &ones));
+  PetscScalar*** v = nullptr;
+  COSIM_PETSC(DMDAVecGetArray(dm, ones, &v));
+  for_each_index(grid_.owned(dm), [&](const Index& m) { v[m[2]][m[1]][m[0]] = imposed_->encloses(m) ? 0 : 1; });
+  COSIM_PETSC(DMDAVecRestoreArray(dm, ones, &v));
+  COSIM_PETSC(VecNormalize(ones, nullptr));
+  COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_FALSE, 1, &ones, &constants_));
+  COSIM_PETSC(VecDestroy(&ones));
+}
+
+int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi) {
+  const int generation = imposed ? imposed->generation() : -1;
+  if (imposed != imposed_ || generation != assembled_generation_) {
+    imposed_ = imposed;
+    assembled_generation_ = generation;
+    update_null_space();
+    // Asks the KSP to call compute_operator again before the next solve.
+    COSIM_PETSC(KSPSetComputeOperators(ksp_, compute_operator, this));
+  }
   DM dm = grid_.pressure_dm();
   PetscScalar*** r = nullptr;
   COSIM_PETSC(DMDAVecGetArray(dm, rhs_, &r));
   for_each_index(grid_.owned(dm), [&](const Index& m) {
-    r[m[2]][m[1]][m[0]] = -grid_.cell_volume(m) * divergence(grid_, u_star, m) / dt;
+    const bool enclosed = imposed && imposed->encloses(m);
+    r[m[2]][m[1]][m[0]] = enclosed ? 0 : -grid_.cell_volume(m) * divergence(grid_, u_star, m) / dt;
   });
   COSIM_PETSC(DMDAVecRestoreArray(dm, rhs_, &r));
   // Closed or periodic domains: the discrete compatibility condition holds only up to

@@ -7,6 +7,7 @@
 
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/grid.hpp"
+#include "fluid/imposed_faces.hpp"
 #include "fluid/local_velocity.hpp"
 
 namespace cosim::fluid {
@@ -19,12 +20,14 @@ class PressureSolver {
   PressureSolver& operator=(const PressureSolver&) = delete;
 
   // Solves for the correction phi (global vector of the pressure DM) that makes
-  // u* - dt grad(phi) divergence-free; returns the number of Krylov iterations.
-  int solve(const LocalVelocity& u_star, double dt, Vec phi);
+  // u* - dt grad(phi) divergence-free, with the imposed faces (may be null) kept as they
+  // are and phi = 0 in cells they enclose; returns the number of Krylov iterations.
+  int solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi);
 
  private:
   void create();
   void release();
+  void update_null_space();
   static PetscErrorCode compute_operator(KSP ksp, Mat A, Mat P, void* self);
 
   const Grid& grid_;
@@ -32,6 +35,8 @@ class PressureSolver {
   KSP ksp_ = nullptr;
   Vec rhs_ = nullptr;
   MatNullSpace constants_ = nullptr;  // only when no outflow pins the pressure level
+  const ImposedFaces* imposed_ = nullptr;
+  int assembled_generation_ = -1;
 };
 
 }  // namespace cosim::fluid

@@ -1,6 +1,7 @@
 #include "fluid/viscous_solver.hpp"
 
 #include <string>
+#include <vector>
 
 #include "fluid/petsc_check.hpp"
 #include "fluid/viscous_stencil.hpp"
@@ -16,6 +17,8 @@ void ViscousSolver::create() {
   const Grid& grid = grid_;
   for (int c = 0; c < 3; ++c) {
     COSIM_PETSC(DMCreateMatrix(grid.velocity_dm(c), &matrix_[c]));
+    // Imposed rows are zeroed and later refilled: keep their preallocated entries.
+    COSIM_PETSC(MatSetOption(matrix_[c], MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
     COSIM_PETSC(KSPCreate(grid.comm(), &ksp_[c]));
     COSIM_PETSC(KSPSetOptionsPrefix(ksp_[c], "viscous_"));
     COSIM_PETSC(KSPSetType(ksp_[c], KSPGMRES));
@@ -35,7 +38,7 @@ void ViscousSolver::release() {
   }
 }
 
-void ViscousSolver::assemble(int c, double s, const ViscosityField& nu) {
+void ViscousSolver::assemble(int c, double s, const ViscosityField& nu, const ImposedFaces* imposed) {
   Mat A = matrix_[c];
   COSIM_PETSC(MatZeroEntries(A));
   for_each_index(grid_.owned(grid_.velocity_dm(c)), [&](const Index& p) {
@@ -66,12 +69,18 @@ void ViscousSolver::assemble(int c, double s, const ViscosityField& nu) {
   });
   COSIM_PETSC(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
   COSIM_PETSC(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+  std::vector<MatStencil> rows;
+  if (imposed)
+    for (const ImposedFace& f : imposed->owned(c)) rows.push_back({f.at[2], f.at[1], f.at[0], 0});
+  COSIM_PETSC(MatZeroRowsStencil(A, static_cast<PetscInt>(rows.size()), rows.data(), 1.0, nullptr, nullptr));
   COSIM_PETSC(KSPSetOperators(ksp_[c], A, A));
   assembled_for_[c] = s;
+  assembled_generation_[c] = imposed ? imposed->generation() : -1;
 }
 
-int ViscousSolver::solve(int c, double s, const ViscosityField& nu, Vec rhs, Vec x) {
-  if (s != assembled_for_[c] || !nu.uniform()) assemble(c, s, nu);
+int ViscousSolver::solve(int c, double s, const ViscosityField& nu, const ImposedFaces* imposed, Vec rhs, Vec x) {
+  const int generation = imposed ? imposed->generation() : -1;
+  if (s != assembled_for_[c] || !nu.uniform() || generation != assembled_generation_[c]) assemble(c, s, nu, imposed);
   return solve_or_throw(ksp_[c], rhs, x, "viscous solve for velocity component " + std::to_string(c));
 }
 

@@ -1,0 +1,48 @@
+#pragma once
+// The six faces of a pressure cell as the finite-volume Laplacian -V div(grad) sees them:
+// shared by the projection's operator and the pressure extension into bodies so both use
+// the same couplings.
+#include <cmath>
+
+#include "fluid/boundary_conditions.hpp"
+#include "fluid/grid.hpp"
+
+namespace cosim::fluid {
+
+struct CellFace {
+  int axis = 0;
+  Side side = Side::lower;
+  Index face{};          // the velocity unknown of component `axis` on it
+  bool boundary = false;  // on a bounded domain face: no neighbour
+  Index neighbour{};
+  double area = 0;
+  double distance = 0;  // centre to centre, or centre to the domain face
+};
+
+// Calls f(const CellFace&) for the faces of cell m along every axis that carries variation.
+template <typename F>
+void for_each_cell_face(const Grid& grid, const Index& m, F&& f) {
+  for (int d = 0; d < 3; ++d) {
+    const Axis& a = grid.axis(d);
+    if (a.degenerate()) continue;
+    const int id = static_cast<int>(m[d]);
+    for (Side side : {Side::lower, Side::upper}) {
+      CellFace cf;
+      cf.axis = d;
+      cf.side = side;
+      cf.face = side == Side::lower ? m : shifted(m, d, 1);
+      cf.area = grid.cell_volume(m) / a.width(id);
+      cf.boundary = !a.periodic() && (side == Side::lower ? id == 0 : id == a.cells() - 1);
+      if (cf.boundary) {
+        cf.distance = side == Side::lower ? a.centre(0) - a.lo() : a.hi() - a.centre(id);
+      } else {
+        const int step = side == Side::lower ? -1 : 1;
+        cf.neighbour = shifted(m, d, step);
+        cf.distance = std::abs(a.centre(id + step) - a.centre(id));
+      }
+      f(cf);
+    }
+  }
+}
+
+}  // namespace cosim::fluid

@@ -1,0 +1,100 @@
+#include "fluid/fbm_indicator.hpp"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+#include "rigidbody/geometry/queries.hpp"
+
+namespace cosim::fluid {
+
+namespace {
+
+struct Interval {
+  double lo, hi;
+};
+
+// Extent along axis d of the control volume of point i: the cell for cell centres and for
+// the faces of other components, the span between the neighbouring cell centres for the
+// faces of component d itself.
+Interval control_interval(const Axis& axis, bool face_axis, PetscInt i) {
+  const int n = static_cast<int>(i);
+  return face_axis ? Interval{axis.centre(n - 1), axis.centre(n)} : Interval{axis.face(n), axis.face(n + 1)};
+}
+
+// First index in [lo, hi) for which pred is false; pred must be true then false.
+template <typename Pred>
+PetscInt partition_point(PetscInt lo, PetscInt hi, Pred pred) {
+  while (lo < hi) {
+    const PetscInt mid = lo + (hi - lo) / 2;
+    if (pred(mid))
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+double IndicatorPatch::operator()(const Index& p) const {
+  std::size_t at = 0, stride = 1;
+  for (int d = 0; d < 3; ++d) {
+    if (p[d] < range_.lo[d] || p[d] >= range_.hi[d]) return 0;
+    at += static_cast<std::size_t>(p[d] - range_.lo[d]) * stride;
+    stride *= static_cast<std::size_t>(range_.hi[d] - range_.lo[d]);
+  }
+  return values_[at];
+}
+
+IndicatorPatch indicator(const Grid& grid, int location, const RigidBody& body, int subsamples, const Box& within) {
+  const geometry::Aabb box = geometry::world_aabb(body.shape, body.pose);
+  Box range = within;
+  for (int d = 0; d < 3; ++d) {
+    const Axis& axis = grid.axis(d);
+    const bool face_axis = d == location;
+    range.lo[d] = partition_point(within.lo[d], within.hi[d],
+                                  [&](PetscInt i) { return control_interval(axis, face_axis, i).hi <= box.min[d]; });
+    range.hi[d] = std::max(range.lo[d], partition_point(range.lo[d], within.hi[d], [&](PetscInt i) {
+                                          return control_interval(axis, face_axis, i).lo < box.max[d];
+                                        }));
+  }
+  std::vector<double> values;
+  values.reserve(static_cast<std::size_t>((range.hi[0] - range.lo[0]) * (range.hi[1] - range.lo[1]) *
+                                          (range.hi[2] - range.lo[2])));
+  for_each_index(range, [&](const Index& p) {
+    Eigen::Vector3d lo, hi;
+    std::array<int, 3> n{};
+    for (int d = 0; d < 3; ++d) {
+      const Axis& axis = grid.axis(d);
+      const Interval cv = control_interval(axis, d == location, p[d]);
+      // A one-cell periodic axis carries no variation: sample its midplane only.
+      n[d] = axis.degenerate() ? 1 : subsamples;
+      lo[d] = axis.degenerate() ? 0.5 * (cv.lo + cv.hi) : cv.lo;
+      hi[d] = axis.degenerate() ? lo[d] : cv.hi;
+    }
+    const Eigen::Vector3d mid = 0.5 * (lo + hi);
+    if (subsamples == 1) {
+      values.push_back(geometry::contains(body.shape, body.pose, mid) ? 1.0 : 0.0);
+      return;
+    }
+    const double distance = geometry::signed_distance(body.shape, body.pose, mid);
+    const double reach = 0.5 * (hi - lo).norm();
+    if (std::abs(distance) > reach) {
+      values.push_back(distance < 0 ? 1.0 : 0.0);
+      return;
+    }
+    int inside = 0;
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i) {
+          const Eigen::Vector3d s(i + 0.5, j + 0.5, k + 0.5);
+          const Eigen::Vector3d x = lo + (hi - lo).cwiseProduct(s.cwiseQuotient(Eigen::Vector3d(n[0], n[1], n[2])));
+          inside += geometry::contains(body.shape, body.pose, x) ? 1 : 0;
+        }
+    values.push_back(static_cast<double>(inside) / (n[0] * n[1] * n[2]));
+  });
+  return {range, std::move(values)};
+}
+
+}  // namespace cosim::fluid

@@ -1,0 +1,54 @@
+#pragma once
+// Velocity unknowns whose value is prescribed rather than solved for: the faces inside
+// fictitious-boundary bodies. The viscous solve turns their rows into Dirichlet rows, and
+// the projection treats them like wall faces (no pressure coupling across them, no
+// correction of their velocity), so a body is a no-slip obstacle as exact as a wall.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "fluid/grid.hpp"
+
+namespace cosim::fluid {
+
+struct ImposedFace {
+  Index at{};
+  double value = 0;
+};
+
+class ImposedFaces {
+ public:
+  explicit ImposedFaces(const Grid& grid);
+
+  // Rebuilding: clear(), add() every imposed face this rank sees (owned or ghost), then
+  // finish(), which is collective.
+  void clear();
+  void add(int c, const Index& p, double value);
+  void finish();
+
+  // This rank's rows, each with its value.
+  const std::vector<ImposedFace>& owned(int c) const { return owned_[static_cast<std::size_t>(c)]; }
+  // p within the ghosted range of component c.
+  bool contains(int c, const Index& p) const { return mask_[static_cast<std::size_t>(c)][offset(c, p)] != 0; }
+  // Every face of the cell (along the non-degenerate axes) is imposed: the cell lies inside
+  // a body, its pressure is not an unknown of the projection. cell within the ghosted range
+  // of the cell DM, less its upper ghost layer.
+  bool encloses(const Index& cell) const;
+  bool any_enclosed() const { return any_enclosed_; }  // on any rank
+  // Advances, on all ranks at once, whenever the set of imposed faces changes anywhere.
+  int generation() const { return generation_; }
+
+ private:
+  std::size_t offset(int c, const Index& p) const;
+
+  const Grid& grid_;
+  std::array<Box, 3> ghosted_, owned_box_;
+  Box owned_cells_;
+  std::array<std::vector<std::uint8_t>, 3> mask_;
+  std::array<std::vector<Index>, 3> seen_, previous_;  // every face set in the mask
+  std::array<std::vector<ImposedFace>, 3> owned_;
+  bool any_enclosed_ = false;
+  int generation_ = 0;
+};
+
+}  // namespace cosim::fluid
