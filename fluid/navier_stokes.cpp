@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "fluid/convection.hpp"
@@ -119,7 +120,7 @@ StepReport NavierStokes::step(double dt) {
   return report_;
 }
 
-std::vector<StepReport> NavierStokes::advance_to(double t_end) {
+std::vector<StepReport> NavierStokes::advance_to(double t_end, const std::function<void(double)>& before_step) {
   std::vector<StepReport> reports;
   const double eps = 1e-12 * std::max(1.0, std::abs(t_end));
   while (time_ < t_end - eps) {
@@ -129,10 +130,60 @@ std::vector<StepReport> NavierStokes::advance_to(double t_end) {
       dt = remaining;
     else if (2 * dt > remaining)
       dt = remaining / 2;
+    if (before_step) before_step(time_ + dt);
     reports.push_back(step(dt));
   }
   time_ = std::max(time_, t_end);
   return reports;
+}
+
+namespace {
+
+// The vectors a step carries to the next, in the order state() writes them.
+std::vector<Vec> carried(const std::array<Vec, 3>& u, Vec p, const std::array<Vec, 3>& convection) {
+  return {u[0], u[1], u[2], p, convection[0], convection[1], convection[2]};
+}
+
+}  // namespace
+
+std::vector<double> NavierStokes::state() const {
+  std::vector<double> out{time_, previous_dt_};
+  for (Vec v : carried(u_, p_, previous_convection_)) {
+    const PetscScalar* a = nullptr;
+    PetscInt n = 0;
+    COSIM_PETSC(VecGetLocalSize(v, &n));
+    COSIM_PETSC(VecGetArrayRead(v, &a));
+    out.insert(out.end(), a, a + n);
+    COSIM_PETSC(VecRestoreArrayRead(v, &a));
+  }
+  return out;
+}
+
+void NavierStokes::restore(std::span<const double> state) {
+  const std::vector<Vec> vectors = carried(u_, p_, previous_convection_);
+  std::size_t expected = 2;
+  for (Vec v : vectors) {
+    PetscInt n = 0;
+    COSIM_PETSC(VecGetLocalSize(v, &n));
+    expected += static_cast<std::size_t>(n);
+  }
+  if (state.size() != expected)
+    throw std::invalid_argument("fluid state has " + std::to_string(state.size()) + " values, this grid needs " +
+                                std::to_string(expected));
+  time_ = state[0];
+  previous_dt_ = state[1];
+  std::size_t at = 2;
+  for (Vec v : vectors) {
+    PetscScalar* a = nullptr;
+    PetscInt n = 0;
+    COSIM_PETSC(VecGetLocalSize(v, &n));
+    COSIM_PETSC(VecGetArray(v, &a));
+    std::copy_n(state.begin() + static_cast<std::ptrdiff_t>(at), n, a);
+    COSIM_PETSC(VecRestoreArray(v, &a));
+    at += static_cast<std::size_t>(n);
+  }
+  local_.update(u_, bc_, time_);
+  viscosity_.update(local_);
 }
 
 // Momentum with the old pressure gradient, convection extrapolated, viscosity implicit.

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "fluid/boundary_conditions.hpp"
@@ -58,7 +59,14 @@ class NavierStokes {
   StepReport step();           // one step of stable_dt()
   StepReport step(double dt);  // one step of a given size
   // Steps to exactly t_end, shortening the last two steps rather than leaving a sliver.
-  std::vector<StepReport> advance_to(double t_end);
+  // before_step(t) runs before each step with the step's end time t: where moving bodies
+  // must be placed (FictitiousBoundary::move).
+  std::vector<StepReport> advance_to(double t_end, const std::function<void(double)>& before_step = {});
+  // Everything a step carries to the next, this rank's part: time, previous dt, u, p and
+  // the convection history. restore() into a solver on the same grid repeats the following
+  // steps bit for bit (rollback of an implicitly coupled window).
+  std::vector<double> state() const;
+  void restore(std::span<const double> state);
 
   double time() const { return time_; }
   const Grid& grid() const { return grid_; }

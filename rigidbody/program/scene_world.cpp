@@ -4,11 +4,15 @@
 #include <array>
 #include <stdexcept>
 
+#include "rigidbody/geometry/scene_shape.hpp"
 #include "scene/error.hpp"
 #include "scene/reader.hpp"
 
 namespace cosim::program {
 namespace {
+
+using geometry::com_shift;
+using geometry::shape_of;
 
 using Eigen::Vector3d;
 
@@ -25,26 +29,6 @@ const scene::Participant& section(const scene::Scene& scene) {
 // mesh's hull has the same centre of mass; any other's moves by the hull's own com_shift.
 geometry::Shape hull_of(const geometry::Shape& mesh) {
   return geometry::ConvexHull(std::get<geometry::TriangleMesh>(mesh).vertices());
-}
-
-// A mesh's file frame is the scene frame of the body; its vertices were moved by com_shift.
-Eigen::Vector3d com_shift(const geometry::Shape& shape) {
-  if (const auto* mesh = std::get_if<geometry::TriangleMesh>(&shape)) return mesh->com_shift();
-  if (const auto* hull = std::get_if<geometry::ConvexHull>(&shape)) return hull->com_shift();
-  return Vector3d::Zero();
-}
-
-geometry::Shape shape_of(const scene::Shape& s) {
-  switch (s.type) {
-    case scene::ShapeType::Sphere: return geometry::Sphere(s.radius);
-    case scene::ShapeType::Ellipsoid: return geometry::Ellipsoid(vec(s.radii));
-    case scene::ShapeType::Box: return geometry::Box(vec(s.half_extents));
-    case scene::ShapeType::Cylinder: return geometry::Cylinder(s.radius, s.height);
-    case scene::ShapeType::Capsule: return geometry::Capsule(s.radius, s.height);
-    case scene::ShapeType::Plane: return geometry::HalfSpace(vec(s.normal));
-    case scene::ShapeType::Mesh: return geometry::TriangleMesh::from_file(s.file);
-  }
-  throw std::invalid_argument("unknown shape type");
 }
 
 // The option names mesh bodies only, so a misspelt or non-mesh name is an error that lists

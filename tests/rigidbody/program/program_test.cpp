@@ -36,7 +36,7 @@ TEST(RigidProgram, CoupledAndStandaloneRestTheSphereAtItsRadius) {
   ASSERT_EQ(coupled.rows, 101u);  // t = 0 and 100 windows
   EXPECT_NEAR(coupled.at(coupled.rows - 1, 2), radius, 0.01 * radius);
 
-  ASSERT_EQ(run_standalone(dir / "scene.yaml", dir / "alone.h5"), 0);
+  ASSERT_EQ(run_standalone("cosim-rigidbody", dir / "scene.yaml", dir / "alone.h5"), 0);
   const auto alone = read_series(dir / "alone.h5", "/bodies/ball/position");
   ASSERT_EQ(alone.rows, coupled.rows);
   for (std::size_t i = 0; i < alone.values.size(); ++i) EXPECT_NEAR(alone.values[i], coupled.values[i], 1e-12) << i;
@@ -48,7 +48,7 @@ TEST(RigidProgram, StandaloneReportsSceneErrorsWithExitCode2) {
   auto bad = sphere_on_plane;
   bad.replace(bad.find("{dt: 1.0e-3}"), 12, "{dt: 1.0e-3, options: {solver: newton}}");
   write_file(dir / "bad.yaml", bad);
-  EXPECT_EQ(run_standalone(dir / "bad.yaml", dir / "bad.h5"), 2);
+  EXPECT_EQ(run_standalone("cosim-rigidbody", dir / "bad.yaml", dir / "bad.h5"), 2);
 }
 
 }  // namespace

@@ -46,7 +46,7 @@ Runs run_config(const std::string& name, const std::string& end, const std::vect
   EXPECT_NE(out.find("participants: rigidbody ("), std::string::npos) << out;
   EXPECT_EQ(out.find("started "), out.rfind("started ")) << "more than one participant started:\n" << out;
 
-  EXPECT_EQ(run_standalone(runs.dir / "scene.yaml", runs.dir / "alone.h5"), 0);
+  EXPECT_EQ(run_standalone("cosim-rigidbody", runs.dir / "scene.yaml", runs.dir / "alone.h5"), 0);
   EXPECT_EQ(read_string_attribute(runs.dir / "alone.h5", "/run", "status"), "finished");
   for (const auto& body : bodies)
     for (const char* series : {"/position", "/orientation", "/velocity", "/angular_velocity"}) {

@@ -1,0 +1,127 @@
+#include "fluid/program/adapter.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "fluid/program/petsc_flags.hpp"
+#include "protocol/message.hpp"
+
+namespace cosim::program {
+namespace {
+
+constexpr std::size_t kPoseWidth = protocol::kPoseWidth;
+constexpr std::size_t kForceWidth = protocol::kForceWidth;
+
+Eigen::Vector3d vector_at(const double* v) { return {v[0], v[1], v[2]}; }
+
+void check_size(const std::vector<double>& values, std::size_t bodies, const char* what) {
+  if (values.size() != kPoseWidth * bodies)
+    throw std::runtime_error(std::string(what) + " for " + std::to_string(values.size() / kPoseWidth) +
+                             " bodies, the scene has " + std::to_string(bodies));
+}
+
+// Between the window's start and end poses: positions and velocities linearly, the
+// orientation by normalised linear interpolation (the coupler's windows are short enough
+// for the difference to slerp not to matter against the first-order hold).
+std::vector<double> interpolated(const participant::Inputs& in, const participant::Window& w, double t) {
+  const auto& end = in.poses_end.empty() ? in.poses_start : in.poses_end;
+  std::vector<double> out(in.poses_start.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = participant::lerp(in.poses_start[i], end[i], w, t);
+  for (std::size_t b = 0; b < out.size() / kPoseWidth; ++b) {
+    Eigen::Map<Eigen::Vector4d> q(out.data() + kPoseWidth * b + 3);
+    q.normalize();
+  }
+  return out;
+}
+
+// Periodic axes have their faces from the grid already.
+fluid::BoundaryConditions boundary_conditions(const fluid::Grid& grid, const FluidSetup& s) {
+  fluid::BoundaryConditions bc(grid);
+  for (int a = 0; a < 3; ++a)
+    if (!s.axes[static_cast<std::size_t>(a)].periodic())
+      for (fluid::Side side : {fluid::Side::lower, fluid::Side::upper})
+        bc.set(a, side, s.boundaries[static_cast<std::size_t>(2 * a + static_cast<int>(side))]);
+  return bc;
+}
+
+}  // namespace
+
+struct FluidSolver::Flow {
+  explicit Flow(const FluidSetup& s)
+      : grid(PETSC_COMM_WORLD, {s.axes[0], s.axes[1], s.axes[2]}),
+        bc(boundary_conditions(grid, s)),
+        flow(grid, bc, s.properties, s.steps),
+        fbm(grid, s.fbm) {}
+
+  fluid::Grid grid;
+  fluid::BoundaryConditions bc;
+  fluid::NavierStokes flow;
+  fluid::FictitiousBoundary fbm;
+};
+
+FluidSolver::FluidSolver(bool prescribed) : prescribed_(prescribed) {}
+FluidSolver::~FluidSolver() = default;
+
+const fluid::NavierStokes& FluidSolver::flow() const { return flow_->flow; }
+
+participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const std::string&,
+                                             const std::vector<double>& poses, const std::vector<double>& state) {
+  setup_ = fluid_setup(scene);
+  // Before the solvers exist: they read the flags when they are created.
+  insert_petsc_flags(setup_.petsc);
+  flow_ = std::make_unique<Flow>(setup_);
+  for (const fluid::RigidBody& b : setup_.bodies) flow_->fbm.add(b);
+  flow_->flow.impose(&flow_->fbm.imposed_faces());
+  const fluid::Point u0 = setup_.initial_velocity;
+  flow_->flow.set_velocity([&](const fluid::Point&) { return u0; });
+  // The coupler's poses (the rigid-body program's centres of mass) win over the scene's.
+  place(prescribed_ || poses.empty() ? program::poses_at(setup_.motions, 0) : poses);
+  if (!state.empty()) restore(state);
+  return outputs(0);
+}
+
+participant::Outputs FluidSolver::advance(const participant::Window& w, const participant::Inputs& in) {
+  if (!in.poses_start.empty()) check_size(in.poses_start, setup_.bodies.size(), "poses");
+  const auto steps = flow_->flow.advance_to(w.t1, [&](double t) { place(poses_at(w, in, t)); });
+  for (const fluid::StepReport& r : steps)
+    if (!std::isfinite(r.max_divergence))
+      throw std::runtime_error("fluid diverged at t = " + std::to_string(r.time) + " (non-finite velocity)");
+  return outputs(static_cast<double>(steps.size()));
+}
+
+std::vector<double> FluidSolver::poses_at(const participant::Window& w, const participant::Inputs& in,
+                                          double t) const {
+  if (prescribed_) return program::poses_at(setup_.motions, t);
+  if (in.poses_start.empty()) return poses_;
+  return interpolated(in, w, t);
+}
+
+void FluidSolver::place(const std::vector<double>& poses) {
+  check_size(poses, setup_.bodies.size(), "poses");
+  poses_ = poses;
+  for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
+    const double* v = poses.data() + kPoseWidth * b;
+    const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
+    flow_->fbm.move(b, geometry::Pose(vector_at(v), q), vector_at(v + 7), vector_at(v + 10));
+  }
+}
+
+participant::Outputs FluidSolver::outputs(double substeps) const {
+  std::vector<double> forces;
+  for (const fluid::HydrodynamicLoad& l : flow_->fbm.loads(flow_->flow))
+    forces.insert(forces.end(), {l.force.x(), l.force.y(), l.force.z(), l.torque.x(), l.torque.y(), l.torque.z()});
+  return {prescribed_ ? poses_ : std::vector<double>{}, forces, substeps};
+}
+
+std::vector<double> FluidSolver::state() const { return flow_->flow.state(); }
+
+void FluidSolver::restore(const std::vector<double>& state) {
+  try {
+    flow_->flow.restore(state);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(std::string("restart state: ") + e.what());
+  }
+}
+
+}  // namespace cosim::program

@@ -1,0 +1,44 @@
+// cosim-fluid as a participant: the Navier-Stokes flow around the scene's bodies, advanced
+// window by window. It needs the bodies' poses and velocities and provides the
+// hydrodynamic force and torque on each (protocol::kForceWidth values per body).
+#pragma once
+
+#include <memory>
+
+#include "fluid/program/scene_fluid.hpp"
+#include "participant/solver.hpp"
+
+namespace cosim::program {
+
+class FluidSolver final : public participant::Solver {
+ public:
+  // Prescribed: standalone, the bodies follow the scene's prescribed motion (not the
+  // inputs) and the outputs carry their poses too.
+  explicit FluidSolver(bool prescribed = false);
+  ~FluidSolver() override;
+
+  participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
+                                  const std::vector<double>& poses, const std::vector<double>& state) override;
+  // Subcycles with the flow's adaptive dt to exactly w.t1; before each step the bodies are
+  // placed where they are at the step's end (inputs interpolated linearly in the window,
+  // or held where no inputs come).
+  participant::Outputs advance(const participant::Window& w, const participant::Inputs& in) override;
+  // NavierStokes::state(): the bodies need none, they are placed anew every step.
+  std::vector<double> state() const override;
+  void restore(const std::vector<double>& state) override;
+
+  const fluid::NavierStokes& flow() const;
+
+ private:
+  struct Flow;
+  std::vector<double> poses_at(const participant::Window& w, const participant::Inputs& in, double t) const;
+  void place(const std::vector<double>& poses);
+  participant::Outputs outputs(double substeps) const;
+
+  bool prescribed_;
+  FluidSetup setup_;
+  std::unique_ptr<Flow> flow_;
+  std::vector<double> poses_;  // where the bodies are now, b x 13
+};
+
+}  // namespace cosim::program

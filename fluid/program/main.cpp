@@ -1,0 +1,70 @@
+// cosim-fluid: the fluid program.
+//   started by `cosim run` (COSIM_ENDPOINT set)       a coupled participant
+//   cosim-fluid --standalone scene.yaml [-o f.h5]      bodies in prescribed motion
+// Arguments CLI11 does not know (-ksp_*, -pc_*, -log_view ...) go to PETSc.
+#include <CLI/CLI.hpp>
+#include <petscsys.h>
+
+#include <functional>
+#include <iostream>
+
+#include <spdlog/spdlog.h>
+
+#include "fluid/program/adapter.hpp"
+#include "fluid/program/standalone.hpp"
+#include "participant/run_participant.hpp"
+#include "scene/error.hpp"
+
+namespace {
+
+int coupled(cosim::protocol::Client& client) {
+  cosim::program::FluidSolver solver;
+  using cosim::scene::Data;
+  // Able to take poses and give forces; the coupler's plan decides what actually flows.
+  return cosim::participant::run_participant(client, solver, static_cast<std::uint32_t>(Data::Forces),
+                                             static_cast<std::uint32_t>(Data::Poses));
+}
+
+int standalone(const std::string& scene, const std::string& output) {
+  try {
+    cosim::program::run_fluid_standalone(scene, output);
+    return 0;
+  } catch (const cosim::scene::SceneError& e) {
+    std::cerr << "cosim-fluid: invalid scene: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "cosim-fluid: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+// PETSc sees only the arguments meant for it, and is finalised after every solver is gone.
+int with_petsc(std::vector<std::string> args, const std::function<int()>& body) {
+  args.insert(args.begin(), "cosim-fluid");
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  int argc = static_cast<int>(args.size());
+  char** p = argv.data();
+  if (PetscInitialize(&argc, &p, nullptr, nullptr) != 0) return 1;
+  const int code = body();
+  PetscFinalize();
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // The coupler prints participants' output among its own: say whose a warning is.
+  spdlog::set_pattern("cosim-fluid: %^%l%$: %v");
+  if (auto client = cosim::protocol::Client::from_environment())
+    return with_petsc({argv + 1, argv + argc}, [&] { return coupled(*client); });
+
+  CLI::App app{"cosim-fluid: Navier-Stokes with fictitious-boundary bodies; coupled through cosim run, or --standalone"};
+  app.allow_extras();
+  std::string scene, output;
+  app.add_option("--standalone", scene, "Run this scene with the bodies in prescribed motion")->required();
+  app.add_option("-o,--output", output, "Run file to write (default: the scene's output.file)");
+  CLI11_PARSE(app, argc, argv);
+  return with_petsc(app.remaining(), [&] { return standalone(scene, output); });
+}

@@ -1,0 +1,70 @@
+#include "fluid/program/prescribed_motion.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "protocol/message.hpp"
+
+namespace cosim::program {
+namespace {
+
+Eigen::Vector3d vec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
+
+constexpr std::array kind_names{"fixed", "constant", "sinusoidal"};
+
+// The rotation by a constant angular velocity w over t (world frame): exp(w t / 2).
+Eigen::Quaterniond turned(const Eigen::Quaterniond& q0, const Eigen::Vector3d& w, double t) {
+  const double angle = w.norm() * t;
+  if (angle == 0) return q0;
+  return (Eigen::Quaterniond(Eigen::AngleAxisd(angle, w.normalized())) * q0).normalized();
+}
+
+}  // namespace
+
+std::vector<Motion> read_motions(const scene::Scene& scene, const scene::Reader& options, std::vector<Motion> start) {
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const scene::Body& body = scene.bodies[b];
+    start[b].kind = body.fixed ? Motion::Kind::fixed : Motion::Kind::constant;
+    start[b].velocity = vec(body.velocity);
+    start[b].angular_velocity = vec(body.angular_velocity);
+  }
+  if (!options.has("motion")) return start;
+  const scene::Reader listed = options.map("motion");
+  for (const std::string& name : listed.keys()) {
+    std::size_t b = 0;
+    while (b < scene.bodies.size() && scene.bodies[b].name != name) ++b;
+    if (b == scene.bodies.size()) listed.fail(name, "not a body of the scene");
+    const scene::Reader r = listed.map(name);
+    Motion& m = start[b];
+    m.kind = static_cast<Motion::Kind>(r.choice("type", kind_names));
+    if (m.kind != Motion::Kind::constant) m.velocity = m.angular_velocity = Eigen::Vector3d::Zero();
+    if (m.kind == Motion::Kind::sinusoidal) {
+      m.amplitude = vec(r.vec3("amplitude"));
+      m.frequency = r.number("frequency", scene::Range::above(0));
+    }
+    r.finish();
+  }
+  listed.finish();
+  return start;
+}
+
+std::vector<double> poses_at(const std::vector<Motion>& motions, double t) {
+  std::vector<double> out;
+  out.reserve(protocol::kPoseWidth * motions.size());
+  for (const Motion& m : motions) {
+    Eigen::Vector3d x = m.position + m.velocity * t, v = m.velocity;
+    if (m.kind == Motion::Kind::sinusoidal) {
+      const double omega = 2 * std::numbers::pi * m.frequency;
+      x = m.position + m.amplitude * std::sin(omega * t);
+      v = m.amplitude * omega * std::cos(omega * t);
+    }
+    const Eigen::Quaterniond q = turned(m.orientation, m.angular_velocity, t);
+    const Eigen::Vector3d& w = m.angular_velocity;
+    out.insert(out.end(), {x.x(), x.y(), x.z(), q.w(), q.x(), q.y(), q.z(), v.x(), v.y(), v.z(), w.x(), w.y(), w.z()});
+  }
+  return out;
+}
+
+}  // namespace cosim::program

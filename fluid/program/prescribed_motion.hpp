@@ -1,0 +1,33 @@
+// How bodies move in a standalone fluid run, where no rigid-body program moves them:
+// fixed, at constant linear and angular velocity, or oscillating sinusoidally.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "scene/reader.hpp"
+
+namespace cosim::program {
+
+struct Motion {
+  enum class Kind { fixed, constant, sinusoidal };
+  Kind kind = Kind::fixed;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // centre of mass at t = 0
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // constant
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // constant, world frame
+  Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();  // sinusoidal: x0 + A sin(2 pi f t)
+  double frequency = 0;                                  // Hz
+};
+
+// The options' `motion` mapping: body name -> {type: fixed | constant | sinusoidal,
+// amplitude: [m], frequency: Hz (sinusoidal only)}. A body not listed is fixed if the scene
+// says so, else moves at its scene velocity and angular velocity (constant). `start`
+// holds each body's motion with position and orientation at t = 0 already set.
+std::vector<Motion> read_motions(const scene::Scene& scene, const scene::Reader& options, std::vector<Motion> start);
+
+// b x 13 values at time t (protocol::kPoseWidth per body: position, quaternion w x y z,
+// velocity, angular velocity).
+std::vector<double> poses_at(const std::vector<Motion>& motions, double t);
+
+}  // namespace cosim::program

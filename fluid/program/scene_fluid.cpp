@@ -1,0 +1,177 @@
+#include "fluid/program/scene_fluid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "rigidbody/geometry/scene_shape.hpp"
+#include "scene/error.hpp"
+#include "scene/reader.hpp"
+
+namespace cosim::program {
+namespace {
+
+using fluid::Boundary;
+using scene::Range;
+using scene::Reader;
+
+constexpr std::array face_names{"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+constexpr std::array boundary_names{"wall", "inflow", "outflow", "periodic"};
+constexpr std::array profile_names{"uniform", "parabolic"};
+constexpr std::array viscosity_names{"newtonian", "power-law", "carreau"};
+
+const scene::Participant& section(const scene::Scene& scene) {
+  const auto* p = scene.participant("fluid");
+  if (p == nullptr)
+    throw scene::SceneError(scene.file.string(), 0, "participants.fluid", "",
+                            "missing: cosim-fluid reads its dt and options there");
+  return *p;
+}
+
+fluid::Point point(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
+
+// Cells per axis: whole numbers, at least 1 (a one-cell periodic axis is a 2D problem).
+std::array<int, 3> cells(const Reader& grid) {
+  std::array<double, 3> n{};
+  grid.numbers("cells", n, Range::at_least(1));
+  std::array<int, 3> out{};
+  for (int a = 0; a < 3; ++a) {
+    if (n[a] != std::floor(n[a]) || n[a] > 1e8) grid.fail("cells", "expected whole numbers of cells");
+    out[a] = static_cast<int>(n[a]);
+  }
+  return out;
+}
+
+fluid::ViscosityModel viscosity(const Reader& r) {
+  fluid::ViscosityModel model = fluid::ViscosityModel::newtonian(1);
+  switch (r.choice("model", viscosity_names)) {
+    case 0: model = fluid::ViscosityModel::newtonian(r.number("mu", Range::above(0))); break;
+    case 1: {
+      const double k = r.number("consistency", Range::above(0)), n = r.number("index", Range::above(0));
+      const double lo = r.number("mu_min", Range::above(0)), hi = r.number("mu_max", Range::above(0));
+      if (hi < lo) r.fail("mu_max", "must be >= mu_min");
+      model = fluid::ViscosityModel::power_law(k, n, lo, hi);
+      break;
+    }
+    default: {
+      const double mu0 = r.number("mu_zero", Range::above(0)), mu_inf = r.number("mu_infinity", Range::at_least(0));
+      model = fluid::ViscosityModel::carreau(mu0, mu_inf, r.number("time_constant", Range::above(0)),
+                                             r.number("index", Range::above(0)));
+    }
+  }
+  r.finish();
+  return model;
+}
+
+// Peak velocity `u`, times prod 4 s (1 - s) over the face's bounded tangential axes when
+// parabolic (s the position across the axis).
+fluid::VelocityFunction inflow(fluid::Point u, bool parabolic, int axis, const scene::Domain& d,
+                               const std::array<bool, 3>& periodic) {
+  return [=](const fluid::Point& x, double) {
+    double f = 1;
+    for (int t = 0; t < 3; ++t)
+      if (parabolic && t != axis && !periodic[t]) {
+        const double s = (x[t] - d.min[t]) / (d.max[t] - d.min[t]);
+        f *= 4 * s * (1 - s);
+      }
+    return fluid::Point{f * u[0], f * u[1], f * u[2]};
+  };
+}
+
+// Faces not listed are no-slip walls; periodic must hold for both faces of an axis.
+void read_boundaries(const Reader& options, const scene::Domain& domain, FluidSetup& s,
+                     std::array<bool, 3>& periodic) {
+  s.boundaries.fill(Boundary::no_slip());
+  if (!options.has("boundaries")) return;
+  std::array<std::size_t, 6> kind{};
+  const Reader list = options.map("boundaries");
+  for (std::size_t f = 0; f < 6; ++f)
+    if (list.has(face_names[f])) kind[f] = list.map(face_names[f]).choice("type", boundary_names);
+  for (int a = 0; a < 3; ++a) {
+    const bool lo = kind[2 * a] == 3, hi = kind[2 * a + 1] == 3;
+    if (lo != hi) list.fail(face_names[lo ? 2 * a + 1 : 2 * a], "the opposite face is periodic: both faces must be");
+    periodic[a] = lo;
+  }
+  for (std::size_t f = 0; f < 6; ++f) {
+    if (!list.has(face_names[f])) continue;
+    const Reader r = list.map(face_names[f]);
+    r.choice("type", boundary_names);
+    const int axis = static_cast<int>(f / 2);
+    switch (kind[f]) {
+      case 0: s.boundaries[f] = Boundary::moving_wall(point(r.vec3("velocity", {0, 0, 0}))); break;
+      case 1: {
+        const fluid::Point u = point(r.vec3("velocity"));
+        const bool parabolic = r.choice("profile", profile_names, 0) == 1;
+        s.boundaries[f] = Boundary::inflow(inflow(u, parabolic, axis, domain, periodic));
+        break;
+      }
+      case 2: s.boundaries[f] = Boundary::outflow(); break;
+      default: s.boundaries[f] = Boundary::periodic();
+    }
+    r.finish();
+  }
+  list.finish();
+}
+
+// The FBM refuses half-spaces, and a body reaching across a periodic face would be cut.
+void read_bodies(const scene::Scene& scene, const scene::Participant& p, FluidSetup& s) {
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const scene::Body& body = scene.bodies[b];
+    const std::string key = "bodies[" + std::to_string(b) + "].shape.type";
+    if (body.shape.type == scene::ShapeType::Plane)
+      throw scene::SceneError(scene.file.string(), p.line, key, "plane",
+                              "cosim-fluid cannot hold a plane body: make it a wall boundary (participants.fluid)");
+    fluid::RigidBody r{.shape = geometry::shape_of(body.shape), .pose = {}};
+    const auto& o = body.orientation;
+    const Eigen::Quaterniond q(o[0], o[1], o[2], o[3]);
+    const Eigen::Vector3d x = Eigen::Vector3d(body.position[0], body.position[1], body.position[2]) +
+                              q * geometry::com_shift(r.shape);
+    r.pose = geometry::Pose(x, q);
+    s.bodies.push_back(std::move(r));
+    Motion m;
+    m.position = x;
+    m.orientation = q;
+    s.motions.push_back(m);
+  }
+}
+
+}  // namespace
+
+FluidSetup fluid_setup(const scene::Scene& scene) {
+  const scene::Participant& p = section(scene);
+  const Reader options = scene::options_of(scene, p);
+  FluidSetup s;
+
+  std::array<bool, 3> periodic{};
+  read_boundaries(options, scene.domain, s, periodic);
+  const Reader grid = options.map("grid");
+  const std::array<int, 3> n = cells(grid);
+  std::array<double, 3> beta{};
+  if (grid.has("stretching")) grid.numbers("stretching", beta, Range::at_least(0));
+  grid.finish();
+  for (int a = 0; a < 3; ++a) {
+    const double lo = scene.domain.min[a], hi = scene.domain.max[a];
+    s.axes.push_back(beta[a] > 0 ? fluid::Axis::stretched(n[a], lo, hi, beta[a], periodic[a])
+                                 : fluid::Axis::uniform(n[a], lo, hi, periodic[a]));
+  }
+
+  s.properties.density = options.number("density", Range::above(0));
+  s.properties.viscosity = viscosity(options.map("viscosity"));
+  s.initial_velocity = point(options.vec3("initial_velocity", {0, 0, 0}));
+  s.steps.dt_max = p.dt;
+  s.steps.cfl = options.number("cfl", s.steps.cfl, Range::above(0));
+  s.steps.dt_initial = options.number("dt_initial", std::min(s.steps.dt_initial, p.dt), Range::left_open(0, p.dt));
+  s.steps.theta = options.number("theta", s.steps.theta, Range::closed(0.5, 1));
+  s.fbm.subsamples = options.integer("subsamples", s.fbm.subsamples, Range::at_least(1));
+  try {
+    s.petsc = parse_petsc_flags(options.string("petsc", ""));
+  } catch (const std::invalid_argument& e) {
+    options.fail("petsc", e.what());
+  }
+  read_bodies(scene, p, s);
+  s.motions = read_motions(scene, options, std::move(s.motions));
+  options.finish();
+  return s;
+}
+
+}  // namespace cosim::program

@@ -1,0 +1,36 @@
+// The scene as the fluid sees it: participants.fluid (grid, fluid, boundaries, time
+// stepping, FBM, PETSc flags, prescribed motion), the domain and the bodies.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "fluid/axis.hpp"
+#include "fluid/boundary_conditions.hpp"
+#include "fluid/fictitious_boundary.hpp"
+#include "fluid/navier_stokes.hpp"
+#include "fluid/program/petsc_flags.hpp"
+#include "fluid/program/prescribed_motion.hpp"
+#include "scene/scene.hpp"
+
+namespace cosim::program {
+
+struct FluidSetup {
+  std::vector<fluid::Axis> axes;  // x, y, z
+  // Per domain face, index 2 * axis + side (lower 0, upper 1).
+  std::array<fluid::Boundary, 6> boundaries;
+  fluid::FluidProperties properties;
+  fluid::TimeStepOptions steps;
+  fluid::Point initial_velocity{};
+  fluid::FbmOptions fbm;
+  PetscFlags petsc;
+  std::vector<fluid::RigidBody> bodies;  // scene order, centred at their centres of mass
+  std::vector<Motion> motions;           // scene order; used standalone
+};
+
+// Reads participants.fluid and finish()es its options. Throws SceneError naming file, line,
+// key and value for a bad, unknown or missing option, or a body the fluid cannot hold.
+FluidSetup fluid_setup(const scene::Scene& scene);
+
+}  // namespace cosim::program

@@ -1,0 +1,126 @@
+// participants.fluid as cosim-fluid reads it: the setup, the prescribed motion, and errors
+// that name file, line, key and value.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "fluid/program/scene_fluid.hpp"
+#include "program_scenes.hpp"
+#include "scene/error.hpp"
+
+namespace cosim::program {
+namespace {
+
+using testing::oscillating_cylinder_scene;
+
+FluidSetup setup_of(const std::string& text) { return fluid_setup(scene::load_scene_from_string(text, "s.yaml")); }
+
+// The SceneError a scene raises (failing the test if none).
+scene::SceneError error_of(const std::string& text) {
+  try {
+    setup_of(text);
+  } catch (const scene::SceneError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no SceneError for\n" << text;
+  return {"", 0, "", "", ""};
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+TEST(FluidScene, ReadsGridFluidBoundariesAndBodies) {
+  const FluidSetup s = setup_of(oscillating_cylinder_scene(
+      "      cfl: 0.4\n      subsamples: 2\n      petsc: -pressure_pc_type hypre -pressure_ksp_rtol 1e-9\n"));
+  ASSERT_EQ(s.axes.size(), 3u);
+  EXPECT_EQ(s.axes[0].cells(), 16);
+  EXPECT_EQ(s.axes[1].cells(), 8);
+  EXPECT_TRUE(s.axes[2].degenerate());
+  EXPECT_FALSE(s.axes[0].periodic());
+  EXPECT_DOUBLE_EQ(s.axes[0].hi(), 0.4);
+  EXPECT_EQ(s.boundaries[0].kind, fluid::BoundaryKind::wall);
+  EXPECT_EQ(s.properties.density, 1000);
+  EXPECT_DOUBLE_EQ(s.properties.viscosity(5.0), 0.01);
+  EXPECT_EQ(s.steps.dt_max, 0.01);
+  EXPECT_EQ(s.steps.cfl, 0.4);
+  EXPECT_EQ(s.fbm.subsamples, 2);
+  const PetscFlags flags{{"-pressure_pc_type", "hypre"}, {"-pressure_ksp_rtol", "1e-9"}};
+  EXPECT_EQ(s.petsc, flags);
+  ASSERT_EQ(s.bodies.size(), 1u);
+  EXPECT_EQ(s.bodies[0].pose.position(), Eigen::Vector3d(0.2, 0.1, 0.005));
+}
+
+TEST(FluidScene, PrescribedMotionIsFixedConstantOrSinusoidal) {
+  const FluidSetup s = setup_of(oscillating_cylinder_scene());
+  const double t = 0.1, omega = 2 * std::numbers::pi * 2;
+  const std::vector<double> p = poses_at(s.motions, t);
+  ASSERT_EQ(p.size(), 13u);
+  EXPECT_DOUBLE_EQ(p[0], 0.2 + 0.05 * std::sin(omega * t));
+  EXPECT_DOUBLE_EQ(p[7], 0.05 * omega * std::cos(omega * t));
+  EXPECT_EQ(p[3], 1.0);  // orientation unchanged
+
+  // Not listed and free: the scene's velocities, constant; listed fixed: at rest.
+  std::string free = replaced(oscillating_cylinder_scene(), "fixed: true,",
+                              "material: {density: 1000}, velocity: [0.1, 0, 0], angular_velocity: [0, 0, 3.0],");
+  free = replaced(free, "      motion: {cyl: {type: sinusoidal, amplitude: [0.05, 0, 0], frequency: 2}}\n", "");
+  free += "  rigidbody: {dt: 0.01}\n";
+  const std::vector<double> c = poses_at(setup_of(free).motions, 0.5);
+  EXPECT_DOUBLE_EQ(c[0], 0.25);
+  EXPECT_NEAR(c[3], std::cos(0.75), 1e-15);  // 1.5 rad about z: w = cos(0.75)
+  EXPECT_NEAR(c[6], std::sin(0.75), 1e-15);
+  EXPECT_EQ(c[12], 3.0);
+  const std::string fixed = replaced(free, "participants:\n  fluid:\n    dt: 0.01\n    options:\n",
+                                     "participants:\n  fluid:\n    dt: 0.01\n    options:\n      motion: {cyl: {type: fixed}}\n");
+  const std::vector<double> f = poses_at(setup_of(fixed).motions, 0.5);
+  EXPECT_EQ(f[0], 0.2);
+  EXPECT_EQ(f[7], 0.0);
+}
+
+struct BadOption {
+  const char* from;
+  const char* to;
+  const char* key;    // SceneError::key ends with it
+  const char* value;  // as written
+};
+
+TEST(FluidScene, ErrorsNameFileLineKeyAndValue) {
+  const std::string good = oscillating_cylinder_scene();
+  const BadOption cases[] = {
+      {"cells: [16, 8, 1]", "cells: [16.5, 8, 1]", "grid.cells", ""},
+      {"cells: [16, 8, 1]", "cells: [16, 0, 1]", "grid.cells", ""},
+      {"grid: {cells: [16, 8, 1]}", "grid: {cells: [16, 8, 1], stretch: 1}", "grid.stretch", "1"},
+      {"density: 1000", "density: -1", "density", "-1"},
+      {"model: newtonian", "model: bingham", "viscosity.model", "bingham"},
+      {"z_max: {type: periodic}", "z_max: {type: wall}", "boundaries.z_max", ""},
+      {"z_min: {type: periodic}, ", "z_min: {type: periodic}, x_max: {type: outlet}, ", "boundaries.x_max.type", "outlet"},
+      {"motion: {cyl:", "motion: {ball:", "motion.ball", ""},
+      {"type: sinusoidal,", "type: swinging,", "motion.cyl.type", "swinging"},
+      {"frequency: 2", "frequency: 0", "motion.cyl.frequency", "0"},
+      {"density: 1000", "density: 1000\n      petsc: hypre", "petsc", "hypre"},
+  };
+  for (const BadOption& c : cases) {
+    const scene::SceneError e = error_of(replaced(good, c.from, c.to));
+    EXPECT_EQ(e.file, "s.yaml") << c.to;
+    EXPECT_GT(e.line, 0) << c.to;
+    EXPECT_TRUE(e.key.ends_with(c.key)) << c.to << ": key " << e.key;
+    if (*c.value != 0) {
+      EXPECT_EQ(e.value, c.value) << c.to;
+    }
+    EXPECT_NE(std::string(e.what()).find("s.yaml:"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FluidScene, RefusesAPlaneBody) {
+  std::string text = replaced(oscillating_cylinder_scene(), "bodies:\n",
+                              "bodies:\n  - {name: floor, shape: {type: plane, normal: [0, 1, 0]}, fixed: true, position: [0, 0, 0]}\n");
+  const scene::SceneError e = error_of(text);
+  EXPECT_EQ(e.key, "bodies[0].shape.type");
+  EXPECT_NE(std::string(e.what()).find("wall boundary"), std::string::npos) << e.what();
+}
+
+}  // namespace
+}  // namespace cosim::program

@@ -1,0 +1,59 @@
+// The real cosim-fluid: the shipped DFG scene standalone against the benchmark, exit codes,
+// and `cosim run` starting cosim-fluid for a scene whose only effect is hydrodynamics.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "cosim_process.hpp"
+#include "h5_read.hpp"
+#include "program_scenes.hpp"
+#include "standalone_run.hpp"
+
+namespace cosim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(FluidProgram, DfgCylinderStandaloneWritesTheDragHistory) {
+  const auto dir = scratch_dir("fluid_dfg");
+  ASSERT_EQ(run_standalone("cosim-fluid", fs::path(COSIM_CONFIGS_DIR) / "dfg-cylinder.yaml", dir / "dfg.h5"), 0);
+  EXPECT_EQ(read_string_attribute(dir / "dfg.h5", "/run", "status"), "finished");
+  const Series force = read_series(dir / "dfg.h5", "/bodies/cylinder/force");
+  ASSERT_EQ(force.rows, 11u);  // t = 0 and 10 windows
+  // C = 2 F / (rho U_mean^2 D T); at 10 cells per diameter the FBM staircase gives
+  // C_D = 5.34 (reference 5.5795) and C_L about 0.011 (reference 0.0106).
+  const double scale = 2 / (0.2 * 0.2 * 0.1 * 0.01);
+  const std::size_t last = force.rows - 1;
+  EXPECT_NEAR(scale * force.at(last, 0), 5.34, 0.02);
+  EXPECT_NEAR(scale * force.at(last, 1), 0.011, 0.003);
+  EXPECT_NEAR(scale * force.at(last - 1, 0), scale * force.at(last, 0), 1e-3);  // steady
+  const Series substeps = read_series(dir / "dfg.h5", "/coupling/participants/fluid/substeps");
+  EXPECT_GT(substeps.at(1), 10.0);
+}
+
+TEST(FluidProgram, StandaloneReportsSceneErrorsWithExitCode2) {
+  const auto dir = scratch_dir("fluid_bad_option");
+  write_file(dir / "bad.yaml", oscillating_cylinder_scene("      viscosity_model: carreau\n"));
+  EXPECT_EQ(run_standalone("cosim-fluid", dir / "bad.yaml", dir / "bad.h5"), 2);
+}
+
+// Only the fluid starts (the cylinder is fixed): the coupled rows equal the standalone ones.
+TEST(FluidProgram, CosimRunStartsTheFluidAndMatchesStandalone) {
+  const auto dir = scratch_dir("fluid_coupled");
+  std::string scene = oscillating_cylinder_scene("      initial_velocity: [0.01, 0, 0]\n");
+  scene.replace(scene.find("type: sinusoidal, amplitude: [0.05, 0, 0], frequency: 2"), 55, "type: fixed");
+  const auto run = run_scene_text(dir, scene);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("participants: fluid"), std::string::npos) << run.output;
+
+  ASSERT_EQ(run_standalone("cosim-fluid", dir / "scene.yaml", dir / "alone.h5"), 0);
+  const Series coupled = read_series(dir / "scene.h5", "/bodies/cyl/force");
+  const Series alone = read_series(dir / "alone.h5", "/bodies/cyl/force");
+  ASSERT_EQ(coupled.rows, 5u);
+  ASSERT_EQ(alone.rows, coupled.rows);
+  EXPECT_NE(alone.at(4, 0), 0.0);
+  for (std::size_t i = 0; i < alone.values.size(); ++i) EXPECT_EQ(alone.values[i], coupled.values[i]) << i;
+}
+
+}  // namespace
+}  // namespace cosim::testing

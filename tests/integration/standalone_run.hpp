@@ -1,0 +1,12 @@
+// Runs a real solver program (next to the test binary) with --standalone.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace cosim::testing {
+
+// Its exit code, or -1 if it did not exit normally. Output is discarded.
+int run_standalone(const std::string& program, const std::filesystem::path& scene, const std::filesystem::path& out);
+
+}  // namespace cosim::testing
