@@ -62,8 +62,10 @@ std::vector<HydrodynamicLoad> FictitiousBoundary::loads(const NavierStokes& flow
   return out;
 }
 
+const IndicatorPatch& FictitiousBoundary::cell_indicator(std::size_t i) const { return bodies_.at(i).patches[kCellPatch]; }
+
 double FictitiousBoundary::grid_volume(std::size_t i) const {
-  const IndicatorPatch& alpha = bodies_.at(i).patches[kCellPatch];
+  const IndicatorPatch& alpha = cell_indicator(i);
   double volume = 0;
   for_each_index(alpha.range(), [&](const Index& m) { volume += alpha(m) * grid_.cell_volume(m); });
   MPI_Allreduce(MPI_IN_PLACE, &volume, 1, MPI_DOUBLE, MPI_SUM, grid_.comm());

@@ -45,6 +45,8 @@ class FictitiousBoundary {
   // sum of alpha times cell volume over the grid: the body's volume as the grid sees it.
   // Collective.
   double grid_volume(std::size_t i) const;
+  // Body i's alpha at this rank's owned cell centres (zero outside its patch).
+  const IndicatorPatch& cell_indicator(std::size_t i) const;
   // Grid points tested against body i's shape on this rank at its last move (faces of the
   // three components and cell centres).
   std::size_t points_tested(std::size_t i) const;

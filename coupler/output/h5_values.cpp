@@ -191,6 +191,16 @@ std::string read_text(hid_t group, const std::string& name) {
   return take_strings(raw, type.get(), where).front();
 }
 
+void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims,
+                 const double* values) {
+  const std::string where = dataset_where(group, name);
+  Handle ds(H5Dcreate2(group, name.c_str(), H5T_NATIVE_DOUBLE, simple_space(dims, where).get(),
+                       H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+            H5Dclose, "create " + where);
+  check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values),
+        "write " + where);
+}
+
 void create_text_list(hid_t group, const std::string& name) {
   create_extendible(group, name, utf8_string_type().get(), 1, kTextListChunk);
 }

@@ -32,6 +32,10 @@ T read_attribute(hid_t object, const std::string& name);
 void write_text(hid_t group, const std::string& name, const std::string& text);
 std::string read_text(hid_t group, const std::string& name);
 
+// A contiguous float64 dataset of shape dims (row-major), written whole: grid fields.
+void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims,
+                 const double* values);
+
 // A list of strings that only ever grows: a chunked 1-d dataset. Appending frees no file
 // space, where replacing a growing list attribute does (see run_file.hpp on why that
 // matters).

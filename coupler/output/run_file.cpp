@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "output/checkpoint_group.hpp"
+#include "output/field_writer.hpp"
 #include "output/h5_groups.hpp"
 #include "output/h5_handle.hpp"
 #include "output/h5_values.hpp"
@@ -113,6 +114,7 @@ struct RunFile::Impl {
   std::vector<std::string> participants;
   std::optional<Checkpoint> checkpoint;
   std::optional<RunSeries> series;
+  std::optional<FieldWriter> fields;  // from the first field write
   double earlier_wall_seconds = 0.0;  // of the sessions before this one
 
   // Closes the series before the file, with errors quiet: a destructor cannot report them.
@@ -212,6 +214,16 @@ void RunFile::append(const WindowRecord& w) {
   in_file(impl_->path, [&] {
     impl_->series->append(w);
     flush(impl_->file.get());
+  });
+}
+
+void RunFile::write_fields(const std::string& participant, std::uint64_t window, double time,
+                           const FieldFrame& frame) {
+  in_file(impl_->path, [&] {
+    if (!impl_->fields) impl_->fields.emplace(impl_->path);
+    impl_->fields->write(impl_->file.get(), participant, window, time, frame);
+    flush(impl_->file.get());
+    impl_->fields->write_sidecar();
   });
 }
 

@@ -16,6 +16,12 @@
 //                        wall_seconds (n): the whole window
 //   /coupling/participants/<name>/  wall_seconds (n), substeps (n); NaN where a window's
 //                        record had no value for that participant
+//   /fields/<participant>/grid/  x, y, z: node coordinates per axis (rectilinear, so
+//                        stretched axes are exact), written with the first fields
+//   /fields/<participant>/<window>/  attr time; one dataset per cell-centred field,
+//                        (nz, ny, nx) for a scalar, (nz, ny, nx, c) for c components (x
+//                        fastest); <window> is the window index zero-padded to 6 digits.
+//                        cosim-fluid writes velocity (3), pressure and alpha
 //   /checkpoint/         attr current ("a" or "b", fixed-length ASCII): the slot holding the
 //                        checkpoint; absent until the first checkpoint is complete
 //   /checkpoint/{a,b}/   attrs window (last committed window index + 1 = next window),
@@ -36,6 +42,9 @@
 // For the same reason resume() appends to the resumed_by dataset: rewriting a growing list
 // attribute moves /run's object header, and kills inside resume() then left files HDF5
 // could not open ("addr overflow").
+// Fields come with a sidecar <file>.xmf (XDMF 3: one temporal collection of 3DRectMesh
+// grids per participant, referencing the datasets by the run file's name) that ParaView
+// opens; it is rewritten, by rename, after every field write once the file is flushed.
 // The file's descriptor is close-on-exec: participants forked while it is open must not
 // inherit it, nor with it HDF5's lock, which would keep --resume out after a crash.
 // Errors are std::runtime_error naming the file and the HDF5 object.
@@ -47,6 +56,8 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "output/field_frame.hpp"
 
 namespace cosim::output {
 
@@ -114,6 +125,10 @@ class RunFile {
   const Checkpoint& checkpoint() const;  // resume(): what was read; throws if none
 
   void append(const WindowRecord& w);    // writes one row everywhere and flushes
+  // Writes the frame as window `window`'s fields of `participant` at `time`, flushes and
+  // rewrites the sidecar. Fields are not cut back by resume().
+  void write_fields(const std::string& participant, std::uint64_t window, double time,
+                    const FieldFrame& frame);
   // Replaces the checkpoint: writes the other slot, flushes, switches `current`, flushes.
   void write_checkpoint(const Checkpoint& c);
   // wall_seconds: this session's; the file stores it added to the earlier sessions' total.

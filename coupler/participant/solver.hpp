@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "output/field_frame.hpp"
 #include "scene/scene.hpp"
 
 namespace cosim::participant {
@@ -51,6 +52,8 @@ class Solver {
   // Everything needed to continue from here: used for rollback and checkpoints.
   virtual std::vector<double> state() const = 0;
   virtual void restore(const std::vector<double>& state) = 0;
+  // The grid fields to write at output times now; no fields: nothing is written.
+  virtual output::FieldFrame fields() const { return {}; }
 };
 
 }  // namespace cosim::participant

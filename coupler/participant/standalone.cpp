@@ -40,6 +40,8 @@ void run_standalone(const scene::Scene& scene, Solver& solver, const std::string
                  .forces = or_zeros(out.forces, protocol::kForceWidth * bodies.size()),
                  .participant_wall_seconds = {{name, wall}},
                  .participant_substeps = {{name, out.substeps}}});
+    if (const output::FieldFrame fields = solver.fields(); !fields.fields.empty())
+      file.write_fields(name, window, time, fields);
   };
 
   try {

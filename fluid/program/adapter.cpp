@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "fluid/program/cell_fields.hpp"
 #include "fluid/program/petsc_flags.hpp"
 #include "protocol/message.hpp"
 
@@ -113,6 +114,8 @@ participant::Outputs FluidSolver::outputs(double substeps) const {
     forces.insert(forces.end(), {l.force.x(), l.force.y(), l.force.z(), l.torque.x(), l.torque.y(), l.torque.z()});
   return {prescribed_ ? poses_ : std::vector<double>{}, forces, substeps};
 }
+
+output::FieldFrame FluidSolver::fields() const { return cell_fields(flow_->flow, flow_->fbm); }
 
 std::vector<double> FluidSolver::state() const { return flow_->flow.state(); }
 

@@ -26,6 +26,8 @@ class FluidSolver final : public participant::Solver {
   // NavierStokes::state(): the bodies need none, they are placed anew every step.
   std::vector<double> state() const override;
   void restore(const std::vector<double>& state) override;
+  // Cell-centred velocity, pressure and alpha (cell_fields.hpp); one rank only.
+  output::FieldFrame fields() const override;
 
   const fluid::NavierStokes& flow() const;
 

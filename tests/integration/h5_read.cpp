@@ -21,22 +21,40 @@ void check(hid_t id, const std::string& what) {
 
 }  // namespace
 
-Series read_series(const std::filesystem::path& file, const std::string& dataset) {
+Array read_array(const std::filesystem::path& file, const std::string& dataset) {
   Handle f{H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
   check(f.id, file.string());
   Handle d{H5Dopen2(f.id, dataset.c_str(), H5P_DEFAULT), H5Dclose};
   check(d.id, file.string() + ":" + dataset);
   Handle space{H5Dget_space(d.id), H5Sclose};
-  hsize_t dims[2] = {0, 1};
-  const int rank = H5Sget_simple_extent_dims(space.id, dims, nullptr);
-  Series s;
-  s.rows = dims[0];
-  s.cols = rank == 2 ? dims[1] : 1;
-  s.values.resize(s.rows * s.cols);
-  if (!s.values.empty() &&
-      H5Dread(d.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, s.values.data()) < 0)
+  std::vector<hsize_t> dims(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space.id)));
+  H5Sget_simple_extent_dims(space.id, dims.data(), nullptr);
+  Array a;
+  std::size_t n = 1;
+  for (const hsize_t d : dims) {
+    a.dims.push_back(d);
+    n *= d;
+  }
+  a.values.resize(n);
+  if (n > 0 && H5Dread(d.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, a.values.data()) < 0)
     throw std::runtime_error("cannot read values of " + dataset);
-  return s;
+  return a;
+}
+
+double read_double_attribute(const std::filesystem::path& file, const std::string& object, const std::string& name) {
+  Handle f{H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  check(f.id, file.string());
+  Handle a{H5Aopen_by_name(f.id, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  check(a.id, object + "@" + name);
+  double value = 0;
+  if (H5Aread(a.id, H5T_NATIVE_DOUBLE, &value) < 0) throw std::runtime_error("cannot read " + object + "@" + name);
+  return value;
+}
+
+Series read_series(const std::filesystem::path& file, const std::string& dataset) {
+  Array a = read_array(file, dataset);
+  if (a.dims.empty() || a.dims.size() > 2) throw std::runtime_error(dataset + " is not a series");
+  return {std::move(a.values), a.dims[0], a.dims.size() == 2 ? a.dims[1] : 1};
 }
 
 std::string read_string_attribute(const std::filesystem::path& file, const std::string& object,

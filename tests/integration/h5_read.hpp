@@ -13,6 +13,14 @@ struct Series {
   double at(std::size_t row, std::size_t col = 0) const { return values[row * cols + col]; }
 };
 
+// A dataset of any rank, dims slowest first.
+struct Array {
+  std::vector<double> values;
+  std::vector<std::size_t> dims;
+};
+
+Array read_array(const std::filesystem::path& file, const std::string& dataset);
+double read_double_attribute(const std::filesystem::path& file, const std::string& object, const std::string& name);
 Series read_series(const std::filesystem::path& file, const std::string& dataset);
 std::string read_string_attribute(const std::filesystem::path& file, const std::string& object,
                                   const std::string& name);

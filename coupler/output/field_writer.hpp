@@ -1,0 +1,36 @@
+// Grid fields into the run file, /fields/<participant>/..., with the XDMF sidecar kept up to
+// date so ParaView opens the run at any point, a partial one too. Used by RunFile.
+#pragma once
+
+#include <hdf5.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "output/field_frame.hpp"
+#include "output/xdmf.hpp"
+
+namespace cosim::output {
+
+class FieldWriter {
+ public:
+  // h5_path: the run file, whose sidecar is h5_path with extension .xmf.
+  explicit FieldWriter(std::filesystem::path h5_path);
+
+  // Writes the grid (first call per participant; later frames must have the same grid) and
+  // the step group /fields/<participant>/<window, 6+ digits>/<field> with attr time.
+  // Throws ObjectError for a frame whose sizes do not add up.
+  void write(hid_t file, const std::string& participant, std::uint64_t window, double time,
+             const FieldFrame& frame);
+  // Rewrites the sidecar for every step written so far: call it once the file is flushed,
+  // so it never names a dataset that is not on disk.
+  void write_sidecar() const;
+
+ private:
+  std::filesystem::path h5_path_;
+  std::map<std::string, XdmfSeries> series_;  // by participant
+};
+
+}  // namespace cosim::output

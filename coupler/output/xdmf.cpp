@@ -1,0 +1,93 @@
+#include "output/xdmf.hpp"
+
+#include <charconv>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+namespace cosim::output {
+namespace {
+
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// The shortest text that reads back as the double that was written.
+std::string exact(double value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return {text, end};
+}
+
+void data_item(std::ostream& out, const std::string& dims, const std::string& h5_file,
+               const std::string& dataset, const char* indent) {
+  out << indent << "<DataItem Dimensions=\"" << dims << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
+      << escaped(h5_file + ":" + dataset) << "</DataItem>\n";
+}
+
+void write_step(std::ostream& out, const std::string& h5_file, const XdmfSeries& s, const XdmfStep& step) {
+  const auto& n = s.cells;
+  // XDMF orders dimensions slowest first: z, y, x.
+  const std::string nodes = std::to_string(n[2] + 1) + " " + std::to_string(n[1] + 1) + " " + std::to_string(n[0] + 1);
+  const std::string cells = std::to_string(n[2]) + " " + std::to_string(n[1]) + " " + std::to_string(n[0]);
+  out << "      <Grid Name=\"" << escaped(step.group) << "\" GridType=\"Uniform\">\n"
+      << "        <Time Value=\"" << exact(step.time) << "\"/>\n"
+      << "        <Topology TopologyType=\"3DRectMesh\" Dimensions=\"" << nodes << "\"/>\n"
+      << "        <Geometry GeometryType=\"VXVYVZ\">\n";
+  for (int a = 0; a < 3; ++a)
+    data_item(out, std::to_string(n[static_cast<std::size_t>(a)] + 1), h5_file,
+              s.grid_group + "/" + "xyz"[a], "          ");
+  out << "        </Geometry>\n";
+  for (const XdmfField& f : step.fields) {
+    const bool vector = f.components > 1;
+    out << "        <Attribute Name=\"" << escaped(f.name) << "\" AttributeType=\"" << (vector ? "Vector" : "Scalar")
+        << "\" Center=\"Cell\">\n";
+    data_item(out, vector ? cells + " " + std::to_string(f.components) : cells, h5_file, step.group + "/" + f.name,
+              "          ");
+    out << "        </Attribute>\n";
+  }
+  out << "      </Grid>\n";
+}
+
+}  // namespace
+
+std::string xdmf_document(const std::string& h5_file, const std::vector<XdmfSeries>& series) {
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" ?>\n"
+      << "<Xdmf Version=\"3.0\">\n"
+      << "  <Domain>\n";
+  for (const XdmfSeries& s : series) {
+    out << "    <Grid Name=\"" << escaped(s.name) << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const XdmfStep& step : s.steps) write_step(out, h5_file, s, step);
+    out << "    </Grid>\n";
+  }
+  out << "  </Domain>\n"
+      << "</Xdmf>\n";
+  return out.str();
+}
+
+void write_replacing(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::path partial = path;
+  partial += ".partial";
+  {
+    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+    out << text;
+    if (!out.flush()) throw std::runtime_error(partial.string() + ": cannot write");
+  }
+  std::error_code error;
+  std::filesystem::rename(partial, path, error);
+  if (error) throw std::runtime_error(path.string() + ": cannot replace: " + error.message());
+}
+
+}  // namespace cosim::output

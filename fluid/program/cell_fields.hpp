@@ -1,0 +1,15 @@
+// The flow as cell-centred fields for the run file: velocity (3 components, the mean of
+// the two faces normal to each, exact for a linear profile on stretched axes too),
+// pressure, and alpha (the FBM indicator, the largest over the bodies).
+#pragma once
+
+#include "fluid/fictitious_boundary.hpp"
+#include "fluid/navier_stokes.hpp"
+#include "output/field_frame.hpp"
+
+namespace cosim::program {
+
+// One rank only (throws otherwise): the arrays are read directly, not gathered.
+output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::FictitiousBoundary& fbm);
+
+}  // namespace cosim::program

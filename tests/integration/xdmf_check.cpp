@@ -1,0 +1,59 @@
+#include "xdmf_check.hpp"
+
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+namespace cosim::testing {
+namespace {
+
+std::string attribute(const std::string& tag, const std::string& name) {
+  std::smatch m;
+  if (!std::regex_search(tag, m, std::regex(" " + name + "=\"([^\"]*)\""))) return "";
+  return m[1];
+}
+
+// Element names open and close in order; processing instructions stand alone.
+void check_nesting(const std::string& text) {
+  std::vector<std::string> open;
+  const std::regex tag("<(/?)([A-Za-z?!][^ />]*)[^>]*?(/?)>");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), tag); it != std::sregex_iterator(); ++it) {
+    const std::smatch& m = *it;
+    const std::string name = m[2];
+    if (name[0] == '?' || name[0] == '!' || m[3] == "/") continue;
+    if (m[1] == "") {
+      open.push_back(name);
+    } else if (open.empty() || open.back() != name) {
+      throw std::runtime_error("unexpected </" + name + ">");
+    } else {
+      open.pop_back();
+    }
+  }
+  if (!open.empty()) throw std::runtime_error("<" + open.back() + "> is not closed");
+  if (text.find("<Xdmf") == std::string::npos) throw std::runtime_error("no Xdmf element");
+}
+
+}  // namespace
+
+XdmfContents read_xdmf(const std::string& text) {
+  check_nesting(text);
+  XdmfContents c;
+  const std::regex time("<Time ([^>]*)/>");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), time); it != std::sregex_iterator(); ++it)
+    c.times.push_back(std::stod(attribute(" " + (*it)[1].str(), "Value")));
+  const std::regex item("<DataItem([^>]*)>([^<]*)</DataItem>");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), item); it != std::sregex_iterator(); ++it) {
+    XdmfDataItem d;
+    std::istringstream dims(attribute((*it)[1], "Dimensions"));
+    for (std::size_t n = 0; dims >> n;) d.dims.push_back(n);
+    const std::string where = (*it)[2];
+    const std::size_t colon = where.find(':');
+    if (colon == std::string::npos) throw std::runtime_error("DataItem without file:dataset: " + where);
+    d.file = where.substr(0, colon);
+    d.dataset = where.substr(colon + 1);
+    c.items.push_back(d);
+  }
+  return c;
+}
+
+}  // namespace cosim::testing
