@@ -3,6 +3,7 @@
 // one, so in a dense granular bed this layout holds a quarter of the bytes.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -37,7 +38,7 @@ struct ContactSet {
   // The largest overlap -distance, 0 when nothing overlaps.
   double deepest_penetration() const {
     double deepest = 0.0;
-    for (const ContactPoint& p : points) deepest = deepest > -p.distance ? deepest : -p.distance;
+    for (const ContactPoint& p : points) deepest = std::max(deepest, -p.distance);
     return deepest;
   }
 };

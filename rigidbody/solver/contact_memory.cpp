@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -32,18 +31,13 @@ void ContactMemory::recall(const contact::ContactSet& contacts, std::vector<Cach
 }
 
 void ContactMemory::remember(const contact::ContactSet& contacts, std::span<const CachedContact> memory) {
-  // The world hands pairs over sorted already; sorting an index keeps any caller correct.
-  order_.resize(contacts.pairs.size());
-  std::iota(order_.begin(), order_.end(), 0u);
-  std::sort(order_.begin(), order_.end(),
-            [&](std::uint32_t i, std::uint32_t j) { return before(contacts.pairs[i], contacts.pairs[j]); });
-  pairs_.clear();
+  // Sorted pairs let recall() search; the world's pairs come sorted by construction, so
+  // this only checks instead of sorting every substep.
+  if (!std::is_sorted(contacts.pairs.begin(), contacts.pairs.end(), before))
+    throw std::invalid_argument("contact memory: pairs must be sorted by (a, b)");
+  pairs_ = contacts.pairs;
   entries_.clear();
-  for (const std::uint32_t i : order_) {
-    const contact::PairContacts& p = contacts.pairs[i];
-    pairs_.push_back({p.a, p.b, static_cast<std::uint32_t>(entries_.size()), p.count});
-    for (std::uint32_t k = p.first; k < p.first + p.count; ++k) entries_.push_back({contacts.points[k].feature, memory[k]});
-  }
+  for (std::size_t k = 0; k < contacts.points.size(); ++k) entries_.push_back({contacts.points[k].feature, memory[k]});
 }
 
 void ContactMemory::save(std::vector<double>& out) const {

@@ -30,7 +30,9 @@ class ContactMemory {
   // One value per point of `contacts`: the remembered point of the same pair and feature,
   // zero for a new point.
   void recall(const contact::ContactSet& contacts, std::vector<CachedContact>& out) const;
-  // Replaces what is remembered by these points and values (memory: one per point).
+  // Replaces what is remembered by these points and values (memory: one per point). The
+  // pairs must be sorted by (a, b), as the contact graph produces them; throws
+  // std::invalid_argument otherwise.
   void remember(const contact::ContactSet& contacts, std::span<const CachedContact> memory);
   void clear();
   std::size_t size() const { return entries_.size(); }  // points remembered
@@ -50,7 +52,6 @@ class ContactMemory {
   };
   std::vector<contact::PairContacts> pairs_;  // sorted by (a, b); first/count index entries_
   std::vector<Entry> entries_;
-  std::vector<std::uint32_t> order_;  // scratch of remember(), kept for its capacity
 };
 
 }  // namespace cosim::solver

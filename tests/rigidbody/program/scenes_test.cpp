@@ -22,7 +22,7 @@ const fs::path configs = COSIM_CONFIGS_DIR;
 
 struct Runs {
   fs::path dir;
-  Finished coupled;
+  Finished coupled{};
   Series position(const std::string& body) const { return read_series(dir / "scene.h5", "/bodies/" + body + "/position"); }
   Series velocity(const std::string& body) const { return read_series(dir / "scene.h5", "/bodies/" + body + "/velocity"); }
 };

@@ -36,7 +36,11 @@ SolveReport World::step(double dt, const Contacts& contacts, const Solver& solve
   for (std::size_t i = 0; i < states.size(); ++i)
     if (!inertias[i].is_fixed()) states[i].velocity += dt * gravity;
   contact_set.clear();
-  for (const contact::Manifold& m : contacts(states)) contact_set.add(m);
+  // Sorted by pair, as the world's contact graph hands them to the solver.
+  std::vector<contact::Manifold> manifolds = contacts(states);
+  std::sort(manifolds.begin(), manifolds.end(),
+            [](const contact::Manifold& x, const contact::Manifold& y) { return std::pair(x.a, x.b) < std::pair(y.a, y.b); });
+  for (const contact::Manifold& m : manifolds) contact_set.add(m);
   const std::vector<Material> materials(contact_set.pairs.size(), material);
   memory.recall(contact_set, values);
   const SolveReport report = solver({states, inertias, contact_set, materials, dt}, values);

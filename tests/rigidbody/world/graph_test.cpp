@@ -49,6 +49,15 @@ TEST(ContactGraph, RecallsValuesByPairAndFeature) {
   EXPECT_EQ(values[2].normal, 0.0);
 }
 
+// Recall searches the remembered pairs, so they must arrive sorted, as edges are.
+TEST(ContactGraph, RefusesToRememberUnsortedPairs) {
+  ContactGraph graph;
+  graph.contacts().add(touching(2, 3, {1}));
+  graph.contacts().add(touching(0, 1, {1}));
+  graph.recall();
+  EXPECT_THROW(graph.remember(), std::invalid_argument);
+}
+
 TEST(Materials, GeometricMeanFrictionAndMaximumRestitution) {
   const solver::Material m = combine({.friction = 0.2, .restitution = 0.1}, {.friction = 0.8, .restitution = 0.9});
   EXPECT_DOUBLE_EQ(m.friction, 0.4);
