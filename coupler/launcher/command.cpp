@@ -68,6 +68,13 @@ std::map<std::string, std::string> mpi_environment() {
   return env;
 }
 
+bool describes_enclosing_mpi_job(std::string_view variable) {
+  if (variable.starts_with("PMIX_")) return true;
+  if (!variable.starts_with("OMPI_")) return false;
+  if (variable == "OMPI_MCA_ess" || variable == "OMPI_MCA_pmix" || variable.starts_with("OMPI_MCA_orte_")) return true;
+  return !variable.starts_with("OMPI_MCA_") && !variable.starts_with("OMPI_ALLOW_");
+}
+
 fs::path own_directory() { return fs::read_symlink("/proc/self/exe").parent_path(); }
 
 }  // namespace cosim::launcher

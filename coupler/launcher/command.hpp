@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scene/scene.hpp"
@@ -22,6 +23,13 @@ std::vector<std::string> participant_command(const scene::Scene& scene,
 // Variables Open MPI needs to run as root and on one host, added to what the child
 // inherits (never overriding what the user set).
 std::map<std::string, std::string> mpi_environment();
+
+// True for a variable by which Open MPI tells a process it is a rank (or singleton) of a
+// job: PMIX_*, OMPI_* but for the user's OMPI_MCA_* and OMPI_ALLOW_* settings, and the MCA
+// settings of a launched job (ess, orte_*, pmix). An mpirun that inherits them (cosim
+// started from an MPI program, such as a test that initialised PETSc) tries to join that
+// job and fails, so participants are started without them.
+bool describes_enclosing_mpi_job(std::string_view variable);
 
 // Folder holding the running executable.
 std::filesystem::path own_directory();

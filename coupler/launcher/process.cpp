@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "launcher/command.hpp"
+
 namespace cosim::launcher {
 namespace {
 
@@ -39,7 +41,7 @@ Process::Process(std::string name, const std::vector<std::string>& argv,
   for (char** e = environ; *e != nullptr; ++e) {
     const std::string entry = *e;
     const auto key = entry.substr(0, entry.find('='));
-    if (!env.contains(key)) env_strings.push_back(entry);
+    if (!env.contains(key) && !describes_enclosing_mpi_job(key)) env_strings.push_back(entry);
   }
   for (const auto& [k, v] : env) env_strings.push_back(k + "=" + v);
   std::vector<char*> envp;

@@ -1,6 +1,8 @@
 #include "output/field_writer.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
 #include <utility>
 
 #include "output/h5_groups.hpp"
@@ -62,7 +64,39 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
   series.steps.push_back(std::move(entry));
 }
 
+void FieldWriter::resume(hid_t file, std::uint64_t next_window) {
+  if (!has_link(file, "fields")) return;
+  Handle fields = open_group(file, "fields");
+  for (const std::string& participant : link_names(fields.get())) {
+    Handle group = open_group(fields.get(), participant);
+    const std::string base = "/fields/" + participant;
+    Handle grid = open_group(group.get(), "grid");
+    std::array<std::size_t, 3> cells{};
+    for (std::size_t a = 0; a < 3; ++a) cells[a] = array_dims(grid.get(), std::string(1, "xyz"[a])).at(0) - 1;
+    XdmfSeries series{participant, base + "/grid", cells, {}};
+    std::vector<std::pair<std::uint64_t, std::string>> steps;
+    for (const std::string& name : link_names(group.get()))
+      if (name != "grid") steps.emplace_back(std::stoull(name), name);
+    std::sort(steps.begin(), steps.end());  // more than 6 digits sort after 6 by name
+    for (const auto& [window, name] : steps) {
+      if (window > next_window) {
+        delete_link(group.get(), name);
+        continue;
+      }
+      Handle step = open_group(group.get(), name);
+      XdmfStep entry{base + "/" + name, read_attribute<double>(step.get(), "time"), {}};
+      for (const std::string& field : link_names(step.get())) {
+        const auto dims = array_dims(step.get(), field);
+        entry.fields.push_back({field, dims.size() > 3 ? static_cast<int>(dims[3]) : 1});
+      }
+      series.steps.push_back(std::move(entry));
+    }
+    series_.insert_or_assign(participant, std::move(series));
+  }
+}
+
 void FieldWriter::write_sidecar() const {
+  if (series_.empty()) return;  // a run without fields has no sidecar
   std::vector<XdmfSeries> all;
   for (const auto& [_, s] : series_) all.push_back(s);
   std::filesystem::path sidecar = h5_path_;

@@ -24,6 +24,9 @@ class FieldWriter {
   // Throws ObjectError for a frame whose sizes do not add up.
   void write(hid_t file, const std::string& participant, std::uint64_t window, double time,
              const FieldFrame& frame);
+  // For --resume from window `next_window`: unlinks the steps after it, which the resumed
+  // run writes again, and takes those up to it into the sidecar.
+  void resume(hid_t file, std::uint64_t next_window);
   // Rewrites the sidecar for every step written so far: call it once the file is flushed,
   // so it never names a dataset that is not on disk.
   void write_sidecar() const;

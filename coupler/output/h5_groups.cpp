@@ -23,6 +23,21 @@ bool has_link(hid_t parent, const std::string& name) {
   return exists > 0;
 }
 
+std::vector<std::string> link_names(hid_t group) {
+  std::vector<std::string> names;
+  const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
+    static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+    return 0;
+  };
+  check(H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names), "list " + path_of(group));
+  return names;
+}
+
+void delete_link(hid_t parent, const std::string& name) {
+  const std::string where = child_path(parent, name);
+  check(H5Ldelete(parent, name.c_str(), H5P_DEFAULT), "delete " + where);
+}
+
 void flush(hid_t file) { check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush"); }
 
 }  // namespace cosim::output

@@ -4,6 +4,7 @@
 #include <hdf5.h>
 
 #include <string>
+#include <vector>
 
 #include "output/h5_handle.hpp"
 
@@ -13,6 +14,10 @@ Handle create_group(hid_t parent, const std::string& name);
 Handle open_group(hid_t parent, const std::string& name);
 Handle open_or_create_group(hid_t parent, const std::string& name);
 bool has_link(hid_t parent, const std::string& name);
+// The names in a group, in name order.
+std::vector<std::string> link_names(hid_t group);
+// Unlinks name; its object's space becomes free space of the file.
+void delete_link(hid_t parent, const std::string& name);
 // Writes everything HDF5 holds in memory for the file (metadata and raw-data caches).
 void flush(hid_t file);
 

@@ -201,6 +201,17 @@ void write_array(hid_t group, const std::string& name, const std::vector<hsize_t
         "write " + where);
 }
 
+std::vector<hsize_t> array_dims(hid_t group, const std::string& name) {
+  const std::string where = dataset_where(group, name);
+  Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
+  Handle space(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank < 0) fail("shape of " + where);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  check(H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr), "shape of " + where);
+  return dims;
+}
+
 void create_text_list(hid_t group, const std::string& name) {
   create_extendible(group, name, utf8_string_type().get(), 1, kTextListChunk);
 }

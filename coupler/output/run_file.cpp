@@ -114,7 +114,7 @@ struct RunFile::Impl {
   std::vector<std::string> participants;
   std::optional<Checkpoint> checkpoint;
   std::optional<RunSeries> series;
-  std::optional<FieldWriter> fields;  // from the first field write
+  std::optional<FieldWriter> fields;  // from the first field write, or resume()
   double earlier_wall_seconds = 0.0;  // of the sessions before this one
 
   // Closes the series before the file, with errors quiet: a destructor cannot report them.
@@ -192,6 +192,8 @@ RunFile RunFile::resume(const std::filesystem::path& path, const std::string& gi
     }
     impl->series = RunSeries::open(file, impl->bodies, impl->participants);
     impl->series->cut_after(impl->checkpoint->time);
+    impl->fields.emplace(path);
+    impl->fields->resume(file, impl->checkpoint->next_window);
     write_status(file, "running", s.wall_seconds);
     {
       Handle run = open_group(file, "run");
@@ -199,6 +201,7 @@ RunFile RunFile::resume(const std::filesystem::path& path, const std::string& gi
       append_text(run.get(), kResumedBy, git_hash);
     }
     flush(file);
+    impl->fields->write_sidecar();
     return RunFile(std::move(impl));
   });
 }

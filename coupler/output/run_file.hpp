@@ -114,7 +114,8 @@ class RunFile {
   static RunSummary peek(const std::filesystem::path& path);
   // Opens an existing run file for --resume: reads /run and /checkpoint, cuts every series
   // back to the checkpoint time so the resumed run appends exactly after it, sets status
-  // "running" and appends git_hash (the resuming build's) to resumed_by.
+  // "running" and appends git_hash (the resuming build's) to resumed_by. Field steps after
+  // the checkpoint's window are unlinked too and the sidecar rewritten without them.
   static RunFile resume(const std::filesystem::path& path, const std::string& git_hash);
 
   RunFile(RunFile&&) noexcept;
@@ -126,7 +127,7 @@ class RunFile {
 
   void append(const WindowRecord& w);    // writes one row everywhere and flushes
   // Writes the frame as window `window`'s fields of `participant` at `time`, flushes and
-  // rewrites the sidecar. Fields are not cut back by resume().
+  // rewrites the sidecar.
   void write_fields(const std::string& participant, std::uint64_t window, double time,
                     const FieldFrame& frame);
   // Replaces the checkpoint: writes the other slot, flushes, switches `current`, flushes.

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <iostream>
 
+#include "protocol/field_message.hpp"
+
 namespace cosim::participant {
 namespace {
 
@@ -40,8 +42,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std::uint32_t needs) {
-  const Message init = client.hello(provides, needs);
+int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std::uint32_t needs,
+          std::uint32_t ranks) {
+  const Message init = client.hello(provides, needs, ranks);
   const auto texts = init.all(Tag::Text);
   if (texts.size() != 2) throw protocol::ProtocolError("Init must carry the scene file and text");
   const auto scene = scene::load_scene_from_string(texts[1]->bytes, texts[0]->bytes);
@@ -55,7 +58,7 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
 
   std::vector<double> window_start;
   for (;;) {
-    Message m = client.wait_for({Type::Advance, Type::Commit, Type::Checkpoint, Type::Stop});
+    Message m = client.wait_for({Type::Advance, Type::Commit, Type::Checkpoint, Type::Field, Type::Stop});
     switch (m.header.type) {
       case Type::Advance: {
         const Window w{m.header.window, m.header.iteration, m.header.t0, m.header.t1};
@@ -80,6 +83,14 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
         client.reply(std::move(state));
         break;
       }
+      case Type::Field: {  // the coupler's writer asks for the fields at the committed time
+        Message fields;
+        fields.header.type = Type::Field;
+        fields.header.window = m.header.window;
+        fields.arrays = protocol::field_arrays(solver.fields());
+        client.reply(std::move(fields));
+        break;
+      }
       case Type::Commit:
         break;
       default: {  // Stop
@@ -95,9 +106,9 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
 }  // namespace
 
 int run_participant(protocol::Client& client, Solver& solver, std::uint32_t provides,
-                    std::uint32_t needs) {
+                    std::uint32_t needs, std::uint32_t ranks) {
   try {
-    return serve(client, solver, provides, needs);
+    return serve(client, solver, provides, needs, ranks);
   } catch (const protocol::Aborted& e) {
     std::cerr << client.name() << ": " << e.what() << "\n";
   } catch (const std::exception& e) {

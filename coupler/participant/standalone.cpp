@@ -40,13 +40,17 @@ void run_standalone(const scene::Scene& scene, Solver& solver, const std::string
                  .forces = or_zeros(out.forces, protocol::kForceWidth * bodies.size()),
                  .participant_wall_seconds = {{name, wall}},
                  .participant_substeps = {{name, out.substeps}}});
+  };
+  const std::uint64_t n = scene.windows();
+  const auto write_fields = [&](std::uint64_t done, double time) {
+    if (!scene.output.fields_at(done, n)) return;
     if (const output::FieldFrame fields = solver.fields(); !fields.fields.empty())
-      file.write_fields(name, window, time, fields);
+      file.write_fields(name, done, time, fields);
   };
 
   try {
     record(0, 0.0, initial, 0, 0.0);
-    const std::uint64_t n = scene.windows();
+    write_fields(0, 0.0);
     for (std::uint64_t k = 0; k < n; ++k) {
       const auto window_started = clock::now();
       // Window bounds computed as the coupler does, so both runs take identical steps.
@@ -55,6 +59,7 @@ void run_standalone(const scene::Scene& scene, Solver& solver, const std::string
       const Outputs out = solver.advance(w, {});
       if ((k + 1) % static_cast<std::uint64_t>(scene.output.every) == 0 || k + 1 == n)
         record(k + 1, w.t1, out, 1, seconds_since(window_started));
+      write_fields(k + 1, w.t1);
     }
   } catch (const std::exception& e) {
     file.set_status(std::string("failed: ") + e.what(), seconds_since(started));

@@ -14,7 +14,8 @@ namespace cosim::participant {
 // Writes `output` (empty: the scene's output.file): rows as the coupler writes them, the
 // initial state as window 0 (0 iterations), then every output.every-th window and the
 // last, with 1 iteration; poses and forces as the solver reports them, zeros where it
-// reports none, and with each row the solver's fields() if it has any (run_file.hpp).
+// reports none; and the solver's fields(), if it has any, at the scene's fields times
+// (output.fields_every, run_file.hpp).
 // Throws SceneError for a bad scene, std::runtime_error otherwise.
 void run_standalone(const scene::Scene& scene, Solver& solver, const std::string& name,
                     std::filesystem::path output);

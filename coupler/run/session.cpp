@@ -9,6 +9,7 @@
 
 #include "launcher/command.hpp"
 #include "protocol/client.hpp"
+#include "protocol/field_message.hpp"
 #include "run/failure.hpp"
 #include "run/progress.hpp"
 #include "scene/error.hpp"
@@ -162,6 +163,7 @@ void Session::handshake(Peers& peers) {
   for (const auto& name : roles_.force_providers)
     current_.forces += take(ready.at(name), protocol::Tag::Forces, b * kForceSize, when);
   record(0, 0.0, WindowResult{current_, 0, 0.0, true, {}, {}}, 0.0);
+  write_fields(peers, 0);
   checkpoint(peers, 0);
 }
 
@@ -186,6 +188,7 @@ void Session::windows(Peers& peers) {
     const double wall = std::chrono::duration<double>(clock::now() - started).count();
     if ((k + 1) % static_cast<std::uint64_t>(scene_.output.every) == 0 || last)
       record(k + 1, t1, r, wall);
+    write_fields(peers, k + 1);
     if ((k + 1) % static_cast<std::uint64_t>(scene_.output.checkpoint_every) == 0 || last)
       checkpoint(peers, k + 1);
     progress.update(k, t1, r.iterations);
@@ -207,6 +210,31 @@ void Session::record(std::uint64_t window, double time, const WindowResult& r, d
     rec.participant_substeps[name] = r.substeps.contains(name) ? r.substeps.at(name) : 0.0;
   }
   file_->append(rec);
+}
+
+void Session::write_fields(Peers& peers, std::uint64_t windows_done) {
+  if (!scene_.output.fields_at(windows_done, scene_.windows())) return;
+  const double time = window_start(windows_done);
+  std::map<std::string, protocol::Message> requests;
+  for (const auto& [name, provides] : roles_.provides)
+    if (scene::has(provides, scene::Data::Fields)) {
+      protocol::Message m;
+      m.header.type = protocol::Type::Field;
+      m.header.window = windows_done;
+      m.header.t0 = m.header.t1 = time;
+      requests.emplace(name, std::move(m));
+    }
+  if (requests.empty()) return;
+  const auto when = fmt::format("while writing fields at t = {} s", time);
+  for (const auto& [name, m] : peers.exchange(std::move(requests), protocol::Type::Field, when)) {
+    output::FieldFrame frame;
+    try {
+      frame = protocol::field_frame(m);
+    } catch (const protocol::ProtocolError& e) {
+      throw ParticipantFailure(name, e.what(), when);
+    }
+    if (!frame.fields.empty()) file_->write_fields(name, windows_done, time, frame);
+  }
 }
 
 void Session::checkpoint(Peers& peers, std::uint64_t next_window) {

@@ -40,6 +40,8 @@ class Session {
   void handshake(Peers& peers);
   void windows(Peers& peers);
   void record(std::uint64_t window, double time, const WindowResult& r, double wall);
+  // At the scene's fields times, every participant that provides fields sends them.
+  void write_fields(Peers& peers, std::uint64_t windows_done);
   void checkpoint(Peers& peers, std::uint64_t next_window);
 
   scene::Scene scene_;

@@ -52,6 +52,7 @@ Output read_output(const Reader& r) {
   if (o.file.empty()) r.fail("file", "must not be empty");
   o.every = r.integer("every", o.every, Range::at_least(1));
   o.checkpoint_every = r.integer("checkpoint_every", o.checkpoint_every, Range::at_least(1));
+  o.fields_every = r.integer("fields_every", o.fields_every, Range::at_least(0));
   r.finish();
   return o;
 }

@@ -48,6 +48,11 @@ struct Output {
   std::string file = "run.h5";             // relative to the working directory
   int every = 1;                           // write body series every N windows
   int checkpoint_every = 10;               // checkpoint every N windows
+  int fields_every = 10;                   // grid fields at t = 0, every N windows and the last; 0: none
+  // Whether window k's end (k + 1 windows done) is a fields time; the start is window_done = 0.
+  bool fields_at(std::uint64_t windows_done, std::uint64_t windows) const {
+    return fields_every > 0 && (windows_done % static_cast<std::uint64_t>(fields_every) == 0 || windows_done == windows);
+  }
 };
 
 struct Domain {

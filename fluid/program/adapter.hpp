@@ -26,7 +26,7 @@ class FluidSolver final : public participant::Solver {
   // NavierStokes::state(): the bodies need none, they are placed anew every step.
   std::vector<double> state() const override;
   void restore(const std::vector<double>& state) override;
-  // Cell-centred velocity, pressure and alpha (cell_fields.hpp); one rank only.
+  // Cell-centred velocity, pressure and alpha (cell_fields.hpp), whole on rank 0; collective.
   output::FieldFrame fields() const override;
 
   const fluid::NavierStokes& flow() const;

@@ -1,7 +1,7 @@
 #include "fluid/program/cell_fields.hpp"
 
 #include <algorithm>
-#include <stdexcept>
+#include <functional>
 
 #include "fluid/petsc_check.hpp"
 
@@ -16,60 +16,92 @@ std::vector<double> nodes(const fluid::Axis& axis) {
   return x;
 }
 
-// Cell index (k slowest, i fastest) into values of `components` per cell.
-std::size_t at(const Index& c, const std::array<PetscInt, 3>& n) {
-  return static_cast<std::size_t>((c[2] * n[1] + c[1]) * n[0] + c[0]);
+// A cell-centred global vector in the DMDA's natural order (i fastest, as the frame wants)
+// on rank 0; empty on the other ranks.
+std::vector<double> on_rank_zero(DM dm, Vec global) {
+  Vec natural = nullptr, all = nullptr;
+  VecScatter to_zero = nullptr;
+  COSIM_PETSC(DMDACreateNaturalVector(dm, &natural));
+  COSIM_PETSC(DMDAGlobalToNaturalBegin(dm, global, INSERT_VALUES, natural));
+  COSIM_PETSC(DMDAGlobalToNaturalEnd(dm, global, INSERT_VALUES, natural));
+  COSIM_PETSC(VecScatterCreateToZero(natural, &to_zero, &all));
+  COSIM_PETSC(VecScatterBegin(to_zero, natural, all, INSERT_VALUES, SCATTER_FORWARD));
+  COSIM_PETSC(VecScatterEnd(to_zero, natural, all, INSERT_VALUES, SCATTER_FORWARD));
+  PetscInt n = 0;
+  const PetscScalar* a = nullptr;
+  COSIM_PETSC(VecGetLocalSize(all, &n));
+  COSIM_PETSC(VecGetArrayRead(all, &a));
+  std::vector<double> out(a, a + n);
+  COSIM_PETSC(VecRestoreArrayRead(all, &a));
+  COSIM_PETSC(VecScatterDestroy(&to_zero));
+  COSIM_PETSC(VecDestroy(&all));
+  COSIM_PETSC(VecDestroy(&natural));
+  return out;
 }
 
-// Face c of a periodic axis past the last cell is the first one again.
-Index upper_face(const fluid::Grid& grid, Index cell, int c) {
-  const std::size_t d = static_cast<std::size_t>(c);
-  cell[d] += 1;
-  if (grid.axis(c).periodic() && cell[d] == grid.axis(c).cells()) cell[d] = 0;
-  return cell;
+// A cell field that starts at zero and `fill` sets on owned cells, gathered on rank 0.
+std::vector<double> cell_values(const fluid::Grid& grid, const std::function<void(PetscScalar***)>& fill) {
+  DM dm = grid.cell_dm();
+  Vec v = nullptr;
+  PetscScalar*** a = nullptr;
+  COSIM_PETSC(DMGetGlobalVector(dm, &v));
+  COSIM_PETSC(VecZeroEntries(v));
+  COSIM_PETSC(DMDAVecGetArray(dm, v, &a));
+  fill(a);
+  COSIM_PETSC(DMDAVecRestoreArray(dm, v, &a));
+  std::vector<double> out = on_rank_zero(dm, v);
+  COSIM_PETSC(DMRestoreGlobalVector(dm, &v));
+  return out;
+}
+
+// Component c at the cell centres: the mean of the cell's two faces normal to c. The upper
+// face may be the next rank's (or, on a periodic axis, the first face again), so the faces
+// are read from a ghosted copy.
+std::vector<double> centred_velocity(const fluid::Grid& grid, Vec u, int c) {
+  DM dm = grid.velocity_dm(c);
+  Vec local = nullptr;
+  const PetscScalar*** a = nullptr;
+  COSIM_PETSC(DMGetLocalVector(dm, &local));
+  COSIM_PETSC(DMGlobalToLocalBegin(dm, u, INSERT_VALUES, local));
+  COSIM_PETSC(DMGlobalToLocalEnd(dm, u, INSERT_VALUES, local));
+  COSIM_PETSC(DMDAVecGetArrayRead(dm, local, &a));
+  std::vector<double> out = cell_values(grid, [&](PetscScalar*** cell) {
+    fluid::for_each_index(grid.owned(grid.cell_dm()), [&](const Index& p) {
+      const Index q = fluid::shifted(p, c, 1);
+      cell[p[2]][p[1]][p[0]] = 0.5 * (a[p[2]][p[1]][p[0]] + a[q[2]][q[1]][q[0]]);
+    });
+  });
+  COSIM_PETSC(DMDAVecRestoreArrayRead(dm, local, &a));
+  COSIM_PETSC(DMRestoreLocalVector(dm, &local));
+  return out;
 }
 
 }  // namespace
 
 output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::FictitiousBoundary& fbm) {
   const fluid::Grid& grid = flow.grid();
-  PetscMPIInt ranks = 0;
-  MPI_Comm_size(grid.comm(), &ranks);
-  if (ranks != 1) throw std::runtime_error("fluid field output runs on one rank only");
-
-  const auto n = grid.cells();
-  const std::size_t cells = static_cast<std::size_t>(n[0] * n[1] * n[2]);
-  const fluid::Box all = grid.owned(grid.pressure_dm());
   output::FieldFrame frame;
   for (int a = 0; a < 3; ++a) frame.grid.nodes[static_cast<std::size_t>(a)] = nodes(grid.axis(a));
 
-  output::CellField velocity{"velocity", 3, std::vector<double>(3 * cells)};
-  for (int c = 0; c < 3; ++c) {
-    PetscScalar*** u = nullptr;
-    COSIM_PETSC(DMDAVecGetArrayRead(grid.velocity_dm(c), flow.velocity(c), &u));
-    fluid::for_each_index(all, [&](const Index& p) {
-      const Index q = upper_face(grid, p, c);
-      velocity.values[3 * at(p, n) + static_cast<std::size_t>(c)] = 0.5 * (u[p[2]][p[1]][p[0]] + u[q[2]][q[1]][q[0]]);
-    });
-    COSIM_PETSC(DMDAVecRestoreArrayRead(grid.velocity_dm(c), flow.velocity(c), &u));
-  }
+  std::array<std::vector<double>, 3> u;
+  for (int c = 0; c < 3; ++c) u[static_cast<std::size_t>(c)] = centred_velocity(grid, flow.velocity(c), c);
+  std::vector<double> pressure = on_rank_zero(grid.pressure_dm(), flow.pressure());
+  // Only each body's own cells are visited (its patch lies within this rank's cells).
+  std::vector<double> alpha = cell_values(grid, [&](PetscScalar*** a) {
+    for (std::size_t b = 0; b < fbm.size(); ++b) {
+      const fluid::IndicatorPatch& body = fbm.cell_indicator(b);
+      fluid::for_each_index(body.range(), [&](const Index& m) {
+        PetscScalar& largest = a[m[2]][m[1]][m[0]];
+        largest = std::max(largest, body(m));
+      });
+    }
+  });
+  if (pressure.empty()) return frame;  // not rank 0
 
-  output::CellField pressure{"pressure", 1, std::vector<double>(cells)};
-  PetscScalar*** p = nullptr;
-  COSIM_PETSC(DMDAVecGetArrayRead(grid.pressure_dm(), flow.pressure(), &p));
-  fluid::for_each_index(all, [&](const Index& m) { pressure.values[at(m, n)] = p[m[2]][m[1]][m[0]]; });
-  COSIM_PETSC(DMDAVecRestoreArrayRead(grid.pressure_dm(), flow.pressure(), &p));
-
-  output::CellField alpha{"alpha", 1, std::vector<double>(cells, 0.0)};
-  for (std::size_t b = 0; b < fbm.size(); ++b) {
-    const fluid::IndicatorPatch& body = fbm.cell_indicator(b);
-    fluid::for_each_index(body.range(), [&](const Index& m) {
-      double& a = alpha.values[at(m, n)];
-      a = std::max(a, body(m));
-    });
-  }
-
-  frame.fields = {std::move(velocity), std::move(pressure), std::move(alpha)};
+  output::CellField velocity{"velocity", 3, std::vector<double>(3 * pressure.size())};
+  for (std::size_t i = 0; i < pressure.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c) velocity.values[3 * i + c] = u[c][i];
+  frame.fields = {std::move(velocity), {"pressure", 1, std::move(pressure)}, {"alpha", 1, std::move(alpha)}};
   return frame;
 }
 

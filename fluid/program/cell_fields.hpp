@@ -9,7 +9,8 @@
 
 namespace cosim::program {
 
-// One rank only (throws otherwise): the arrays are read directly, not gathered.
+// Collective: every rank computes its own cells and rank 0 receives the whole grid in the
+// frame's order (other ranks get the grid's nodes and no fields).
 output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::FictitiousBoundary& fbm);
 
 }  // namespace cosim::program

@@ -1,10 +1,12 @@
 // cosim-fluid: the fluid program.
 //   started by `cosim run` (COSIM_ENDPOINT set)       a coupled participant
 //   cosim-fluid --standalone scene.yaml [-o f.h5]      bodies in prescribed motion
-// Arguments CLI11 does not know (-ksp_*, -pc_*, -log_view ...) go to PETSc.
+// Arguments CLI11 does not know (-ksp_*, -pc_*, -log_view ...) go to PETSc. Under mpirun
+// rank 0 talks to the coupler or writes the run file, the others follow (mpi_team.hpp).
 #include <CLI/CLI.hpp>
 #include <petscsys.h>
 
+#include <cstdlib>
 #include <functional>
 #include <iostream>
 
@@ -12,23 +14,30 @@
 
 #include "fluid/program/adapter.hpp"
 #include "fluid/program/standalone.hpp"
+#include "participant/mpi_team.hpp"
 #include "participant/run_participant.hpp"
 #include "scene/error.hpp"
 
 namespace {
 
-int coupled(cosim::protocol::Client& client) {
+int coupled() {
   cosim::program::FluidSolver solver;
-  using cosim::scene::Data;
-  // Able to take poses and give forces; the coupler's plan decides what actually flows.
-  return cosim::participant::run_participant(client, solver, static_cast<std::uint32_t>(Data::Forces),
-                                             static_cast<std::uint32_t>(Data::Poses));
+  return cosim::participant::run_on_ranks(solver, PETSC_COMM_WORLD, [](cosim::participant::Solver& lead) {
+    using cosim::scene::Data;
+    int ranks = 1;
+    MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+    auto client = cosim::protocol::Client::from_environment();
+    // Able to take poses and give forces and fields; the coupler's plan decides what flows.
+    return cosim::participant::run_participant(*client, lead,
+                                               static_cast<std::uint32_t>(Data::Forces) |
+                                                   static_cast<std::uint32_t>(Data::Fields),
+                                               static_cast<std::uint32_t>(Data::Poses), static_cast<std::uint32_t>(ranks));
+  });
 }
 
 int standalone(const std::string& scene, const std::string& output) {
   try {
-    cosim::program::run_fluid_standalone(scene, output);
-    return 0;
+    return cosim::program::run_fluid_standalone(scene, output);
   } catch (const cosim::scene::SceneError& e) {
     std::cerr << "cosim-fluid: invalid scene: " << e.what() << "\n";
     return 2;
@@ -57,8 +66,7 @@ int with_petsc(std::vector<std::string> args, const std::function<int()>& body) 
 int main(int argc, char** argv) {
   // The coupler prints participants' output among its own: say whose a warning is.
   spdlog::set_pattern("cosim-fluid: %^%l%$: %v");
-  if (auto client = cosim::protocol::Client::from_environment())
-    return with_petsc({argv + 1, argv + argc}, [&] { return coupled(*client); });
+  if (std::getenv(cosim::protocol::kEndpointEnv) != nullptr) return with_petsc({argv + 1, argv + argc}, coupled);
 
   CLI::App app{"cosim-fluid: Navier-Stokes with fictitious-boundary bodies; coupled through cosim run, or --standalone"};
   app.allow_extras();

@@ -6,8 +6,10 @@
 
 namespace cosim::program {
 
-// Writes `output` (empty: the scene's output.file). Throws SceneError for a bad scene,
-// std::runtime_error otherwise. PETSc must be initialised.
-void run_fluid_standalone(const std::filesystem::path& scene_file, std::filesystem::path output);
+// Writes `output` (empty: the scene's output.file) from rank 0; on the ranks of
+// PETSC_COMM_WORLD together. Returns the exit code (0 on rank 0: the lead throws instead).
+// Throws SceneError for a bad scene, std::runtime_error otherwise. PETSc must be
+// initialised.
+int run_fluid_standalone(const std::filesystem::path& scene_file, std::filesystem::path output);
 
 }  // namespace cosim::program

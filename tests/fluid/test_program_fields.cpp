@@ -7,6 +7,7 @@
 
 #include "cosim_process.hpp"
 #include "h5_read.hpp"
+#include "program_scenes.hpp"
 #include "standalone_run.hpp"
 #include "xdmf_check.hpp"
 
@@ -14,32 +15,6 @@ namespace cosim::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Uniform inflow at 0.1 m/s past a fixed cylinder, periodic across: 16 x 8 x 1 cells, 0.025 m
-// across and along x stretched towards both ends (symmetric, so cell 8 starts at x = 0.2),
-// three output times (0, 0.05, 0.1).
-const char* const kChannel = R"(time: {end: 0.1}
-coupling: {window: 0.05, scheme: serial-explicit}
-domain: {min: [0, 0, 0], max: [0.4, 0.2, 0.01]}
-effects: [hydrodynamics]
-bodies:
-  - {name: cyl, shape: {type: cylinder, radius: 0.03, height: 0.01}, fixed: true, position: [0.2, 0.1, 0.005]}
-participants:
-  fluid:
-    dt: 0.01
-    options:
-      density: 1000
-      viscosity: {model: newtonian, mu: 0.01}
-      grid: {cells: [16, 8, 1], stretching: [1, 0, 0]}
-      boundaries:
-        x_min: {type: inflow, velocity: [0.1, 0, 0]}
-        x_max: {type: outflow}
-        y_min: {type: periodic}
-        y_max: {type: periodic}
-        z_min: {type: periodic}
-        z_max: {type: periodic}
-      initial_velocity: [0.1, 0, 0]
-)";
 
 std::string text_of(const fs::path& file) {
   std::ifstream in(file);
@@ -52,7 +27,7 @@ class FluidFields : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = scratch_dir("fluid_fields");
-    write_file(dir_ / "channel.yaml", kChannel);
+    write_file(dir_ / "channel.yaml", channel_scene());
     exit_code_ = run_standalone("cosim-fluid", dir_ / "channel.yaml", dir_ / "fields.h5");
   }
   static fs::path h5() { return dir_ / "fields.h5"; }

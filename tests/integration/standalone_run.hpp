@@ -6,7 +6,9 @@
 
 namespace cosim::testing {
 
-// Its exit code, or -1 if it did not exit normally. Output is discarded.
-int run_standalone(const std::string& program, const std::filesystem::path& scene, const std::filesystem::path& out);
+// Its exit code, or -1 if it did not exit normally. Output is discarded. ranks > 1: under
+// `mpirun -n ranks`, with the environment cosim's launcher gives it.
+int run_standalone(const std::string& program, const std::filesystem::path& scene, const std::filesystem::path& out,
+                   int ranks = 1);
 
 }  // namespace cosim::testing

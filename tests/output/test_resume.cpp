@@ -77,6 +77,43 @@ TEST_F(ResumeTest, CutsSeriesToTheCheckpointAndContinues) {
   EXPECT_EQ(f.dims("/coupling/participants/tracer/substeps"), (std::vector<hsize_t>{7}));
 }
 
+// A 2 x 1 x 1 grid with one scalar whose value is the window, written at windows 0..4
+// around a checkpoint after window 2, as a run killed after window 4.
+FieldFrame frame_of(std::uint64_t window) {
+  return {{{{{0.0, 0.5, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}}, {{"p", 1, {double(window), double(window)}}}};
+}
+
+void write_interrupted_run_with_fields(const std::filesystem::path& path) {
+  RunFile run = RunFile::create(path, RunInfo{"scene: 1\n", "s.yaml", "abc", "0.1.0", 2}, kBodies, kParticipants);
+  for (std::uint64_t k = 0; k < 5; ++k) {
+    run.append(sample_window(k, kDt, kBodies.size(), kParticipants));
+    run.write_fields("fluid", k, kDt * double(k), frame_of(k));
+    if (k == 2) run.write_checkpoint(checkpoint_after(k));
+  }
+}
+
+std::string file_bytes(const std::filesystem::path& path);
+
+// The steps after the checkpoint go with the rows; the sidecar names what is left, and the
+// resumed run writes those windows anew.
+TEST_F(ResumeTest, CutsFieldsToTheCheckpointAndRewritesTheSidecar) {
+  const auto path = file("run.h5");
+  write_interrupted_run_with_fields(path);
+  {
+    RunFile run = RunFile::resume(path, "d1e2f3");
+    ReadFile f(path);
+    EXPECT_TRUE(f.has("/fields/fluid/000003"));  // the checkpoint's own time
+    EXPECT_FALSE(f.has("/fields/fluid/000004"));
+    const std::string sidecar = file_bytes(file("run.xmf"));
+    EXPECT_NE(sidecar.find("/fields/fluid/000003/p"), std::string::npos);
+    EXPECT_EQ(sidecar.find("/fields/fluid/000004"), std::string::npos);
+    run.write_fields("fluid", 4, 0.4, frame_of(40));
+  }
+  ReadFile f(path);
+  EXPECT_EQ(f.doubles("/fields/fluid/000004/p"), (std::vector<double>{40.0, 40.0}));
+  EXPECT_NE(file_bytes(file("run.xmf")).find("/fields/fluid/000004/p"), std::string::npos);
+}
+
 std::string file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

@@ -33,6 +33,7 @@ TEST(LoadScene, ReadsEveryKeyOfAFullScene) {
   EXPECT_EQ(s.output.file, "out/run.h5");
   EXPECT_EQ(s.output.every, 2);
   EXPECT_EQ(s.output.checkpoint_every, 20);
+  EXPECT_EQ(s.output.fields_every, 5);
   EXPECT_EQ(s.gravity, (Vec3{0, -9.81, 0}));
   EXPECT_EQ(s.domain.min, (Vec3{0, 0, 0}));
   EXPECT_EQ(s.domain.max, (Vec3{1, 1, 2}));
@@ -115,6 +116,7 @@ TEST(LoadScene, AppliesDefaults) {
   EXPECT_EQ(s.output.file, "run.h5");
   EXPECT_EQ(s.output.every, 1);
   EXPECT_EQ(s.output.checkpoint_every, 10);
+  EXPECT_EQ(s.output.fields_every, 10);
   EXPECT_EQ(s.gravity, (Vec3{0, 0, -9.81}));
   const Body& b = s.bodies.at(0);
   EXPECT_FALSE(b.fixed);
@@ -167,6 +169,18 @@ TEST(LoadScene, NamesUseTheWordsOfTheFile) {
   EXPECT_STREQ(to_string(Acceleration::None), "none");
   EXPECT_STREQ(to_string(Effect::RarefiedGas), "rarefied_gas");
   EXPECT_STREQ(to_string(Effect::Tracers), "tracers");
+}
+
+TEST(LoadScene, FieldsAtTheStartEveryNWindowsAndTheEnd) {
+  Output o;
+  o.fields_every = 4;
+  std::vector<std::uint64_t> at;
+  for (std::uint64_t done = 0; done <= 10; ++done)
+    if (o.fields_at(done, 10)) at.push_back(done);
+  EXPECT_EQ(at, (std::vector<std::uint64_t>{0, 4, 8, 10}));
+  o.fields_every = 0;
+  EXPECT_FALSE(o.fields_at(0, 10));
+  EXPECT_FALSE(o.fields_at(10, 10));
 }
 
 }  // namespace

@@ -52,15 +52,21 @@ TEST(Plan, HydrodynamicsCouplesFluidAndBodies) {
   EXPECT_EQ(names(plan), (Names{"rigidbody", "fluid"}));
   EXPECT_EQ(plan.start[0].provides, poses);
   EXPECT_EQ(plan.start[0].needs, forces);
-  EXPECT_EQ(plan.start[1].provides, forces);
+  EXPECT_EQ(plan.start[1].provides, forces | fields);  // the run file takes its fields
   EXPECT_EQ(plan.start[1].needs, poses);
 }
 
 TEST(Plan, HydrodynamicsAroundFixedBodiesIsFluidOnly) {
   const Plan plan = plan_for("[hydrodynamics]", true);
   EXPECT_EQ(names(plan), Names{"fluid"});
-  EXPECT_EQ(plan.start[0].provides, forces);
+  EXPECT_EQ(plan.start[0].provides, forces | fields);
   EXPECT_EQ(plan.start[0].needs, 0u);
+}
+
+TEST(Plan, WithoutFieldOutputTheFluidSendsOnlyForces) {
+  const std::string scene = head + "output: {fields_every: 0}\neffects: [hydrodynamics]\n" + all_builtins;
+  const Plan plan = plan_participants(load_scene_from_string(scene));
+  EXPECT_EQ(plan.start.at(0).provides, forces);
 }
 
 TEST(Plan, TracersRideTheFluid) {

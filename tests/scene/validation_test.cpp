@@ -40,6 +40,7 @@ TEST(Validation, WrongType) {
   EXPECT_EQ(load_error(head + "gravity: [0, -9.81]\n"),
             "scene.yaml:4: gravity = [0, -9.81]: expected a list of 3 numbers");
   EXPECT_EQ(load_error(head + "output: {every: 2.5}\n"), "scene.yaml:4: output.every = 2.5: expected an integer");
+  EXPECT_EQ(load_error(head + "output: {fields_every: -1}\n"), "scene.yaml:4: output.fields_every = -1: must be >= 0");
   EXPECT_EQ(load_error(head + "bodies:\n" + ball(", fixed: maybe")),
             "scene.yaml:5: bodies[0].fixed = maybe: expected true or false");
   EXPECT_EQ(load_error(head + "bodies: {name: ball}\n"),

@@ -1,0 +1,234 @@
+#include "participant/mpi_team.hpp"
+
+#include <climits>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+namespace cosim::participant {
+namespace {
+
+enum Call : int { kInitialise, kAdvance, kState, kRestore, kFields, kFinish };
+
+int rank_of(MPI_Comm comm) {
+  int r = 0;
+  MPI_Comm_rank(comm, &r);
+  return r;
+}
+
+int size_of(MPI_Comm comm) {
+  int n = 0;
+  MPI_Comm_size(comm, &n);
+  return n;
+}
+
+int count(std::size_t n) {
+  if (n > static_cast<std::size_t>(INT_MAX)) throw std::length_error("more values than MPI can count in one call");
+  return static_cast<int>(n);
+}
+
+// Rank 0's value to every rank.
+template <typename T>
+void share(MPI_Comm comm, T& value) {
+  MPI_Bcast(&value, sizeof(T), MPI_BYTE, 0, comm);
+}
+
+void share(MPI_Comm comm, std::vector<double>& values) {
+  unsigned long long n = values.size();
+  share(comm, n);
+  values.resize(n);
+  MPI_Bcast(values.data(), count(n), MPI_DOUBLE, 0, comm);
+}
+
+void share(MPI_Comm comm, std::string& text) {
+  unsigned long long n = text.size();
+  share(comm, n);
+  text.resize(n);
+  MPI_Bcast(text.data(), count(n), MPI_CHAR, 0, comm);
+}
+
+// The per-rank sizes a gathered state announces, checked against this run's rank count
+// before anything is announced, so a refusal leaves the followers waiting for the next call.
+std::vector<int> state_sizes(const std::vector<double>& whole, int ranks) {
+  if (whole.empty()) return std::vector<int>(static_cast<std::size_t>(ranks), 0);
+  const auto written = static_cast<long long>(whole.front());
+  if (written != ranks)
+    throw std::runtime_error("the state was written by " + std::to_string(written) + " ranks, this run has " +
+                             std::to_string(ranks) + ": resume on " + std::to_string(written));
+  std::vector<int> sizes;
+  std::size_t total = 1 + static_cast<std::size_t>(ranks);
+  if (whole.size() < total) throw std::runtime_error("the state is shorter than its own header");
+  for (int r = 0; r < ranks; ++r) {
+    sizes.push_back(count(static_cast<std::size_t>(whole[1 + static_cast<std::size_t>(r)])));
+    total += static_cast<std::size_t>(sizes.back());
+  }
+  if (whole.size() != total)
+    throw std::runtime_error("the state holds " + std::to_string(whole.size()) + " values, its header says " +
+                             std::to_string(total));
+  return sizes;
+}
+
+// This rank's part of the state rank 0 holds whole (`sizes` from state_sizes(), rank 0 only).
+std::vector<double> scattered(MPI_Comm comm, const std::vector<double>& whole, const std::vector<int>& sizes) {
+  const int ranks = size_of(comm);
+  std::vector<int> offsets;
+  int at = 1 + ranks;
+  for (int s : sizes) {
+    offsets.push_back(at);
+    at += s;
+  }
+  int mine = 0;
+  MPI_Scatter(sizes.data(), 1, MPI_INT, &mine, 1, MPI_INT, 0, comm);
+  std::vector<double> part(static_cast<std::size_t>(mine));
+  MPI_Scatterv(whole.data(), sizes.data(), offsets.data(), MPI_DOUBLE, part.data(), mine, MPI_DOUBLE, 0, comm);
+  return part;
+}
+
+// Every rank's state, whole on rank 0 (empty elsewhere).
+std::vector<double> gathered(MPI_Comm comm, const std::vector<double>& part) {
+  const int ranks = size_of(comm);
+  const bool root = rank_of(comm) == 0;
+  const int mine = count(part.size());
+  std::vector<int> sizes(root ? static_cast<std::size_t>(ranks) : 0);
+  MPI_Gather(&mine, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm);
+  std::vector<double> whole;
+  std::vector<int> offsets;
+  if (root) {
+    whole.push_back(ranks);
+    int at = 1 + ranks;
+    for (int s : sizes) {
+      whole.push_back(s);
+      offsets.push_back(at);
+      at += s;
+    }
+    whole.resize(static_cast<std::size_t>(at));
+  }
+  MPI_Gatherv(part.data(), mine, MPI_DOUBLE, whole.data(), sizes.data(), offsets.data(), MPI_DOUBLE, 0, comm);
+  return whole;
+}
+
+void initialise_follower(Solver& local, MPI_Comm comm) {
+  std::string text, file, name;
+  std::vector<double> poses;
+  share(comm, text);
+  share(comm, file);
+  share(comm, name);
+  share(comm, poses);
+  const std::vector<double> state = scattered(comm, {}, {});
+  local.initialise(scene::load_scene_from_string(text, file), name, poses, state);
+}
+
+void advance_follower(Solver& local, MPI_Comm comm) {
+  Window w;
+  Inputs in;
+  share(comm, w);
+  for (std::vector<double>* v : {&in.poses_start, &in.poses_end, &in.forces_start, &in.forces_end}) share(comm, *v);
+  local.advance(w, in);
+}
+
+}  // namespace
+
+LeadSolver::LeadSolver(Solver& local, MPI_Comm comm) : local_(local), comm_(comm) {}
+
+LeadSolver::~LeadSolver() {
+  if (!finished_) finish(1);
+}
+
+void LeadSolver::announce(int call) const {
+  MPI_Bcast(&call, 1, MPI_INT, 0, comm_);
+}
+
+Outputs LeadSolver::initialise(const scene::Scene& scene, const std::string& name, const std::vector<double>& poses,
+                               const std::vector<double>& state) {
+  const std::vector<int> sizes = state_sizes(state, size_of(comm_));
+  announce(kInitialise);
+  std::string text = scene.text, file = scene.file.string(), who = name;
+  std::vector<double> shared_poses = poses;
+  share(comm_, text);
+  share(comm_, file);
+  share(comm_, who);
+  share(comm_, shared_poses);
+  return local_.initialise(scene, name, poses, scattered(comm_, state, sizes));
+}
+
+Outputs LeadSolver::advance(const Window& w, const Inputs& in) {
+  announce(kAdvance);
+  Window shared_window = w;
+  Inputs shared = in;
+  share(comm_, shared_window);
+  for (std::vector<double>* v : {&shared.poses_start, &shared.poses_end, &shared.forces_start, &shared.forces_end})
+    share(comm_, *v);
+  return local_.advance(w, in);
+}
+
+std::vector<double> LeadSolver::state() const {
+  announce(kState);
+  return gathered(comm_, local_.state());
+}
+
+void LeadSolver::restore(const std::vector<double>& state) {
+  const std::vector<int> sizes = state_sizes(state, size_of(comm_));
+  announce(kRestore);
+  local_.restore(scattered(comm_, state, sizes));
+}
+
+output::FieldFrame LeadSolver::fields() const {
+  announce(kFields);
+  return local_.fields();
+}
+
+void LeadSolver::finish(int exit_code) {
+  announce(kFinish);
+  share(comm_, exit_code);
+  finished_ = true;
+}
+
+int follow(Solver& local, MPI_Comm comm) {
+  for (;;) {
+    int call = kFinish;
+    MPI_Bcast(&call, 1, MPI_INT, 0, comm);
+    try {
+      switch (call) {
+        case kInitialise:
+          initialise_follower(local, comm);
+          break;
+        case kAdvance:
+          advance_follower(local, comm);
+          break;
+        case kState:
+          gathered(comm, local.state());
+          break;
+        case kRestore:
+          local.restore(scattered(comm, {}, {}));
+          break;
+        case kFields:
+          local.fields();
+          break;
+        default: {
+          int code = 1;
+          share(comm, code);
+          return code;
+        }
+      }
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "rank %d: %s\n", rank_of(comm), e.what());
+      MPI_Abort(comm, 1);
+    }
+  }
+}
+
+int run_on_ranks(Solver& local, MPI_Comm comm, const std::function<int(Solver&)>& lead) {
+  if (rank_of(comm) != 0) return follow(local, comm);
+  LeadSolver solver(local, comm);
+  int code = 1;
+  try {
+    code = lead(solver);
+  } catch (...) {
+    solver.finish(1);
+    throw;
+  }
+  solver.finish(code);
+  return code;
+}
+
+}  // namespace cosim::participant
