@@ -1,0 +1,97 @@
+#include "cavity.hpp"
+
+#include <algorithm>
+#include <ctime>
+
+#include "fluid/navier_stokes.hpp"
+#include "fluid/petsc_check.hpp"
+
+namespace cosim::bench {
+namespace {
+
+using namespace cosim::fluid;
+
+// This rank's time so far in the library's FluidPressureSolve event (the pressure KSP with
+// its multigrid setup), from PETSc's log.
+double pressure_solve_seconds() {
+  PetscLogEvent event;
+  COSIM_PETSC(PetscLogEventGetId("FluidPressureSolve", &event));
+  PetscEventPerfInfo info{};
+  COSIM_PETSC(PetscLogEventGetPerfInfo(PETSC_DETERMINE, event, &info));
+  return info.time;
+}
+
+double slowest(double local, MPI_Comm comm) {
+  double max = 0;
+  MPI_Allreduce(&local, &max, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return max;
+}
+
+double synchronized_time(MPI_Comm comm) {
+  MPI_Barrier(comm);
+  return MPI_Wtime();
+}
+
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// u at x = 0.5 (face n/2) averaged over the two cells either side of y = 0.5, per z cell.
+std::vector<double> centre_line(const NavierStokes& flow) {
+  const Grid& grid = flow.grid();
+  const PetscInt half = grid.cells()[0] / 2;
+  std::vector<double> line(static_cast<std::size_t>(grid.cells()[2]), 0.0);
+  DM dm = grid.velocity_dm(0);
+  const PetscScalar*** u = nullptr;
+  COSIM_PETSC(DMDAVecGetArrayRead(dm, flow.velocity(0), &u));
+  for_each_index(grid.owned(dm), [&](const Index& p) {
+    if (p[0] == half && (p[1] == half - 1 || p[1] == half))
+      line[static_cast<std::size_t>(p[2])] += 0.5 * u[p[2]][p[1]][p[0]];
+  });
+  COSIM_PETSC(DMDAVecRestoreArrayRead(dm, flow.velocity(0), &u));
+  MPI_Allreduce(MPI_IN_PLACE, line.data(), static_cast<int>(line.size()), MPI_DOUBLE, MPI_SUM, grid.comm());
+  return line;
+}
+
+}  // namespace
+
+ThroughputRun run_cavity(const Cavity& cavity) {
+  const MPI_Comm comm = PETSC_COMM_WORLD;
+  ThroughputRun run;
+  run.solver = "cosim_fluid";
+  run.cavity = cavity;
+  MPI_Comm_size(comm, &run.ranks);
+  const PeakMemory memory(comm);
+  const int n = cavity.n;
+  Grid grid(comm, {Axis::uniform(n, 0, 1, false), Axis::uniform(n, 0, 1, false), Axis::uniform(n, 0, 1, false)});
+  BoundaryConditions bc(grid);
+  bc.set(2, Side::upper, Boundary::moving_wall({Cavity::kLidVelocity, 0, 0}));
+  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(cavity.viscosity()), {0, 0, 0}}, {});
+  flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
+
+  MPI_Barrier(comm);
+  const double cpu_start = cpu_seconds();
+  run.max_divergence = flow.step(cavity.dt()).max_divergence;
+  const double warm = synchronized_time(comm), cpu_warm = cpu_seconds();
+  const double pressure_warm = pressure_solve_seconds();
+  long iterations = 0;
+  for (int s = 1; s < cavity.steps; ++s) {
+    const StepReport r = flow.step(cavity.dt());
+    iterations += r.pressure_iterations;
+    run.max_divergence = std::max(run.max_divergence, r.max_divergence);
+  }
+  const double end = synchronized_time(comm), cpu_end = cpu_seconds();
+  run.timed_steps = cavity.steps - 1;
+  run.first_step_seconds = slowest(cpu_warm - cpu_start, comm);
+  run.seconds_per_step = (end - warm) / run.timed_steps;
+  run.cpu_seconds_per_step = slowest(cpu_end - cpu_warm, comm) / run.timed_steps;
+  run.pressure_seconds_per_step = slowest(pressure_solve_seconds() - pressure_warm, comm) / run.timed_steps;
+  run.pressure_iterations_per_step = static_cast<double>(iterations) / run.timed_steps;
+  run.memory = memory.total();
+  run.centre_line = centre_line(flow);
+  return run;
+}
+
+}  // namespace cosim::bench

@@ -1,0 +1,156 @@
+// fluid_throughput: how fast cosim_fluid steps a three-dimensional lid-driven cavity (Re
+// 100) on N^3 cells, and how much memory it needs per cell, serially or under mpirun;
+// --openfoam runs the same case with icoFoam and compares speed and the centre-line
+// velocity after the same steps. Prints one row per run; --csv writes them too.
+#include <petscsys.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cavity.hpp"
+#include "openfoam_case.hpp"
+#include "table.hpp"
+
+using namespace cosim::bench;
+
+namespace {
+
+constexpr double kGoalBytesPerCell = 1024;  // with the multigrid hierarchy, net of the process baseline
+constexpr double kGoalSpeedup = 2;          // cell-updates per CPU second against OpenFOAM's
+
+int rank() {
+  int r = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &r);
+  return r;
+}
+
+// Runs f on rank 0 only, for OpenFOAM, which runs as a child of rank 0: the other ranks
+// wait without spinning in MPI (which would take a core from it). What f throws is thrown
+// on every rank.
+void on_rank0(const std::function<void()>& f) {
+  std::string error;
+  if (rank() == 0) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  MPI_Request done;
+  MPI_Ibarrier(PETSC_COMM_WORLD, &done);
+  for (int finished = 0; !finished; usleep(100000)) MPI_Test(&done, &finished, MPI_STATUS_IGNORE);
+  int failed = !error.empty();
+  MPI_Bcast(&failed, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+  if (failed) throw std::runtime_error(rank() == 0 ? error : "OpenFOAM failed on rank 0");
+}
+
+// Every rank gets the results, so that all hold the same table.
+ThroughputRun openfoam_run(const Cavity& cavity, int ranks) {
+  ThroughputRun run;
+  on_rank0([&] { run = run_openfoam(cavity, ranks); });
+  double timing[] = {run.first_step_seconds, run.cpu_seconds_per_step, static_cast<double>(run.timed_steps)};
+  MPI_Bcast(timing, 3, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+  run.centre_line.resize(static_cast<std::size_t>(cavity.n));
+  MPI_Bcast(run.centre_line.data(), cavity.n, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+  run.solver = "OpenFOAM";
+  run.ranks = ranks;
+  run.cavity = cavity;
+  run.first_step_seconds = timing[0];
+  run.cpu_seconds_per_step = timing[1];
+  run.timed_steps = static_cast<int>(timing[2]);
+  return run;
+}
+
+// Where the two centre lines differ most, with Stokes' first problem there as a yardstick.
+void print_centre_lines(const ThroughputRun& ours, const ThroughputRun& openfoam) {
+  const Cavity& c = ours.cavity;
+  int worst = 0;
+  for (int k = 0; k < c.n; ++k)
+    if (std::abs(ours.centre_line[k] - openfoam.centre_line[k]) >
+        std::abs(ours.centre_line[worst] - openfoam.centre_line[worst]))
+      worst = k;
+  const double u = ours.centre_line[worst], v = openfoam.centre_line[worst];
+  PetscPrintf(PETSC_COMM_WORLD,
+              "  centre line u(0.5, 0.5, z) at t = %.4f: max |ours - OpenFOAM| = %.4f U_lid, at z = %.4f "
+              "(ours %.4f, OpenFOAM %.4f, Stokes layer %.4f)\n",
+              c.end_time(), std::abs(u - v) / Cavity::kLidVelocity, c.centre(worst), u, v,
+              c.stokes_layer(c.centre(worst)));
+}
+
+void print_memory_goal(const ThroughputRun& r) {
+  const double net = (r.memory.peak_bytes - r.memory.baseline_bytes) / static_cast<double>(r.cavity.cells());
+  PetscPrintf(PETSC_COMM_WORLD,
+              "  memory: %.0f bytes per cell net of the baseline (%.0f MB on %d rank(s)); goal <= %.0f: %s\n", net,
+              r.memory.baseline_bytes / 1e6, r.ranks, kGoalBytesPerCell, net <= kGoalBytesPerCell ? "met" : "NOT met");
+}
+
+// Per CPU second: OpenFOAM reports CPU time only, at whole-second wall resolution.
+void print_comparison(const ThroughputRun& ours, const ThroughputRun& openfoam) {
+  const double speedup = ours.cell_updates_per_cpu_second() / openfoam.cell_updates_per_cpu_second();
+  PetscPrintf(PETSC_COMM_WORLD, "  against OpenFOAM: %.2fx its cell-updates per CPU second; goal >= %.0fx: %s\n",
+              speedup, kGoalSpeedup, speedup >= kGoalSpeedup ? "met" : "NOT met");
+  print_centre_lines(ours, openfoam);
+}
+
+int study(const std::vector<int>& sizes, int steps, bool openfoam, const std::string& csv) {
+  for (int n : sizes)
+    if (n < 4 || n % 2) throw std::invalid_argument("-n: the cells per side must be even and at least 4");
+  if (steps < (openfoam ? 3 : 2)) throw std::invalid_argument("--steps: at least 2 (3 with --openfoam)");
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  if (openfoam) on_rank0([&] { require_openfoam(ranks); });  // before minutes of our own runs
+  std::vector<ThroughputRun> runs;
+  PetscPrintf(PETSC_COMM_WORLD,
+              "Lid-driven cavity, Re %.0f, lid at z = 1, Courant %.1f; first step excluded from the timing\n",
+              Cavity::kReynolds, Cavity::kCourant);
+  print_header();
+  for (int n : sizes) {
+    const Cavity cavity{.n = n, .steps = steps};
+    const ThroughputRun& ours = runs.emplace_back(run_cavity(cavity));
+    print_row(ours);
+    print_memory_goal(ours);
+    if (!openfoam) continue;
+    const ThroughputRun& theirs = runs.emplace_back(openfoam_run(cavity, ranks));
+    print_row(theirs);
+    print_comparison(runs[runs.size() - 2], theirs);
+  }
+  if (!csv.empty() && rank() == 0) write_csv(csv, runs);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<int> sizes{64, 128};
+  int steps = 5;
+  bool quick = false, openfoam = false;
+  std::string csv;
+  CLI::App app{"fluid_throughput: cell-updates per second and memory per cell of cosim_fluid (3D lid-driven cavity)"};
+  app.add_option("-n", sizes, "Cells per side, one run each (even)")->capture_default_str();
+  app.add_option("--steps", steps, "Time steps per run, the first being the untimed warm-up")->capture_default_str();
+  app.add_flag("--quick", quick, "Smoke run: 16^3, 4 steps");
+  app.add_flag("--openfoam", openfoam, "Also run icoFoam on the same case and compare");
+  app.add_option("--csv", csv, "Also write the table to this CSV file");
+  CLI11_PARSE(app, argc, argv);
+  if (quick) sizes = {16}, steps = 4;
+
+  // PETSc sees no arguments: the options are the study's.
+  int petsc_argc = 1;
+  char** petsc_argv = argv;
+  PetscCall(PetscInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr));
+  int result = 1;
+  try {
+    // The pressure-solve time comes from PETSc's event log.
+    PetscCall(PetscLogDefaultBegin());
+    result = study(sizes, steps, openfoam, csv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "fluid_throughput: %s\n", e.what());
+  }
+  PetscCall(PetscFinalize());
+  return result;
+}
