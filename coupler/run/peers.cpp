@@ -83,7 +83,9 @@ std::map<std::string, protocol::Message> Peers::gather(const std::vector<std::st
     if (m) {
       const auto& from = m->header.participant;
       if (!processes_.contains(from)) fail(from, "is not part of this run", when);
-      if (m->header.type == protocol::Type::Error) fail(from, "reported an error: " + text_of(*m), when);
+      // What it reports is the cause; its exit right after is only the consequence.
+      if (m->header.type == protocol::Type::Error)
+        throw ParticipantFailure(from, "reported an error: " + text_of(*m), when);
       if (m->header.type != type)
         fail(from,
              fmt::format("sent {} while the coupler waited for {}", protocol::to_string(m->header.type),

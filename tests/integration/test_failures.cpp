@@ -167,6 +167,18 @@ TEST(Failures, MissingProgramIsASceneErrorBeforeAnythingStarts) {
   EXPECT_FALSE(fs::exists(dir / "scene.h5"));
 }
 
+// The participant's own words are the reason given, not the exit that follows them.
+TEST(Failures, AReportedErrorIsWhatTheCouplerSays) {
+  const auto dir = scratch_dir("reported_error");
+  auto yaml = scene_for_failures().yaml();
+  yaml.replace(yaml.find("stiffness: "), 11, "stiffness: -");
+  const auto r = run_scene_text(dir, yaml);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.output, HasSubstr("cosim: error: participant 'spring' reported an error: "));
+  EXPECT_THAT(r.output, HasSubstr("stiffness = -"));
+  EXPECT_THAT(r.output, Not(HasSubstr("exited with status")));
+}
+
 TEST(Failures, CheckValidatesWithoutRunning) {
   const auto dir = scratch_dir("check");
   write_file(dir / "good.yaml", scene_for_failures().yaml());
