@@ -4,6 +4,7 @@
 #include <numbers>
 #include <vector>
 
+#include "channel.hpp"
 #include "fluid/fictitious_boundary.hpp"
 
 namespace cosim::bench {
@@ -15,10 +16,11 @@ std::string alpha_label(int subsamples) {
   return subsamples == 1 ? "point" : std::to_string(subsamples) + "^3 sub";
 }
 
-// Channel 2.2 x 0.41 (one periodic layer of thickness 0.01 in z), cylinder D = 0.1 at
-// (0.2, 0.2), U_max 0.3, nu 1e-3. Along x: cells of h to x = 0.6, then 6 % wider each.
+// Cylinder at (0.2, 0.2) in the channel, U_max 0.3, nu 1e-3. Along x: cells of h to
+// x = 0.6, then 6 % wider each.
 namespace dfg {
-constexpr double L = 2.2, H = 0.41, D = 0.1, Umax = 0.3, T = 0.01, Umean = 2 * Umax / 3;
+using namespace channel;
+constexpr double Umax = 0.3, Umean = 2 * Umax / 3;
 constexpr double kDrag = 5.5795;
 
 Axis along_channel(double h) {
@@ -47,9 +49,8 @@ double mean_u(const NavierStokes& flow, double cells) {
 FluidRun dfg_cylinder(int cells_per_diameter, int subsamples, double* lift) {
   using namespace dfg;
   const double start = MPI_Wtime();
-  const int across = static_cast<int>(std::lround(cells_per_diameter * H / D));
-  Grid grid(PETSC_COMM_WORLD,
-            {along_channel(H / across), Axis::uniform(across, 0, H, false), Axis::uniform(1, 0, T, true)});
+  const Axis y = across(cells_per_diameter);
+  Grid grid(PETSC_COMM_WORLD, {along_channel(H / y.cells()), y, layer()});
   BoundaryConditions bc(grid);
   bc.set(0, Side::lower, Boundary::inflow([](const Point& x, double) { return parabola(x); }));
   bc.set(0, Side::upper, Boundary::outflow());

@@ -14,7 +14,7 @@ Eigen::Vector3d vec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 
 constexpr std::array kind_names{"fixed", "constant", "sinusoidal"};
 
-// The rotation by a constant angular velocity w over t (world frame): exp(w t / 2).
+// q0 turned by the rotation vector w t (world frame): exp(w t / 2) q0.
 Eigen::Quaterniond turned(const Eigen::Quaterniond& q0, const Eigen::Vector3d& w, double t) {
   const double angle = w.norm() * t;
   if (angle == 0) return q0;
@@ -41,8 +41,11 @@ std::vector<Motion> read_motions(const scene::Scene& scene, const scene::Reader&
     m.kind = static_cast<Motion::Kind>(r.choice("type", kind_names));
     if (m.kind != Motion::Kind::constant) m.velocity = m.angular_velocity = Eigen::Vector3d::Zero();
     if (m.kind == Motion::Kind::sinusoidal) {
-      m.amplitude = vec(r.vec3("amplitude"));
+      m.amplitude = vec(r.vec3("amplitude", {0, 0, 0}));
+      m.angular_amplitude = vec(r.vec3("angular_amplitude", {0, 0, 0}));
       m.frequency = r.number("frequency", scene::Range::above(0));
+      if (m.amplitude.isZero(0) && m.angular_amplitude.isZero(0))
+        r.fail("amplitude", "sinusoidal motion without amplitude or angular_amplitude: use type fixed");
     }
     r.finish();
   }
@@ -54,14 +57,16 @@ std::vector<double> poses_at(const std::vector<Motion>& motions, double t) {
   std::vector<double> out;
   out.reserve(protocol::kPoseWidth * motions.size());
   for (const Motion& m : motions) {
-    Eigen::Vector3d x = m.position + m.velocity * t, v = m.velocity;
+    Eigen::Vector3d x = m.position + m.velocity * t, v = m.velocity, w = m.angular_velocity;
+    Eigen::Quaterniond q = turned(m.orientation, m.angular_velocity, t);
     if (m.kind == Motion::Kind::sinusoidal) {
       const double omega = 2 * std::numbers::pi * m.frequency;
-      x = m.position + m.amplitude * std::sin(omega * t);
-      v = m.amplitude * omega * std::cos(omega * t);
+      const double phase = std::sin(omega * t), rate = omega * std::cos(omega * t);
+      x = m.position + m.amplitude * phase;
+      v = m.amplitude * rate;
+      q = turned(m.orientation, m.angular_amplitude, phase);
+      w = m.angular_amplitude * rate;
     }
-    const Eigen::Quaterniond q = turned(m.orientation, m.angular_velocity, t);
-    const Eigen::Vector3d& w = m.angular_velocity;
     out.insert(out.end(), {x.x(), x.y(), x.z(), q.w(), q.x(), q.y(), q.z(), v.x(), v.y(), v.z(), w.x(), w.y(), w.z()});
   }
   return out;

@@ -1,5 +1,6 @@
 // How bodies move in a standalone fluid run, where no rigid-body program moves them:
-// fixed, at constant linear and angular velocity, or oscillating sinusoidally.
+// fixed, at constant linear and angular velocity, or oscillating sinusoidally (translating
+// and/or turning about a fixed axis).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -17,11 +18,15 @@ struct Motion {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // constant
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // constant, world frame
   Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();  // sinusoidal: x0 + A sin(2 pi f t)
-  double frequency = 0;                                  // Hz
+  // Sinusoidal: the rotation vector theta0 sin(2 pi f t) (rad, world frame) applied to the
+  // initial orientation, so the body swings about the fixed axis theta0 / |theta0|.
+  Eigen::Vector3d angular_amplitude = Eigen::Vector3d::Zero();
+  double frequency = 0;  // Hz
 };
 
 // The options' `motion` mapping: body name -> {type: fixed | constant | sinusoidal,
-// amplitude: [m], frequency: Hz (sinusoidal only)}. A body not listed is fixed if the scene
+// amplitude: [m], angular_amplitude: [rad], frequency: Hz (sinusoidal only; either
+// amplitude defaults to zero, not both)}. A body not listed is fixed if the scene
 // says so, else moves at its scene velocity and angular velocity (constant). `start`
 // holds each body's motion with position and orientation at t = 0 already set.
 std::vector<Motion> read_motions(const scene::Scene& scene, const scene::Reader& options, std::vector<Motion> start);

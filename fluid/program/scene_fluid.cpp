@@ -157,6 +157,9 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
 
   s.properties.density = options.number("density", Range::above(0));
   s.properties.viscosity = viscosity(options.map("viscosity"));
+  // A driving pressure gradient over rho, never gravity: with effect buoyancy cosim-rigidbody
+  // adds the hydrostatic force, and a fluid gravity would count it twice.
+  s.properties.body_force = point(options.vec3("body_force", {0, 0, 0}));
   s.initial_velocity = point(options.vec3("initial_velocity", {0, 0, 0}));
   s.steps.dt_max = p.dt;
   s.steps.cfl = options.number("cfl", s.steps.cfl, Range::above(0));

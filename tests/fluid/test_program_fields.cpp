@@ -2,8 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "cosim_process.hpp"
 #include "h5_read.hpp"
@@ -15,13 +13,6 @@ namespace cosim::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string text_of(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 class FluidFields : public ::testing::Test {
  protected:
@@ -72,7 +63,7 @@ TEST_F(FluidFields, AlphaMarksTheBodyAndTheFlowUpstreamIsTheInflow) {
 
 TEST_F(FluidFields, XdmfSidecarNamesTheDatasetsWithTheirShapes) {
   ASSERT_EQ(exit_code_, 0);
-  const XdmfContents xdmf = read_xdmf(text_of(dir_ / "fields.xmf"));
+  const XdmfContents xdmf = read_xdmf(read_file(dir_ / "fields.xmf"));
   EXPECT_EQ(xdmf.times, (std::vector<double>{0.0, 0.05, 0.1}));
   ASSERT_EQ(xdmf.items.size(), 3u * 6u);  // per step: x, y, z, velocity, pressure, alpha
   for (const XdmfDataItem& item : xdmf.items) {

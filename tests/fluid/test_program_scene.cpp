@@ -35,7 +35,8 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 
 TEST(FluidScene, ReadsGridFluidBoundariesAndBodies) {
   const FluidSetup s = setup_of(oscillating_cylinder_scene(
-      "      cfl: 0.4\n      subsamples: 2\n      petsc: -pressure_pc_type hypre -pressure_ksp_rtol 1e-9\n"));
+      "      cfl: 0.4\n      subsamples: 2\n      petsc: -pressure_pc_type hypre -pressure_ksp_rtol 1e-9\n"
+      "      body_force: [1.5, 0, -2]\n"));
   ASSERT_EQ(s.axes.size(), 3u);
   EXPECT_EQ(s.axes[0].cells(), 16);
   EXPECT_EQ(s.axes[1].cells(), 8);
@@ -45,6 +46,8 @@ TEST(FluidScene, ReadsGridFluidBoundariesAndBodies) {
   EXPECT_EQ(s.boundaries[0].kind, fluid::BoundaryKind::wall);
   EXPECT_EQ(s.properties.density, 1000);
   EXPECT_DOUBLE_EQ(s.properties.viscosity(5.0), 0.01);
+  EXPECT_EQ(s.properties.body_force, (fluid::Point{1.5, 0, -2}));
+  EXPECT_EQ(setup_of(oscillating_cylinder_scene()).properties.body_force, (fluid::Point{0, 0, 0}));
   EXPECT_EQ(s.steps.dt_max, 0.01);
   EXPECT_EQ(s.steps.cfl, 0.4);
   EXPECT_EQ(s.fbm.subsamples, 2);
@@ -80,6 +83,35 @@ TEST(FluidScene, PrescribedMotionIsFixedConstantOrSinusoidal) {
   EXPECT_EQ(f[7], 0.0);
 }
 
+// Swinging about x by theta(t) = 0.5 sin(2 pi 2 t) from an initial orientation a quarter
+// turn about z, while translating: q(t) = (cos(theta/2), sin(theta/2), 0, 0) q0 written out
+// (the other order would flip the sign of q_y).
+TEST(FluidScene, SinusoidalRotationTurnsAboutAFixedAxis) {
+  std::string text = replaced(oscillating_cylinder_scene(), "position: [0.2, 0.1, 0.005]",
+                              "position: [0.2, 0.1, 0.005], "
+                              "orientation: [0.7071067811865476, 0, 0, 0.7071067811865476]");
+  text = replaced(text, "amplitude: [0.05, 0, 0],", "amplitude: [0.05, 0, 0], angular_amplitude: [0.5, 0, 0],");
+  const FluidSetup s = setup_of(text);
+  const double omega = 2 * std::numbers::pi * 2, r2 = std::sqrt(0.5);
+  for (const double t : {0.0, 0.03, 0.1, 0.2, 0.37}) {
+    const std::vector<double> p = poses_at(s.motions, t);
+    const double theta = 0.5 * std::sin(omega * t), c = std::cos(theta / 2), si = std::sin(theta / 2);
+    EXPECT_NEAR(p[0], 0.2 + 0.05 * std::sin(omega * t), 1e-15) << t;
+    const double expected_q[] = {c * r2, si * r2, -si * r2, c * r2};
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(p[3 + i], expected_q[i], 1e-14) << t << " q" << i;
+    EXPECT_NEAR(p[7], 0.05 * omega * std::cos(omega * t), 1e-14) << t;
+    EXPECT_NEAR(p[10], 0.5 * omega * std::cos(omega * t), 1e-14) << t;
+    EXPECT_EQ(p[11], 0.0);
+    EXPECT_EQ(p[12], 0.0);
+  }
+  // Rotation alone: no translation.
+  const std::string turning = replaced(text, "amplitude: [0.05, 0, 0], ", "");
+  const std::vector<double> r = poses_at(setup_of(turning).motions, 0.1);
+  EXPECT_EQ(r[0], 0.2);
+  EXPECT_EQ(r[7], 0.0);
+  EXPECT_NEAR(r[10], 0.5 * omega * std::cos(omega * 0.1), 1e-14);
+}
+
 struct BadOption {
   const char* from;
   const char* to;
@@ -100,6 +132,10 @@ TEST(FluidScene, ErrorsNameFileLineKeyAndValue) {
       {"motion: {cyl:", "motion: {ball:", "motion.ball", ""},
       {"type: sinusoidal,", "type: swinging,", "motion.cyl.type", "swinging"},
       {"frequency: 2", "frequency: 0", "motion.cyl.frequency", "0"},
+      {"frequency: 2", "frequency: 2, angular_amplitude: [0, 1]", "motion.cyl.angular_amplitude", ""},
+      {"frequency: 2", "frequency: 2, angular_amplitude: [0, 0, x]", "motion.cyl.angular_amplitude", ""},
+      {"amplitude: [0.05, 0, 0]", "amplitude: [0, 0, 0]", "motion.cyl.amplitude", "[0, 0, 0]"},
+      {"density: 1000", "density: 1000\n      body_force: [1, 0]", "body_force", "[1, 0]"},
       {"density: 1000", "density: 1000\n      petsc: hypre", "petsc", "hypre"},
   };
   for (const BadOption& c : cases) {

@@ -31,6 +31,12 @@ fs::path scratch_dir(const std::string& test_name) {
 
 void write_file(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
+std::string read_file(const fs::path& path) {
+  std::stringstream text;
+  text << std::ifstream(path).rdbuf();
+  return text.str();
+}
+
 std::vector<std::string> run_args(const fs::path& dir, const std::string& stem) {
   return {"run", (dir / (stem + ".yaml")).string(), "-o", (dir / (stem + ".h5")).string(), "-q"};
 }

@@ -36,5 +36,6 @@ std::vector<std::string> run_args(const std::filesystem::path& dir, const std::s
 // A fresh folder for one test's files.
 std::filesystem::path scratch_dir(const std::string& test_name);
 void write_file(const std::filesystem::path& path, const std::string& text);
+std::string read_file(const std::filesystem::path& path);  // "" if it cannot be read
 
 }  // namespace cosim::testing

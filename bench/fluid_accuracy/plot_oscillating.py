@@ -1,0 +1,57 @@
+#!/usr/bin/python3
+"""Drag and lift coefficient histories of the oscillating cylinder from fluid_accuracy
+--oscillating's CSV: one row of panels per coefficient, one line per grid level (thin: every
+step; the smooth part dashed; the axis limits leave out the impulsive start, when the body
+sets off at full speed through fluid at rest), and on the right the last period's spurious
+part (coefficient minus its smooth part).
+
+    /usr/bin/python3 bench/fluid_accuracy/plot_oscillating.py oscillating.csv oscillating.png
+"""
+import csv
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+PERIOD = 4.0  # s, 1 / 0.25 Hz
+SETTLED = PERIOD / 8  # the start's impulse has decayed by then
+
+
+def main(csv_path, png_path):
+    levels = defaultdict(lambda: defaultdict(list))  # level -> column -> values
+    with open(csv_path) as f:
+        for row in csv.DictReader(f):
+            for column in ("time", "drag", "lift", "drag_smooth", "lift_smooth"):
+                levels[row["level"]][column].append(float(row[column]))
+    order = sorted(levels, key=lambda level: int(level.split("=")[1]))
+    fig, axes = plt.subplots(2, 2, figsize=(14, 8), gridspec_kw={"width_ratios": [2, 1]})
+    for name, (history, spurious) in zip(("drag", "lift"), axes):
+        settled = []
+        for level in order:
+            h = levels[level]
+            settled += [c for t, c in zip(h["time"], h[name]) if t > SETTLED]
+            line, = history.plot(h["time"], h[name], lw=0.6, label=level)
+            history.plot(h["time"], h[name + "_smooth"], "--", lw=1, color=line.get_color())
+            start = h["time"][-1] - PERIOD
+            last = [(t, c - s) for t, c, s in zip(h["time"], h[name], h[name + "_smooth"]) if t > start]
+            spurious.plot([t for t, _ in last], [r for _, r in last], lw=0.6, color=line.get_color(), label=level)
+        margin = 0.05 * (max(settled) - min(settled))
+        history.set_ylim(min(settled) - margin, max(settled) + margin)
+        label = "C_D" if name == "drag" else "C_L"
+        history.set_ylabel(label + " = 2F / (rho U^2 D T), U = 0.3927 m/s")
+        spurious.set_ylabel(label + " - smooth part")
+        for ax in (history, spurious):
+            ax.grid(True, alpha=0.3)
+            ax.legend(fontsize=8)
+    axes[1][0].set_xlabel("t [s]")
+    axes[1][1].set_xlabel("t [s] (last period)")
+    fig.suptitle("Oscillating cylinder in the DFG channel, staircase FBM: force histories per grid level")
+    fig.tight_layout()
+    fig.savefig(png_path, dpi=110)
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:3]) if len(sys.argv) == 3 else sys.exit(__doc__)
