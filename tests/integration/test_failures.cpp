@@ -156,11 +156,16 @@ TEST(Failures, CtrlCStopsEverythingAndLeavesAReadableFile) {
   EXPECT_EQ(seen, 2) << r.output;
 }
 
+// The failure scene with its first `from` replaced by `to`, run in dir.
+Finished run_edited(const fs::path& dir, const std::string& from, const std::string& to) {
+  auto yaml = scene_for_failures().yaml();
+  yaml.replace(yaml.find(from), from.size(), to);
+  return run_scene_text(dir, yaml);
+}
+
 TEST(Failures, MissingProgramIsASceneErrorBeforeAnythingStarts) {
   const auto dir = scratch_dir("missing_program");
-  auto yaml = scene_for_failures().yaml();
-  yaml.replace(yaml.find("cosim-test-oscillator-spring"), 28, "no-such-program-xyz");
-  const auto r = run_scene_text(dir, yaml);
+  const auto r = run_edited(dir, "cosim-test-oscillator-spring", "no-such-program-xyz");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.output, HasSubstr("participants.spring.command = no-such-program-xyz: program not found"));
   EXPECT_THAT(r.output, Not(HasSubstr("started")));
@@ -169,10 +174,7 @@ TEST(Failures, MissingProgramIsASceneErrorBeforeAnythingStarts) {
 
 // The participant's own words are the reason given, not the exit that follows them.
 TEST(Failures, AReportedErrorIsWhatTheCouplerSays) {
-  const auto dir = scratch_dir("reported_error");
-  auto yaml = scene_for_failures().yaml();
-  yaml.replace(yaml.find("stiffness: "), 11, "stiffness: -");
-  const auto r = run_scene_text(dir, yaml);
+  const auto r = run_edited(scratch_dir("reported_error"), "stiffness: ", "stiffness: -");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.output, HasSubstr("cosim: error: participant 'spring' reported an error: "));
   EXPECT_THAT(r.output, HasSubstr("stiffness = -"));
