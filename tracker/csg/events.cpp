@@ -1,0 +1,62 @@
+#include "tracker/csg/events.hpp"
+
+#include <algorithm>
+
+namespace cosim::csg {
+namespace {
+
+// Outside the primitive: the entering root, clamped to 0 when the particle is already
+// slightly in and still moving inward (before the chord's midpoint). Past the midpoint it
+// is on its way out and gets no event, which is what keeps a particle that just left from
+// re-entering on round-off. An empty chord (a miss or a tangent line) is never entered.
+double enter_time(const Chord& c) { return c.in < c.out && c.mid > 0.0 ? std::max(0.0, c.in) : Chord::inf; }
+
+// Inside the primitive: the leaving root, clamped to 0 when it is already behind; an empty
+// chord means the particle is outside, so it leaves at once. Since enter_time requires
+// out > mid > 0, an enter at 0 is never followed by a leave at 0 and vice versa: zero-time
+// events cannot cycle.
+double leave_time(const Chord& c) { return std::max(0.0, c.out); }
+
+}  // namespace
+
+Event next_event(const Object& object, State state, const Eigen::Vector3d& x, const Eigen::Vector3d& v) {
+  const auto& primitives = object.tree().primitives();
+  Event event;
+  for (int i = 0; i < static_cast<int>(primitives.size()); ++i) {
+    const Chord chord = primitives[i].chord(x, v);
+    const double dt = test(state, i) ? leave_time(chord) : enter_time(chord);
+    if (dt < event.dt) {
+      event.dt = dt;
+      event.primitive = i;
+    }
+  }
+  if (!event.happens()) return event;
+
+  const int i = event.primitive;
+  event.enters = !test(state, i);
+  event.into_object = object.inside(state ^ bit(i));
+  event.boundary = event.into_object != object.inside(state);
+  event.permeable = object.permeable();
+  if (event.boundary) {
+    const Eigen::Vector3d n = primitives[i].normal(x + event.dt * v);
+    event.normal = object.tree().complemented(i) ? Eigen::Vector3d(-n) : n;
+  }
+  return event;
+}
+
+State apply(State state, const Event& event) { return event.reflects() ? state : state ^ bit(event.primitive); }
+
+State sweep(const Object& object, State state, const Eigen::Vector3d& x, const Eigen::Isometry3d& new_pose) {
+  const Eigen::Vector3d w = object.pose() * (new_pose.inverse() * x) - x;
+  Eigen::Vector3d position = x;
+  double left = 1.0;
+  while (true) {
+    const Event event = next_event(object, state, position, w);
+    if (!(event.dt <= left)) return state;
+    position += event.dt * w;
+    left -= event.dt;
+    state ^= bit(event.primitive);
+  }
+}
+
+}  // namespace cosim::csg

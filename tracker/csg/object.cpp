@@ -1,0 +1,22 @@
+#include "tracker/csg/object.hpp"
+
+namespace cosim::csg {
+
+Object::Object(const Expression& expression, bool permeable, const Eigen::Isometry3d& pose)
+    : tree_(expression), permeable_(permeable), pose_(Eigen::Isometry3d::Identity()) {
+  set_pose(pose);
+}
+
+void Object::set_pose(const Eigen::Isometry3d& pose) {
+  pose_ = pose;
+  for (Primitive& p : tree_.primitives()) p.place(pose);
+}
+
+State Object::classify(const Eigen::Vector3d& x) const {
+  State state = 0;
+  for (int i = 0; i < primitive_count(); ++i)
+    if (tree_.primitives()[i].contains(x)) state |= bit(i);
+  return state;
+}
+
+}  // namespace cosim::csg

@@ -1,0 +1,61 @@
+#include "tracker/csg/primitive.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace cosim::csg {
+
+void require_invertible(const Eigen::Affine3d& affine) {
+  const double det = affine.linear().determinant();
+  if (!std::isfinite(det) || det == 0.0 || !affine.translation().allFinite())
+    throw std::invalid_argument("csg: a placement or transform must be finite and invertible");
+}
+
+Primitive::Primitive(PrimitiveKind kind, const Eigen::Affine3d& placement) : kind_(kind), placement_(placement) {
+  require_invertible(placement);
+  place(Eigen::Isometry3d::Identity());
+}
+
+void Primitive::place(const Eigen::Isometry3d& pose) {
+  const Eigen::Affine3d world = pose * placement_;
+  origin_ = world.translation();
+  to_canonical_ = world.linear().inverse();
+}
+
+double Primitive::indicator(const Eigen::Vector3d& x) const {
+  const Eigen::Vector3d p = to_canonical(x);
+  switch (kind_) {
+    case PrimitiveKind::half_space: return detail::half_space_indicator(p);
+    case PrimitiveKind::ball: return detail::ball_indicator(p);
+    case PrimitiveKind::cylinder: return detail::cylinder_indicator(p);
+    case PrimitiveKind::box: return detail::box_indicator(p);
+  }
+  return 0.0;
+}
+
+// The world gradient of f(M (x - o)) is M^T grad f.
+Eigen::Vector3d Primitive::normal(const Eigen::Vector3d& x) const {
+  const Eigen::Vector3d p = to_canonical(x);
+  Eigen::Vector3d g = Eigen::Vector3d::Zero();
+  switch (kind_) {
+    case PrimitiveKind::half_space: g = detail::half_space_gradient(p); break;
+    case PrimitiveKind::ball: g = detail::ball_gradient(p); break;
+    case PrimitiveKind::cylinder: g = detail::cylinder_gradient(p); break;
+    case PrimitiveKind::box: g = detail::box_gradient(p); break;
+  }
+  return (to_canonical_.transpose() * g).normalized();
+}
+
+Chord Primitive::chord(const Eigen::Vector3d& x, const Eigen::Vector3d& v) const {
+  const Eigen::Vector3d p = to_canonical(x);
+  const Eigen::Vector3d u = to_canonical_ * v;
+  switch (kind_) {
+    case PrimitiveKind::half_space: return detail::half_space_chord(p, u);
+    case PrimitiveKind::ball: return detail::ball_chord(p, u);
+    case PrimitiveKind::cylinder: return detail::cylinder_chord(p, u);
+    case PrimitiveKind::box: return detail::box_chord(p, u);
+  }
+  return Chord::empty();
+}
+
+}  // namespace cosim::csg
