@@ -25,3 +25,15 @@ find_package(benchmark REQUIRED)
 find_package(assimp REQUIRED)                             # assimp::assimp: STL and OBJ meshes
 find_package(Qhull REQUIRED)                              # Qhull::qhullcpp, Qhull::qhull_r: convex hulls
 pkg_check_modules(CCD REQUIRED IMPORTED_TARGET ccd)       # PkgConfig::CCD: GJK, EPA, MPR
+
+# Tracker meshes. Debian's libgmsh-dev and voro++-dev ship no CMake or pkg-config files.
+find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)
+find_library(GMSH_LIBRARY gmsh REQUIRED)
+add_library(Gmsh::gmsh UNKNOWN IMPORTED)
+set_target_properties(Gmsh::gmsh PROPERTIES IMPORTED_LOCATION "${GMSH_LIBRARY}"
+  INTERFACE_INCLUDE_DIRECTORIES "${GMSH_INCLUDE_DIR}")
+find_path(VORO_INCLUDE_DIR voro++/voro++.hh REQUIRED)
+find_library(VORO_LIBRARY voro++ REQUIRED)
+add_library(Voro::voro UNKNOWN IMPORTED)
+set_target_properties(Voro::voro PROPERTIES IMPORTED_LOCATION "${VORO_LIBRARY}"
+  INTERFACE_INCLUDE_DIRECTORIES "${VORO_INCLUDE_DIR}")

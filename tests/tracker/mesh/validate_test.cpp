@@ -1,0 +1,103 @@
+#include "tracker/mesh/assemble.hpp"
+#include "tracker/mesh/box_mesh.hpp"
+#include "tracker/mesh/geometry.hpp"
+#include "tracker/mesh/validate.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace cosim::tracker {
+namespace {
+
+bool reports(const std::vector<Problem>& problems, Defect defect, Index cell, Index face = -2) {
+  return std::any_of(problems.begin(), problems.end(), [&](const Problem& p) {
+    return p.error && p.defect == defect && p.cell == cell && (face == -2 || p.face == face);
+  });
+}
+
+// Two unit cubes side by side along x; the first can lose its face towards the second.
+Polyhedra two_cubes(bool drop_shared_face) {
+  Polyhedra poly;
+  poly.source = "two cubes";
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) poly.vertices.emplace_back(i, j, k);
+  const auto v = [](int i, int j, int k) { return Index(i + 3 * (j + 2 * k)); };
+  for (int i = 0; i < 2; ++i) {
+    poly.add_face({v(i, 0, 0), v(i, 0, 1), v(i, 1, 1), v(i, 1, 0)});
+    if (!(drop_shared_face && i == 0)) poly.add_face({v(i + 1, 0, 0), v(i + 1, 1, 0), v(i + 1, 1, 1), v(i + 1, 0, 1)});
+    poly.add_face({v(i, 0, 0), v(i + 1, 0, 0), v(i + 1, 0, 1), v(i, 0, 1)});
+    poly.add_face({v(i, 1, 0), v(i, 1, 1), v(i + 1, 1, 1), v(i + 1, 1, 0)});
+    poly.add_face({v(i, 0, 0), v(i, 1, 0), v(i + 1, 1, 0), v(i + 1, 0, 0)});
+    poly.add_face({v(i, 0, 1), v(i + 1, 0, 1), v(i + 1, 1, 1), v(i, 1, 1)});
+    poly.end_cell();
+  }
+  return poly;
+}
+
+TEST(Validate, CleanMeshHasNoProblems) {
+  EXPECT_TRUE(validate(assemble(two_cubes(false))).empty());
+}
+
+TEST(Validate, RemovedFaceLeavesAnOpenCell) {
+  const auto problems = validate(assemble(two_cubes(true)));
+  EXPECT_TRUE(reports(problems, Defect::open_cell, 0)) << describe(problems);
+  EXPECT_FALSE(reports(problems, Defect::open_cell, 1)) << describe(problems);
+}
+
+TEST(Validate, FlippedNormalIsInvertedAndNotOpposite) {
+  Mesh mesh = assemble(two_cubes(false));
+  const auto towards_second = [](const Face& f) { return f.neighbour == 1; };
+  const Index shared = std::find_if(mesh.faces.begin(), mesh.faces.end(), towards_second) - mesh.faces.begin();
+  mesh.faces[shared].normal = -mesh.faces[shared].normal;
+  const auto problems = validate(mesh);
+  EXPECT_TRUE(reports(problems, Defect::inverted_face, 0, shared)) << describe(problems);
+  EXPECT_TRUE(reports(problems, Defect::normals_not_opposite, 0, shared)) << describe(problems);
+  EXPECT_TRUE(reports(problems, Defect::normals_not_opposite, 1, mesh.faces[shared].twin)) << describe(problems);
+}
+
+TEST(Validate, OneSidedNeighbourIsReported) {
+  Mesh mesh = assemble(two_cubes(false));
+  for (Face& face : mesh.faces)
+    if (face.neighbour == 0) face.neighbour = boundary_code(0);
+  const auto problems = validate(mesh);
+  EXPECT_TRUE(reports(problems, Defect::missing_twin, 0)) << describe(problems);
+}
+
+TEST(Validate, LShapedCellIsNonConvex) {
+  // An L-shaped prism: planar faces, one re-entrant edge.
+  Polyhedra poly;
+  poly.source = "L prism";
+  const double l[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  for (int z = 0; z < 2; ++z)
+    for (const auto& p : l) poly.vertices.emplace_back(p[0], p[1], z);
+  poly.add_face({5, 4, 3, 2, 1, 0});
+  poly.add_face({6, 7, 8, 9, 10, 11});
+  for (Index i = 0; i < 6; ++i) poly.add_face({i, Index((i + 1) % 6), Index((i + 1) % 6 + 6), Index(i + 6)});
+  poly.end_cell();
+  const Mesh mesh = assemble(std::move(poly));
+  const auto problems = validate(mesh);
+  // The sides through the re-entrant edge at (1, 1), sides 2 and 3, have the far arm outside.
+  EXPECT_TRUE(reports(problems, Defect::non_convex, 0, 2 + 2)) << describe(problems);
+  EXPECT_TRUE(reports(problems, Defect::non_convex, 0, 2 + 3)) << describe(problems);
+  EXPECT_FALSE(reports(problems, Defect::open_cell, 0));
+  try {
+    require_valid(mesh);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("L prism"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("non-convex"), std::string::npos);
+  }
+}
+
+TEST(Validate, FaceOfThreeCellsIsRejected) {
+  Polyhedra poly = two_cubes(false);
+  poly.add_face({1, 4, 10, 7});  // the face the two cubes share
+  poly.end_cell();
+  EXPECT_THROW(assemble(std::move(poly)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cosim::tracker

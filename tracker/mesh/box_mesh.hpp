@@ -1,0 +1,35 @@
+#pragma once
+// Structured hexahedral (or Kuhn-split tetrahedral) meshes of a box.
+
+#include "tracker/mesh/mesh.hpp"
+
+#include <array>
+#include <vector>
+
+namespace cosim::tracker {
+
+// The nodes along one axis: `cells` cells from `min` to `max` whose widths grow
+// geometrically by `ratio` = last width / first width (1: uniform), or, if `nodes` is not
+// empty, exactly those node coordinates (increasing; min, max and cells are then ignored).
+struct AxisSpacing {
+  double min = 0.0;
+  double max = 1.0;
+  int cells = 1;
+  double ratio = 1.0;
+  std::vector<double> nodes{};
+};
+
+struct BoxSpec {
+  std::array<AxisSpacing, 3> axes;
+  // Six tetrahedra per hexahedron around its main diagonal (Kuhn/Freudenthal): every
+  // hexahedron is split the same way, so the diagonals of shared faces match.
+  bool tetrahedra = false;
+};
+
+// Patches 0..5 are x_min, x_max, y_min, y_max, z_min, z_max. Cell order: x fastest, then
+// y, then z (times 6 tetrahedra when split). Throws std::invalid_argument on a bad spec.
+Mesh box_mesh(const BoxSpec& spec);
+
+std::vector<double> axis_nodes(const AxisSpacing& axis);
+
+}  // namespace cosim::tracker

@@ -1,0 +1,65 @@
+#include "tracker/mesh/geometry.hpp"
+
+#include <algorithm>
+
+namespace cosim::tracker {
+
+Index Mesh::cell_of_face(Index face) const {
+  const auto it = std::upper_bound(cell_faces.begin(), cell_faces.end(), face);
+  return static_cast<Index>(it - cell_faces.begin()) - 1;
+}
+
+Vec3 area_vector(const Mesh& mesh, Index face) {
+  const Index n = mesh.vertex_count(face);
+  // Relative to the first vertex, so meshes far from the origin lose no digits.
+  const Vec3& origin = mesh.face_vertex(face, 0);
+  Vec3 sum = Vec3::Zero();
+  for (Index k = 1; k + 1 < n; ++k)
+    sum += (mesh.face_vertex(face, k) - origin).cross(mesh.face_vertex(face, k + 1) - origin);
+  return 0.5 * sum;
+}
+
+Vec3 vertex_mean(const Mesh& mesh, Index face) {
+  const Index n = mesh.vertex_count(face);
+  Vec3 sum = Vec3::Zero();
+  for (Index k = 0; k < n; ++k) sum += mesh.face_vertex(face, k);
+  return sum / n;
+}
+
+void fit_geometry(Mesh& mesh) {
+  const Index cells = mesh.cell_count();
+  mesh.volume.assign(cells, 0.0);
+  mesh.centroid.assign(cells, Vec3::Zero());
+  for (Index c = 0; c < cells; ++c) {
+    const Index first = mesh.cell_faces[c], last = mesh.cell_faces[c + 1];
+    Vec3 reference = Vec3::Zero();
+    for (Index f = first; f < last; ++f) {
+      Face& face = mesh.faces[f];
+      face.point = vertex_mean(mesh, f);
+      // A zero-area face keeps a zero normal; validation reports it.
+      const Vec3 area = area_vector(mesh, f);
+      const double norm = area.norm();
+      face.normal = norm > 0.0 ? Vec3(-area / norm) : Vec3::Zero();
+      reference += face.point;
+    }
+    reference /= std::max<Index>(1, last - first);
+
+    double volume = 0.0;
+    Vec3 moment = Vec3::Zero();
+    for (Index f = first; f < last; ++f) {
+      const Vec3 middle = mesh.faces[f].point - reference;
+      const Index n = mesh.vertex_count(f);
+      for (Index k = 0; k < n; ++k) {
+        const Vec3 a = mesh.face_vertex(f, k) - reference;
+        const Vec3 b = mesh.face_vertex(f, (k + 1) % n) - reference;
+        const double v = middle.dot(a.cross(b)) / 6.0;
+        volume += v;
+        moment += v * (middle + a + b) / 4.0;
+      }
+    }
+    mesh.volume[c] = volume;
+    mesh.centroid[c] = reference + (volume != 0.0 ? Vec3(moment / volume) : Vec3::Zero());
+  }
+}
+
+}  // namespace cosim::tracker

@@ -1,0 +1,18 @@
+#pragma once
+// Planes, volumes and centroids from the vertices.
+
+#include "tracker/mesh/mesh.hpp"
+
+namespace cosim::tracker {
+
+// Each face's plane goes through the mean of its vertices with Newell's normal (the
+// exact area vector of a non-planar polygon); volume and centroid come from the
+// triangle fans of the faces around their vertex means, so they are those of the closed
+// triangulated surface even when faces are not planar.
+void fit_geometry(Mesh& mesh);
+
+// Outward area vector of a face (Newell): its length is the area of a planar face.
+Vec3 area_vector(const Mesh& mesh, Index face);
+Vec3 vertex_mean(const Mesh& mesh, Index face);
+
+}  // namespace cosim::tracker
