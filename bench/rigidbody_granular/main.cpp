@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   std::vector<std::size_t> sizes{1000, 10000, 100000};
   int steps = 500;
   int iterations = 10;
-  bool bullet = false;
+  [[maybe_unused]] bool bullet = false;  // only with COSIM_BENCH_BULLET
   app.add_option("-n,--bodies", sizes, "numbers of spheres")->capture_default_str();
   app.add_option("--steps", steps, "steps of 1 ms")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--iterations", iterations, "contact-solver iterations per step")->capture_default_str();
