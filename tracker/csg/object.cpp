@@ -1,9 +1,15 @@
 #include "tracker/csg/object.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace cosim::csg {
 
 Object::Object(const Expression& expression, bool permeable, const Eigen::Isometry3d& pose)
     : tree_(expression), permeable_(permeable), pose_(Eigen::Isometry3d::Identity()) {
+  if (primitive_count() > max_primitives)
+    throw std::invalid_argument("csg object: " + std::to_string(primitive_count()) + " primitives, at most " +
+                                std::to_string(max_primitives) + " fit in a logical state");
   set_pose(pose);
 }
 

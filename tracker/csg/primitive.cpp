@@ -58,4 +58,25 @@ Chord Primitive::chord(const Eigen::Vector3d& x, const Eigen::Vector3d& v) const
   return Chord::empty();
 }
 
+bool Primitive::surface_may_meet(const Eigen::AlignedBox3d& box) const {
+  Eigen::AlignedBox3d image;
+  bool all_inside = true;
+  for (int k = 0; k < 8; ++k) {
+    const Eigen::Vector3d corner = box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k));
+    all_inside = all_inside && contains(corner);
+    image.extend(to_canonical(corner));
+  }
+  if (all_inside) return false;
+  const Eigen::Vector3d& lo = image.min();
+  const Eigen::Vector3d& hi = image.max();
+  const Eigen::Vector3d nearest = Eigen::Vector3d::Zero().cwiseMax(lo).cwiseMin(hi);  // to the origin
+  switch (kind_) {
+    case PrimitiveKind::half_space: return lo.z() <= 0.0;
+    case PrimitiveKind::ball: return nearest.squaredNorm() <= 1.0;
+    case PrimitiveKind::cylinder: return nearest.head<2>().squaredNorm() <= 1.0;
+    case PrimitiveKind::box: return (lo.array() <= 1.0).all() && (hi.array() >= -1.0).all();
+  }
+  return true;
+}
+
 }  // namespace cosim::csg

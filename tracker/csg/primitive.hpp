@@ -33,6 +33,10 @@ class Primitive {
   bool contains(const Eigen::Vector3d& x) const { return indicator(x) < 0.0; }
   Eigen::Vector3d normal(const Eigen::Vector3d& x) const;
   Chord chord(const Eigen::Vector3d& x, const Eigen::Vector3d& v) const;
+  // Whether the surface may pass through the box: false only when the box is certainly
+  // wholly inside (all corners are, and the primitive is convex) or wholly outside (its
+  // image in the canonical frame, enlarged to an axis-aligned box, misses the solid).
+  bool surface_may_meet(const Eigen::AlignedBox3d& box) const;
 
  private:
   // The canonical frame keeps its origin apart from the matrix so that points near the

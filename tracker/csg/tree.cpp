@@ -1,15 +1,10 @@
 #include "tracker/csg/tree.hpp"
 
 #include <stdexcept>
-#include <string>
 
 namespace cosim::csg {
 
-Tree::Tree(const Expression& expression) : root_(normalise(expression, false, Eigen::Affine3d::Identity())) {
-  if (primitives_.size() > static_cast<std::size_t>(max_primitives))
-    throw std::invalid_argument("csg object: " + std::to_string(primitives_.size()) + " primitives, at most " +
-                                std::to_string(max_primitives) + " fit in a logical state");
-}
+Tree::Tree(const Expression& expression) : root_(normalise(expression, false, Eigen::Affine3d::Identity())) {}
 
 int Tree::normalise(const Expression& e, bool complement, const Eigen::Affine3d& frame) {
   switch (e.op()) {
@@ -48,20 +43,78 @@ int Tree::combine(Op op, const Expression& a, bool complement_a, const Expressio
   return static_cast<int>(nodes_.size()) - 1;
 }
 
-bool Tree::evaluate(int index, State state) const {
+template <typename IsInside>
+bool Tree::evaluate_with(int index, const IsInside& inside) const {
   const Node& node = nodes_[index];
   switch (node.op) {
-    case Op::literal: return test(state, node.primitive) != complemented_[node.primitive];
+    case Op::literal: return inside(node.primitive) != complemented_[node.primitive];
     case Op::any:
       for (const int child : node.children)
-        if (evaluate(child, state)) return true;
+        if (evaluate_with(child, inside)) return true;
       return false;
     case Op::all:
       for (const int child : node.children)
-        if (!evaluate(child, state)) return false;
+        if (!evaluate_with(child, inside)) return false;
       return true;
+    case Op::constant: return node.primitive != 0;
   }
   return false;
+}
+
+bool Tree::evaluate(int index, State state) const {
+  return evaluate_with(index, [state](int primitive) { return test(state, primitive); });
+}
+
+bool Tree::contains(const Eigen::Vector3d& x) const {
+  return evaluate_with(root_, [&](int primitive) { return primitives_[primitive].contains(x); });
+}
+
+Tree Tree::pruned(const std::vector<int>& kept, const std::function<bool(int)>& inside) const {
+  std::vector<int> local(primitives_.size(), -1);
+  Tree out;
+  for (const int g : kept) {
+    local[g] = static_cast<int>(out.primitives_.size());
+    out.primitives_.push_back(primitives_[g]);
+    out.complemented_.push_back(complemented_[g]);
+  }
+  out.root_ = out.prune(*this, root_, local, inside);
+  return out;
+}
+
+int Tree::add_constant(bool value) {
+  nodes_.push_back({Op::constant, value ? 1 : 0, {}});
+  return static_cast<int>(nodes_.size()) - 1;
+}
+
+int Tree::prune(const Tree& from, int index, const std::vector<int>& local, const std::function<bool(int)>& inside) {
+  const Node& node = from.nodes_[index];
+  switch (node.op) {
+    case Op::constant: return add_constant(node.primitive != 0);
+    case Op::literal:
+      if (local[node.primitive] < 0) return add_constant(inside(node.primitive) != from.complemented_[node.primitive]);
+      nodes_.push_back({Op::literal, local[node.primitive], {}});
+      return static_cast<int>(nodes_.size()) - 1;
+    case Op::any:
+    case Op::all: {
+      // A union is decided by one true child, an intersection by one false one; the other
+      // constant drops out.
+      const bool decisive = node.op == Op::any;
+      std::vector<int> children;
+      for (const int child : node.children) {
+        const int c = prune(from, child, local, inside);
+        if (nodes_[c].op != Op::constant) {
+          children.push_back(c);
+        } else if ((nodes_[c].primitive != 0) == decisive) {
+          return add_constant(decisive);
+        }
+      }
+      if (children.empty()) return add_constant(!decisive);
+      if (children.size() == 1) return children.front();
+      nodes_.push_back({node.op, -1, std::move(children)});
+      return static_cast<int>(nodes_.size()) - 1;
+    }
+  }
+  throw std::logic_error("csg: unknown tree node");
 }
 
 }  // namespace cosim::csg

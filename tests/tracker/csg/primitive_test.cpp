@@ -5,6 +5,7 @@
 
 #include "tracker/csg/object.hpp"
 #include "tracker/csg/shapes.hpp"
+#include "tracker/csg/tree.hpp"
 
 namespace cosim::csg {
 namespace {
@@ -111,6 +112,28 @@ TEST(Primitive, RejectsDegenerateInput) {
   Eigen::Affine3d flat = Eigen::Affine3d::Identity();
   flat.linear()(2, 2) = 0.0;
   EXPECT_THROW(Expression::transformed(flat, ball({0, 0, 0}, 1.0)), std::invalid_argument);
+}
+
+// The bounding test through the mesh: false only for boxes wholly inside or outside.
+TEST(Primitive, SurfaceMayMeetABoxOnlyWhereItPasses) {
+  const auto box = [](double lo, double hi) { return Eigen::AlignedBox3d(Eigen::Vector3d::Constant(lo), Eigen::Vector3d::Constant(hi)); };
+  const auto only = [](const Expression& e) { return Tree(e).primitives().front(); };
+  const Primitive b = only(ball({0, 0, 0}, 1.0));
+  EXPECT_FALSE(b.surface_may_meet(box(-0.5, 0.5)));  // inside
+  EXPECT_FALSE(b.surface_may_meet(box(0.6, 0.8)));   // outside, though within the ball's bounding box
+  EXPECT_TRUE(b.surface_may_meet(box(0.5, 0.7)));
+  const Primitive h = only(half_space({0, 0, 0.3}, {0, 0, 1}));
+  EXPECT_FALSE(h.surface_may_meet(box(-1, 0.2)));
+  EXPECT_FALSE(h.surface_may_meet(box(0.4, 1)));
+  EXPECT_TRUE(h.surface_may_meet(box(0.2, 0.4)));
+  const Primitive c = only(cylinder({0, 0, 0}, {0, 0, 1}, 1.0));
+  EXPECT_FALSE(c.surface_may_meet(box(5, 6)));
+  EXPECT_FALSE(c.surface_may_meet(Eigen::AlignedBox3d(Eigen::Vector3d(-0.5, -0.5, 100), Eigen::Vector3d(0.5, 0.5, 200))));
+  EXPECT_TRUE(c.surface_may_meet(box(0.6, 0.8)));
+  const Primitive cube = only(csg::box({0, 0, 0}, {1, 1, 1}));
+  EXPECT_FALSE(cube.surface_may_meet(box(-0.9, 0.9)));
+  EXPECT_FALSE(cube.surface_may_meet(box(1.1, 2)));
+  EXPECT_TRUE(cube.surface_may_meet(box(0.9, 1.1)));
 }
 
 }  // namespace

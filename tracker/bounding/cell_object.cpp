@@ -1,0 +1,103 @@
+#include "tracker/bounding/cell_object.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace cosim::tracker {
+namespace {
+
+Eigen::AlignedBox3d cell_box(const Mesh& mesh, Index cell, double margin) {
+  Eigen::AlignedBox3d box;
+  for (Index f = mesh.cell_faces[cell]; f < mesh.cell_faces[cell + 1]; ++f)
+    for (Index k = 0; k < mesh.vertex_count(f); ++k) box.extend(mesh.face_vertex(f, k));
+  const Vec3 grow = Vec3::Constant(margin * box.diagonal().norm());
+  return {box.min() - grow, box.max() + grow};
+}
+
+// Per cell, the object's primitives whose surface may meet the cell's box: O(cells x
+// primitives) box tests (a spatial search would make it O(cells + primitives x cells each);
+// the set-up is not the hot path).
+std::vector<std::vector<int>> touching(const Mesh& mesh, const csg::Tree& object, double margin) {
+  std::vector<std::vector<int>> near(static_cast<std::size_t>(mesh.cell_count()));
+  const auto& primitives = object.primitives();
+  for (Index c = 0; c < mesh.cell_count(); ++c) {
+    const Eigen::AlignedBox3d box = cell_box(mesh, c, margin);
+    for (int p = 0; p < static_cast<int>(primitives.size()); ++p)
+      if (primitives[static_cast<std::size_t>(p)].surface_may_meet(box)) near[static_cast<std::size_t>(c)].push_back(p);
+  }
+  return near;
+}
+
+// A cell's own primitives and its face neighbours', ascending.
+std::vector<int> with_ring(const Mesh& mesh, const std::vector<std::vector<int>>& near, Index cell) {
+  std::vector<int> all = near[static_cast<std::size_t>(cell)];
+  for (Index f = mesh.cell_faces[cell]; f < mesh.cell_faces[cell + 1]; ++f) {
+    const Index n = mesh.faces[static_cast<std::size_t>(f)].neighbour;
+    if (n >= 0) all.insert(all.end(), near[static_cast<std::size_t>(n)].begin(), near[static_cast<std::size_t>(n)].end());
+  }
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
+
+}  // namespace
+
+CellObject::CellObject(const Mesh& mesh, const csg::Tree& object, double margin) {
+  const std::vector<std::vector<int>> near = touching(mesh, object, margin);
+  first_.push_back(0);
+  for (Index c = 0; c < mesh.cell_count(); ++c) {
+    const std::vector<int> kept = with_ring(mesh, near, c);
+    if (kept.size() > static_cast<std::size_t>(csg::max_primitives))
+      throw std::invalid_argument(mesh.source + ": cell " + std::to_string(c) + " needs " +
+                                  std::to_string(kept.size()) + " primitives of a CSG object, a logical state holds " +
+                                  std::to_string(csg::max_primitives) + ": refine the mesh there");
+    // Left-out primitives are constant in the cell: their value at the centroid is theirs.
+    const Vec3& centre = mesh.centroid[static_cast<std::size_t>(c)];
+    trees_.push_back(object.pruned(kept, [&](int p) { return object.primitives()[static_cast<std::size_t>(p)].contains(centre); }));
+    primitives_.insert(primitives_.end(), kept.begin(), kept.end());
+    first_.push_back(static_cast<Index>(primitives_.size()));
+  }
+}
+
+std::span<const int> CellObject::primitives(Index cell) const {
+  const auto c = static_cast<std::size_t>(cell);
+  return {primitives_.data() + first_[c], static_cast<std::size_t>(first_[c + 1] - first_[c])};
+}
+
+csg::State CellObject::classify(Index cell, const Vec3& x) const {
+  csg::State state = 0;
+  const auto& local = tree(cell).primitives();
+  for (int i = 0; i < static_cast<int>(local.size()); ++i)
+    if (local[static_cast<std::size_t>(i)].contains(x)) state |= csg::bit(i);
+  return state;
+}
+
+csg::State CellObject::transfer(csg::State state, Index from, Index to, const Vec3& x) const {
+  const std::span<const int> old = primitives(from);
+  const std::span<const int> now = primitives(to);
+  const auto& local = tree(to).primitives();
+  csg::State out = 0;
+  std::size_t i = 0;
+  for (std::size_t j = 0; j < now.size(); ++j) {
+    while (i < old.size() && old[i] < now[j]) ++i;
+    const bool inside = i < old.size() && old[i] == now[j] ? csg::test(state, static_cast<int>(i)) : local[j].contains(x);
+    if (inside) out |= csg::bit(static_cast<int>(j));
+  }
+  return out;
+}
+
+CellObjectStats CellObject::stats() const {
+  CellObjectStats s;
+  const auto cells = static_cast<Index>(trees_.size());
+  for (Index c = 0; c < cells; ++c) {
+    const int n = static_cast<int>(primitives(c).size());
+    s.mean_primitives += n;
+    s.max_primitives = std::max(s.max_primitives, n);
+    if (tree(c).constant()) ++s.constant_cells;
+  }
+  if (cells > 0) s.mean_primitives /= cells;
+  return s;
+}
+
+}  // namespace cosim::tracker
