@@ -1,0 +1,65 @@
+// The tracker's mesh from the scene: each source, perturbation, and errors naming the key.
+#include <gtest/gtest.h>
+
+#include "scene/error.hpp"
+#include "tracker/program/scene_mesh.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+scene::Scene with_mesh(const std::string& mesh) {
+  return scene::load_scene_from_string(
+      "time: {end: 1.0e-6}\ncoupling: {window: 1.0e-6}\ndomain: {min: [0, 0, 0], max: [2, 1, 1]}\n"
+      "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 1.0e-6\n    options:\n      mesh: " +
+          mesh + "\n",
+      "scene.yaml");
+}
+
+Mesh mesh_of(const std::string& mesh) {
+  const scene::Scene s = with_mesh(mesh);
+  return read_mesh(scene::options_of(s, *s.participant("tracker")).map("mesh"), s);
+}
+
+double total_volume(const Mesh& m) {
+  double v = 0;
+  for (double cell : m.volume) v += cell;
+  return v;
+}
+
+std::string error_of(const std::string& mesh) {
+  try {
+    mesh_of(mesh);
+  } catch (const scene::SceneError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(SceneMesh, BoxOverTheDomainWithTetrahedraAndPerturbation) {
+  const Mesh hex = mesh_of("{type: box, cells: [4, 2, 2], ratio: [2, 1, 1]}");
+  EXPECT_EQ(hex.cell_count(), 16);
+  EXPECT_NEAR(total_volume(hex), 2.0, 1e-12);
+  const Mesh tets = mesh_of("{type: box, cells: [4, 2, 2], tetrahedra: true, perturb: {fraction: 0.1, seed: 3}}");
+  EXPECT_EQ(tets.cell_count(), 96);
+  EXPECT_NEAR(total_volume(tets), 2.0, 1e-9);
+}
+
+TEST(SceneMesh, PeriodicVoronoiHasNoWalls) {
+  const Mesh m = mesh_of("{type: voronoi, points: 60, seed: 2, periodic: [true, true, true]}");
+  EXPECT_EQ(m.cell_count(), 60);
+  for (const Face& f : m.faces) EXPECT_GE(f.neighbour, 0);
+  EXPECT_NEAR(total_volume(m), 2.0, 1e-9);
+}
+
+TEST(SceneMesh, MistakesNameTheKey) {
+  EXPECT_NE(error_of("{type: tetgen}").find("participants.tracker.options.mesh.type = tetgen"), std::string::npos);
+  EXPECT_NE(error_of("{type: box, cells: [4, 2.5, 2]}").find("mesh.cells"), std::string::npos);
+  EXPECT_NE(error_of("{type: gmsh, file: none.msh}").find("mesh.file"), std::string::npos);
+  EXPECT_NE(error_of("{type: voronoi, points: 10, periodic: [yes, no]}").find("three booleans"), std::string::npos);
+  EXPECT_NE(error_of("{type: box, cells: [2, 2, 2], perturb: {fraction: 0.7}}").find("mesh.perturb.fraction"),
+            std::string::npos);
+  EXPECT_NE(error_of("{type: box, cells: [2, 2, 2], colour: red}").find("mesh.colour"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cosim::tracker

@@ -1,0 +1,25 @@
+// The tracker's mesh as the scene describes it (`participants.tracker.options.mesh`):
+//
+//   mesh:
+//     type: box                    # box | gmsh | voronoi
+//     cells: [64, 64, 64]          # box: over the scene's domain
+//     ratio: [1, 1, 1]             # box, optional: last cell width / first, per axis
+//     tetrahedra: false            # box, optional: six tetrahedra per hexahedron
+//     file: channel.msh            # gmsh: relative to the scene file
+//     points: 1000                 # voronoi: uniform random sites in the domain
+//     seed: 1                      # voronoi: of the sites
+//     periodic: [false, false, false]   # voronoi, optional
+//     perturb: {fraction: 0.05, seed: 1}  # optional, any type: non-planar faces
+//
+// A mesh that cannot be built (a file Gmsh cannot read, a mesh that fails validation) is a
+// scene::SceneError naming the key, with the mesh's own report.
+#pragma once
+
+#include "scene/reader.hpp"
+#include "tracker/mesh/mesh.hpp"
+
+namespace cosim::tracker {
+
+Mesh read_mesh(const scene::Reader& mesh, const scene::Scene& scene);
+
+}  // namespace cosim::tracker
