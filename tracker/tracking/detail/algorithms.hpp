@@ -1,0 +1,24 @@
+#pragma once
+// The algorithms behind move() and the face crossing they share.
+
+#include "tracker/tracking/domain.hpp"
+
+namespace cosim::tracker::detail {
+
+enum class Crossed { neighbour, wall, removed };
+
+// The particle is on `face` of its cell: it enters the neighbour (periodic shift applied),
+// or the wall changes its velocity, or it leaves through an open patch.
+Crossed cross(const Domain& domain, Particle& particle, Index face, Random& random, MoveResult& result);
+
+MoveResult move_event_driven(const Domain& domain, Particle& particle, double dt, Random& random);
+
+// How the face-intersection baselines put back a particle found outside its cell.
+enum class Recovery {
+  first_violated_face,  // Stollmeier & Grabe, once at the end of the move
+  neighbour_search,     // Haselbacher et al., after every crossing and at the end
+};
+MoveResult move_face_intersection(const Domain& domain, Particle& particle, double dt, Random& random,
+                                  Recovery recovery);
+
+}  // namespace cosim::tracker::detail

@@ -1,0 +1,125 @@
+#include "tracker/tracking/detail/algorithms.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace cosim::tracker::detail {
+
+namespace {
+
+// Consecutive events that move the particle by less than the tolerance. More than this
+// and it is caught in a cycle of zero-time events: moving along a face or an edge through
+// a gap of a perturbed mesh, every cell around it has a face it is outside of and moving
+// out through, so each hands it on to the next.
+constexpr int cycle_length = 64;
+
+struct Event {
+  double dt;
+  Index face;
+};
+
+// Bannerman, Strobl & Poeschel: per face f(t) = n.(x + v t - point), n inward, the
+// particle leaves where f <= 0 and f' = n.v < 0, at dt = max(0, f / -f'). A particle found
+// slightly outside a face it moves out through gets dt = 0, never a negative time. The
+// face just entered through is skipped: the two sides' normals are opposite only to
+// round-off, and going straight back would be a cycle.
+Event next_event(const Mesh& mesh, const Particle& p, Index skip) {
+  Event next{std::numeric_limits<double>::infinity(), -1};
+  for (Index f = mesh.cell_faces[p.cell]; f < mesh.cell_faces[p.cell + 1]; ++f) {
+    if (f == skip) continue;
+    const Face& face = mesh.faces[f];
+    const double rate = face.normal.dot(p.v);
+    if (rate >= 0.0) continue;
+    const double dt = std::max(0.0, face.normal.dot(p.x - face.point) / -rate);
+    if (dt < next.dt) next = {dt, f};
+  }
+  return next;
+}
+
+void relocate(const Domain& domain, Particle& p, MoveResult& result) {
+  const Index found = domain.locator.locate(p.x);
+  if (found < 0 || found == p.cell) return;
+  p.cell = found;
+  ++result.relocations;
+}
+
+// The events keep a particle that crossed into a gap or an overlap of a perturbed mesh in
+// the cell it entered for as long as it moves inwards there, so it can stop outside that
+// cell. Then it goes across the violated face if the neighbour contains it, else to the
+// cell point location finds; in a gap no cell contains it, and it stays.
+void settle(const Domain& domain, Particle& p, MoveResult& result) {
+  const Violation violation = outside(domain.mesh, p.cell, p.x);
+  if (violation.depth <= domain.tolerance) return;
+  const Face& face = domain.mesh.faces[violation.face];
+  if (face.neighbour >= 0) {
+    const Vec3 there = p.x + domain.mesh.shifts[face.shift];
+    if (outside(domain.mesh, face.neighbour, there).depth <= domain.tolerance) {
+      p.x = there;
+      p.cell = face.neighbour;
+      ++result.relocations;
+      return;
+    }
+  }
+  relocate(domain, p, result);
+}
+
+// Out of a cycle: the particle is in a gap that none of the cells around it covers. It
+// jumps ahead along its path to the first of the points 4^k tolerances on that a cell
+// contains (point location) and takes that cell, where it is inside, so the events resume
+// with a positive time. The start and the point found are inside the domain, so the
+// straight jump crosses no wall. False if no cell holds any point up to the end of the move.
+bool jump_out_of_gap(const Domain& domain, Particle& p, double& remaining, MoveResult& result) {
+  for (double step = domain.tolerance / p.v.norm();; step *= 4.0) {
+    const double dt = std::min(step, remaining);
+    const Vec3 x = p.x + dt * p.v;
+    const Index found = domain.locator.locate(x);
+    if (found >= 0) {
+      p.x = x;
+      p.cell = found;
+      remaining -= dt;
+      ++result.relocations;
+      return true;
+    }
+    if (dt == remaining) return false;
+  }
+}
+
+}  // namespace
+
+MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Random& random) {
+  MoveResult result;
+  double remaining = dt;
+  Index skip = -1;
+  int streak = 0;
+  for (;;) {
+    if (streak > cycle_length) {
+      ++result.cycles_broken;
+      streak = 0;
+      skip = -1;
+      if (!jump_out_of_gap(domain, p, remaining, result)) {
+        result.stalled = true;  // the rest of the move is dropped, the cell kept
+        break;
+      }
+    }
+    const Event event = next_event(domain.mesh, p, skip);
+    if (event.dt >= remaining) {
+      p.x += remaining * p.v;
+      break;
+    }
+    p.x += event.dt * p.v;
+    remaining -= event.dt;
+    result.zero_time_events += event.dt == 0.0;
+    const double moved_squared = event.dt * event.dt * p.v.squaredNorm();
+    streak = moved_squared <= domain.tolerance * domain.tolerance ? streak + 1 : 0;
+    switch (cross(domain, p, event.face, random, result)) {
+      case Crossed::removed: return result;
+      case Crossed::neighbour: skip = domain.mesh.faces[event.face].twin; break;
+      case Crossed::wall: skip = -1; break;
+    }
+  }
+  settle(domain, p, result);
+  result.lost = is_lost(domain, p);
+  return result;
+}
+
+}  // namespace cosim::tracker::detail
