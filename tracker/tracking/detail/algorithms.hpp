@@ -7,6 +7,19 @@ namespace cosim::tracker::detail {
 
 enum class Crossed { neighbour, wall, removed };
 
+struct FaceEvent {
+  double dt;   // infinity: the particle leaves through no face
+  Index face;
+};
+
+// The face the particle leaves its cell through first: per face with f' = n.v < 0 (n
+// inward), dt = f / -f' with f = n.(x - point), skipping `skip` (the face just entered).
+// A plane the particle is already behind (dt < 0: round-off at an edge or a vertex, or a
+// gap of a perturbed mesh) is where the algorithms differ: the event-driven rule clamps it
+// to dt = 0 (`clamp_behind`), the face-intersection baselines do not see it, which is how
+// they lose particles.
+FaceEvent first_exit(const Mesh& mesh, const Particle& particle, Index skip, bool clamp_behind);
+
 // The particle is on `face` of its cell: it enters the neighbour (periodic shift applied),
 // or the wall changes its velocity, or it leaves through an open patch.
 Crossed cross(const Domain& domain, Particle& particle, Index face, Random& random, MoveResult& result);

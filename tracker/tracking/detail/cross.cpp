@@ -1,6 +1,26 @@
 #include "tracker/tracking/detail/algorithms.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace cosim::tracker::detail {
+
+FaceEvent first_exit(const Mesh& mesh, const Particle& p, Index skip, bool clamp_behind) {
+  FaceEvent first{std::numeric_limits<double>::infinity(), -1};
+  for (Index f = mesh.cell_faces[p.cell]; f < mesh.cell_faces[p.cell + 1]; ++f) {
+    if (f == skip) continue;
+    const Face& face = mesh.faces[f];
+    const double rate = face.normal.dot(p.v);
+    if (rate >= 0.0) continue;
+    double dt = face.normal.dot(p.x - face.point) / -rate;
+    if (dt < 0.0) {
+      if (!clamp_behind) continue;
+      dt = 0.0;
+    }
+    if (dt < first.dt) first = {dt, f};
+  }
+  return first;
+}
 
 Crossed cross(const Domain& domain, Particle& particle, Index face_index, Random& random, MoveResult& result) {
   const Face& face = domain.mesh.faces[face_index];

@@ -1,7 +1,6 @@
 #include "tracker/tracking/detail/algorithms.hpp"
 
 #include <algorithm>
-#include <limits>
 
 namespace cosim::tracker::detail {
 
@@ -12,29 +11,6 @@ namespace {
 // a gap of a perturbed mesh, every cell around it has a face it is outside of and moving
 // out through, so each hands it on to the next.
 constexpr int cycle_length = 64;
-
-struct Event {
-  double dt;
-  Index face;
-};
-
-// Bannerman, Strobl & Poeschel: per face f(t) = n.(x + v t - point), n inward, the
-// particle leaves where f <= 0 and f' = n.v < 0, at dt = max(0, f / -f'). A particle found
-// slightly outside a face it moves out through gets dt = 0, never a negative time. The
-// face just entered through is skipped: the two sides' normals are opposite only to
-// round-off, and going straight back would be a cycle.
-Event next_event(const Mesh& mesh, const Particle& p, Index skip) {
-  Event next{std::numeric_limits<double>::infinity(), -1};
-  for (Index f = mesh.cell_faces[p.cell]; f < mesh.cell_faces[p.cell + 1]; ++f) {
-    if (f == skip) continue;
-    const Face& face = mesh.faces[f];
-    const double rate = face.normal.dot(p.v);
-    if (rate >= 0.0) continue;
-    const double dt = std::max(0.0, face.normal.dot(p.x - face.point) / -rate);
-    if (dt < next.dt) next = {dt, f};
-  }
-  return next;
-}
 
 void relocate(const Domain& domain, Particle& p, MoveResult& result) {
   const Index found = domain.locator.locate(p.x);
@@ -101,7 +77,10 @@ MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Rando
         break;
       }
     }
-    const Event event = next_event(domain.mesh, p, skip);
+    // Bannerman, Strobl & Poeschel: the earliest dt >= 0 with f <= 0 and f' < 0; a particle
+    // slightly outside a face it moves out through gets dt = 0, never a negative time. The
+    // face just entered is skipped: the two sides' normals are opposite only to round-off.
+    const FaceEvent event = first_exit(domain.mesh, p, skip, true);
     if (event.dt >= remaining) {
       p.x += remaining * p.v;
       break;

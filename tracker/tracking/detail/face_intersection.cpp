@@ -1,6 +1,5 @@
 #include "tracker/tracking/detail/algorithms.hpp"
 
-#include <limits>
 
 namespace cosim::tracker::detail {
 
@@ -9,28 +8,6 @@ namespace {
 // The baselines can cycle between cells on round-off; a move ends after this many
 // crossings whatever its remaining time (far more than a move of a few cells needs).
 constexpr int crossing_cap = 10000;
-
-struct Hit {
-  double dt;
-  Index face;
-};
-
-// The first face plane ahead along the path: dt = f / -f' over the faces with f' < 0,
-// from where the particle is. A plane it is already behind (dt < 0: round-off at an edge
-// or a vertex, or a gap of a perturbed mesh) is not seen. That is how these algorithms
-// lose particles, and what the event-driven rule's clamp to dt = 0 prevents.
-Hit first_intersection(const Mesh& mesh, const Particle& p, Index skip) {
-  Hit first{std::numeric_limits<double>::infinity(), -1};
-  for (Index f = mesh.cell_faces[p.cell]; f < mesh.cell_faces[p.cell + 1]; ++f) {
-    if (f == skip) continue;
-    const Face& face = mesh.faces[f];
-    const double rate = face.normal.dot(p.v);
-    if (rate >= 0.0) continue;
-    const double dt = face.normal.dot(p.x - face.point) / -rate;
-    if (dt >= 0.0 && dt < first.dt) first = {dt, f};
-  }
-  return first;
-}
 
 bool inside(const Domain& domain, Index cell, const Vec3& x) {
   return outside(domain.mesh, cell, x).depth <= domain.tolerance;
@@ -81,7 +58,7 @@ MoveResult move_face_intersection(const Domain& domain, Particle& p, double dt, 
       result.stalled = true;
       break;
     }
-    const Hit hit = first_intersection(domain.mesh, p, skip);
+    const FaceEvent hit = first_exit(domain.mesh, p, skip, false);
     if (hit.face < 0 || hit.dt >= remaining) {
       p.x += remaining * p.v;
       break;
