@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
   spdlog::set_pattern("cosim: %^%l%$: %v");
   spdlog::set_level(spdlog::level::info);
 
-  try {
+  return cosim::scene::exit_code("cosim", [&] {
     if (*check_cmd) return check(check_file);
     if (scene_file.empty() && resume.empty()) {
       std::cerr << "cosim run: give a scene file or --resume run.h5\n";
@@ -66,11 +66,5 @@ int main(int argc, char** argv) {
     request.output = output;
     request.progress = !quiet;
     return cosim::run::run(request);
-  } catch (const cosim::scene::SceneError& e) {
-    std::cerr << "cosim: invalid scene: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "cosim: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <iostream>
+
 namespace cosim::scene {
 namespace {
 
@@ -21,5 +23,17 @@ SceneError::SceneError(std::string file, int line, std::string key, std::string 
       line(line),
       key(std::move(key)),
       value(std::move(value)) {}
+
+int exit_code(const std::string& program, const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const SceneError& e) {
+    std::cerr << program << ": invalid scene: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << "\n";
+    return 1;
+  }
+}
 
 }  // namespace cosim::scene

@@ -2,6 +2,7 @@
 // jumping to file:line, a test asserting the key) without parsing what().
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -17,5 +18,10 @@ struct SceneError : std::runtime_error {
   std::string key;    // dotted path with list indices: bodies[0].shape.radius
   std::string value;  // as written in the file, shortened
 };
+
+// A program's exit code for `body`: its own, or 2 for a SceneError ("<program>: invalid
+// scene: ..." on stderr) and 1 for any other exception ("<program>: ..."), so every program
+// tells a bad scene from a failed run the same way.
+int exit_code(const std::string& program, const std::function<int()>& body);
 
 }  // namespace cosim::scene

@@ -8,7 +8,6 @@
 
 #include <cstdlib>
 #include <functional>
-#include <iostream>
 
 #include <spdlog/spdlog.h>
 
@@ -33,18 +32,6 @@ int coupled() {
                                                    static_cast<std::uint32_t>(Data::Fields),
                                                static_cast<std::uint32_t>(Data::Poses), static_cast<std::uint32_t>(ranks));
   });
-}
-
-int standalone(const std::string& scene, const std::string& output) {
-  try {
-    return cosim::program::run_fluid_standalone(scene, output);
-  } catch (const cosim::scene::SceneError& e) {
-    std::cerr << "cosim-fluid: invalid scene: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "cosim-fluid: " << e.what() << "\n";
-    return 1;
-  }
 }
 
 // PETSc sees only the arguments meant for it, and is finalised after every solver is gone.
@@ -74,5 +61,7 @@ int main(int argc, char** argv) {
   app.add_option("--standalone", scene, "Run this scene with the bodies in prescribed motion")->required();
   app.add_option("-o,--output", output, "Run file to write (default: the scene's output.file)");
   CLI11_PARSE(app, argc, argv);
-  return with_petsc(app.remaining(), [&] { return standalone(scene, output); });
+  return with_petsc(app.remaining(), [&] {
+    return cosim::scene::exit_code("cosim-fluid", [&] { return cosim::program::run_fluid_standalone(scene, output); });
+  });
 }

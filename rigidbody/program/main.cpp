@@ -3,8 +3,6 @@
 //   cosim-rigidbody --standalone scene.yaml [-o f.h5]  the scene alone, no external forces
 #include <CLI/CLI.hpp>
 
-#include <iostream>
-
 #include <spdlog/spdlog.h>
 
 #include "participant/run_participant.hpp"
@@ -29,14 +27,8 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", output, "Run file to write (default: the scene's output.file)");
   CLI11_PARSE(app, argc, argv);
 
-  try {
+  return cosim::scene::exit_code("cosim-rigidbody", [&] {
     cosim::program::run_standalone(scene, output);
     return 0;
-  } catch (const cosim::scene::SceneError& e) {
-    std::cerr << "cosim-rigidbody: invalid scene: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "cosim-rigidbody: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }
