@@ -33,18 +33,21 @@ void share(MPI_Comm comm, T& value) {
   MPI_Bcast(&value, sizeof(T), MPI_BYTE, 0, comm);
 }
 
-void share(MPI_Comm comm, std::vector<double>& values) {
+// A vector or string from rank 0 (send) to the others (receive). MPI_Bcast only reads the
+// root's buffer, so the lead sends its callers' values as they are, without a copy.
+template <typename Values>
+void send(MPI_Comm comm, const Values& values) {
   unsigned long long n = values.size();
   share(comm, n);
-  values.resize(n);
-  MPI_Bcast(values.data(), count(n), MPI_DOUBLE, 0, comm);
+  MPI_Bcast(const_cast<typename Values::value_type*>(values.data()), count(n * sizeof(values[0])), MPI_BYTE, 0, comm);
 }
 
-void share(MPI_Comm comm, std::string& text) {
-  unsigned long long n = text.size();
+template <typename Values>
+void receive(MPI_Comm comm, Values& values) {
+  unsigned long long n = 0;
   share(comm, n);
-  text.resize(n);
-  MPI_Bcast(text.data(), count(n), MPI_CHAR, 0, comm);
+  values.resize(n);
+  MPI_Bcast(values.data(), count(n * sizeof(values[0])), MPI_BYTE, 0, comm);
 }
 
 // The per-rank sizes a gathered state announces, checked against this run's rank count
@@ -110,10 +113,10 @@ std::vector<double> gathered(MPI_Comm comm, const std::vector<double>& part) {
 void initialise_follower(Solver& local, MPI_Comm comm) {
   std::string text, file, name;
   std::vector<double> poses;
-  share(comm, text);
-  share(comm, file);
-  share(comm, name);
-  share(comm, poses);
+  receive(comm, text);
+  receive(comm, file);
+  receive(comm, name);
+  receive(comm, poses);
   const std::vector<double> state = scattered(comm, {}, {});
   local.initialise(scene::load_scene_from_string(text, file), name, poses, state);
 }
@@ -122,7 +125,7 @@ void advance_follower(Solver& local, MPI_Comm comm) {
   Window w;
   Inputs in;
   share(comm, w);
-  for (std::vector<double>* v : {&in.poses_start, &in.poses_end, &in.forces_start, &in.forces_end}) share(comm, *v);
+  for (std::vector<double>* v : {&in.poses_start, &in.poses_end, &in.forces_start, &in.forces_end}) receive(comm, *v);
   local.advance(w, in);
 }
 
@@ -142,22 +145,18 @@ Outputs LeadSolver::initialise(const scene::Scene& scene, const std::string& nam
                                const std::vector<double>& state) {
   const std::vector<int> sizes = state_sizes(state, size_of(comm_));
   announce(kInitialise);
-  std::string text = scene.text, file = scene.file.string(), who = name;
-  std::vector<double> shared_poses = poses;
-  share(comm_, text);
-  share(comm_, file);
-  share(comm_, who);
-  share(comm_, shared_poses);
+  send(comm_, scene.text);
+  send(comm_, scene.file.string());
+  send(comm_, name);
+  send(comm_, poses);
   return local_.initialise(scene, name, poses, scattered(comm_, state, sizes));
 }
 
 Outputs LeadSolver::advance(const Window& w, const Inputs& in) {
   announce(kAdvance);
-  Window shared_window = w;
-  Inputs shared = in;
-  share(comm_, shared_window);
-  for (std::vector<double>* v : {&shared.poses_start, &shared.poses_end, &shared.forces_start, &shared.forces_end})
-    share(comm_, *v);
+  Window shared = w;
+  share(comm_, shared);
+  for (const std::vector<double>* v : {&in.poses_start, &in.poses_end, &in.forces_start, &in.forces_end}) send(comm_, *v);
   return local_.advance(w, in);
 }
 
@@ -219,14 +218,8 @@ int follow(Solver& local, MPI_Comm comm) {
 
 int run_on_ranks(Solver& local, MPI_Comm comm, const std::function<int(Solver&)>& lead) {
   if (rank_of(comm) != 0) return follow(local, comm);
-  LeadSolver solver(local, comm);
-  int code = 1;
-  try {
-    code = lead(solver);
-  } catch (...) {
-    solver.finish(1);
-    throw;
-  }
+  LeadSolver solver(local, comm);  // if `lead` throws, its destructor releases the followers
+  const int code = lead(solver);
   solver.finish(code);
   return code;
 }

@@ -34,7 +34,6 @@ class LeadSolver final : public Solver {
 
  private:
   void announce(int call) const;
-  void scatter_state(const std::vector<double>& state) const;
 
   Solver& local_;
   MPI_Comm comm_;

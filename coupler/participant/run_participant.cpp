@@ -3,6 +3,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "participant/seconds_since.hpp"
 #include "protocol/field_message.hpp"
 
 namespace cosim::participant {
@@ -36,10 +37,6 @@ Message outputs_message(Type type, const Outputs& out, std::uint32_t provides, d
 Inputs inputs_of(const Message& m) {
   return {values_or_empty(m, Tag::Poses, 0), values_or_empty(m, Tag::Poses, 1),
           values_or_empty(m, Tag::Forces, 0), values_or_empty(m, Tag::Forces, 1)};
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std::uint32_t needs,

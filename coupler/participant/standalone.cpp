@@ -4,14 +4,13 @@
 
 #include "cosim_git_hash.hpp"
 #include "output/run_file.hpp"
+#include "participant/seconds_since.hpp"
 #include "protocol/message.hpp"
 
 namespace cosim::participant {
 namespace {
 
 using clock = std::chrono::steady_clock;
-
-double seconds_since(clock::time_point start) { return std::chrono::duration<double>(clock::now() - start).count(); }
 
 std::vector<double> or_zeros(const std::vector<double>& values, std::size_t size) {
   return values.empty() ? std::vector<double>(size, 0.0) : values;
@@ -57,7 +56,7 @@ void run_standalone(const scene::Scene& scene, Solver& solver, const std::string
       const Window w{k, 1, static_cast<double>(k) * scene.coupling.window,
                      static_cast<double>(k + 1) * scene.coupling.window};
       const Outputs out = solver.advance(w, {});
-      if ((k + 1) % static_cast<std::uint64_t>(scene.output.every) == 0 || k + 1 == n)
+      if (scene.output.row_at(k + 1, n))
         record(k + 1, w.t1, out, 1, seconds_since(window_started));
       write_fields(k + 1, w.t1);
     }

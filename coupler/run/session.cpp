@@ -184,12 +184,11 @@ void Session::windows(Peers& peers) {
     for (const auto& name : roles_.all()) peers.send(name, commit, in_window(k, window_start(k), t1));
     current_ = r.end;
     committed_ = k + 1;
-    const bool last = k + 1 == n;
     const double wall = std::chrono::duration<double>(clock::now() - started).count();
-    if ((k + 1) % static_cast<std::uint64_t>(scene_.output.every) == 0 || last)
+    if (scene_.output.row_at(k + 1, n))
       record(k + 1, t1, r, wall);
     write_fields(peers, k + 1);
-    if ((k + 1) % static_cast<std::uint64_t>(scene_.output.checkpoint_every) == 0 || last)
+    if (scene_.output.checkpoint_at(k + 1, n))
       checkpoint(peers, k + 1);
     progress.update(k, t1, r.iterations);
   }

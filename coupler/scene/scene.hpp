@@ -49,9 +49,17 @@ struct Output {
   int every = 1;                           // write body series every N windows
   int checkpoint_every = 10;               // checkpoint every N windows
   int fields_every = 10;                   // grid fields at t = 0, every N windows and the last; 0: none
-  // Whether window k's end (k + 1 windows done) is a fields time; the start is window_done = 0.
-  bool fields_at(std::uint64_t windows_done, std::uint64_t windows) const {
-    return fields_every > 0 && (windows_done % static_cast<std::uint64_t>(fields_every) == 0 || windows_done == windows);
+  // Whether the state after `done` of `windows` windows is written: every N-th and the last
+  // (done = 0, the start, is a multiple of every N).
+  bool row_at(std::uint64_t done, std::uint64_t windows) const { return at(every, done, windows); }
+  bool checkpoint_at(std::uint64_t done, std::uint64_t windows) const { return at(checkpoint_every, done, windows); }
+  bool fields_at(std::uint64_t done, std::uint64_t windows) const {
+    return fields_every > 0 && at(fields_every, done, windows);
+  }
+
+ private:
+  static bool at(int every_n, std::uint64_t done, std::uint64_t windows) {
+    return done % static_cast<std::uint64_t>(every_n) == 0 || done == windows;
   }
 };
 
