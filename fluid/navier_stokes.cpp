@@ -128,8 +128,10 @@ std::vector<StepReport> NavierStokes::advance_to(double t_end, const std::functi
   const double eps = 1e-12 * std::max(1.0, std::abs(t_end));
   while (time_ < t_end - eps) {
     double dt = stable_dt();
+    // time_ is a running sum, so a window that is a whole number of steps can leave a
+    // remainder a rounding error above dt: that is the last step, not two half steps.
     const double remaining = t_end - time_;
-    if (dt >= remaining)
+    if (dt >= remaining * (1 - 1e-9))
       dt = remaining;
     else if (2 * dt > remaining)
       dt = remaining / 2;

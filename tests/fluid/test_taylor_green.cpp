@@ -131,5 +131,20 @@ TEST(TaylorGreen, AdaptiveStepsLandOnTheEndTime) {
               reports.size(), reports.back().dt, velocity_error(flow, plane));
 }
 
+// Windows of whole numbers of dt_max take exactly that many steps, every window alike,
+// although the running time carries rounding (0.1 is not exact in binary).
+TEST(TaylorGreen, WindowsOfWholeStepsTakeThatManySteps) {
+  const Plane plane{0, 1};
+  Grid grid = periodic_box(8, plane);
+  BoundaryConditions bc(grid);
+  NavierStokes flow(grid, bc, kFluid, {.cfl = 10, .dt_max = 0.01, .dt_initial = 0.01});
+  flow.set_velocity([plane](const Point& x) { return vortex(x, 0, plane); });
+  for (int k = 1; k <= 20; ++k) {
+    const auto reports = flow.advance_to(0.05 * k);
+    ASSERT_EQ(reports.size(), 5u) << "window " << k;
+    for (const StepReport& r : reports) EXPECT_NEAR(r.dt, 0.01, 1e-12) << "window " << k;
+  }
+}
+
 }  // namespace
 }  // namespace cosim::fluid
