@@ -99,8 +99,9 @@ void NavierStokes::set_velocity(const std::function<Point(const Point&)>& u0) {
   viscosity_.update(local_);
 }
 
+// local_ holds u_ at time_ (with boundary ghosts) from set_velocity(), restore() and the end
+// of every step: u_ changes nowhere else.
 double NavierStokes::stable_dt() {
-  local_.update(u_, bc_, time_);
   return controller_.next(convective_rate(grid_, local_), previous_dt_);
 }
 
@@ -109,7 +110,6 @@ StepReport NavierStokes::step() { return step(stable_dt()); }
 StepReport NavierStokes::step(double dt) {
   if (!(dt > 0)) throw std::invalid_argument("fluid step: dt must be > 0");
   report_ = {};
-  local_.update(u_, bc_, time_);
   viscosity_.update(local_);
   predict(dt);
   project(dt);

@@ -70,8 +70,8 @@ class NavierStokes {
 
   double time() const { return time_; }
   const Grid& grid() const { return grid_; }
-  // Global vectors of the component DMs / the pressure DM; the FBM writes rigid-body
-  // velocities into these faces and reads sigma from them.
+  // Global vectors of the component DMs / the pressure DM, for reading (the FBM reads sigma
+  // from them; it imposes rigid velocities through impose(), inside the step).
   Vec velocity(int c) const { return u_[static_cast<std::size_t>(c)]; }
   Vec pressure() const { return p_; }
   // The current velocity with ghosts and the viscosity of the last step, for the stress.
