@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 
 #include <Eigen/Geometry>
 
@@ -23,6 +24,11 @@ class Expression {
   friend Expression operator&(const Expression& a, const Expression& b) { return {Op::intersect, a, b}; }
   friend Expression operator-(const Expression& a, const Expression& b) { return {Op::subtract, a, b}; }
   friend Expression operator~(const Expression& a) { return {Op::complement, a, a}; }
+  // The union (intersection) of all `parts`, paired off into a balanced tree: a chain
+  // a | b | c | ... of N would make normalisation N deep and O(N^2) (a balls file, a
+  // lattice). Throws std::invalid_argument for no parts.
+  static Expression unite(std::span<const Expression> parts);
+  static Expression intersect(std::span<const Expression> parts);
 
   Op op() const { return node_->op; }
   PrimitiveKind kind() const { return node_->kind; }

@@ -25,12 +25,6 @@ enum Kind : std::size_t {
   kLattice, kBalls
 };
 
-csg::Expression combined(const std::vector<csg::Expression>& parts, bool unite) {
-  csg::Expression e = parts.front();
-  for (std::size_t i = 1; i < parts.size(); ++i) e = unite ? (e | parts[i]) : (e & parts[i]);
-  return e;
-}
-
 std::vector<csg::Expression> shapes(const Reader& r, const std::string& key, const std::filesystem::path& file) {
   std::vector<csg::Expression> out;
   for (const Reader& s : r.maps(key)) out.push_back(read_shape(s, file));
@@ -75,7 +69,7 @@ csg::Expression lattice(const Reader& r, const std::filesystem::path& file) {
         t.translate(spacing.cwiseProduct(Eigen::Vector3d(i, j, k)));
         copies.push_back(csg::Expression::transformed(t, cell));
       }
-  return combined(copies, true);
+  return csg::Expression::unite(copies);
 }
 
 csg::Expression balls_file(const Reader& r, const std::filesystem::path& scene_file) {
@@ -95,7 +89,7 @@ csg::Expression balls_file(const Reader& r, const std::filesystem::path& scene_f
     balls.push_back(csg::ball({x, y, z}, radius));
   }
   if (balls.empty()) r.fail("file", path.string() + " holds no balls");
-  return combined(balls, true);
+  return csg::Expression::unite(balls);
 }
 
 csg::Expression primitive(std::size_t kind, const Reader& r) {
@@ -119,8 +113,8 @@ csg::Expression from_map(const Reader& shape, const std::string& key, const Read
 
 csg::Expression read_kind(Kind kind, const Reader& shape, const std::string& key, const std::filesystem::path& file) {
   switch (kind) {
-    case kUnion: return combined(shapes(shape, key, file), true);
-    case kIntersection: return combined(shapes(shape, key, file), false);
+    case kUnion: return csg::Expression::unite(shapes(shape, key, file));
+    case kIntersection: return csg::Expression::intersect(shapes(shape, key, file));
     case kDifference: {
       const auto parts = shapes(shape, key, file);
       if (parts.size() != 2) shape.fail(key, "needs exactly two shapes: a minus b");

@@ -35,9 +35,9 @@ std::vector<Ball> cluster() {
 }
 
 csg::Tree union_of(const std::vector<Ball>& balls) {
-  csg::Expression e = csg::ball(balls.front().centre, balls.front().radius);
-  for (std::size_t i = 1; i < balls.size(); ++i) e = e | csg::ball(balls[i].centre, balls[i].radius);
-  return csg::Tree(e);
+  std::vector<csg::Expression> parts;
+  for (const Ball& b : balls) parts.push_back(csg::ball(b.centre, b.radius));
+  return csg::Tree(csg::Expression::unite(parts));
 }
 
 // Round-off decides the bits within this of a surface: such points are not compared.

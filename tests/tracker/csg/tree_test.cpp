@@ -61,5 +61,18 @@ TEST(Tree, RejectsMorePrimitivesThanTheStateHolds) {
   EXPECT_THROW(Object(e | ball({-1, 0, 0}, 1.0)), std::invalid_argument);
 }
 
+// A balls file of 1e5 lines: the balanced union normalises in N log N, log N deep, and keeps
+// the balls in order.
+TEST(Tree, LongUnionsStayShallow) {
+  std::vector<Expression> balls;
+  for (int i = 0; i < 100000; ++i) balls.push_back(ball({3.0 * i, 0, 0}, 1.0));
+  const Tree tree(Expression::unite(balls));
+  ASSERT_EQ(tree.primitives().size(), 100000u);
+  EXPECT_TRUE(tree.primitives()[7].contains({21.5, 0, 0}));
+  EXPECT_TRUE(tree.contains({3.0 * 99999 + 0.5, 0, 0}));
+  EXPECT_FALSE(tree.contains({1.5, 0, 0}));
+  EXPECT_THROW(Expression::unite({}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace cosim::csg
