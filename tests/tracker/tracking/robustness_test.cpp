@@ -95,7 +95,12 @@ void expect_none_lost(const std::string& label, const Mesh& mesh, bool walled) {
     if (algorithm == Algorithm::event_driven) {
       EXPECT_EQ(tally.lost, 0) << label;
       EXPECT_EQ(escaped, 0) << label;
-      EXPECT_EQ(tally.removed, 0) << label;
+      EXPECT_GT(tally.zero_time_events, tally.moves / 10) << label << ": the starts are not hard cases";
+      // Moves along edges through gaps: 0.13 to 0.16 % stall, 0.2 to 0.4 % end in a gap.
+      EXPECT_LT(tally.stalled, tally.moves / 200) << label;
+      EXPECT_LT(in_gap, tally.moves / 100) << label;
+    } else {
+      EXPECT_GT(tally.lost, 0) << label << ": the baseline should lose some on a perturbed mesh";
     }
   }
 }
