@@ -1,5 +1,7 @@
 #include "tracker/bounding/cell_object.hpp"
 
+#include "tracker/mesh/geometry.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -7,10 +9,8 @@
 namespace cosim::tracker {
 namespace {
 
-Eigen::AlignedBox3d cell_box(const Mesh& mesh, Index cell, double margin) {
-  Eigen::AlignedBox3d box;
-  for (Index f = mesh.cell_faces[cell]; f < mesh.cell_faces[cell + 1]; ++f)
-    for (Index k = 0; k < mesh.vertex_count(f); ++k) box.extend(mesh.face_vertex(f, k));
+Eigen::AlignedBox3d enlarged_box(const Mesh& mesh, Index cell, double margin) {
+  const Eigen::AlignedBox3d box = cell_box(mesh, cell);
   const Vec3 grow = Vec3::Constant(margin * box.diagonal().norm());
   return {box.min() - grow, box.max() + grow};
 }
@@ -22,7 +22,7 @@ std::vector<std::vector<int>> touching(const Mesh& mesh, const csg::Tree& object
   std::vector<std::vector<int>> near(static_cast<std::size_t>(mesh.cell_count()));
   const auto& primitives = object.primitives();
   for (Index c = 0; c < mesh.cell_count(); ++c) {
-    const Eigen::AlignedBox3d box = cell_box(mesh, c, margin);
+    const Eigen::AlignedBox3d box = enlarged_box(mesh, c, margin);
     for (int p = 0; p < static_cast<int>(primitives.size()); ++p)
       if (primitives[static_cast<std::size_t>(p)].surface_may_meet(box)) near[static_cast<std::size_t>(c)].push_back(p);
   }

@@ -62,4 +62,11 @@ void fit_geometry(Mesh& mesh) {
   }
 }
 
+Eigen::AlignedBox3d cell_box(const Mesh& mesh, Index cell) {
+  Eigen::AlignedBox3d box;
+  for (Index f = mesh.cell_faces[cell]; f < mesh.cell_faces[cell + 1]; ++f)
+    for (Index k = 0; k < mesh.vertex_count(f); ++k) box.extend(mesh.face_vertex(f, k));
+  return box;
+}
+
 }  // namespace cosim::tracker

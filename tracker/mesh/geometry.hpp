@@ -14,5 +14,8 @@ void fit_geometry(Mesh& mesh);
 // Outward area vector of a face (Newell): its length is the area of a planar face.
 Vec3 area_vector(const Mesh& mesh, Index face);
 Vec3 vertex_mean(const Mesh& mesh, Index face);
+// The box around a cell's vertices (its planes' intersection pokes out of it by the order
+// of the faces' non-planarity).
+Eigen::AlignedBox3d cell_box(const Mesh& mesh, Index cell);
 
 }  // namespace cosim::tracker

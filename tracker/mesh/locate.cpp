@@ -1,5 +1,7 @@
 #include "tracker/mesh/locate.hpp"
 
+#include "tracker/mesh/geometry.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,20 +14,16 @@ PointLocator::PointLocator(const Mesh& mesh) : mesh_(&mesh) {
   lo_ = Vec3::Constant(std::numeric_limits<double>::infinity());
   hi_ = -lo_;
   for (Index c = 0; c < cells; ++c) {
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    const Eigen::AlignedBox3d box = cell_box(mesh, c);
     double off_plane = 0.0;
     for (Index f = mesh.cell_faces[c]; f < mesh.cell_faces[c + 1]; ++f)
-      for (Index k = 0; k < mesh.vertex_count(f); ++k) {
-        const Vec3& x = mesh.face_vertex(f, k);
-        lo = lo.cwiseMin(x);
-        hi = hi.cwiseMax(x);
-        off_plane = std::max(off_plane, std::abs(mesh.faces[f].normal.dot(x - mesh.faces[f].point)));
-      }
+      for (Index k = 0; k < mesh.vertex_count(f); ++k)
+        off_plane = std::max(off_plane, std::abs(mesh.faces[f].normal.dot(mesh.face_vertex(f, k) - mesh.faces[f].point)));
     // The cell is its planes' intersection, which pokes out of the vertices' box by the
     // order of the faces' non-planarity.
-    const double pad = 4.0 * off_plane + 1e-9 * (hi - lo).norm();
-    cell_lo[c] = lo.array() - pad;
-    cell_hi[c] = hi.array() + pad;
+    const double pad = 4.0 * off_plane + 1e-9 * box.diagonal().norm();
+    cell_lo[c] = box.min().array() - pad;
+    cell_hi[c] = box.max().array() + pad;
     lo_ = lo_.cwiseMin(cell_lo[c]);
     hi_ = hi_.cwiseMax(cell_hi[c]);
   }

@@ -25,13 +25,7 @@ class CellCheck {
   CellCheck(const Mesh& mesh, Index cell, std::vector<Problem>& problems)
       : mesh_(mesh), cell_(cell), first_(mesh.cell_faces[cell]), last_(mesh.cell_faces[cell + 1]),
         problems_(problems) {
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (Index f = first_; f < last_; ++f)
-      for (Index k = 0; k < mesh.vertex_count(f); ++k) {
-        lo = lo.cwiseMin(mesh.face_vertex(f, k));
-        hi = hi.cwiseMax(mesh.face_vertex(f, k));
-      }
-    size_ = (hi - lo).norm();
+    size_ = cell_box(mesh, cell).diagonal().norm();
     tolerance_ = relative_tolerance * size_;
   }
 
