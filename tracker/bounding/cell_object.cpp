@@ -65,13 +65,7 @@ std::span<const int> CellObject::primitives(Index cell) const {
   return {primitives_.data() + first_[c], static_cast<std::size_t>(first_[c + 1] - first_[c])};
 }
 
-csg::State CellObject::classify(Index cell, const Vec3& x) const {
-  csg::State state = 0;
-  const auto& local = tree(cell).primitives();
-  for (int i = 0; i < static_cast<int>(local.size()); ++i)
-    if (local[static_cast<std::size_t>(i)].contains(x)) state |= csg::bit(i);
-  return state;
-}
+csg::State CellObject::classify(Index cell, const Vec3& x) const { return tree(cell).classify(x); }
 
 csg::State CellObject::transfer(csg::State state, Index from, Index to, const Vec3& x) const {
   const std::span<const int> old = primitives(from);

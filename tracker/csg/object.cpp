@@ -18,11 +18,6 @@ void Object::set_pose(const Eigen::Isometry3d& pose) {
   for (Primitive& p : tree_.primitives()) p.place(pose);
 }
 
-State Object::classify(const Eigen::Vector3d& x) const {
-  State state = 0;
-  for (int i = 0; i < primitive_count(); ++i)
-    if (tree_.primitives()[i].contains(x)) state |= bit(i);
-  return state;
-}
+State Object::classify(const Eigen::Vector3d& x) const { return tree_.classify(x); }
 
 }  // namespace cosim::csg

@@ -69,6 +69,13 @@ bool Tree::contains(const Eigen::Vector3d& x) const {
   return evaluate_with(root_, [&](int primitive) { return primitives_[primitive].contains(x); });
 }
 
+State Tree::classify(const Eigen::Vector3d& x) const {
+  State state = 0;
+  for (std::size_t i = 0; i < primitives_.size(); ++i)
+    if (primitives_[i].contains(x)) state |= bit(static_cast<int>(i));
+  return state;
+}
+
 Tree Tree::pruned(const std::vector<int>& kept, const std::function<bool(int)>& inside) const {
   std::vector<int> local(primitives_.size(), -1);
   Tree out;

@@ -38,6 +38,9 @@ class Tree {
   // Inside the object at x by direct evaluation of every primitive, whatever their number.
   // Round-off decides near a surface: for set-up and checks, not for tracking.
   bool contains(const Eigen::Vector3d& x) const;
+  // The state at x by direct evaluation (primitive i inside: bit i), for at most
+  // max_primitives primitives; away from surfaces only, like contains().
+  State classify(const Eigen::Vector3d& x) const;
 
  private:
   enum class Op { literal, any, all, constant };
