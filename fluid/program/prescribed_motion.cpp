@@ -6,11 +6,10 @@
 #include <string>
 
 #include "protocol/message.hpp"
+#include "scene/eigen.hpp"
 
 namespace cosim::program {
 namespace {
-
-Eigen::Vector3d vec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 
 constexpr std::array kind_names{"fixed", "constant", "sinusoidal"};
 
@@ -27,8 +26,8 @@ std::vector<Motion> read_motions(const scene::Scene& scene, const scene::Reader&
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& body = scene.bodies[b];
     start[b].kind = body.fixed ? Motion::Kind::fixed : Motion::Kind::constant;
-    start[b].velocity = vec(body.velocity);
-    start[b].angular_velocity = vec(body.angular_velocity);
+    start[b].velocity = scene::to_eigen(body.velocity);
+    start[b].angular_velocity = scene::to_eigen(body.angular_velocity);
   }
   if (!options.has("motion")) return start;
   const scene::Reader listed = options.map("motion");
@@ -41,8 +40,8 @@ std::vector<Motion> read_motions(const scene::Scene& scene, const scene::Reader&
     m.kind = static_cast<Motion::Kind>(r.choice("type", kind_names));
     if (m.kind != Motion::Kind::constant) m.velocity = m.angular_velocity = Eigen::Vector3d::Zero();
     if (m.kind == Motion::Kind::sinusoidal) {
-      m.amplitude = vec(r.vec3("amplitude", {0, 0, 0}));
-      m.angular_amplitude = vec(r.vec3("angular_amplitude", {0, 0, 0}));
+      m.amplitude = scene::to_eigen(r.vec3("amplitude", {0, 0, 0}));
+      m.angular_amplitude = scene::to_eigen(r.vec3("angular_amplitude", {0, 0, 0}));
       m.frequency = r.number("frequency", scene::Range::above(0));
       if (m.amplitude.isZero(0) && m.angular_amplitude.isZero(0))
         r.fail("amplitude", "sinusoidal motion without amplitude or angular_amplitude: use type fixed");

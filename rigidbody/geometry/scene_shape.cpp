@@ -2,21 +2,18 @@
 
 #include <stdexcept>
 
+#include "scene/eigen.hpp"
+
 namespace cosim::geometry {
-namespace {
-
-Eigen::Vector3d vec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
-
-}  // namespace
 
 Shape shape_of(const scene::Shape& s) {
   switch (s.type) {
     case scene::ShapeType::Sphere: return Sphere(s.radius);
-    case scene::ShapeType::Ellipsoid: return Ellipsoid(vec(s.radii));
-    case scene::ShapeType::Box: return Box(vec(s.half_extents));
+    case scene::ShapeType::Ellipsoid: return Ellipsoid(scene::to_eigen(s.radii));
+    case scene::ShapeType::Box: return Box(scene::to_eigen(s.half_extents));
     case scene::ShapeType::Cylinder: return Cylinder(s.radius, s.height);
     case scene::ShapeType::Capsule: return Capsule(s.radius, s.height);
-    case scene::ShapeType::Plane: return HalfSpace(vec(s.normal));
+    case scene::ShapeType::Plane: return HalfSpace(scene::to_eigen(s.normal));
     case scene::ShapeType::Mesh: return TriangleMesh::from_file(s.file);
   }
   throw std::invalid_argument("unknown shape type");

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "rigidbody/geometry/scene_shape.hpp"
+#include "scene/eigen.hpp"
 #include "scene/error.hpp"
 #include "scene/reader.hpp"
 
@@ -15,8 +16,6 @@ using geometry::com_shift;
 using geometry::shape_of;
 
 using Eigen::Vector3d;
-
-Vector3d vec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 
 const scene::Participant& section(const scene::Scene& scene) {
   const auto* p = scene.participant("rigidbody");
@@ -68,7 +67,7 @@ ProgramOptions program_options(const scene::Scene& scene) {
   s.restitution = restitutions[options.choice("restitution", restitution_names, 0)];
 
   s.body_forces.gravity = scene.has_effect(scene::Effect::Gravity);
-  s.body_forces.g = vec(scene.gravity);
+  s.body_forces.g = scene::to_eigen(scene.gravity);
   s.body_forces.buoyancy = scene.has_effect(scene::Effect::Buoyancy);
   // Hydrostatic buoyancy needs the fluid's density, which the scene has nowhere else.
   if (s.body_forces.buoyancy) s.body_forces.fluid_density = options.number("fluid_density", scene::Range::above(0));
@@ -89,13 +88,13 @@ world::BodyDesc body_of(const scene::Body& b, bool friction, bool convex_hull) {
   world::BodyDesc d{.shape = shape_of(b.shape), .name = b.name};
   const auto& o = b.orientation;
   d.state.orientation = Eigen::Quaterniond(o[0], o[1], o[2], o[3]);
-  d.state.position = vec(b.position) + d.state.orientation * com_shift(d.shape);
+  d.state.position = scene::to_eigen(b.position) + d.state.orientation * com_shift(d.shape);
   if (convex_hull) {
     d.shape = hull_of(d.shape);
     d.state.position += d.state.orientation * com_shift(d.shape);
   }
-  d.state.velocity = vec(b.velocity);
-  d.state.angular_velocity = vec(b.angular_velocity);
+  d.state.velocity = scene::to_eigen(b.velocity);
+  d.state.angular_velocity = scene::to_eigen(b.angular_velocity);
   d.density = b.material.density;
   d.material = {.friction = friction ? b.material.friction : 0.0, .restitution = b.material.restitution};
   d.fixed = b.fixed;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/eigen.hpp"
 #include "scene/error.hpp"
 #include "tracker/csg/shapes.hpp"
 
@@ -14,8 +15,6 @@ namespace {
 
 using scene::Range;
 using scene::Reader;
-
-Eigen::Vector3d vec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 
 // In the order of Kind.
 constexpr std::array kKinds{"ball",       "half_space", "cylinder",  "capped_cylinder", "box",     "union",
@@ -43,10 +42,10 @@ Eigen::Quaterniond orientation(const Reader& r) {
 
 csg::Expression transform(const Reader& r, const std::filesystem::path& file) {
   Eigen::Affine3d t = Eigen::Affine3d::Identity();
-  t.translate(vec(r.vec3("translate", {0, 0, 0})));
+  t.translate(scene::to_eigen(r.vec3("translate", {0, 0, 0})));
   if (r.has("rotate")) {
     const Reader rot = r.map("rotate");
-    const Eigen::Vector3d axis = vec(rot.vec3("axis"));
+    const Eigen::Vector3d axis = scene::to_eigen(rot.vec3("axis"));
     if (!(axis.norm() > 0)) rot.fail("axis", "must not be zero");
     t.rotate(Eigen::AngleAxisd(rot.number("angle"), axis.normalized()));
     rot.finish();
@@ -56,7 +55,7 @@ csg::Expression transform(const Reader& r, const std::filesystem::path& file) {
 
 csg::Expression lattice(const Reader& r, const std::filesystem::path& file) {
   const csg::Expression cell = read_shape(r.map("shape"), file);
-  const Eigen::Vector3d spacing = vec(r.vec3("spacing"));
+  const Eigen::Vector3d spacing = scene::to_eigen(r.vec3("spacing"));
   std::array<double, 3> count{};
   r.numbers("count", count, Range::at_least(1));
   for (double n : count)
@@ -94,11 +93,11 @@ csg::Expression balls_file(const Reader& r, const std::filesystem::path& scene_f
 
 csg::Expression primitive(std::size_t kind, const Reader& r) {
   switch (kind) {
-    case kBall: return csg::ball(vec(r.vec3("centre")), r.number("radius", Range::above(0)));
-    case kHalfSpace: return csg::half_space(vec(r.vec3("point")), vec(r.vec3("normal")));
-    case kCylinder: return csg::cylinder(vec(r.vec3("point")), vec(r.vec3("axis")), r.number("radius", Range::above(0)));
-    case kCappedCylinder: return csg::capped_cylinder(vec(r.vec3("base")), vec(r.vec3("top")), r.number("radius", Range::above(0)));
-    default: return csg::box(vec(r.vec3("centre")), vec(r.vec3("half_extents", Range::above(0))), orientation(r));
+    case kBall: return csg::ball(scene::to_eigen(r.vec3("centre")), r.number("radius", Range::above(0)));
+    case kHalfSpace: return csg::half_space(scene::to_eigen(r.vec3("point")), scene::to_eigen(r.vec3("normal")));
+    case kCylinder: return csg::cylinder(scene::to_eigen(r.vec3("point")), scene::to_eigen(r.vec3("axis")), r.number("radius", Range::above(0)));
+    case kCappedCylinder: return csg::capped_cylinder(scene::to_eigen(r.vec3("base")), scene::to_eigen(r.vec3("top")), r.number("radius", Range::above(0)));
+    default: return csg::box(scene::to_eigen(r.vec3("centre")), scene::to_eigen(r.vec3("half_extents", Range::above(0))), orientation(r));
   }
 }
 

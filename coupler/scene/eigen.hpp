@@ -1,0 +1,12 @@
+// Scene vectors as Eigen vectors, for the programs that compute with them.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "scene/scene.hpp"
+
+namespace cosim::scene {
+
+inline Eigen::Vector3d to_eigen(const Vec3& v) { return {v[0], v[1], v[2]}; }
+
+}  // namespace cosim::scene
