@@ -1,7 +1,6 @@
 #pragma once
-// The six faces of a pressure cell as the finite-volume Laplacian -V div(grad) sees them:
-// shared by the projection's operator and the pressure extension into bodies so both use
-// the same couplings.
+// The six faces of a pressure cell as the finite-volume Laplacian -V div(grad) sees them,
+// each with its coupling: what the projection's operator is assembled from.
 #include <cmath>
 
 #include "fluid/boundary_conditions.hpp"
