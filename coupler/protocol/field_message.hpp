@@ -11,9 +11,9 @@
 namespace cosim::protocol {
 
 // No fields: no arrays at all, not even the grid.
-std::vector<Array> field_arrays(const output::FieldFrame& frame);
+std::vector<Array> field_arrays(output::FieldFrame frame);  // moves the values into the arrays
 // The frame back; ProtocolError for arrays that do not make one (an axis missing or out of
 // order, a name without its array, a field whose rows are not the grid's cells).
-output::FieldFrame field_frame(const Message& m);
+output::FieldFrame field_frame(Message m);  // moves them back out
 
 }  // namespace cosim::protocol

@@ -225,10 +225,10 @@ void Session::write_fields(Peers& peers, std::uint64_t windows_done) {
     }
   if (requests.empty()) return;
   const auto when = fmt::format("while writing fields at t = {} s", time);
-  for (const auto& [name, m] : peers.exchange(std::move(requests), protocol::Type::Field, when)) {
+  for (auto& [name, m] : peers.exchange(std::move(requests), protocol::Type::Field, when)) {
     output::FieldFrame frame;
     try {
-      frame = protocol::field_frame(m);
+      frame = protocol::field_frame(std::move(m));
     } catch (const protocol::ProtocolError& e) {
       throw ParticipantFailure(name, e.what(), when);
     }
