@@ -23,12 +23,14 @@ void check(std::span<BodyState> states, std::span<const BodyInertia> inertia,
 
 }  // namespace
 
+long substep_count(double span, double dt) { return std::max(1L, std::lround(span / dt)); }
+
 void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia,
              std::span<const WindowWrench> external, double t0, double t1,
              const IntegratorSettings& settings, const VelocityHook& hook) {
   check(states, inertia, external, t0, t1, settings.dt);
   if (t1 == t0) return;
-  const long n = std::max(1L, std::lround((t1 - t0) / settings.dt));
+  const long n = substep_count(t1 - t0, settings.dt);
   const double h = (t1 - t0) / static_cast<double>(n);
   const bool leapfrog = settings.scheme == Scheme::leapfrog;
 

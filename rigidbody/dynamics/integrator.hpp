@@ -30,6 +30,9 @@ using VelocityHook = std::function<void(double dt, std::span<BodyState> states)>
 // Fixed bodies (inverse_mass == 0) are not touched, not even by the hook's velocities;
 // translation-only bodies (rotates == false) keep their orientation and angular velocity.
 // Throws std::invalid_argument for mismatched spans, t1 < t0 or dt <= 0.
+// How many equal substeps advance() splits a span into: round(span / dt), at least one.
+long substep_count(double span, double dt);
+
 void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia,
              std::span<const WindowWrench> external, double t0, double t1,
              const IntegratorSettings& settings, const VelocityHook& hook = {});

@@ -66,7 +66,8 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
   // integrator runs without a hook, so no broad or narrow phase is ever called.
   dynamics::VelocityHook hook;
   if (settings_.contact && size() > 1) {
-    const double substep = window / std::max(1.0, std::round(window / settings_.dt));
+    const double span = (time_ + window) - time_;  // as the integrator sees the window
+    const double substep = span / static_cast<double>(dynamics::substep_count(span, settings_.dt));
     const double gain = settings_.body_forces.gravity ? settings_.body_forces.g.norm() * window : 0.0;
     const auto risks = tunnelling_risks(tunnelling_.thinnest(), states_, inertias_, substep, margin(), gain);
     report.tunnelling_bodies = risks.size();
