@@ -1,4 +1,4 @@
-// Persistent contact edges between nearby bodies, this substep's contacts, and what the
+// The contact edges between nearby bodies, this substep's contacts, and what the
 // solver carries from one substep to the next.
 #pragma once
 
