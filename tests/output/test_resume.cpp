@@ -92,7 +92,10 @@ void write_interrupted_run_with_fields(const std::filesystem::path& path) {
   }
 }
 
-std::string file_bytes(const std::filesystem::path& path);
+std::string file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 // The steps after the checkpoint go with the rows; the sidecar names what is left, and the
 // resumed run writes those windows anew.
@@ -114,10 +117,6 @@ TEST_F(ResumeTest, CutsFieldsToTheCheckpointAndRewritesTheSidecar) {
   EXPECT_NE(file_bytes(file("run.xmf")).find("/fields/fluid/000004/p"), std::string::npos);
 }
 
-std::string file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // --resume validates what peek() read before resume() changes anything: peek() must leave
 // every byte as it was.
