@@ -1,6 +1,7 @@
 // The tracker's mesh from the scene: each source, perturbation, and errors naming the key.
 #include <gtest/gtest.h>
 
+#include "checks.hpp"
 #include "scene/error.hpp"
 #include "tracker/program/scene_mesh.hpp"
 
@@ -20,12 +21,6 @@ Mesh mesh_of(const std::string& mesh) {
   return read_mesh(scene::options_of(s, *s.participant("tracker")).map("mesh"), s);
 }
 
-double total_volume(const Mesh& m) {
-  double v = 0;
-  for (double cell : m.volume) v += cell;
-  return v;
-}
-
 std::string error_of(const std::string& mesh) {
   try {
     mesh_of(mesh);
@@ -38,17 +33,18 @@ std::string error_of(const std::string& mesh) {
 TEST(SceneMesh, BoxOverTheDomainWithTetrahedraAndPerturbation) {
   const Mesh hex = mesh_of("{type: box, cells: [4, 2, 2], ratio: [2, 1, 1]}");
   EXPECT_EQ(hex.cell_count(), 16);
-  EXPECT_NEAR(total_volume(hex), 2.0, 1e-12);
+  EXPECT_NEAR(test::total_volume(hex), 2.0, 1e-12);
   const Mesh tets = mesh_of("{type: box, cells: [4, 2, 2], tetrahedra: true, perturb: {fraction: 0.1, seed: 3}}");
   EXPECT_EQ(tets.cell_count(), 96);
-  EXPECT_NEAR(total_volume(tets), 2.0, 1e-9);
+  test::expect_consistent(tets);
+  EXPECT_NEAR(test::total_volume(tets), 2.0, 1e-9);
 }
 
 TEST(SceneMesh, PeriodicVoronoiHasNoWalls) {
   const Mesh m = mesh_of("{type: voronoi, points: 60, seed: 2, periodic: [true, true, true]}");
   EXPECT_EQ(m.cell_count(), 60);
   for (const Face& f : m.faces) EXPECT_GE(f.neighbour, 0);
-  EXPECT_NEAR(total_volume(m), 2.0, 1e-9);
+  EXPECT_NEAR(test::total_volume(m), 2.0, 1e-9);
 }
 
 TEST(SceneMesh, MistakesNameTheKey) {
