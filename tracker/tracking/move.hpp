@@ -3,6 +3,7 @@
 // particles. See README.md for the rules of each.
 
 #include "tracker/tracking/domain.hpp"
+#include "tracker/tracking/obstacles.hpp"
 
 #include <string>
 #include <string_view>
@@ -21,10 +22,17 @@ std::string_view name(Algorithm algorithm);
 // shifts applied) and handling walls; a removed particle stays where it left.
 MoveResult move(Algorithm algorithm, const Domain& domain, Particle& particle, double dt, Random& random);
 
+// The event-driven move among CSG obstacles: `states` holds the particle's logical state
+// per object (kept up to date), `tallies` one entry per object (added to). The face and
+// object events of the cell are merged in time order; a wall's boundary event reflects or
+// absorbs the particle (`removed`), a zone's is crossed and counted.
+MoveResult move(const Domain& domain, const Obstacles& obstacles, Particle& particle, std::span<csg::State> states,
+                double dt, Random& random, std::span<ObstacleTally> tallies);
+
 // Sums of MoveResults over many moves, for studies and tests.
 struct MoveTally {
   long long moves = 0, faces_crossed = 0, zero_time_events = 0, boundary_hits = 0, relocations = 0,
-            cycles_broken = 0, stalled = 0, removed = 0, lost = 0;
+            cycles_broken = 0, stalled = 0, removed = 0, lost = 0, object_events = 0, primitive_tests = 0;
   void add(const MoveResult& result);
 };
 std::string summary(const MoveTally& tally);

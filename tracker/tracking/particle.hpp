@@ -22,6 +22,8 @@ struct MoveResult {
   int boundary_hits = 0;     // wall reflections and removals
   int relocations = 0;       // cell changes by a recovery rule rather than a crossing
   int cycles_broken = 0;     // event-driven: jumps out of cycles of zero-time events
+  int object_events = 0;     // CSG events executed: a primitive's bit flipped or a wall hit
+  int primitive_tests = 0;   // CSG events generated: primitives whose next event was computed
   bool stalled = false;      // the remaining time was dropped (event cap, see README)
   bool removed = false;      // left through an open patch
   bool lost = false;         // ends outside its cell (is_lost in domain.hpp)

@@ -1,0 +1,71 @@
+#pragma once
+// CSG objects inside the tracking mesh: walls that reflect or absorb particles at their
+// surface, and permeable zones that only count who enters and leaves. Each object is
+// registered with the cells of a bounding mesh (by default the tracking mesh itself, see
+// tracker/bounding), and every particle carries one logical state per object, over the
+// local primitive indices of its bounding cell.
+
+#include "tracker/bounding/cell_object.hpp"
+#include "tracker/tracking/boundaries.hpp"
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace cosim::tracker {
+
+struct Obstacle {
+  std::string name;
+  csg::Tree shape;                // in world coordinates, any number of primitives
+  bool permeable = false;         // a zone: crossed and counted, never reflects
+  BoundaryCondition wall;         // impermeable: specular, diffuse, maxwell, or open (absorbs)
+};
+
+// What the particles did at one object's surface, summed over moves.
+struct ObstacleTally {
+  long long hits = 0;       // reflections off a wall, absorptions included
+  long long absorbed = 0;   // removed at an open wall
+  long long entered = 0;    // into a permeable zone
+  long long left = 0;       // out of a permeable zone
+  Vec3 impulse = Vec3::Zero();  // sum of (v_before - v_after) at hits: the momentum given
+                                // to the object per unit particle mass
+  void add(const ObstacleTally& other);
+};
+
+class Obstacles {
+ public:
+  Obstacles() = default;  // none
+  // `bounding` is the mesh the objects are registered with and `bounding_cell[c]` the
+  // bounding cell that holds tracking cell c; both default to the tracking mesh itself. A
+  // coarser bounding mesh (a box grid aligned with the tracking cells) is for studies of the
+  // pruning (bench/tracker_study). Throws std::invalid_argument as CellObject does, or when
+  // a wall has an invalid condition (periodic).
+  Obstacles(const Mesh& tracking, std::vector<Obstacle> objects);
+  Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const Mesh& bounding,
+            std::vector<Index> bounding_cell);
+
+  int count() const { return static_cast<int>(objects_.size()); }
+  bool empty() const { return objects_.empty(); }
+  const Obstacle& object(int i) const { return objects_[static_cast<std::size_t>(i)]; }
+  const CellObject& cells(int i) const { return cells_[static_cast<std::size_t>(i)]; }
+  Index bounding_cell(Index cell) const { return bounding_cell_.empty() ? cell : bounding_cell_[cell]; }
+
+  // A particle's states at x in tracking cell `cell` by direct evaluation (away from
+  // surfaces only: for seeding), one per object.
+  void classify(Index cell, const Vec3& x, std::span<csg::State> states) const;
+  // Inside some wall object by these states: such a particle must not be seeded.
+  bool inside_wall(Index cell, std::span<const csg::State> states) const;
+  // The states after the particle moved from tracking cell `from` to `to` (x as `to` sees
+  // it): bits of primitives both bounding cells share are carried over, the others are
+  // evaluated directly, which the ring of the registration keeps far from surfaces. Across
+  // a periodic face (`shifted`) every bit is evaluated: the primitives on the two sides are
+  // different images.
+  void transfer(Index from, Index to, const Vec3& x, bool shifted, std::span<csg::State> states) const;
+
+ private:
+  std::vector<Obstacle> objects_;
+  std::vector<CellObject> cells_;
+  std::vector<Index> bounding_cell_;
+};
+
+}  // namespace cosim::tracker
