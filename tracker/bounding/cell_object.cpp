@@ -29,12 +29,15 @@ std::vector<std::vector<int>> touching(const Mesh& mesh, const csg::Tree& object
   return near;
 }
 
-// A cell's own primitives and its face neighbours', ascending.
+// A cell's own primitives and its face neighbours', ascending. Not across periodic faces:
+// the primitives there are the images on the other side, which the tracking evaluates
+// directly on crossing (Obstacles::transfer).
 std::vector<int> with_ring(const Mesh& mesh, const std::vector<std::vector<int>>& near, Index cell) {
   std::vector<int> all = near[static_cast<std::size_t>(cell)];
   for (Index f = mesh.cell_faces[cell]; f < mesh.cell_faces[cell + 1]; ++f) {
-    const Index n = mesh.faces[static_cast<std::size_t>(f)].neighbour;
-    if (n >= 0) all.insert(all.end(), near[static_cast<std::size_t>(n)].begin(), near[static_cast<std::size_t>(n)].end());
+    const Face& face = mesh.faces[static_cast<std::size_t>(f)];
+    const Index n = face.neighbour;
+    if (n >= 0 && face.shift == 0) all.insert(all.end(), near[static_cast<std::size_t>(n)].begin(), near[static_cast<std::size_t>(n)].end());
   }
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());

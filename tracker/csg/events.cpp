@@ -19,8 +19,8 @@ double leave_time(const Chord& c) { return std::max(0.0, c.out); }
 
 }  // namespace
 
-Event next_event(const Object& object, State state, const Eigen::Vector3d& x, const Eigen::Vector3d& v) {
-  const auto& primitives = object.tree().primitives();
+Event next_event(const Tree& tree, bool permeable, State state, const Eigen::Vector3d& x, const Eigen::Vector3d& v) {
+  const auto& primitives = tree.primitives();
   Event event;
   for (int i = 0; i < static_cast<int>(primitives.size()); ++i) {
     const Chord chord = primitives[i].chord(x, v);
@@ -34,12 +34,12 @@ Event next_event(const Object& object, State state, const Eigen::Vector3d& x, co
 
   const int i = event.primitive;
   event.enters = !test(state, i);
-  event.into_object = object.inside(state ^ bit(i));
-  event.boundary = event.into_object != object.inside(state);
-  event.permeable = object.permeable();
+  event.into_object = tree.evaluate(state ^ bit(i));
+  event.boundary = event.into_object != tree.evaluate(state);
+  event.permeable = permeable;
   if (event.boundary) {
     const Eigen::Vector3d n = primitives[i].normal(x + event.dt * v);
-    event.normal = object.tree().complemented(i) ? Eigen::Vector3d(-n) : n;
+    event.normal = tree.complemented(i) ? Eigen::Vector3d(-n) : n;
   }
   return event;
 }

@@ -33,7 +33,10 @@ struct Event {
 // left, where f >= 0 and f' > 0. A particle found slightly on the wrong side, moving the
 // crossing way, gets dt = 0; never a negative time. Ties go to the lowest index; the other
 // follows at dt = 0 from the new position.
-Event next_event(const Object& object, State state, const Eigen::Vector3d& x, const Eigen::Vector3d& v);
+Event next_event(const Tree& tree, bool permeable, State state, const Eigen::Vector3d& x, const Eigen::Vector3d& v);
+inline Event next_event(const Object& object, State state, const Eigen::Vector3d& x, const Eigen::Vector3d& v) {
+  return next_event(object.tree(), object.permeable(), state, x, v);
+}
 
 // The state after the event (the caller has moved the particle to x + v dt): the
 // primitive's bit flips, except at a wall's boundary, where the state stays and the caller

@@ -21,22 +21,27 @@ Vec3 diffuse(const Vec3& n, double temperature, double mass, Random& random) {
 }
 
 bool hit_wall(const Boundaries& boundaries, Index patch, const Vec3& n, Vec3& v, Random& random) {
-  const BoundaryCondition& wall = boundaries.patches[patch];
+  if (boundaries.patches[patch].kind == BoundaryKind::periodic)
+    throw std::logic_error("a particle reached a face of periodic patch " + std::to_string(patch) +
+                           " that the mesh did not link");
+  return hit_wall(boundaries.patches[patch], boundaries.mass, n, v, random);
+}
+
+bool hit_wall(const BoundaryCondition& wall, double mass, const Vec3& n, Vec3& v, Random& random) {
   switch (wall.kind) {
     case BoundaryKind::specular:
       v = specular(v, n);
       return true;
     case BoundaryKind::diffuse:
-      v = diffuse(n, wall.temperature, boundaries.mass, random);
+      v = diffuse(n, wall.temperature, mass, random);
       return true;
     case BoundaryKind::maxwell:
       v = std::uniform_real_distribution<double>(0.0, 1.0)(random) < wall.accommodation
-              ? diffuse(n, wall.temperature, boundaries.mass, random)
+              ? diffuse(n, wall.temperature, mass, random)
               : specular(v, n);
       return true;
     case BoundaryKind::periodic:
-      throw std::logic_error("a particle reached a face of periodic patch " + std::to_string(patch) +
-                             " that the mesh did not link");
+      throw std::logic_error("a periodic boundary condition cannot reflect");
     case BoundaryKind::open:
       break;
   }

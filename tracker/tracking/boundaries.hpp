@@ -23,6 +23,11 @@ struct BoundaryCondition {
   double accommodation = 1.0;  // maxwell: the diffuse fraction
 };
 
+// Diffuse and Maxwell walls draw new velocities: they need a temperature and a mass.
+inline bool re_emits(const BoundaryCondition& wall) {
+  return wall.kind == BoundaryKind::diffuse || wall.kind == BoundaryKind::maxwell;
+}
+
 struct Boundaries {
   std::vector<BoundaryCondition> patches;  // by index into Mesh::patches
   double mass = 0.0;                       // particle mass in kg, for re-emission
@@ -31,6 +36,8 @@ struct Boundaries {
 // The velocity after a wall hit (n the wall's unit normal, pointing into the domain), or
 // false if the particle leaves through an open patch.
 bool hit_wall(const Boundaries& boundaries, Index patch, const Vec3& n, Vec3& v, Random& random);
+// The same for a wall with this condition (CSG obstacles have their own).
+bool hit_wall(const BoundaryCondition& wall, double mass, const Vec3& n, Vec3& v, Random& random);
 
 Vec3 specular(const Vec3& v, const Vec3& n);
 // Maxwellian re-emission: the normal component from the flux-weighted distribution

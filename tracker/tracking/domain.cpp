@@ -23,8 +23,7 @@ void check(const Mesh& mesh, const Boundaries& boundaries) {
                                 std::to_string(boundaries.patches.size()) + " boundary conditions");
   for (std::size_t p = 0; p < boundaries.patches.size(); ++p) {
     const BoundaryCondition& wall = boundaries.patches[p];
-    const bool emits = wall.kind == BoundaryKind::diffuse || wall.kind == BoundaryKind::maxwell;
-    if (emits && !(wall.temperature > 0.0 && boundaries.mass > 0.0))
+    if (re_emits(wall) && !(wall.temperature > 0.0 && boundaries.mass > 0.0))
       throw std::invalid_argument(mesh.source + ": patch " + std::to_string(p) +
                                   " re-emits particles but the wall temperature or the particle mass is not positive");
   }

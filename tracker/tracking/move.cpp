@@ -3,6 +3,7 @@
 #include "tracker/tracking/detail/algorithms.hpp"
 
 #include <sstream>
+#include <stdexcept>
 
 namespace cosim::tracker {
 
@@ -26,6 +27,13 @@ MoveResult move(Algorithm algorithm, const Domain& domain, Particle& particle, d
   return {};
 }
 
+MoveResult move(const Domain& domain, const Obstacles& obstacles, Particle& particle, std::span<csg::State> states,
+                double dt, Random& random, std::span<ObstacleTally> tallies) {
+  if (obstacles.emits() && !(domain.boundaries.mass > 0.0))
+    throw std::invalid_argument("an obstacle re-emits particles but the particle mass is not positive");
+  return detail::move_event_driven(domain, particle, dt, random, {&obstacles, states, tallies});
+}
+
 void MoveTally::add(const MoveResult& result) {
   ++moves;
   faces_crossed += result.faces_crossed;
@@ -36,13 +44,16 @@ void MoveTally::add(const MoveResult& result) {
   stalled += result.stalled;
   removed += result.removed;
   lost += result.lost;
+  object_events += result.object_events;
+  primitive_tests += result.primitive_tests;
 }
 
 std::string summary(const MoveTally& tally) {
   std::ostringstream out;
   out << tally.moves << " moves: lost " << tally.lost << ", faces crossed " << tally.faces_crossed
       << ", zero-time events " << tally.zero_time_events << ", boundary hits " << tally.boundary_hits
-      << ", relocations " << tally.relocations << ", cycles broken " << tally.cycles_broken << ", stalled " << tally.stalled << ", removed " << tally.removed;
+      << ", relocations " << tally.relocations << ", cycles broken " << tally.cycles_broken << ", stalled " << tally.stalled << ", removed " << tally.removed << ", object events " << tally.object_events
+      << ", primitive tests " << tally.primitive_tests;
   return out.str();
 }
 

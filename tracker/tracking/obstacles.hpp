@@ -39,13 +39,15 @@ class Obstacles {
   // bounding cell that holds tracking cell c; both default to the tracking mesh itself. A
   // coarser bounding mesh (a box grid aligned with the tracking cells) is for studies of the
   // pruning (bench/tracker_study). Throws std::invalid_argument as CellObject does, or when
-  // a wall has an invalid condition (periodic).
+  // a wall's condition is invalid (periodic, or re-emitting without a temperature).
   Obstacles(const Mesh& tracking, std::vector<Obstacle> objects);
   Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const Mesh& bounding,
             std::vector<Index> bounding_cell);
 
   int count() const { return static_cast<int>(objects_.size()); }
   bool empty() const { return objects_.empty(); }
+  // Some wall re-emits particles (diffuse or maxwell): the tracking needs their mass.
+  bool emits() const;
   const Obstacle& object(int i) const { return objects_[static_cast<std::size_t>(i)]; }
   const CellObject& cells(int i) const { return cells_[static_cast<std::size_t>(i)]; }
   Index bounding_cell(Index cell) const { return bounding_cell_.empty() ? cell : bounding_cell_[cell]; }

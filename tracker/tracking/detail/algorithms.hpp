@@ -1,7 +1,11 @@
 #pragma once
 // The algorithms behind move() and the face crossing they share.
 
+#include "tracker/csg/events.hpp"
 #include "tracker/tracking/domain.hpp"
+#include "tracker/tracking/obstacles.hpp"
+
+#include <span>
 
 namespace cosim::tracker::detail {
 
@@ -24,7 +28,32 @@ FaceEvent first_exit(const Mesh& mesh, const Particle& particle, Index skip, boo
 // or the wall changes its velocity, or it leaves through an open patch.
 Crossed cross(const Domain& domain, Particle& particle, Index face, Random& random, MoveResult& result);
 
-MoveResult move_event_driven(const Domain& domain, Particle& particle, double dt, Random& random);
+// What a particle carries through the obstacles: its states, and where its hits are counted.
+struct Carried {
+  const Obstacles* obstacles = nullptr;  // none: a move through the mesh alone
+  std::span<csg::State> states;
+  std::span<ObstacleTally> tallies;
+
+  bool any() const { return obstacles != nullptr && !obstacles->empty(); }
+  // The particle moved from cell `from` to its current cell (x as that cell sees it).
+  void follow(Index from, const Particle& p, bool shifted) const {
+    if (any()) obstacles->transfer(from, p.cell, p.x, shifted, states);
+  }
+};
+
+// The earliest event of the objects in the particle's (bounding) cell; object -1: none.
+struct ObjectEvent {
+  csg::Event event;
+  int object = -1;
+};
+ObjectEvent next_object_event(const Carried& carried, const Particle& particle, MoveResult& result);
+// The particle is at the event: flips the state, reflects off a wall or counts a zone
+// crossing. False if an open wall absorbed the particle.
+bool execute(const Carried& carried, double mass, Particle& particle, const ObjectEvent& hit, Random& random,
+             MoveResult& result);
+
+MoveResult move_event_driven(const Domain& domain, Particle& particle, double dt, Random& random,
+                             const Carried& carried = {});
 
 // How the face-intersection baselines put back a particle found outside its cell.
 enum class Recovery {

@@ -12,10 +12,12 @@ namespace {
 // out through, so each hands it on to the next.
 constexpr int cycle_length = 64;
 
-void relocate(const Domain& domain, Particle& p, MoveResult& result) {
+void relocate(const Domain& domain, Particle& p, const Carried& carried, MoveResult& result) {
   const Index found = domain.locator.locate(p.x);
   if (found < 0 || found == p.cell) return;
+  const Index from = p.cell;
   p.cell = found;
+  carried.follow(from, p, false);
   ++result.relocations;
 }
 
@@ -23,20 +25,22 @@ void relocate(const Domain& domain, Particle& p, MoveResult& result) {
 // the cell it entered for as long as it moves inwards there, so it can stop outside that
 // cell. Then it goes across the violated face if the neighbour contains it, else to the
 // cell point location finds; in a gap no cell contains it, and it stays.
-void settle(const Domain& domain, Particle& p, MoveResult& result) {
+void settle(const Domain& domain, Particle& p, const Carried& carried, MoveResult& result) {
   const Violation violation = outside(domain.mesh, p.cell, p.x);
   if (violation.depth <= domain.tolerance) return;
   const Face& face = domain.mesh.faces[violation.face];
   if (face.neighbour >= 0) {
     const Vec3 there = p.x + domain.mesh.shifts[face.shift];
     if (outside(domain.mesh, face.neighbour, there).depth <= domain.tolerance) {
+      const Index from = p.cell;
       p.x = there;
       p.cell = face.neighbour;
+      carried.follow(from, p, face.shift != 0);
       ++result.relocations;
       return;
     }
   }
-  relocate(domain, p, result);
+  relocate(domain, p, carried, result);
 }
 
 // Out of a cycle: the particle is in a gap that none of the cells around it covers. It
@@ -44,14 +48,17 @@ void settle(const Domain& domain, Particle& p, MoveResult& result) {
 // contains (point location) and takes that cell, where it is inside, so the events resume
 // with a positive time. The start and the point found are inside the domain, so the
 // straight jump crosses no wall. False if no cell holds any point up to the end of the move.
-bool jump_out_of_gap(const Domain& domain, Particle& p, double& remaining, MoveResult& result) {
+bool jump_out_of_gap(const Domain& domain, Particle& p, const Carried& carried, double& remaining,
+                     MoveResult& result) {
   for (double step = domain.tolerance / p.v.norm();; step *= 4.0) {
     const double dt = std::min(step, remaining);
     const Vec3 x = p.x + dt * p.v;
     const Index found = domain.locator.locate(x);
     if (found >= 0) {
+      const Index from = p.cell;
       p.x = x;
       p.cell = found;
+      carried.follow(from, p, false);
       remaining -= dt;
       ++result.relocations;
       return true;
@@ -62,7 +69,7 @@ bool jump_out_of_gap(const Domain& domain, Particle& p, double& remaining, MoveR
 
 }  // namespace
 
-MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Random& random) {
+MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Random& random, const Carried& carried) {
   MoveResult result;
   double remaining = dt;
   Index skip = -1;
@@ -72,7 +79,7 @@ MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Rando
       ++result.cycles_broken;
       streak = 0;
       skip = -1;
-      if (!jump_out_of_gap(domain, p, remaining, result)) {
+      if (!jump_out_of_gap(domain, p, carried, remaining, result)) {
         result.stalled = true;  // the rest of the move is dropped, the cell kept
         break;
       }
@@ -80,23 +87,36 @@ MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Rando
     // Bannerman, Strobl & Poeschel: the earliest dt >= 0 with f <= 0 and f' < 0; a particle
     // slightly outside a face it moves out through gets dt = 0, never a negative time. The
     // face just entered is skipped: the two sides' normals are opposite only to round-off.
-    const FaceEvent event = first_exit(domain.mesh, p, skip, true);
-    if (event.dt >= remaining) {
+    const FaceEvent face = first_exit(domain.mesh, p, skip, true);
+    // The objects' events in the cell, merged in time; on a tie the object goes first, so a
+    // wall on a face reflects before the particle could leave through it.
+    const ObjectEvent object = carried.any() ? next_object_event(carried, p, result) : ObjectEvent{};
+    const double event_dt = std::min(face.dt, object.event.dt);
+    if (event_dt >= remaining) {
       p.x += remaining * p.v;
       break;
     }
-    p.x += event.dt * p.v;
-    remaining -= event.dt;
-    result.zero_time_events += event.dt == 0.0;
-    const double moved_squared = event.dt * event.dt * p.v.squaredNorm();
+    p.x += event_dt * p.v;
+    remaining -= event_dt;
+    result.zero_time_events += event_dt == 0.0;
+    const double moved_squared = event_dt * event_dt * p.v.squaredNorm();
     streak = moved_squared <= domain.tolerance * domain.tolerance ? streak + 1 : 0;
-    switch (cross(domain, p, event.face, random, result)) {
+    if (object.event.dt <= face.dt) {
+      if (!execute(carried, domain.boundaries.mass, p, object, random, result)) return result;
+      if (object.event.reflects()) skip = -1;
+      continue;
+    }
+    const Index from = p.cell;
+    switch (cross(domain, p, face.face, random, result)) {
       case Crossed::removed: return result;
-      case Crossed::neighbour: skip = domain.mesh.faces[event.face].twin; break;
+      case Crossed::neighbour:
+        skip = domain.mesh.faces[face.face].twin;
+        carried.follow(from, p, domain.mesh.faces[face.face].shift != 0);
+        break;
       case Crossed::wall: skip = -1; break;
     }
   }
-  settle(domain, p, result);
+  settle(domain, p, carried, result);
   result.lost = is_lost(domain, p);
   return result;
 }

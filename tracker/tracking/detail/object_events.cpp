@@ -1,0 +1,49 @@
+#include "tracker/tracking/detail/algorithms.hpp"
+
+#include "tracker/csg/events.hpp"
+
+namespace cosim::tracker::detail {
+
+ObjectEvent next_object_event(const Carried& carried, const Particle& p, MoveResult& result) {
+  const Obstacles& obstacles = *carried.obstacles;
+  const Index b = obstacles.bounding_cell(p.cell);
+  ObjectEvent first;
+  for (int o = 0; o < obstacles.count(); ++o) {
+    // A cell where the object is constant still follows the bits of its primitives: a
+    // neighbour where they matter carries them over, and the crossing may be close to
+    // their surfaces.
+    const csg::Tree& tree = obstacles.cells(o).tree(b);
+    if (tree.primitives().empty()) continue;
+    result.primitive_tests += static_cast<int>(tree.primitives().size());
+    const csg::Event event = csg::next_event(tree, obstacles.object(o).permeable, carried.states[o], p.x, p.v);
+    if (event.dt < first.event.dt) first = {event, o};
+  }
+  return first;
+}
+
+bool execute(const Carried& carried, double mass, Particle& p, const ObjectEvent& hit, Random& random,
+             MoveResult& result) {
+  ++result.object_events;
+  const csg::Event& event = hit.event;
+  csg::State& state = carried.states[hit.object];
+  state = csg::apply(state, event);
+  if (!event.boundary) return true;
+  ObstacleTally& tally = carried.tallies[hit.object];
+  if (event.permeable) {
+    ++(event.into_object ? tally.entered : tally.left);
+    return true;
+  }
+  ++tally.hits;
+  const Vec3 before = p.v;
+  // The gas is outside the wall: the object's outward normal points into the domain.
+  if (!hit_wall(carried.obstacles->object(hit.object).wall, mass, event.normal, p.v, random)) {
+    ++tally.absorbed;
+    tally.impulse += before;
+    result.removed = true;
+    return false;
+  }
+  tally.impulse += before - p.v;
+  return true;
+}
+
+}  // namespace cosim::tracker::detail

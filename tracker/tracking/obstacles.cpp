@@ -1,0 +1,59 @@
+#include "tracker/tracking/obstacles.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+namespace cosim::tracker {
+
+void ObstacleTally::add(const ObstacleTally& other) {
+  hits += other.hits;
+  absorbed += other.absorbed;
+  entered += other.entered;
+  left += other.left;
+  impulse += other.impulse;
+}
+
+Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects)
+    : Obstacles(tracking, std::move(objects), tracking, {}) {}
+
+Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const Mesh& bounding,
+                     std::vector<Index> bounding_cell)
+    : objects_(std::move(objects)), bounding_cell_(std::move(bounding_cell)) {
+  if (!bounding_cell_.empty() && static_cast<Index>(bounding_cell_.size()) != tracking.cell_count())
+    throw std::invalid_argument(tracking.source + ": " + std::to_string(bounding_cell_.size()) +
+                                " bounding cells given for " + std::to_string(tracking.cell_count()) + " cells");
+  for (const Obstacle& object : objects_) {
+    if (!object.permeable && object.wall.kind == BoundaryKind::periodic)
+      throw std::invalid_argument("obstacle '" + object.name + "': a wall cannot be periodic");
+    if (!object.permeable && re_emits(object.wall) && !(object.wall.temperature > 0.0))
+      throw std::invalid_argument("obstacle '" + object.name + "': a re-emitting wall needs a positive temperature");
+    cells_.emplace_back(bounding, object.shape);
+  }
+}
+
+bool Obstacles::emits() const {
+  for (const Obstacle& object : objects_)
+    if (!object.permeable && re_emits(object.wall)) return true;
+  return false;
+}
+
+void Obstacles::classify(Index cell, const Vec3& x, std::span<csg::State> states) const {
+  const Index b = bounding_cell(cell);
+  for (std::size_t o = 0; o < cells_.size(); ++o) states[o] = cells_[o].classify(b, x);
+}
+
+bool Obstacles::inside_wall(Index cell, std::span<const csg::State> states) const {
+  const Index b = bounding_cell(cell);
+  for (std::size_t o = 0; o < cells_.size(); ++o)
+    if (!objects_[o].permeable && cells_[o].tree(b).evaluate(states[o])) return true;
+  return false;
+}
+
+void Obstacles::transfer(Index from, Index to, const Vec3& x, bool shifted, std::span<csg::State> states) const {
+  const Index a = bounding_cell(from), b = bounding_cell(to);
+  if (a == b && !shifted) return;
+  for (std::size_t o = 0; o < cells_.size(); ++o)
+    states[o] = shifted ? cells_[o].classify(b, x) : cells_[o].transfer(states[o], a, b, x);
+}
+
+}  // namespace cosim::tracker
