@@ -16,15 +16,16 @@ Eigen::AlignedBox3d enlarged_box(const Mesh& mesh, Index cell, double margin) {
 }
 
 // Per cell, the object's primitives whose surface may meet the cell's box: O(cells x
-// primitives) box tests (a spatial search would make it O(cells + primitives x cells each);
-// the set-up is not the hot path).
+// primitives) tests, most of them rejected by the primitive's bounding box.
 std::vector<std::vector<int>> touching(const Mesh& mesh, const csg::Tree& object, double margin) {
   std::vector<std::vector<int>> near(static_cast<std::size_t>(mesh.cell_count()));
   const auto& primitives = object.primitives();
+  std::vector<Eigen::AlignedBox3d> bounds;
+  for (const csg::Primitive& p : primitives) bounds.push_back(p.bounds());
   for (Index c = 0; c < mesh.cell_count(); ++c) {
     const Eigen::AlignedBox3d box = enlarged_box(mesh, c, margin);
-    for (int p = 0; p < static_cast<int>(primitives.size()); ++p)
-      if (primitives[static_cast<std::size_t>(p)].surface_may_meet(box)) near[static_cast<std::size_t>(c)].push_back(p);
+    for (std::size_t p = 0; p < primitives.size(); ++p)
+      if (bounds[p].intersects(box) && primitives[p].surface_may_meet(box)) near[static_cast<std::size_t>(c)].push_back(static_cast<int>(p));
   }
   return near;
 }
@@ -48,6 +49,8 @@ std::vector<int> with_ring(const Mesh& mesh, const std::vector<std::vector<int>>
 
 CellObject::CellObject(const Mesh& mesh, const csg::Tree& object, double margin) {
   const std::vector<std::vector<int>> near = touching(mesh, object, margin);
+  trees_.push_back(csg::Tree::fixed(false));
+  trees_.push_back(csg::Tree::fixed(true));
   first_.push_back(0);
   for (Index c = 0; c < mesh.cell_count(); ++c) {
     const std::vector<int> kept = with_ring(mesh, near, c);
@@ -57,7 +60,13 @@ CellObject::CellObject(const Mesh& mesh, const csg::Tree& object, double margin)
                                   std::to_string(csg::max_primitives) + ": refine the mesh there");
     // Left-out primitives are constant in the cell: their value at the centroid is theirs.
     const Vec3& centre = mesh.centroid[static_cast<std::size_t>(c)];
-    trees_.push_back(object.pruned(kept, [&](int p) { return object.primitives()[static_cast<std::size_t>(p)].contains(centre); }));
+    csg::Tree tree = object.pruned(kept, [&](int p) { return object.primitives()[static_cast<std::size_t>(p)].contains(centre); });
+    if (kept.empty()) {
+      tree_of_.push_back(tree.evaluate(0) ? 1 : 0);
+    } else {
+      tree_of_.push_back(static_cast<std::int32_t>(trees_.size()));
+      trees_.push_back(std::move(tree));
+    }
     primitives_.insert(primitives_.end(), kept.begin(), kept.end());
     first_.push_back(static_cast<Index>(primitives_.size()));
   }
@@ -86,7 +95,7 @@ csg::State CellObject::transfer(csg::State state, Index from, Index to, const Ve
 
 CellObjectStats CellObject::stats() const {
   CellObjectStats s;
-  const auto cells = static_cast<Index>(trees_.size());
+  const auto cells = static_cast<Index>(tree_of_.size());
   for (Index c = 0; c < cells; ++c) {
     const int n = static_cast<int>(primitives(c).size());
     s.mean_primitives += n;

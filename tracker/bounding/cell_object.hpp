@@ -12,6 +12,7 @@
 // that test cannot leave out a surface that touches a cell.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -35,7 +36,7 @@ class CellObject {
   // The cell's primitives as indices into the object's, ascending; local index = position.
   std::span<const int> primitives(Index cell) const;
   // The object in the cell over local indices: evaluate() a local state with it.
-  const csg::Tree& tree(Index cell) const { return trees_[static_cast<std::size_t>(cell)]; }
+  const csg::Tree& tree(Index cell) const { return trees_[static_cast<std::size_t>(tree_of_[static_cast<std::size_t>(cell)])]; }
   // A particle's local state at x in `cell` by direct evaluation: away from surfaces only.
   csg::State classify(Index cell, const Vec3& x) const;
   // The local state in `to` of a particle that leaves `from` with `state` through their
@@ -47,7 +48,11 @@ class CellObject {
  private:
   std::vector<Index> first_;       // cell c's primitives are primitives_[first_[c] .. first_[c+1])
   std::vector<int> primitives_;
-  std::vector<csg::Tree> trees_;   // per cell
+  // Cell c's tree is trees_[tree_of_[c]]. Only cells with primitives have their own; the
+  // others share trees_[0] (always outside) or trees_[1] (always inside), so a large mesh
+  // around a small object costs 4 bytes per cell.
+  std::vector<std::int32_t> tree_of_;
+  std::vector<csg::Tree> trees_;
 };
 
 }  // namespace cosim::tracker

@@ -1,6 +1,7 @@
 #include "tracker/csg/primitive.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace cosim::csg {
@@ -19,7 +20,19 @@ Primitive::Primitive(PrimitiveKind kind, const Eigen::Affine3d& placement) : kin
 void Primitive::place(const Eigen::Isometry3d& pose) {
   const Eigen::Affine3d world = pose * placement_;
   origin_ = world.translation();
-  to_canonical_ = world.linear().inverse();
+  to_world_ = world.linear();
+  to_canonical_ = to_world_.inverse();
+}
+
+Eigen::AlignedBox3d Primitive::bounds() const {
+  if (kind_ == PrimitiveKind::half_space || kind_ == PrimitiveKind::cylinder) {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {Eigen::Vector3d::Constant(-inf), Eigen::Vector3d::Constant(inf)};
+  }
+  // The canonical cube [-1, 1]^3 holds the unit ball and the box; its image is a
+  // parallelepiped whose half extent along axis k is the row sum |M_k0| + |M_k1| + |M_k2|.
+  const Eigen::Vector3d half = to_world_.cwiseAbs().rowwise().sum();
+  return {origin_ - half, origin_ + half};
 }
 
 double Primitive::indicator(const Eigen::Vector3d& x) const {

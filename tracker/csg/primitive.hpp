@@ -37,6 +37,9 @@ class Primitive {
   // wholly inside (all corners are, and the primitive is convex) or wholly outside (its
   // image in the canonical frame, enlarged to an axis-aligned box, misses the solid).
   bool surface_may_meet(const Eigen::AlignedBox3d& box) const;
+  // A box holding the whole solid: the image of the canonical cube for balls and boxes,
+  // unbounded for half-spaces and cylinders. A quick reject before surface_may_meet.
+  Eigen::AlignedBox3d bounds() const;
 
  private:
   // The canonical frame keeps its origin apart from the matrix so that points near the
@@ -48,6 +51,7 @@ class Primitive {
   Eigen::Affine3d placement_;
   Eigen::Vector3d origin_;
   Eigen::Matrix3d to_canonical_;
+  Eigen::Matrix3d to_world_;
 };
 
 // Throws std::invalid_argument unless the affine map is finite and invertible.

@@ -88,6 +88,12 @@ Tree Tree::pruned(const std::vector<int>& kept, const std::function<bool(int)>& 
   return out;
 }
 
+Tree Tree::fixed(bool value) {
+  Tree out;
+  out.root_ = out.add_constant(value);
+  return out;
+}
+
 int Tree::add_constant(bool value) {
   nodes_.push_back({Op::constant, value ? 1 : 0, {}});
   return static_cast<int>(nodes_.size()) - 1;

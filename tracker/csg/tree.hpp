@@ -26,6 +26,8 @@ class Tree {
   // constant if nothing varies any more. Used per cell: a primitive whose surface stays away
   // from a cell is constant there.
   Tree pruned(const std::vector<int>& kept, const std::function<bool(int)>& inside) const;
+  // The tree without primitives that is always `value`.
+  static Tree fixed(bool value);
   // Constant: no primitive can change the answer.
   bool constant() const { return nodes_[root_].op == Op::constant; }
 

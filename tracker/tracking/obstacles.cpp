@@ -29,6 +29,12 @@ Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const 
       throw std::invalid_argument("obstacle '" + object.name + "': a re-emitting wall needs a positive temperature");
     cells_.emplace_back(bounding, object.shape);
   }
+  active_first_.push_back(0);
+  for (Index b = 0; b < bounding.cell_count(); ++b) {
+    for (int o = 0; o < count(); ++o)
+      if (!cells_[static_cast<std::size_t>(o)].primitives(b).empty()) active_.push_back(o);
+    active_first_.push_back(static_cast<Index>(active_.size()));
+  }
 }
 
 bool Obstacles::emits() const {
@@ -39,7 +45,7 @@ bool Obstacles::emits() const {
 
 void Obstacles::classify(Index cell, const Vec3& x, std::span<csg::State> states) const {
   const Index b = bounding_cell(cell);
-  for (std::size_t o = 0; o < cells_.size(); ++o) states[o] = cells_[o].classify(b, x);
+  for (std::size_t o = 0; o < cells_.size(); ++o) states[o] = cells_[o].classify(b, x);  // 0 where constant
 }
 
 bool Obstacles::inside_wall(Index cell, std::span<const csg::State> states) const {
@@ -52,7 +58,7 @@ bool Obstacles::inside_wall(Index cell, std::span<const csg::State> states) cons
 void Obstacles::transfer(Index from, Index to, const Vec3& x, bool shifted, std::span<csg::State> states) const {
   const Index a = bounding_cell(from), b = bounding_cell(to);
   if (a == b && !shifted) return;
-  for (std::size_t o = 0; o < cells_.size(); ++o)
+  for (const int o : active(b))
     states[o] = shifted ? cells_[o].classify(b, x) : cells_[o].transfer(states[o], a, b, x);
 }
 

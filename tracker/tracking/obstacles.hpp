@@ -51,6 +51,11 @@ class Obstacles {
   const Obstacle& object(int i) const { return objects_[static_cast<std::size_t>(i)]; }
   const CellObject& cells(int i) const { return cells_[static_cast<std::size_t>(i)]; }
   Index bounding_cell(Index cell) const { return bounding_cell_.empty() ? cell : bounding_cell_[cell]; }
+  // The objects with primitives in bounding cell b, ascending: the only ones whose states
+  // change there. Elsewhere an object is constant and its state is not looked at.
+  std::span<const int> active(Index b) const {
+    return {active_.data() + active_first_[b], static_cast<std::size_t>(active_first_[b + 1] - active_first_[b])};
+  }
 
   // A particle's states at x in tracking cell `cell` by direct evaluation (away from
   // surfaces only: for seeding), one per object.
@@ -68,6 +73,8 @@ class Obstacles {
   std::vector<Obstacle> objects_;
   std::vector<CellObject> cells_;
   std::vector<Index> bounding_cell_;
+  std::vector<Index> active_first_;  // bounding cell b: active_[active_first_[b] .. active_first_[b + 1])
+  std::vector<int> active_;
 };
 
 }  // namespace cosim::tracker

@@ -1,5 +1,6 @@
 // Chords of each primitive against closed forms, and indicator and normal conventions.
 #include <cmath>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -134,6 +135,28 @@ TEST(Primitive, SurfaceMayMeetABoxOnlyWhereItPasses) {
   EXPECT_FALSE(cube.surface_may_meet(box(-0.9, 0.9)));
   EXPECT_FALSE(cube.surface_may_meet(box(1.1, 2)));
   EXPECT_TRUE(cube.surface_may_meet(box(0.9, 1.1)));
+}
+
+// Bounds hold every point of the solid and are tight along the axes of an axis-aligned one.
+TEST(Primitive, BoundsHoldTheSolid) {
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
+  const Object tilted(box({1, -2, 0.5}, {0.3, 0.1, 0.2}, turn));
+  const Object round(ball({0.5, 0.5, 0.5}, 0.25));
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> uniform(-3.0, 3.0);
+  int inside = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const Eigen::Vector3d x(uniform(random), uniform(random), uniform(random));
+    for (const Object* o : {&tilted, &round}) {
+      if (!only(*o).contains(x)) continue;
+      ++inside;
+      EXPECT_TRUE(only(*o).bounds().contains(x)) << x.transpose();
+    }
+  }
+  EXPECT_GT(inside, 10);
+  EXPECT_LT((only(round).bounds().min() - Eigen::Vector3d::Constant(0.25)).norm(), 1e-15);
+  EXPECT_LT((only(round).bounds().max() - Eigen::Vector3d::Constant(0.75)).norm(), 1e-15);
+  EXPECT_TRUE(only(Object(half_space({0, 0, 0}, {0, 0, 1}))).bounds().contains(Eigen::Vector3d(1e300, -1e300, 0)));
 }
 
 }  // namespace

@@ -8,12 +8,11 @@ ObjectEvent next_object_event(const Carried& carried, const Particle& p, MoveRes
   const Obstacles& obstacles = *carried.obstacles;
   const Index b = obstacles.bounding_cell(p.cell);
   ObjectEvent first;
-  for (int o = 0; o < obstacles.count(); ++o) {
-    // A cell where the object is constant still follows the bits of its primitives: a
-    // neighbour where they matter carries them over, and the crossing may be close to
-    // their surfaces.
+  // A cell where an object is constant still follows the bits of its primitives (it is
+  // active): a neighbour where they matter carries them over, and the crossing may be close
+  // to their surfaces.
+  for (const int o : obstacles.active(b)) {
     const csg::Tree& tree = obstacles.cells(o).tree(b);
-    if (tree.primitives().empty()) continue;
     result.primitive_tests += static_cast<int>(tree.primitives().size());
     const csg::Event event = csg::next_event(tree, obstacles.object(o).permeable, carried.states[o], p.x, p.v);
     if (event.dt < first.event.dt) first = {event, o};
