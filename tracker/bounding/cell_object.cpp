@@ -80,7 +80,10 @@ std::span<const int> CellObject::primitives(Index cell) const {
 csg::State CellObject::classify(Index cell, const Vec3& x) const { return tree(cell).classify(x); }
 
 csg::State CellObject::transfer(csg::State state, Index from, Index to, const Vec3& x) const {
-  const std::span<const int> old = primitives(from);
+  return carry(primitives(from), state, to, x);
+}
+
+csg::State CellObject::carry(std::span<const int> old, csg::State state, Index to, const Vec3& x) const {
   const std::span<const int> now = primitives(to);
   const auto& local = tree(to).primitives();
   csg::State out = 0;

@@ -42,6 +42,10 @@ class CellObject {
   // The local state in `to` of a particle that leaves `from` with `state` through their
   // common face at x (x as `to` sees it, periodic shift applied).
   csg::State transfer(csg::State state, Index from, Index to, const Vec3& x) const;
+  // The same between two registrations (an object that moved): bits of `state` over
+  // `old_primitives` carried to the primitives of cell `to` here where both have them, the
+  // others evaluated at x.
+  csg::State carry(std::span<const int> old_primitives, csg::State state, Index to, const Vec3& x) const;
 
   CellObjectStats stats() const;
 

@@ -47,16 +47,27 @@ Event next_event(const Tree& tree, bool permeable, State state, const Eigen::Vec
 State apply(State state, const Event& event) { return event.reflects() ? state : state ^ bit(event.primitive); }
 
 State sweep(const Object& object, State state, const Eigen::Vector3d& x, const Eigen::Isometry3d& new_pose) {
-  const Eigen::Vector3d w = object.pose() * (new_pose.inverse() * x) - x;
+  return sweep(object.tree(), state, x, object.pose() * (new_pose.inverse() * x) - x).state;
+}
+
+Swept sweep(const Tree& tree, State state, const Eigen::Vector3d& x, const Eigen::Vector3d& w) {
+  Swept out{state};
   Eigen::Vector3d position = x;
-  double left = 1.0;
+  double done = 0.0;
   while (true) {
-    const Event event = next_event(object, state, position, w);
-    if (!(event.dt <= left)) return state;
+    const Event event = next_event(tree, false, out.state, position, w);
+    if (!(event.dt <= 1.0 - done)) break;
     position += event.dt * w;
-    left -= event.dt;
-    state ^= bit(event.primitive);
+    done += event.dt;
+    if (event.boundary && event.into_object) {
+      out.at = done;
+      out.outside = out.state;
+      out.normal = event.normal;
+    }
+    out.state ^= bit(event.primitive);
   }
+  out.overrun = tree.evaluate(out.state);
+  return out;
 }
 
 }  // namespace cosim::csg

@@ -53,4 +53,17 @@ State apply(State state, const Event& event);
 // must push the particle out or remove it.
 State sweep(const Object& object, State state, const Eigen::Vector3d& x, const Eigen::Isometry3d& new_pose);
 
+// The same for a tree whose primitives are at the old pose, the particle moving by w
+// relative to them (w = old_pose * new_pose^-1 * x - x). Also tells whether it ended inside
+// the object (a wall overran it), with where it last entered: at x + at * w, through the
+// surface with outward `normal`, `outside` being its state just before.
+struct Swept {
+  State state;
+  bool overrun = false;
+  double at = 0.0;
+  State outside = 0;
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+};
+Swept sweep(const Tree& tree, State state, const Eigen::Vector3d& x, const Eigen::Vector3d& w);
+
 }  // namespace cosim::csg

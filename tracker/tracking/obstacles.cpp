@@ -18,7 +18,7 @@ Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects)
 
 Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const Mesh& bounding,
                      std::vector<Index> bounding_cell)
-    : objects_(std::move(objects)), bounding_cell_(std::move(bounding_cell)) {
+    : bounding_(&bounding), objects_(std::move(objects)), bounding_cell_(std::move(bounding_cell)) {
   if (!bounding_cell_.empty() && static_cast<Index>(bounding_cell_.size()) != tracking.cell_count())
     throw std::invalid_argument(tracking.source + ": " + std::to_string(bounding_cell_.size()) +
                                 " bounding cells given for " + std::to_string(tracking.cell_count()) + " cells");
@@ -28,9 +28,15 @@ Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const 
     if (!object.permeable && re_emits(object.wall) && !(object.wall.temperature > 0.0))
       throw std::invalid_argument("obstacle '" + object.name + "': a re-emitting wall needs a positive temperature");
     cells_.emplace_back(bounding, object.shape);
+    poses_.push_back(Eigen::Isometry3d::Identity());
   }
-  active_first_.push_back(0);
-  for (Index b = 0; b < bounding.cell_count(); ++b) {
+  find_active();
+}
+
+void Obstacles::find_active() {
+  active_first_.assign(1, 0);
+  active_.clear();
+  for (Index b = 0; b < bounding_->cell_count(); ++b) {
     for (int o = 0; o < count(); ++o)
       if (!cells_[static_cast<std::size_t>(o)].primitives(b).empty()) active_.push_back(o);
     active_first_.push_back(static_cast<Index>(active_.size()));

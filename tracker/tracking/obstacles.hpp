@@ -14,9 +14,12 @@
 
 namespace cosim::tracker {
 
+struct Domain;
+class Swarm;
+
 struct Obstacle {
   std::string name;
-  csg::Tree shape;                // in world coordinates, any number of primitives
+  csg::Tree shape;                // in world coordinates at the current pose (see set_pose)
   bool permeable = false;         // a zone: crossed and counted, never reflects
   BoundaryCondition wall;         // impermeable: specular, diffuse, maxwell, or open (absorbs)
 };
@@ -69,8 +72,23 @@ class Obstacles {
   // different images.
   void transfer(Index from, Index to, const Vec3& x, bool shifted, std::span<csg::State> states) const;
 
+  // Moves object i rigidly to `pose` (world from the frame its shape was given in) over the
+  // time dt, between tracking steps: it is registered anew, and every particle's state for
+  // it follows the motion relative to the object by the events of csg::sweep, so states
+  // stay exact close to the surface. The object should move less than a cell per call (the
+  // ring of the registration then holds every primitive a particle's relative path can
+  // cross). A wall that overruns a particle puts it back just outside where the surface met
+  // it (1e-9 of the mesh size off the surface, where direct evaluation is safe) and reflects
+  // it off the moving wall by the wall's condition; returns how many it overran.
+  long set_pose(int i, const Eigen::Isometry3d& pose, double dt, const Domain& domain, Swarm& swarm, Random& random);
+  const Eigen::Isometry3d& pose(int i) const { return poses_[static_cast<std::size_t>(i)]; }
+
  private:
+  void find_active();
+
+  const Mesh* bounding_ = nullptr;
   std::vector<Obstacle> objects_;
+  std::vector<Eigen::Isometry3d> poses_;
   std::vector<CellObject> cells_;
   std::vector<Index> bounding_cell_;
   std::vector<Index> active_first_;  // bounding cell b: active_[active_first_[b] .. active_first_[b + 1])

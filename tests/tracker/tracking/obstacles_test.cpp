@@ -5,7 +5,7 @@
 #include "tracker/csg/shapes.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/voronoi_mesh.hpp"
-#include "tracker/tracking/move.hpp"
+#include "tracker/tracking/swarm.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,44 +29,31 @@ Boundaries specular_box() { return {std::vector<BoundaryCondition>(6), 1.0}; }
 
 Obstacle wall(std::string name, const Expression& shape) { return {std::move(name), csg::Tree(shape), false, {}}; }
 
-// Particles of unit speed at random positions outside every wall, with their states.
-struct Swarm {
-  std::vector<Particle> particles;
-  std::vector<csg::State> states;  // particle-major, one per object
+// Particles of unit speed at random positions outside every wall, with their states, and
+// what happens to them.
+struct Flights {
+  Swarm swarm;
   std::vector<ObstacleTally> tallies;
   MoveTally moves;
 
-  Swarm(const Domain& domain, const Obstacles& obstacles, int count, unsigned seed) : tallies(obstacles.count()) {
+  Flights(const Domain& domain, const Obstacles& obstacles, int count, unsigned seed)
+      : swarm(obstacles.count()), tallies(obstacles.count()) {
     Random random(seed);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     std::normal_distribution<double> gauss;
     std::vector<csg::State> s(obstacles.count());
-    while (static_cast<int>(particles.size()) < count) {
+    while (static_cast<int>(swarm.size()) < count) {
       const Vec3 x(uniform(random), uniform(random), uniform(random));
       const Index cell = domain.locator.locate(x);
       if (cell < 0) continue;  // a periodic Voronoi mesh keeps that point's cell on the other side
       obstacles.classify(cell, x, s);
       if (obstacles.inside_wall(cell, s)) continue;
-      particles.push_back({x, Vec3(gauss(random), gauss(random), gauss(random)).normalized(), cell});
-      states.insert(states.end(), s.begin(), s.end());
+      swarm.add({x, Vec3(gauss(random), gauss(random), gauss(random)).normalized(), cell}, s);
     }
   }
 
-  std::span<csg::State> state(std::size_t i, int objects) { return {states.data() + i * objects, std::size_t(objects)}; }
-
   void step(const Domain& domain, const Obstacles& obstacles, double dt, Random& random) {
-    const int n = obstacles.count();
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < particles.size(); ++i) {
-      const MoveResult r = move(domain, obstacles, particles[i], state(i, n), dt, random, tallies);
-      moves.add(r);
-      if (r.removed) continue;
-      particles[kept] = particles[i];
-      std::copy_n(states.begin() + i * n, n, states.begin() + kept * n);
-      ++kept;
-    }
-    particles.resize(kept);
-    states.resize(kept * n);
+    swarm.move_all(domain, obstacles, dt, random, moves, tallies);
   }
 };
 
@@ -95,16 +82,16 @@ TEST(Obstacles, SpecularWallsKeepParticlesOutAndEnergyConstant) {
   const Expression block = csg::box({0.7, 0.7, 0.7}, {0.1, 0.05, 0.2});
   const Expression post = csg::capped_cylinder({0.7, 0.25, 0.1}, {0.7, 0.25, 0.6}, 0.08);
   const Obstacles obstacles(mesh, {wall("three balls", three), wall("block", block), wall("post", post)});
-  Swarm swarm(domain, obstacles, 4000, 1);
+  Flights run(domain, obstacles, 4000, 1);
   Random random(2);
-  for (int step = 0; step < 50; ++step) swarm.step(domain, obstacles, 0.05, random);
+  for (int step = 0; step < 50; ++step) run.step(domain, obstacles, 0.05, random);
 
-  std::printf("%s\n", summary(swarm.moves).c_str());
-  EXPECT_EQ(swarm.moves.lost, 0);
-  EXPECT_EQ(swarm.particles.size(), 4000u);
-  for (int o = 0; o < 3; ++o) EXPECT_GT(swarm.tallies[o].hits, 100) << obstacles.object(o).name;
-  for (std::size_t i = 0; i < swarm.particles.size(); ++i) {
-    const Particle& p = swarm.particles[i];
+  std::printf("%s\n", summary(run.moves).c_str());
+  EXPECT_EQ(run.moves.lost, 0);
+  EXPECT_EQ(run.swarm.size(), 4000u);
+  for (int o = 0; o < 3; ++o) EXPECT_GT(run.tallies[o].hits, 100) << obstacles.object(o).name;
+  for (std::size_t i = 0; i < run.swarm.size(); ++i) {
+    const Particle& p = run.swarm.particle(i);
     EXPECT_NEAR(p.v.norm(), 1.0, 1e-12);
     for (int o = 0; o < 3; ++o) {
       EXPECT_FALSE(deep_inside(obstacles.object(o).shape, p.x)) << obstacles.object(o).name << " at " << p.x.transpose();
@@ -117,7 +104,7 @@ TEST(Obstacles, SpecularWallsKeepParticlesOutAndEnergyConstant) {
       for (const csg::Primitive& q : obstacles.object(o).shape.primitives())
         clear = clear && std::abs(q.indicator(p.x)) > 1e-9;
       if (clear) {
-        EXPECT_EQ(swarm.state(i, 3)[o], direct[o]) << "particle " << i << " object " << o;
+        EXPECT_EQ(run.swarm.states(i)[o], direct[o]) << "particle " << i << " object " << o;
       }
     }
   }
@@ -140,14 +127,14 @@ TEST(Obstacles, PeriodicFoamKeepsParticlesOut) {
     Obstacle solid = wall("solid", Expression::unite(balls));
     solid.wall = {.kind = kind, .temperature = 1.0};
     const Obstacles obstacles(mesh, {solid});
-    Swarm swarm(domain, obstacles, 3000, 12);
+    Flights run(domain, obstacles, 3000, 12);
     Random random(13);
-    for (int step = 0; step < 30; ++step) swarm.step(domain, obstacles, 0.1, random);
-    std::printf("%s\n", summary(swarm.moves).c_str());
-    EXPECT_EQ(swarm.moves.lost, 0);
-    EXPECT_EQ(swarm.particles.size(), 3000u);
-    EXPECT_GT(swarm.tallies[0].hits, 1000);
-    for (const Particle& p : swarm.particles) EXPECT_FALSE(deep_inside(obstacles.object(0).shape, p.x)) << p.x.transpose();
+    for (int step = 0; step < 30; ++step) run.step(domain, obstacles, 0.1, random);
+    std::printf("%s\n", summary(run.moves).c_str());
+    EXPECT_EQ(run.moves.lost, 0);
+    EXPECT_EQ(run.swarm.size(), 3000u);
+    EXPECT_GT(run.tallies[0].hits, 1000);
+    for (const Particle& p : run.swarm.particles()) EXPECT_FALSE(deep_inside(obstacles.object(0).shape, p.x)) << p.x.transpose();
   }
 }
 
@@ -158,24 +145,24 @@ TEST(Obstacles, WallsOnFacesAndThinnerThanRoundOffHold) {
   const Domain domain(mesh, specular_box());
   const Obstacles obstacles(mesh, {wall("right half", csg::half_space({0.5, 0.5, 0.5}, {-1.0, 0.0, 0.0})),
                                    wall("slab", csg::box({0.25, 0.5, 0.5}, {5e-15, 1.0, 1.0}))});
-  Swarm swarm(domain, obstacles, 2000, 14);
+  Flights run(domain, obstacles, 2000, 14);
   // Every fourth particle starts exactly on the plane, outside (direct evaluation there is
   // round-off, so the states are set: out of both objects, the slab being far).
-  for (std::size_t i = 0; i < swarm.particles.size(); i += 4) {
-    Particle& p = swarm.particles[i];
+  for (std::size_t i = 0; i < run.swarm.size(); i += 4) {
+    Particle& p = run.swarm.particle(i);
     p.x.x() = 0.5;
     p.cell = domain.locator.locate(p.x);
-    std::ranges::fill(swarm.state(i, 2), csg::State{0});
+    std::ranges::fill(run.swarm.states(i), csg::State{0});
   }
   std::vector<bool> left_of_slab;
-  for (const Particle& p : swarm.particles) left_of_slab.push_back(p.x.x() < 0.25);
+  for (const Particle& p : run.swarm.particles()) left_of_slab.push_back(p.x.x() < 0.25);
   Random random(15);
-  for (int step = 0; step < 40; ++step) swarm.step(domain, obstacles, 0.05, random);
-  std::printf("%s\n", summary(swarm.moves).c_str());
-  EXPECT_EQ(swarm.moves.lost, 0);
-  EXPECT_GT(swarm.tallies[1].hits, 500);
-  for (std::size_t i = 0; i < swarm.particles.size(); ++i) {
-    const double x = swarm.particles[i].x.x();
+  for (int step = 0; step < 40; ++step) run.step(domain, obstacles, 0.05, random);
+  std::printf("%s\n", summary(run.moves).c_str());
+  EXPECT_EQ(run.moves.lost, 0);
+  EXPECT_GT(run.tallies[1].hits, 500);
+  for (std::size_t i = 0; i < run.swarm.size(); ++i) {
+    const double x = run.swarm.particle(i).x.x();
     EXPECT_LE(x, 0.5) << "particle " << i;
     EXPECT_EQ(x < 0.25, left_of_slab[i]) << "particle " << i << " crossed the slab: x = " << x;
   }
@@ -214,32 +201,109 @@ TEST(Obstacles, OpenWallAbsorbsAndPermeableZoneCounts) {
   Obstacle zone = wall("zone", csg::box({0.6, 0.6, 0.6}, {0.2, 0.2, 0.2}));
   zone.permeable = true;
   const Obstacles obstacles(mesh, {sink, zone});
-  Swarm swarm(domain, obstacles, 4000, 5);
+  Flights run(domain, obstacles, 4000, 5);
   auto inside_zone = [&] {
     long n = 0;
-    for (std::size_t i = 0; i < swarm.particles.size(); ++i)
-      n += obstacles.cells(1).tree(swarm.particles[i].cell).evaluate(swarm.state(i, 2)[1]);
+    for (std::size_t i = 0; i < run.swarm.size(); ++i)
+      n += obstacles.cells(1).tree(run.swarm.particle(i).cell).evaluate(run.swarm.states(i)[1]);
     return n;
   };
   const long zone_before = inside_zone();
   Random random(6);
-  for (int step = 0; step < 30; ++step) swarm.step(domain, obstacles, 0.05, random);
+  for (int step = 0; step < 30; ++step) run.step(domain, obstacles, 0.05, random);
 
-  EXPECT_EQ(swarm.moves.lost, 0);
-  EXPECT_GT(swarm.tallies[0].absorbed, 100);
-  EXPECT_EQ(swarm.tallies[0].absorbed, swarm.moves.removed);
-  EXPECT_EQ(static_cast<long>(swarm.particles.size()), 4000 - swarm.moves.removed);
-  EXPECT_EQ(swarm.tallies[1].hits, 0);
-  EXPECT_GT(swarm.tallies[1].entered, 100);
-  EXPECT_EQ(inside_zone() - zone_before, swarm.tallies[1].entered - swarm.tallies[1].left);
+  EXPECT_EQ(run.moves.lost, 0);
+  EXPECT_GT(run.tallies[0].absorbed, 100);
+  EXPECT_EQ(run.tallies[0].absorbed, run.moves.removed);
+  EXPECT_EQ(static_cast<long>(run.swarm.size()), 4000 - run.moves.removed);
+  EXPECT_EQ(run.tallies[1].hits, 0);
+  EXPECT_GT(run.tallies[1].entered, 100);
+  EXPECT_EQ(inside_zone() - zone_before, run.tallies[1].entered - run.tallies[1].left);
   // The states agree with the zone's shape wherever that is clear.
-  for (std::size_t i = 0; i < swarm.particles.size(); ++i) {
-    const Vec3& x = swarm.particles[i].x;
-    const bool in = obstacles.cells(1).tree(swarm.particles[i].cell).evaluate(swarm.state(i, 2)[1]);
+  for (std::size_t i = 0; i < run.swarm.size(); ++i) {
+    const Vec3& x = run.swarm.particle(i).x;
+    const bool in = obstacles.cells(1).tree(run.swarm.particle(i).cell).evaluate(run.swarm.states(i)[1]);
     if (deep_inside(obstacles.object(1).shape, x)) {
       EXPECT_TRUE(in);
     }
   }
+}
+
+TEST(Obstacles, SortByCellKeepsStatesWithTheirParticles) {
+  const Mesh mesh = unit_box(8);
+  const Domain domain(mesh, specular_box());
+  const Obstacles obstacles(mesh, {wall("a", cluster(30, 0.06, 16)), wall("b", ball({0.2, 0.8, 0.5}, 0.15))});
+  Flights run(domain, obstacles, 3000, 17);
+  run.swarm.sort_by_cell(mesh.cell_count());
+  ASSERT_EQ(run.swarm.size(), 3000u);
+  std::vector<csg::State> direct(2);
+  for (std::size_t i = 0; i < run.swarm.size(); ++i) {
+    const Particle& p = run.swarm.particle(i);
+    if (i > 0) {
+      EXPECT_LE(run.swarm.particle(i - 1).cell, p.cell);
+    }
+    obstacles.classify(p.cell, p.x, direct);
+    EXPECT_TRUE(std::ranges::equal(run.swarm.states(i), direct)) << "particle " << i;
+  }
+  EXPECT_EQ(run.swarm.bytes_per_particle(), sizeof(Particle) + 2 * sizeof(csg::State));
+}
+
+// A ball moving through the gas, a third of a cell per step: it pushes the particles it
+// overruns out in front of it, nobody ends inside, and states stay the direct ones.
+TEST(Obstacles, MovingBallSweepsParticlesOut) {
+  const Mesh mesh = unit_box(10);
+  const Domain domain(mesh, specular_box());
+  Obstacles obstacles(mesh, {wall("ball", ball({0.3, 0.5, 0.5}, 0.15)), wall("post", csg::capped_cylinder({0.5, 0.5, 0.2}, {0.5, 0.5, 0.8}, 0.05))});
+  Flights run(domain, obstacles, 4000, 18);
+  Random random(19);
+  long overrun = 0;
+  for (int step = 1; step <= 30; ++step) {
+    Eigen::Isometry3d ball_pose = Eigen::Isometry3d::Identity();
+    ball_pose.translate(Vec3(0.0033 * step, 0.001 * step, 0.0));
+    Eigen::Isometry3d post_pose(Eigen::AngleAxisd(0.01 * step, Vec3::UnitX()));
+    post_pose.pretranslate(Vec3(0.5, 0.5, 0.5) - post_pose.linear() * Vec3(0.5, 0.5, 0.5));  // about its centre
+    overrun += obstacles.set_pose(0, ball_pose, 0.01, domain, run.swarm, random);
+    overrun += obstacles.set_pose(1, post_pose, 0.01, domain, run.swarm, random);
+    run.step(domain, obstacles, 0.01, random);
+  }
+  std::printf("moving ball and post: %ld overrun; %s\n", overrun, summary(run.moves).c_str());
+  EXPECT_GT(overrun, 20);
+  EXPECT_EQ(run.moves.lost, 0);
+  EXPECT_EQ(run.swarm.size(), 4000u);
+  std::vector<csg::State> direct(2);
+  for (std::size_t k = 0; k < run.swarm.size(); ++k) {
+    const Particle& p = run.swarm.particle(k);
+    for (int o = 0; o < 2; ++o) {
+      EXPECT_FALSE(deep_inside(obstacles.object(o).shape, p.x)) << obstacles.object(o).name << " " << p.x.transpose();
+      bool clear = !obstacles.cells(o).primitives(p.cell).empty();
+      for (const csg::Primitive& q : obstacles.object(o).shape.primitives()) clear = clear && std::abs(q.indicator(p.x)) > 1e-9;
+      obstacles.classify(p.cell, p.x, direct);
+      if (clear) {
+        EXPECT_EQ(run.swarm.states(k)[o], direct[o]) << "particle " << k << " object " << o;
+      }
+    }
+  }
+}
+
+// A particle at rest overrun by a flat specular wall moving at u leaves at 2u.
+TEST(Obstacles, MovingWallReflectsInItsOwnFrame) {
+  const Mesh mesh = unit_box(8);
+  const Domain domain(mesh, specular_box());
+  Obstacles obstacles(mesh, {wall("piston", csg::box({0.2, 0.5, 0.5}, {0.1, 0.4, 0.4}))});
+  Swarm swarm(1);
+  const Vec3 x(0.35, 0.5, 0.5);
+  csg::State state;
+  obstacles.classify(domain.locator.locate(x), x, {&state, 1});
+  swarm.add({x, Vec3::Zero(), domain.locator.locate(x)}, {&state, 1});
+  Random random(20);
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translate(Vec3(0.1, 0.0, 0.0));
+  EXPECT_EQ(obstacles.set_pose(0, pose, 0.5, domain, swarm, random), 1);  // u = 0.2 along x
+  ASSERT_EQ(swarm.size(), 1u);
+  EXPECT_NEAR(swarm.particle(0).v.x(), 0.4, 1e-12);
+  EXPECT_NEAR(swarm.particle(0).x.x(), 0.4, 1e-8);
+  EXPECT_GT(swarm.particle(0).x.x(), 0.4);
+  EXPECT_FALSE(obstacles.cells(0).tree(swarm.particle(0).cell).evaluate(swarm.states(0)[0]));
 }
 
 // The correctness check of Table 1 (REFERENCES.md): the events executed do not depend on
@@ -256,13 +320,13 @@ TEST(Obstacles, ExecutedEventsDoNotDependOnTheBoundingGrid) {
     const PointLocator locator(grid);
     for (Index c = 0; c < mesh.cell_count(); ++c) bounding[c] = locator.locate(mesh.centroid[c]);
     const Obstacles obstacles(mesh, {wall("a", a), wall("b", b)}, grid, bounding);
-    Swarm swarm(domain, obstacles, 2000, 9);
+    Flights run(domain, obstacles, 2000, 9);
     Random random(10);
-    for (int step = 0; step < 40; ++step) swarm.step(domain, obstacles, 0.04, random);
-    std::printf("bounding grid %2d^3: %s\n", n, summary(swarm.moves).c_str());
-    EXPECT_EQ(swarm.moves.lost, 0);
-    executed.push_back(swarm.moves.object_events);
-    generated.push_back(swarm.moves.primitive_tests);
+    for (int step = 0; step < 40; ++step) run.step(domain, obstacles, 0.04, random);
+    std::printf("bounding grid %2d^3: %s\n", n, summary(run.moves).c_str());
+    EXPECT_EQ(run.moves.lost, 0);
+    executed.push_back(run.moves.object_events);
+    generated.push_back(run.moves.primitive_tests);
   }
   EXPECT_GT(executed.front(), 1000);
   for (std::size_t i = 1; i < executed.size(); ++i) {

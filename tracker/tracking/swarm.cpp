@@ -1,0 +1,44 @@
+#include "tracker/tracking/swarm.hpp"
+
+#include <algorithm>
+
+namespace cosim::tracker {
+
+void Swarm::add(const Particle& particle, std::span<const csg::State> states) {
+  particles_.push_back(particle);
+  states_.insert(states_.end(), states.begin(), states.end());
+}
+
+void Swarm::keep(std::size_t from, std::size_t to) {
+  if (from == to) return;
+  particles_[to] = particles_[from];
+  std::copy_n(states_.begin() + static_cast<long>(from * objects_), objects_, states_.begin() + static_cast<long>(to * objects_));
+}
+
+void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, MoveTally& moves,
+                     std::span<ObstacleTally> tallies) {
+  std::vector<bool> removed(particles_.size());
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    const MoveResult result = move(domain, obstacles, particles_[i], states(i), dt, random, tallies);
+    moves.add(result);
+    removed[i] = result.removed;
+  }
+  remove_if([&](std::size_t i) { return removed[i]; });
+}
+
+void Swarm::sort_by_cell(Index cells) {
+  std::vector<std::size_t> start(static_cast<std::size_t>(cells) + 1, 0);
+  for (const Particle& p : particles_) ++start[static_cast<std::size_t>(p.cell) + 1];
+  for (std::size_t c = 0; c < static_cast<std::size_t>(cells); ++c) start[c + 1] += start[c];
+  std::vector<Particle> particles(particles_.size());
+  std::vector<csg::State> states(states_.size());
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    const std::size_t to = start[static_cast<std::size_t>(particles_[i].cell)]++;
+    particles[to] = particles_[i];
+    std::copy_n(states_.begin() + static_cast<long>(i * objects_), objects_, states.begin() + static_cast<long>(to * objects_));
+  }
+  particles_.swap(particles);
+  states_.swap(states);
+}
+
+}  // namespace cosim::tracker

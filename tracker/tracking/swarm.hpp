@@ -1,0 +1,54 @@
+#pragma once
+// The particles of a run with their logical states (one per obstacle, stored next to each
+// other per particle), moved together and kept in cell order for the cache.
+
+#include "tracker/tracking/move.hpp"
+
+#include <span>
+#include <vector>
+
+namespace cosim::tracker {
+
+class Swarm {
+ public:
+  explicit Swarm(int objects) : objects_(objects) {}
+
+  std::size_t size() const { return particles_.size(); }
+  int objects() const { return objects_; }
+  const Particle& particle(std::size_t i) const { return particles_[i]; }
+  Particle& particle(std::size_t i) { return particles_[i]; }
+  std::span<csg::State> states(std::size_t i) { return {states_.data() + i * objects_, static_cast<std::size_t>(objects_)}; }
+  std::span<const csg::State> states(std::size_t i) const {
+    return {states_.data() + i * objects_, static_cast<std::size_t>(objects_)};
+  }
+  std::span<const Particle> particles() const { return particles_; }
+
+  void add(const Particle& particle, std::span<const csg::State> states);
+  // Drops the particles for whose index `removed` is true, keeping the others' order.
+  template <typename Removed>
+  void remove_if(const Removed& removed) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < particles_.size(); ++i)
+      if (!removed(i)) keep(i, kept++);
+    particles_.resize(kept);
+    states_.resize(kept * objects_);
+  }
+  // Moves every particle by dt with the event-driven algorithm, drops the removed ones and
+  // adds what happened to `moves` and `tallies` (one per obstacle).
+  void move_all(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, MoveTally& moves,
+                std::span<ObstacleTally> tallies);
+  // Counting sort by cell (stable), as DSMC codes keep their particles: the particles of a
+  // cell, and the cell's faces, are then together in memory.
+  void sort_by_cell(Index cells);
+  // Bytes per particle: the particle record and its states.
+  std::size_t bytes_per_particle() const { return sizeof(Particle) + objects_ * sizeof(csg::State); }
+
+ private:
+  void keep(std::size_t from, std::size_t to);
+
+  int objects_;
+  std::vector<Particle> particles_;
+  std::vector<csg::State> states_;
+};
+
+}  // namespace cosim::tracker
