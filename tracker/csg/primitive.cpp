@@ -20,8 +20,7 @@ Primitive::Primitive(PrimitiveKind kind, const Eigen::Affine3d& placement) : kin
 void Primitive::place(const Eigen::Isometry3d& pose) {
   const Eigen::Affine3d world = pose * placement_;
   origin_ = world.translation();
-  to_world_ = world.linear();
-  to_canonical_ = to_world_.inverse();
+  to_canonical_ = world.linear().inverse();
 }
 
 Eigen::AlignedBox3d Primitive::bounds() const {
@@ -31,7 +30,7 @@ Eigen::AlignedBox3d Primitive::bounds() const {
   }
   // The canonical cube [-1, 1]^3 holds the unit ball and the box; its image is a
   // parallelepiped whose half extent along axis k is the row sum |M_k0| + |M_k1| + |M_k2|.
-  const Eigen::Vector3d half = to_world_.cwiseAbs().rowwise().sum();
+  const Eigen::Vector3d half = to_canonical_.inverse().cwiseAbs().rowwise().sum();
   return {origin_ - half, origin_ + half};
 }
 

@@ -51,7 +51,6 @@ class Primitive {
   Eigen::Affine3d placement_;
   Eigen::Vector3d origin_;
   Eigen::Matrix3d to_canonical_;
-  Eigen::Matrix3d to_world_;
 };
 
 // Throws std::invalid_argument unless the affine map is finite and invertible.
