@@ -4,7 +4,9 @@
 #include "tracker/mesh/element_faces.hpp"
 #include "tracker/mesh/validate.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +45,38 @@ constexpr int hex_faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6
 
 // Kuhn's six tetrahedra: the monotone paths from corner 0 to corner 7, one axis at a time.
 constexpr int axis_orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+
+// Links the faces of the low side of `axis` (patch 2 axis) with those of the high side:
+// partners have the same vertices once the high side's node index on the axis is taken as
+// the low side's, an exact integer match whatever the split. `node` maps a vertex id to
+// its node indices, `low_id` sets the axis index to 0.
+template <class LowId>
+void link_periodic(Mesh& mesh, int axis, double period, const LowId& low_id) {
+  const Index low = 2 * axis, high = 2 * axis + 1;
+  const auto key = [&](Index f) {
+    std::vector<Index> ids;
+    for (Index k = mesh.face_vertex_begin[f]; k < mesh.face_vertex_begin[f + 1]; ++k)
+      ids.push_back(low_id(mesh.face_vertex_index[k]));
+    std::sort(ids.begin(), ids.end());
+    return ids;
+  };
+  std::map<std::vector<Index>, Index> high_faces;
+  for (Index f = 0; f < mesh.face_count(); ++f)
+    if (mesh.faces[f].neighbour == boundary_code(high)) high_faces.emplace(key(f), f);
+  Vec3 up = Vec3::Zero();
+  up[axis] = period;
+  const auto up_shift = static_cast<Index>(mesh.shifts.size());
+  mesh.shifts.push_back(up);   // from the low side into the high side's cells
+  mesh.shifts.push_back(-up);  // and back
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.faces[f].neighbour != boundary_code(low)) continue;
+    const auto it = high_faces.find(key(f));
+    if (it == high_faces.end()) throw std::logic_error("box mesh: a periodic face without a partner");
+    const Index g = it->second;
+    mesh.faces[f] = {mesh.faces[f].normal, mesh.faces[f].point, mesh.cell_of_face(g), g, up_shift};
+    mesh.faces[g] = {mesh.faces[g].normal, mesh.faces[g].point, mesh.cell_of_face(f), f, up_shift + 1};
+  }
+}
 
 }  // namespace
 
@@ -100,6 +134,15 @@ Mesh box_mesh(const BoxSpec& spec) {
         }
       }
   Mesh mesh = assemble(std::move(poly));
+  for (int a = 0; a < 3; ++a) {
+    if (!spec.periodic[a]) continue;
+    const std::array<int, 3> n{nx, ny, nz};
+    link_periodic(mesh, a, nodes[a].back() - nodes[a].front(), [&](Index id) {
+      std::array<Index, 3> ijk{id % nx, id / nx % ny, id / (nx * ny)};
+      if (ijk[a] == n[a] - 1) ijk[a] = 0;
+      return ijk[0] + nx * (ijk[1] + ny * ijk[2]);
+    });
+  }
   require_valid(mesh);
   return mesh;
 }

@@ -24,6 +24,9 @@ struct BoxSpec {
   // Six tetrahedra per hexahedron around its main diagonal (Kuhn/Freudenthal): every
   // hexahedron is split the same way, so the diagonals of shared faces match.
   bool tetrahedra = false;
+  // A periodic axis links its two sides face to face (Face::shift, the axis's length): its
+  // patches keep their names but have no faces.
+  std::array<bool, 3> periodic{false, false, false};
 };
 
 // Patches 0..5 are x_min, x_max, y_min, y_max, z_min, z_max. Cell order: x fastest, then

@@ -28,6 +28,19 @@ std::array<int, 3> whole(const Reader& r, const std::string& key, const std::arr
   return out;
 }
 
+std::array<bool, 3> periodic(const Reader& r) {
+  std::array<bool, 3> out{false, false, false};
+  if (!r.has("periodic")) return out;
+  const YAML::Node axes = r.node("periodic");
+  if (!axes.IsSequence() || axes.size() != 3) r.fail("periodic", "expected three booleans [x, y, z]");
+  try {
+    for (std::size_t a = 0; a < 3; ++a) out[a] = axes[a].as<bool>();
+  } catch (const YAML::Exception&) {
+    r.fail("periodic", "expected three booleans [x, y, z]");
+  }
+  return out;
+}
+
 Mesh box(const Reader& r, const scene::Domain& domain) {
   std::array<double, 3> cells{}, ratio{1, 1, 1};
   r.numbers("cells", cells, Range::closed(1, 1e6));
@@ -37,6 +50,7 @@ Mesh box(const Reader& r, const scene::Domain& domain) {
   for (std::size_t a = 0; a < 3; ++a)
     spec.axes[a] = {.min = domain.min[a], .max = domain.max[a], .cells = n[a], .ratio = ratio[a]};
   spec.tetrahedra = r.boolean("tetrahedra", false);
+  spec.periodic = periodic(r);
   return box_mesh(spec);
 }
 
@@ -44,15 +58,7 @@ Mesh voronoi(const Reader& r, const scene::Domain& domain) {
   const int count = r.integer("points", Range::at_least(1));
   std::mt19937_64 rng(static_cast<std::uint64_t>(r.integer("seed", 1, Range::at_least(0))));
   VoronoiSpec spec{.min = {domain.min[0], domain.min[1], domain.min[2]}, .max = {domain.max[0], domain.max[1], domain.max[2]}};
-  if (r.has("periodic")) {
-    const YAML::Node axes = r.node("periodic");
-    if (!axes.IsSequence() || axes.size() != 3) r.fail("periodic", "expected three booleans [x, y, z]");
-    try {
-      for (std::size_t a = 0; a < 3; ++a) spec.periodic[a] = axes[a].as<bool>();
-    } catch (const YAML::Exception&) {
-      r.fail("periodic", "expected three booleans [x, y, z]");
-    }
-  }
+  spec.periodic = periodic(r);
   std::vector<Vec3> points;
   for (int i = 0; i < count; ++i) {
     Vec3 p;

@@ -8,7 +8,7 @@
 //     file: channel.msh            # gmsh: relative to the scene file
 //     points: 1000                 # voronoi: uniform random sites in the domain
 //     seed: 1                      # voronoi: of the sites
-//     periodic: [false, false, false]   # voronoi, optional
+//     periodic: [false, false, false]   # box and voronoi, optional: linked sides, no walls
 //     perturb: {fraction: 0.05, seed: 1}  # optional, any type: non-planar faces
 //
 // A mesh that cannot be built (a file Gmsh cannot read, a mesh that fails validation) is a

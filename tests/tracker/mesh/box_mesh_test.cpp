@@ -61,6 +61,37 @@ TEST(BoxMesh, TetrahedraConformFaceToFace) {
   test::expect_consistent(mesh);
 }
 
+TEST(BoxMesh, PeriodicAxesLinkOppositeSides) {
+  for (const bool tetrahedra : {false, true}) {
+    BoxSpec spec = graded_box(tetrahedra);
+    spec.periodic = {true, false, true};
+    const Mesh mesh = box_mesh(spec);
+    EXPECT_NEAR(test::total_volume(mesh), 6.0, 1e-12);
+    // Only the y sides are walls: 5 x 4 quads on each, two triangles each when split.
+    EXPECT_EQ(test::boundary_faces(mesh), (tetrahedra ? 2 : 1) * 2 * (5 * 4));
+    test::expect_consistent(mesh);
+    EXPECT_EQ(mesh.shifts.size(), 5u);  // none, then +-x and +-z
+    // Across a linked face the twin sits where this face is, moved by the shift.
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+      const Face& face = mesh.faces[f];
+      if (face.neighbour < 0) {
+        EXPECT_TRUE(face.neighbour == boundary_code(2) || face.neighbour == boundary_code(3));
+        continue;
+      }
+      const Face& twin = mesh.faces[face.twin];
+      EXPECT_LT((face.point + mesh.shifts[face.shift] - twin.point).norm(), 1e-12) << f;
+      EXPECT_LT((mesh.shifts[face.shift] + mesh.shifts[twin.shift]).norm(), 1e-12) << f;
+    }
+  }
+  // One cell along a periodic axis is its own neighbour.
+  BoxSpec thin;
+  thin.axes[0].cells = 1;
+  thin.periodic = {true, false, false};
+  const Mesh one = box_mesh(thin);
+  EXPECT_EQ(one.faces[0].neighbour, 0);
+  test::expect_consistent(one);
+}
+
 TEST(BoxMesh, RejectsBadSpecs) {
   BoxSpec spec;
   spec.axes[0].cells = 0;

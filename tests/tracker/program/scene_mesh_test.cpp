@@ -47,6 +47,12 @@ TEST(SceneMesh, PeriodicVoronoiHasNoWalls) {
   EXPECT_NEAR(test::total_volume(m), 2.0, 1e-9);
 }
 
+TEST(SceneMesh, PeriodicBoxHasWallsOnlyWhereAsked) {
+  const Mesh m = mesh_of("{type: box, cells: [4, 2, 2], periodic: [true, false, true]}");
+  EXPECT_EQ(test::boundary_faces(m), 2 * 4 * 2);  // the y sides
+  test::expect_consistent(m);
+}
+
 TEST(SceneMesh, MistakesNameTheKey) {
   EXPECT_NE(error_of("{type: tetgen}").find("participants.tracker.options.mesh.type = tetgen"), std::string::npos);
   EXPECT_NE(error_of("{type: box, cells: [4, 2.5, 2]}").find("mesh.cells"), std::string::npos);

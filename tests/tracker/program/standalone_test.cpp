@@ -1,0 +1,239 @@
+// cosim-tracker --standalone end to end: small scenes run through run_tracker and their run
+// files read back. A closed box conserves particles and a zone's crossings account for the
+// change inside it; an open outflow and an absorbing obstacle remove them; a periodic box
+// keeps them all. And the sidecar's polyhedra are the mesh's cells.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <numeric>
+
+#include "output/h5_groups.hpp"
+#include "output/h5_handle.hpp"
+#include "output/series.hpp"
+#include "scene/scene.hpp"
+#include "tracker/mesh/voronoi_mesh.hpp"
+#include "tracker/program/polyhedra_xdmf.hpp"
+#include "tracker/program/standalone.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+// Unit box, 100 steps; mass = k_B so that the thermal speed is sqrt(T) m/s.
+scene::Scene scene_of_mesh(const std::string& mesh, const std::string& options) {
+  return scene::load_scene_from_string(
+      "time: {end: 1.0}\ncoupling: {window: 0.1}\noutput: {fields_every: 10}\n"
+      "domain: {min: [0, 0, 0], max: [1, 1, 1]}\neffects: [rarefied_gas]\n"
+      "participants:\n  tracker:\n    dt: 0.01\n    options:\n      mesh: " +
+          mesh + "\n" + options,
+      "scene.yaml");
+}
+scene::Scene scene_of(const std::string& options) { return scene_of_mesh("{type: box, cells: [4, 4, 4]}", options); }
+
+// What the tests read from a run file.
+struct RunFileView {
+  std::vector<double> particles;        // per written step
+  std::vector<std::vector<double>> count, mean_count, density;  // per written step, per cell
+  std::vector<double> moves;            // last row
+  std::size_t move_columns = 0;
+  std::vector<double> hits, absorbed, entered, left;  // rows x objects
+  double column(const char* name) const;
+};
+
+const std::vector<std::string> kColumns{"moves",       "faces_crossed", "zero_time_events", "boundary_hits",
+                                        "relocations", "cycles_broken", "stalled",          "removed",
+                                        "lost",        "object_events", "primitive_tests"};
+double RunFileView::column(const char* name) const {
+  return moves[static_cast<std::size_t>(std::find(kColumns.begin(), kColumns.end(), name) - kColumns.begin())];
+}
+
+RunFileView read_run(const std::filesystem::path& path, bool objects) {
+  output::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + path.string());
+  const auto series = [&](const std::string& name) { return output::Series::open(file.get(), name).read_all(); };
+  RunFileView run;
+  run.particles = series("/tracker/particles");
+  const std::vector<double> moves = series("/tracker/moves");
+  run.moves.assign(moves.end() - static_cast<std::ptrdiff_t>(kColumns.size()), moves.end());
+  output::Handle fields = output::open_group(file.get(), "/fields/tracker");
+  for (const std::string& step : output::link_names(fields.get())) {
+    if (step == "mesh") continue;
+    run.count.push_back(series("/fields/tracker/" + step + "/count"));
+    run.mean_count.push_back(series("/fields/tracker/" + step + "/mean_count"));
+    run.density.push_back(series("/fields/tracker/" + step + "/density"));
+  }
+  if (objects) {
+    run.hits = series("/tracker/objects/hits");
+    run.absorbed = series("/tracker/objects/absorbed");
+    run.entered = series("/tracker/objects/entered");
+    run.left = series("/tracker/objects/left");
+  }
+  return run;
+}
+
+double sum(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
+
+std::filesystem::path out(const char* name) { return std::filesystem::path(::testing::TempDir()) / name; }
+
+TEST(TrackerStandalone, ClosedBoxConservesParticlesAndAZoneCountsItsCrossings) {
+  // Diffuse walls, a specular ball in the right half, and a zone that is the left half of
+  // the box (its only surface inside is the plane x = 0.5, between cells 1 and 2 along x).
+  const scene::Scene scene = scene_of(
+      "      boundaries: {default: {kind: diffuse, temperature: 1}}\n"
+      "      obstacles:\n"
+      "        - {name: ball, shape: {ball: {centre: [0.75, 0.5, 0.5], radius: 0.15}}}\n"
+      "        - {name: left, shape: {box: {centre: [0, 0.5, 0.5], half_extents: [0.5, 0.6, 0.6]}}, permeable: true}\n"
+      "      particles: {per_cell: 20, temperature: 1, drift: [0.5, 0, 0], mass: 1.380649e-23, seed: 7}\n");
+  const RunSummary s = run_tracker(scene, out("closed.h5"));
+  const RunFileView run = read_run(out("closed.h5"), true);
+
+  EXPECT_EQ(s.steps, 100u);
+  EXPECT_GT(s.seeded, 1200u);  // 1280 draws, those inside the ball dropped
+  EXPECT_LT(s.seeded, 1280u);
+  EXPECT_EQ(s.remaining, s.seeded);
+  ASSERT_EQ(run.particles.size(), 11u);  // steps 0, 10, ..., 100
+  ASSERT_EQ(run.count.size(), 11u);
+  for (std::size_t k = 0; k < run.count.size(); ++k) {
+    EXPECT_EQ(run.particles[k], static_cast<double>(s.seeded));
+    EXPECT_EQ(sum(run.count[k]), run.particles[k]);
+    EXPECT_NEAR(sum(run.mean_count[k]), run.particles[k], 1e-9);  // conserved: the mean too
+    EXPECT_NEAR(run.density[k][5], run.mean_count[k][5] * 64, 1e-9);  // cells of 1/64 m^3
+  }
+  EXPECT_EQ(run.column("lost"), 0);
+  EXPECT_EQ(run.column("removed"), 0);
+  EXPECT_EQ(run.column("moves"), 100.0 * static_cast<double>(s.seeded));
+
+  const auto inside_left = [&](std::size_t k) {  // cells along x fastest: i = c % 4
+    double n = 0;
+    for (std::size_t c = 0; c < 64; ++c)
+      if (c % 4 < 2) n += run.count[k][c];
+    return n;
+  };
+  for (std::size_t k = 0; k < run.count.size(); ++k) {
+    const std::size_t zone = 2 * k + 1;  // rows x objects: ball, left
+    EXPECT_EQ(run.entered[zone] - run.left[zone], inside_left(k) - inside_left(0)) << "row " << k;
+    EXPECT_EQ(run.hits[zone], 0);
+  }
+  EXPECT_GT(run.hits[20], 100);  // the ball, last row
+  EXPECT_EQ(run.entered[20], 0);
+  EXPECT_GT(run.entered[21], 100);
+  EXPECT_GT(run.left[21], 100);
+}
+
+TEST(TrackerStandalone, OpenOutflowAndAnAbsorbingObstacleRemoveParticles) {
+  const scene::Scene scene = scene_of(
+      "      boundaries: {default: {kind: specular}, x_max: {kind: open}}\n"
+      "      obstacles:\n"
+      "        - {name: sink, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}, wall: {kind: open}}\n"
+      "      particles: {total: 2000, temperature: 0.1, drift: [2, 0, 0], mass: 1.380649e-23}\n");
+  const RunSummary s = run_tracker(scene, out("outflow.h5"));
+  const RunFileView run = read_run(out("outflow.h5"), true);
+
+  EXPECT_EQ(s.seeded, 2000u);
+  EXPECT_LT(s.remaining, 100u);  // drifting 2 box lengths along x: nearly all gone
+  EXPECT_EQ(run.particles.back(), static_cast<double>(s.remaining));
+  for (std::size_t k = 0; k < run.count.size(); ++k) EXPECT_EQ(sum(run.count[k]), run.particles[k]);
+  for (std::size_t k = 1; k < run.particles.size(); ++k) EXPECT_LE(run.particles[k], run.particles[k - 1]);
+  EXPECT_EQ(run.column("removed"), static_cast<double>(s.seeded - s.remaining));
+  EXPECT_EQ(run.column("lost"), 0);
+  EXPECT_GT(run.absorbed.back(), 50);  // the ball's shadow: about its cross-section's share
+  EXPECT_EQ(run.absorbed.back(), run.hits.back());
+  EXPECT_LT(run.absorbed.back(), run.column("removed"));  // the rest left through x_max
+}
+
+TEST(TrackerStandalone, PeriodicBoxKeepsEveryParticle) {
+  // No walls at all: every side linked, the particles drift through them around a ball.
+  const scene::Scene scene = scene_of_mesh(
+      "{type: box, cells: [4, 3, 2], tetrahedra: true, periodic: [true, true, true]}",
+      "      obstacles:\n"
+      "        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.3}}, wall: {kind: diffuse, "
+      "temperature: 1}}\n"
+      "      particles: {total: 1000, temperature: 1, drift: [3, 1, 0], mass: 1.380649e-23}\n");
+  const RunSummary s = run_tracker(scene, out("periodic.h5"));
+  const RunFileView run = read_run(out("periodic.h5"), true);
+  EXPECT_EQ(s.remaining, 1000u);
+  for (std::size_t k = 0; k < run.count.size(); ++k) EXPECT_EQ(sum(run.count[k]), 1000);
+  EXPECT_EQ(run.column("lost"), 0);
+  EXPECT_GT(run.column("faces_crossed"), 1000);
+  EXPECT_GT(run.hits.back(), 500);  // 3 box lengths along x through a ball of a third of the section
+}
+
+TEST(TrackerStandalone, WritesTheLastStepWithoutFieldsEveryAndNoObstacles) {
+  scene::Scene scene = scene_of(
+      "      boundaries: {default: {kind: specular}}\n"
+      "      particles: {per_cell: 1, temperature: 1, mass: 1.380649e-23}\n");
+  scene.output.fields_every = 0;  // only the start and the end
+  const RunSummary s = run_tracker(scene, out("bare.h5"));
+  const RunFileView run = read_run(out("bare.h5"), false);
+  ASSERT_EQ(run.particles.size(), 2u);
+  EXPECT_EQ(run.particles[1], 64);
+  EXPECT_EQ(s.remaining, 64u);
+  EXPECT_TRUE(std::filesystem::exists(out("bare.xmf")));
+}
+
+// The configs of the issue, shortened: the sphere-cluster channel and the open-cell foam
+// keep every particle (periodic sides, mirrors, re-emitting walls), lose none, and their
+// walls are hit; the gas drifting along +x pushes the cluster along +x.
+scene::Scene shortened_config(const std::string& name, const std::string& end) {
+  const std::filesystem::path file = std::filesystem::path(COSIM_CONFIGS_DIR) / (name + ".yaml");
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::regex time_end(R"(time:\n  end: [^\n]+)"), window(R"(coupling:\n  window: [^\n]+)");
+  EXPECT_TRUE(std::regex_search(text.str(), time_end) && std::regex_search(text.str(), window)) << name;
+  const std::string shortened = std::regex_replace(text.str(), time_end, "time:\n  end: " + end);
+  return scene::load_scene_from_string(std::regex_replace(shortened, window, "coupling:\n  window: " + end),
+                                       file.string());
+}
+
+TEST(TrackerConfigs, SphereClusterChannelAndFoamRun) {
+  const RunSummary channel = run_tracker(shortened_config("tracker-sphere-cluster", "2.0e-5"), out("channel.h5"));
+  const RunFileView c = read_run(out("channel.h5"), true);
+  EXPECT_EQ(channel.remaining, channel.seeded);
+  EXPECT_EQ(c.column("lost"), 0);
+  EXPECT_GT(c.hits[c.hits.size() - 2], 100);  // the cluster, first of the two objects
+  output::Handle file(H5Fopen(out("channel.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open");
+  const std::vector<double> impulse = output::Series::open(file.get(), "/tracker/objects/impulse").read_all();
+  EXPECT_GT(impulse[impulse.size() - 6], 0.0);  // the cluster's x, last row
+  EXPECT_GT(c.entered.back(), 0);              // the wake zone
+
+  const RunSummary foam = run_tracker(shortened_config("tracker-foam", "2.0e-5"), out("foam.h5"));
+  const RunFileView f = read_run(out("foam.h5"), true);
+  EXPECT_EQ(foam.remaining, foam.seeded);
+  EXPECT_EQ(f.column("lost"), 0);
+  EXPECT_GT(f.hits.back(), 1000);
+  for (std::size_t k = 0; k < f.count.size(); ++k) EXPECT_EQ(sum(f.count[k]), static_cast<double>(foam.seeded));
+}
+
+TEST(PolyhedraXdmf, MixedTopologyReadsBackAsTheCells) {
+  // A Voronoi mesh: cells of many faces, faces of many vertices.
+  std::vector<Vec3> sites;
+  Random random(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 40; ++i) sites.emplace_back(unit(random), unit(random), unit(random));
+  const Mesh mesh = voronoi_mesh(sites, {});
+  const std::vector<std::int64_t> topology = mixed_topology(mesh);
+  std::size_t at = 0;
+  for (Index c = 0; c < mesh.cell_count(); ++c) {
+    ASSERT_EQ(topology[at++], 16);  // XDMF Polyhedron
+    ASSERT_EQ(topology[at++], mesh.cell_faces[c + 1] - mesh.cell_faces[c]);
+    for (Index f = mesh.cell_faces[c]; f < mesh.cell_faces[c + 1]; ++f) {
+      ASSERT_EQ(topology[at++], mesh.vertex_count(f));
+      for (Index k = mesh.face_vertex_begin[f]; k < mesh.face_vertex_begin[f + 1]; ++k)
+        EXPECT_EQ(topology[at++], mesh.face_vertex_index[k]);
+    }
+  }
+  EXPECT_EQ(at, topology.size());
+
+  const std::string doc = polyhedra_xdmf("a&b.h5", {.name = "tracker", .mesh_group = "/fields/tracker/mesh",
+                                                    .cells = 40, .vertices = mesh.vertices.size(),
+                                                    .topology_size = topology.size(),
+                                                    .steps = {{"/fields/tracker/000000", 0.5, {{"count", 1}}}}});
+  EXPECT_NE(doc.find("TopologyType=\"Mixed\" NumberOfElements=\"40\""), std::string::npos);
+  EXPECT_NE(doc.find("a&amp;b.h5:/fields/tracker/000000/count"), std::string::npos);
+  EXPECT_NE(doc.find("<Time Value=\"0.5\"/>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cosim::tracker

@@ -1,0 +1,128 @@
+// The tracker's own options (walls, obstacles, particles): every mistake names file, line,
+// key and value, a good section reads into the conditions the tracking uses, and the seeded
+// particles are where and as fast as the section says.
+#include <gtest/gtest.h>
+
+#include "scene/error.hpp"
+#include "tracker/program/scene_tracker.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+constexpr const char* kParticles = "      particles: {per_cell: 2, temperature: 1, mass: 1}\n";
+
+scene::Scene scene_with(const std::string& options, const std::string& mesh = "{type: box, cells: [2, 2, 2]}") {
+  return scene::load_scene_from_string(
+      "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
+      "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
+      "      mesh: " + mesh + "\n" + options,
+      "scene.yaml");
+}
+
+std::string error_of(const std::string& options, const std::string& mesh = "{type: box, cells: [2, 2, 2]}") {
+  try {
+    read_tracker(scene_with(options, mesh));
+  } catch (const scene::SceneError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+#define EXPECT_ERROR(options, text) EXPECT_NE(error_of(options).find(text), std::string::npos) << error_of(options)
+
+TEST(TrackerOptions, ReadsWallsObstaclesAndParticles) {
+  const TrackerScene t = read_tracker(scene_with(
+      std::string(kParticles) +
+      "      boundaries:\n        default: {kind: maxwell, temperature: 300, accommodation: 0.5}\n"
+      "        x_max: {kind: open}\n"
+      "      obstacles:\n"
+      "        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}, wall: {kind: diffuse, "
+      "temperature: 10}}\n"
+      "        - {name: zone, shape: {box: {centre: [0.2, 0.2, 0.2], half_extents: [0.1, 0.1, 0.1]}}, "
+      "permeable: true}\n"));
+  ASSERT_EQ(t.domain->boundaries.patches.size(), 6u);
+  EXPECT_EQ(t.domain->boundaries.patches[0].kind, BoundaryKind::maxwell);
+  EXPECT_EQ(t.domain->boundaries.patches[0].accommodation, 0.5);
+  EXPECT_EQ(t.domain->boundaries.patches[1].kind, BoundaryKind::open);
+  EXPECT_EQ(t.domain->boundaries.mass, 1.0);
+  ASSERT_EQ(t.obstacles.count(), 2);
+  EXPECT_EQ(t.obstacles.object(0).wall.kind, BoundaryKind::diffuse);
+  EXPECT_EQ(t.obstacles.object(0).wall.temperature, 10.0);
+  EXPECT_TRUE(t.obstacles.object(1).permeable);
+  EXPECT_EQ(t.particles.per_cell, 2);
+  EXPECT_EQ(t.dt, 0.01);
+}
+
+TEST(TrackerOptions, WallMistakesNameTheKey) {
+  const std::string p = kParticles;
+  EXPECT_ERROR(p, "no condition for patch x_min");
+  EXPECT_ERROR(p + "      boundaries: {default: {kind: specular}, x_mn: {kind: open}}\n",
+               "participants.tracker.options.boundaries.x_mn");
+  EXPECT_ERROR(p + "      boundaries: {default: {kind: sticky}}\n", "boundaries.default.kind = sticky");
+  EXPECT_ERROR(p + "      boundaries: {default: {kind: diffuse}}\n", "boundaries.default.temperature");
+  EXPECT_ERROR(p + "      boundaries: {default: {kind: diffuse, temperature: -3}}\n", "temperature = -3");
+  EXPECT_ERROR(p + "      boundaries: {default: {kind: maxwell, temperature: 3, accommodation: 1.5}}\n",
+               "accommodation = 1.5");
+  EXPECT_ERROR(p + "      boundaries: {default: {kind: specular, temperature: 3}}\n", "default.temperature");
+  EXPECT_ERROR(p + "      boundaries: {default: {kind: specular}, y_min: {kind: periodic}}\n",
+               "boundaries.y_min = {kind: periodic}: the mesh does not link");
+  const std::string periodic_x = "{type: box, cells: [2, 2, 2], periodic: [true, false, false]}";
+  EXPECT_NE(error_of(p + "      boundaries: {default: {kind: specular}, x_max: {kind: open}}\n", periodic_x)
+                .find("boundaries.x_max = {kind: open}: the mesh links this patch periodically"),
+            std::string::npos);
+  EXPECT_EQ(error_of(p + "      boundaries: {default: {kind: specular}, x_max: {kind: periodic}}\n", periodic_x),
+            "no error");
+}
+
+TEST(TrackerOptions, ObstacleMistakesNameTheKey) {
+  const std::string p = std::string(kParticles) + "      boundaries: {default: {kind: specular}}\n      obstacles:\n";
+  const std::string ball = "shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}";
+  EXPECT_ERROR(p + "        - {name: a, " + ball + ", wall: {kind: periodic}}\n", "obstacles[0].wall.kind = periodic");
+  EXPECT_ERROR(p + "        - {name: a, " + ball + ", permeable: true, wall: {kind: open}}\n",
+               "obstacles[0].wall");
+  EXPECT_ERROR(p + "        - {name: a, " + ball + "}\n        - {name: a, " + ball + "}\n",
+               "obstacles[1].name = a");
+  EXPECT_ERROR(p + "        - {name: a, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: -1}}}\n",
+               "obstacles[0].shape.ball.radius = -1");
+  EXPECT_ERROR(p + "        - {name: a, " + ball + ", permeable: maybe}\n", "obstacles[0].permeable = maybe");
+}
+
+TEST(TrackerOptions, ParticleMistakesNameTheKey) {
+  const std::string walls = "      boundaries: {default: {kind: specular}}\n";
+  EXPECT_ERROR(walls, "participants.tracker.options.particles");
+  EXPECT_ERROR(walls + "      particles: {per_cell: 2, total: 9, temperature: 1, mass: 1}\n", "exactly one of");
+  EXPECT_ERROR(walls + "      particles: {per_cell: 2.5, temperature: 1, mass: 1}\n", "particles.per_cell = 2.5");
+  EXPECT_ERROR(walls + "      particles: {total: 9, temperature: 1, mass: -1}\n", "particles.mass = -1");
+  EXPECT_ERROR(walls + "      particles: {total: 9, temperature: 1, mass: 1, drift: [1, 2]}\n", "particles.drift");
+  EXPECT_ERROR(walls + "      particles: {total: 9, temperature: 1, mass: 1, colour: red}\n",
+               "particles.colour = red: unknown key");
+  EXPECT_ERROR(walls + kParticles + "      velocity: 3\n", "options.velocity = 3: unknown key");
+}
+
+TEST(Seeding, UniformInTheCellsOutsideTheWallsWithAMaxwellian) {
+  // mass = k_B: the velocity variance per component is T.
+  const TrackerScene t = read_tracker(scene_with(
+      "      boundaries: {default: {kind: specular}}\n"
+      "      obstacles:\n        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.4}}}\n"
+      "      particles: {total: 20000, temperature: 4, drift: [1, 0, -2], mass: 1.380649e-23, seed: 5}\n"));
+  Random random(t.particles.seed);
+  const Swarm swarm = seed_particles(*t.mesh, t.obstacles, t.particles, random);
+  ASSERT_EQ(swarm.size(), 20000u);
+  ASSERT_EQ(swarm.objects(), 1);
+  Vec3 mean = Vec3::Zero(), square = Vec3::Zero();
+  int octant0 = 0;
+  for (const Particle& p : swarm.particles()) {
+    EXPECT_TRUE(contains(*t.mesh, p.cell, p.x));
+    EXPECT_GT((p.x - Vec3(0.5, 0.5, 0.5)).norm(), 0.4);
+    mean += p.v / 20000.0;
+    square += p.v.cwiseProduct(p.v) / 20000.0;
+    octant0 += p.cell == 0;
+  }
+  const Vec3 variance = square - mean.cwiseProduct(mean);
+  EXPECT_LT((mean - Vec3(1, 0, -2)).norm(), 0.05);  // 3 sigma: 3 * 2 / sqrt(20000)
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(variance[a], 4.0, 0.15);
+  EXPECT_NEAR(octant0, 20000 / 8, 150);  // the ball is symmetric: each cell an eighth
+}
+
+}  // namespace
+}  // namespace cosim::tracker

@@ -1,0 +1,39 @@
+#include "tracker/program/scene_tracker.hpp"
+
+#include <stdexcept>
+
+#include "scene/error.hpp"
+#include "tracker/program/scene_mesh.hpp"
+#include "tracker/program/scene_obstacles.hpp"
+#include "tracker/program/scene_walls.hpp"
+
+namespace cosim::tracker {
+
+TrackerScene read_tracker(const scene::Scene& scene) {
+  const scene::Participant* p = scene.participant("tracker");
+  if (p == nullptr) throw scene::SceneError(scene.file.string(), 0, "participants", "", "the scene has no tracker");
+  const scene::Reader options = scene::options_of(scene, *p);
+
+  TrackerScene t;
+  t.dt = p->dt;
+  t.mesh = std::make_unique<const Mesh>(read_mesh(options.map("mesh"), scene));
+  t.particles = read_seeding(options.map("particles"));
+  Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass);
+  try {
+    t.domain = std::make_unique<const Domain>(*t.mesh, std::move(boundaries));
+  } catch (const std::invalid_argument& e) {
+    options.fail("boundaries", e.what());
+  }
+  std::vector<Obstacle> obstacles = read_obstacles(options, scene.file);
+  if (!obstacles.empty()) {
+    try {
+      t.obstacles = Obstacles(*t.mesh, std::move(obstacles));
+    } catch (const std::invalid_argument& e) {
+      options.fail("obstacles", e.what());
+    }
+  }
+  options.finish();
+  return t;
+}
+
+}  // namespace cosim::tracker

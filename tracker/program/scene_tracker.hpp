@@ -1,0 +1,28 @@
+// Everything the standalone tracker reads from participants.tracker of a scene: the mesh
+// (scene_mesh.hpp), the walls (scene_walls.hpp), the obstacles (scene_obstacles.hpp), the
+// particles (seeding.hpp) and the participant's dt; checked together, so a key nobody reads
+// is an error.
+#pragma once
+
+#include <memory>
+
+#include "scene/scene.hpp"
+#include "tracker/program/seeding.hpp"
+#include "tracker/tracking/domain.hpp"
+#include "tracker/tracking/obstacles.hpp"
+
+namespace cosim::tracker {
+
+struct TrackerScene {
+  // On the heap: the domain and the obstacles refer to the mesh, and the whole moves.
+  std::unique_ptr<const Mesh> mesh;
+  std::unique_ptr<const Domain> domain;
+  Obstacles obstacles;
+  Seeding particles;
+  double dt = 0.0;
+};
+
+// Throws scene::SceneError naming file, line, key and value.
+TrackerScene read_tracker(const scene::Scene& scene);
+
+}  // namespace cosim::tracker

@@ -1,0 +1,77 @@
+#include "tracker/program/scene_walls.hpp"
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <set>
+
+namespace cosim::tracker {
+namespace {
+
+using scene::Range;
+using scene::Reader;
+
+constexpr std::array kKinds{"specular", "diffuse", "maxwell", "open", "periodic"};
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+}  // namespace
+
+BoundaryCondition read_condition(const Reader& r, bool allow_periodic) {
+  BoundaryCondition c;
+  c.kind = static_cast<BoundaryKind>(r.choice("kind", kKinds));
+  if (c.kind == BoundaryKind::periodic && !allow_periodic)
+    r.fail("kind", "an obstacle wall cannot be periodic; expected specular, diffuse, maxwell or open");
+  if (c.kind == BoundaryKind::diffuse || c.kind == BoundaryKind::maxwell)
+    c.temperature = r.number("temperature", Range::above(0));
+  if (c.kind == BoundaryKind::maxwell) c.accommodation = r.number("accommodation", Range::closed(0, 1));
+  r.finish();  // a temperature on a specular wall is a mistake worth naming
+  return c;
+}
+
+Boundaries read_boundaries(const Reader& options, const Mesh& mesh, double mass) {
+  // Absent: as empty, so that a mesh without walls (periodic on every axis) needs none.
+  const Reader r =
+      options.has("boundaries") ? options.map("boundaries") : Reader(YAML::Node(YAML::NodeType::Map), "", "");
+  std::set<Index> with_faces;
+  for (const Face& f : mesh.faces)
+    if (f.neighbour < 0) with_faces.insert(patch_of(f.neighbour));
+
+  std::optional<BoundaryCondition> fallback;
+  if (r.has("default")) fallback = read_condition(r.map("default"), false);
+  std::vector<std::optional<BoundaryCondition>> given(mesh.patches.size());
+  for (const std::string& key : r.keys()) {
+    if (key == "default") continue;
+    const auto it = std::find(mesh.patches.begin(), mesh.patches.end(), key);
+    if (it == mesh.patches.end()) r.fail(key, "no such patch; the mesh has: " + listed(mesh.patches) + " (or default)");
+    const auto patch = static_cast<Index>(it - mesh.patches.begin());
+    given[static_cast<std::size_t>(patch)] = read_condition(r.map(key), true);
+    const bool periodic = given[static_cast<std::size_t>(patch)]->kind == BoundaryKind::periodic;
+    if (periodic && with_faces.contains(patch))
+      r.fail(key, "the mesh does not link this patch periodically (set mesh.periodic for its axis, box and "
+                  "voronoi; Gmsh meshes have no periodic links)");
+    if (!periodic && !with_faces.contains(patch))
+      r.fail(key, "the mesh links this patch periodically, so it has no walls; write periodic or leave it out");
+  }
+  r.finish();
+
+  Boundaries b{.patches = {}, .mass = mass};
+  for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
+    if (!with_faces.contains(static_cast<Index>(p))) {
+      b.patches.push_back({.kind = BoundaryKind::periodic});
+    } else if (given[p]) {
+      b.patches.push_back(*given[p]);
+    } else if (fallback) {
+      b.patches.push_back(*fallback);
+    } else {
+      options.fail("boundaries", "no condition for patch " + mesh.patches[p] + " (name it or give a default)");
+    }
+  }
+  return b;
+}
+
+}  // namespace cosim::tracker

@@ -1,0 +1,28 @@
+// Wall conditions as the scene writes them, for the mesh's patches and for obstacle walls:
+//
+//   {kind: specular | diffuse | maxwell | open | periodic, temperature: 300, accommodation: 0.8}
+//
+// temperature (K, > 0) only for diffuse and maxwell, accommodation (the diffuse fraction,
+// [0, 1]) only for maxwell; periodic only for mesh patches the mesh links.
+//
+//   boundaries:                 # participants.tracker.options.boundaries
+//     default: {kind: specular} # every patch not named; optional
+//     x_min: {kind: open}       # a patch name of the mesh (box: x_min, x_max, ..., z_max)
+//
+// Errors are scene::SceneError naming file, line, key and value.
+#pragma once
+
+#include "scene/reader.hpp"
+#include "tracker/mesh/mesh.hpp"
+#include "tracker/tracking/boundaries.hpp"
+
+namespace cosim::tracker {
+
+BoundaryCondition read_condition(const scene::Reader& r, bool allow_periodic);
+
+// The `boundaries` of the tracker's options: one condition per patch of `mesh`. Every patch
+// with boundary faces needs one (its own or the default); a patch without faces (linked
+// periodically by the mesh) gets `periodic`.
+Boundaries read_boundaries(const scene::Reader& options, const Mesh& mesh, double mass);
+
+}  // namespace cosim::tracker

@@ -1,0 +1,37 @@
+// The initial particles (participants.tracker.options.particles):
+//
+//   particles:
+//     per_cell: 20           # particles per cell, or
+//     total: 10000           # in all, cells drawn by volume (exactly one of the two)
+//     temperature: 300       # K: Maxwellian velocities about the drift (0: all at the drift)
+//     drift: [400, 0, 0]     # m/s, optional
+//     mass: 6.63e-26         # kg, also what diffuse walls re-emit with
+//     seed: 1                # optional: of every random draw of the run
+//
+// Positions are uniform in each cell (rejection in the cell's bounding box against its
+// planes) and outside every wall obstacle: with per_cell a draw inside a wall is dropped
+// (the cell keeps the density of the free gas), with total it is drawn again.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "scene/reader.hpp"
+#include "tracker/tracking/swarm.hpp"
+
+namespace cosim::tracker {
+
+struct Seeding {
+  int per_cell = 0;
+  int total = 0;
+  double temperature = 0.0;
+  Vec3 drift = Vec3::Zero();
+  double mass = 0.0;
+  std::uint64_t seed = 1;
+};
+
+Seeding read_seeding(const scene::Reader& particles);
+
+Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, Random& random);
+
+}  // namespace cosim::tracker

@@ -1,0 +1,103 @@
+#include "tracker/program/standalone.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "tracker/program/progress.hpp"
+#include "tracker/program/scene_tracker.hpp"
+#include "tracker/program/seeding.hpp"
+#include "tracker/program/tracker_file.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+using clock = std::chrono::steady_clock;
+
+double seconds_since(clock::time_point t) { return std::chrono::duration<double>(clock::now() - t).count(); }
+
+// Particles per cell, summed over the steps since the last write for the time average.
+class CellCounts {
+ public:
+  explicit CellCounts(Index cells) : now_(static_cast<std::size_t>(cells)), sum_(now_.size()) {}
+
+  void count(std::span<const Particle> particles) {
+    std::fill(now_.begin(), now_.end(), 0.0);
+    for (const Particle& p : particles) now_[static_cast<std::size_t>(p.cell)] += 1.0;
+    for (std::size_t c = 0; c < now_.size(); ++c) sum_[c] += now_[c];
+    ++samples_;
+  }
+  const std::vector<double>& now() const { return now_; }
+  // The mean since the last call, which starts the next average.
+  std::vector<double> take_mean() {
+    std::vector<double> mean(sum_.size());
+    for (std::size_t c = 0; c < sum_.size(); ++c) mean[c] = sum_[c] / samples_;
+    std::fill(sum_.begin(), sum_.end(), 0.0);
+    samples_ = 0;
+    return mean;
+  }
+
+ private:
+  std::vector<double> now_, sum_;
+  int samples_ = 0;
+};
+
+}  // namespace
+
+RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) {
+  const auto started = clock::now();
+  const TrackerScene t = read_tracker(scene);
+  const Mesh& mesh = *t.mesh;
+  const auto objects = static_cast<std::size_t>(t.obstacles.count());
+
+  // One generator for the whole run, so a scene and its seed give the same run.
+  Random random(t.particles.seed);
+  Swarm swarm = seed_particles(mesh, t.obstacles, t.particles, random);
+
+  if (output.empty()) output = scene.output.file;
+  if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < objects; ++i) names.push_back(t.obstacles.object(static_cast<int>(i)).name);
+  TrackerFile file(output, scene, mesh, names);
+
+  RunSummary summary;
+  summary.steps = static_cast<std::uint64_t>(std::llround(scene.time.end / t.dt));  // whole: scene validation
+  summary.seeded = swarm.size();
+  std::vector<ObstacleTally> tallies(objects);
+  CellCounts counts(mesh.cell_count());
+  const int every = scene.output.fields_every;
+  const auto write = [&](std::uint64_t step) {
+    const std::vector<double> mean = counts.take_mean();
+    file.write({.step = step,
+                .time = static_cast<double>(step) * t.dt,
+                .particles = swarm.size(),
+                .count = counts.now(),
+                .mean_count = mean,
+                .objects = tallies,
+                .moves = summary.moves});
+  };
+
+  Progress progress(summary.steps, scene.time.end);
+  try {
+    counts.count(swarm.particles());
+    write(0);
+    for (std::uint64_t step = 1; step <= summary.steps; ++step) {
+      // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
+      swarm.sort_by_cell(mesh.cell_count());
+      swarm.move_all(*t.domain, t.obstacles, t.dt, random, summary.moves, tallies);
+      counts.count(swarm.particles());
+      if ((every > 0 && step % static_cast<std::uint64_t>(every) == 0) || step == summary.steps) write(step);
+      progress.update(step, static_cast<double>(step) * t.dt, swarm.size());
+    }
+  } catch (const std::exception& e) {
+    progress.finish();
+    file.set_status(std::string("failed: ") + e.what(), seconds_since(started));
+    throw;
+  }
+  progress.finish();
+  summary.remaining = swarm.size();
+  summary.wall_seconds = seconds_since(started);
+  file.set_status("finished", summary.wall_seconds);
+  return summary;
+}
+
+}  // namespace cosim::tracker

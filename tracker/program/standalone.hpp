@@ -1,0 +1,25 @@
+// cosim-tracker --standalone: ballistic particles among the scene's obstacles for the
+// scene's time (time.end in steps of the participant's dt), no coupler, written to the
+// tracker's run file (tracker_file.hpp) at step 0, every output.fields_every steps and
+// the last.
+#pragma once
+
+#include <filesystem>
+
+#include "scene/scene.hpp"
+#include "tracker/tracking/move.hpp"
+
+namespace cosim::tracker {
+
+struct RunSummary {
+  std::uint64_t steps = 0;
+  std::size_t seeded = 0, remaining = 0;  // particles at the start and the end
+  MoveTally moves;
+  double wall_seconds = 0.0;
+};
+
+// Writes `output` (empty: the scene's output.file). Throws scene::SceneError for a bad
+// scene, std::runtime_error otherwise (the file then says "failed: ..." in /run status).
+RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output);
+
+}  // namespace cosim::tracker

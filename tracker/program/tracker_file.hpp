@@ -1,0 +1,57 @@
+// The standalone tracker's HDF5 file, in the run file's spirit (coupler/output/run_file.hpp)
+// with the tracker's unstructured cells:
+//   /run                      attrs scene_file, git_hash, cosim_version, started, status,
+//                             wall_seconds, participant_names ["tracker"]; scene_text
+//   /fields/tracker/mesh/     vertices (v x 3), topology (int64, XDMF Mixed polyhedra, see
+//                             polyhedra_xdmf.hpp), volume (cells, m^3)
+//   /fields/tracker/<step>/   attr time; per cell: count (particles at that step),
+//                             mean_count (averaged over the steps since the previous
+//                             write; at step 0 the initial count), density (mean_count /
+//                             volume, 1/m^3). <step>: the step index, 6+ digits
+//   /tracker/                 one row per written step: step (uint64), time, particles
+//                             (uint64), moves (11 columns, attr columns: the MoveTally
+//                             totals since the start)
+//   /tracker/objects/         attr names; hits, absorbed, entered, left (rows x objects,
+//                             uint64, totals since the start), impulse (rows x 3 objects:
+//                             x y z per object, per unit particle mass, m/s)
+// The sidecar <file>.xmf is rewritten after every write, once the file is flushed.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "tracker/tracking/move.hpp"
+
+namespace cosim::tracker {
+
+struct Sample {
+  std::uint64_t step = 0;
+  double time = 0.0;
+  std::uint64_t particles = 0;
+  std::span<const double> count, mean_count;  // per cell
+  std::span<const ObstacleTally> objects;
+  MoveTally moves;
+};
+
+class TrackerFile {
+ public:
+  // Creates (truncates) path; errors are std::runtime_error naming the file.
+  TrackerFile(const std::filesystem::path& path, const scene::Scene& scene, const Mesh& mesh,
+              const std::vector<std::string>& object_names);
+  TrackerFile(TrackerFile&&) noexcept;
+  ~TrackerFile();
+
+  void write(const Sample& sample);  // flushes, then rewrites the sidecar
+  void set_status(const std::string& status, double wall_seconds);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cosim::tracker
