@@ -20,9 +20,9 @@ class CellCounts {
  public:
   explicit CellCounts(Index cells) : now_(static_cast<std::size_t>(cells)), sum_(now_.size()) {}
 
-  void count(std::span<const Particle> particles) {
+  void count(const Swarm& swarm) {
     std::fill(now_.begin(), now_.end(), 0.0);
-    for (const Particle& p : particles) now_[static_cast<std::size_t>(p.cell)] += 1.0;
+    for (std::size_t i = 0; i < swarm.size(); ++i) now_[static_cast<std::size_t>(swarm.cell(i))] += 1.0;
     for (std::size_t c = 0; c < now_.size(); ++c) sum_[c] += now_[c];
     ++samples_;
   }
@@ -78,13 +78,13 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
 
   Progress progress(summary.steps, scene.time.end);
   try {
-    counts.count(swarm.particles());
+    counts.count(swarm);
     write(0);
     for (std::uint64_t step = 1; step <= summary.steps; ++step) {
       // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
       swarm.sort_by_cell(mesh.cell_count());
       swarm.move_all(*t.domain, t.obstacles, t.dt, random, summary.moves, tallies);
-      counts.count(swarm.particles());
+      counts.count(swarm);
       if ((every > 0 && step % static_cast<std::uint64_t>(every) == 0) || step == summary.steps) write(step);
       progress.update(step, static_cast<double>(step) * t.dt, swarm.size());
     }

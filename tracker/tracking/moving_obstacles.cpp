@@ -48,7 +48,7 @@ long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const 
   long overrun = 0;
   std::vector<bool> removed(swarm.size(), false);
   for (std::size_t k = 0; k < swarm.size(); ++k) {
-    Particle& p = swarm.particle(k);
+    Particle p = swarm.particle(k);
     const std::span<csg::State> states = swarm.states(k);
     const Index b = bounding_cell(p.cell);
     const std::span<const int> before = old.primitives(b);
@@ -71,6 +71,7 @@ long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const 
     const Vec3 n = forward.linear() * swept.normal;
     const Vec3 u = (met - back * met) / dt;
     if (!put_back(*this, o, domain, met, n, u, p, states, random)) removed[k] = true;
+    swarm.set(k, p);
   }
   swarm.remove_if([&](std::size_t k) { return removed[k]; });
   return overrun;

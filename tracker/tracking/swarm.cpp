@@ -5,7 +5,8 @@
 namespace cosim::tracker {
 
 void Swarm::add(const Particle& particle, std::span<const csg::State> states) {
-  particles_.push_back(particle);
+  particles_.emplace_back();
+  set(particles_.size() - 1, particle);
   states_.insert(states_.end(), states.begin(), states.end());
 }
 
@@ -19,7 +20,9 @@ void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt
                      std::span<ObstacleTally> tallies) {
   std::vector<bool> removed(particles_.size());
   for (std::size_t i = 0; i < particles_.size(); ++i) {
-    const MoveResult result = move(domain, obstacles, particles_[i], states(i), dt, random, tallies);
+    Particle p = particle(i);
+    const MoveResult result = move(domain, obstacles, p, states(i), dt, random, tallies);
+    set(i, p);
     moves.add(result);
     removed[i] = result.removed;
   }
@@ -28,9 +31,9 @@ void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt
 
 void Swarm::sort_by_cell(Index cells) {
   std::vector<std::size_t> start(static_cast<std::size_t>(cells) + 1, 0);
-  for (const Particle& p : particles_) ++start[static_cast<std::size_t>(p.cell) + 1];
+  for (const StoredParticle& p : particles_) ++start[static_cast<std::size_t>(p.cell) + 1];
   for (std::size_t c = 0; c < static_cast<std::size_t>(cells); ++c) start[c + 1] += start[c];
-  std::vector<Particle> particles(particles_.size());
+  std::vector<StoredParticle> particles(particles_.size());
   std::vector<csg::State> states(states_.size());
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const std::size_t to = start[static_cast<std::size_t>(particles_[i].cell)]++;

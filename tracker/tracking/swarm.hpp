@@ -1,6 +1,9 @@
 #pragma once
 // The particles of a run with their logical states (one per obstacle, stored next to each
-// other per particle), moved together and kept in cell order for the cache.
+// other per particle), moved together and kept in cell order for the cache. A particle is
+// stored in 40 bytes: position in double, velocity in float (7 digits, as much as a DSMC
+// velocity means; a specular reflection off an axis-aligned wall flips a sign and stays
+// exact), cell; the tracking itself computes in double.
 
 #include "tracker/tracking/move.hpp"
 
@@ -9,19 +12,33 @@
 
 namespace cosim::tracker {
 
+struct StoredParticle {
+  double x[3];
+  float v[3];
+  Index cell;
+};
+static_assert(sizeof(StoredParticle) == 40);
+
 class Swarm {
  public:
   explicit Swarm(int objects) : objects_(objects) {}
 
   std::size_t size() const { return particles_.size(); }
   int objects() const { return objects_; }
-  const Particle& particle(std::size_t i) const { return particles_[i]; }
-  Particle& particle(std::size_t i) { return particles_[i]; }
+  Particle particle(std::size_t i) const {
+    const StoredParticle& s = particles_[i];
+    return {{s.x[0], s.x[1], s.x[2]}, {s.v[0], s.v[1], s.v[2]}, s.cell};
+  }
+  void set(std::size_t i, const Particle& p) {
+    particles_[i] = {{p.x[0], p.x[1], p.x[2]},
+                     {static_cast<float>(p.v[0]), static_cast<float>(p.v[1]), static_cast<float>(p.v[2])},
+                     p.cell};
+  }
+  Index cell(std::size_t i) const { return particles_[i].cell; }
   std::span<csg::State> states(std::size_t i) { return {states_.data() + i * objects_, static_cast<std::size_t>(objects_)}; }
   std::span<const csg::State> states(std::size_t i) const {
     return {states_.data() + i * objects_, static_cast<std::size_t>(objects_)};
   }
-  std::span<const Particle> particles() const { return particles_; }
 
   void add(const Particle& particle, std::span<const csg::State> states);
   // Drops the particles for whose index `removed` is true, keeping the others' order.
@@ -40,14 +57,14 @@ class Swarm {
   // Counting sort by cell (stable), as DSMC codes keep their particles: the particles of a
   // cell, and the cell's faces, are then together in memory.
   void sort_by_cell(Index cells);
-  // Bytes per particle: the particle record and its states.
-  std::size_t bytes_per_particle() const { return sizeof(Particle) + objects_ * sizeof(csg::State); }
+  // Bytes per particle: the stored record and its states.
+  std::size_t bytes_per_particle() const { return sizeof(StoredParticle) + objects_ * sizeof(csg::State); }
 
  private:
   void keep(std::size_t from, std::size_t to);
 
   int objects_;
-  std::vector<Particle> particles_;
+  std::vector<StoredParticle> particles_;
   std::vector<csg::State> states_;
 };
 

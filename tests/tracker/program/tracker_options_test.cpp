@@ -111,7 +111,8 @@ TEST(Seeding, UniformInTheCellsOutsideTheWallsWithAMaxwellian) {
   ASSERT_EQ(swarm.objects(), 1);
   Vec3 mean = Vec3::Zero(), square = Vec3::Zero();
   int octant0 = 0;
-  for (const Particle& p : swarm.particles()) {
+  for (std::size_t i = 0; i < swarm.size(); ++i) {
+    const Particle p = swarm.particle(i);
     EXPECT_TRUE(contains(*t.mesh, p.cell, p.x));
     EXPECT_GT((p.x - Vec3(0.5, 0.5, 0.5)).norm(), 0.4);
     mean += p.v / 20000.0;

@@ -24,10 +24,11 @@ void relocate(const Domain& domain, Particle& p, const Carried& carried, MoveRes
 // The events keep a particle that crossed into a gap or an overlap of a perturbed mesh in
 // the cell it entered for as long as it moves inwards there, so it can stop outside that
 // cell. Then it goes across the violated face if the neighbour contains it, else to the
-// cell point location finds; in a gap no cell contains it, and it stays.
-void settle(const Domain& domain, Particle& p, const Carried& carried, MoveResult& result) {
+// cell point location finds; in a gap no cell contains it, and it stays. True if it ends
+// inside its cell to the tolerance: then is_lost, which needs a face beyond it, is false.
+bool settle(const Domain& domain, Particle& p, const Carried& carried, MoveResult& result) {
   const Violation violation = outside(domain.mesh, p.cell, p.x);
-  if (violation.depth <= domain.tolerance) return;
+  if (violation.depth <= domain.tolerance) return true;
   const Face& face = domain.mesh.faces[violation.face];
   if (face.neighbour >= 0) {
     const Vec3 there = p.x + domain.mesh.shifts[face.shift];
@@ -37,10 +38,11 @@ void settle(const Domain& domain, Particle& p, const Carried& carried, MoveResul
       p.cell = face.neighbour;
       carried.follow(from, p, face.shift != 0);
       ++result.relocations;
-      return;
+      return false;
     }
   }
   relocate(domain, p, carried, result);
+  return false;
 }
 
 // Out of a cycle: the particle is in a gap that none of the cells around it covers. It
@@ -116,8 +118,8 @@ MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Rando
       case Crossed::wall: skip = -1; break;
     }
   }
-  settle(domain, p, carried, result);
-  result.lost = is_lost(domain, p);
+  // Inside its cell a particle is not lost: the scan of is_lost is needed only otherwise.
+  if (!settle(domain, p, carried, result)) result.lost = is_lost(domain, p);
   return result;
 }
 

@@ -1,0 +1,106 @@
+// tracker_throughput: ballistic particle moves per second on one core in SPARTA's `free`
+// deck (REFERENCES.md), for the event-driven tracking and the two baselines, and the
+// bytes each particle takes. Fails (exit 1) when a particle ends outside its cell or the
+// kinetic energy drifts, which the specular walls must conserve.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "run.hpp"
+#include "storage.hpp"
+
+using namespace cosim::bench;
+using cosim::tracker::Algorithm;
+
+namespace {
+
+constexpr double kSpartaMovesPerSecond = 19.5e6;  // REFERENCES.md, measured on this machine kind
+constexpr double kGoalBytesPerParticle = 48;
+constexpr double kEnergyTolerance = 1e-12;
+
+bool check(const RunResult& r) {
+  const bool ours = r.options.algorithm == Algorithm::event_driven;
+  return (!ours || (r.lost == 0 && r.outside == 0)) && r.energy_drift <= kEnergyTolerance;
+}
+
+void print(const RunResult& r) {
+  std::printf("%-13s %-20s %5d %8.2f %8.2f %7.0f %10.3f %6lld %7lld %9.1e  %s\n", std::string(name(r.options.algorithm)).c_str(),
+              label(r.options.storage).c_str(), r.options.sort_every, r.moves_per_second() / 1e6, r.moves_per_cpu_second() / 1e6, r.bytes_per_particle,
+              static_cast<double>(r.tally.faces_crossed + r.tally.boundary_hits) / r.tally.moves, r.lost, r.outside,
+              r.energy_drift, check(r) ? "ok" : "FAILED");
+}
+
+void write_csv(const std::string& path, const FreeDeck& deck, const std::vector<RunResult>& runs) {
+  std::ofstream out(path);
+  out << "cells,per_cell,particles,steps,algorithm,storage,sort_every,moves_per_second,moves_per_cpu_second,bytes_per_particle,"
+         "crossings_per_move,lost,outside,energy_drift\n";
+  for (const RunResult& r : runs)
+    out << deck.cells << ',' << deck.per_cell << ',' << r.particles << ',' << r.options.steps << ','
+        << name(r.options.algorithm) << ',' << (r.options.storage == Storage::particle ? "particle" : "compact") << ','
+        << r.options.sort_every << ',' << r.moves_per_second() << ',' << r.moves_per_cpu_second() << ',' << r.bytes_per_particle << ','
+        << static_cast<double>(r.tally.faces_crossed + r.tally.boundary_hits) / r.tally.moves << ',' << r.lost << ','
+        << r.outside << ',' << r.energy_drift << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Ballistic moves per second per core in SPARTA's free deck"};
+  FreeDeck deck;
+  int steps = 100, sort_every = 1;
+  bool quick = false;
+  std::string csv, only;
+  app.add_option("--cells", deck.cells, "cells per side of the box")->check(CLI::Range(2, 400));
+  app.add_option("--per-cell", deck.per_cell, "particles per cell")->check(CLI::Range(1, 1000));
+  app.add_option("--steps", steps, "timed steps at dt 7e-9 s")->check(CLI::Range(1, 100000));
+  app.add_option("--sort-every", sort_every, "steps between sorts by cell in the sorted runs")->check(CLI::Range(1, 100000));
+  app.add_flag("--quick", quick, "12^3 cells, 10 steps: the ctest");
+  app.add_option("--algorithm", only, "run only this algorithm's rows (event-driven, stollmeier, haselbacher)");
+  app.add_option("--csv", csv, "also write the rows to this file");
+  CLI11_PARSE(app, argc, argv);
+  if (quick) {
+    deck.cells = 12;
+    steps = 10;
+  }
+
+  const FreeBox box(deck);
+  cosim::tracker::Random random(2026);
+  std::vector<cosim::tracker::Particle> particles = fill(deck, random);
+  // Unsort: the particles leave the cells they were created in, in array order.
+  for (int step = 0; step < FreeDeck::kUnsortSteps; ++step)
+    for (cosim::tracker::Particle& p : particles) move(Algorithm::event_driven, *box.domain, p, FreeDeck::kUnsortDt, random);
+
+  std::printf("free deck: %d^3 cells of %g m, %lld particles (%d per cell), %d timed steps of %g s, 1 core\n",
+              deck.cells, FreeDeck::kCellWidth, deck.particle_count(), deck.per_cell, steps, FreeDeck::kTimedDt);
+  std::printf("%-13s %-20s %5s %8s %8s %7s %10s %6s %7s %9s\n", "algorithm", "storage", "sort", "M mv/s", "M mv/cpu", "B/part",
+              "cross/move", "lost", "outside", "dE/E");
+  const std::vector<RunOptions> plan = {
+      {Algorithm::event_driven, Storage::particle, steps, 0},
+      {Algorithm::stollmeier, Storage::particle, steps, 0},
+      {Algorithm::haselbacher, Storage::particle, steps, 0},
+      {Algorithm::event_driven, Storage::compact, steps, 0},
+      {Algorithm::event_driven, Storage::particle, steps, sort_every},
+      {Algorithm::event_driven, Storage::compact, steps, sort_every},
+  };
+  std::vector<RunResult> runs;
+  bool ok = true;
+  for (const RunOptions& options : plan) {
+    if (!only.empty() && only != name(options.algorithm)) continue;
+    runs.push_back(run(box, particles, options));
+    print(runs.back());
+    ok = ok && check(runs.back());
+  }
+  const RunResult* best = &runs.front();
+  for (const RunResult& r : runs)
+    if (r.options.algorithm == Algorithm::event_driven && r.moves_per_second() > best->moves_per_second()) best = &r;
+  std::printf("goal: event-driven >= %.1f M moves/s per core (SPARTA): best %.2f M (%s%s): %s\n",
+              kSpartaMovesPerSecond / 1e6, best->moves_per_second() / 1e6, label(best->options.storage).c_str(),
+              best->options.sort_every ? ", sorted" : "", best->moves_per_second() >= kSpartaMovesPerSecond ? "met" : "NOT met");
+  std::printf("goal: <= %.0f bytes per particle: Particle %zu, compact %zu (sorting adds a scratch copy while it runs)\n",
+              kGoalBytesPerParticle, sizeof(cosim::tracker::Particle), sizeof(CompactParticle));
+  if (!csv.empty()) write_csv(csv, deck, runs);
+  if (!ok) std::printf("FAILED: event-driven lost particles or the kinetic energy drifted by more than %g\n", kEnergyTolerance);
+  return ok ? 0 : 1;
+}

@@ -1,0 +1,40 @@
+#pragma once
+// One timed run of the free deck with one algorithm and one particle storage.
+
+#include "free_deck.hpp"
+
+#include <string>
+
+namespace cosim::bench {
+
+enum class Storage { particle, compact };
+
+struct RunOptions {
+  tracker::Algorithm algorithm = tracker::Algorithm::event_driven;
+  Storage storage = Storage::particle;
+  int steps = 100;     // timed, at FreeDeck::kTimedDt
+  int sort_every = 0;  // sort the particles by cell every this many steps (0: never)
+};
+
+struct RunResult {
+  RunOptions options;
+  long long particles = 0;
+  double seconds = 0.0;          // wall time of the timed steps (steady_clock), sorting included
+  double cpu_seconds = 0.0;      // the process's CPU time over the same steps (std::clock): on a
+                                 // shared machine, the figure that does not count waiting
+  double bytes_per_particle = 0; // the stored record, plus the sort's scratch copy if sorting
+  tracker::MoveTally tally;      // the timed steps
+  long long lost = 0;            // is_lost at the end
+  long long outside = 0;         // outside their cell by more than the tolerance at the end
+  double energy_drift = 0.0;     // |E_end - E_start| / E_start over the timed steps
+
+  double moves_per_second() const { return static_cast<double>(tally.moves) / seconds; }
+  double moves_per_cpu_second() const { return static_cast<double>(tally.moves) / cpu_seconds; }
+};
+
+// Times `options.steps` steps of the (already unsorted) particles; a copy is moved.
+RunResult run(const FreeBox& box, const std::vector<tracker::Particle>& particles, const RunOptions& options);
+
+std::string label(Storage storage);
+
+}  // namespace cosim::bench
