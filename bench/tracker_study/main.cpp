@@ -8,11 +8,12 @@ int main(int argc, char** argv) {
   CLI::App app{"Tracking studies against the references"};
   cosim::bench::StudyOptions options;
   std::string part = "all";
-  app.add_option("--part", part, "which part to run")->check(CLI::IsMember({"all", "algorithms"}));
+  app.add_option("--part", part, "which part to run")->check(CLI::IsMember({"all", "algorithms", "pruning"}));
   app.add_flag("--quick", options.quick, "small meshes and counts (the ctest)");
   app.add_option("--csv", options.csv, "write each part's rows to <csv>_<part>.csv");
   CLI11_PARSE(app, argc, argv);
   int failed = 0;
   if (part == "all" || part == "algorithms") failed |= cosim::bench::algorithms_part(options);
+  if (part == "all" || part == "pruning") failed |= cosim::bench::pruning_part(options);
   return failed;
 }

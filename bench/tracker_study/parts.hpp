@@ -15,4 +15,10 @@ struct StudyOptions {
 // the exit code: 1 if the event-driven algorithm lost a particle.
 int algorithms_part(const StudyOptions& options);
 
+// Table 1 of Strobl, Bannerman & Poeschel: the sphere cluster registered with bounding grids
+// from none to the tracking mesh; primitives per cell, events generated and executed and
+// the speed-up next to the published rows. Returns 1 if the executed events differ between
+// grids or a particle is lost.
+int pruning_part(const StudyOptions& options);
+
 }  // namespace cosim::bench

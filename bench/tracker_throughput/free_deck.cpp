@@ -1,5 +1,7 @@
 #include "free_deck.hpp"
 
+#include "cluster.hpp"
+#include "tracker/csg/shapes.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 
 #include <cmath>
@@ -15,6 +17,10 @@ FreeBox::FreeBox(const FreeDeck& deck) {
   const Boundaries walls{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}),
                          FreeDeck::kMass};
   domain = std::make_unique<Domain>(mesh, walls);
+  const double side = deck.cells * FreeDeck::kCellWidth;
+  std::vector<csg::Expression> balls;
+  for (const Ball& b : sphere_cluster()) balls.push_back(csg::ball(side * b.centre, side * b.radius));
+  cluster = Obstacles(mesh, {{"cluster", csg::Tree(csg::Expression::unite(balls)), false, {}}});
 }
 
 std::vector<Particle> fill(const FreeDeck& deck, Random& random) {

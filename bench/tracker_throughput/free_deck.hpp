@@ -24,11 +24,15 @@ struct FreeDeck {
   long long particle_count() const { return static_cast<long long>(cells) * cells * cells * per_cell; }
 };
 
-// The mesh and the walls: the Domain keeps a reference to the mesh, so both live together.
+// The mesh and the walls: the Domain and the obstacles keep a reference to the mesh, so
+// they live together (and the box does not move).
 struct FreeBox {
   explicit FreeBox(const FreeDeck& deck);
+  FreeBox(const FreeBox&) = delete;
   tracker::Mesh mesh;
   std::unique_ptr<tracker::Domain> domain;
+  // The 790-ball cluster of Table 1 (tracker_study) scaled to the box: one specular wall.
+  tracker::Obstacles cluster;
 };
 
 // per_cell particles in every cell, cell by cell (so sorted by cell until they move).

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "run.hpp"
-#include "storage.hpp"
+#include "tracker/tracking/swarm.hpp"
 
 using namespace cosim::bench;
 using cosim::tracker::Algorithm;
@@ -18,16 +18,20 @@ namespace {
 
 constexpr double kSpartaMovesPerSecond = 19.5e6;  // REFERENCES.md, measured on this machine kind
 constexpr double kGoalBytesPerParticle = 48;
-constexpr double kEnergyTolerance = 1e-12;
+// Specular reflections off axis-aligned walls flip signs and keep |v| exactly; off the
+// cluster's balls they round the velocity to the Swarm's floats (7 digits).
+constexpr double kEnergyTolerance = 1e-12, kEnergyToleranceCurved = 1e-6;
 
 bool check(const RunResult& r) {
   const bool ours = r.options.algorithm == Algorithm::event_driven;
-  return (!ours || (r.lost == 0 && r.outside == 0)) && r.energy_drift <= kEnergyTolerance;
+  return (!ours || (r.lost == 0 && r.outside == 0)) &&
+         r.energy_drift <= (r.options.cluster ? kEnergyToleranceCurved : kEnergyTolerance) &&
+         (!r.options.cluster || r.obstacle_hits > 0);
 }
 
 void print(const RunResult& r) {
   std::printf("%-13s %-20s %5d %8.2f %8.2f %7.0f %10.3f %6lld %7lld %9.1e  %s\n", std::string(name(r.options.algorithm)).c_str(),
-              label(r.options.storage).c_str(), r.options.sort_every, r.moves_per_second() / 1e6, r.moves_per_cpu_second() / 1e6, r.bytes_per_particle,
+              label(r.options).c_str(), r.options.sort_every, r.moves_per_second() / 1e6, r.moves_per_cpu_second() / 1e6, r.bytes_per_particle,
               static_cast<double>(r.tally.faces_crossed + r.tally.boundary_hits) / r.tally.moves, r.lost, r.outside,
               r.energy_drift, check(r) ? "ok" : "FAILED");
 }
@@ -51,18 +55,19 @@ int main(int argc, char** argv) {
   FreeDeck deck;
   int steps = 100, sort_every = 1;
   bool quick = false;
-  std::string csv, only;
+  std::string csv, only, storage;
   app.add_option("--cells", deck.cells, "cells per side of the box")->check(CLI::Range(2, 400));
   app.add_option("--per-cell", deck.per_cell, "particles per cell")->check(CLI::Range(1, 1000));
   app.add_option("--steps", steps, "timed steps at dt 7e-9 s")->check(CLI::Range(1, 100000));
   app.add_option("--sort-every", sort_every, "steps between sorts by cell in the sorted runs")->check(CLI::Range(1, 100000));
-  app.add_flag("--quick", quick, "12^3 cells, 10 steps: the ctest");
+  app.add_flag("--quick", quick, "24^3 cells, 5 steps: the ctest");
   app.add_option("--algorithm", only, "run only this algorithm's rows (event-driven, stollmeier, haselbacher)");
+  app.add_option("--storage", storage, "run only this storage's rows (particle, swarm)");
   app.add_option("--csv", csv, "also write the rows to this file");
   CLI11_PARSE(app, argc, argv);
-  if (quick) {
-    deck.cells = 12;
-    steps = 10;
+  if (quick) {  // large enough that a cell holds at most 64 of the cluster's balls
+    deck.cells = 24;
+    steps = 5;
   }
 
   const FreeBox box(deck);
@@ -80,14 +85,15 @@ int main(int argc, char** argv) {
       {Algorithm::event_driven, Storage::particle, steps, 0},
       {Algorithm::stollmeier, Storage::particle, steps, 0},
       {Algorithm::haselbacher, Storage::particle, steps, 0},
-      {Algorithm::event_driven, Storage::compact, steps, 0},
-      {Algorithm::event_driven, Storage::particle, steps, sort_every},
-      {Algorithm::event_driven, Storage::compact, steps, sort_every},
+      {Algorithm::event_driven, Storage::swarm, steps, 0},
+      {Algorithm::event_driven, Storage::swarm, steps, sort_every},
+      {Algorithm::event_driven, Storage::swarm, steps, sort_every, true},
   };
   std::vector<RunResult> runs;
   bool ok = true;
   for (const RunOptions& options : plan) {
     if (!only.empty() && only != name(options.algorithm)) continue;
+    if (!storage.empty() && storage != (options.storage == Storage::swarm ? "swarm" : "particle")) continue;
     runs.push_back(run(box, particles, options));
     print(runs.back());
     ok = ok && check(runs.back());
@@ -96,11 +102,12 @@ int main(int argc, char** argv) {
   for (const RunResult& r : runs)
     if (r.options.algorithm == Algorithm::event_driven && r.moves_per_second() > best->moves_per_second()) best = &r;
   std::printf("goal: event-driven >= %.1f M moves/s per core (SPARTA): best %.2f M (%s%s): %s\n",
-              kSpartaMovesPerSecond / 1e6, best->moves_per_second() / 1e6, label(best->options.storage).c_str(),
+              kSpartaMovesPerSecond / 1e6, best->moves_per_second() / 1e6, label(best->options).c_str(),
               best->options.sort_every ? ", sorted" : "", best->moves_per_second() >= kSpartaMovesPerSecond ? "met" : "NOT met");
-  std::printf("goal: <= %.0f bytes per particle: Particle %zu, compact %zu (sorting adds a scratch copy while it runs)\n",
-              kGoalBytesPerParticle, sizeof(cosim::tracker::Particle), sizeof(CompactParticle));
+  std::printf("goal: <= %.0f bytes per particle plus the logical state: Swarm %zu + 8 per obstacle (Particle %zu; "
+              "sorting adds a scratch copy while it runs)\n",
+              kGoalBytesPerParticle, sizeof(cosim::tracker::StoredParticle), sizeof(cosim::tracker::Particle));
   if (!csv.empty()) write_csv(csv, deck, runs);
-  if (!ok) std::printf("FAILED: event-driven lost particles or the kinetic energy drifted by more than %g\n", kEnergyTolerance);
+  if (!ok) std::printf("FAILED: event-driven lost particles, the kinetic energy drifted, or the cluster was never hit\n");
   return ok ? 0 : 1;
 }

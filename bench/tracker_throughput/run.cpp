@@ -1,6 +1,6 @@
 #include "run.hpp"
 
-#include "storage.hpp"
+#include "tracker/tracking/swarm.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -12,54 +12,70 @@ using namespace cosim::tracker;
 
 namespace {
 
-template <class T>
-double kinetic_energy(const std::vector<T>& items) {
+double kinetic_energy(const std::vector<Particle>& particles) {
   double sum = 0.0;  // the factor m/2 cancels in the relative drift
-  for (const T& item : items) sum += load(item).v.squaredNorm();
+  for (const Particle& p : particles) sum += p.v.squaredNorm();
   return sum;
 }
 
-template <class T>
-RunResult timed(const FreeBox& box, std::vector<T> items, const RunOptions& options) {
-  const Domain& domain = *box.domain;
-  Random random(7);  // specular walls draw nothing; move() wants one anyway
-  std::vector<T> scratch;
-  RunResult result;
-  result.options = options;
-  result.particles = static_cast<long long>(items.size());
-  const double energy = kinetic_energy(items);
-  const std::clock_t cpu_start = std::clock();
-  const auto start = std::chrono::steady_clock::now();
-  for (int step = 0; step < options.steps; ++step) {
-    if (options.sort_every > 0 && step % options.sort_every == 0) sort_by_cell(items, scratch, box.mesh.cell_count());
-    for (T& item : items) {
-      Particle p = load(item);
-      result.tally.add(move(options.algorithm, domain, p, FreeDeck::kTimedDt, random));
-      store(item, p);
-    }
+std::vector<Particle> contents(const Swarm& swarm) {
+  std::vector<Particle> particles;
+  for (std::size_t i = 0; i < swarm.size(); ++i) particles.push_back(swarm.particle(i));
+  return particles;
+}
+
+// The particles as the program keeps them, those inside a cluster ball left out.
+Swarm swarm_of(const std::vector<Particle>& particles, const Obstacles& obstacles) {
+  Swarm swarm(obstacles.count());
+  std::vector<csg::State> states(static_cast<std::size_t>(obstacles.count()));
+  for (const Particle& p : particles) {
+    obstacles.classify(p.cell, p.x, states);
+    if (!obstacles.inside_wall(p.cell, states)) swarm.add(p, states);
   }
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-  result.bytes_per_particle = sizeof(T) * (options.sort_every > 0 ? 2.0 : 1.0);
-  for (const T& item : items) {
-    const Particle p = load(item);
-    result.lost += is_lost(domain, p);
-    result.outside += outside(box.mesh, p.cell, p.x).depth > domain.tolerance;
-  }
-  result.energy_drift = std::abs(kinetic_energy(items) - energy) / energy;
-  return result;
+  return swarm;
 }
 
 }  // namespace
 
 RunResult run(const FreeBox& box, const std::vector<Particle>& particles, const RunOptions& options) {
-  switch (options.storage) {
-    case Storage::particle: return timed(box, particles, options);
-    case Storage::compact: return timed(box, convert<CompactParticle>(particles), options);
+  const Domain& domain = *box.domain;
+  const bool in_place = options.storage == Storage::particle;
+  const Obstacles none;
+  const Obstacles& obstacles = options.cluster ? box.cluster : none;
+  std::vector<Particle> items = in_place ? particles : std::vector<Particle>{};
+  Swarm swarm = in_place ? Swarm(0) : swarm_of(particles, obstacles);
+  std::vector<ObstacleTally> tallies(static_cast<std::size_t>(obstacles.count()));
+  Random random(7);  // specular walls draw nothing; move() wants one anyway
+  RunResult result;
+  result.options = options;
+  const double energy = kinetic_energy(in_place ? items : contents(swarm));
+  const std::clock_t cpu_start = std::clock();
+  const auto start = std::chrono::steady_clock::now();
+  for (int step = 0; step < options.steps; ++step) {
+    if (in_place) {
+      for (Particle& p : items) result.tally.add(move(options.algorithm, domain, p, FreeDeck::kTimedDt, random));
+      continue;
+    }
+    if (options.sort_every > 0 && step % options.sort_every == 0) swarm.sort_by_cell(box.mesh.cell_count());
+    swarm.move_all(domain, obstacles, FreeDeck::kTimedDt, random, result.tally, tallies);
   }
-  return {};
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  const std::vector<Particle> end = in_place ? items : contents(swarm);
+  result.particles = static_cast<long long>(end.size());
+  result.bytes_per_particle = static_cast<double>(in_place ? sizeof(Particle) : swarm.bytes_per_particle());
+  for (const Particle& p : end) {
+    result.lost += is_lost(domain, p);
+    result.outside += outside(box.mesh, p.cell, p.x).depth > domain.tolerance;
+  }
+  result.energy_drift = std::abs(kinetic_energy(end) - energy) / energy;
+  for (const ObstacleTally& t : tallies) result.obstacle_hits += t.hits;
+  return result;
 }
 
-std::string label(Storage storage) { return storage == Storage::particle ? "Particle (double v)" : "compact (float v)"; }
+std::string label(const RunOptions& options) {
+  if (options.storage == Storage::particle) return "Particle";
+  return std::string("Swarm") + (options.cluster ? " + cluster" : "");
+}
 
 }  // namespace cosim::bench

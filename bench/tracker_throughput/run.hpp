@@ -7,13 +7,17 @@
 
 namespace cosim::bench {
 
-enum class Storage { particle, compact };
+// particle: a vector of tracker::Particle (56 bytes), moved in place by any algorithm;
+// swarm: the program's tracker::Swarm (40-byte records with float velocities, plus a state
+// per obstacle), event-driven, sorted by cell every `sort_every` steps.
+enum class Storage { particle, swarm };
 
 struct RunOptions {
   tracker::Algorithm algorithm = tracker::Algorithm::event_driven;
   Storage storage = Storage::particle;
   int steps = 100;     // timed, at FreeDeck::kTimedDt
-  int sort_every = 0;  // sort the particles by cell every this many steps (0: never)
+  int sort_every = 0;  // swarm: sort the particles by cell every this many steps (0: never)
+  bool cluster = false;  // swarm: among the sphere cluster (FreeBox::cluster)
 };
 
 struct RunResult {
@@ -22,11 +26,12 @@ struct RunResult {
   double seconds = 0.0;          // wall time of the timed steps (steady_clock), sorting included
   double cpu_seconds = 0.0;      // the process's CPU time over the same steps (std::clock): on a
                                  // shared machine, the figure that does not count waiting
-  double bytes_per_particle = 0; // the stored record, plus the sort's scratch copy if sorting
+  double bytes_per_particle = 0; // the stored record and states (a sort allocates a second copy while it runs)
   tracker::MoveTally tally;      // the timed steps
   long long lost = 0;            // is_lost at the end
   long long outside = 0;         // outside their cell by more than the tolerance at the end
   double energy_drift = 0.0;     // |E_end - E_start| / E_start over the timed steps
+  long long obstacle_hits = 0;   // reflections off the cluster
 
   double moves_per_second() const { return static_cast<double>(tally.moves) / seconds; }
   double moves_per_cpu_second() const { return static_cast<double>(tally.moves) / cpu_seconds; }
@@ -35,6 +40,6 @@ struct RunResult {
 // Times `options.steps` steps of the (already unsorted) particles; a copy is moved.
 RunResult run(const FreeBox& box, const std::vector<tracker::Particle>& particles, const RunOptions& options);
 
-std::string label(Storage storage);
+std::string label(const RunOptions& options);
 
 }  // namespace cosim::bench

@@ -22,7 +22,8 @@ struct FaceEvent {
 // gap of a perturbed mesh) is where the algorithms differ: the event-driven rule clamps it
 // to dt = 0 (`clamp_behind`), the face-intersection baselines do not see it, which is how
 // they lose particles.
-FaceEvent first_exit(const Mesh& mesh, const Particle& particle, Index skip, bool clamp_behind);
+// Faces the particle cannot reach within `horizon` (the rest of its move) are not events.
+FaceEvent first_exit(const Mesh& mesh, const Particle& particle, Index skip, bool clamp_behind, double horizon);
 
 // The particle is on `face` of its cell: it enters the neighbour (periodic shift applied),
 // or the wall changes its velocity, or it leaves through an open patch.

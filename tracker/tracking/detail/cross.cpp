@@ -5,14 +5,18 @@
 
 namespace cosim::tracker::detail {
 
-FaceEvent first_exit(const Mesh& mesh, const Particle& p, Index skip, bool clamp_behind) {
+FaceEvent first_exit(const Mesh& mesh, const Particle& p, Index skip, bool clamp_behind, double horizon) {
   FaceEvent first{std::numeric_limits<double>::infinity(), -1};
   for (Index f = mesh.cell_faces[p.cell]; f < mesh.cell_faces[p.cell + 1]; ++f) {
     if (f == skip) continue;
     const Face& face = mesh.faces[f];
     const double rate = face.normal.dot(p.v);
     if (rate >= 0.0) continue;
-    double dt = face.normal.dot(p.x - face.point) / -rate;
+    const double depth = face.normal.dot(p.x - face.point);
+    // Still inside the plane at the horizon: no event, and no division (most moves end in
+    // their cell).
+    if (depth + rate * horizon >= 0.0) continue;
+    double dt = depth / -rate;
     if (dt < 0.0) {
       if (!clamp_behind) continue;
       dt = 0.0;

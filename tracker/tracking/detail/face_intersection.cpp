@@ -58,7 +58,7 @@ MoveResult move_face_intersection(const Domain& domain, Particle& p, double dt, 
       result.stalled = true;
       break;
     }
-    const FaceEvent hit = first_exit(domain.mesh, p, skip, false);
+    const FaceEvent hit = first_exit(domain.mesh, p, skip, false, remaining);
     if (hit.face < 0 || hit.dt >= remaining) {
       p.x += remaining * p.v;
       break;
