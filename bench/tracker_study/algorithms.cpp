@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "hard_moves.hpp"
+#include "flights.hpp"
 #include "parts.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/perturb.hpp"

@@ -3,9 +3,7 @@
 #include <fcntl.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cstring>
-#include <ctime>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -17,18 +15,10 @@
 #include "output/h5_handle.hpp"
 #include "output/h5_values.hpp"
 #include "output/run_series.hpp"
+#include "output/text.hpp"
 
 namespace cosim::output {
 namespace {
-
-std::string utc_now_iso8601() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
 
 // Runs f with HDF5's stack printing off and puts the file name on ObjectErrors, so every
 // message names both the file and the object.

@@ -1,6 +1,7 @@
 #include "output/xdmf.hpp"
 
-#include <charconv>
+#include "output/text.hpp"
+
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -9,31 +10,10 @@
 namespace cosim::output {
 namespace {
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-// The shortest text that reads back as the double that was written.
-std::string exact(double value) {
-  char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
-  return {text, end};
-}
-
 void data_item(std::ostream& out, const std::string& dims, const std::string& h5_file,
                const std::string& dataset, const char* indent) {
   out << indent << "<DataItem Dimensions=\"" << dims << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-      << escaped(h5_file + ":" + dataset) << "</DataItem>\n";
+      << xml_escaped(h5_file + ":" + dataset) << "</DataItem>\n";
 }
 
 void write_step(std::ostream& out, const std::string& h5_file, const XdmfSeries& s, const XdmfStep& step) {
@@ -41,7 +21,7 @@ void write_step(std::ostream& out, const std::string& h5_file, const XdmfSeries&
   // XDMF orders dimensions slowest first: z, y, x.
   const std::string nodes = std::to_string(n[2] + 1) + " " + std::to_string(n[1] + 1) + " " + std::to_string(n[0] + 1);
   const std::string cells = std::to_string(n[2]) + " " + std::to_string(n[1]) + " " + std::to_string(n[0]);
-  out << "      <Grid Name=\"" << escaped(step.group) << "\" GridType=\"Uniform\">\n"
+  out << "      <Grid Name=\"" << xml_escaped(step.group) << "\" GridType=\"Uniform\">\n"
       << "        <Time Value=\"" << exact(step.time) << "\"/>\n"
       << "        <Topology TopologyType=\"3DRectMesh\" Dimensions=\"" << nodes << "\"/>\n"
       << "        <Geometry GeometryType=\"VXVYVZ\">\n";
@@ -51,7 +31,7 @@ void write_step(std::ostream& out, const std::string& h5_file, const XdmfSeries&
   out << "        </Geometry>\n";
   for (const XdmfField& f : step.fields) {
     const bool vector = f.components > 1;
-    out << "        <Attribute Name=\"" << escaped(f.name) << "\" AttributeType=\"" << (vector ? "Vector" : "Scalar")
+    out << "        <Attribute Name=\"" << xml_escaped(f.name) << "\" AttributeType=\"" << (vector ? "Vector" : "Scalar")
         << "\" Center=\"Cell\">\n";
     data_item(out, vector ? cells + " " + std::to_string(f.components) : cells, h5_file, step.group + "/" + f.name,
               "          ");
@@ -68,7 +48,7 @@ std::string xdmf_document(const std::string& h5_file, const std::vector<XdmfSeri
       << "<Xdmf Version=\"3.0\">\n"
       << "  <Domain>\n";
   for (const XdmfSeries& s : series) {
-    out << "    <Grid Name=\"" << escaped(s.name) << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    out << "    <Grid Name=\"" << xml_escaped(s.name) << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (const XdmfStep& step : s.steps) write_step(out, h5_file, s, step);
     out << "    </Grid>\n";
   }

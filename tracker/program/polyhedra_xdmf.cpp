@@ -1,31 +1,13 @@
 #include "tracker/program/polyhedra_xdmf.hpp"
 
-#include <charconv>
 #include <sstream>
+
+#include "output/text.hpp"
 
 namespace cosim::tracker {
 namespace {
 
 constexpr std::int64_t kPolyhedron = 16;  // XDMF's type code in a Mixed topology
-
-std::string exact(double value) {  // the shortest text that reads back as the same double
-  char text[32];
-  return {text, std::to_chars(text, text + sizeof text, value).ptr};
-}
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string item(const std::string& dims, const char* type, const std::string& where) {
   return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type + "\" Precision=\"8\" Format=\"HDF\">" + where +
@@ -50,13 +32,13 @@ std::vector<std::int64_t> mixed_topology(const Mesh& mesh) {
 
 std::string polyhedra_xdmf(const std::string& h5_file, const PolyhedraSeries& s) {
   // The file name is the user's; group and field names are ours, without XML specials.
-  const std::string at = escaped(h5_file) + ":";
+  const std::string at = output::xml_escaped(h5_file) + ":";
   std::ostringstream out;
   out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n"
       << "    <Grid Name=\"" << s.name << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (const output::XdmfStep& step : s.steps) {
     out << "      <Grid Name=\"" << step.group << "\" GridType=\"Uniform\">\n"
-        << "        <Time Value=\"" << exact(step.time) << "\"/>\n"
+        << "        <Time Value=\"" << output::exact(step.time) << "\"/>\n"
         << "        <Topology TopologyType=\"Mixed\" NumberOfElements=\"" << s.cells << "\">\n          "
         << item(std::to_string(s.topology_size), "Int", at + s.mesh_group + "/topology") << "\n        </Topology>\n"
         << "        <Geometry GeometryType=\"XYZ\">\n          "

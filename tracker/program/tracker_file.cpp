@@ -2,15 +2,14 @@
 
 #include <hdf5.h>
 
-#include <chrono>
 #include <cstdio>
-#include <ctime>
 
 #include "cosim_git_hash.hpp"
 #include "output/h5_groups.hpp"
 #include "output/h5_handle.hpp"
 #include "output/h5_values.hpp"
 #include "output/series.hpp"
+#include "output/text.hpp"
 #include "output/xdmf.hpp"
 #include "tracker/program/polyhedra_xdmf.hpp"
 
@@ -29,15 +28,6 @@ std::vector<std::uint64_t> columns_of(const MoveTally& t) {
                          t.relocations,   t.cycles_broken, t.stalled,          t.removed,
                          t.lost,          t.object_events, t.primitive_tests};
   return {std::begin(v), std::end(v)};
-}
-
-std::string utc_now() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
 }
 
 // Zero-padded, so the step groups list in time order wherever names are sorted.
@@ -95,7 +85,7 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
       output::write_attribute(run.get(), "scene_file", scene.file.string());
       output::write_attribute(run.get(), "git_hash", std::string(COSIM_GIT_HASH));
       output::write_attribute(run.get(), "cosim_version", std::string(COSIM_VERSION));
-      output::write_attribute(run.get(), "started", utc_now());
+      output::write_attribute(run.get(), "started", output::utc_now_iso8601());
       output::write_attribute(run.get(), "participant_names", std::vector<std::string>{"tracker"});
       output::write_attribute(run.get(), "status", std::string("running"));
       output::write_attribute(run.get(), "wall_seconds", 0.0);

@@ -9,6 +9,8 @@
 #include "tracker/mesh/voronoi_mesh.hpp"
 #include "tracker/tracking/move.hpp"
 
+#include "hard_moves.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,51 +26,6 @@ int move_count() {
   return moves ? std::atoi(moves) : 100000;
 }
 
-Vec3 isotropic(Random& random) {
-  std::normal_distribution<double> gauss;
-  return Vec3(gauss(random), gauss(random), gauss(random)).normalized();
-}
-
-struct Start {
-  Particle particle;
-  double dt;
-};
-
-// The hard cases: a start on a vertex, on an edge or inside a face of a random cell (on
-// a perturbed mesh possibly just outside that cell, since its faces are not planar), and
-// a direction that is isotropic, aimed exactly at a vertex of the cell, or along the face
-// (towards one of its vertices). Unit speed; a flight of up to three cell widths.
-Start random_start(const Mesh& mesh, Random& random) {
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  const auto pick = [&](Index lo, Index end) { return std::uniform_int_distribution<Index>(lo, end - 1)(random); };
-  const Index cell = pick(0, mesh.cell_count());
-  const Index face = pick(mesh.cell_faces[cell], mesh.cell_faces[cell + 1]);
-  const Index n = mesh.vertex_count(face), k = pick(0, n);
-  const Vec3 &a = mesh.face_vertex(face, k), &b = mesh.face_vertex(face, (k + 1) % n);
-  Vec3 x;
-  switch (pick(0, 3)) {
-    case 0: x = a; break;
-    case 1: x = a + uniform(random) * (b - a); break;
-    default: {
-      const double r1 = std::sqrt(uniform(random)), r2 = uniform(random);
-      const Vec3 middle = vertex_mean(mesh, face);
-      x = middle + r1 * ((1.0 - r2) * (a - middle) + r2 * (b - middle));
-    }
-  }
-  Vec3 target;
-  switch (pick(0, 3)) {
-    case 0: target = x + isotropic(random); break;
-    case 1: {
-      const Index g = pick(mesh.cell_faces[cell], mesh.cell_faces[cell + 1]);
-      target = mesh.face_vertex(g, pick(0, mesh.vertex_count(g)));
-      break;
-    }
-    default: target = mesh.face_vertex(face, pick(0, n));
-  }
-  if ((target - x).norm() < 1e-9) target = x + (b - a);  // along the edge
-  const double width = std::cbrt(mesh.volume[cell]);
-  return {{x, (target - x).normalized(), cell}, 3.0 * width * uniform(random)};
-}
 
 bool in_unit_box(const Vec3& x, double tolerance) {
   return (x.array() >= -tolerance).all() && (x.array() <= 1.0 + tolerance).all();
@@ -78,12 +35,12 @@ void expect_none_lost(const std::string& label, const Mesh& mesh, bool walled) {
   const Boundaries walls{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 0.0};
   const Domain domain(mesh, walls);
   Random random(99);
-  std::vector<Start> starts;
-  for (int i = move_count(); i > 0; --i) starts.push_back(random_start(mesh, random));
+  std::vector<testing::Flight> starts;
+  for (int i = move_count(); i > 0; --i) starts.push_back(testing::hard_move(mesh, random));
   for (Algorithm algorithm : {Algorithm::event_driven, Algorithm::stollmeier, Algorithm::haselbacher}) {
     MoveTally tally;
     int escaped = 0, in_gap = 0;
-    for (Start start : starts) {
+    for (testing::Flight start : starts) {
       const MoveResult result = move(algorithm, domain, start.particle, start.dt, random);
       tally.add(result);
       escaped += walled && !in_unit_box(start.particle.x, domain.tolerance);

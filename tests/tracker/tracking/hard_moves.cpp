@@ -4,18 +4,13 @@
 
 #include <cmath>
 
-namespace cosim::bench {
-
-using namespace cosim::tracker;
-
-namespace {
+namespace cosim::tracker::testing {
 
 Vec3 isotropic(Random& random) {
   std::normal_distribution<double> gauss;
   return Vec3(gauss(random), gauss(random), gauss(random)).normalized();
 }
 
-// As random_start in the robustness test, draw for draw.
 Flight hard_move(const Mesh& mesh, Random& random) {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   const auto pick = [&](Index lo, Index end) { return std::uniform_int_distribution<Index>(lo, end - 1)(random); };
@@ -48,23 +43,4 @@ Flight hard_move(const Mesh& mesh, Random& random) {
   return {{x, (target - x).normalized(), cell}, 3.0 * width * uniform(random)};
 }
 
-}  // namespace
-
-std::vector<Flight> hard_moves(const Mesh& mesh, int count, Random& random) {
-  std::vector<Flight> flights;
-  for (int i = 0; i < count; ++i) flights.push_back(hard_move(mesh, random));
-  return flights;
-}
-
-std::vector<Flight> traversals(const Domain& domain, int count, double length, Random& random) {
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  std::vector<Flight> flights;
-  while (static_cast<int>(flights.size()) < count) {
-    const Vec3 x(uniform(random), uniform(random), uniform(random));
-    const Index cell = domain.locator.locate(x);
-    if (cell >= 0) flights.push_back({{x, isotropic(random), cell}, length});
-  }
-  return flights;
-}
-
-}  // namespace cosim::bench
+}  // namespace cosim::tracker::testing

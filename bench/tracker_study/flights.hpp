@@ -1,19 +1,15 @@
 #pragma once
-// The adversarial moves of tests/tracker/tracking/robustness_test.cpp: a start on a vertex,
-// an edge or inside a face of a random cell (on a perturbed mesh often just outside that
-// cell), running isotropically, exactly at a vertex of the cell, or along the face, for up to
-// three cell widths at unit speed.
+// The flights of the algorithms part: the robustness test's adversarial moves
+// (tests/tracker/tracking/hard_moves.hpp), and straight traversals for timing.
 
+#include "hard_moves.hpp"  // tests/tracker/tracking (cosim_tracking_hard_moves)
 #include "tracker/tracking/move.hpp"
 
 #include <vector>
 
 namespace cosim::bench {
 
-struct Flight {
-  tracker::Particle particle;
-  double dt;
-};
+using Flight = tracker::testing::Flight;
 
 std::vector<Flight> hard_moves(const tracker::Mesh& mesh, int count, tracker::Random& random);
 

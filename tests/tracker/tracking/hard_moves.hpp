@@ -1,0 +1,20 @@
+#pragma once
+// The adversarial moves of the robustness test, shared with bench/tracker_study: a start
+// on a vertex, on an edge or inside a face of a random cell (on a perturbed mesh possibly
+// just outside that cell, since its faces are not planar), and a direction that is
+// isotropic, aimed exactly at a vertex of the cell, or along the face (towards one of its
+// vertices). Unit speed; a flight of up to three cell widths.
+
+#include "tracker/tracking/particle.hpp"
+
+namespace cosim::tracker::testing {
+
+struct Flight {
+  Particle particle;
+  double dt;
+};
+
+Flight hard_move(const Mesh& mesh, Random& random);
+Vec3 isotropic(Random& random);
+
+}  // namespace cosim::tracker::testing
