@@ -50,7 +50,14 @@ class CellCheck {
       const Vec3 a = area_vector(mesh_, f);
       sum += a;
       area += a.norm();
-      if (a.norm() <= tolerance_ * size_) report(true, Defect::degenerate, f, "face has zero area");
+      // Zero area within the length tolerance: the face is no wider than the tolerance
+      // across its longest chord (area <= tolerance * diameter / 2; a triangle's height
+      // over that chord). Comparing the area with tolerance * cell size instead would
+      // reject genuine small faces of 1e-5 of the cell (random Voronoi points have them).
+      const double chord = diameter(f);
+      if (2.0 * a.norm() <= tolerance_ * chord)
+        report(true, Defect::degenerate, f,
+               "face has zero area (width " + str(chord > 0.0 ? 2.0 * a.norm() / chord : 0.0) + ")");
     }
     if (sum.norm() > relative_tolerance * area)
       report(true, Defect::open_cell, -1,
@@ -86,6 +93,15 @@ class CellCheck {
     const Face& face = mesh_.faces[f];
     if (face.normal.dot(mesh_.centroid[cell_] - face.point) <= 0.0)
       report(true, Defect::inverted_face, f, "normal points out of the cell");
+  }
+
+  double diameter(Index f) const {
+    double longest = 0.0;
+    const Index n = mesh_.vertex_count(f);
+    for (Index i = 0; i < n; ++i)
+      for (Index j = i + 1; j < n; ++j)
+        longest = std::max(longest, (mesh_.face_vertex(f, i) - mesh_.face_vertex(f, j)).norm());
+    return longest;
   }
 
   double off_plane(Index f, const Vec3& x) const {

@@ -10,7 +10,7 @@ namespace cosim::tracker {
 
 enum class Defect {
   open_cell,             // outward area vectors do not sum to zero
-  degenerate,            // zero-area face or non-positive volume
+  degenerate,            // zero-area face (no wider than the tolerance) or non-positive volume
   missing_twin,          // the neighbour has no face back, or an index is out of range
   normals_not_opposite,  // the two sides of a face do not see opposite normals
   inverted_face,         // the normal points out of the cell

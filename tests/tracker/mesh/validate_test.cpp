@@ -37,6 +37,36 @@ Polyhedra two_cubes(bool drop_shared_face) {
   return poly;
 }
 
+// The unit cube with corner (1, 1, 1) cut off by a triangle of legs `cut` (face 6).
+Polyhedra cut_cube(double cut) {
+  Polyhedra poly;
+  poly.source = "cut cube";
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) poly.vertices.emplace_back(i, j, k);
+  poly.vertices[7] = Vec3(1.0 - cut, 1.0, 1.0);  // a
+  poly.vertices.emplace_back(1.0, 1.0 - cut, 1.0);  // b = 8
+  poly.vertices.emplace_back(1.0, 1.0, 1.0 - cut);  // c = 9
+  poly.add_face({0, 4, 6, 2});  // x = 0
+  poly.add_face({1, 3, 9, 8, 5});  // x = 1
+  poly.add_face({0, 1, 5, 4});  // y = 0
+  poly.add_face({2, 6, 7, 9, 3});  // y = 1
+  poly.add_face({0, 2, 3, 1});  // z = 0
+  poly.add_face({4, 5, 8, 7, 6});  // z = 1
+  poly.add_face({8, 9, 7});  // the cut
+  poly.end_cell();
+  return poly;
+}
+
+// Zero area means no wider than the length tolerance (1e-9 of the cell): a small face
+// far above round-off, 1e-6 of the cell across, is valid; one of 1e-13 is not.
+TEST(Validate, SmallFaceIsValidAndRoundOffFaceIsNot) {
+  const auto small = validate(assemble(cut_cube(1e-6)));
+  EXPECT_FALSE(has_errors(small)) << describe(small);
+  const auto tiny = validate(assemble(cut_cube(1e-13)));
+  EXPECT_TRUE(reports(tiny, Defect::degenerate, 0, 6)) << describe(tiny);
+}
+
 TEST(Validate, CleanMeshHasNoProblems) {
   EXPECT_TRUE(validate(assemble(two_cubes(false))).empty());
 }

@@ -11,11 +11,9 @@ Vec3 isotropic(Random& random) {
   return Vec3(gauss(random), gauss(random), gauss(random)).normalized();
 }
 
-Flight hard_move(const Mesh& mesh, Random& random) {
+Flight hard_move(const Mesh& mesh, Random& random, Index cell, Index face) {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   const auto pick = [&](Index lo, Index end) { return std::uniform_int_distribution<Index>(lo, end - 1)(random); };
-  const Index cell = pick(0, mesh.cell_count());
-  const Index face = pick(mesh.cell_faces[cell], mesh.cell_faces[cell + 1]);
   const Index n = mesh.vertex_count(face), k = pick(0, n);
   const Vec3 &a = mesh.face_vertex(face, k), &b = mesh.face_vertex(face, (k + 1) % n);
   Vec3 x;
@@ -41,6 +39,12 @@ Flight hard_move(const Mesh& mesh, Random& random) {
   if ((target - x).norm() < 1e-9) target = x + (b - a);  // along the edge
   const double width = std::cbrt(mesh.volume[cell]);
   return {{x, (target - x).normalized(), cell}, 3.0 * width * uniform(random)};
+}
+
+Flight hard_move(const Mesh& mesh, Random& random) {
+  const auto pick = [&](Index lo, Index end) { return std::uniform_int_distribution<Index>(lo, end - 1)(random); };
+  const Index cell = pick(0, mesh.cell_count());
+  return hard_move(mesh, random, cell, pick(mesh.cell_faces[cell], mesh.cell_faces[cell + 1]));
 }
 
 }  // namespace cosim::tracker::testing

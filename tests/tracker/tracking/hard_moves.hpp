@@ -15,6 +15,8 @@ struct Flight {
 };
 
 Flight hard_move(const Mesh& mesh, Random& random);
+// The same from a given face of a given cell.
+Flight hard_move(const Mesh& mesh, Random& random, Index cell, Index face);
 Vec3 isotropic(Random& random);
 
 }  // namespace cosim::tracker::testing

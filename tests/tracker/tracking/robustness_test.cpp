@@ -26,7 +26,6 @@ int move_count() {
   return moves ? std::atoi(moves) : 100000;
 }
 
-
 bool in_unit_box(const Vec3& x, double tolerance) {
   return (x.array() >= -tolerance).all() && (x.array() <= 1.0 + tolerance).all();
 }
@@ -93,6 +92,47 @@ TEST(NoParticleLost, PerturbedVoronoi) {
 TEST(NoParticleLost, PerturbedPeriodicVoronoi) {
   const Mesh voronoi = voronoi_mesh(random_points(200, 6), {.periodic = {true, true, true}});
   expect_none_lost("perturbed periodic voronoi", perturbed(voronoi, {.fraction = 0.05, .seed = 6}), false);
+}
+
+// 20,000 random points give a few dozen faces some 1e-5 of their cells across (nearly
+// co-spherical quadruples). Unperturbed, starting half the moves on those faces (their
+// vertices, edges, inside, aimed at vertices or along the face), half anywhere.
+TEST(NoParticleLost, VoronoiWithTinyFaces) {
+  for (const bool periodic : {false, true}) {
+    const Mesh mesh = voronoi_mesh(random_points(20000, periodic ? 8 : 7), {.periodic = {periodic, periodic, periodic}});
+    std::vector<Index> small;
+    for (Index c = 0; c < mesh.cell_count(); ++c) {
+      const double size = cell_box(mesh, c).diagonal().norm();
+      for (Index f = mesh.cell_faces[c]; f < mesh.cell_faces[c + 1]; ++f)
+        if (area_vector(mesh, f).norm() <= 1e-9 * size * size) small.push_back(f);
+    }
+    ASSERT_GT(small.size(), 5u);
+    const Boundaries walls{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 0.0};
+    const Domain domain(mesh, walls);
+    Random random(42);
+    std::vector<testing::Flight> starts;
+    for (int i = 0; i < 20000; ++i) {
+      const Index f = small[std::uniform_int_distribution<std::size_t>(0, small.size() - 1)(random)];
+      starts.push_back(testing::hard_move(mesh, random, mesh.cell_of_face(f), f));
+      starts.push_back(testing::hard_move(mesh, random));
+    }
+    const std::string label = periodic ? "periodic voronoi, tiny faces" : "voronoi, tiny faces";
+    for (Algorithm algorithm : {Algorithm::event_driven, Algorithm::stollmeier, Algorithm::haselbacher}) {
+      MoveTally tally;
+      int escaped = 0;
+      for (testing::Flight start : starts) {
+        tally.add(move(algorithm, domain, start.particle, start.dt, random));
+        escaped += !periodic && !in_unit_box(start.particle.x, domain.tolerance);
+      }
+      std::printf("%-28s %-12s escaped %d, %s\n", label.c_str(), std::string(name(algorithm)).c_str(), escaped,
+                  summary(tally).c_str());
+      if (algorithm == Algorithm::event_driven) {
+        EXPECT_EQ(tally.lost, 0) << label;
+        EXPECT_EQ(escaped, 0) << label;
+        EXPECT_LT(tally.stalled, tally.moves / 200) << label;
+      }
+    }
+  }
 }
 
 }  // namespace
