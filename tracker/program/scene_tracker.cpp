@@ -31,6 +31,12 @@ TrackerScene read_tracker(const scene::Scene& scene) {
     } catch (const std::invalid_argument& e) {
       options.fail("obstacles", e.what());
     }
+    // An object whose surface meets no cell does nothing: most likely given in other units
+    // or outside the domain.
+    for (int i = 0; i < t.obstacles.count(); ++i)
+      if (t.obstacles.cells(i).stats().max_primitives == 0)
+        options.fail("obstacles", "obstacle '" + t.obstacles.object(i).name +
+                                      "': its surface meets no cell of the mesh (outside the domain, or in other units?)");
   }
   options.finish();
   return t;

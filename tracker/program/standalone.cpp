@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "tracker/program/progress.hpp"
 #include "tracker/program/scene_tracker.hpp"
@@ -46,6 +47,9 @@ class CellCounts {
 RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) {
   const auto started = clock::now();
   const TrackerScene t = read_tracker(scene);
+  if (!scene.bodies.empty())
+    std::fprintf(stderr, "cosim-tracker: warning: --standalone ignores the scene's %zu bodies (obstacles are the "
+                         "tracker's own; bodies move them in coupled runs)\n", scene.bodies.size());
   const Mesh& mesh = *t.mesh;
   const auto objects = static_cast<std::size_t>(t.obstacles.count());
 

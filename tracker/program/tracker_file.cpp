@@ -64,7 +64,7 @@ struct TrackerFile::Impl {
   Handle file;
   std::size_t objects = 0;
   std::vector<Series> rows;     // step, time, particles, moves
-  std::vector<Series> tallies;  // hits, absorbed, entered, left, impulse
+  std::vector<Series> tallies;  // hits, absorbed, entered, left, released, impulse
   std::vector<double> volume;  // per cell, for the density
   PolyhedraSeries sidecar;
 };
@@ -119,7 +119,7 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
     output::write_attribute(objects.get(), "names", object_names);
     // A dataset needs at least one column: with no objects the tallies are not written.
     if (m.objects > 0) {
-      for (const char* name : {"hits", "absorbed", "entered", "left"})
+      for (const char* name : {"hits", "absorbed", "entered", "left", "released"})
         m.tallies.push_back(Series::create(objects.get(), name, m.objects, H5T_NATIVE_UINT64));
       m.tallies.push_back(Series::create(objects.get(), "impulse", 3 * m.objects, H5T_NATIVE_DOUBLE));
     }
@@ -154,15 +154,15 @@ void TrackerFile::write(const Sample& s) {
     m.rows[2].append(&s.particles);
     m.rows[3].append(columns_of(s.moves).data());
     if (m.objects > 0) {
-      std::vector<std::vector<std::uint64_t>> counts(4);
+      std::vector<std::vector<std::uint64_t>> counts(5);
       std::vector<double> impulse;
       for (const ObstacleTally& t : s.objects) {
-        const long long v[] = {t.hits, t.absorbed, t.entered, t.left};
-        for (std::size_t k = 0; k < 4; ++k) counts[k].push_back(static_cast<std::uint64_t>(v[k]));
+        const long long v[] = {t.hits, t.absorbed, t.entered, t.left, t.released};
+        for (std::size_t k = 0; k < counts.size(); ++k) counts[k].push_back(static_cast<std::uint64_t>(v[k]));
         impulse.insert(impulse.end(), {t.impulse.x(), t.impulse.y(), t.impulse.z()});
       }
-      for (std::size_t k = 0; k < 4; ++k) m.tallies[k].append(counts[k].data());
-      m.tallies[4].append(impulse.data());
+      for (std::size_t k = 0; k < counts.size(); ++k) m.tallies[k].append(counts[k].data());
+      m.tallies.back().append(impulse.data());
     }
     output::flush(file);
   });

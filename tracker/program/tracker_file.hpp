@@ -11,8 +11,9 @@
 //   /tracker/                 one row per written step: step (uint64), time, particles
 //                             (uint64), moves (11 columns, attr columns: the MoveTally
 //                             totals since the start)
-//   /tracker/objects/         attr names; hits, absorbed, entered, left (rows x objects,
-//                             uint64, totals since the start), impulse (rows x 3 objects:
+//   /tracker/objects/         attr names; hits, absorbed, entered, left, released (rows x
+//                             objects, uint64, totals since the start; released: states
+//                             found inside a wall and repaired, 0 in a sound run), impulse (rows x 3 objects:
 //                             x y z per object, per unit particle mass, m/s)
 // The sidecar <file>.xmf is rewritten after every write, once the file is flushed.
 #pragma once

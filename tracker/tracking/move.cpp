@@ -29,6 +29,11 @@ MoveResult move(Algorithm algorithm, const Domain& domain, Particle& particle, d
 
 MoveResult move(const Domain& domain, const Obstacles& obstacles, Particle& particle, std::span<csg::State> states,
                 double dt, Random& random, std::span<ObstacleTally> tallies) {
+  if (states.size() != static_cast<std::size_t>(obstacles.count()) ||
+      tallies.size() != static_cast<std::size_t>(obstacles.count()))
+    throw std::invalid_argument("move: " + std::to_string(obstacles.count()) + " obstacles but " +
+                                std::to_string(states.size()) + " states and " + std::to_string(tallies.size()) +
+                                " tallies");
   if (obstacles.emits() && !(domain.boundaries.mass > 0.0))
     throw std::invalid_argument("an obstacle re-emits particles but the particle mass is not positive");
   return detail::move_event_driven(domain, particle, dt, random, {&obstacles, states, tallies});

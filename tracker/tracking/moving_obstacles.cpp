@@ -5,6 +5,8 @@
 #include "tracker/tracking/domain.hpp"
 #include "tracker/tracking/swarm.hpp"
 
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace cosim::tracker {
@@ -12,9 +14,10 @@ namespace {
 
 // A particle the wall overran: put just outside the surface where it met the particle, in
 // the cell there, and reflected off the wall moving with velocity u (the wall's condition
-// acts on the velocity relative to the wall). False if that point is in no cell.
+// acts on the velocity relative to the wall). False if that point is in no cell or the wall
+// absorbs it.
 bool put_back(const Obstacles& obstacles, int o, const Domain& domain, const Vec3& at, const Vec3& n, const Vec3& u,
-              Particle& p, std::span<csg::State> states, Random& random) {
+              Particle& p, std::span<csg::State> states, Random& random, ObstacleTally& tally) {
   const Vec3 x = at + 10.0 * domain.tolerance * n;
   const Index cell = domain.locator.locate(x);
   if (cell < 0) return false;
@@ -22,22 +25,31 @@ bool put_back(const Obstacles& obstacles, int o, const Domain& domain, const Vec
   p.cell = cell;
   obstacles.classify(cell, x, states);
   Vec3 relative = p.v - u;
-  if (relative.dot(n) < 0.0 &&
-      !hit_wall(obstacles.object(o).wall, domain.boundaries.mass, n, relative, random))
-    return false;  // an open wall absorbs
+  if (relative.dot(n) >= 0.0) return true;  // already leaving the wall faster than it comes
+  ++tally.hits;
+  const Vec3 before = p.v;
+  if (!hit_wall(obstacles.object(o).wall, domain.boundaries.mass, n, relative, random)) return false;
   p.v = u + relative;
+  tally.impulse += before - p.v;
   return true;
 }
 
 }  // namespace
 
 long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const Domain& domain, Swarm& swarm,
-                         Random& random) {
+                         Random& random, ObstacleTally& tally) {
+  if (!(dt > 0.0)) throw std::invalid_argument("obstacle '" + object(o).name + "': set_pose needs a time dt > 0");
+  if (swarm.objects() != count())
+    throw std::invalid_argument("set_pose: the swarm carries " + std::to_string(swarm.objects()) + " states, " +
+                                std::to_string(count()) + " obstacles");
   const auto i = static_cast<std::size_t>(o);
+  // The new registration first: if it throws (too many primitives in a cell), nothing changed.
+  csg::Tree placed = objects_[i].shape;
+  for (csg::Primitive& primitive : placed.primitives()) primitive.place(pose);
+  CellObject moved(*bounding_, placed);
   const Eigen::Isometry3d old_pose = poses_[i];
-  const CellObject old = std::move(cells_[i]);
-  for (csg::Primitive& primitive : objects_[i].shape.primitives()) primitive.place(pose);
-  cells_[i] = CellObject(*bounding_, objects_[i].shape);
+  const CellObject old = std::exchange(cells_[i], std::move(moved));
+  objects_[i].shape = std::move(placed);
   poses_[i] = pose;
   find_active();
 
@@ -45,32 +57,39 @@ long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const 
   // particle is old_pose * pose^-1 * x - x in the old world frame.
   const Eigen::Isometry3d back = old_pose * pose.inverse();
   const Eigen::Isometry3d forward = pose * old_pose.inverse();
+  const bool wall = !objects_[i].permeable;
   long overrun = 0;
   std::vector<bool> removed(swarm.size(), false);
+  const auto remove = [&](std::size_t k) {
+    removed[k] = true;
+    ++tally.absorbed;
+  };
   for (std::size_t k = 0; k < swarm.size(); ++k) {
     Particle p = swarm.particle(k);
     const std::span<csg::State> states = swarm.states(k);
     const Index b = bounding_cell(p.cell);
     const std::span<const int> before = old.primitives(b);
-    if (before.empty() && cells_[i].primitives(b).empty()) {
-      // Constant here before and after; a wall that now fills the cell moved more than a
-      // cell in one call and overran the particle with nowhere known to put it.
-      if (!objects_[i].permeable && cells_[i].tree(b).evaluate(0)) {
-        ++overrun;
-        removed[k] = true;
-      }
-      continue;
-    }
     csg::Swept swept{states[i]};
     if (!before.empty()) swept = csg::sweep(old.tree(b), states[i], p.x, back * p.x - p.x);
     states[i] = cells_[i].carry(before, swept.state, b, p.x);
-    if (objects_[i].permeable || !swept.overrun) continue;
+    if (!wall) continue;
+    if (!swept.overrun) {
+      // Inside the moved wall with no entry seen: its surface came from beyond the old
+      // cell's primitives (a move of more than a cell). Nowhere known to put the particle.
+      if (cells_[i].tree(b).evaluate(states[i])) remove(k);
+      continue;
+    }
     ++overrun;
+    ++tally.overrun;
     // Where the surface met the particle, now: that material point at the new pose.
     const Vec3 met = forward * (p.x + swept.at * (back * p.x - p.x));
     const Vec3 n = forward.linear() * swept.normal;
     const Vec3 u = (met - back * met) / dt;
-    if (!put_back(*this, o, domain, met, n, u, p, states, random)) removed[k] = true;
+    const Vec3 v = p.v;
+    if (!put_back(*this, o, domain, met, n, u, p, states, random, tally)) {
+      tally.impulse += v;
+      remove(k);
+    }
     swarm.set(k, p);
   }
   swarm.remove_if([&](std::size_t k) { return removed[k]; });

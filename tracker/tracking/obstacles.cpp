@@ -1,15 +1,49 @@
 #include "tracker/tracking/obstacles.hpp"
 
+#include "tracker/mesh/geometry.hpp"
+
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
 namespace cosim::tracker {
+namespace {
+
+// A wall or zone must look the same from both sides of every periodic link (its images
+// given), since a crossing re-evaluates the states on the far side: compared at each linked
+// face's vertices and centre, skipping points within round-off of a primitive's surface.
+void require_periodic(const Mesh& mesh, const Obstacle& object) {
+  const auto clear = [&](const Vec3& x) {
+    for (const csg::Primitive& p : object.shape.primitives())
+      if (std::abs(p.indicator(x)) < 1e-9) return false;
+    return true;
+  };
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    const Face& face = mesh.faces[f];
+    if (face.neighbour < 0 || face.shift == 0) continue;
+    std::vector<Vec3> points{vertex_mean(mesh, f)};
+    for (Index k = 0; k < mesh.vertex_count(f); ++k) points.push_back(mesh.face_vertex(f, k));
+    for (const Vec3& x : points) {
+      const Vec3 image = x + mesh.shifts[face.shift];
+      if (!clear(x) || !clear(image) || object.shape.contains(x) == object.shape.contains(image)) continue;
+      std::ostringstream where;
+      where << x.transpose() << " and its periodic image " << image.transpose();
+      throw std::invalid_argument("obstacle '" + object.name + "' differs at " + where.str() +
+                                  ": across a periodic link, give the shape's images on both sides");
+    }
+  }
+}
+
+}  // namespace
 
 void ObstacleTally::add(const ObstacleTally& other) {
   hits += other.hits;
   absorbed += other.absorbed;
   entered += other.entered;
   left += other.left;
+  released += other.released;
+  overrun += other.overrun;
   impulse += other.impulse;
 }
 
@@ -27,6 +61,7 @@ Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const 
       throw std::invalid_argument("obstacle '" + object.name + "': a wall cannot be periodic");
     if (!object.permeable && re_emits(object.wall) && !(object.wall.temperature > 0.0))
       throw std::invalid_argument("obstacle '" + object.name + "': a re-emitting wall needs a positive temperature");
+    require_periodic(tracking, object);
     cells_.emplace_back(bounding, object.shape);
     poses_.push_back(Eigen::Isometry3d::Identity());
   }

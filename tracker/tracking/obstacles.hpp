@@ -30,6 +30,9 @@ struct ObstacleTally {
   long long absorbed = 0;   // removed at an open wall
   long long entered = 0;    // into a permeable zone
   long long left = 0;       // out of a permeable zone
+  long long released = 0;   // found inside a wall by their state and let out at its surface:
+                            // a repaired state, 0 unless something went wrong
+  long long overrun = 0;    // put back in front of a moving wall (Obstacles::set_pose)
   Vec3 impulse = Vec3::Zero();  // sum of (v_before - v_after) at hits: the momentum given
                                 // to the object per unit particle mass
   void add(const ObstacleTally& other);
@@ -46,6 +49,9 @@ class Obstacles {
   Obstacles(const Mesh& tracking, std::vector<Obstacle> objects);
   Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const Mesh& bounding,
             std::vector<Index> bounding_cell);
+  // The bounding mesh is kept by reference: a temporary would dangle.
+  Obstacles(Mesh&&, std::vector<Obstacle>) = delete;
+  Obstacles(const Mesh&, std::vector<Obstacle>, Mesh&&, std::vector<Index>) = delete;
 
   int count() const { return static_cast<int>(objects_.size()); }
   bool empty() const { return objects_.empty(); }
@@ -73,14 +79,17 @@ class Obstacles {
   void transfer(Index from, Index to, const Vec3& x, bool shifted, std::span<csg::State> states) const;
 
   // Moves object i rigidly to `pose` (world from the frame its shape was given in) over the
-  // time dt, between tracking steps: it is registered anew, and every particle's state for
-  // it follows the motion relative to the object by the events of csg::sweep, so states
-  // stay exact close to the surface. The object should move less than a cell per call (the
-  // ring of the registration then holds every primitive a particle's relative path can
-  // cross). A wall that overruns a particle puts it back just outside where the surface met
-  // it (1e-9 of the mesh size off the surface, where direct evaluation is safe) and reflects
-  // it off the moving wall by the wall's condition; returns how many it overran.
-  long set_pose(int i, const Eigen::Isometry3d& pose, double dt, const Domain& domain, Swarm& swarm, Random& random);
+  // time dt > 0, between tracking steps: it is registered anew, and every particle's state
+  // for it follows the motion relative to the object by the events of csg::sweep, so states
+  // stay exact close to the surface. The object should move less than a cell per call. A
+  // wall that overruns a particle puts it back just outside where the surface met it (10
+  // tolerances off the surface, where direct evaluation is safe) and reflects it off the
+  // moving wall by the wall's condition (`tally`: overrun, hits, impulse; absorbed and
+  // removed if the wall is open or the point is in no cell). A particle found inside the
+  // moved wall with no known entry (the surface came from beyond the cell's ring, a move of
+  // more than a cell) is removed and counted as absorbed. Returns how many were overrun.
+  long set_pose(int i, const Eigen::Isometry3d& pose, double dt, const Domain& domain, Swarm& swarm, Random& random,
+                ObstacleTally& tally);
   const Eigen::Isometry3d& pose(int i) const { return poses_[static_cast<std::size_t>(i)]; }
 
  private:

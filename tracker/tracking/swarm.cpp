@@ -1,10 +1,15 @@
 #include "tracker/tracking/swarm.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace cosim::tracker {
 
 void Swarm::add(const Particle& particle, std::span<const csg::State> states) {
+  if (states.size() != static_cast<std::size_t>(objects_))
+    throw std::invalid_argument("Swarm::add: " + std::to_string(states.size()) + " states for " +
+                                std::to_string(objects_) + " obstacles");
   particles_.emplace_back();
   set(particles_.size() - 1, particle);
   states_.insert(states_.end(), states.begin(), states.end());

@@ -85,6 +85,9 @@ TEST(TrackerOptions, ObstacleMistakesNameTheKey) {
   EXPECT_ERROR(p + "        - {name: a, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: -1}}}\n",
                "obstacles[0].shape.ball.radius = -1");
   EXPECT_ERROR(p + "        - {name: a, " + ball + ", permeable: maybe}\n", "obstacles[0].permeable = maybe");
+  // In millimetres in a metre-sized domain: far outside, and said so.
+  EXPECT_ERROR(p + "        - {name: far, shape: {ball: {centre: [500, 500, 500], radius: 200}}}\n",
+               "obstacle 'far': its surface meets no cell of the mesh");
 }
 
 TEST(TrackerOptions, ParticleMistakesNameTheKey) {

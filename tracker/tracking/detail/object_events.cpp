@@ -25,9 +25,17 @@ bool execute(const Carried& carried, double mass, Particle& p, const ObjectEvent
   ++result.object_events;
   const csg::Event& event = hit.event;
   csg::State& state = carried.states[hit.object];
+  ObstacleTally& tally = carried.tallies[hit.object];
+  if (event.reflects() && !event.into_object) {
+    // The state says the particle is inside the wall and leaving it: a state gone wrong
+    // (nothing enters a wall). Reflecting would keep it inside for ever; it goes out
+    // through the surface and the state follows. Counted, so runs can show it never happens.
+    state ^= csg::bit(event.primitive);
+    ++tally.released;
+    return true;
+  }
   state = csg::apply(state, event);
   if (!event.boundary) return true;
-  ObstacleTally& tally = carried.tallies[hit.object];
   if (event.permeable) {
     ++(event.into_object ? tally.entered : tally.left);
     return true;
