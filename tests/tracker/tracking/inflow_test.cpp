@@ -1,0 +1,124 @@
+// A Maxwellian stream through boundary faces: the inflow distribution inverted exactly, the
+// count and the mean normal speed against Bird's flux formulas, and a box open on every
+// side filling to the stream's density and temperature.
+
+#include "tracker/mesh/box_mesh.hpp"
+#include "tracker/tracking/inflow.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace cosim::tracker {
+namespace {
+
+constexpr double sqrt_pi = 1.7724538509055160273;
+
+TEST(Inflow, NormalSpeedInvertsTheFluxDistribution) {
+  // At rest: x = sqrt(-ln(1 - u)). Deep in the tail the inversion is conditioned by the
+  // density there (x e^(-x^2) ~ 4e-6 at u = 1 - 1e-6): 1e-10 absolute.
+  for (const double u : {1e-9, 0.1, 0.5, 0.9, 0.999999})
+    EXPECT_NEAR(inflow_normal_speed(0.0, u), std::sqrt(-std::log(1.0 - u)), 1e-10);
+  for (const double s : {-2.0, -0.5, 0.7, 3.0}) {
+    double previous = 0.0;
+    for (const double u : {0.01, 0.2, 0.5, 0.8, 0.99}) {
+      const double x = inflow_normal_speed(s, u);
+      const double cumulative = 0.5 * (std::exp(-s * s) - std::exp(-(x - s) * (x - s))) +
+                                0.5 * s * sqrt_pi * (std::erf(x - s) + std::erf(s));
+      EXPECT_NEAR(cumulative / (sqrt_pi * flux_factor(s)), u, 1e-12) << "s " << s;
+      EXPECT_GT(x, previous);
+      previous = x;
+    }
+  }
+}
+
+// Mean normal speed of the entering molecules, x^2 against x moments of x e^(-(x - s)^2).
+TEST(Inflow, MeanNormalSpeedIsTheFluxWeightedOne) {
+  Random random(1);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (const double s : {-1.0, 0.0, 0.8, 2.5}) {
+    const int n = 200000;
+    double sum = 0.0, square = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double x = inflow_normal_speed(s, uniform(random));
+      sum += x;
+      square += x * x;
+    }
+    const double mean = sum / n, sigma = std::sqrt(square / n - mean * mean) / std::sqrt(n);
+    const double second = 0.5 * s * std::exp(-s * s) + 0.25 * sqrt_pi * (1 + 2 * s * s) * (1 + std::erf(s));
+    const double expected = second / (sqrt_pi * flux_factor(s));
+    std::printf("inflow s = %4.1f: mean normal speed %.5f, flux-weighted %.5f (+- %.5f)\n", s, mean, expected, sigma);
+    EXPECT_NEAR(mean, expected, 4 * sigma);
+  }
+}
+
+// Units where the most probable speed is 1: mass 2 k_B, T = 1 K.
+Stream unit_stream(double density, const Vec3& velocity) {
+  return {.number_density = density, .velocity = velocity, .temperature = 1.0, .mass = 2.0 * boltzmann, .weight = 1.0};
+}
+
+Mesh unit_box(int cells) {
+  BoxSpec spec;
+  for (AxisSpacing& axis : spec.axes) axis.cells = cells;
+  return box_mesh(spec);
+}
+
+TEST(Inflow, CountMatchesBirdsFlux) {
+  const Mesh mesh = unit_box(3);
+  const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), 2.0 * boltzmann});
+  const double s = 0.8;
+  const Inflow inflow(mesh, {0}, unit_stream(1000.0, Vec3(s, 0.3, 0.0)));  // x_min, normal +x
+  EXPECT_NEAR(inflow.rate(), 1000.0 * flux_factor(s), 1e-9);  // unit area, c_mp = 1
+  const Obstacles none;
+  Random random(2);
+  Swarm swarm(0);
+  MoveTally moves;
+  long added = 0;
+  const int steps = 2000;
+  const double dt = 0.01;
+  for (int i = 0; i < steps; ++i) added += inflow.inject(domain, none, dt, random, swarm, moves, {});
+  const double expected = inflow.rate() * dt * steps;
+  // Random rounding per face and step: variance at most 1/4 each, 9 faces.
+  std::printf("inflow: %ld entered, expected %.1f\n", added, expected);
+  EXPECT_NEAR(added + moves.removed, expected, 4.0 * std::sqrt(0.25 * 9 * steps));
+  EXPECT_EQ(moves.lost, 0);
+}
+
+TEST(Inflow, OpenBoxFillsToTheStreamsDensityAndTemperature) {
+  const Mesh mesh = unit_box(4);
+  const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), 2.0 * boltzmann});
+  const Inflow inflow(mesh, {0, 1, 2, 3, 4, 5}, unit_stream(4000.0, Vec3::Zero()));
+  const Obstacles none;
+  Random random(3);
+  Swarm swarm(0);
+  MoveTally moves;
+  const double dt = 0.05;
+  double count = 0.0, energy = 0.0;
+  int samples = 0;
+  for (int step = 0; step < 300; ++step) {
+    swarm.move_all(domain, none, dt, random, moves, {});
+    inflow.inject(domain, none, dt, random, swarm, moves, {});
+    if (step < 100) continue;  // filling: a few transit times
+    count += static_cast<double>(swarm.size());
+    for (std::size_t i = 0; i < swarm.size(); ++i) energy += swarm.particle(i).v.squaredNorm();
+    ++samples;
+  }
+  const double mean = count / samples;
+  const double temperature = energy / count / 1.5;  // <v^2> = 3 k T / m = 1.5 in these units
+  std::printf("open box: %.1f simulators on average (stream: 4000), temperature %.4f (stream: 1); %s\n", mean,
+              temperature, summary(moves).c_str());
+  EXPECT_NEAR(mean / 4000.0, 1.0, 0.02);
+  EXPECT_NEAR(temperature, 1.0, 0.02);
+  EXPECT_EQ(moves.lost, 0);
+}
+
+TEST(Inflow, RefusesBadStreamsAndEmptyPatches) {
+  const Mesh mesh = unit_box(2);
+  EXPECT_THROW(Inflow(mesh, {0}, unit_stream(0.0, Vec3::Zero())), std::invalid_argument);
+  EXPECT_THROW(Inflow(mesh, {7}, unit_stream(1.0, Vec3::Zero())), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cosim::tracker
