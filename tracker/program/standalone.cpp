@@ -16,31 +16,12 @@ using clock = std::chrono::steady_clock;
 
 double seconds_since(clock::time_point t) { return std::chrono::duration<double>(clock::now() - t).count(); }
 
-// Particles per cell, summed over the steps since the last write for the time average.
-class CellCounts {
- public:
-  explicit CellCounts(Index cells) : now_(static_cast<std::size_t>(cells)), sum_(now_.size()) {}
-
-  void count(const Swarm& swarm) {
-    std::fill(now_.begin(), now_.end(), 0.0);
-    for (std::size_t i = 0; i < swarm.size(); ++i) now_[static_cast<std::size_t>(swarm.cell(i))] += 1.0;
-    for (std::size_t c = 0; c < now_.size(); ++c) sum_[c] += now_[c];
-    ++samples_;
-  }
-  const std::vector<double>& now() const { return now_; }
-  // The mean since the last call, which starts the next average.
-  std::vector<double> take_mean() {
-    std::vector<double> mean(sum_.size());
-    for (std::size_t c = 0; c < sum_.size(); ++c) mean[c] = sum_[c] / samples_;
-    std::fill(sum_.begin(), sum_.end(), 0.0);
-    samples_ = 0;
-    return mean;
-  }
-
- private:
-  std::vector<double> now_, sum_;
-  int samples_ = 0;
-};
+// Particles per cell at this step.
+std::vector<double> counts(const Swarm& swarm, Index cells) {
+  std::vector<double> count(static_cast<std::size_t>(cells), 0.0);
+  for (std::size_t i = 0; i < swarm.size(); ++i) count[static_cast<std::size_t>(swarm.cell(i))] += 1.0;
+  return count;
+}
 
 }  // namespace
 
@@ -67,28 +48,30 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
   summary.steps = static_cast<std::uint64_t>(std::llround(scene.time.end / t.dt));  // whole: scene validation
   summary.seeded = swarm.size();
   std::vector<ObstacleTally> tallies(objects);
-  CellCounts counts(mesh.cell_count());
+  CellSampler sampler(mesh);
   const int every = scene.output.fields_every;
+  // Simulators are molecules here (no weight before DSMC).
   const auto write = [&](std::uint64_t step) {
-    const std::vector<double> mean = counts.take_mean();
+    std::vector<CellMoments> moments;
+    for (Index c = 0; c < mesh.cell_count(); ++c) moments.push_back(sampler.moments(c, t.particles.mass, 1.0));
+    sampler.reset();
     file.write({.step = step,
                 .time = static_cast<double>(step) * t.dt,
                 .particles = swarm.size(),
-                .count = counts.now(),
-                .mean_count = mean,
+                .count = counts(swarm, mesh.cell_count()),
+                .moments = moments,
                 .objects = tallies,
                 .moves = summary.moves});
   };
-
   Progress progress(summary.steps, scene.time.end);
   try {
-    counts.count(swarm);
+    sampler.sample(swarm);
     write(0);
     for (std::uint64_t step = 1; step <= summary.steps; ++step) {
       // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
       swarm.sort_by_cell(mesh.cell_count());
       swarm.move_all(*t.domain, t.obstacles, t.dt, random, summary.moves, tallies);
-      counts.count(swarm);
+      sampler.sample(swarm);
       if ((every > 0 && step % static_cast<std::uint64_t>(every) == 0) || step == summary.steps) write(step);
       progress.update(step, static_cast<double>(step) * t.dt, swarm.size());
     }

@@ -136,18 +136,29 @@ void TrackerFile::write(const Sample& s) {
     const hid_t file = m.file.get();
     const std::string group = "/fields/tracker/" + step_name(s.step);
     const std::size_t cells = m.volume.size();
-    if (s.count.size() != cells || s.mean_count.size() != cells || s.objects.size() != m.objects)
+    if (s.count.size() != cells || s.moments.size() != cells || s.objects.size() != m.objects)
       throw output::ObjectError(group + ": the sample does not fit the mesh or the objects");
     {
       Handle step = output::create_group(file, group);
       output::write_attribute(step.get(), "time", s.time);
-      std::vector<double> density(cells);
-      for (std::size_t c = 0; c < cells; ++c) density[c] = s.mean_count[c] / m.volume[c];
+      std::vector<double> mean_count, density, velocity, temperature, pressure;
+      for (const CellMoments& c : s.moments) {
+        mean_count.push_back(c.count);
+        density.push_back(c.number_density);
+        velocity.insert(velocity.end(), {c.velocity.x(), c.velocity.y(), c.velocity.z()});
+        temperature.push_back(c.temperature);
+        pressure.push_back(c.pressure);
+      }
       output::write_array(step.get(), "count", {cells}, s.count.data());
-      output::write_array(step.get(), "mean_count", {cells}, s.mean_count.data());
+      output::write_array(step.get(), "mean_count", {cells}, mean_count.data());
       output::write_array(step.get(), "density", {cells}, density.data());
+      output::write_array(step.get(), "velocity", {cells, 3}, velocity.data());
+      output::write_array(step.get(), "temperature", {cells}, temperature.data());
+      output::write_array(step.get(), "pressure", {cells}, pressure.data());
     }
-    m.sidecar.steps.push_back({group, s.time, {{"count", 1}, {"mean_count", 1}, {"density", 1}}});
+    m.sidecar.steps.push_back({group, s.time,
+                               {{"count", 1}, {"mean_count", 1}, {"density", 1}, {"velocity", 3}, {"temperature", 1},
+                                {"pressure", 1}}});
 
     m.rows[0].append(&s.step);
     m.rows[1].append(&s.time);

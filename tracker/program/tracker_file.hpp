@@ -4,10 +4,12 @@
 //                             wall_seconds, participant_names ["tracker"]; scene_text
 //   /fields/tracker/mesh/     vertices (v x 3), topology (int64, XDMF Mixed polyhedra, see
 //                             polyhedra_xdmf.hpp), volume (cells, m^3)
-//   /fields/tracker/<step>/   attr time; per cell: count (particles at that step),
-//                             mean_count (averaged over the steps since the previous
-//                             write; at step 0 the initial count), density (mean_count /
-//                             volume, 1/m^3). <step>: the step index, 6+ digits
+//   /fields/tracker/<step>/   attr time; per cell: count (particles at that step), and
+//                             averaged over the steps since the previous write (at step 0
+//                             the initial state): mean_count, density (1/m^3), velocity
+//                             (cells x 3, m/s), temperature (K), pressure (Pa): the
+//                             moments of tracking/sampling.hpp. <step>: the step index,
+//                             6+ digits
 //   /tracker/                 one row per written step: step (uint64), time, particles
 //                             (uint64), moves (11 columns, attr columns: the MoveTally
 //                             totals since the start)
@@ -27,6 +29,7 @@
 
 #include "scene/scene.hpp"
 #include "tracker/tracking/move.hpp"
+#include "tracker/tracking/sampling.hpp"
 
 namespace cosim::tracker {
 
@@ -34,7 +37,8 @@ struct Sample {
   std::uint64_t step = 0;
   double time = 0.0;
   std::uint64_t particles = 0;
-  std::span<const double> count, mean_count;  // per cell
+  std::span<const double> count;         // per cell, at this step
+  std::span<const CellMoments> moments;  // per cell, averaged since the previous write
   std::span<const ObstacleTally> objects;
   MoveTally moves;
 };

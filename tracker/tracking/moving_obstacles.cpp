@@ -30,7 +30,7 @@ bool put_back(const Obstacles& obstacles, int o, const Domain& domain, const Vec
   const Vec3 before = p.v;
   if (!hit_wall(obstacles.object(o).wall, domain.boundaries.mass, n, relative, random)) return false;
   p.v = u + relative;
-  tally.impulse += before - p.v;
+  tally.exchange(x, obstacles.pose(o).translation(), before, p.v);
   return true;
 }
 
@@ -87,7 +87,7 @@ long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const 
     const Vec3 u = (met - back * met) / dt;
     const Vec3 v = p.v;
     if (!put_back(*this, o, domain, met, n, u, p, states, random, tally)) {
-      tally.impulse += v;
+      tally.exchange(met, pose.translation(), v, Vec3::Zero());
       remove(k);
     }
     swarm.set(k, p);

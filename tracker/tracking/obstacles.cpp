@@ -45,6 +45,8 @@ void ObstacleTally::add(const ObstacleTally& other) {
   released += other.released;
   overrun += other.overrun;
   impulse += other.impulse;
+  angular_impulse += other.angular_impulse;
+  energy += other.energy;
 }
 
 Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects)
@@ -76,6 +78,13 @@ void Obstacles::find_active() {
       if (!cells_[static_cast<std::size_t>(o)].primitives(b).empty()) active_.push_back(o);
     active_first_.push_back(static_cast<Index>(active_.size()));
   }
+}
+
+void ObstacleTally::exchange(const Vec3& x, const Vec3& origin, const Vec3& before, const Vec3& after) {
+  const Vec3 given = before - after;
+  impulse += given;
+  angular_impulse += (x - origin).cross(given);
+  energy += 0.5 * (before.squaredNorm() - after.squaredNorm());
 }
 
 bool Obstacles::emits() const {

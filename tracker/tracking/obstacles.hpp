@@ -33,9 +33,15 @@ struct ObstacleTally {
   long long released = 0;   // found inside a wall by their state and let out at its surface:
                             // a repaired state, 0 unless something went wrong
   long long overrun = 0;    // put back in front of a moving wall (Obstacles::set_pose)
-  Vec3 impulse = Vec3::Zero();  // sum of (v_before - v_after) at hits: the momentum given
-                                // to the object per unit particle mass
+  // What the hits gave the object, per unit particle mass (times the mass and the simulator
+  // weight, over the sampled time: force, torque and heat flow): momentum v_before -
+  // v_after, its moment about the object's pose origin, and kinetic energy.
+  Vec3 impulse = Vec3::Zero();
+  Vec3 angular_impulse = Vec3::Zero();
+  double energy = 0.0;
   void add(const ObstacleTally& other);
+  // A hit at x (an absorbed particle: after = 0).
+  void exchange(const Vec3& x, const Vec3& origin, const Vec3& before, const Vec3& after);
 };
 
 class Obstacles {

@@ -204,6 +204,17 @@ TEST(TrackerConfigs, SphereClusterChannelAndFoamRun) {
   EXPECT_EQ(f.column("lost"), 0);
   EXPECT_GT(f.hits.back(), 1000);
   for (std::size_t k = 0; k < f.count.size(); ++k) EXPECT_EQ(sum(f.count[k]), static_cast<double>(foam.seeded));
+  // Argon at 300 K at rest among struts re-emitting at 300 K stays at 300 K on average.
+  output::Handle foam_file(H5Fopen(out("foam.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open");
+  const auto last = [&](const char* name) {
+    std::vector<std::string> steps = output::link_names(output::open_group(foam_file.get(), "/fields/tracker").get());
+    std::erase(steps, "mesh");
+    return output::Series::open(foam_file.get(), "/fields/tracker/" + steps.back() + "/" + name).read_all();
+  };
+  const std::vector<double> temperature = last("temperature"), weight = last("mean_count");
+  double mean = 0.0;
+  for (std::size_t c = 0; c < weight.size(); ++c) mean += temperature[c] * weight[c] / sum(weight);
+  EXPECT_NEAR(mean, 300.0, 15.0);
 }
 
 TEST(PolyhedraXdmf, MixedTopologyReadsBackAsTheCells) {

@@ -4,6 +4,7 @@
 
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/tracking/inflow.hpp"
+#include "tracker/tracking/sampling.hpp"
 
 #include <gtest/gtest.h>
 
@@ -112,6 +113,52 @@ TEST(Inflow, OpenBoxFillsToTheStreamsDensityAndTemperature) {
   EXPECT_NEAR(mean / 4000.0, 1.0, 0.02);
   EXPECT_NEAR(temperature, 1.0, 0.02);
   EXPECT_EQ(moves.lost, 0);
+}
+
+// The sampled moments of the filled open box are the stream's in every cell: density n,
+// velocity 0, temperature T, pressure n k T (argon-like units here: c_mp = 1).
+TEST(Sampling, OpenBoxCellsHaveTheStreamsMoments) {
+  const Mesh mesh = unit_box(2);
+  const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), 2.0 * boltzmann});
+  const Inflow inflow(mesh, {0, 1, 2, 3, 4, 5}, unit_stream(8000.0, Vec3::Zero()));
+  const Obstacles none;
+  Random random(5);
+  Swarm swarm(0);
+  MoveTally moves;
+  CellSampler sampler(mesh);
+  for (int step = 0; step < 400; ++step) {
+    swarm.move_all(domain, none, 0.05, random, moves, {});
+    inflow.inject(domain, none, 0.05, random, swarm, moves, {});
+    if (step == 100) sampler.reset();
+    sampler.sample(swarm);
+  }
+  for (Index c = 0; c < mesh.cell_count(); ++c) {
+    const CellMoments m = sampler.moments(c, 2.0 * boltzmann, 1.0);
+    EXPECT_NEAR(m.number_density / 8000.0, 1.0, 0.03) << "cell " << c;
+    EXPECT_LT(m.velocity.norm(), 0.03) << "cell " << c;
+    EXPECT_NEAR(m.temperature, 1.0, 0.03) << "cell " << c;
+    EXPECT_NEAR(m.pressure, m.number_density * boltzmann * m.temperature, 1e-12 * m.pressure);
+  }
+  const CellMoments first = sampler.moments(0, 2.0 * boltzmann, 1.0);
+  std::printf("sampled cell 0: n %.1f (8000), |u| %.4f, T %.4f (1)\n", first.number_density, first.velocity.norm(),
+              first.temperature);
+  sampler.reset();
+  EXPECT_EQ(sampler.moments(0, 1.0, 1.0).count, 0.0);
+}
+
+// Hits on a fixed wall give it momentum, its moment and energy: a head-on specular hit at
+// distance r from the origin along y gives 2 v, r x 2 v and no energy; an absorbed one v,
+// r x v and its kinetic energy.
+TEST(Tallies, MomentEnergyAndImpulseOfHits) {
+  ObstacleTally tally;
+  tally.exchange(Vec3(0, 0.5, 0), Vec3::Zero(), Vec3(2, 0, 0), Vec3(-2, 0, 0));
+  EXPECT_EQ(tally.impulse, Vec3(4, 0, 0));
+  EXPECT_EQ(tally.angular_impulse, Vec3(0, 0, -2));
+  EXPECT_EQ(tally.energy, 0.0);
+  tally.exchange(Vec3(0, 0, 1), Vec3::Zero(), Vec3(0, 3, 0), Vec3::Zero());
+  EXPECT_EQ(tally.impulse, Vec3(4, 3, 0));
+  EXPECT_EQ(tally.angular_impulse, Vec3(-3, 0, -2));
+  EXPECT_EQ(tally.energy, 4.5);
 }
 
 TEST(Inflow, RefusesBadStreamsAndEmptyPatches) {

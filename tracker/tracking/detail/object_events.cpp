@@ -43,13 +43,14 @@ bool execute(const Carried& carried, double mass, Particle& p, const ObjectEvent
   ++tally.hits;
   const Vec3 before = p.v;
   // The gas is outside the wall: the object's outward normal points into the domain.
+  const Vec3 origin = carried.obstacles->pose(hit.object).translation();
   if (!hit_wall(carried.obstacles->object(hit.object).wall, mass, event.normal, p.v, random)) {
     ++tally.absorbed;
-    tally.impulse += before;
+    tally.exchange(p.x, origin, before, Vec3::Zero());
     result.removed = true;
     return false;
   }
-  tally.impulse += before - p.v;
+  tally.exchange(p.x, origin, before, p.v);
   return true;
 }
 
