@@ -1,0 +1,62 @@
+// Free-molecular drag on a sphere (a CSG ball with diffuse walls at the gas temperature) in a
+// Maxwellian stream entering an open box on every side, against the closed form (Bird 1994,
+// eq. 7.66; its small-s limit is Epstein's drag with 1 + pi/8) at several speed ratios.
+
+#include "tracker/csg/shapes.hpp"
+#include "tracker/mesh/box_mesh.hpp"
+#include "tracker/tracking/inflow.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace cosim::tracker {
+namespace {
+
+// C_D of a sphere, diffuse reflection with full accommodation at T_w, speed ratio s.
+double sphere_drag_coefficient(double s, double wall_over_gas_temperature) {
+  const double pi = std::numbers::pi, root_pi = std::sqrt(pi);
+  return (2 * s * s + 1) / (root_pi * s * s * s) * std::exp(-s * s) +
+         (4 * s * s * s * s + 4 * s * s - 1) / (2 * s * s * s * s) * std::erf(s) +
+         2 * root_pi / (3 * s) * std::sqrt(wall_over_gas_temperature);
+}
+
+TEST(FreeMolecularDrag, SphereMatchesTheClosedFormAtSeveralSpeedRatios) {
+  // Units where c_mp = 1: mass 2 k_B, T = 1 K; unit radius; the box just holds the ball.
+  BoxSpec spec;
+  for (AxisSpacing& axis : spec.axes) axis = {.min = -1.1, .max = 1.1, .cells = 8};
+  const Mesh mesh = box_mesh(spec);
+  const double mass = 2.0 * boltzmann, density = 400.0, dt = 0.05;
+  const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), mass});
+  const Obstacles ball(mesh, {{"sphere", csg::Tree(csg::ball(Vec3::Zero(), 1.0)), false,
+                               {.kind = BoundaryKind::diffuse, .temperature = 1.0}}});
+  for (const double s : {0.3, 1.0, 2.0, 4.0}) {
+    const Inflow inflow(mesh, {0, 1, 2, 3, 4, 5},
+                        {.number_density = density, .velocity = Vec3(s, 0, 0), .temperature = 1.0, .mass = mass});
+    Random random(7);
+    Swarm swarm(1);
+    MoveTally moves;
+    std::vector<ObstacleTally> tally(1);
+    const int warm_up = 60, measured = 400;
+    for (int step = 0; step < warm_up + measured; ++step) {
+      if (step == warm_up) tally.assign(1, {});
+      swarm.move_all(domain, ball, dt, random, moves, tally);
+      inflow.inject(domain, ball, dt, random, swarm, moves, tally);
+    }
+    // Force per unit particle mass and weight: the x impulse over the measured time.
+    const double drag = tally[0].impulse.x() / (measured * dt);
+    const double expected = sphere_drag_coefficient(s, 1.0) * 0.5 * density * s * s * std::numbers::pi;
+    std::printf("free-molecular sphere, s = %.1f: drag %.1f, Bird %.1f (%+.2f %%), side force %.1f, %lld hits, lost %lld\n",
+                s, drag, expected, 100.0 * (drag / expected - 1.0), tally[0].impulse.tail<2>().norm() / (measured * dt),
+                tally[0].hits, moves.lost);
+    EXPECT_NEAR(drag / expected, 1.0, 0.03) << "s = " << s;
+    EXPECT_LT(tally[0].impulse.tail<2>().norm() / (measured * dt), 0.03 * expected);
+    EXPECT_EQ(moves.lost, 0);
+    EXPECT_EQ(tally[0].released, 0);
+  }
+}
+
+}  // namespace
+}  // namespace cosim::tracker
