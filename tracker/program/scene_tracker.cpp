@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "scene/error.hpp"
+#include "tracker/program/scene_inflow.hpp"
 #include "tracker/program/scene_mesh.hpp"
 #include "tracker/program/scene_obstacles.hpp"
 #include "tracker/program/scene_walls.hpp"
@@ -19,6 +20,7 @@ TrackerScene read_tracker(const scene::Scene& scene) {
   t.mesh = std::make_unique<const Mesh>(read_mesh(options.map("mesh"), scene));
   t.particles = read_seeding(options.map("particles"));
   Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass);
+  t.inflows = read_inflows(options, *t.mesh, boundaries, t.particles.mass, t.particles.weight);
   try {
     t.domain = std::make_unique<const Domain>(*t.mesh, std::move(boundaries));
   } catch (const std::invalid_argument& e) {

@@ -8,6 +8,7 @@
 
 #include "scene/scene.hpp"
 #include "tracker/program/seeding.hpp"
+#include "tracker/tracking/inflow.hpp"
 #include "tracker/tracking/domain.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
@@ -19,6 +20,7 @@ struct TrackerScene {
   std::unique_ptr<const Domain> domain;
   Obstacles obstacles;
   Seeding particles;
+  std::vector<Inflow> inflows;
   double dt = 0.0;
 };
 

@@ -26,6 +26,7 @@ Seeding read_seeding(const scene::Reader& r) {
   const scene::Vec3 drift = r.vec3("drift", scene::Vec3{0, 0, 0});
   s.drift = {drift[0], drift[1], drift[2]};
   s.mass = r.number("mass", Range::above(0));
+  s.weight = r.number("weight", 1.0, Range::above(0));
   s.seed = static_cast<std::uint64_t>(r.integer("seed", 1, Range::at_least(0)));
   r.finish();
   return s;

@@ -6,6 +6,7 @@
 //     temperature: 300       # K: Maxwellian velocities about the drift (0: all at the drift)
 //     drift: [400, 0, 0]     # m/s, optional
 //     mass: 6.63e-26         # kg, also what diffuse walls re-emit with
+//     weight: 1e10           # optional: real molecules per simulator (fnum), default 1
 //     seed: 1                # optional: of every random draw of the run
 //
 // Positions are uniform in each cell (rejection in the cell's bounding box against its
@@ -27,6 +28,7 @@ struct Seeding {
   double temperature = 0.0;
   Vec3 drift = Vec3::Zero();
   double mass = 0.0;
+  double weight = 1.0;  // real molecules per simulator (fnum)
   std::uint64_t seed = 1;
 };
 

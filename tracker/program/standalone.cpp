@@ -50,10 +50,9 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
   std::vector<ObstacleTally> tallies(objects);
   CellSampler sampler(mesh);
   const int every = scene.output.fields_every;
-  // Simulators are molecules here (no weight before DSMC).
   const auto write = [&](std::uint64_t step) {
     std::vector<CellMoments> moments;
-    for (Index c = 0; c < mesh.cell_count(); ++c) moments.push_back(sampler.moments(c, t.particles.mass, 1.0));
+    for (Index c = 0; c < mesh.cell_count(); ++c) moments.push_back(sampler.moments(c, t.particles.mass, t.particles.weight));
     sampler.reset();
     file.write({.step = step,
                 .time = static_cast<double>(step) * t.dt,
@@ -71,6 +70,8 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
       // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
       swarm.sort_by_cell(mesh.cell_count());
       swarm.move_all(*t.domain, t.obstacles, t.dt, random, summary.moves, tallies);
+      for (const Inflow& inflow : t.inflows)
+        summary.injected += static_cast<std::size_t>(inflow.inject(*t.domain, t.obstacles, t.dt, random, swarm, summary.moves, tallies));
       sampler.sample(swarm);
       if ((every > 0 && step % static_cast<std::uint64_t>(every) == 0) || step == summary.steps) write(step);
       progress.update(step, static_cast<double>(step) * t.dt, swarm.size());

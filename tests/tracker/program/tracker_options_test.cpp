@@ -90,6 +90,20 @@ TEST(TrackerOptions, ObstacleMistakesNameTheKey) {
                "obstacle 'far': its surface meets no cell of the mesh");
 }
 
+TEST(TrackerOptions, InflowMistakesNameTheKey) {
+  const std::string p = std::string(kParticles) + "      boundaries: {default: {kind: specular}, x_min: {kind: open}}\n";
+  EXPECT_ERROR(p + "      inflow: [{patches: [y_min], number_density: 1, temperature: 1}]\n",
+               "inflow[0].patches = [y_min]: patch y_min is not open");
+  EXPECT_ERROR(p + "      inflow: [{patches: [x_mn], number_density: 1, temperature: 1}]\n", "inflow[0].patches");
+  EXPECT_ERROR(p + "      inflow: [{patches: [x_min], number_density: 0, temperature: 1}]\n",
+               "inflow[0].number_density = 0");
+  EXPECT_ERROR(p + "      inflow: [{patches: [x_min], number_density: 1, temperature: 1, speed: 3}]\n",
+               "inflow[0].speed = 3: unknown key");
+  const TrackerScene t = read_tracker(scene_with(p + "      inflow: [{patches: [x_min], number_density: 2, temperature: 1}]\n"));
+  ASSERT_EQ(t.inflows.size(), 1u);
+  EXPECT_GT(t.inflows[0].rate(), 0.0);
+}
+
 TEST(TrackerOptions, ParticleMistakesNameTheKey) {
   const std::string walls = "      boundaries: {default: {kind: specular}}\n";
   EXPECT_ERROR(walls, "participants.tracker.options.particles");
