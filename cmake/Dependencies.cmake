@@ -37,3 +37,9 @@ find_library(VORO_LIBRARY voro++ REQUIRED)
 add_library(Voro::voro UNKNOWN IMPORTED)
 set_target_properties(Voro::voro PROPERTIES IMPORTED_LOCATION "${VORO_LIBRARY}"
   INTERFACE_INCLUDE_DIRECTORIES "${VORO_INCLUDE_DIR}")
+
+# DSMC random numbers (tracker/dsmc): PCG, header-only; Debian's libpcg-cpp-dev ships no
+# CMake or pkg-config files.
+find_path(PCG_INCLUDE_DIR pcg_random.hpp REQUIRED)
+add_library(Pcg::pcg INTERFACE IMPORTED)
+set_target_properties(Pcg::pcg PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${PCG_INCLUDE_DIR}")
