@@ -24,8 +24,9 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   return cosim::scene::exit_code("cosim-tracker", [&] {
     const cosim::tracker::RunSummary s = cosim::tracker::run_tracker(cosim::scene::load_scene(scene), output);
-    std::fprintf(stderr, "cosim-tracker: %llu steps, %zu particles seeded, %zu entered, %zu remain, %.2f s\n  %s\n",
-                 static_cast<unsigned long long>(s.steps), s.seeded, s.injected, s.remaining, s.wall_seconds,
+    std::fprintf(stderr, "cosim-tracker: %llu steps, %zu particles seeded, %zu entered, %zu remain, %lld collisions, %.2f s\n  %s\n",
+                 static_cast<unsigned long long>(s.steps), s.seeded, s.injected, s.remaining,
+                 static_cast<long long>(s.collisions), s.wall_seconds,
                  cosim::tracker::summary(s.moves).c_str());
     if (s.moves.lost > 0) {
       std::fprintf(stderr, "cosim-tracker: %lld particles lost (outside their cells): a tracking bug\n", s.moves.lost);

@@ -21,6 +21,7 @@ TrackerScene read_tracker(const scene::Scene& scene) {
   t.particles = read_seeding(options.map("particles"));
   Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass);
   t.inflows = read_inflows(options, *t.mesh, boundaries, t.particles.mass, t.particles.weight);
+  t.collisions = read_collisions(options, t.particles.mass);
   try {
     t.domain = std::make_unique<const Domain>(*t.mesh, std::move(boundaries));
   } catch (const std::invalid_argument& e) {

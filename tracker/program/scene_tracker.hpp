@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "scene/scene.hpp"
+#include "tracker/program/scene_collisions.hpp"
 #include "tracker/program/seeding.hpp"
 #include "tracker/tracking/inflow.hpp"
 #include "tracker/tracking/domain.hpp"
@@ -21,6 +22,7 @@ struct TrackerScene {
   Obstacles obstacles;
   Seeding particles;
   std::vector<Inflow> inflows;
+  std::optional<Collisions> collisions;
   double dt = 0.0;
 };
 

@@ -1,9 +1,12 @@
 #include "tracker/program/standalone.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 
+#include "tracker/program/collide.hpp"
 #include "tracker/program/progress.hpp"
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/seeding.hpp"
@@ -49,6 +52,13 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
   summary.seeded = swarm.size();
   std::vector<ObstacleTally> tallies(objects);
   CellSampler sampler(mesh);
+  std::optional<CellCollider> collider;
+  if (t.collisions) {
+    // The first (sigma g)_max per cell: at the hottest temperature the scene gives.
+    double hottest = t.particles.temperature;
+    for (const Inflow& inflow : t.inflows) hottest = std::max(hottest, inflow.temperature());
+    collider.emplace(mesh, *t.collisions, std::max(hottest, 1.0), t.particles.weight, t.particles.seed);
+  }
   const int every = scene.output.fields_every;
   const auto write = [&](std::uint64_t step) {
     std::vector<CellMoments> moments;
@@ -69,6 +79,7 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
     for (std::uint64_t step = 1; step <= summary.steps; ++step) {
       // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
       swarm.sort_by_cell(mesh.cell_count());
+      if (collider) summary.collisions += collider->collide(swarm, t.dt);
       swarm.move_all(*t.domain, t.obstacles, t.dt, random, summary.moves, tallies);
       for (const Inflow& inflow : t.inflows)
         summary.injected += static_cast<std::size_t>(inflow.inject(*t.domain, t.obstacles, t.dt, random, swarm, summary.moves, tallies));

@@ -14,7 +14,9 @@ namespace cosim::tracker {
 struct RunSummary {
   std::uint64_t steps = 0;
   std::size_t seeded = 0, remaining = 0;  // particles at the start and the end
-  std::size_t injected = 0;               // entered through inflow patches
+  std::size_t injected = 0;               // entered through inflow patches: remaining =
+                                          // seeded + injected - moves.removed
+  std::int64_t collisions = 0;            // DSMC collisions, if the scene has them
   MoveTally moves;
   double wall_seconds = 0.0;
 };

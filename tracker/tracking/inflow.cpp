@@ -93,7 +93,7 @@ long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt,
                     MoveTally& moves, std::span<ObstacleTally> tallies) const {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<csg::State> states(static_cast<std::size_t>(obstacles.count()));
-  long added = 0;
+  long entered = 0;
   for (const Entry& entry : entries_) {
     const auto count = static_cast<long>(std::floor(entry.rate * dt + uniform(random)));
     const Index cell = mesh_.cell_of_face(entry.face);
@@ -103,12 +103,11 @@ long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt,
       if (obstacles.inside_wall(cell, states)) continue;  // the face is covered by a wall there
       const MoveResult result = move(domain, obstacles, p, states, uniform(random) * dt, random, tallies);
       moves.add(result);
-      if (result.removed) continue;
-      swarm.add(p, states);
-      ++added;
+      ++entered;
+      if (!result.removed) swarm.add(p, states);
     }
   }
-  return added;
+  return entered;
 }
 
 }  // namespace cosim::tracker

@@ -29,10 +29,12 @@ class Inflow {
 
   // Simulators entering per second through all the faces (the mean of inject / dt).
   double rate() const { return rate_; }
+  double temperature() const { return stream_.temperature; }
   // Adds the simulators entering during dt to the swarm (states by direct evaluation at
   // the face), each moved by the event-driven tracking for a uniform random part of dt.
   // The count per face is the expected one rounded up or down at random (unbiased).
-  // Returns how many were added (those that left again within dt are not).
+  // Returns how many entered, those that left again within dt included (they count in
+  // moves.removed), so particles = seeded + entered - removed.
   long inject(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, Swarm& swarm,
               MoveTally& moves, std::span<ObstacleTally> tallies) const;
 

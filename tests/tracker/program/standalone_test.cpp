@@ -16,6 +16,8 @@
 #include "scene/scene.hpp"
 #include "tracker/mesh/voronoi_mesh.hpp"
 #include "tracker/program/polyhedra_xdmf.hpp"
+#include "tracker/dsmc/collision.hpp"
+#include "tracker/dsmc/species.hpp"
 #include "tracker/program/standalone.hpp"
 
 namespace cosim::tracker {
@@ -172,6 +174,30 @@ TEST(TrackerStandalone, WritesTheLastStepWithoutFieldsEveryAndNoObstacles) {
   EXPECT_TRUE(std::filesystem::exists(out("bare.xmf")));
 }
 
+// DSMC in a closed box (argon, VSS, specular walls): every particle kept, and the
+// collisions per step those of an equilibrium gas, 0.5 N n <sigma g>.
+TEST(TrackerStandalone, CollisionsAtTheEquilibriumRate) {
+  const scene::Scene scene = scene::load_scene_from_string(
+      "time: {end: 3.5e-7}\ncoupling: {window: 3.5e-7}\noutput: {fields_every: 0}\n"
+      "domain: {min: [0, 0, 0], max: [1.0e-4, 1.0e-4, 1.0e-4]}\neffects: [rarefied_gas]\n"
+      "participants:\n  tracker:\n    dt: 7.0e-9\n    options:\n"
+      "      mesh: {type: box, cells: [10, 10, 10]}\n"
+      "      boundaries: {default: {kind: specular}}\n"
+      "      collisions: {species: Ar, model: vss}\n"
+      "      particles: {per_cell: 20, temperature: 273.15, mass: 6.63e-26, weight: 3.5e6, seed: 3}\n",
+      "scene.yaml");
+  const RunSummary s = run_tracker(scene, out("collide.h5"));
+  EXPECT_EQ(s.remaining, s.seeded);
+  EXPECT_EQ(s.moves.lost, 0);
+  const dsmc::Species& argon = dsmc::read_species(dsmc::default_species_file()).at("Ar");
+  const double n = 20.0 * 3.5e6 / 1e-15;  // real molecules per m^3: 20 simulators per (1e-5 m)^3
+  const double expected = 0.5 * static_cast<double>(s.seeded) * n *
+                          dsmc::CollisionModel::from_species(argon, dsmc::Model::vss).mean_sigma_g(273.15) * 7.0e-9 * 50;
+  std::printf("closed box, VSS argon: %lld collisions in 50 steps, equilibrium %.0f\n", static_cast<long long>(s.collisions),
+              expected);
+  EXPECT_NEAR(static_cast<double>(s.collisions) / expected, 1.0, 0.02);
+}
+
 // The configs of the issue, shortened: the sphere-cluster channel and the open-cell foam
 // keep every particle (periodic sides, mirrors, re-emitting walls), lose none, and their
 // walls are hit; the gas drifting along +x pushes the cluster along +x.
@@ -187,7 +213,7 @@ scene::Scene shortened_config(const std::string& name, const std::string& end) {
                                        file.string());
 }
 
-TEST(TrackerConfigs, SphereClusterChannelAndFoamRun) {
+TEST(TrackerConfigs, SphereClusterChannelFoamAndSphereStreamRun) {
   const RunSummary channel = run_tracker(shortened_config("tracker-sphere-cluster", "2.0e-5"), out("channel.h5"));
   const RunFileView c = read_run(out("channel.h5"), true);
   EXPECT_EQ(channel.remaining, channel.seeded);
@@ -215,6 +241,15 @@ TEST(TrackerConfigs, SphereClusterChannelAndFoamRun) {
   double mean = 0.0;
   for (std::size_t c = 0; c < weight.size(); ++c) mean += temperature[c] * weight[c] / sum(weight);
   EXPECT_NEAR(mean, 300.0, 15.0);
+
+  // The sphere in a rarefied stream: filled by the inflow, collisions on, the sphere hit.
+  const RunSummary stream = run_tracker(shortened_config("tracker-sphere-stream", "2.5e-3"), out("stream.h5"));
+  const RunFileView r = read_run(out("stream.h5"), true);
+  EXPECT_EQ(r.column("lost"), 0);
+  EXPECT_GT(stream.injected, 50000u);
+  EXPECT_GT(stream.collisions, 10000);
+  EXPECT_GT(r.hits.back(), 100);
+  EXPECT_EQ(stream.remaining, stream.injected - static_cast<std::size_t>(r.column("removed")));  // seeded none
 }
 
 TEST(PolyhedraXdmf, MixedTopologyReadsBackAsTheCells) {

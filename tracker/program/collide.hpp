@@ -1,0 +1,34 @@
+// The DSMC collisions of one step: the particles of each cell (the swarm in cell order)
+// collide by the no-time-counter scheme of tracker/dsmc, with each cell's (sigma g)_max and
+// fractional pair carried from step to step.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tracker/dsmc/ntc.hpp"
+#include "tracker/dsmc/random.hpp"
+#include "tracker/program/scene_collisions.hpp"
+#include "tracker/tracking/swarm.hpp"
+
+namespace cosim::tracker {
+
+class CellCollider {
+ public:
+  // `temperature`: the gas's expected temperature, for the first (sigma g)_max of a cell;
+  // `weight`: real molecules per simulator.
+  CellCollider(const Mesh& mesh, const Collisions& collisions, double temperature, double weight, std::uint64_t seed);
+
+  // The swarm must be sorted by cell. Returns the number of collisions.
+  std::int64_t collide(Swarm& swarm, double dt);
+
+ private:
+  const Mesh& mesh_;
+  Collisions collisions_;
+  double weight_;
+  std::vector<dsmc::CellCollisionState> cells_;
+  dsmc::Rng rng_;
+  std::vector<Vec3> velocities_, positions_;  // one cell's, reused
+};
+
+}  // namespace cosim::tracker
