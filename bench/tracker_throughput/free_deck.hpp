@@ -17,6 +17,7 @@ struct FreeDeck {
   static constexpr double kUnsortDt = 7e-8;      // s, 30 steps of about 2.7 cells each
   static constexpr double kTimedDt = 7e-9;       // s, about 0.27 cells per step
   static constexpr int kUnsortSteps = 30;
+  static constexpr double kCollideWeight = 7.07e6;  // SPARTA's collide deck: nrho 7.07e22 at 10 per cell
 
   int cells = 46;  // per side
   int per_cell = 10;

@@ -1,6 +1,10 @@
 #include "run.hpp"
 
+#include "tracker/dsmc/species.hpp"
+#include "tracker/program/collide.hpp"
 #include "tracker/tracking/swarm.hpp"
+
+#include <optional>
 
 #include <chrono>
 #include <cmath>
@@ -49,6 +53,14 @@ RunResult run(const FreeBox& box, const std::vector<Particle>& particles, const 
   RunResult result;
   result.options = options;
   const double energy = kinetic_energy(in_place ? items : contents(swarm));
+  // SPARTA's collide deck: VSS argon, 7.07e6 molecules per simulator (n = 7.07e22 m^-3 at
+  // 10 per cell), collisions in cell order each step.
+  std::optional<CellCollider> collider;
+  if (options.collide) {
+    const dsmc::Species& argon = dsmc::read_species(dsmc::default_species_file()).at("Ar");
+    collider.emplace(box.mesh, Collisions{dsmc::CollisionModel::from_species(argon, dsmc::Model::vss), false},
+                     FreeDeck::kTemperature, FreeDeck::kCollideWeight, 7);
+  }
   const std::clock_t cpu_start = std::clock();
   const auto start = std::chrono::steady_clock::now();
   for (int step = 0; step < options.steps; ++step) {
@@ -57,6 +69,7 @@ RunResult run(const FreeBox& box, const std::vector<Particle>& particles, const 
       continue;
     }
     if (options.sort_every > 0 && step % options.sort_every == 0) swarm.sort_by_cell(box.mesh.cell_count());
+    if (collider) result.collisions += collider->collide(swarm, FreeDeck::kTimedDt);
     swarm.move_all(domain, obstacles, FreeDeck::kTimedDt, random, result.tally, tallies);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -75,7 +88,7 @@ RunResult run(const FreeBox& box, const std::vector<Particle>& particles, const 
 
 std::string label(const RunOptions& options) {
   if (options.storage == Storage::particle) return "Particle";
-  return std::string("Swarm") + (options.cluster ? " + cluster" : "");
+  return std::string("Swarm") + (options.cluster ? " + cluster" : "") + (options.collide ? " + collisions" : "");
 }
 
 }  // namespace cosim::bench

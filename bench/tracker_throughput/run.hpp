@@ -18,6 +18,7 @@ struct RunOptions {
   int steps = 100;     // timed, at FreeDeck::kTimedDt
   int sort_every = 0;  // swarm: sort the particles by cell every this many steps (0: never)
   bool cluster = false;  // swarm: among the sphere cluster (FreeBox::cluster)
+  bool collide = false;  // swarm: SPARTA's collide deck, VSS argon collisions each step
 };
 
 struct RunResult {
@@ -32,6 +33,7 @@ struct RunResult {
   long long outside = 0;         // outside their cell by more than the tolerance at the end
   double energy_drift = 0.0;     // |E_end - E_start| / E_start over the timed steps
   long long obstacle_hits = 0;   // reflections off the cluster
+  long long collisions = 0;      // the collide deck's
 
   double moves_per_second() const { return static_cast<double>(tally.moves) / seconds; }
   double moves_per_cpu_second() const { return static_cast<double>(tally.moves) / cpu_seconds; }
