@@ -15,22 +15,11 @@
 #include "output/h5_handle.hpp"
 #include "output/h5_values.hpp"
 #include "output/run_series.hpp"
+#include "output/in_file.hpp"
 #include "output/text.hpp"
 
 namespace cosim::output {
 namespace {
-
-// Runs f with HDF5's stack printing off and puts the file name on ObjectErrors, so every
-// message names both the file and the object.
-template <class F>
-auto in_file(const std::filesystem::path& path, F&& f) {
-  QuietErrors quiet;
-  try {
-    return f();
-  } catch (const ObjectError& e) {
-    throw std::runtime_error(path.string() + ": " + e.what());
-  }
-}
 
 // Names become HDF5 group names: "a/b" would nest and "." means the parent itself.
 void check_names(const std::vector<std::string>& names, const char* kind) {

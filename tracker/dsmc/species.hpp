@@ -2,6 +2,8 @@
 // Molecular species for DSMC, read from a YAML species file (species.yaml next to this
 // header holds Ar, N2 and He from Bird 1994, Appendix A).
 
+#include "tracker/constants.hpp"
+
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -9,7 +11,7 @@
 
 namespace cosim::dsmc {
 
-inline constexpr double boltzmann = 1.380649e-23;  // J/K, exact (SI 2019)
+using tracker::boltzmann;
 
 struct Species {
   std::string name;

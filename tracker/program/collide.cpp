@@ -21,7 +21,7 @@ std::int64_t CellCollider::collide(Swarm& swarm, double dt) {
     for (; end < swarm.size() && swarm.cell(end) == cell; ++end) {
       const Particle p = swarm.particle(end);
       velocities_.push_back(p.v);
-      positions_.push_back(p.x);
+      if (collisions_.nearest) positions_.push_back(p.x);
     }
     if (velocities_.size() >= 2) {
       auto& state = cells_[static_cast<std::size_t>(cell)];

@@ -26,8 +26,7 @@ BoundaryCondition read_condition(const Reader& r, bool allow_periodic) {
   c.kind = static_cast<BoundaryKind>(r.choice("kind", kKinds));
   if (c.kind == BoundaryKind::periodic && !allow_periodic)
     r.fail("kind", "an obstacle wall cannot be periodic; expected specular, diffuse, maxwell or open");
-  if (c.kind == BoundaryKind::diffuse || c.kind == BoundaryKind::maxwell)
-    c.temperature = r.number("temperature", Range::above(0));
+  if (re_emits(c)) c.temperature = r.number("temperature", Range::above(0));
   if (c.kind == BoundaryKind::maxwell) c.accommodation = r.number("accommodation", Range::closed(0, 1));
   r.finish();  // a temperature on a specular wall is a mistake worth naming
   return c;

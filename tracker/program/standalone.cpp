@@ -6,6 +6,7 @@
 #include <optional>
 #include <cstdio>
 
+#include "participant/seconds_since.hpp"
 #include "tracker/program/collide.hpp"
 #include "tracker/program/progress.hpp"
 #include "tracker/program/scene_tracker.hpp"
@@ -17,7 +18,6 @@ namespace {
 
 using clock = std::chrono::steady_clock;
 
-double seconds_since(clock::time_point t) { return std::chrono::duration<double>(clock::now() - t).count(); }
 
 // Particles per cell at this step.
 std::vector<double> counts(const Swarm& swarm, Index cells) {
@@ -89,12 +89,12 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
     }
   } catch (const std::exception& e) {
     progress.finish();
-    file.set_status(std::string("failed: ") + e.what(), seconds_since(started));
+    file.set_status(std::string("failed: ") + e.what(), participant::seconds_since(started));
     throw;
   }
   progress.finish();
   summary.remaining = swarm.size();
-  summary.wall_seconds = seconds_since(started);
+  summary.wall_seconds = participant::seconds_since(started);
   file.set_status("finished", summary.wall_seconds);
   return summary;
 }

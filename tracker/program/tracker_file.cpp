@@ -9,6 +9,7 @@
 #include "output/h5_handle.hpp"
 #include "output/h5_values.hpp"
 #include "output/series.hpp"
+#include "output/in_file.hpp"
 #include "output/text.hpp"
 #include "output/xdmf.hpp"
 #include "tracker/program/polyhedra_xdmf.hpp"
@@ -47,16 +48,6 @@ void write_int64_array(hid_t group, const std::string& name, const std::vector<s
                 "write " + output::child_path(group, name));
 }
 
-template <class F>
-auto in_file(const std::filesystem::path& path, F&& f) {
-  output::QuietErrors quiet;
-  try {
-    return f();
-  } catch (const output::ObjectError& e) {
-    throw std::runtime_error(path.string() + ": " + e.what());
-  }
-}
-
 }  // namespace
 
 struct TrackerFile::Impl {
@@ -76,7 +67,7 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
   m.path = path;
   m.objects = object_names.size();
   m.volume = mesh.volume;
-  in_file(path, [&] {
+  output::in_file(path, [&] {
     m.file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "create file");
     const hid_t file = m.file.get();
     {
@@ -132,7 +123,7 @@ TrackerFile::~TrackerFile() = default;
 
 void TrackerFile::write(const Sample& s) {
   Impl& m = *impl_;
-  in_file(m.path, [&] {
+  output::in_file(m.path, [&] {
     const hid_t file = m.file.get();
     const std::string group = "/fields/tracker/" + step_name(s.step);
     const std::size_t cells = m.volume.size();
@@ -183,7 +174,7 @@ void TrackerFile::write(const Sample& s) {
 
 void TrackerFile::set_status(const std::string& status, double wall_seconds) {
   Impl& m = *impl_;
-  in_file(m.path, [&] {
+  output::in_file(m.path, [&] {
     Handle run = output::open_group(m.file.get(), "run");
     output::write_attribute(run.get(), "status", status);
     output::write_attribute(run.get(), "wall_seconds", wall_seconds);

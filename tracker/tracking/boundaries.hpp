@@ -1,13 +1,13 @@
 #pragma once
 // What happens at boundary faces, by patch: reflections, re-emission, removal.
 
+#include "tracker/constants.hpp"
 #include "tracker/tracking/particle.hpp"
 
 #include <vector>
 
 namespace cosim::tracker {
 
-inline constexpr double boltzmann = 1.380649e-23;  // J/K
 
 enum class BoundaryKind {
   specular,  // mirror the normal velocity

@@ -10,7 +10,7 @@
 namespace cosim::tracker {
 namespace {
 
-constexpr double sqrt_pi = 1.7724538509055160273;
+constexpr double sqrt_pi = 1.0 / std::numbers::inv_sqrtpi;
 
 // The cumulative inflow distribution, unnormalised: the integral of t e^(-(t - s)^2) from 0
 // to x.
@@ -52,7 +52,8 @@ Inflow::Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream
       const double area = area_vector(mesh, f).norm();
       const double s = stream.velocity.dot(mesh.faces[f].normal) / most_probable_;
       const double rate = stream.number_density / stream.weight * most_probable_ * flux_factor(s) * area;
-      entries_.push_back({f, rate, s, area});
+      const Vec3 t1 = mesh.faces[f].normal.unitOrthogonal();
+      entries_.push_back({f, mesh.cell_of_face(f), rate, s, area, t1, mesh.faces[f].normal.cross(t1)});
       rate_ += rate;
     }
     if (entries_.size() == before)
@@ -82,7 +83,7 @@ Vec3 Inflow::point_on(const Entry& entry, Random& random) const {
 
 Vec3 Inflow::velocity(const Entry& entry, Random& random) const {
   const Vec3& n = mesh_.faces[entry.face].normal;  // into the domain
-  const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+  const Vec3 &t1 = entry.t1, &t2 = entry.t2;
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::normal_distribution<double> gauss(0.0, most_probable_ / std::numbers::sqrt2);
   const double normal = most_probable_ * inflow_normal_speed(entry.speed_ratio, uniform(random));
@@ -96,7 +97,7 @@ long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt,
   long entered = 0;
   for (const Entry& entry : entries_) {
     const auto count = static_cast<long>(std::floor(entry.rate * dt + uniform(random)));
-    const Index cell = mesh_.cell_of_face(entry.face);
+    const Index cell = entry.cell;
     for (long i = 0; i < count; ++i) {
       Particle p{point_on(entry, random), velocity(entry, random), cell};
       obstacles.classify(cell, p.x, states);

@@ -39,11 +39,14 @@ class Inflow {
               MoveTally& moves, std::span<ObstacleTally> tallies) const;
 
  private:
+  // A face's constants, fixed at construction.
   struct Entry {
     Index face;
+    Index cell;
     double rate;            // simulators per second
     double speed_ratio;     // s = (stream . inward normal) / most probable speed
     double area;
+    Vec3 t1, t2;            // tangents: the stream's tangential part is (stream.t1, stream.t2)
   };
   Vec3 point_on(const Entry& entry, Random& random) const;
   Vec3 velocity(const Entry& entry, Random& random) const;

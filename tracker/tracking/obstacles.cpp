@@ -64,6 +64,7 @@ Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const 
     if (!object.permeable && re_emits(object.wall) && !(object.wall.temperature > 0.0))
       throw std::invalid_argument("obstacle '" + object.name + "': a re-emitting wall needs a positive temperature");
     require_periodic(tracking, object);
+    emits_ = emits_ || (!object.permeable && re_emits(object.wall));
     cells_.emplace_back(bounding, object.shape);
     poses_.push_back(Eigen::Isometry3d::Identity());
   }
@@ -85,12 +86,6 @@ void ObstacleTally::exchange(const Vec3& x, const Vec3& origin, const Vec3& befo
   impulse += given;
   angular_impulse += (x - origin).cross(given);
   energy += 0.5 * (before.squaredNorm() - after.squaredNorm());
-}
-
-bool Obstacles::emits() const {
-  for (const Obstacle& object : objects_)
-    if (!object.permeable && re_emits(object.wall)) return true;
-  return false;
 }
 
 void Obstacles::classify(Index cell, const Vec3& x, std::span<csg::State> states) const {

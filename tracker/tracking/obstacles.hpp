@@ -62,7 +62,7 @@ class Obstacles {
   int count() const { return static_cast<int>(objects_.size()); }
   bool empty() const { return objects_.empty(); }
   // Some wall re-emits particles (diffuse or maxwell): the tracking needs their mass.
-  bool emits() const;
+  bool emits() const { return emits_; }
   const Obstacle& object(int i) const { return objects_[static_cast<std::size_t>(i)]; }
   const CellObject& cells(int i) const { return cells_[static_cast<std::size_t>(i)]; }
   Index bounding_cell(Index cell) const { return bounding_cell_.empty() ? cell : bounding_cell_[cell]; }
@@ -106,6 +106,7 @@ class Obstacles {
   std::vector<Eigen::Isometry3d> poses_;
   std::vector<CellObject> cells_;
   std::vector<Index> bounding_cell_;
+  bool emits_ = false;  // asked on every move
   std::vector<Index> active_first_;  // bounding cell b: active_[active_first_[b] .. active_first_[b + 1])
   std::vector<int> active_;
 };

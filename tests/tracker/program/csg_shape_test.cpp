@@ -10,6 +10,8 @@
 #include "tracker/csg/tree.hpp"
 #include "tracker/program/csg_shape.hpp"
 
+#include "scene_error.hpp"
+
 namespace cosim::tracker {
 namespace {
 
@@ -22,12 +24,7 @@ csg::Tree shape(const std::string& yaml) {
 }
 
 std::string error_of(const std::string& yaml) {
-  try {
-    shape(yaml);
-  } catch (const scene::SceneError& e) {
-    return e.what();
-  }
-  return "no error";
+  return testing::scene_error_of([&] { shape(yaml); });
 }
 
 TEST(CsgShape, EveryPrimitiveReadsAsWritten) {

@@ -5,6 +5,8 @@
 #include "scene/error.hpp"
 #include "tracker/program/scene_mesh.hpp"
 
+#include "scene_error.hpp"
+
 namespace cosim::tracker {
 namespace {
 
@@ -22,12 +24,7 @@ Mesh mesh_of(const std::string& mesh) {
 }
 
 std::string error_of(const std::string& mesh) {
-  try {
-    mesh_of(mesh);
-  } catch (const scene::SceneError& e) {
-    return e.what();
-  }
-  return "no error";
+  return testing::scene_error_of([&] { mesh_of(mesh); });
 }
 
 TEST(SceneMesh, BoxOverTheDomainWithTetrahedraAndPerturbation) {

@@ -6,6 +6,8 @@
 #include "scene/error.hpp"
 #include "tracker/program/scene_tracker.hpp"
 
+#include "scene_error.hpp"
+
 namespace cosim::tracker {
 namespace {
 
@@ -20,12 +22,7 @@ scene::Scene scene_with(const std::string& options, const std::string& mesh = "{
 }
 
 std::string error_of(const std::string& options, const std::string& mesh = "{type: box, cells: [2, 2, 2]}") {
-  try {
-    read_tracker(scene_with(options, mesh));
-  } catch (const scene::SceneError& e) {
-    return e.what();
-  }
-  return "no error";
+  return testing::scene_error_of([&] { read_tracker(scene_with(options, mesh)); });
 }
 
 #define EXPECT_ERROR(options, text) EXPECT_NE(error_of(options).find(text), std::string::npos) << error_of(options)

@@ -15,7 +15,7 @@
 namespace cosim::tracker {
 namespace {
 
-constexpr double sqrt_pi = 1.7724538509055160273;
+constexpr double sqrt_pi = 1.0 / std::numbers::inv_sqrtpi;
 
 TEST(Inflow, NormalSpeedInvertsTheFluxDistribution) {
   // At rest: x = sqrt(-ln(1 - u)). Deep in the tail the inversion is conditioned by the

@@ -1,0 +1,20 @@
+#pragma once
+// The message of the scene error that reading something throws, or "no error".
+
+#include <string>
+
+#include "scene/error.hpp"
+
+namespace cosim::tracker::testing {
+
+template <typename Read>
+std::string scene_error_of(const Read& read) {
+  try {
+    read();
+  } catch (const scene::SceneError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace cosim::tracker::testing
