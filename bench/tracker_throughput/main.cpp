@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
                   r.moves_per_second() >= kSpartaCollideDeck ? "met" : "NOT met",
                   static_cast<double>(r.collisions) / static_cast<double>(r.tally.moves));
   std::printf("goal: <= %.0f bytes per particle plus the logical state: Swarm %zu + 8 per obstacle (Particle %zu; "
-              "sorting adds a scratch copy while it runs)\n",
+              "a sorted swarm keeps a second copy as scratch)\n",
               kGoalBytesPerParticle, sizeof(cosim::tracker::StoredParticle), sizeof(cosim::tracker::Particle));
   if (!csv.empty()) write_csv(csv, deck, runs);
   if (!ok) std::printf("FAILED: event-driven lost particles, the kinetic energy drifted, or the cluster was never hit\n");

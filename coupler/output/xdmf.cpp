@@ -11,24 +11,37 @@ namespace cosim::output {
 namespace {
 
 void data_item(std::ostream& out, const std::string& dims, const std::string& h5_file,
-               const std::string& dataset, const char* indent) {
-  out << indent << "<DataItem Dimensions=\"" << dims << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-      << xml_escaped(h5_file + ":" + dataset) << "</DataItem>\n";
+               const std::string& dataset, const char* indent, const char* type = "Float") {
+  out << indent << "<DataItem Dimensions=\"" << dims << "\" NumberType=\"" << type
+      << "\" Precision=\"8\" Format=\"HDF\">" << xml_escaped(h5_file + ":" + dataset) << "</DataItem>\n";
 }
 
-void write_step(std::ostream& out, const std::string& h5_file, const XdmfSeries& s, const XdmfStep& step) {
+// The grid's topology and geometry; returns the dimensions of a cell field.
+std::string write_grid(std::ostream& out, const std::string& h5_file, const XdmfSeries& s) {
+  if (const XdmfPolyhedra& p = s.polyhedra; p.cells > 0) {
+    out << "        <Topology TopologyType=\"Mixed\" NumberOfElements=\"" << p.cells << "\">\n";
+    data_item(out, std::to_string(p.topology_size), h5_file, s.grid_group + "/topology", "          ", "Int");
+    out << "        </Topology>\n        <Geometry GeometryType=\"XYZ\">\n";
+    data_item(out, std::to_string(p.vertices) + " 3", h5_file, s.grid_group + "/vertices", "          ");
+    out << "        </Geometry>\n";
+    return std::to_string(p.cells);
+  }
   const auto& n = s.cells;
   // XDMF orders dimensions slowest first: z, y, x.
   const std::string nodes = std::to_string(n[2] + 1) + " " + std::to_string(n[1] + 1) + " " + std::to_string(n[0] + 1);
-  const std::string cells = std::to_string(n[2]) + " " + std::to_string(n[1]) + " " + std::to_string(n[0]);
-  out << "      <Grid Name=\"" << xml_escaped(step.group) << "\" GridType=\"Uniform\">\n"
-      << "        <Time Value=\"" << exact(step.time) << "\"/>\n"
-      << "        <Topology TopologyType=\"3DRectMesh\" Dimensions=\"" << nodes << "\"/>\n"
+  out << "        <Topology TopologyType=\"3DRectMesh\" Dimensions=\"" << nodes << "\"/>\n"
       << "        <Geometry GeometryType=\"VXVYVZ\">\n";
   for (int a = 0; a < 3; ++a)
     data_item(out, std::to_string(n[static_cast<std::size_t>(a)] + 1), h5_file,
               s.grid_group + "/" + "xyz"[a], "          ");
   out << "        </Geometry>\n";
+  return std::to_string(n[2]) + " " + std::to_string(n[1]) + " " + std::to_string(n[0]);
+}
+
+void write_step(std::ostream& out, const std::string& h5_file, const XdmfSeries& s, const XdmfStep& step) {
+  out << "      <Grid Name=\"" << xml_escaped(step.group) << "\" GridType=\"Uniform\">\n"
+      << "        <Time Value=\"" << exact(step.time) << "\"/>\n";
+  const std::string cells = write_grid(out, h5_file, s);
   for (const XdmfField& f : step.fields) {
     const bool vector = f.components > 1;
     out << "        <Attribute Name=\"" << xml_escaped(f.name) << "\" AttributeType=\"" << (vector ? "Vector" : "Scalar")

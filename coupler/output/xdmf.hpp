@@ -21,12 +21,22 @@ struct XdmfStep {
   std::vector<XdmfField> fields;
 };
 
-// The steps of one participant on one rectilinear grid.
+// Unstructured convex polyhedra: an XDMF "Mixed" topology of Polyhedron cells (type 16,
+// the face count, then per face its vertex count and vertices), int64 dataset `topology`
+// and float64 `vertices` (v x 3) in the series' grid_group. ParaView reads it with its
+// "XDMF Reader (Xdmf3ReaderS)"; the older Xdmf2 reader of ParaView 5.11 has no polyhedra.
+struct XdmfPolyhedra {
+  std::size_t cells = 0, vertices = 0, topology_size = 0;
+};
+
+// The steps of one participant on one grid: rectilinear (node coordinates x, y, z in
+// grid_group, `cells` per axis) unless `polyhedra` has cells.
 struct XdmfSeries {
   std::string name;
-  std::string grid_group;  // HDF5 path of the group holding node coordinates x, y, z
+  std::string grid_group;
   std::array<std::size_t, 3> cells{};
   std::vector<XdmfStep> steps;
+  XdmfPolyhedra polyhedra{};
 };
 
 // The document, with datasets referenced as "<h5_file>:<path>": h5_file is relative to

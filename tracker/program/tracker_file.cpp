@@ -12,7 +12,7 @@
 #include "output/in_file.hpp"
 #include "output/text.hpp"
 #include "output/xdmf.hpp"
-#include "tracker/program/polyhedra_xdmf.hpp"
+#include "tracker/program/mixed_topology.hpp"
 
 namespace cosim::tracker {
 namespace {
@@ -57,7 +57,7 @@ struct TrackerFile::Impl {
   std::vector<Series> rows;     // step, time, particles, moves
   std::vector<Series> tallies;  // hits, absorbed, entered, left, released, impulse
   std::vector<double> volume;  // per cell, for the density
-  PolyhedraSeries sidecar;
+  output::XdmfSeries sidecar;
 };
 
 TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& scene, const Mesh& mesh,
@@ -91,11 +91,12 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
     write_int64_array(grid.get(), "topology", topology);
     output::write_array(grid.get(), "volume", {mesh.volume.size()}, mesh.volume.data());
     m.sidecar = {.name = "tracker",
-                 .mesh_group = "/fields/tracker/mesh",
-                 .cells = static_cast<std::size_t>(mesh.cell_count()),
-                 .vertices = mesh.vertices.size(),
-                 .topology_size = topology.size(),
-                 .steps = {}};
+                 .grid_group = "/fields/tracker/mesh",
+                 .cells = {},
+                 .steps = {},
+                 .polyhedra = {.cells = static_cast<std::size_t>(mesh.cell_count()),
+                               .vertices = mesh.vertices.size(),
+                               .topology_size = topology.size()}};
 
     Handle series = output::create_group(file, "tracker");
     m.rows.push_back(Series::create(series.get(), "step", 1, H5T_NATIVE_UINT64));
@@ -169,7 +170,7 @@ void TrackerFile::write(const Sample& s) {
     output::flush(file);
   });
   output::write_replacing(std::filesystem::path(m.path).replace_extension(".xmf"),
-                          polyhedra_xdmf(m.path.filename().string(), m.sidecar));
+                          output::xdmf_document(m.path.filename().string(), {m.sidecar}));
 }
 
 void TrackerFile::set_status(const std::string& status, double wall_seconds) {

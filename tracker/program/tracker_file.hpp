@@ -3,7 +3,7 @@
 //   /run                      attrs scene_file, git_hash, cosim_version, started, status,
 //                             wall_seconds, participant_names ["tracker"]; scene_text
 //   /fields/tracker/mesh/     vertices (v x 3), topology (int64, XDMF Mixed polyhedra, see
-//                             polyhedra_xdmf.hpp), volume (cells, m^3)
+//                             mixed_topology.hpp), volume (cells, m^3)
 //   /fields/tracker/<step>/   attr time; per cell: count (particles at that step), and
 //                             averaged over the steps since the previous write (at step 0
 //                             the initial state): mean_count, density (1/m^3), velocity

@@ -23,30 +23,36 @@ void Swarm::keep(std::size_t from, std::size_t to) {
 
 void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, MoveTally& moves,
                      std::span<ObstacleTally> tallies) {
-  std::vector<bool> removed(particles_.size());
+  // The removed ones are dropped as the loop goes: each kept particle moves down at most once.
+  std::size_t kept = 0;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     Particle p = particle(i);
     const MoveResult result = move(domain, obstacles, p, states(i), dt, random, tallies);
-    set(i, p);
     moves.add(result);
-    removed[i] = result.removed;
+    if (result.removed) continue;
+    set(i, p);
+    keep(i, kept++);
   }
-  remove_if([&](std::size_t i) { return removed[i]; });
+  particles_.resize(kept);
+  states_.resize(kept * objects_);
 }
 
 void Swarm::sort_by_cell(Index cells) {
-  std::vector<std::size_t> start(static_cast<std::size_t>(cells) + 1, 0);
+  // Into the scratch arrays kept from the last sort, so a step allocates nothing.
+  std::vector<std::size_t>& start = sort_start_;
+  start.assign(static_cast<std::size_t>(cells) + 1, 0);
   for (const StoredParticle& p : particles_) ++start[static_cast<std::size_t>(p.cell) + 1];
   for (std::size_t c = 0; c < static_cast<std::size_t>(cells); ++c) start[c + 1] += start[c];
-  std::vector<StoredParticle> particles(particles_.size());
-  std::vector<csg::State> states(states_.size());
+  sorted_particles_.resize(particles_.size());
+  sorted_states_.resize(states_.size());
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const std::size_t to = start[static_cast<std::size_t>(particles_[i].cell)]++;
-    particles[to] = particles_[i];
-    std::copy_n(states_.begin() + static_cast<long>(i * objects_), objects_, states.begin() + static_cast<long>(to * objects_));
+    sorted_particles_[to] = particles_[i];
+    std::copy_n(states_.begin() + static_cast<long>(i * objects_), objects_,
+                sorted_states_.begin() + static_cast<long>(to * objects_));
   }
-  particles_.swap(particles);
-  states_.swap(states);
+  particles_.swap(sorted_particles_);
+  states_.swap(sorted_states_);
 }
 
 }  // namespace cosim::tracker

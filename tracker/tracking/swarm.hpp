@@ -65,6 +65,10 @@ class Swarm {
 
   int objects_;
   std::vector<StoredParticle> particles_;
+  // sort_by_cell's scratch, kept between calls (the previous order ends up here).
+  std::vector<StoredParticle> sorted_particles_;
+  std::vector<csg::State> sorted_states_;
+  std::vector<std::size_t> sort_start_;
   std::vector<csg::State> states_;
 };
 

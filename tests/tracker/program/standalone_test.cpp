@@ -15,7 +15,8 @@
 #include "output/series.hpp"
 #include "scene/scene.hpp"
 #include "tracker/mesh/voronoi_mesh.hpp"
-#include "tracker/program/polyhedra_xdmf.hpp"
+#include "output/xdmf.hpp"
+#include "tracker/program/mixed_topology.hpp"
 #include "tracker/dsmc/collision.hpp"
 #include "tracker/dsmc/species.hpp"
 #include "tracker/program/standalone.hpp"
@@ -272,11 +273,15 @@ TEST(PolyhedraXdmf, MixedTopologyReadsBackAsTheCells) {
   }
   EXPECT_EQ(at, topology.size());
 
-  const std::string doc = polyhedra_xdmf("a&b.h5", {.name = "tracker", .mesh_group = "/fields/tracker/mesh",
-                                                    .cells = 40, .vertices = mesh.vertices.size(),
-                                                    .topology_size = topology.size(),
-                                                    .steps = {{"/fields/tracker/000000", 0.5, {{"count", 1}}}}});
+  const std::string doc = output::xdmf_document(
+      "a&b.h5", {{.name = "tracker",
+                  .grid_group = "/fields/tracker/mesh",
+                  .cells = {},
+                  .steps = {{"/fields/tracker/000000", 0.5, {{"count", 1}, {"velocity", 3}}}},
+                  .polyhedra = {.cells = 40, .vertices = mesh.vertices.size(), .topology_size = topology.size()}}});
   EXPECT_NE(doc.find("TopologyType=\"Mixed\" NumberOfElements=\"40\""), std::string::npos);
+  EXPECT_NE(doc.find("Dimensions=\"" + std::to_string(topology.size()) + "\" NumberType=\"Int\""), std::string::npos);
+  EXPECT_NE(doc.find("Dimensions=\"40 3\" NumberType=\"Float\""), std::string::npos);  // the vector field
   EXPECT_NE(doc.find("a&amp;b.h5:/fields/tracker/000000/count"), std::string::npos);
   EXPECT_NE(doc.find("<Time Value=\"0.5\"/>"), std::string::npos);
 }
