@@ -6,6 +6,7 @@
 
 #include "fluid/program/cell_fields.hpp"
 #include "fluid/program/petsc_flags.hpp"
+#include "participant/poses_at.hpp"
 #include "protocol/message.hpp"
 
 namespace cosim::program {
@@ -20,20 +21,6 @@ void check_size(const std::vector<double>& values, std::size_t bodies, const cha
   if (values.size() != kPoseWidth * bodies)
     throw std::runtime_error(std::string(what) + " for " + std::to_string(values.size() / kPoseWidth) +
                              " bodies, the scene has " + std::to_string(bodies));
-}
-
-// Between the window's start and end poses: positions and velocities linearly, the
-// orientation by normalised linear interpolation (the coupler's windows are short enough
-// for the difference to slerp not to matter against the first-order hold).
-std::vector<double> interpolated(const participant::Inputs& in, const participant::Window& w, double t) {
-  const auto& end = in.poses_end.empty() ? in.poses_start : in.poses_end;
-  std::vector<double> out(in.poses_start.size());
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = participant::lerp(in.poses_start[i], end[i], w, t);
-  for (std::size_t b = 0; b < out.size() / kPoseWidth; ++b) {
-    Eigen::Map<Eigen::Vector4d> q(out.data() + kPoseWidth * b + 3);
-    q.normalize();
-  }
-  return out;
 }
 
 // Periodic axes have their faces from the grid already.
@@ -95,7 +82,7 @@ std::vector<double> FluidSolver::poses_at(const participant::Window& w, const pa
                                           double t) const {
   if (prescribed_) return program::poses_at(setup_.motions, t);
   if (in.poses_start.empty()) return poses_;
-  return interpolated(in, w, t);
+  return participant::poses_at(in, w, t);
 }
 
 void FluidSolver::place(const std::vector<double>& poses) {

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "rigidbody/geometry/scene_shape.hpp"
+#include "scene/eigen.hpp"
 #include "scene/error.hpp"
 #include "scene/reader.hpp"
 
@@ -122,10 +123,8 @@ void read_bodies(const scene::Scene& scene, const scene::Participant& p, FluidSe
       throw scene::SceneError(scene.file.string(), p.line, key, "plane",
                               "cosim-fluid cannot hold a plane body: make it a wall boundary (participants.fluid)");
     fluid::RigidBody r{.shape = geometry::shape_of(body.shape), .pose = {}};
-    const auto& o = body.orientation;
-    const Eigen::Quaterniond q(o[0], o[1], o[2], o[3]);
-    const Eigen::Vector3d x = Eigen::Vector3d(body.position[0], body.position[1], body.position[2]) +
-                              q * geometry::com_shift(r.shape);
+    const Eigen::Quaterniond q = scene::to_eigen(body.orientation);
+    const Eigen::Vector3d x = scene::to_eigen(body.position) + q * geometry::com_shift(r.shape);
     r.pose = geometry::Pose(x, q);
     s.bodies.push_back(std::move(r));
     Motion m;

@@ -86,8 +86,7 @@ world::Settings settings_of(const scene::Scene& scene) { return program_options(
 
 world::BodyDesc body_of(const scene::Body& b, bool friction, bool convex_hull) {
   world::BodyDesc d{.shape = shape_of(b.shape), .name = b.name};
-  const auto& o = b.orientation;
-  d.state.orientation = Eigen::Quaterniond(o[0], o[1], o[2], o[3]);
+  d.state.orientation = scene::to_eigen(b.orientation);
   d.state.position = scene::to_eigen(b.position) + d.state.orientation * com_shift(d.shape);
   if (convex_hull) {
     d.shape = hull_of(d.shape);

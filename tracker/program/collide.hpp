@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "tracker/dsmc/ntc.hpp"
@@ -21,6 +22,11 @@ class CellCollider {
 
   // The swarm must be sorted by cell. Returns the number of collisions.
   std::int64_t collide(Swarm& swarm, double dt);
+  // Draws from here on from `stream` of `seed` (Simulation::reseed).
+  void reseed(std::uint64_t seed, std::uint64_t stream) { rng_ = dsmc::make_rng(seed, stream); }
+  // Per cell, for rollback and checkpoints.
+  std::span<dsmc::CellCollisionState> cells() { return cells_; }
+  std::span<const dsmc::CellCollisionState> cells() const { return cells_; }
 
  private:
   const Mesh& mesh_;

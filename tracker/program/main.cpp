@@ -1,21 +1,25 @@
 // cosim-tracker: the tracker program.
-//   cosim-tracker --standalone scene.yaml [-o f.h5]    particles among the scene's obstacles
-// Coupled runs (started by `cosim run`, COSIM_ENDPOINT set) come with the tracker's
-// adapter; until then they are refused, so a coupler never waits on a program that will
-// not answer.
+//   started by `cosim run` (COSIM_ENDPOINT set)         a coupled participant (adapter.hpp)
+//   cosim-tracker --standalone scene.yaml [-o f.h5]     particles among the scene's obstacles
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <cstdlib>
 
+#include "participant/run_participant.hpp"
 #include "protocol/client.hpp"
 #include "scene/error.hpp"
+#include "tracker/program/adapter.hpp"
 #include "tracker/program/standalone.hpp"
 
 int main(int argc, char** argv) {
   if (std::getenv(cosim::protocol::kEndpointEnv) != nullptr) {
-    std::fprintf(stderr, "cosim-tracker: coupled runs are not supported yet; run it with --standalone scene.yaml\n");
-    return 1;
+    using cosim::scene::Data;
+    cosim::tracker::TrackerSolver solver;
+    auto client = cosim::protocol::Client::from_environment();
+    // Able to take poses and give forces; the coupler's plan decides what flows.
+    return cosim::participant::run_participant(*client, solver, static_cast<std::uint32_t>(Data::Forces),
+                                               static_cast<std::uint32_t>(Data::Poses));
   }
   CLI::App app{"cosim-tracker: ballistic particles through polyhedral meshes among CSG obstacles"};
   std::string scene, output;

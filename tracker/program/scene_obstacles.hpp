@@ -6,18 +6,31 @@
 //       permeable: false               # optional; true: a zone that only counts crossings
 //       wall: {kind: diffuse, temperature: 300}  # walls only, optional (default specular);
 //                                      # kinds as in scene_walls.hpp, periodic excluded
+//     - name: ball
+//       body: ball                     # optional: moves with this scene body; the gas's
+//                                      # force and torque on it go to the body
+//       # shape: optional with a body: given in the body's frame (origin at its position,
+//       # axes along its orientation); without one, the body's own sphere, box or cylinder
 //
 // Errors are scene::SceneError naming file, line, key and value.
 #pragma once
 
-#include <filesystem>
 #include <vector>
 
 #include "scene/reader.hpp"
+#include "scene/scene.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
 namespace cosim::tracker {
 
-std::vector<Obstacle> read_obstacles(const scene::Reader& options, const std::filesystem::path& scene_file);
+struct SceneObstacles {
+  std::vector<Obstacle> objects;  // bound ones in their body's frame
+  std::vector<int> body;          // per object: its index in scene.bodies, or -1
+};
+
+SceneObstacles read_obstacles(const scene::Reader& options, const scene::Scene& scene);
+
+// Where body b of the scene starts: its frame in the world.
+Eigen::Isometry3d initial_pose(const scene::Body& body);
 
 }  // namespace cosim::tracker

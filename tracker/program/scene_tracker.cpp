@@ -27,10 +27,14 @@ TrackerScene read_tracker(const scene::Scene& scene) {
   } catch (const std::invalid_argument& e) {
     options.fail("boundaries", e.what());
   }
-  std::vector<Obstacle> obstacles = read_obstacles(options, scene.file);
-  if (!obstacles.empty()) {
+  SceneObstacles obstacles = read_obstacles(options, scene);
+  t.obstacle_body = std::move(obstacles.body);
+  if (!obstacles.objects.empty()) {
     try {
-      t.obstacles = Obstacles(*t.mesh, std::move(obstacles));
+      t.obstacles = Obstacles(*t.mesh, std::move(obstacles.objects));
+      for (int i = 0; i < t.obstacles.count(); ++i)
+        if (const int b = t.obstacle_body[static_cast<std::size_t>(i)]; b >= 0)
+          t.obstacles.place(i, initial_pose(scene.bodies[static_cast<std::size_t>(b)]));
     } catch (const std::invalid_argument& e) {
       options.fail("obstacles", e.what());
     }

@@ -19,7 +19,8 @@ struct TrackerScene {
   // On the heap: the domain and the obstacles refer to the mesh, and the whole moves.
   std::unique_ptr<const Mesh> mesh;
   std::unique_ptr<const Domain> domain;
-  Obstacles obstacles;
+  Obstacles obstacles;            // bound ones at their body's initial pose
+  std::vector<int> obstacle_body; // per obstacle: the scene body it moves with, or -1
   Seeding particles;
   std::vector<Inflow> inflows;
   std::optional<Collisions> collisions;

@@ -36,6 +36,21 @@ bool put_back(const Obstacles& obstacles, int o, const Domain& domain, const Vec
 
 }  // namespace
 
+void Obstacles::place(int o, const Eigen::Isometry3d& pose) { reregister(o, pose); }
+
+CellObject Obstacles::reregister(int o, const Eigen::Isometry3d& pose) {
+  const auto i = static_cast<std::size_t>(o);
+  // The new registration first: if it throws (too many primitives in a cell), nothing changed.
+  csg::Tree placed = objects_[i].shape;
+  for (csg::Primitive& primitive : placed.primitives()) primitive.place(pose);
+  CellObject moved(*bounding_, placed);
+  CellObject old = std::exchange(cells_[i], std::move(moved));
+  objects_[i].shape = std::move(placed);
+  poses_[i] = pose;
+  find_active();
+  return old;
+}
+
 long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const Domain& domain, Swarm& swarm,
                          Random& random, ObstacleTally& tally) {
   if (!(dt > 0.0)) throw std::invalid_argument("obstacle '" + object(o).name + "': set_pose needs a time dt > 0");
@@ -43,15 +58,8 @@ long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const 
     throw std::invalid_argument("set_pose: the swarm carries " + std::to_string(swarm.objects()) + " states, " +
                                 std::to_string(count()) + " obstacles");
   const auto i = static_cast<std::size_t>(o);
-  // The new registration first: if it throws (too many primitives in a cell), nothing changed.
-  csg::Tree placed = objects_[i].shape;
-  for (csg::Primitive& primitive : placed.primitives()) primitive.place(pose);
-  CellObject moved(*bounding_, placed);
   const Eigen::Isometry3d old_pose = poses_[i];
-  const CellObject old = std::exchange(cells_[i], std::move(moved));
-  objects_[i].shape = std::move(placed);
-  poses_[i] = pose;
-  find_active();
+  const CellObject old = reregister(o, pose);
 
   // Object-frame point q seen at the old and new pose: the relative motion of a fixed
   // particle is old_pose * pose^-1 * x - x in the old world frame.

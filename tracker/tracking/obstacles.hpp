@@ -97,9 +97,14 @@ class Obstacles {
   long set_pose(int i, const Eigen::Isometry3d& pose, double dt, const Domain& domain, Swarm& swarm, Random& random,
                 ObstacleTally& tally);
   const Eigen::Isometry3d& pose(int i) const { return poses_[static_cast<std::size_t>(i)]; }
+  // Puts object i at `pose` with no particles to follow it: where it starts, before seeding
+  // (its shape given in a body's frame, the body's initial pose).
+  void place(int i, const Eigen::Isometry3d& pose);
 
  private:
   void find_active();
+  // Registers object o at `pose`; returns the registration it had.
+  CellObject reregister(int o, const Eigen::Isometry3d& pose);
 
   const Mesh* bounding_ = nullptr;
   std::vector<Obstacle> objects_;

@@ -1,6 +1,8 @@
 #include "tracker/tracking/sampling.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace cosim::tracker {
 
@@ -35,6 +37,26 @@ void CellSampler::reset() {
   std::fill(square_.begin(), square_.end(), 0.0);
   std::fill(sum_.begin(), sum_.end(), Vec3::Zero());
   samples_ = 0;
+}
+
+std::vector<double> CellSampler::sums() const {
+  std::vector<double> out{static_cast<double>(samples_)};
+  out.reserve(1 + 5 * count_.size());
+  for (std::size_t c = 0; c < count_.size(); ++c) out.insert(out.end(), {count_[c], square_[c], sum_[c].x(), sum_[c].y(), sum_[c].z()});
+  return out;
+}
+
+void CellSampler::set_sums(std::span<const double> sums) {
+  if (sums.size() != 1 + 5 * count_.size())
+    throw std::invalid_argument("CellSampler::set_sums: " + std::to_string(sums.size()) + " values for " +
+                                std::to_string(count_.size()) + " cells");
+  samples_ = static_cast<int>(sums[0]);
+  for (std::size_t c = 0; c < count_.size(); ++c) {
+    const double* s = sums.data() + 1 + 5 * c;
+    count_[c] = s[0];
+    square_[c] = s[1];
+    sum_[c] = {s[2], s[3], s[4]};
+  }
 }
 
 }  // namespace cosim::tracker

@@ -5,6 +5,7 @@
 
 #include "tracker/tracking/swarm.hpp"
 
+#include <span>
 #include <vector>
 
 namespace cosim::tracker {
@@ -27,6 +28,11 @@ class CellSampler {
   CellMoments moments(Index cell, double mass, double weight) const;
   // Starts a new average.
   void reset();
+  // The sums as one array: the sample count, then per cell its simulator count, sum of
+  // |v|^2 and sum of v (x, y, z). For rollback, checkpoints and sums over ranks.
+  std::vector<double> sums() const;
+  // std::invalid_argument unless `sums` has the layout of sums() for this mesh.
+  void set_sums(std::span<const double> sums);
 
  private:
   std::vector<double> volume_;

@@ -1,0 +1,87 @@
+#include "tracker/program/adapter.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "participant/poses_at.hpp"
+#include "protocol/message.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+constexpr std::size_t kPoseWidth = protocol::kPoseWidth;
+constexpr std::size_t kForceWidth = protocol::kForceWidth;
+
+Eigen::Isometry3d pose_of(const std::vector<double>& poses, std::size_t body) {
+  const double* v = poses.data() + kPoseWidth * body;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translate(Eigen::Vector3d(v[0], v[1], v[2]));
+  pose.rotate(Eigen::Quaterniond(v[3], v[4], v[5], v[6]).normalized());
+  return pose;
+}
+
+}  // namespace
+
+participant::Outputs TrackerSolver::initialise(const scene::Scene& scene, const std::string&,
+                                               const std::vector<double>& poses, const std::vector<double>& state) {
+  bodies_ = scene.bodies.size();
+  check_size(poses);
+  // The coupler's poses (the rigid-body program's) win over the scene's.
+  std::vector<Eigen::Isometry3d> placed;
+  for (std::size_t b = 0; b < poses.size() / kPoseWidth; ++b) placed.push_back(pose_of(poses, b));
+  gas_ = std::make_unique<Simulation>(scene, placed);
+  dt_ = gas_->setup().dt;
+  if (!state.empty()) restore(state);
+  return {{}, std::vector<double>(kForceWidth * bodies_, 0.0), 0};
+}
+
+void TrackerSolver::check_size(const std::vector<double>& poses) const {
+  if (!poses.empty() && poses.size() != kPoseWidth * bodies_)
+    throw std::runtime_error("poses for " + std::to_string(poses.size() / kPoseWidth) + " bodies, the scene has " +
+                             std::to_string(bodies_));
+}
+
+participant::Outputs TrackerSolver::advance(const participant::Window& w, const participant::Inputs& in) {
+  const double span = w.t1 - w.t0;
+  if (!(span > 0)) throw std::runtime_error("window of length " + std::to_string(span) + " s");
+  const auto steps = static_cast<int>(std::max(1.0, std::ceil(span / dt_ - 1e-9)));
+  const double h = span / steps;
+  gas_->reseed(w.index);
+  const std::vector<ObstacleTally> before(gas_->tallies().begin(), gas_->tallies().end());
+  const std::vector<int>& body_of = gas_->setup().obstacle_body;
+  for (int k = 1; k <= steps; ++k) {
+    if (!in.poses_start.empty()) {
+      const std::vector<double> poses = participant::poses_at(in, w, w.t0 + k * h);
+      check_size(poses);
+      for (std::size_t i = 0; i < body_of.size(); ++i)
+        if (body_of[i] >= 0) gas_->move_obstacle(static_cast<int>(i), pose_of(poses, static_cast<std::size_t>(body_of[i])), h);
+    }
+    gas_->step(h);
+  }
+  if (gas_->moves().lost > 0)
+    throw std::runtime_error(std::to_string(gas_->moves().lost) + " particles lost (outside their cells) by t = " +
+                             std::to_string(w.t1) + " s: a tracking bug");
+
+  // Per unit particle mass in the tallies; times mass and weight is momentum.
+  const double scale = gas_->setup().particles.mass * gas_->setup().particles.weight / span;
+  std::vector<double> forces(kForceWidth * bodies_, 0.0);
+  for (std::size_t i = 0; i < body_of.size(); ++i) {
+    if (body_of[i] < 0) continue;
+    const ObstacleTally& now = gas_->tallies()[i];
+    const Vec3 force = scale * (now.impulse - before[i].impulse);
+    const Vec3 torque = scale * (now.angular_impulse - before[i].angular_impulse);
+    double* f = forces.data() + kForceWidth * static_cast<std::size_t>(body_of[i]);
+    for (int k = 0; k < 3; ++k) {
+      f[k] += force[k];
+      f[3 + k] += torque[k];
+    }
+  }
+  return {{}, forces, static_cast<double>(steps)};
+}
+
+std::vector<double> TrackerSolver::state() const { return gas_->state(); }
+
+void TrackerSolver::restore(const std::vector<double>& state) { gas_->restore(state); }
+
+}  // namespace cosim::tracker

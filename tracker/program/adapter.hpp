@@ -1,0 +1,38 @@
+// cosim-tracker as a participant: the gas of the scene's tracker section, advanced window
+// by window. It needs the bodies' poses (obstacles bound to a body move with it) and
+// provides the gas's force and torque on each body (protocol::kForceWidth values per body,
+// zero for a body no obstacle is bound to).
+#pragma once
+
+#include <memory>
+
+#include "participant/solver.hpp"
+#include "tracker/program/simulation.hpp"
+
+namespace cosim::tracker {
+
+class TrackerSolver final : public participant::Solver {
+ public:
+  participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
+                                  const std::vector<double>& poses, const std::vector<double>& state) override;
+  // Subcycles to exactly w.t1 in equal steps of at most the participant's dt; before each
+  // step the bound obstacles move to their body's pose at the step's end (inputs
+  // interpolated in the window). Random draws come from the window's own stream
+  // (Simulation::reseed), so a repeated window with the same inputs gives the same
+  // forces. The forces are the momentum and its moment the hits gave each body in the
+  // window, over the window's length: the window's mean.
+  participant::Outputs advance(const participant::Window& w, const participant::Inputs& in) override;
+  std::vector<double> state() const override;
+  void restore(const std::vector<double>& state) override;
+
+  const Simulation& gas() const { return *gas_; }
+
+ private:
+  void check_size(const std::vector<double>& poses) const;
+
+  std::unique_ptr<Simulation> gas_;
+  std::size_t bodies_ = 0;
+  double dt_ = 0.0;
+};
+
+}  // namespace cosim::tracker

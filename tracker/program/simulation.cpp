@@ -1,0 +1,227 @@
+#include "tracker/program/simulation.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <stdexcept>
+#include <string>
+
+namespace cosim::tracker {
+namespace {
+
+// State arrays are doubles (they cross the wire and go into checkpoints as such): whole
+// numbers up to 2^53 are exact; a 64-bit logical state goes as its two 32-bit halves.
+class StateOut {
+ public:
+  void put(double x) { values.push_back(x); }
+  void put_bits(std::uint64_t bits) {
+    put(static_cast<double>(bits >> 32));
+    put(static_cast<double>(bits & 0xffffffffu));
+  }
+  std::vector<double> values;
+};
+
+class StateIn {
+ public:
+  explicit StateIn(std::span<const double> values) : values_(values) {}
+  double get() {
+    if (at_ == values_.size()) throw std::runtime_error("tracker state: ends early (not this scene's?)");
+    return values_[at_++];
+  }
+  std::uint64_t get_bits() {
+    const auto high = static_cast<std::uint64_t>(get());
+    return high << 32 | static_cast<std::uint64_t>(get());
+  }
+  template <typename T>
+  T get_count() { return static_cast<T>(get()); }
+  void expect(double value, const char* what) {
+    if (const double found = get(); found != value)
+      throw std::runtime_error(std::string("tracker state: ") + what + " " + std::to_string(found) + ", the scene has " +
+                               std::to_string(value));
+  }
+  void finish() const {
+    if (at_ != values_.size()) throw std::runtime_error("tracker state: longer than this scene's");
+  }
+
+ private:
+  std::span<const double> values_;
+  std::size_t at_ = 0;
+};
+
+// Bumped when the layout changes, so an old checkpoint is refused, not misread.
+constexpr double kStateVersion = 1;
+
+void put_tally(StateOut& out, const ObstacleTally& t) {
+  for (long long n : {t.hits, t.absorbed, t.entered, t.left, t.released, t.overrun}) out.put(static_cast<double>(n));
+  for (const Vec3* v : {&t.impulse, &t.angular_impulse})
+    for (int k = 0; k < 3; ++k) out.put((*v)[k]);
+  out.put(t.energy);
+}
+
+ObstacleTally get_tally(StateIn& in) {
+  ObstacleTally t;
+  for (long long* n : {&t.hits, &t.absorbed, &t.entered, &t.left, &t.released, &t.overrun}) *n = in.get_count<long long>();
+  for (Vec3* v : {&t.impulse, &t.angular_impulse})
+    for (int k = 0; k < 3; ++k) (*v)[k] = in.get();
+  t.energy = in.get();
+  return t;
+}
+
+// MoveTally's counters in declaration order.
+auto move_counters(MoveTally& m) {
+  return std::array{&m.moves,    &m.faces_crossed, &m.zero_time_events, &m.boundary_hits,
+                    &m.relocations, &m.cycles_broken, &m.stalled,        &m.removed,
+                    &m.lost,     &m.object_events, &m.primitive_tests};
+}
+
+TrackerScene placed(TrackerScene setup, const std::vector<Eigen::Isometry3d>& body_poses) {
+  if (body_poses.empty()) return setup;
+  for (int i = 0; i < setup.obstacles.count(); ++i)
+    if (const int b = setup.obstacle_body[static_cast<std::size_t>(i)]; b >= 0) {
+      if (static_cast<std::size_t>(b) >= body_poses.size())
+        throw std::runtime_error("poses for " + std::to_string(body_poses.size()) + " bodies, obstacle '" +
+                                 setup.obstacles.object(i).name + "' is bound to body " + std::to_string(b));
+      setup.obstacles.place(i, body_poses[static_cast<std::size_t>(b)]);
+    }
+  return setup;
+}
+
+}  // namespace
+
+Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isometry3d>& body_poses)
+    : setup_(placed(read_tracker(scene), body_poses)),
+      seed_(setup_.particles.seed),
+      random_(seed_),
+      swarm_(seed_particles(*setup_.mesh, setup_.obstacles, setup_.particles, random_)),
+      sampler_(*setup_.mesh),
+      tallies_(static_cast<std::size_t>(setup_.obstacles.count())),
+      seeded_(swarm_.size()) {
+  if (setup_.collisions) {
+    // The first (sigma g)_max per cell: at the hottest temperature the scene gives.
+    double hottest = setup_.particles.temperature;
+    for (const Inflow& inflow : setup_.inflows) hottest = std::max(hottest, inflow.temperature());
+    collider_.emplace(*setup_.mesh, *setup_.collisions, std::max(hottest, 1.0), setup_.particles.weight, seed_);
+  }
+  sampler_.sample(swarm_);
+}
+
+void Simulation::reseed(std::uint64_t stream) {
+  std::seed_seq walls{seed_, stream};
+  random_.seed(walls);
+  if (collider_) collider_->reseed(seed_, stream);
+}
+
+void Simulation::move_obstacle(int i, const Eigen::Isometry3d& pose, double dt) {
+  setup_.obstacles.set_pose(i, pose, dt, *setup_.domain, swarm_, random_, tallies_[static_cast<std::size_t>(i)]);
+}
+
+void Simulation::step(double dt) {
+  // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
+  swarm_.sort_by_cell(mesh().cell_count());
+  if (collider_) collisions_ += collider_->collide(swarm_, dt);
+  swarm_.move_all(*setup_.domain, setup_.obstacles, dt, random_, moves_, tallies_);
+  for (const Inflow& inflow : setup_.inflows)
+    injected_ += static_cast<std::size_t>(
+        inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_, tallies_));
+  sampler_.sample(swarm_);
+  ++steps_;
+}
+
+std::vector<double> Simulation::counts() const {
+  std::vector<double> count(static_cast<std::size_t>(mesh().cell_count()), 0.0);
+  for (std::size_t i = 0; i < swarm_.size(); ++i) count[static_cast<std::size_t>(swarm_.cell(i))] += 1.0;
+  return count;
+}
+
+std::vector<CellMoments> Simulation::take_moments() {
+  std::vector<CellMoments> moments;
+  for (Index c = 0; c < mesh().cell_count(); ++c)
+    moments.push_back(sampler_.moments(c, setup_.particles.mass, setup_.particles.weight));
+  sampler_.reset();
+  return moments;
+}
+
+std::vector<double> Simulation::state() const {
+  StateOut out;
+  const int objects = setup_.obstacles.count();
+  out.put(kStateVersion);
+  out.put(objects);
+  out.put(static_cast<double>(mesh().cell_count()));
+  out.put(static_cast<double>(steps_));
+  out.put(static_cast<double>(seeded_));
+  out.put(static_cast<double>(injected_));
+  out.put(static_cast<double>(collisions_));
+  out.put(static_cast<double>(swarm_.size()));
+  for (std::size_t i = 0; i < swarm_.size(); ++i) {
+    const Particle p = swarm_.particle(i);
+    for (int k = 0; k < 3; ++k) out.put(p.x[k]);
+    for (int k = 0; k < 3; ++k) out.put(p.v[k]);
+    out.put(p.cell);
+    for (csg::State s : swarm_.states(i)) out.put_bits(s);
+  }
+  for (int o = 0; o < objects; ++o) {
+    const Eigen::Isometry3d& pose = setup_.obstacles.pose(o);
+    const Eigen::Quaterniond q(pose.rotation());
+    for (double x : {pose.translation().x(), pose.translation().y(), pose.translation().z(), q.w(), q.x(), q.y(), q.z()})
+      out.put(x);
+    put_tally(out, tallies_[static_cast<std::size_t>(o)]);
+  }
+  MoveTally moves = moves_;
+  for (long long* n : move_counters(moves)) out.put(static_cast<double>(*n));
+  if (collider_)
+    for (const dsmc::CellCollisionState& c : collider_->cells()) {
+      out.put(c.sigma_g_max);
+      out.put(c.remainder);
+    }
+  for (double x : sampler_.sums()) out.put(x);
+  return std::move(out.values);
+}
+
+void Simulation::restore(std::span<const double> state) {
+  StateIn in(state);
+  const int objects = setup_.obstacles.count();
+  in.expect(kStateVersion, "layout version");
+  in.expect(objects, "obstacles");
+  in.expect(static_cast<double>(mesh().cell_count()), "cells");
+  steps_ = in.get_count<std::uint64_t>();
+  seeded_ = in.get_count<std::size_t>();
+  injected_ = in.get_count<std::size_t>();
+  collisions_ = in.get_count<std::int64_t>();
+  Swarm swarm(objects);
+  std::vector<csg::State> states(static_cast<std::size_t>(objects));
+  for (auto n = in.get_count<std::size_t>(); n > 0; --n) {
+    Particle p;
+    for (int k = 0; k < 3; ++k) p.x[k] = in.get();
+    for (int k = 0; k < 3; ++k) p.v[k] = in.get();
+    p.cell = in.get_count<Index>();
+    if (p.cell < 0 || p.cell >= mesh().cell_count()) throw std::runtime_error("tracker state: a particle in no cell");
+    for (csg::State& s : states) s = in.get_bits();
+    swarm.add(p, states);
+  }
+  for (int o = 0; o < objects; ++o) {
+    Eigen::Vector3d x;
+    for (int k = 0; k < 3; ++k) x[k] = in.get();
+    Eigen::Quaterniond q;
+    q.w() = in.get();
+    q.x() = in.get();
+    q.y() = in.get();
+    q.z() = in.get();
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translate(x);
+    pose.rotate(q);
+    setup_.obstacles.place(o, pose);
+    tallies_[static_cast<std::size_t>(o)] = get_tally(in);
+  }
+  for (long long* n : move_counters(moves_)) *n = in.get_count<long long>();
+  if (collider_)
+    for (dsmc::CellCollisionState& c : collider_->cells()) {
+      c.sigma_g_max = in.get();
+      c.remainder = in.get();
+    }
+  std::vector<double> sums(sampler_.sums().size());
+  for (double& x : sums) x = in.get();
+  in.finish();
+  sampler_.set_sums(sums);
+  swarm_ = std::move(swarm);
+}
+
+}  // namespace cosim::tracker

@@ -1,0 +1,76 @@
+// The gas of a scene as cosim-tracker advances it, the same standalone and coupled: the
+// particles, their collisions, inflow, walls and obstacles, and what is sampled of them.
+// One step (step()) is what DSMC codes do per time step: sort by cell, collide, move,
+// inject, sample.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "tracker/program/collide.hpp"
+#include "tracker/program/scene_tracker.hpp"
+#include "tracker/tracking/sampling.hpp"
+
+namespace cosim::tracker {
+
+class Simulation {
+ public:
+  // Reads the scene's tracker section (scene::SceneError if it is bad) and seeds the
+  // particles with the scene's seed, around the obstacles bound to bodies at `body_poses`
+  // (one per scene body, world from body frame) or, if none are given, where the scene
+  // puts the bodies.
+  explicit Simulation(const scene::Scene& scene, const std::vector<Eigen::Isometry3d>& body_poses = {});
+
+  const TrackerScene& setup() const { return setup_; }
+  const Mesh& mesh() const { return *setup_.mesh; }
+  const Swarm& swarm() const { return swarm_; }
+
+  // Every random draw from here on comes from `stream` of the scene's seed: a coupled run
+  // reseeds at each window, so a repeated window draws the same numbers and a run resumed
+  // from a checkpoint continues as it would have.
+  void reseed(std::uint64_t stream);
+  // Moves obstacle i to `pose` (world from its shape's frame) over the time dt, before the
+  // step that covers that time (Obstacles::set_pose).
+  void move_obstacle(int i, const Eigen::Isometry3d& pose, double dt);
+  // One step of length dt.
+  void step(double dt);
+
+  // Totals since the start.
+  std::uint64_t steps() const { return steps_; }
+  std::size_t seeded() const { return seeded_; }
+  std::size_t injected() const { return injected_; }  // through inflow patches
+  std::int64_t collisions() const { return collisions_; }
+  const MoveTally& moves() const { return moves_; }
+  std::span<const ObstacleTally> tallies() const { return tallies_; }
+
+  // Particles per cell now.
+  std::vector<double> counts() const;
+  // The per-cell moments averaged over the steps since the last call (or the start), then
+  // a new average begins.
+  std::vector<CellMoments> take_moments();
+
+  // Everything a later restore() needs to continue exactly from here (with the same
+  // reseed() calls): particles and states, obstacle poses, collision state per cell, the
+  // sampler's sums and the totals. Random generators are not in it (see reseed()).
+  std::vector<double> state() const;
+  // std::runtime_error for a state that is not one of this scene's.
+  void restore(std::span<const double> state);
+
+ private:
+  TrackerScene setup_;
+  std::uint64_t seed_;
+  Random random_;
+  Swarm swarm_;
+  CellSampler sampler_;
+  std::optional<CellCollider> collider_;
+  std::vector<ObstacleTally> tallies_;
+  MoveTally moves_;
+  std::uint64_t steps_ = 0;
+  std::size_t seeded_ = 0, injected_ = 0;
+  std::int64_t collisions_ = 0;
+};
+
+}  // namespace cosim::tracker
