@@ -47,6 +47,7 @@ CellObject Obstacles::reregister(int o, const Eigen::Isometry3d& pose) {
   CellObject old = std::exchange(cells_[i], std::move(moved));
   objects_[i].shape = std::move(placed);
   poses_[i] = pose;
+  motions_[i] = {};
   find_active();
   return old;
 }
@@ -58,6 +59,11 @@ long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const 
     throw std::invalid_argument("set_pose: the swarm carries " + std::to_string(swarm.objects()) + " states, " +
                                 std::to_string(count()) + " obstacles");
   const auto i = static_cast<std::size_t>(o);
+  // A body that is sent every step but holds still (fixed, or resting) costs nothing.
+  if (pose.matrix() == poses_[i].matrix()) {
+    motions_[i] = {};
+    return 0;
+  }
   const Eigen::Isometry3d old_pose = poses_[i];
   const CellObject old = reregister(o, pose);
 
@@ -65,6 +71,7 @@ long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const 
   // particle is old_pose * pose^-1 * x - x in the old world frame.
   const Eigen::Isometry3d back = old_pose * pose.inverse();
   const Eigen::Isometry3d forward = pose * old_pose.inverse();
+  motions_[i] = {back, dt};
   const bool wall = !objects_[i].permeable;
   long overrun = 0;
   std::vector<bool> removed(swarm.size(), false);
@@ -92,7 +99,7 @@ long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const 
     // Where the surface met the particle, now: that material point at the new pose.
     const Vec3 met = forward * (p.x + swept.at * (back * p.x - p.x));
     const Vec3 n = forward.linear() * swept.normal;
-    const Vec3 u = (met - back * met) / dt;
+    const Vec3 u = velocity_at(o, met);
     const Vec3 v = p.v;
     if (!put_back(*this, o, domain, met, n, u, p, states, random, tally)) {
       tally.exchange(met, pose.translation(), v, Vec3::Zero());

@@ -67,6 +67,7 @@ Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const 
     emits_ = emits_ || (!object.permeable && re_emits(object.wall));
     cells_.emplace_back(bounding, object.shape);
     poses_.push_back(Eigen::Isometry3d::Identity());
+    motions_.emplace_back();
   }
   find_active();
 }

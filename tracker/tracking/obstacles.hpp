@@ -97,6 +97,13 @@ class Obstacles {
   long set_pose(int i, const Eigen::Isometry3d& pose, double dt, const Domain& domain, Swarm& swarm, Random& random,
                 ObstacleTally& tally);
   const Eigen::Isometry3d& pose(int i) const { return poses_[static_cast<std::size_t>(i)]; }
+  // The velocity of object i's material point at x during the step after its last
+  // set_pose: that point's displacement over that call's dt (0 after place()). Walls
+  // reflect particles in this moving frame.
+  Vec3 velocity_at(int i, const Vec3& x) const {
+    const Motion& m = motions_[static_cast<std::size_t>(i)];
+    return m.dt > 0 ? Vec3((x - m.back * x) / m.dt) : Vec3::Zero();
+  }
   // Puts object i at `pose` with no particles to follow it: where it starts, before seeding
   // (its shape given in a body's frame, the body's initial pose).
   void place(int i, const Eigen::Isometry3d& pose);
@@ -109,6 +116,12 @@ class Obstacles {
   const Mesh* bounding_ = nullptr;
   std::vector<Obstacle> objects_;
   std::vector<Eigen::Isometry3d> poses_;
+  // The last set_pose of each object: new-pose point back to where it was, and over what time.
+  struct Motion {
+    Eigen::Isometry3d back = Eigen::Isometry3d::Identity();
+    double dt = 0.0;
+  };
+  std::vector<Motion> motions_;
   std::vector<CellObject> cells_;
   std::vector<Index> bounding_cell_;
   bool emits_ = false;  // asked on every move

@@ -3,6 +3,7 @@
 // eq. 7.66; its small-s limit is Epstein's drag with 1 + pi/8) at several speed ratios.
 
 #include "tracker/csg/shapes.hpp"
+#include "tracker/dsmc/free_molecular.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/tracking/inflow.hpp"
 
@@ -14,14 +15,6 @@
 
 namespace cosim::tracker {
 namespace {
-
-// C_D of a sphere, diffuse reflection with full accommodation at T_w, speed ratio s.
-double sphere_drag_coefficient(double s, double wall_over_gas_temperature) {
-  const double pi = std::numbers::pi, root_pi = std::sqrt(pi);
-  return (2 * s * s + 1) / (root_pi * s * s * s) * std::exp(-s * s) +
-         (4 * s * s * s * s + 4 * s * s - 1) / (2 * s * s * s * s) * std::erf(s) +
-         2 * root_pi / (3 * s) * std::sqrt(wall_over_gas_temperature);
-}
 
 TEST(FreeMolecularDrag, SphereMatchesTheClosedFormAtSeveralSpeedRatios) {
   // Units where c_mp = 1: mass 2 k_B, T = 1 K; unit radius; the box just holds the ball.
@@ -47,7 +40,7 @@ TEST(FreeMolecularDrag, SphereMatchesTheClosedFormAtSeveralSpeedRatios) {
     }
     // Force per unit particle mass and weight: the x impulse over the measured time.
     const double drag = tally[0].impulse.x() / (measured * dt);
-    const double expected = sphere_drag_coefficient(s, 1.0) * 0.5 * density * s * s * std::numbers::pi;
+    const double expected = dsmc::sphere_drag_coefficient(s, 1.0) * 0.5 * density * s * s * std::numbers::pi;
     std::printf("free-molecular sphere, s = %.1f: drag %.1f, Bird %.1f (%+.2f %%), side force %.1f, %lld hits, lost %lld\n",
                 s, drag, expected, 100.0 * (drag / expected - 1.0), tally[0].impulse.tail<2>().norm() / (measured * dt),
                 tally[0].hits, moves.lost);

@@ -43,8 +43,22 @@ bool execute(const Carried& carried, double mass, Particle& p, const ObjectEvent
   ++tally.hits;
   const Vec3 before = p.v;
   // The gas is outside the wall: the object's outward normal points into the domain.
-  const Vec3 origin = carried.obstacles->pose(hit.object).translation();
-  if (!hit_wall(carried.obstacles->object(hit.object).wall, mass, event.normal, p.v, random)) {
+  const Obstacles& obstacles = *carried.obstacles;
+  const Vec3 origin = obstacles.pose(hit.object).translation();
+  const BoundaryCondition& wall = obstacles.object(hit.object).wall;
+  // Reflected in the frame of the moving wall. The wall stands still within a step, so a
+  // particle may meet a receding surface that it could not catch: if the reflection in the
+  // moving frame still heads into the standing surface, it is reflected off the surface at
+  // rest instead (rare: a wall receding at a thermal speed).
+  const Vec3 u = obstacles.velocity_at(hit.object, p.x);
+  Vec3 relative = p.v - u;
+  const bool kept = hit_wall(wall, mass, event.normal, relative, random);
+  if (kept) p.v = u + relative;
+  if (kept && p.v.dot(event.normal) <= 0.0) {
+    p.v = before;
+    hit_wall(wall, mass, event.normal, p.v, random);
+  }
+  if (!kept) {
     ++tally.absorbed;
     tally.exchange(p.x, origin, before, Vec3::Zero());
     result.removed = true;

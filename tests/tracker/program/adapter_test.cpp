@@ -1,0 +1,121 @@
+// cosim-tracker's participant adapter driven as the coupler drives it: a ball bound to a
+// body that the inputs move through gas at rest feels the free-molecular drag, a repeated
+// window after restore() gives the same forces to the bit, and bodies without an obstacle
+// feel nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "protocol/message.hpp"
+#include "scene/scene.hpp"
+#include "tracker/constants.hpp"
+#include "tracker/dsmc/free_molecular.hpp"
+#include "tracker/program/adapter.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+constexpr std::size_t kPose = protocol::kPoseWidth, kForce = protocol::kForceWidth;
+
+// Gas at 1 K with mass 2 k_B (most probable speed 1 m/s), at rest in a periodic box of
+// 16 x 10 x 10 cells of 0.5 m, 100 simulators per cell; no collisions (free-molecular). The
+// ball (radius 0.8, diffuse at 1 K) is bound to body `ball`; `idle` has no obstacle.
+scene::Scene moving_ball_scene() {
+  return scene::load_scene_from_string(R"(
+time: {end: 1.5}
+coupling: {window: 0.25}
+domain: {min: [-4, -2.5, -2.5], max: [4, 2.5, 2.5]}
+effects: [rarefied_gas]
+bodies:
+  - {name: idle, shape: {type: sphere, radius: 0.1}, fixed: true, position: [3, 2, 2]}
+  - {name: ball, shape: {type: sphere, radius: 0.8}, fixed: true, position: [-2, 0, 0]}
+participants:
+  tracker:
+    dt: 0.05
+    options:
+      mesh: {type: box, cells: [16, 10, 10], periodic: [true, true, true]}
+      obstacles:
+        - {name: ball, body: ball, wall: {kind: diffuse, temperature: 1}}
+      particles: {per_cell: 100, temperature: 1, mass: 2.761298e-23, seed: 3}
+)",
+                                       "moving_ball.yaml");
+}
+
+// Both bodies' poses with the ball's centre at x along the x axis, moving at u.
+std::vector<double> poses(double x, double u) {
+  std::vector<double> p(2 * kPose, 0.0);
+  p[0] = 3, p[1] = 2, p[2] = 2, p[3] = 1;
+  p[kPose + 0] = x, p[kPose + 3] = 1, p[kPose + 7] = u;
+  return p;
+}
+
+participant::Inputs window_inputs(const participant::Window& w, double x0, double u) {
+  return {poses(x0 + u * w.t0, u), poses(x0 + u * w.t1, u), {}, {}};
+}
+
+TEST(TrackerAdapter, BallMovedThroughGasAtRestFeelsTheFreeMolecularDrag) {
+  const scene::Scene scene = moving_ball_scene();
+  TrackerSolver solver;
+  const double x0 = -2.0, u = 2.0;  // speed ratio 2
+  solver.initialise(scene, "tracker", poses(x0, u), {});
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
+  const int windows = 6;
+  for (int k = 0; k < windows; ++k) {
+    const participant::Window w{static_cast<std::uint64_t>(k), 1, 0.25 * k, 0.25 * (k + 1)};
+    const participant::Outputs out = solver.advance(w, window_inputs(w, x0, u));
+    ASSERT_EQ(out.forces.size(), 2 * kForce);
+    EXPECT_EQ(out.substeps, 5);
+    for (std::size_t c = 0; c < kForce; ++c) EXPECT_EQ(out.forces[c], 0.0) << "idle body, component " << c;
+    force += Eigen::Vector3d(out.forces.data() + kForce) / windows;
+    torque += Eigen::Vector3d(out.forces.data() + kForce + 3) / windows;
+  }
+  const double mass = 2.761298e-23, density = 100 / 0.125, radius = 0.8;
+  const double expected =
+      dsmc::sphere_drag_coefficient(u, 1.0) * 0.5 * density * mass * u * u * std::numbers::pi * radius * radius;
+  std::printf("ball at speed ratio 2 through gas at rest: drag %.4g N, Bird %.4g N (%+.2f %%), side %.3g N, torque %.3g N m\n",
+              -force.x(), expected, 100 * (-force.x() / expected - 1), force.tail<2>().norm(), torque.norm());
+  // About 3e4 hits, so a statistical error near 1 %.
+  EXPECT_NEAR(-force.x() / expected, 1.0, 0.04);
+  EXPECT_LT(force.tail<2>().norm(), 0.04 * expected);
+  EXPECT_LT(torque.norm(), 0.04 * expected * radius);
+  EXPECT_EQ(solver.gas().moves().lost, 0);
+  for (const ObstacleTally& t : solver.gas().tallies()) EXPECT_EQ(t.released, 0);
+}
+
+TEST(TrackerAdapter, RepeatedWindowAfterRestoreGivesTheSameForcesToTheBit) {
+  const scene::Scene scene = moving_ball_scene();
+  TrackerSolver solver;
+  solver.initialise(scene, "tracker", poses(-2, 2), {});
+  const participant::Window first{0, 1, 0.0, 0.25}, second{1, 1, 0.25, 0.5};
+  solver.advance(first, window_inputs(first, -2, 2));
+  const std::vector<double> start = solver.state();
+  const participant::Outputs once = solver.advance(second, window_inputs(second, -2, 2));
+  const std::vector<double> end = solver.state();
+  solver.restore(start);
+  EXPECT_EQ(solver.state(), start);
+  const participant::Window again{1, 2, 0.25, 0.5};
+  const participant::Outputs twice = solver.advance(again, window_inputs(again, -2, 2));
+  EXPECT_EQ(twice.forces, once.forces);
+  EXPECT_EQ(solver.state(), end);
+  EXPECT_NE(once.forces[kForce], 0.0);
+
+  // A fresh solver resumed from the state continues the same way (a checkpoint).
+  TrackerSolver resumed;
+  resumed.initialise(scene, "tracker", poses(-2, 2), start);
+  EXPECT_EQ(resumed.advance(second, window_inputs(second, -2, 2)).forces, once.forces);
+}
+
+TEST(TrackerAdapter, StateOfAnotherSceneIsRefused) {
+  TrackerSolver solver;
+  solver.initialise(moving_ball_scene(), "tracker", poses(-2, 0), {});
+  std::vector<double> state = solver.state();
+  state.pop_back();
+  EXPECT_THROW(solver.restore(state), std::runtime_error);
+  state.push_back(0.0);
+  state[0] = 99;  // layout version
+  EXPECT_THROW(solver.restore(state), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace cosim::tracker

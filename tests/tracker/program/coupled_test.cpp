@@ -1,0 +1,94 @@
+// cosim-tracker through `cosim run`, as a user runs it: the tracker alone with a fixed
+// sphere in a free-molecular stream (the force in the run file against Bird's drag), and
+// with the rigid-body program, which the gas's force then pushes downstream.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cosim_process.hpp"
+#include "h5_read.hpp"
+#include "tracker/dsmc/free_molecular.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+// Argon at 300 K streaming at 2500 m/s (speed ratio 7.1) through an open box of 11^3 cells
+// at 7.03e18 m^-3, seeded as the stream and fed on every side, so the flow is steady from
+// the start; no collisions (free-molecular); the sphere re-emits diffusely at 300 K.
+std::string stream_scene(bool fixed) {
+  return std::string(R"(
+time: {end: 1.0e-3}
+coupling: {window: 2.5e-4, scheme: serial-explicit}
+domain: {min: [-2.5, -2.5, -2.5], max: [2.5, 2.5, 2.5]}
+effects: [rarefied_gas]
+bodies:
+  - name: sphere
+    shape: {type: sphere, radius: 1}
+    position: [0, 0, 0]
+    material: {density: 1.0e-4}
+)") + (fixed ? "    fixed: true\n" : "") + R"(
+participants:
+  rigidbody:
+    dt: 2.5e-5
+  tracker:
+    dt: 1.0e-5
+    options:
+      mesh: {type: box, cells: [11, 11, 11]}
+      boundaries: {default: {kind: open}}
+      inflow:
+        - patches: [x_min, x_max, y_min, y_max, z_min, z_max]
+          number_density: 7.03e18
+          velocity: [2500, 0, 0]
+          temperature: 300
+      obstacles:
+        - {name: sphere, body: sphere, wall: {kind: diffuse, temperature: 300}}
+      particles: {per_cell: 40, temperature: 300, drift: [2500, 0, 0], mass: 6.63e-26, weight: 1.6595e16, seed: 5}
+)";
+}
+
+double bird_drag() {
+  const double mass = 6.63e-26, n = 7.03e18, u = 2500, boltzmann = 1.380649e-23;
+  const double s = u / std::sqrt(2 * boltzmann * 300 / mass);
+  return dsmc::sphere_drag_coefficient(s, 1.0) * 0.5 * n * mass * u * u * std::numbers::pi;
+}
+
+TEST(TrackerCoupled, FixedSphereAloneInAStreamGetsBirdsDragInTheRunFile) {
+  const auto dir = testing::scratch_dir("tracker_alone");
+  const testing::Finished run = testing::run_scene_text(dir, stream_scene(true));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("participants: tracker"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("rigidbody ("), std::string::npos) << "a fixed body needs no rigid-body program";
+  const testing::Series force = testing::read_series(dir / "scene.h5", "/bodies/sphere/force");
+  ASSERT_EQ(force.rows, 5u);  // the start and 4 windows
+  double drag = 0;
+  for (std::size_t k = 1; k < force.rows; ++k) drag += force.at(k, 0) / 4;
+  std::printf("fixed sphere in the stream through cosim run: drag %.3f N, Bird %.3f N (%+.2f %%)\n", drag, bird_drag(),
+              100 * (drag / bird_drag() - 1));
+  // About 3500 hits in all: 2 % statistical error.
+  EXPECT_NEAR(drag / bird_drag(), 1.0, 0.08);
+  EXPECT_LT(std::abs(force.at(4, 1)) + std::abs(force.at(4, 2)), 0.1 * bird_drag());
+}
+
+TEST(TrackerCoupled, FreeSpherePushedByTheGasGainsTheMomentumOfItsForces) {
+  const auto dir = testing::scratch_dir("tracker_rigidbody");
+  const testing::Finished run = testing::run_scene_text(dir, stream_scene(false));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("rigidbody"), std::string::npos) << run.output;
+  const testing::Series force = testing::read_series(dir / "scene.h5", "/bodies/sphere/force");
+  const testing::Series velocity = testing::read_series(dir / "scene.h5", "/bodies/sphere/velocity");
+  const testing::Series position = testing::read_series(dir / "scene.h5", "/bodies/sphere/position");
+  ASSERT_EQ(force.rows, 5u);
+  // Serial-explicit: each window's force, held, moves the body in the next one.
+  const double mass = 1.0e-4 * 4.0 / 3.0 * std::numbers::pi;
+  double momentum = 0;
+  for (std::size_t k = 0; k + 1 < force.rows; ++k) momentum += force.at(k, 0) * 2.5e-4;
+  std::printf("free sphere: velocity %.4g m/s from the forces %.4g m/s, moved %.3g m\n", velocity.at(4, 0),
+              momentum / mass, position.at(4, 0));
+  EXPECT_GT(velocity.at(4, 0), 0.5 * bird_drag() * 7.5e-4 / mass);
+  EXPECT_NEAR(velocity.at(4, 0), momentum / mass, 1e-6 * momentum / mass + 0.02 * std::abs(momentum / mass));
+  EXPECT_GT(position.at(4, 0), 0.0);
+}
+
+}  // namespace
+}  // namespace cosim::tracker
