@@ -243,14 +243,16 @@ TEST(TrackerConfigs, SphereClusterChannelFoamAndSphereStreamRun) {
   for (std::size_t c = 0; c < weight.size(); ++c) mean += temperature[c] * weight[c] / sum(weight);
   EXPECT_NEAR(mean, 300.0, 15.0);
 
-  // The sphere in a rarefied stream: filled by the inflow, collisions on, the sphere hit.
-  const RunSummary stream = run_tracker(shortened_config("tracker-sphere-stream", "2.5e-3"), out("stream.h5"));
+  // The sphere in a rarefied stream: seeded as the stream and fed by the inflow, collisions
+  // on, the sphere hit.
+  const RunSummary stream = run_tracker(shortened_config("tracker-sphere-stream", "1.0e-3"), out("stream.h5"));
   const RunFileView r = read_run(out("stream.h5"), true);
   EXPECT_EQ(r.column("lost"), 0);
-  EXPECT_GT(stream.injected, 50000u);
+  EXPECT_GT(stream.seeded, 100000u);
+  EXPECT_GT(stream.injected, 20000u);  // a quarter of a box volume through the upstream side
   EXPECT_GT(stream.collisions, 10000);
   EXPECT_GT(r.hits.back(), 100);
-  EXPECT_EQ(stream.remaining, stream.injected - static_cast<std::size_t>(r.column("removed")));  // seeded none
+  EXPECT_EQ(stream.remaining, stream.seeded + stream.injected - static_cast<std::size_t>(r.column("removed")));
 }
 
 TEST(PolyhedraXdmf, MixedTopologyReadsBackAsTheCells) {
