@@ -31,7 +31,6 @@ participant::Outputs TrackerSolver::initialise(const scene::Scene& scene, const 
   std::vector<Eigen::Isometry3d> placed;
   for (std::size_t b = 0; b < poses.size() / kPoseWidth; ++b) placed.push_back(pose_of(poses, b));
   gas_ = std::make_unique<Simulation>(scene, placed);
-  dt_ = gas_->setup().dt;
   if (!state.empty()) restore(state);
   return {{}, std::vector<double>(kForceWidth * bodies_, 0.0), 0};
 }
@@ -43,28 +42,22 @@ void TrackerSolver::check_size(const std::vector<double>& poses) const {
 }
 
 participant::Outputs TrackerSolver::advance(const participant::Window& w, const participant::Inputs& in) {
-  const double span = w.t1 - w.t0;
-  if (!(span > 0)) throw std::runtime_error("window of length " + std::to_string(span) + " s");
-  const auto steps = static_cast<int>(std::max(1.0, std::ceil(span / dt_ - 1e-9)));
-  const double h = span / steps;
   gas_->reseed(w.index);
   const std::vector<ObstacleTally> before(gas_->tallies().begin(), gas_->tallies().end());
   const std::vector<int>& body_of = gas_->setup().obstacle_body;
-  for (int k = 1; k <= steps; ++k) {
-    if (!in.poses_start.empty()) {
-      const std::vector<double> poses = participant::poses_at(in, w, w.t0 + k * h);
-      check_size(poses);
-      for (std::size_t i = 0; i < body_of.size(); ++i)
-        if (body_of[i] >= 0) gas_->move_obstacle(static_cast<int>(i), pose_of(poses, static_cast<std::size_t>(body_of[i])), h);
-    }
-    gas_->step(h);
-  }
+  const int steps = gas_->advance(w.t0, w.t1, [&](double t, double h) {
+    if (in.poses_start.empty()) return;
+    const std::vector<double> poses = participant::poses_at(in, w, t);
+    check_size(poses);
+    for (std::size_t i = 0; i < body_of.size(); ++i)
+      if (body_of[i] >= 0) gas_->move_obstacle(static_cast<int>(i), pose_of(poses, static_cast<std::size_t>(body_of[i])), h);
+  });
   if (gas_->moves().lost > 0)
     throw std::runtime_error(std::to_string(gas_->moves().lost) + " particles lost (outside their cells) by t = " +
                              std::to_string(w.t1) + " s: a tracking bug");
 
   // Per unit particle mass in the tallies; times mass and weight is momentum.
-  const double scale = gas_->setup().particles.mass * gas_->setup().particles.weight / span;
+  const double scale = gas_->setup().particles.mass * gas_->setup().particles.weight / (w.t1 - w.t0);
   std::vector<double> forces(kForceWidth * bodies_, 0.0);
   for (std::size_t i = 0; i < body_of.size(); ++i) {
     if (body_of[i] < 0) continue;

@@ -32,7 +32,6 @@ class TrackerSolver final : public participant::Solver {
 
   std::unique_ptr<Simulation> gas_;
   std::size_t bodies_ = 0;
-  double dt_ = 0.0;
 };
 
 }  // namespace cosim::tracker

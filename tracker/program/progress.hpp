@@ -1,4 +1,4 @@
-// One line on stderr, rewritten in place as the steps go (as `cosim run` shows its
+// One line on stderr, rewritten in place as the windows go (as `cosim run` shows its
 // windows), only on a terminal so logs and tests stay clean.
 #pragma once
 
@@ -12,17 +12,17 @@ namespace cosim::tracker {
 
 class Progress {
  public:
-  Progress(std::uint64_t steps, double end_time) : steps_(steps), end_(end_time), enabled_(isatty(STDERR_FILENO)) {}
+  Progress(std::uint64_t windows, double end_time) : windows_(windows), end_(end_time), enabled_(isatty(STDERR_FILENO)) {}
 
-  void update(std::uint64_t step, double time, std::size_t particles) {
+  void update(std::uint64_t window, double time, std::size_t particles) {
     const auto now = clock::now();
-    if (!enabled_ || (step != steps_ && now - last_ < std::chrono::milliseconds(100))) return;
+    if (!enabled_ || (window != windows_ && now - last_ < std::chrono::milliseconds(100))) return;
     last_ = now;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
-    const double rate = elapsed > 0 ? static_cast<double>(step) / elapsed : 0.0;
-    std::fprintf(stderr, "\r  t = %.4g / %.4g s  step %llu/%llu  %zu particles  %.1f steps/s  ETA %.0f s   ", time,
-                 end_, static_cast<unsigned long long>(step), static_cast<unsigned long long>(steps_), particles, rate,
-                 rate > 0 ? static_cast<double>(steps_ - step) / rate : 0.0);
+    const double rate = elapsed > 0 ? static_cast<double>(window) / elapsed : 0.0;
+    std::fprintf(stderr, "\r  t = %.4g / %.4g s  window %llu/%llu  %zu particles  %.1f windows/s  ETA %.0f s   ", time,
+                 end_, static_cast<unsigned long long>(window), static_cast<unsigned long long>(windows_), particles, rate,
+                 rate > 0 ? static_cast<double>(windows_ - window) / rate : 0.0);
     printed_ = true;
   }
   void finish() {
@@ -32,7 +32,7 @@ class Progress {
 
  private:
   using clock = std::chrono::steady_clock;
-  std::uint64_t steps_;
+  std::uint64_t windows_;
   double end_;
   bool enabled_;
   bool printed_ = false;

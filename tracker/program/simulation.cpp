@@ -1,7 +1,7 @@
 #include "tracker/program/simulation.hpp"
 
 #include <algorithm>
-#include <bit>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -124,6 +124,19 @@ void Simulation::step(double dt) {
         inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_, tallies_));
   sampler_.sample(swarm_);
   ++steps_;
+}
+
+int Simulation::advance(double t0, double t1, const std::function<void(double t, double h)>& before) {
+  const double span = t1 - t0;
+  if (!(span > 0)) throw std::runtime_error("cannot advance over " + std::to_string(span) + " s");
+  // The tolerance keeps a window that is a whole number of steps from gaining one by round-off.
+  const int steps = static_cast<int>(std::max(1.0, std::ceil(span / setup_.dt - 1e-9)));
+  const double h = span / steps;
+  for (int k = 1; k <= steps; ++k) {
+    if (before) before(t0 + k * h, h);
+    step(h);
+  }
+  return steps;
 }
 
 std::vector<double> Simulation::counts() const {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -37,6 +38,10 @@ class Simulation {
   void move_obstacle(int i, const Eigen::Isometry3d& pose, double dt);
   // One step of length dt.
   void step(double dt);
+  // From t0 to exactly t1 in equal steps of at most the scene's dt, calling before(t, h)
+  // before each step of length h that ends at t (to move obstacles there). Returns the
+  // number of steps. Standalone and coupled runs step a window alike.
+  int advance(double t0, double t1, const std::function<void(double t, double h)>& before = {});
 
   // Totals since the start.
   std::uint64_t steps() const { return steps_; }

@@ -1,7 +1,6 @@
 #include "tracker/program/standalone.hpp"
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 
 #include "participant/seconds_since.hpp"
@@ -18,7 +17,6 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
     std::fprintf(stderr, "cosim-tracker: note: --standalone keeps the scene's %zu bodies (and the obstacles bound to "
                          "them) where the scene puts them; in coupled runs the rigid-body program moves them\n",
                  scene.bodies.size());
-  const double dt = gas.setup().dt;
 
   if (output.empty()) output = scene.output.file;
   if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
@@ -27,26 +25,28 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
   TrackerFile file(output, scene, gas.mesh(), names);
 
   RunSummary summary;
-  summary.steps = static_cast<std::uint64_t>(std::llround(scene.time.end / dt));  // whole: scene validation
-  const int every = scene.output.fields_every;
-  const auto write = [&](std::uint64_t step) {
+  const std::uint64_t windows = scene.windows();
+  const auto write = [&](double time) {
     const std::vector<double> count = gas.counts();
     const std::vector<CellMoments> moments = gas.take_moments();
-    file.write({.step = step,
-                .time = static_cast<double>(step) * dt,
+    file.write({.step = gas.steps(),
+                .time = time,
                 .particles = gas.swarm().size(),
                 .count = count,
                 .moments = moments,
                 .objects = gas.tallies(),
                 .moves = gas.moves()});
   };
-  Progress progress(summary.steps, scene.time.end);
+  Progress progress(windows, scene.time.end);
   try {
-    write(0);
-    for (std::uint64_t step = 1; step <= summary.steps; ++step) {
-      gas.step(dt);
-      if ((every > 0 && step % static_cast<std::uint64_t>(every) == 0) || step == summary.steps) write(step);
-      progress.update(step, static_cast<double>(step) * dt, gas.swarm().size());
+    write(0.0);
+    for (std::uint64_t k = 0; k < windows; ++k) {
+      // Window bounds computed as the coupler does, so both runs take identical steps.
+      const double t1 = static_cast<double>(k + 1) * scene.coupling.window;
+      gas.advance(static_cast<double>(k) * scene.coupling.window, t1);
+      // The start and the end always: the file is the run's only record.
+      if (scene.output.fields_at(k + 1, windows) || k + 1 == windows) write(t1);
+      progress.update(k + 1, t1, gas.swarm().size());
     }
   } catch (const std::exception& e) {
     progress.finish();
@@ -54,6 +54,7 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
     throw;
   }
   progress.finish();
+  summary.steps = gas.steps();
   summary.seeded = gas.seeded();
   summary.injected = gas.injected();
   summary.remaining = gas.swarm().size();

@@ -1,7 +1,6 @@
-// cosim-tracker --standalone: ballistic particles among the scene's obstacles for the
-// scene's time (time.end in steps of the participant's dt), no coupler, written to the
-// tracker's run file (tracker_file.hpp) at step 0, every output.fields_every steps and
-// the last.
+// cosim-tracker --standalone: the scene's gas without a coupler, window by window as
+// `cosim run` steps it (Simulation::advance), written to the tracker's run file
+// (tracker_file.hpp) at the start, every output.fields_every windows and the last.
 #pragma once
 
 #include <filesystem>

@@ -27,7 +27,7 @@ namespace {
 // Unit box, 100 steps; mass = k_B so that the thermal speed is sqrt(T) m/s.
 scene::Scene scene_of_mesh(const std::string& mesh, const std::string& options) {
   return scene::load_scene_from_string(
-      "time: {end: 1.0}\ncoupling: {window: 0.1}\noutput: {fields_every: 10}\n"
+      "time: {end: 1.0}\ncoupling: {window: 0.1}\noutput: {fields_every: 1}\n"
       "domain: {min: [0, 0, 0], max: [1, 1, 1]}\neffects: [rarefied_gas]\n"
       "participants:\n  tracker:\n    dt: 0.01\n    options:\n      mesh: " +
           mesh + "\n" + options,
