@@ -55,7 +55,7 @@ FirstRows first_rows(hid_t ds, hsize_t rows, hsize_t columns, const std::string&
 // Overwrites the array `name` (rows x columns doubles, row-major; 1-d if columns == 1) in
 // place, creating it on first use. It is only ever grown: shrinking a chunked dataset frees
 // its chunks, so a shorter value leaves the rows after it and says its length in `length`.
-void write_array(hid_t group, const std::string& name, const std::vector<double>& values,
+void write_rows(hid_t group, const std::string& name, const std::vector<double>& values,
                  hsize_t columns) {
   const std::string where = "dataset " + child_path(group, name);
   const hsize_t rows = values.size() / columns;
@@ -81,7 +81,7 @@ void write_array(hid_t group, const std::string& name, const std::vector<double>
   write_attribute(ds.get(), kLength, std::uint64_t{rows});
 }
 
-std::vector<double> read_array(hid_t group, const std::string& name) {
+std::vector<double> read_rows(hid_t group, const std::string& name) {
   const std::string where = "dataset " + child_path(group, name);
   Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
   const std::array<hsize_t, 2> dims = extent(ds.get(), where);
@@ -108,15 +108,15 @@ void write_slot(hid_t checkpoint, const std::string& slot_name, const Checkpoint
   Handle slot = open_or_create_group(checkpoint, slot_name);
   write_attribute(slot.get(), "window", c.next_window);
   write_attribute(slot.get(), "time", c.time);
-  write_array(slot.get(), "poses", c.poses, kPoseWidth);
-  write_array(slot.get(), "forces", c.forces, kForceWidth);
+  write_rows(slot.get(), "poses", c.poses, kPoseWidth);
+  write_rows(slot.get(), "forces", c.forces, kForceWidth);
   Handle states = open_or_create_group(slot.get(), "participants");
   for (const std::string& name : participants) {
     const auto state = c.states.find(name);
     const bool present = state != c.states.end();
     Handle p = open_or_create_group(states.get(), name);
     write_attribute(p.get(), "present", int{present});
-    write_array(p.get(), "state", present ? state->second : kNoState, 1);
+    write_rows(p.get(), "state", present ? state->second : kNoState, 1);
   }
 }
 
@@ -156,13 +156,13 @@ std::optional<Checkpoint> read_checkpoint(hid_t file,
   Checkpoint c;
   c.next_window = read_attribute<std::uint64_t>(slot.get(), "window");
   c.time = read_attribute<double>(slot.get(), "time");
-  c.poses = read_array(slot.get(), "poses");
-  c.forces = read_array(slot.get(), "forces");
+  c.poses = read_rows(slot.get(), "poses");
+  c.forces = read_rows(slot.get(), "forces");
   Handle states = open_group(slot.get(), "participants");
   for (const std::string& name : participants) {
     if (!has_link(states.get(), name)) continue;
     Handle p = open_group(states.get(), name);
-    if (read_attribute<int>(p.get(), "present") != 0) c.states[name] = read_array(p.get(), "state");
+    if (read_attribute<int>(p.get(), "present") != 0) c.states[name] = read_rows(p.get(), "state");
   }
   return c;
 }

@@ -212,6 +212,16 @@ std::vector<hsize_t> array_dims(hid_t group, const std::string& name) {
   return dims;
 }
 
+std::vector<double> read_array(hid_t group, const std::string& name) {
+  std::size_t size = 1;
+  for (hsize_t d : array_dims(group, name)) size *= d;
+  std::vector<double> values(size);
+  const std::string where = dataset_where(group, name);
+  Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
+  if (size > 0) check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + where);
+  return values;
+}
+
 void create_text_list(hid_t group, const std::string& name) {
   create_extendible(group, name, utf8_string_type().get(), 1, kTextListChunk);
 }

@@ -38,6 +38,8 @@ void write_array(hid_t group, const std::string& name, const std::vector<hsize_t
 
 // The shape of a dataset, as write_array() was given it.
 std::vector<hsize_t> array_dims(hid_t group, const std::string& name);
+// All its values as doubles, row-major.
+std::vector<double> read_array(hid_t group, const std::string& name);
 
 // A list of strings that only ever grows: a chunked 1-d dataset. Appending frees no file
 // space, where replacing a growing list attribute does (see run_file.hpp on why that

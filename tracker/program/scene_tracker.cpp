@@ -6,6 +6,7 @@
 #include "tracker/program/scene_inflow.hpp"
 #include "tracker/program/scene_mesh.hpp"
 #include "tracker/program/scene_obstacles.hpp"
+#include "tracker/program/scene_tracers.hpp"
 #include "tracker/program/scene_walls.hpp"
 
 namespace cosim::tracker {
@@ -22,6 +23,9 @@ TrackerScene read_tracker(const scene::Scene& scene) {
   Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass);
   t.inflows = read_inflows(options, *t.mesh, boundaries, t.particles.mass, t.particles.weight);
   t.collisions = read_collisions(options, t.particles.mass);
+  t.tracers = read_tracers(options, scene);
+  if (t.tracers && (t.collisions || !t.inflows.empty()))
+    options.fail("tracers", "tracers ride the fluid: a scene with tracers has no collisions and no inflow");
   try {
     t.domain = std::make_unique<const Domain>(*t.mesh, std::move(boundaries));
   } catch (const std::invalid_argument& e) {

@@ -8,6 +8,7 @@
 
 #include "scene/scene.hpp"
 #include "tracker/program/scene_collisions.hpp"
+#include "tracker/program/scene_tracers.hpp"
 #include "tracker/program/seeding.hpp"
 #include "tracker/tracking/inflow.hpp"
 #include "tracker/tracking/domain.hpp"
@@ -24,6 +25,7 @@ struct TrackerScene {
   Seeding particles;
   std::vector<Inflow> inflows;
   std::optional<Collisions> collisions;
+  std::optional<Tracers> tracers;  // tracer mode: no collisions, no inflow
   double dt = 0.0;
 };
 

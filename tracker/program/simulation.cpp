@@ -89,6 +89,7 @@ TrackerScene placed(TrackerScene setup, const std::vector<Eigen::Isometry3d>& bo
 
 Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isometry3d>& body_poses)
     : setup_(placed(read_tracker(scene), body_poses)),
+      velocity_(setup_.tracers ? setup_.tracers->velocity : std::nullopt),
       seed_(setup_.particles.seed),
       random_(seed_),
       swarm_(seed_particles(*setup_.mesh, setup_.obstacles, setup_.particles, random_)),
@@ -118,12 +119,29 @@ void Simulation::step(double dt) {
   // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
   swarm_.sort_by_cell(mesh().cell_count());
   if (collider_) collisions_ += collider_->collide(swarm_, dt);
-  swarm_.move_all(*setup_.domain, setup_.obstacles, dt, random_, moves_, tallies_);
+  if (setup_.tracers)
+    carry_tracers(dt);
+  else
+    swarm_.move_all(*setup_.domain, setup_.obstacles, dt, random_, moves_, tallies_);
   for (const Inflow& inflow : setup_.inflows)
     injected_ += static_cast<std::size_t>(
         inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_, tallies_));
   sampler_.sample(swarm_);
   ++steps_;
+}
+
+void Simulation::carry_tracers(double dt) {
+  if (!velocity_)
+    throw std::runtime_error("tracer mode without a velocity field: give tracers.velocity.file, or run coupled with "
+                             "the fluid");
+  std::vector<bool> gone(swarm_.size(), false);
+  for (std::size_t i = 0; i < swarm_.size(); ++i) {
+    Particle p = swarm_.particle(i);
+    gone[i] = !advance_tracer(*setup_.domain, setup_.obstacles, *velocity_, setup_.tracers->model, p, swarm_.states(i),
+                              dt, random_, moves_, tallies_);
+    swarm_.set(i, p);
+  }
+  swarm_.remove_if([&](std::size_t i) { return gone[i]; });
 }
 
 int Simulation::advance(double t0, double t1, const std::function<void(double t, double h)>& before) {

@@ -36,8 +36,11 @@ class Simulation {
   // Moves obstacle i to `pose` (world from its shape's frame) over the time dt, before the
   // step that covers that time (Obstacles::set_pose).
   void move_obstacle(int i, const Eigen::Isometry3d& pose, double dt);
-  // One step of length dt.
+  // One step of length dt: the gas's, or in tracer mode each tracer carried by the
+  // velocity field (std::runtime_error if there is none yet).
   void step(double dt);
+  // Tracer mode: the fluid's velocity from here on (coupled runs: every window).
+  void set_velocity(VelocityField velocity) { velocity_ = std::move(velocity); }
   // From t0 to exactly t1 in equal steps of at most the scene's dt, calling before(t, h)
   // before each step of length h that ends at t (to move obstacles there). Returns the
   // number of steps. Standalone and coupled runs step a window alike.
@@ -65,7 +68,10 @@ class Simulation {
   void restore(std::span<const double> state);
 
  private:
+  void carry_tracers(double dt);
+
   TrackerScene setup_;
+  std::optional<VelocityField> velocity_;  // tracer mode
   std::uint64_t seed_;
   Random random_;
   Swarm swarm_;
