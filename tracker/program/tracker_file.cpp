@@ -55,7 +55,7 @@ struct TrackerFile::Impl {
   Handle file;
   std::size_t objects = 0;
   std::vector<Series> rows;     // step, time, particles, moves
-  std::vector<Series> tallies;  // hits, absorbed, entered, left, released, impulse
+  std::vector<Series> tallies;  // hits, absorbed, entered, left, released, impulse, angular_impulse, energy
   std::vector<double> volume;  // per cell, for the density
   output::XdmfSeries sidecar;
 };
@@ -114,6 +114,8 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
       for (const char* name : {"hits", "absorbed", "entered", "left", "released"})
         m.tallies.push_back(Series::create(objects.get(), name, m.objects, H5T_NATIVE_UINT64));
       m.tallies.push_back(Series::create(objects.get(), "impulse", 3 * m.objects, H5T_NATIVE_DOUBLE));
+      m.tallies.push_back(Series::create(objects.get(), "angular_impulse", 3 * m.objects, H5T_NATIVE_DOUBLE));
+      m.tallies.push_back(Series::create(objects.get(), "energy", m.objects, H5T_NATIVE_DOUBLE));
     }
     output::flush(file);
   });
@@ -158,14 +160,18 @@ void TrackerFile::write(const Sample& s) {
     m.rows[3].append(columns_of(s.moves).data());
     if (m.objects > 0) {
       std::vector<std::vector<std::uint64_t>> counts(5);
-      std::vector<double> impulse;
+      std::vector<double> impulse, angular_impulse, energy;
       for (const ObstacleTally& t : s.objects) {
         const long long v[] = {t.hits, t.absorbed, t.entered, t.left, t.released};
         for (std::size_t k = 0; k < counts.size(); ++k) counts[k].push_back(static_cast<std::uint64_t>(v[k]));
-        impulse.insert(impulse.end(), {t.impulse.x(), t.impulse.y(), t.impulse.z()});
+        impulse.insert(impulse.end(), t.impulse.begin(), t.impulse.end());
+        angular_impulse.insert(angular_impulse.end(), t.angular_impulse.begin(), t.angular_impulse.end());
+        energy.push_back(t.energy);
       }
       for (std::size_t k = 0; k < counts.size(); ++k) m.tallies[k].append(counts[k].data());
-      m.tallies.back().append(impulse.data());
+      m.tallies[5].append(impulse.data());
+      m.tallies[6].append(angular_impulse.data());
+      m.tallies[7].append(energy.data());
     }
     output::flush(file);
   });

@@ -15,8 +15,12 @@
 //                             totals since the start)
 //   /tracker/objects/         attr names; hits, absorbed, entered, left, released (rows x
 //                             objects, uint64, totals since the start; released: states
-//                             found inside a wall and repaired, 0 in a sound run), impulse (rows x 3 objects:
-//                             x y z per object, per unit particle mass, m/s)
+//                             found inside a wall and repaired, 0 in a sound run), impulse and
+//                             angular_impulse (rows x 3 objects: x y z per object; momentum and
+//                             its moment about the object's pose origin given to the object,
+//                             per unit particle mass: m/s, m^2/s), energy (rows x objects:
+//                             kinetic energy given to it per unit particle mass, m^2/s^2;
+//                             times mass and weight over the time, the heat flow into it, W)
 // The sidecar <file>.xmf is rewritten after every write, once the file is flushed.
 #pragma once
 
