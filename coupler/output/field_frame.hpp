@@ -3,7 +3,10 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace cosim::output {
@@ -17,8 +20,24 @@ struct RectilinearGrid {
   }
 };
 
-// A cell-centred field: cells (k slowest, i fastest) x components values, the components
-// of a cell together; the order of HDF5's row-major (nz, ny, nx[, c]) dataset and of XDMF.
+// Unstructured convex polyhedra (the tracker's meshes) as XDMF reads them: a "Mixed"
+// topology of Polyhedron cells, per cell the type 16, its face count, then per face the
+// vertex count and the vertex indices (counter-clockwise seen from outside). `cells` is
+// what the topology holds, kept so that writers and readers need not walk it.
+struct PolyhedralGrid {
+  std::vector<double> vertices;        // v x 3: x, y, z of a vertex together
+  std::vector<std::int64_t> topology;  // the Mixed layout above
+  std::size_t cells = 0;
+};
+
+inline constexpr std::int64_t kXdmfPolyhedron = 16;  // the cell type in a Mixed topology
+
+using Grid = std::variant<RectilinearGrid, PolyhedralGrid>;
+
+// A cell-centred field: cells x components values, the components of a cell together. The
+// cells are in the grid's order: of a RectilinearGrid k slowest and i fastest (the order of
+// HDF5's row-major (nz, ny, nx[, c]) dataset and of XDMF), of a PolyhedralGrid the
+// topology's.
 struct CellField {
   std::string name;
   int components = 1;
@@ -26,8 +45,14 @@ struct CellField {
 };
 
 struct FieldFrame {
-  RectilinearGrid grid;
+  Grid grid;
   std::vector<CellField> fields;
 };
+
+std::size_t cell_count(const Grid& grid);
+// Why the grid is not one (a rectilinear axis with fewer than 2 nodes; a topology that is
+// not `cells` polyhedra of at least 4 faces of at least 3 vertices, all indices among
+// the vertices), or empty if it is.
+std::string grid_problem(const Grid& grid);
 
 }  // namespace cosim::output

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 #include <utility>
+#include <variant>
 
 #include "output/h5_groups.hpp"
 #include "output/h5_handle.hpp"
@@ -20,19 +21,59 @@ std::string step_name(std::uint64_t window) {
 }
 
 void check_frame(const FieldFrame& frame, const std::string& participant) {
-  for (const auto& nodes : frame.grid.nodes)
-    if (nodes.size() < 2) throw ObjectError("fields of " + participant + ": an axis with fewer than 2 nodes");
-  const auto n = frame.grid.cells();
+  if (const std::string problem = grid_problem(frame.grid); !problem.empty())
+    throw ObjectError("fields of " + participant + ": " + problem);
+  const std::size_t n = cell_count(frame.grid);
   for (const CellField& f : frame.fields)
-    if (f.components < 1 || f.values.size() != n[0] * n[1] * n[2] * static_cast<std::size_t>(f.components))
+    if (f.components < 1 || f.values.size() != n * static_cast<std::size_t>(f.components))
       throw ObjectError("field " + f.name + " of " + participant + ": " + std::to_string(f.values.size()) +
                         " values do not fit the grid");
 }
 
-void write_grid(hid_t participant_group, const RectilinearGrid& grid) {
+// A series without steps on the participant's grid: its shape is what a later frame's grid
+// is compared with, as the grid is written once.
+XdmfSeries series_of(const std::string& participant, const Grid& grid) {
+  XdmfSeries s{participant, "/fields/" + participant + "/grid", {}, {}};
+  if (const auto* p = std::get_if<PolyhedralGrid>(&grid))
+    s.polyhedra = {p->cells, p->vertices.size() / 3, p->topology.size()};
+  else
+    s.cells = std::get<RectilinearGrid>(grid).cells();
+  return s;
+}
+
+bool same_grid(const XdmfSeries& a, const XdmfSeries& b) { return a.cells == b.cells && a.polyhedra == b.polyhedra; }
+
+// The cells part of a field's dataset shape, slowest first.
+std::vector<hsize_t> cell_dims(const XdmfSeries& s) {
+  if (s.polyhedra.cells > 0) return {s.polyhedra.cells};
+  return {s.cells[2], s.cells[1], s.cells[0]};
+}
+
+void write_grid(hid_t participant_group, const Grid& grid) {
   Handle group = create_group(participant_group, "grid");
+  if (const auto* p = std::get_if<PolyhedralGrid>(&grid)) {
+    write_array(group.get(), "vertices", {p->vertices.size() / 3, 3}, p->vertices.data());
+    write_array(group.get(), "topology", {p->topology.size()}, p->topology.data());
+    // Readers (and resume()) then need not walk the topology to size the fields.
+    write_attribute(group.get(), "cells", std::uint64_t{p->cells});
+    return;
+  }
+  const auto& nodes = std::get<RectilinearGrid>(grid).nodes;
   for (std::size_t a = 0; a < 3; ++a)
-    write_array(group.get(), std::string(1, "xyz"[a]), {grid.nodes[a].size()}, grid.nodes[a].data());
+    write_array(group.get(), std::string(1, "xyz"[a]), {nodes[a].size()}, nodes[a].data());
+}
+
+// The series of a grid already in the file, as series_of() described it when it was written.
+XdmfSeries stored_series(hid_t participant_group, const std::string& participant) {
+  XdmfSeries s{participant, "/fields/" + participant + "/grid", {}, {}};
+  Handle grid = open_group(participant_group, "grid");
+  if (has_link(grid.get(), "topology")) {
+    s.polyhedra = {read_attribute<std::uint64_t>(grid.get(), "cells"), array_dims(grid.get(), "vertices").at(0),
+                   array_dims(grid.get(), "topology").at(0)};
+  } else {
+    for (std::size_t a = 0; a < 3; ++a) s.cells[a] = array_dims(grid.get(), std::string(1, "xyz"[a])).at(0) - 1;
+  }
+  return s;
 }
 
 }  // namespace
@@ -44,19 +85,19 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
   check_frame(frame, participant);
   Handle fields = open_or_create_group(file, "fields");
   Handle group = open_or_create_group(fields.get(), participant);
-  const std::string base = "/fields/" + participant;
-  auto [it, first] = series_.try_emplace(participant, XdmfSeries{participant, base + "/grid", frame.grid.cells(), {}});
+  const XdmfSeries shape = series_of(participant, frame.grid);
+  auto [it, first] = series_.try_emplace(participant, shape);
   XdmfSeries& series = it->second;
   if (first && !has_link(group.get(), "grid")) write_grid(group.get(), frame.grid);
-  if (series.cells != frame.grid.cells()) throw ObjectError("fields of " + participant + ": the grid changed");
+  if (!same_grid(series, shape))
+    throw ObjectError("fields of " + participant + ": the grid changed");
 
   const std::string name = step_name(window);
   Handle step = create_group(group.get(), name);
   write_attribute(step.get(), "time", time);
-  const auto n = frame.grid.cells();
-  XdmfStep entry{base + "/" + name, time, {}};
+  XdmfStep entry{"/fields/" + participant + "/" + name, time, {}};
   for (const CellField& f : frame.fields) {
-    std::vector<hsize_t> dims{n[2], n[1], n[0]};
+    std::vector<hsize_t> dims = cell_dims(series);
     if (f.components > 1) dims.push_back(static_cast<hsize_t>(f.components));
     write_array(step.get(), f.name, dims, f.values.data());
     entry.fields.push_back({f.name, f.components});
@@ -69,11 +110,8 @@ void FieldWriter::resume(hid_t file, std::uint64_t next_window) {
   Handle fields = open_group(file, "fields");
   for (const std::string& participant : link_names(fields.get())) {
     Handle group = open_group(fields.get(), participant);
-    const std::string base = "/fields/" + participant;
-    Handle grid = open_group(group.get(), "grid");
-    std::array<std::size_t, 3> cells{};
-    for (std::size_t a = 0; a < 3; ++a) cells[a] = array_dims(grid.get(), std::string(1, "xyz"[a])).at(0) - 1;
-    XdmfSeries series{participant, base + "/grid", cells, {}};
+    XdmfSeries series = stored_series(group.get(), participant);
+    const std::size_t scalar_rank = cell_dims(series).size();
     std::vector<std::pair<std::uint64_t, std::string>> steps;
     for (const std::string& name : link_names(group.get()))
       if (name != "grid") steps.emplace_back(std::stoull(name), name);
@@ -84,10 +122,10 @@ void FieldWriter::resume(hid_t file, std::uint64_t next_window) {
         continue;
       }
       Handle step = open_group(group.get(), name);
-      XdmfStep entry{base + "/" + name, read_attribute<double>(step.get(), "time"), {}};
+      XdmfStep entry{"/fields/" + participant + "/" + name, read_attribute<double>(step.get(), "time"), {}};
       for (const std::string& field : link_names(step.get())) {
         const auto dims = array_dims(step.get(), field);
-        entry.fields.push_back({field, dims.size() > 3 ? static_cast<int>(dims[3]) : 1});
+        entry.fields.push_back({field, dims.size() > scalar_rank ? static_cast<int>(dims.back()) : 1});
       }
       series.steps.push_back(std::move(entry));
     }

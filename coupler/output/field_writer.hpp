@@ -19,9 +19,10 @@ class FieldWriter {
   // h5_path: the run file, whose sidecar is h5_path with extension .xmf.
   explicit FieldWriter(std::filesystem::path h5_path);
 
-  // Writes the grid (first call per participant; later frames must have the same grid) and
-  // the step group /fields/<participant>/<window, 6+ digits>/<field> with attr time.
-  // Throws ObjectError for a frame whose sizes do not add up.
+  // Writes the grid (first call per participant: /fields/<participant>/grid, layout in
+  // run_file.hpp) and the step group /fields/<participant>/<window, 6+ digits>/<field> with
+  // attr time. Throws ObjectError for a frame whose sizes do not add up (grid_problem()),
+  // or whose grid is not the first one's kind and size.
   void write(hid_t file, const std::string& participant, std::uint64_t window, double time,
              const FieldFrame& frame);
   // For --resume from window `next_window`: unlinks the steps after it, which the resumed

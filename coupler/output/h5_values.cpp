@@ -91,6 +91,16 @@ std::vector<std::string> take_strings(std::vector<char*>& raw, hid_t type,
   return out;
 }
 
+// A contiguous dataset of shape dims, written whole; T has a native_type().
+template <class T>
+void write_whole(hid_t group, const std::string& name, const std::vector<hsize_t>& dims, const T* values) {
+  const std::string where = dataset_where(group, name);
+  Handle ds(H5Dcreate2(group, name.c_str(), native_type<T>(), simple_space(dims, where).get(), H5P_DEFAULT,
+                       H5P_DEFAULT, H5P_DEFAULT),
+            H5Dclose, "create " + where);
+  check(H5Dwrite(ds.get(), native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values), "write " + where);
+}
+
 }  // namespace
 
 bool has_attribute(hid_t object, const std::string& name) {
@@ -193,12 +203,12 @@ std::string read_text(hid_t group, const std::string& name) {
 
 void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims,
                  const double* values) {
-  const std::string where = dataset_where(group, name);
-  Handle ds(H5Dcreate2(group, name.c_str(), H5T_NATIVE_DOUBLE, simple_space(dims, where).get(),
-                       H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-            H5Dclose, "create " + where);
-  check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values),
-        "write " + where);
+  write_whole(group, name, dims, values);
+}
+
+void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims,
+                 const std::int64_t* values) {
+  write_whole(group, name, dims, values);
 }
 
 std::vector<hsize_t> array_dims(hid_t group, const std::string& name) {

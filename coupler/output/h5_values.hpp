@@ -4,6 +4,7 @@
 
 #include <hdf5.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ std::string read_text(hid_t group, const std::string& name);
 // A contiguous float64 dataset of shape dims (row-major), written whole: grid fields.
 void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims,
                  const double* values);
+// The same in int64: a polyhedral grid's topology.
+void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims,
+                 const std::int64_t* values);
 
 // The shape of a dataset, as write_array() was given it.
 std::vector<hsize_t> array_dims(hid_t group, const std::string& name);

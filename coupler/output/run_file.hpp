@@ -16,12 +16,17 @@
 //                        wall_seconds (n): the whole window
 //   /coupling/participants/<name>/  wall_seconds (n), substeps (n); NaN where a window's
 //                        record had no value for that participant
-//   /fields/<participant>/grid/  x, y, z: node coordinates per axis (rectilinear, so
-//                        stretched axes are exact), written with the first fields
+//   /fields/<participant>/grid/  written with the first fields (field_frame.hpp), either
+//                        rectilinear: x, y, z, node coordinates per axis (so stretched
+//                        axes are exact); or polyhedral: vertices (v x 3), topology
+//                        (int64, XDMF Mixed of Polyhedron cells), attr cells (uint64)
 //   /fields/<participant>/<window>/  attr time; one dataset per cell-centred field,
 //                        (nz, ny, nx) for a scalar, (nz, ny, nx, c) for c components (x
-//                        fastest); <window> is the window index zero-padded to 6 digits.
-//                        cosim-fluid writes velocity (3), pressure and alpha
+//                        fastest) on a rectilinear grid, (cells) and (cells, c) on a
+//                        polyhedral one; <window> is the window index zero-padded to 6
+//                        digits. cosim-fluid writes velocity (3), pressure and alpha on its
+//                        rectilinear grid; cosim-tracker count, mean_count, density,
+//                        velocity (3), temperature and pressure on its polyhedra
 //   /checkpoint/         attr current ("a" or "b", fixed-length ASCII): the slot holding the
 //                        checkpoint; absent until the first checkpoint is complete
 //   /checkpoint/{a,b}/   attrs window (last committed window index + 1 = next window),
@@ -42,9 +47,9 @@
 // For the same reason resume() appends to the resumed_by dataset: rewriting a growing list
 // attribute moves /run's object header, and kills inside resume() then left files HDF5
 // could not open ("addr overflow").
-// Fields come with a sidecar <file>.xmf (XDMF 3: one temporal collection of 3DRectMesh
-// grids per participant, referencing the datasets by the run file's name) that ParaView
-// opens; it is rewritten, by rename, after every field write once the file is flushed.
+// Fields come with a sidecar <file>.xmf (XDMF 3: one temporal collection of 3DRectMesh or
+// Mixed grids per participant, referencing the datasets by the run file's name) that
+// ParaView opens (with its "XDMF Reader (Xdmf3ReaderS)" once a grid is polyhedral); it is rewritten, by rename, after every field write once the file is flushed.
 // The file's descriptor is close-on-exec: participants forked while it is open must not
 // inherit it, nor with it HDF5's lock, which would keep --resume out after a crash.
 // Errors are std::runtime_error naming the file and the HDF5 object.

@@ -27,6 +27,7 @@ struct XdmfStep {
 // "XDMF Reader (Xdmf3ReaderS)"; the older Xdmf2 reader of ParaView 5.11 has no polyhedra.
 struct XdmfPolyhedra {
   std::size_t cells = 0, vertices = 0, topology_size = 0;
+  bool operator==(const XdmfPolyhedra&) const = default;
 };
 
 // The steps of one participant on one grid: rectilinear (node coordinates x, y, z in

@@ -1,6 +1,10 @@
 // Grid fields on the wire (a Field message): what a participant's fields() gives, in
-// arrays that name themselves. First the grid, per axis a Text "x", "y", "z" and a Field of
-// 1 x nodes; then per field a Text with its name and a Field of cells x components.
+// arrays that name themselves. First the grid: a rectilinear one per axis as a Text "x",
+// "y", "z" and a Field of 1 x nodes; a polyhedral one as a Text "vertices" and a Field of
+// vertices x 3, then a Text "topology" and a Field of 1 x entries, the int64 Mixed topology
+// (output::PolyhedralGrid) as float64, exact as its entries are below 2^53. Then per field
+// a Text with its name and a Field of cells x components; the cell count of a polyhedral
+// grid is not sent apart, it is the fields' rows.
 #pragma once
 
 #include <vector>
@@ -10,10 +14,13 @@
 
 namespace cosim::protocol {
 
-// No fields: no arrays at all, not even the grid.
+// No fields: no arrays at all, not even the grid. ProtocolError for a grid that is not one
+// (output::grid_problem()), so that a bad frame fails at its sender.
 std::vector<Array> field_arrays(output::FieldFrame frame);  // moves the values into the arrays
 // The frame back; ProtocolError for arrays that do not make one (an axis missing or out of
-// order, a name without its array, a field whose rows are not the grid's cells).
+// order, vertices without the topology, a topology entry that is not a whole number, a
+// topology that is not the fields' cells, a name without its array, a field whose rows
+// are not the grid's cells).
 output::FieldFrame field_frame(Message m);  // moves them back out
 
 }  // namespace cosim::protocol

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <utility>
 
 #include "fluid/petsc_check.hpp"
 
@@ -80,8 +81,9 @@ std::vector<double> centred_velocity(const fluid::Grid& grid, Vec u, int c) {
 
 output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::FictitiousBoundary& fbm) {
   const fluid::Grid& grid = flow.grid();
-  output::FieldFrame frame;
-  for (int a = 0; a < 3; ++a) frame.grid.nodes[static_cast<std::size_t>(a)] = nodes(grid.axis(a));
+  output::RectilinearGrid axes;
+  for (int a = 0; a < 3; ++a) axes.nodes[static_cast<std::size_t>(a)] = nodes(grid.axis(a));
+  output::FieldFrame frame{std::move(axes), {}};
 
   std::array<std::vector<double>, 3> u;
   for (int c = 0; c < 3; ++c) u[static_cast<std::size_t>(c)] = centred_velocity(grid, flow.velocity(c), c);

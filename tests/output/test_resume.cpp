@@ -10,6 +10,7 @@
 
 #include "h5_read.hpp"
 #include "output/run_file.hpp"
+#include "polyhedral_frame.hpp"
 #include "sample_run.hpp"
 #include "temp_dir.hpp"
 
@@ -77,10 +78,10 @@ TEST_F(ResumeTest, CutsSeriesToTheCheckpointAndContinues) {
   EXPECT_EQ(f.dims("/coupling/participants/tracer/substeps"), (std::vector<hsize_t>{7}));
 }
 
-// A 2 x 1 x 1 grid with one scalar whose value is the window, written at windows 0..4
-// around a checkpoint after window 2, as a run killed after window 4.
+// A 2 x 1 x 1 grid with one scalar whose value is the window, and the tracer's polyhedra,
+// written at windows 0..4 around a checkpoint after window 2, as a run killed after window 4.
 FieldFrame frame_of(std::uint64_t window) {
-  return {{{{{0.0, 0.5, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}}, {{"p", 1, {double(window), double(window)}}}};
+  return {RectilinearGrid{{{{0.0, 0.5, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}}, {{"p", 1, {double(window), double(window)}}}};
 }
 
 void write_interrupted_run_with_fields(const std::filesystem::path& path) {
@@ -88,6 +89,7 @@ void write_interrupted_run_with_fields(const std::filesystem::path& path) {
   for (std::uint64_t k = 0; k < 5; ++k) {
     run.append(sample_window(k, kDt, kBodies.size(), kParticipants));
     run.write_fields("fluid", k, kDt * double(k), frame_of(k));
+    run.write_fields("tracer", k, kDt * double(k), polyhedral_frame(double(k)));
     if (k == 2) run.write_checkpoint(checkpoint_after(k));
   }
 }
@@ -115,6 +117,29 @@ TEST_F(ResumeTest, CutsFieldsToTheCheckpointAndRewritesTheSidecar) {
   ReadFile f(path);
   EXPECT_EQ(f.doubles("/fields/fluid/000004/p"), (std::vector<double>{40.0, 40.0}));
   EXPECT_NE(file_bytes(file("run.xmf")).find("/fields/fluid/000004/p"), std::string::npos);
+}
+
+// The polyhedral grid is taken up from the file as it was written: the resumed run's
+// frames on it are accepted, others refused, and the sidecar keeps its Mixed topology.
+TEST_F(ResumeTest, KeepsAPolyhedralGrid) {
+  const auto path = file("run.h5");
+  write_interrupted_run_with_fields(path);
+  RunFile run = RunFile::resume(path, "d1e2f3");
+  EXPECT_FALSE(ReadFile(path).has("/fields/tracer/000004"));
+  run.write_fields("tracer", 4, 0.4, polyhedral_frame(40.0));
+  FieldFrame moved = polyhedral_frame(50.0);
+  std::get<PolyhedralGrid>(moved.grid).vertices.resize(12 * 3);  // the apex gone
+  EXPECT_THROW(run.write_fields("tracer", 5, 0.5, moved), std::runtime_error);
+  ReadFile f(path);
+  EXPECT_EQ(f.doubles("/fields/tracer/000004/density"), (std::vector<double>{40.0, 41.0, 42.0}));
+  EXPECT_EQ(f.dims("/fields/tracer/000003/velocity"), (std::vector<hsize_t>{3, 3}));
+  const std::string sidecar = file_bytes(file("run.xmf"));
+  EXPECT_NE(sidecar.find("<Topology TopologyType=\"Mixed\" NumberOfElements=\"3\">"), std::string::npos);
+  // The vector stays a vector: its components are read back from the dataset's shape.
+  EXPECT_NE(sidecar.find("<Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Cell\">\n"
+                         "          <DataItem Dimensions=\"3 3\" NumberType=\"Float\" Precision=\"8\" "
+                         "Format=\"HDF\">run.h5:/fields/tracer/000001/velocity"),
+            std::string::npos);
 }
 
 

@@ -1,6 +1,8 @@
 // Grid fields through a Field message and back, and the frames the coupler refuses.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "protocol/field_message.hpp"
 
 namespace cosim::protocol {
@@ -8,13 +10,23 @@ namespace {
 
 // 2 x 3 x 1 cells on a stretched x axis, a vector and a scalar.
 output::FieldFrame sample_frame() {
-  output::FieldFrame f;
-  f.grid.nodes = {std::vector<double>{0.0, 0.1, 0.3}, {0.0, 1.0, 2.0, 3.0}, {0.0, 0.5}};
+  output::RectilinearGrid grid;
+  grid.nodes = {std::vector<double>{0.0, 0.1, 0.3}, {0.0, 1.0, 2.0, 3.0}, {0.0, 0.5}};
   std::vector<double> u(18), p(6);
   for (std::size_t i = 0; i < u.size(); ++i) u[i] = 0.5 * static_cast<double>(i);
   for (std::size_t i = 0; i < p.size(); ++i) p[i] = -static_cast<double>(i);
-  f.fields = {{"velocity", 3, u}, {"pressure", 1, p}};
-  return f;
+  return {std::move(grid), {{"velocity", 3, u}, {"pressure", 1, p}}};
+}
+
+// Two tetrahedra on the faces of a triangular bipyramid (vertices 0, 1, 2 the shared face,
+// 3 above, 4 below), a vector and a scalar.
+output::FieldFrame polyhedral_frame() {
+  output::PolyhedralGrid grid;
+  grid.vertices = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.3, 0.3, 1, 0.3, 0.3, -1};
+  grid.topology = {16, 4, 3, 0, 2, 1, 3, 0, 1, 3, 3, 1, 2, 3, 3, 2, 0, 3,
+                   16, 4, 3, 0, 1, 2, 3, 0, 4, 1, 3, 1, 4, 2, 3, 2, 4, 0};
+  grid.cells = 2;
+  return {std::move(grid), {{"velocity", 3, {1, 2, 3, 4, 5, 6}}, {"density", 1, {1e20, 2.5e19}}}};
 }
 
 Message field_message(std::vector<Array> arrays) {
@@ -25,16 +37,46 @@ Message field_message(std::vector<Array> arrays) {
   return decode(encode(m));
 }
 
-TEST(FieldMessage, RoundTripsThroughTheWire) {
-  const output::FieldFrame sent = sample_frame();
-  const output::FieldFrame got = field_frame(field_message(field_arrays(sent)));
-  EXPECT_EQ(got.grid.nodes, sent.grid.nodes);
-  ASSERT_EQ(got.fields.size(), 2u);
-  for (std::size_t i = 0; i < 2; ++i) {
+// The ProtocolError text of decoding arrays, or a test failure if they make a frame.
+std::string refusal(std::vector<Array> arrays) {
+  try {
+    field_frame(field_message(std::move(arrays)));
+  } catch (const ProtocolError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "decoded without error";
+  return {};
+}
+
+void expect_same_fields(const output::FieldFrame& got, const output::FieldFrame& sent) {
+  ASSERT_EQ(got.fields.size(), sent.fields.size());
+  for (std::size_t i = 0; i < sent.fields.size(); ++i) {
     EXPECT_EQ(got.fields[i].name, sent.fields[i].name);
     EXPECT_EQ(got.fields[i].components, sent.fields[i].components);
     EXPECT_EQ(got.fields[i].values, sent.fields[i].values);
   }
+}
+
+TEST(FieldMessage, RoundTripsThroughTheWire) {
+  const output::FieldFrame sent = sample_frame();
+  const output::FieldFrame got = field_frame(field_message(field_arrays(sent)));
+  ASSERT_TRUE(std::holds_alternative<output::RectilinearGrid>(got.grid));
+  EXPECT_EQ(std::get<output::RectilinearGrid>(got.grid).nodes, std::get<output::RectilinearGrid>(sent.grid).nodes);
+  expect_same_fields(got, sent);
+}
+
+TEST(FieldMessage, RoundTripsAPolyhedralGrid) {
+  output::FieldFrame sent = polyhedral_frame();
+  const auto arrays = field_arrays(sent);
+  ASSERT_EQ(arrays.size(), 8u);  // vertices, topology, two fields
+  const output::FieldFrame got = field_frame(field_message(arrays));
+  ASSERT_TRUE(std::holds_alternative<output::PolyhedralGrid>(got.grid));
+  const auto& grid = std::get<output::PolyhedralGrid>(got.grid);
+  const auto& expected = std::get<output::PolyhedralGrid>(sent.grid);
+  EXPECT_EQ(grid.vertices, expected.vertices);
+  EXPECT_EQ(grid.topology, expected.topology);
+  EXPECT_EQ(grid.cells, 2u);
+  expect_same_fields(got, sent);
 }
 
 TEST(FieldMessage, NoFieldsIsAnEmptyMessage) {
@@ -45,12 +87,7 @@ TEST(FieldMessage, NoFieldsIsAnEmptyMessage) {
 TEST(FieldMessage, RefusesAFieldThatDoesNotFitTheGrid) {
   auto arrays = field_arrays(sample_frame());
   arrays.back() = Array::of(Tag::Field, 5, 1, std::vector<double>(5, 0.0));
-  try {
-    field_frame(field_message(arrays));
-    FAIL() << "accepted 5 rows on 6 cells";
-  } catch (const ProtocolError& e) {
-    EXPECT_STREQ(e.what(), "Field message of 'fluid': field pressure has 5 rows, the grid has 6 cells");
-  }
+  EXPECT_EQ(refusal(arrays), "Field message of 'fluid': field pressure has 5 rows, the grid has 6 cells");
 }
 
 TEST(FieldMessage, RefusesAMissingAxis) {
@@ -66,6 +103,43 @@ TEST(FieldMessage, RefusesANameWithoutValues) {
   auto arrays = field_arrays(sample_frame());
   arrays.pop_back();
   EXPECT_THROW(field_frame(field_message(arrays)), ProtocolError);
+}
+
+// The topology travels as float64: anything but a whole number in range is not one.
+TEST(FieldMessage, RefusesATopologyEntryThatIsNotAnInteger) {
+  for (const double bad : {1.5, -1.0, 9007199254740992.0, std::nan("")}) {
+    auto arrays = field_arrays(polyhedral_frame());
+    arrays[3].values[4] = bad;
+    EXPECT_NE(refusal(arrays).find("topology entry"), std::string::npos) << bad;
+  }
+}
+
+TEST(FieldMessage, RefusesATopologyThatIsNotTheFieldsCells) {
+  auto arrays = field_arrays(polyhedral_frame());
+  for (std::size_t i : {5u, 7u}) arrays[i] = Array::of(Tag::Field, 1, arrays[i].cols, std::vector<double>(arrays[i].cols));
+  EXPECT_EQ(refusal(arrays), "Field message of 'fluid': the topology holds 2 cells, the grid says 1");
+
+  arrays = field_arrays(polyhedral_frame());
+  arrays[3].values[5] = 5;  // a vertex index past the 5 vertices
+  EXPECT_EQ(refusal(arrays), "Field message of 'fluid': cell 0 of the topology names vertex 5 of 5");
+
+  arrays = field_arrays(polyhedral_frame());
+  arrays[3].values.resize(20);
+  arrays[3].cols = 20;
+  EXPECT_EQ(refusal(arrays), "Field message of 'fluid': the topology ends inside cell 1");
+}
+
+TEST(FieldMessage, RefusesVerticesWithoutTheTopology) {
+  auto arrays = field_arrays(polyhedral_frame());
+  arrays.erase(arrays.begin() + 2, arrays.begin() + 4);
+  EXPECT_EQ(refusal(arrays),
+            "Field message of 'fluid': vertices (v x 3) must be followed by the topology (1 x n) and a field");
+}
+
+TEST(FieldMessage, ASenderCannotSendABrokenGrid) {
+  output::FieldFrame frame = polyhedral_frame();
+  std::get<output::PolyhedralGrid>(frame.grid).topology[0] = 12;  // a hexahedron's code, not a polyhedron's
+  EXPECT_THROW(field_arrays(frame), ProtocolError);
 }
 
 }  // namespace

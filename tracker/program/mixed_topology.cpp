@@ -1,18 +1,13 @@
 #include "tracker/program/mixed_topology.hpp"
 
+#include "output/field_frame.hpp"
 
 namespace cosim::tracker {
-namespace {
-
-constexpr std::int64_t kPolyhedron = 16;  // XDMF's type code in a Mixed topology
-
-
-}  // namespace
 
 std::vector<std::int64_t> mixed_topology(const Mesh& mesh) {
   std::vector<std::int64_t> out;
   for (Index c = 0; c < mesh.cell_count(); ++c) {
-    out.push_back(kPolyhedron);
+    out.push_back(output::kXdmfPolyhedron);
     out.push_back(mesh.cell_faces[c + 1] - mesh.cell_faces[c]);
     for (Index f = mesh.cell_faces[c]; f < mesh.cell_faces[c + 1]; ++f) {
       out.push_back(mesh.vertex_count(f));
@@ -22,6 +17,5 @@ std::vector<std::int64_t> mixed_topology(const Mesh& mesh) {
   }
   return out;
 }
-
 
 }  // namespace cosim::tracker

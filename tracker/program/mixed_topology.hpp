@@ -1,6 +1,6 @@
 // The tracker's meshes as an XDMF "Mixed" topology of Polyhedron cells (type 16, then the
 // face count, then per face its vertex count and vertices, counter-clockwise from
-// outside), for the sidecar of output/xdmf.hpp (XdmfPolyhedra).
+// outside): the topology of output::PolyhedralGrid.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +13,5 @@ namespace cosim::tracker {
 
 // The mesh's cells in the Mixed layout above.
 std::vector<std::int64_t> mixed_topology(const Mesh& mesh);
-
 
 }  // namespace cosim::tracker

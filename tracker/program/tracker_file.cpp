@@ -2,17 +2,15 @@
 
 #include <hdf5.h>
 
-#include <cstdio>
-
 #include "cosim_git_hash.hpp"
+#include "output/field_writer.hpp"
 #include "output/h5_groups.hpp"
 #include "output/h5_handle.hpp"
 #include "output/h5_values.hpp"
 #include "output/series.hpp"
 #include "output/in_file.hpp"
 #include "output/text.hpp"
-#include "output/xdmf.hpp"
-#include "tracker/program/mixed_topology.hpp"
+#include "tracker/program/cell_fields.hpp"
 
 namespace cosim::tracker {
 namespace {
@@ -31,42 +29,26 @@ std::vector<std::uint64_t> columns_of(const MoveTally& t) {
   return {std::begin(v), std::end(v)};
 }
 
-// Zero-padded, so the step groups list in time order wherever names are sorted.
-std::string step_name(std::uint64_t step) {
-  char text[24];
-  std::snprintf(text, sizeof text, "%06llu", static_cast<unsigned long long>(step));
-  return text;
-}
-
-// output/ writes float64 arrays only; the topology is integers.
-void write_int64_array(hid_t group, const std::string& name, const std::vector<std::int64_t>& values) {
-  const hsize_t n = values.size();
-  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "dataspace of " + name);
-  Handle ds(H5Dcreate2(group, name.c_str(), H5T_NATIVE_INT64, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-            H5Dclose, "create " + output::child_path(group, name));
-  output::check(H5Dwrite(ds.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
-                "write " + output::child_path(group, name));
-}
-
 }  // namespace
 
 struct TrackerFile::Impl {
+  Impl(const std::filesystem::path& p, const Mesh& mesh, std::size_t object_count)
+      : path(p), objects(object_count), frame{polyhedral_grid(mesh), {}}, fields(p), volume(mesh.volume) {}
+
   std::filesystem::path path;
   Handle file;
   std::size_t objects = 0;
   std::vector<Series> rows;     // step, time, particles, moves
   std::vector<Series> tallies;  // hits, absorbed, entered, left, released, impulse, angular_impulse, energy
-  std::vector<double> volume;  // per cell, for the density
-  output::XdmfSeries sidecar;
+  output::FieldFrame frame;     // the mesh, built once; the fields of the last write
+  output::FieldWriter fields;
+  std::vector<double> volume;   // per cell: into the grid's group once the first step wrote it
 };
 
 TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& scene, const Mesh& mesh,
                          const std::vector<std::string>& object_names)
-    : impl_(std::make_unique<Impl>()) {
+    : impl_(std::make_unique<Impl>(path, mesh, object_names.size())) {
   Impl& m = *impl_;
-  m.path = path;
-  m.objects = object_names.size();
-  m.volume = mesh.volume;
   output::in_file(path, [&] {
     m.file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "create file");
     const hid_t file = m.file.get();
@@ -81,23 +63,6 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
       output::write_attribute(run.get(), "status", std::string("running"));
       output::write_attribute(run.get(), "wall_seconds", 0.0);
     }
-    Handle fields = output::create_group(file, "fields");
-    Handle tracker = output::create_group(fields.get(), "tracker");
-    Handle grid = output::create_group(tracker.get(), "mesh");
-    std::vector<double> xyz;
-    for (const Vec3& v : mesh.vertices) xyz.insert(xyz.end(), {v.x(), v.y(), v.z()});
-    output::write_array(grid.get(), "vertices", {mesh.vertices.size(), 3}, xyz.data());
-    const std::vector<std::int64_t> topology = mixed_topology(mesh);
-    write_int64_array(grid.get(), "topology", topology);
-    output::write_array(grid.get(), "volume", {mesh.volume.size()}, mesh.volume.data());
-    m.sidecar = {.name = "tracker",
-                 .grid_group = "/fields/tracker/mesh",
-                 .cells = {},
-                 .steps = {},
-                 .polyhedra = {.cells = static_cast<std::size_t>(mesh.cell_count()),
-                               .vertices = mesh.vertices.size(),
-                               .topology_size = topology.size()}};
-
     Handle series = output::create_group(file, "tracker");
     m.rows.push_back(Series::create(series.get(), "step", 1, H5T_NATIVE_UINT64));
     m.rows.push_back(Series::create(series.get(), "time", 1, H5T_NATIVE_DOUBLE));
@@ -128,31 +93,16 @@ void TrackerFile::write(const Sample& s) {
   Impl& m = *impl_;
   output::in_file(m.path, [&] {
     const hid_t file = m.file.get();
-    const std::string group = "/fields/tracker/" + step_name(s.step);
-    const std::size_t cells = m.volume.size();
-    if (s.count.size() != cells || s.moments.size() != cells || s.objects.size() != m.objects)
-      throw output::ObjectError(group + ": the sample does not fit the mesh or the objects");
-    {
-      Handle step = output::create_group(file, group);
-      output::write_attribute(step.get(), "time", s.time);
-      std::vector<double> mean_count, density, velocity, temperature, pressure;
-      for (const CellMoments& c : s.moments) {
-        mean_count.push_back(c.count);
-        density.push_back(c.number_density);
-        velocity.insert(velocity.end(), {c.velocity.x(), c.velocity.y(), c.velocity.z()});
-        temperature.push_back(c.temperature);
-        pressure.push_back(c.pressure);
-      }
-      output::write_array(step.get(), "count", {cells}, s.count.data());
-      output::write_array(step.get(), "mean_count", {cells}, mean_count.data());
-      output::write_array(step.get(), "density", {cells}, density.data());
-      output::write_array(step.get(), "velocity", {cells, 3}, velocity.data());
-      output::write_array(step.get(), "temperature", {cells}, temperature.data());
-      output::write_array(step.get(), "pressure", {cells}, pressure.data());
+    if (s.objects.size() != m.objects)
+      throw output::ObjectError("step " + std::to_string(s.step) + ": " + std::to_string(s.objects.size()) +
+                                " object tallies for " + std::to_string(m.objects) + " objects");
+    m.frame.fields = cell_fields(s.moments, s.count);
+    m.fields.write(file, "tracker", s.step, s.time, m.frame);
+    if (!m.volume.empty()) {  // the first write has just made the grid's group
+      Handle grid = output::open_group(file, "/fields/tracker/grid");
+      output::write_array(grid.get(), "volume", {m.volume.size()}, m.volume.data());
+      m.volume = {};
     }
-    m.sidecar.steps.push_back({group, s.time,
-                               {{"count", 1}, {"mean_count", 1}, {"density", 1}, {"velocity", 3}, {"temperature", 1},
-                                {"pressure", 1}}});
 
     m.rows[0].append(&s.step);
     m.rows[1].append(&s.time);
@@ -175,8 +125,7 @@ void TrackerFile::write(const Sample& s) {
     }
     output::flush(file);
   });
-  output::write_replacing(std::filesystem::path(m.path).replace_extension(".xmf"),
-                          output::xdmf_document(m.path.filename().string(), {m.sidecar}));
+  m.fields.write_sidecar();
 }
 
 void TrackerFile::set_status(const std::string& status, double wall_seconds) {

@@ -2,14 +2,16 @@
 // with the tracker's unstructured cells:
 //   /run                      attrs scene_file, git_hash, cosim_version, started, status,
 //                             wall_seconds, participant_names ["tracker"]; scene_text
-//   /fields/tracker/mesh/     vertices (v x 3), topology (int64, XDMF Mixed polyhedra, see
-//                             mixed_topology.hpp), volume (cells, m^3)
-//   /fields/tracker/<step>/   attr time; per cell: count (particles at that step), and
-//                             averaged over the steps since the previous write (at step 0
-//                             the initial state): mean_count, density (1/m^3), velocity
-//                             (cells x 3, m/s), temperature (K), pressure (Pa): the
-//                             moments of tracking/sampling.hpp. <step>: the step index,
-//                             6+ digits
+//   /fields/tracker/grid/     the run file's polyhedral grid (output/run_file.hpp, written
+//                             by its FieldWriter): vertices (v x 3), topology (int64, XDMF
+//                             Mixed polyhedra, see mixed_topology.hpp), attr cells; and
+//                             volume (cells, m^3)
+//   /fields/tracker/<step>/   attr time; per cell (cell_fields.hpp): count (particles at
+//                             that step), and averaged over the steps since the previous
+//                             write (at step 0 the initial state): mean_count, density
+//                             (1/m^3), velocity (cells x 3, m/s), temperature (K), pressure
+//                             (Pa): the moments of tracking/sampling.hpp. <step>: the step
+//                             index, 6+ digits
 //   /tracker/                 one row per written step: step (uint64), time, particles
 //                             (uint64), moves (11 columns, attr columns: the MoveTally
 //                             totals since the start)

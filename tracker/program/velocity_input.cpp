@@ -13,10 +13,12 @@ VelocityField velocity_of(const output::FieldFrame& frame) {
                                   [](const output::CellField& f) { return f.name == "velocity"; });
   if (field == frame.fields.end() || field->components != 3)
     throw std::runtime_error("the fields have no 3-component velocity");
+  const auto* grid = std::get_if<output::RectilinearGrid>(&frame.grid);
+  if (grid == nullptr) throw std::runtime_error("the fields are not on a rectilinear grid");
   std::array<std::vector<double>, 3> centres;
   std::size_t cells = 1;
   for (std::size_t a = 0; a < 3; ++a) {
-    const std::vector<double>& nodes = frame.grid.nodes[a];
+    const std::vector<double>& nodes = grid->nodes[a];
     if (nodes.size() < 2) throw std::runtime_error("the fields' grid has fewer than 2 nodes along an axis");
     for (std::size_t i = 0; i + 1 < nodes.size(); ++i) centres[a].push_back(0.5 * (nodes[i] + nodes[i + 1]));
     cells *= centres[a].size();
@@ -41,9 +43,10 @@ VelocityField read_velocity(const std::filesystem::path& file, const std::string
     const std::string last = *std::max_element(steps.begin(), steps.end(), [](const std::string& a, const std::string& b) {
       return a.size() != b.size() ? a.size() < b.size() : a < b;
     });
-    output::FieldFrame frame;
+    output::RectilinearGrid grid;
     for (std::size_t a = 0; a < 3; ++a)
-      frame.grid.nodes[a] = output::read_array(h5.get(), base + "/grid/" + std::string(1, "xyz"[a]));
+      grid.nodes[a] = output::read_array(h5.get(), base + "/grid/" + std::string(1, "xyz"[a]));
+    output::FieldFrame frame{grid, {}};
     if (!output::has_link(output::open_group(h5.get(), base + "/" + last).get(), "velocity"))
       throw std::runtime_error("no velocity in " + base + "/" + last);
     frame.fields.push_back({"velocity", 3, output::read_array(h5.get(), base + "/" + last + "/velocity")});

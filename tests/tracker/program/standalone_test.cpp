@@ -1,7 +1,7 @@
 // cosim-tracker --standalone end to end: small scenes run through run_tracker and their run
 // files read back. A closed box conserves particles and a zone's crossings account for the
 // change inside it; an open outflow and an absorbing obstacle remove them; a periodic box
-// keeps them all. And the sidecar's polyhedra are the mesh's cells.
+// keeps them all. And the sidecar's polyhedra, and the fields handed on, are the mesh's cells.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -17,6 +17,8 @@
 #include "tracker/mesh/voronoi_mesh.hpp"
 #include "output/xdmf.hpp"
 #include "tracker/program/mixed_topology.hpp"
+#include "tracker/program/cell_fields.hpp"
+#include "tracker/mesh/box_mesh.hpp"
 #include "tracker/dsmc/collision.hpp"
 #include "tracker/dsmc/species.hpp"
 #include "tracker/program/standalone.hpp"
@@ -61,7 +63,7 @@ RunFileView read_run(const std::filesystem::path& path, bool objects) {
   run.moves.assign(moves.end() - static_cast<std::ptrdiff_t>(kColumns.size()), moves.end());
   output::Handle fields = output::open_group(file.get(), "/fields/tracker");
   for (const std::string& step : output::link_names(fields.get())) {
-    if (step == "mesh") continue;
+    if (step == "grid") continue;
     run.count.push_back(series("/fields/tracker/" + step + "/count"));
     run.mean_count.push_back(series("/fields/tracker/" + step + "/mean_count"));
     run.density.push_back(series("/fields/tracker/" + step + "/density"));
@@ -235,7 +237,7 @@ TEST(TrackerConfigs, SphereClusterChannelFoamAndSphereStreamRun) {
   output::Handle foam_file(H5Fopen(out("foam.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open");
   const auto last = [&](const char* name) {
     std::vector<std::string> steps = output::link_names(output::open_group(foam_file.get(), "/fields/tracker").get());
-    std::erase(steps, "mesh");
+    std::erase(steps, "grid");
     return output::Series::open(foam_file.get(), "/fields/tracker/" + steps.back() + "/" + name).read_all();
   };
   const std::vector<double> temperature = last("temperature"), weight = last("mean_count");
@@ -277,7 +279,7 @@ TEST(PolyhedraXdmf, MixedTopologyReadsBackAsTheCells) {
 
   const std::string doc = output::xdmf_document(
       "a&b.h5", {{.name = "tracker",
-                  .grid_group = "/fields/tracker/mesh",
+                  .grid_group = "/fields/tracker/grid",
                   .cells = {},
                   .steps = {{"/fields/tracker/000000", 0.5, {{"count", 1}, {"velocity", 3}}}},
                   .polyhedra = {.cells = 40, .vertices = mesh.vertices.size(), .topology_size = topology.size()}}});
@@ -286,6 +288,40 @@ TEST(PolyhedraXdmf, MixedTopologyReadsBackAsTheCells) {
   EXPECT_NE(doc.find("Dimensions=\"40 3\" NumberType=\"Float\""), std::string::npos);  // the vector field
   EXPECT_NE(doc.find("a&amp;b.h5:/fields/tracker/000000/count"), std::string::npos);
   EXPECT_NE(doc.find("<Time Value=\"0.5\"/>"), std::string::npos);
+}
+
+// What the tracker hands the run file (and the coupler): its cells as a polyhedral grid that
+// the writer's checks accept, with each sample's fields in cell order.
+TEST(TrackerFields, ThePolyhedralGridAndTheSamplesPerCell) {
+  BoxSpec spec;
+  spec.axes[0].cells = 2;
+  spec.tetrahedra = true;  // 12 cells
+  const Mesh mesh = box_mesh(spec);
+  std::vector<CellMoments> moments(12);
+  std::vector<double> count(12);
+  for (std::size_t c = 0; c < 12; ++c) {
+    count[c] = double(c);
+    moments[c] = {.count = 0.5 * double(c), .number_density = 1e20, .velocity = Vec3(double(c), 0, -1),
+                  .temperature = 300, .pressure = 0.4};
+  }
+  const output::FieldFrame frame = tracker_fields(mesh, moments, count);
+  EXPECT_EQ(output::grid_problem(frame.grid), "");
+  const auto& grid = std::get<output::PolyhedralGrid>(frame.grid);
+  EXPECT_EQ(grid.cells, 12u);
+  EXPECT_EQ(grid.vertices.size(), 3 * mesh.vertices.size());
+  EXPECT_EQ(grid.vertices[3 * 5 + 1], mesh.vertices[5].y());
+  EXPECT_EQ(grid.topology, mixed_topology(mesh));
+  std::vector<std::string> names;
+  for (const output::CellField& f : frame.fields) {
+    names.push_back(f.name);
+    EXPECT_EQ(f.values.size(), 12u * static_cast<std::size_t>(f.components)) << f.name;
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"count", "mean_count", "density", "velocity", "temperature", "pressure"}));
+  EXPECT_EQ(frame.fields[0].values, count);
+  EXPECT_EQ(frame.fields[1].values[7], 3.5);
+  EXPECT_EQ(frame.fields[3].components, 3);
+  EXPECT_EQ(frame.fields[3].values[3 * 7], 7.0);
+  EXPECT_EQ(frame.fields[3].values[3 * 7 + 2], -1.0);
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ std::filesystem::path rotation_run_file(const std::filesystem::path& dir) {
     for (int i = 0; i <= n; ++i) x.push_back(static_cast<double>(i) / n);
     return x;
   };
-  frame.grid.nodes = {nodes(10), nodes(10), nodes(2)};
+  frame.grid = output::RectilinearGrid{{nodes(10), nodes(10), nodes(2)}};
   output::CellField velocity{"velocity", 3, {}};
   const double omega = 2 * std::numbers::pi;
   for (int k = 0; k < 2; ++k)
