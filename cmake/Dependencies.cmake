@@ -43,3 +43,11 @@ set_target_properties(Voro::voro PROPERTIES IMPORTED_LOCATION "${VORO_LIBRARY}"
 find_path(PCG_INCLUDE_DIR pcg_random.hpp REQUIRED)
 add_library(Pcg::pcg INTERFACE IMPORTED)
 set_target_properties(Pcg::pcg PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${PCG_INCLUDE_DIR}")
+
+# The tracker's domain decomposition (tracker/parallel): METIS 5 graph partitioning;
+# Debian's libmetis-dev ships no CMake or pkg-config files.
+find_path(METIS_INCLUDE_DIR metis.h REQUIRED)
+find_library(METIS_LIBRARY metis REQUIRED)
+add_library(Metis::metis UNKNOWN IMPORTED)
+set_target_properties(Metis::metis PROPERTIES IMPORTED_LOCATION "${METIS_LIBRARY}"
+  INTERFACE_INCLUDE_DIRECTORIES "${METIS_INCLUDE_DIR}")

@@ -30,7 +30,7 @@ participant::Outputs TrackerSolver::initialise(const scene::Scene& scene, const 
   // The coupler's poses (the rigid-body program's) win over the scene's.
   std::vector<Eigen::Isometry3d> placed;
   for (std::size_t b = 0; b < poses.size() / kPoseWidth; ++b) placed.push_back(pose_of(poses, b));
-  gas_ = std::make_unique<Simulation>(scene, placed);
+  gas_ = std::make_unique<Simulation>(scene, placed, ranks_);
   if (!state.empty()) restore(state);
   return {{}, std::vector<double>(kForceWidth * bodies_, 0.0), 0};
 }
@@ -43,7 +43,7 @@ void TrackerSolver::check_size(const std::vector<double>& poses) const {
 
 participant::Outputs TrackerSolver::advance(const participant::Window& w, const participant::Inputs& in) {
   gas_->reseed(w.index);
-  const std::vector<ObstacleTally> before(gas_->tallies().begin(), gas_->tallies().end());
+  const std::vector<ObstacleTally> before = gas_->tallies();
   const std::vector<int>& body_of = gas_->setup().obstacle_body;
   const int steps = gas_->advance(w.t0, w.t1, [&](double t, double h) {
     if (in.poses_start.empty()) return;
@@ -52,16 +52,17 @@ participant::Outputs TrackerSolver::advance(const participant::Window& w, const 
     for (std::size_t i = 0; i < body_of.size(); ++i)
       if (body_of[i] >= 0) gas_->move_obstacle(static_cast<int>(i), pose_of(poses, static_cast<std::size_t>(body_of[i])), h);
   });
-  if (gas_->moves().lost > 0)
-    throw std::runtime_error(std::to_string(gas_->moves().lost) + " particles lost (outside their cells) by t = " +
+  if (const long long lost = gas_->moves().lost; lost > 0)
+    throw std::runtime_error(std::to_string(lost) + " particles lost (outside their cells) by t = " +
                              std::to_string(w.t1) + " s: a tracking bug");
 
   // Per unit particle mass in the tallies; times mass and weight is momentum.
   const double scale = gas_->setup().particles.mass * gas_->setup().particles.weight / (w.t1 - w.t0);
   std::vector<double> forces(kForceWidth * bodies_, 0.0);
+  const std::vector<ObstacleTally> after = gas_->tallies();
   for (std::size_t i = 0; i < body_of.size(); ++i) {
     if (body_of[i] < 0) continue;
-    const ObstacleTally& now = gas_->tallies()[i];
+    const ObstacleTally& now = after[i];
     const Vec3 force = scale * (now.impulse - before[i].impulse);
     const Vec3 torque = scale * (now.angular_impulse - before[i].angular_impulse);
     double* f = forces.data() + kForceWidth * static_cast<std::size_t>(body_of[i]);

@@ -1,7 +1,9 @@
 // cosim-tracker as a participant: the gas of the scene's tracker section, advanced window
 // by window. It needs the bodies' poses (obstacles bound to a body move with it) and
 // provides the gas's force and torque on each body (protocol::kForceWidth values per body,
-// zero for a body no obstacle is bound to).
+// zero for a body no obstacle is bound to). Over several ranks every rank runs one
+// (participant/mpi_team.hpp): its calls are collective and the forces are the sums over the
+// ranks, on every rank.
 #pragma once
 
 #include <memory>
@@ -13,6 +15,8 @@ namespace cosim::tracker {
 
 class TrackerSolver final : public participant::Solver {
  public:
+  explicit TrackerSolver(Ranks ranks = {}) : ranks_(ranks) {}
+
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
                                   const std::vector<double>& poses, const std::vector<double>& state) override;
   // Subcycles to exactly w.t1 in equal steps of at most the participant's dt; before each
@@ -30,6 +34,7 @@ class TrackerSolver final : public participant::Solver {
  private:
   void check_size(const std::vector<double>& poses) const;
 
+  Ranks ranks_;
   std::unique_ptr<Simulation> gas_;
   std::size_t bodies_ = 0;
 };

@@ -1,41 +1,79 @@
 // cosim-tracker: the tracker program.
 //   started by `cosim run` (COSIM_ENDPOINT set)         a coupled participant (adapter.hpp)
 //   cosim-tracker --standalone scene.yaml [-o f.h5]     particles among the scene's obstacles
+// Under mpirun the gas is spread over the ranks (tracker/parallel): rank 0 talks to the
+// coupler or writes the run file, the others follow (participant/mpi_team.hpp).
 #include <CLI/CLI.hpp>
+#include <mpi.h>
 
 #include <cstdio>
 #include <cstdlib>
 
+#include "participant/mpi_team.hpp"
 #include "participant/run_participant.hpp"
 #include "protocol/client.hpp"
 #include "scene/error.hpp"
 #include "tracker/program/adapter.hpp"
 #include "tracker/program/standalone.hpp"
 
-int main(int argc, char** argv) {
-  if (std::getenv(cosim::protocol::kEndpointEnv) != nullptr) {
+namespace {
+
+int coupled() {
+  cosim::tracker::TrackerSolver solver(cosim::tracker::Ranks(MPI_COMM_WORLD));
+  return cosim::participant::run_on_ranks(solver, MPI_COMM_WORLD, [](cosim::participant::Solver& lead) {
     using cosim::scene::Data;
-    cosim::tracker::TrackerSolver solver;
+    int ranks = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
     auto client = cosim::protocol::Client::from_environment();
     // Able to take poses and give forces; the coupler's plan decides what flows.
-    return cosim::participant::run_participant(*client, solver, static_cast<std::uint32_t>(Data::Forces),
-                                               static_cast<std::uint32_t>(Data::Poses));
-  }
-  CLI::App app{"cosim-tracker: ballistic particles through polyhedral meshes among CSG obstacles"};
-  std::string scene, output;
-  app.add_option("--standalone", scene, "Run this scene's tracker alone")->required();
-  app.add_option("-o,--output", output, "Run file to write (default: the scene's output.file)");
-  CLI11_PARSE(app, argc, argv);
-  return cosim::scene::exit_code("cosim-tracker", [&] {
-    const cosim::tracker::RunSummary s = cosim::tracker::run_tracker(cosim::scene::load_scene(scene), output);
-    std::fprintf(stderr, "cosim-tracker: %llu steps, %zu particles seeded, %zu entered, %zu remain, %lld collisions, %.2f s\n  %s\n",
+    return cosim::participant::run_participant(*client, lead, static_cast<std::uint32_t>(Data::Forces),
+                                               static_cast<std::uint32_t>(Data::Poses),
+                                               static_cast<std::uint32_t>(ranks));
+  });
+}
+
+int standalone(const std::string& scene, const std::string& output) {
+  const cosim::tracker::Ranks ranks(MPI_COMM_WORLD);
+  const int code = cosim::scene::exit_code("cosim-tracker", [&] {
+    const cosim::tracker::RunSummary s = cosim::tracker::run_tracker(cosim::scene::load_scene(scene), output, ranks);
+    if (!ranks.lead()) return s.moves.lost > 0 ? 1 : 0;
+    std::fprintf(stderr, "cosim-tracker: %llu steps, %zu particles seeded, %zu entered, %zu remain, %lld collisions, "
+                         "%.2f s\n  %s\n",
                  static_cast<unsigned long long>(s.steps), s.seeded, s.injected, s.remaining,
-                 static_cast<long long>(s.collisions), s.wall_seconds,
-                 cosim::tracker::summary(s.moves).c_str());
+                 static_cast<long long>(s.collisions), s.wall_seconds, cosim::tracker::summary(s.moves).c_str());
+    if (ranks.size() > 1)
+      std::fprintf(stderr, "cosim-tracker: %d ranks, %zu particles moved between them\n", ranks.size(), s.migrated);
     if (s.moves.lost > 0) {
       std::fprintf(stderr, "cosim-tracker: %lld particles lost (outside their cells): a tracking bug\n", s.moves.lost);
       return 1;
     }
     return 0;
   });
+  // A bad scene stops every rank alike (2); an error on one rank alone would leave the
+  // others waiting in a collective.
+  if (code != 0 && code != 2 && ranks.size() > 1) MPI_Abort(MPI_COMM_WORLD, code);
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int code = 0;
+  MPI_Init(&argc, &argv);
+  if (std::getenv(cosim::protocol::kEndpointEnv) != nullptr) {
+    code = coupled();
+  } else {
+    CLI::App app{"cosim-tracker: ballistic particles through polyhedral meshes among CSG obstacles"};
+    std::string scene, output;
+    app.add_option("--standalone", scene, "Run this scene's tracker alone")->required();
+    app.add_option("-o,--output", output, "Run file to write (default: the scene's output.file)");
+    try {
+      app.parse(argc, argv);
+      code = standalone(scene, output);
+    } catch (const CLI::ParseError& e) {
+      code = app.exit(e);
+    }
+  }
+  MPI_Finalize();
+  return code;
 }

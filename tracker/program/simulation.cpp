@@ -48,7 +48,7 @@ class StateIn {
 };
 
 // Bumped when the layout changes, so an old checkpoint is refused, not misread.
-constexpr double kStateVersion = 1;
+constexpr double kStateVersion = 2;
 
 void put_tally(StateOut& out, const ObstacleTally& t) {
   for (long long n : {t.hits, t.absorbed, t.entered, t.left, t.released, t.overrun}) out.put(static_cast<double>(n));
@@ -73,6 +73,40 @@ auto move_counters(MoveTally& m) {
                     &m.lost,     &m.object_events, &m.primitive_tests};
 }
 
+// A tally's counts and vectors summed over the ranks.
+std::vector<ObstacleTally> summed(std::vector<ObstacleTally> tallies, const Ranks& ranks) {
+  std::vector<long long> counts;
+  std::vector<double> values;
+  for (const ObstacleTally& t : tallies) {
+    counts.insert(counts.end(), {t.hits, t.absorbed, t.entered, t.left, t.released, t.overrun});
+    for (const Vec3* v : {&t.impulse, &t.angular_impulse}) values.insert(values.end(), v->data(), v->data() + 3);
+    values.push_back(t.energy);
+  }
+  ranks.sum(counts);
+  ranks.sum(values);
+  const long long* n = counts.data();
+  const double* x = values.data();
+  for (ObstacleTally& t : tallies) {
+    for (long long* count : {&t.hits, &t.absorbed, &t.entered, &t.left, &t.released, &t.overrun}) *count = *n++;
+    for (Vec3* v : {&t.impulse, &t.angular_impulse})
+      for (int k = 0; k < 3; ++k) (*v)[k] = *x++;
+    t.energy = *x++;
+  }
+  return tallies;
+}
+
+// Rank 0 draws what a one-rank run draws; another rank has streams of its own, and its
+// first (seeding) stream is none of its windows' (the seed sequences differ in length).
+Random first_random(std::uint64_t seed, int rank) {
+  if (rank == 0) return Random(seed);
+  std::seed_seq own{seed, static_cast<std::uint64_t>(rank), std::uint64_t{0}, std::uint64_t{0}};
+  return Random(own);
+}
+
+// The collisions' pcg64 stream of a window on a rank: rank 0's is the window's, as on one
+// rank; ranks are 2^48 streams apart, more windows than any run has.
+std::uint64_t collision_stream(std::uint64_t window, int rank) { return window + (static_cast<std::uint64_t>(rank) << 48); }
+
 TrackerScene placed(TrackerScene setup, const std::vector<Eigen::Isometry3d>& body_poses) {
   if (body_poses.empty()) return setup;
   for (int i = 0; i < setup.obstacles.count(); ++i)
@@ -87,35 +121,50 @@ TrackerScene placed(TrackerScene setup, const std::vector<Eigen::Isometry3d>& bo
 
 }  // namespace
 
-Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isometry3d>& body_poses)
+Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isometry3d>& body_poses, Ranks ranks)
     : setup_(placed(read_tracker(scene), body_poses)),
       velocity_(setup_.tracers ? setup_.tracers->velocity : std::nullopt),
       seed_(setup_.particles.seed),
-      random_(seed_),
-      swarm_(seed_particles(*setup_.mesh, setup_.obstacles, setup_.particles, random_)),
+      decomposition_(*setup_.mesh, ranks),
+      random_(first_random(seed_, ranks.rank())),
+      swarm_(seed_particles(*setup_.mesh, setup_.obstacles, setup_.particles, random_,
+                            ranks.size() > 1 ? decomposition_.owners() : std::span<const int>{}, ranks.rank())),
       sampler_(*setup_.mesh),
       tallies_(static_cast<std::size_t>(setup_.obstacles.count())),
       seeded_(swarm_.size()) {
+  if (ranks.size() > 1)
+    for (Inflow& inflow : setup_.inflows) inflow.keep_faces_of([&](Index cell) { return decomposition_.owns(cell); });
   if (setup_.collisions) {
     // The first (sigma g)_max per cell: at the hottest temperature the scene gives.
     double hottest = setup_.particles.temperature;
     for (const Inflow& inflow : setup_.inflows) hottest = std::max(hottest, inflow.temperature());
     collider_.emplace(*setup_.mesh, *setup_.collisions, std::max(hottest, 1.0), setup_.particles.weight, seed_);
+    collider_->reseed(seed_, collision_stream(0, ranks.rank()));
   }
   sampler_.sample(swarm_);
 }
 
 void Simulation::reseed(std::uint64_t stream) {
-  std::seed_seq walls{seed_, stream};
-  random_.seed(walls);
-  if (collider_) collider_->reseed(seed_, stream);
+  const int rank = decomposition_.ranks().rank();
+  if (rank == 0) {
+    std::seed_seq walls{seed_, stream};
+    random_.seed(walls);
+  } else {
+    std::seed_seq walls{seed_, stream, static_cast<std::uint64_t>(rank)};
+    random_.seed(walls);
+  }
+  if (collider_) collider_->reseed(seed_, collision_stream(stream, rank));
 }
 
 void Simulation::move_obstacle(int i, const Eigen::Isometry3d& pose, double dt) {
   setup_.obstacles.set_pose(i, pose, dt, *setup_.domain, swarm_, random_, tallies_[static_cast<std::size_t>(i)]);
+  obstacles_moved_ = true;
 }
 
 void Simulation::step(double dt) {
+  // An overrun particle is put back where the wall met it, maybe in another rank's cell.
+  if (obstacles_moved_) migrated_ += decomposition_.migrate(swarm_);
+  obstacles_moved_ = false;
   // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
   swarm_.sort_by_cell(mesh().cell_count());
   if (collider_) collisions_ += collider_->collide(swarm_, dt);
@@ -126,6 +175,9 @@ void Simulation::step(double dt) {
   for (const Inflow& inflow : setup_.inflows)
     injected_ += static_cast<std::size_t>(
         inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_, tallies_));
+  // The whole mesh is on every rank, so a move crosses into other ranks' cells freely; the
+  // particles go to their cells' owners once all of them have moved.
+  migrated_ += decomposition_.migrate(swarm_);
   sampler_.sample(swarm_);
   ++steps_;
 }
@@ -157,13 +209,44 @@ int Simulation::advance(double t0, double t1, const std::function<void(double t,
   return steps;
 }
 
+std::size_t Simulation::particles() const {
+  return static_cast<std::size_t>(decomposition_.ranks().sum(static_cast<long long>(swarm_.size())));
+}
+std::size_t Simulation::seeded() const {
+  return static_cast<std::size_t>(decomposition_.ranks().sum(static_cast<long long>(seeded_)));
+}
+std::size_t Simulation::injected() const {
+  return static_cast<std::size_t>(decomposition_.ranks().sum(static_cast<long long>(injected_)));
+}
+std::size_t Simulation::migrated() const {
+  return static_cast<std::size_t>(decomposition_.ranks().sum(static_cast<long long>(migrated_)));
+}
+std::int64_t Simulation::collisions() const { return decomposition_.ranks().sum(collisions_); }
+
+MoveTally Simulation::moves() const {
+  MoveTally moves = moves_;
+  std::vector<long long> counts;
+  for (long long* n : move_counters(moves)) counts.push_back(*n);
+  decomposition_.ranks().sum(counts);
+  for (std::size_t k = 0; long long* n : move_counters(moves)) *n = counts[k++];
+  return moves;
+}
+
+std::vector<ObstacleTally> Simulation::tallies() const { return summed(tallies_, decomposition_.ranks()); }
+
 std::vector<double> Simulation::counts() const {
   std::vector<double> count(static_cast<std::size_t>(mesh().cell_count()), 0.0);
   for (std::size_t i = 0; i < swarm_.size(); ++i) count[static_cast<std::size_t>(swarm_.cell(i))] += 1.0;
+  decomposition_.ranks().sum(count);
   return count;
 }
 
 std::vector<CellMoments> Simulation::take_moments() {
+  // A rank's sums are zero outside its cells. Every rank sampled at every step: the sample
+  // count (the first value) is each rank's, not summed.
+  std::vector<double> sums = sampler_.sums();
+  decomposition_.ranks().sum(std::span(sums).subspan(1));
+  sampler_.set_sums(sums);
   std::vector<CellMoments> moments;
   for (Index c = 0; c < mesh().cell_count(); ++c)
     moments.push_back(sampler_.moments(c, setup_.particles.mass, setup_.particles.weight));
@@ -175,11 +258,14 @@ std::vector<double> Simulation::state() const {
   StateOut out;
   const int objects = setup_.obstacles.count();
   out.put(kStateVersion);
+  out.put(decomposition_.ranks().size());
+  out.put(decomposition_.ranks().rank());
   out.put(objects);
   out.put(static_cast<double>(mesh().cell_count()));
   out.put(static_cast<double>(steps_));
   out.put(static_cast<double>(seeded_));
   out.put(static_cast<double>(injected_));
+  out.put(static_cast<double>(migrated_));
   out.put(static_cast<double>(collisions_));
   out.put(static_cast<double>(swarm_.size()));
   for (std::size_t i = 0; i < swarm_.size(); ++i) {
@@ -211,11 +297,14 @@ void Simulation::restore(std::span<const double> state) {
   StateIn in(state);
   const int objects = setup_.obstacles.count();
   in.expect(kStateVersion, "layout version");
+  in.expect(decomposition_.ranks().size(), "ranks");
+  in.expect(decomposition_.ranks().rank(), "rank");
   in.expect(objects, "obstacles");
   in.expect(static_cast<double>(mesh().cell_count()), "cells");
   steps_ = in.get_count<std::uint64_t>();
   seeded_ = in.get_count<std::size_t>();
   injected_ = in.get_count<std::size_t>();
+  migrated_ = in.get_count<std::size_t>();
   collisions_ = in.get_count<std::int64_t>();
   Swarm swarm(objects);
   std::vector<csg::State> states(static_cast<std::size_t>(objects));
@@ -225,6 +314,7 @@ void Simulation::restore(std::span<const double> state) {
     for (int k = 0; k < 3; ++k) p.v[k] = in.get();
     p.cell = in.get_count<Index>();
     if (p.cell < 0 || p.cell >= mesh().cell_count()) throw std::runtime_error("tracker state: a particle in no cell");
+    if (!decomposition_.owns(p.cell)) throw std::runtime_error("tracker state: a particle in another rank's cell");
     for (csg::State& s : states) s = in.get_bits();
     swarm.add(p, states);
   }
@@ -253,6 +343,7 @@ void Simulation::restore(std::span<const double> state) {
   in.finish();
   sampler_.set_sums(sums);
   swarm_ = std::move(swarm);
+  obstacles_moved_ = false;
 }
 
 }  // namespace cosim::tracker

@@ -2,6 +2,11 @@
 // particles, their collisions, inflow, walls and obstacles, and what is sampled of them.
 // One step (step()) is what DSMC codes do per time step: sort by cell, collide, move,
 // inject, sample.
+//
+// Over several ranks (tracker/parallel) every rank holds the whole mesh and all obstacles
+// but only the particles in the cells it owns; particles that moved into another rank's
+// cells migrate there before sampling. The totals and per-cell results below are sums over
+// the ranks: those calls are collective, every rank must make them in the same order.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +18,7 @@
 #include "scene/scene.hpp"
 #include "tracker/program/collide.hpp"
 #include "tracker/program/scene_tracker.hpp"
+#include "tracker/parallel/decomposition.hpp"
 #include "tracker/tracking/sampling.hpp"
 
 namespace cosim::tracker {
@@ -22,22 +28,26 @@ class Simulation {
   // Reads the scene's tracker section (scene::SceneError if it is bad) and seeds the
   // particles with the scene's seed, around the obstacles bound to bodies at `body_poses`
   // (one per scene body, world from body frame) or, if none are given, where the scene
-  // puts the bodies.
-  explicit Simulation(const scene::Scene& scene, const std::vector<Eigen::Isometry3d>& body_poses = {});
+  // puts the bodies. Collective over `ranks`: each rank seeds the cells it owns, from its
+  // own random stream (rank 0's is a one-rank run's).
+  explicit Simulation(const scene::Scene& scene, const std::vector<Eigen::Isometry3d>& body_poses = {},
+                      Ranks ranks = {});
 
   const TrackerScene& setup() const { return setup_; }
   const Mesh& mesh() const { return *setup_.mesh; }
+  const Decomposition& decomposition() const { return decomposition_; }
+  // This rank's particles: those in its cells.
   const Swarm& swarm() const { return swarm_; }
 
-  // Every random draw from here on comes from `stream` of the scene's seed: a coupled run
-  // reseeds at each window, so a repeated window draws the same numbers and a run resumed
-  // from a checkpoint continues as it would have.
+  // Every random draw from here on comes from `stream` of the scene's seed (one stream per
+  // rank): a coupled run reseeds at each window, so a repeated window draws the same
+  // numbers and a run resumed from a checkpoint continues as it would have.
   void reseed(std::uint64_t stream);
   // Moves obstacle i to `pose` (world from its shape's frame) over the time dt, before the
   // step that covers that time (Obstacles::set_pose).
   void move_obstacle(int i, const Eigen::Isometry3d& pose, double dt);
-  // One step of length dt: the gas's, or in tracer mode each tracer carried by the
-  // velocity field (std::runtime_error if there is none yet).
+  // One step of length dt (collective): the gas's, or in tracer mode each tracer carried
+  // by the velocity field (std::runtime_error if there is none yet).
   void step(double dt);
   // Tracer mode: the fluid's velocity from here on (coupled runs: every window).
   void set_velocity(VelocityField velocity) { velocity_ = std::move(velocity); }
@@ -46,23 +56,26 @@ class Simulation {
   // number of steps. Standalone and coupled runs step a window alike.
   int advance(double t0, double t1, const std::function<void(double t, double h)>& before = {});
 
-  // Totals since the start.
   std::uint64_t steps() const { return steps_; }
-  std::size_t seeded() const { return seeded_; }
-  std::size_t injected() const { return injected_; }  // through inflow patches
-  std::int64_t collisions() const { return collisions_; }
-  const MoveTally& moves() const { return moves_; }
-  std::span<const ObstacleTally> tallies() const { return tallies_; }
+  // Totals over the ranks since the start (collective).
+  std::size_t particles() const;  // now
+  std::size_t seeded() const;
+  std::size_t injected() const;  // through inflow patches
+  std::size_t migrated() const;  // sent to another rank, counted once per move between ranks
+  std::int64_t collisions() const;
+  MoveTally moves() const;
+  std::vector<ObstacleTally> tallies() const;
 
-  // Particles per cell now.
+  // Particles per cell now (collective).
   std::vector<double> counts() const;
   // The per-cell moments averaged over the steps since the last call (or the start), then
-  // a new average begins.
+  // a new average begins (collective).
   std::vector<CellMoments> take_moments();
 
   // Everything a later restore() needs to continue exactly from here (with the same
-  // reseed() calls): particles and states, obstacle poses, collision state per cell, the
-  // sampler's sums and the totals. Random generators are not in it (see reseed()).
+  // reseed() calls): this rank's particles and states, obstacle poses, collision state per
+  // cell, the sampler's sums and the rank's totals. Random generators are not in it (see
+  // reseed()). A state restores on the rank, and the rank count, that wrote it.
   std::vector<double> state() const;
   // std::runtime_error for a state that is not one of this scene's.
   void restore(std::span<const double> state);
@@ -73,14 +86,17 @@ class Simulation {
   TrackerScene setup_;
   std::optional<VelocityField> velocity_;  // tracer mode
   std::uint64_t seed_;
+  Decomposition decomposition_;
   Random random_;
   Swarm swarm_;
   CellSampler sampler_;
   std::optional<CellCollider> collider_;
   std::vector<ObstacleTally> tallies_;
   MoveTally moves_;
+  bool obstacles_moved_ = false;  // since the last step: overrun particles may have changed cell
   std::uint64_t steps_ = 0;
-  std::size_t seeded_ = 0, injected_ = 0;
+  // This rank's.
+  std::size_t seeded_ = 0, injected_ = 0, migrated_ = 0;
   std::int64_t collisions_ = 0;
 };
 

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
 
 #include "participant/seconds_since.hpp"
 #include "tracker/program/progress.hpp"
@@ -10,33 +11,42 @@
 
 namespace cosim::tracker {
 
-RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) {
+RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, Ranks ranks) {
   const auto started = std::chrono::steady_clock::now();
-  Simulation gas(scene);
-  if (!scene.bodies.empty())
+  Simulation gas(scene, {}, ranks);
+  if (!scene.bodies.empty() && ranks.lead())
     std::fprintf(stderr, "cosim-tracker: note: --standalone keeps the scene's %zu bodies (and the obstacles bound to "
                          "them) where the scene puts them; in coupled runs the rigid-body program moves them\n",
                  scene.bodies.size());
 
   if (output.empty()) output = scene.output.file;
-  if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
-  std::vector<std::string> names;
-  for (int i = 0; i < gas.setup().obstacles.count(); ++i) names.push_back(gas.setup().obstacles.object(i).name);
-  TrackerFile file(output, scene, gas.mesh(), names);
+  std::optional<TrackerFile> file;
+  if (ranks.lead()) {
+    if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
+    std::vector<std::string> names;
+    for (int i = 0; i < gas.setup().obstacles.count(); ++i) names.push_back(gas.setup().obstacles.object(i).name);
+    file.emplace(output, scene, gas.mesh(), names);
+  }
 
   RunSummary summary;
   const std::uint64_t windows = scene.windows();
+  // Every rank gathers (the sums are collective), rank 0 writes.
   const auto write = [&](double time) {
     const std::vector<double> count = gas.counts();
     const std::vector<CellMoments> moments = gas.take_moments();
-    file.write({.step = gas.steps(),
-                .time = time,
-                .particles = gas.swarm().size(),
-                .count = count,
-                .moments = moments,
-                .objects = gas.tallies(),
-                .moves = gas.moves()});
+    const std::vector<ObstacleTally> tallies = gas.tallies();
+    const MoveTally moves = gas.moves();
+    const std::size_t particles = gas.particles();
+    if (file)
+      file->write({.step = gas.steps(),
+                   .time = time,
+                   .particles = particles,
+                   .count = count,
+                   .moments = moments,
+                   .objects = tallies,
+                   .moves = moves});
   };
+  // Shown only on a terminal, and no rank's stderr is one under mpirun: its count is the run's.
   Progress progress(windows, scene.time.end);
   try {
     write(0.0);
@@ -50,18 +60,19 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output) 
     }
   } catch (const std::exception& e) {
     progress.finish();
-    file.set_status(std::string("failed: ") + e.what(), participant::seconds_since(started));
+    if (file) file->set_status(std::string("failed: ") + e.what(), participant::seconds_since(started));
     throw;
   }
   progress.finish();
   summary.steps = gas.steps();
   summary.seeded = gas.seeded();
   summary.injected = gas.injected();
-  summary.remaining = gas.swarm().size();
+  summary.remaining = gas.particles();
+  summary.migrated = gas.migrated();
   summary.collisions = gas.collisions();
   summary.moves = gas.moves();
   summary.wall_seconds = participant::seconds_since(started);
-  file.set_status("finished", summary.wall_seconds);
+  if (file) file->set_status("finished", summary.wall_seconds);
   return summary;
 }
 

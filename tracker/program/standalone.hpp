@@ -1,11 +1,14 @@
 // cosim-tracker --standalone: the scene's gas without a coupler, window by window as
 // `cosim run` steps it (Simulation::advance), written to the tracker's run file
 // (tracker_file.hpp) at the start, every output.fields_every windows and the last.
+// Over several ranks (`mpirun -n N cosim-tracker --standalone`) every rank runs it on its
+// cells' particles and rank 0 alone writes the file, of the sums over the ranks.
 #pragma once
 
 #include <filesystem>
 
 #include "scene/scene.hpp"
+#include "tracker/parallel/ranks.hpp"
 #include "tracker/tracking/move.hpp"
 
 namespace cosim::tracker {
@@ -16,12 +19,14 @@ struct RunSummary {
   std::size_t injected = 0;               // entered through inflow patches: remaining =
                                           // seeded + injected - moves.removed
   std::int64_t collisions = 0;            // DSMC collisions, if the scene has them
+  std::size_t migrated = 0;               // particles sent between ranks
   MoveTally moves;
   double wall_seconds = 0.0;
 };
 
 // Writes `output` (empty: the scene's output.file). Throws scene::SceneError for a bad
 // scene, std::runtime_error otherwise (the file then says "failed: ..." in /run status).
-RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output);
+// Collective over `ranks`; the summary is the totals over them, on every rank.
+RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, Ranks ranks = {});
 
 }  // namespace cosim::tracker

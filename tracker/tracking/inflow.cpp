@@ -61,6 +61,12 @@ Inflow::Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream
   }
 }
 
+void Inflow::keep_faces_of(const std::function<bool(Index cell)>& mine) {
+  std::erase_if(entries_, [&](const Entry& e) { return !mine(e.cell); });
+  rate_ = 0.0;
+  for (const Entry& e : entries_) rate_ += e.rate;
+}
+
 Vec3 Inflow::point_on(const Entry& entry, Random& random) const {
   // A triangle of the fan from the first vertex by area, then a uniform point in it.
   std::uniform_real_distribution<double> uniform(0.0, 1.0);

@@ -8,6 +8,7 @@
 
 #include "tracker/tracking/swarm.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace cosim::tracker {
@@ -27,6 +28,9 @@ class Inflow {
   // patch without faces. Keeps a reference to the mesh.
   Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream& stream);
 
+  // Keeps only the faces of the cells `mine` accepts (a rank's own, tracker/parallel):
+  // inject() and rate() then cover those.
+  void keep_faces_of(const std::function<bool(Index cell)>& mine);
   // Simulators entering per second through all the faces (the mean of inject / dt).
   double rate() const { return rate_; }
   double temperature() const { return stream_.temperature; }

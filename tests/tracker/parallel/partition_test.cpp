@@ -1,0 +1,110 @@
+// The cell partition (every cell in one part, parts balanced within METIS's default 3 %,
+// the same on every call, periodic faces linking cells) and the migration records (a
+// particle and its states come back bit for bit), on one process.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "tracker/mesh/box_mesh.hpp"
+#include "tracker/parallel/migration.hpp"
+#include "tracker/parallel/partition.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+Mesh box(std::array<int, 3> cells, bool tetrahedra = false, std::array<bool, 3> periodic = {false, false, false}) {
+  BoxSpec spec;
+  for (int a = 0; a < 3; ++a) spec.axes[static_cast<std::size_t>(a)].cells = cells[static_cast<std::size_t>(a)];
+  spec.tetrahedra = tetrahedra;
+  spec.periodic = periodic;
+  return box_mesh(spec);
+}
+
+bool linked(const CellGraph& g, int a, int b) {
+  return std::binary_search(g.neighbours.begin() + g.start[a], g.neighbours.begin() + g.start[a + 1], b);
+}
+
+TEST(CellGraph, InteriorAndPeriodicFacesLinkCellsBothWaysOnce) {
+  const Mesh open = box({4, 3, 2}), periodic = box({4, 3, 2}, false, {true, false, false});
+  const CellGraph a = cell_graph(open), b = cell_graph(periodic);
+  ASSERT_EQ(a.start.size(), 25u);
+  for (int c = 0; c < 24; ++c)
+    for (int k = a.start[c]; k < a.start[c + 1]; ++k) {
+      EXPECT_NE(a.neighbours[k], c);
+      EXPECT_TRUE(linked(a, a.neighbours[k], c));
+    }
+  // Cells along x fastest: 0 and 3 are the two ends of the first row.
+  EXPECT_FALSE(linked(a, 0, 3));
+  EXPECT_TRUE(linked(b, 0, 3));
+  EXPECT_TRUE(linked(b, 3, 0));
+  EXPECT_EQ(b.neighbours.size(), a.neighbours.size() + 2 * 3 * 2);
+  // Two cells along a periodic axis meet through two faces: one link.
+  const CellGraph two = cell_graph(box({2, 1, 1}, false, {true, true, true}));
+  EXPECT_EQ(two.neighbours, (std::vector<int>{1, 0}));
+}
+
+TEST(Partition, EveryCellInOnePartBalancedAndDeterministic) {
+  for (const Mesh& mesh : {box({20, 20, 20}), box({8, 8, 8}, true, {true, true, false})}) {
+    for (int parts : {2, 3, 4}) {
+      const std::vector<int> part = partition_cells(mesh, parts);
+      ASSERT_EQ(part.size(), static_cast<std::size_t>(mesh.cell_count()));
+      std::vector<int> size(static_cast<std::size_t>(parts), 0);
+      for (int p : part) {
+        ASSERT_GE(p, 0);
+        ASSERT_LT(p, parts);
+        ++size[static_cast<std::size_t>(p)];
+      }
+      // METIS's default load imbalance for k-way partitioning: 1.03 (ufactor 30).
+      const double even = static_cast<double>(mesh.cell_count()) / parts;
+      for (int s : size) {
+        EXPECT_GT(s, 0);
+        EXPECT_LE(s, std::ceil(1.03 * even)) << parts << " parts of " << mesh.cell_count();
+      }
+      EXPECT_EQ(partition_cells(mesh, parts), part);
+    }
+  }
+}
+
+TEST(Partition, OnePartWithoutMetisAndBadCountsRefused) {
+  const Mesh mesh = box({3, 3, 3});
+  EXPECT_EQ(partition_cells(mesh, 1), std::vector<int>(27, 0));
+  EXPECT_THROW(partition_cells(mesh, 0), std::invalid_argument);
+  EXPECT_THROW(partition_cells(mesh, 28), std::invalid_argument);
+}
+
+TEST(Migration, RecordsCarryAParticleAndItsStatesBitForBit) {
+  Swarm swarm(3), back(3);
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 50; ++i) {
+    const std::vector<csg::State> states{random(), random(), random()};
+    swarm.add({{u(random), u(random), u(random)}, {1e3 * u(random), 1e3 * u(random), 1e3 * u(random)}, i}, states);
+  }
+  const std::size_t size = record_bytes(3);
+  EXPECT_EQ(size, 40u + 3 * 8);
+  std::vector<std::byte> records(size * swarm.size());
+  for (std::size_t i = 0; i < swarm.size(); ++i) pack(swarm, i, std::span(records).subspan(i * size, size));
+  unpack(records, back);
+  ASSERT_EQ(back.size(), swarm.size());
+  for (std::size_t i = 0; i < swarm.size(); ++i) {
+    const Particle a = swarm.particle(i), b = back.particle(i);
+    EXPECT_EQ(a.x, b.x);
+    EXPECT_EQ(a.v, b.v);
+    EXPECT_EQ(a.cell, b.cell);
+    EXPECT_TRUE(std::ranges::equal(swarm.states(i), back.states(i)));
+  }
+  EXPECT_THROW(unpack(std::span(records).first(size + 1), back), std::invalid_argument);
+}
+
+TEST(Migration, OneRankKeepsEveryParticle) {
+  Swarm swarm(0);
+  for (int i = 0; i < 10; ++i) swarm.add({{0, 0, 0}, {1, 0, 0}, i}, {});
+  const std::vector<int> owner(10, 0);
+  EXPECT_EQ(migrate(swarm, owner, Ranks()), 0u);
+  EXPECT_EQ(swarm.size(), 10u);
+}
+
+}  // namespace
+}  // namespace cosim::tracker

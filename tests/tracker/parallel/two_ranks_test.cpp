@@ -1,0 +1,266 @@
+// The tracker's gas over two MPI ranks (run under `mpirun -n 2`): the partition is the
+// same on both ranks, migration delivers every particle with its states to the owner of its
+// cell, and a scene run on two ranks gives one rank's answer within the statistical
+// scatter of the two runs (different random streams), computed per quantity below. A
+// repeated coupling window on two ranks gives the same forces after restore().
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <random>
+#include <regex>
+#include <sstream>
+
+#include "output/h5_handle.hpp"
+#include "output/series.hpp"
+#include "participant/mpi_team.hpp"
+#include "tracker/mesh/box_mesh.hpp"
+#include "tracker/parallel/decomposition.hpp"
+#include "tracker/parallel/partition.hpp"
+#include "tracker/program/adapter.hpp"
+#include "tracker/program/standalone.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+int rank() {
+  int r = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
+Mesh box(int n) {
+  BoxSpec spec;
+  for (AxisSpacing& a : spec.axes) a.cells = n;
+  return box_mesh(spec);
+}
+
+TEST(Decomposition, TheSameOnBothRanksAndMetisAnswer) {
+  const Mesh mesh = box(10);
+  const Decomposition d(mesh, Ranks(MPI_COMM_WORLD));
+  ASSERT_EQ(d.ranks().size(), 2) << "run this test with mpirun -n 2";
+  std::vector<int> owners(d.owners().begin(), d.owners().end()), low(owners.size()), high(owners.size());
+  MPI_Allreduce(owners.data(), low.data(), static_cast<int>(owners.size()), MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(owners.data(), high.data(), static_cast<int>(owners.size()), MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  EXPECT_EQ(low, high);
+  EXPECT_EQ(owners, partition_cells(mesh, 2));
+}
+
+TEST(Migration, EveryParticleReachesItsCellsOwnerWithItsStates) {
+  const Mesh mesh = box(6);
+  const Decomposition d(mesh, Ranks(MPI_COMM_WORLD));
+  // 1000 particles per rank in random cells; states: an id unique over the ranks and its
+  // complement, so a record mixed up on the way shows.
+  Swarm swarm(2);
+  std::mt19937_64 random(static_cast<std::uint64_t>(rank()) + 7);
+  std::uniform_int_distribution<Index> cell(0, mesh.cell_count() - 1);
+  long long leaving = 0;
+  for (std::uint64_t i = 0; i < 1000; ++i) {
+    const Index c = cell(random);
+    const std::uint64_t id = static_cast<std::uint64_t>(rank()) * 1000 + i;
+    swarm.add({mesh.centroid[c], {static_cast<double>(id), 0, 0}, c}, std::vector<csg::State>{id, ~id});
+    leaving += d.owns(c) ? 0 : 1;
+  }
+  EXPECT_EQ(static_cast<long long>(d.migrate(swarm)), leaving);
+  long long ids = 0;
+  for (std::size_t i = 0; i < swarm.size(); ++i) {
+    const Particle p = swarm.particle(i);
+    EXPECT_TRUE(d.owns(p.cell));
+    EXPECT_EQ(p.x, mesh.centroid[p.cell]);
+    EXPECT_EQ(swarm.states(i)[0], static_cast<std::uint64_t>(p.v.x()));
+    EXPECT_EQ(swarm.states(i)[1], ~swarm.states(i)[0]);
+    ids += static_cast<long long>(swarm.states(i)[0]);
+  }
+  EXPECT_EQ(d.ranks().sum(static_cast<long long>(swarm.size())), 2000);
+  EXPECT_EQ(d.ranks().sum(ids), 1999LL * 2000 / 2);  // every id once
+}
+
+// What the comparisons read from a run file (rank 0).
+struct RunFile {
+  std::vector<double> particles, hits, impulse, moves;
+  std::vector<double> mean_count, temperature;  // per cell, the last written step
+};
+
+RunFile read_run(const std::filesystem::path& path) {
+  output::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + path.string());
+  const auto series = [&](const std::string& name) { return output::Series::open(file.get(), name).read_all(); };
+  RunFile run{series("/tracker/particles"), series("/tracker/objects/hits"), series("/tracker/objects/impulse"),
+              series("/tracker/moves"), {}, {}};
+  std::vector<double> steps = series("/tracker/step");
+  char last[24];
+  std::snprintf(last, sizeof last, "%06llu", static_cast<unsigned long long>(steps.back()));
+  run.mean_count = series(std::string("/fields/tracker/") + last + "/mean_count");
+  run.temperature = series(std::string("/fields/tracker/") + last + "/temperature");
+  return run;
+}
+
+double column(const RunFile& run, int k) { return run.moves[run.moves.size() - 11 + static_cast<std::size_t>(k)]; }
+constexpr int kRemoved = 7, kLost = 8;
+
+struct OneAndTwo {
+  RunSummary one, two;
+  RunFile one_file, two_file;
+};
+
+// The scene on both ranks (rank 0 writes), then on rank 0 alone; the files are read on rank 0.
+OneAndTwo run_on_one_and_two(const scene::Scene& scene, const std::string& name) {
+  const auto dir = std::filesystem::path(::testing::TempDir());
+  OneAndTwo r;
+  r.two = run_tracker(scene, dir / (name + "-two.h5"), Ranks(MPI_COMM_WORLD));
+  if (rank() == 0) {
+    r.one = run_tracker(scene, dir / (name + "-one.h5"), Ranks(MPI_COMM_SELF));
+    r.one_file = read_run(dir / (name + "-one.h5"));
+    r.two_file = read_run(dir / (name + "-two.h5"));
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  return r;
+}
+
+// |a - b| within `sigmas` standard deviations of the difference of two independent runs
+// each with variance `variance`.
+void expect_close(double a, double b, double variance, const char* what, double sigmas = 5.0) {
+  const double tolerance = sigmas * std::sqrt(2.0 * variance);
+  std::printf("  %-34s 1 rank %14.6g  2 ranks %14.6g  |diff| %10.4g  tolerance %10.4g\n", what, a, b, std::abs(a - b),
+              tolerance);
+  EXPECT_LE(std::abs(a - b), tolerance) << what;
+}
+
+constexpr double kBoltzmann = 1.380649e-23;
+
+// SPARTA's collide deck in small: VSS argon at 273 K in a closed specular box of 10^3
+// cells, 20 simulators per cell, around a diffuse ball at the gas's temperature.
+TEST(TwoRanks, ClosedBoxConservesParticlesAndMatchesOneRank) {
+  const scene::Scene scene = scene::load_scene_from_string(
+      "time: {end: 3.5e-7}\ncoupling: {window: 3.5e-7}\noutput: {fields_every: 10}\n"
+      "domain: {min: [0, 0, 0], max: [1.0e-4, 1.0e-4, 1.0e-4]}\neffects: [rarefied_gas]\n"
+      "participants:\n  tracker:\n    dt: 7.0e-9\n    options:\n"
+      "      mesh: {type: box, cells: [10, 10, 10]}\n"
+      "      boundaries: {default: {kind: specular}}\n"
+      "      collisions: {species: Ar, model: vss}\n"
+      "      obstacles:\n"
+      "        - {name: ball, shape: {ball: {centre: [5.0e-5, 5.0e-5, 5.0e-5], radius: 2.0e-5}}, "
+      "wall: {kind: diffuse, temperature: 273.15}}\n"
+      "      particles: {per_cell: 20, temperature: 273.15, mass: 6.63e-26, weight: 3.5e6, seed: 3}\n",
+      "closed.yaml");
+  const OneAndTwo r = run_on_one_and_two(scene, "closed");
+  EXPECT_GT(r.two.migrated, 1000u);
+  EXPECT_EQ(r.two.remaining, r.two.seeded);
+  EXPECT_EQ(r.two.moves.lost, 0);
+  if (rank() != 0) return;
+  std::printf("closed box, VSS argon, diffuse ball, 50 steps; %zu particles moved between the ranks\n", r.two.migrated);
+  for (double n : r.two_file.particles) EXPECT_EQ(n, static_cast<double>(r.two.seeded));  // every written step
+  EXPECT_EQ(column(r.two_file, kLost), 0);
+  EXPECT_EQ(column(r.two_file, kRemoved), 0);
+
+  // Seeding draws 20,000 points and drops those inside the ball: binomial.
+  const double draws = 20000, dropped = 1.0 - static_cast<double>(r.one.seeded) / draws;
+  expect_close(static_cast<double>(r.one.seeded), static_cast<double>(r.two.seeded), draws * dropped * (1 - dropped),
+               "seeded");
+  // Collisions and hits: counts of rare independent events, Poisson.
+  const auto one_c = static_cast<double>(r.one.collisions), two_c = static_cast<double>(r.two.collisions);
+  expect_close(one_c, two_c, 0.5 * (one_c + two_c), "collisions");
+  const double one_h = r.one_file.hits.back(), two_h = r.two_file.hits.back();
+  expect_close(one_h, two_h, 0.5 * (one_h + two_h), "hits on the ball");
+  // Simulators in the cells x < L/2 (cells x fastest): binomial with p = 1/2, the time
+  // average only narrows it.
+  const auto left = [](const std::vector<double>& mean_count) {
+    double n = 0;
+    for (std::size_t c = 0; c < mean_count.size(); ++c)
+      if (c % 10 < 5) n += mean_count[c];
+    return n;
+  };
+  const auto n = static_cast<double>(r.one.seeded);
+  expect_close(left(r.one_file.mean_count), left(r.two_file.mean_count), n / 4, "mean simulators in x < L/2");
+  // The gas's temperature (cells weighted by their simulators): a sample of N Maxwellian
+  // simulators has a relative variance 2 / (3 N) of its kinetic energy.
+  const auto temperature = [](const RunFile& f) {
+    double sum = 0, weight = 0;
+    for (std::size_t c = 0; c < f.mean_count.size(); ++c) {
+      sum += f.mean_count[c] * f.temperature[c];
+      weight += f.mean_count[c];
+    }
+    return sum / weight;
+  };
+  const double t1 = temperature(r.one_file);
+  expect_close(t1, temperature(r.two_file), 2.0 / (3.0 * n) * t1 * t1, "temperature (K)");
+}
+
+scene::Scene sphere_stream(const std::string& end, const std::string& window) {
+  std::ifstream in(std::filesystem::path(COSIM_CONFIGS_DIR) / "tracker-sphere-stream.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = std::regex_replace(text.str(), std::regex(R"(time:\n  end: [^\n]+)"), "time:\n  end: " + end);
+  s = std::regex_replace(s, std::regex(R"(coupling:\n  window: [^\n]+)"), "coupling:\n  window: " + window);
+  return scene::load_scene_from_string(s, "tracker-sphere-stream.yaml");
+}
+
+// configs/tracker-sphere-stream.yaml for 2 ms: the stream half across the box, collisions,
+// the diffuse sphere hit.
+TEST(TwoRanks, SphereStreamMatchesOneRank) {
+  const OneAndTwo r = run_on_one_and_two(sphere_stream("2.0e-3", "2.0e-3"), "stream");
+  EXPECT_EQ(r.two.moves.lost, 0);
+  EXPECT_EQ(r.two.remaining + static_cast<std::size_t>(r.two.moves.removed), r.two.seeded + r.two.injected);
+  if (rank() != 0) return;
+  std::printf("sphere stream, 200 steps; %zu particles moved between the ranks\n", r.two.migrated);
+  EXPECT_EQ(column(r.one_file, kLost), 0);
+  EXPECT_EQ(column(r.two_file, kLost), 0);
+  // Counts of independent arrivals (the open box holds an ideal gas): Poisson.
+  for (const auto& [one, two, what] :
+       {std::tuple{static_cast<double>(r.one.injected), static_cast<double>(r.two.injected), "entered"},
+        std::tuple{static_cast<double>(r.one.remaining), static_cast<double>(r.two.remaining), "particles at the end"},
+        std::tuple{static_cast<double>(r.one.collisions), static_cast<double>(r.two.collisions), "collisions"},
+        std::tuple{r.one_file.hits.back(), r.two_file.hits.back(), "hits on the sphere"}})
+    expect_close(one, two, 0.5 * (one + two), what);
+  // The drag's impulse (per unit mass) is a sum over H hits of each hit's dv_x, so its
+  // variance is H <dv_x^2> = H ((I / H)^2 + var dv_x); var dv_x is at most the incoming
+  // stream's thermal kT/m plus the diffuse re-emission's, under 2 (1 + pi/2) kT/m from
+  // the spread of the sphere's normals: 4 kT/m bounds the sum, at 300 K.
+  const double hits = 0.5 * (r.one_file.hits.back() + r.two_file.hits.back());
+  const double impulse = r.one_file.impulse[r.one_file.impulse.size() - 3];
+  const double per_hit = impulse / hits;
+  expect_close(impulse, r.two_file.impulse[r.two_file.impulse.size() - 3],
+               hits * (per_hit * per_hit + 4.0 * kBoltzmann * 300 / 6.63e-26), "drag impulse x (m/s)");
+}
+
+// The coupled mode's calls on two ranks through participant::run_on_ranks, as cosim-tracker
+// makes them: a window repeated after restore() (state gathered from and scattered to both
+// ranks) gives the same forces bit for bit.
+TEST(TwoRanks, RepeatedWindowAfterRestoreGivesTheSameForces) {
+  TrackerSolver solver{Ranks(MPI_COMM_WORLD)};
+  const scene::Scene scene = sphere_stream("2.0e-3", "1.0e-3");
+  participant::run_on_ranks(solver, MPI_COMM_WORLD, [&](participant::Solver& lead) {
+    lead.initialise(scene, "tracker", {}, {});
+    lead.advance({0, 1, 0.0, 1.0e-3}, {});
+    const std::vector<double> state = lead.state();
+    EXPECT_EQ(state.front(), 2);  // ranks: participant/mpi_team.hpp's layout
+    const std::vector<double> first = lead.advance({1, 1, 1.0e-3, 2.0e-3}, {}).forces;
+    lead.restore(state);
+    const std::vector<double> again = lead.advance({1, 2, 1.0e-3, 2.0e-3}, {}).forces;
+    EXPECT_EQ(first, again);
+    // The stream's front reaches the sphere after 1.6 ms: the drag has begun.
+    EXPECT_GT(first.at(0), 0.0);
+    return 0;
+  });
+}
+
+}  // namespace
+}  // namespace cosim::tracker
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  // One report: rank 1's failures still count in the exit code.
+  if (rank != 0) delete ::testing::UnitTest::GetInstance()->listeners().Release(
+      ::testing::UnitTest::GetInstance()->listeners().default_result_printer());
+  const int failed = RUN_ALL_TESTS();
+  int any = 0;
+  MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Finalize();
+  return any;
+}

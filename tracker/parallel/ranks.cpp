@@ -1,0 +1,36 @@
+#include "tracker/parallel/ranks.hpp"
+
+#include <climits>
+#include <stdexcept>
+
+namespace cosim::tracker {
+namespace {
+
+int count(std::size_t n) {
+  if (n > static_cast<std::size_t>(INT_MAX)) throw std::length_error("more values than MPI can count in one call");
+  return static_cast<int>(n);
+}
+
+}  // namespace
+
+Ranks::Ranks(MPI_Comm comm) : comm_(comm) {
+  MPI_Comm_rank(comm, &rank_);
+  MPI_Comm_size(comm, &size_);
+}
+
+void Ranks::sum(std::span<double> values) const {
+  if (size_ > 1 && !values.empty())
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), count(values.size()), MPI_DOUBLE, MPI_SUM, comm_);
+}
+
+void Ranks::sum(std::span<long long> values) const {
+  if (size_ > 1 && !values.empty())
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), count(values.size()), MPI_LONG_LONG, MPI_SUM, comm_);
+}
+
+long long Ranks::sum(long long value) const {
+  sum(std::span(&value, 1));
+  return value;
+}
+
+}  // namespace cosim::tracker

@@ -1,0 +1,32 @@
+// The ranks one gas is spread over (tracker/parallel/README.md). A default Ranks is one
+// rank and makes no MPI call, so the libraries and their tests run without MPI_Init.
+#pragma once
+
+#include <mpi.h>
+
+#include <span>
+
+namespace cosim::tracker {
+
+class Ranks {
+ public:
+  Ranks() = default;
+  explicit Ranks(MPI_Comm comm);
+
+  MPI_Comm comm() const { return comm_; }
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool lead() const { return rank_ == 0; }
+
+  // Each value replaced by its sum over the ranks, on every rank (collective).
+  void sum(std::span<double> values) const;
+  void sum(std::span<long long> values) const;
+  long long sum(long long value) const;
+
+ private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int rank_ = 0;
+  int size_ = 1;
+};
+
+}  // namespace cosim::tracker
