@@ -26,7 +26,13 @@ BoundaryCondition read_condition(const Reader& r, bool allow_periodic) {
   c.kind = static_cast<BoundaryKind>(r.choice("kind", kKinds));
   if (c.kind == BoundaryKind::periodic && !allow_periodic)
     r.fail("kind", "an obstacle wall cannot be periodic; expected specular, diffuse, maxwell or open");
-  if (re_emits(c)) c.temperature = r.number("temperature", Range::above(0));
+  if (re_emits(c)) {
+    c.temperature = r.number("temperature", Range::above(0));
+    const scene::Vec3 v = r.vec3("velocity", scene::Vec3{0, 0, 0});
+    c.velocity = {v[0], v[1], v[2]};
+  } else if (r.has("velocity")) {
+    r.fail("velocity", "only diffuse and maxwell walls move (a mirror sliding along itself reflects as one at rest)");
+  }
   if (c.kind == BoundaryKind::maxwell) c.accommodation = r.number("accommodation", Range::closed(0, 1));
   r.finish();  // a temperature on a specular wall is a mistake worth naming
   return c;

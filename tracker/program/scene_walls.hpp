@@ -1,9 +1,12 @@
 // Wall conditions as the scene writes them, for the mesh's patches and for obstacle walls:
 //
-//   {kind: specular | diffuse | maxwell | open | periodic, temperature: 300, accommodation: 0.8}
+//   {kind: specular | diffuse | maxwell | open | periodic, temperature: 300, accommodation: 0.8,
+//    velocity: [50, 0, 0]}
 //
 // temperature (K, > 0) only for diffuse and maxwell, accommodation (the diffuse fraction,
-// [0, 1]) only for maxwell; periodic only for mesh patches the mesh links.
+// [0, 1]) only for maxwell; velocity (m/s, optional, default at rest) only for diffuse and
+// maxwell: the wall slides at its tangential part (BoundaryCondition::velocity); periodic
+// only for mesh patches the mesh links.
 //
 //   boundaries:                 # participants.tracker.options.boundaries
 //     default: {kind: specular} # every patch not named; optional

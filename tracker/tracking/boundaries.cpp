@@ -20,6 +20,26 @@ Vec3 diffuse(const Vec3& n, double temperature, double mass, Random& random) {
   return normal * n + gauss(random) * t1 + gauss(random) * t2;
 }
 
+namespace {
+
+Vec3 re_emit(const BoundaryCondition& wall, double mass, const Vec3& n, Random& random) {
+  return diffuse(n, wall.temperature, mass, random) + wall.velocity - n.dot(wall.velocity) * n;
+}
+
+}  // namespace
+
+void SurfaceTally::add(const SurfaceTally& other) {
+  hits += other.hits;
+  absorbed += other.absorbed;
+  impulse += other.impulse;
+  energy += other.energy;
+}
+
+void SurfaceTally::exchange(const Vec3& before, const Vec3& after) {
+  impulse += before - after;
+  energy += 0.5 * (before.squaredNorm() - after.squaredNorm());
+}
+
 bool hit_wall(const Boundaries& boundaries, Index patch, const Vec3& n, Vec3& v, Random& random) {
   if (boundaries.patches[patch].kind == BoundaryKind::periodic)
     throw std::logic_error("a particle reached a face of periodic patch " + std::to_string(patch) +
@@ -33,11 +53,11 @@ bool hit_wall(const BoundaryCondition& wall, double mass, const Vec3& n, Vec3& v
       v = specular(v, n);
       return true;
     case BoundaryKind::diffuse:
-      v = diffuse(n, wall.temperature, mass, random);
+      v = re_emit(wall, mass, n, random);
       return true;
     case BoundaryKind::maxwell:
       v = std::uniform_real_distribution<double>(0.0, 1.0)(random) < wall.accommodation
-              ? diffuse(n, wall.temperature, mass, random)
+              ? re_emit(wall, mass, n, random)
               : specular(v, n);
       return true;
     case BoundaryKind::periodic:

@@ -26,6 +26,9 @@ void check(const Mesh& mesh, const Boundaries& boundaries) {
     if (re_emits(wall) && !(wall.temperature > 0.0 && boundaries.mass > 0.0))
       throw std::invalid_argument(mesh.source + ": patch " + std::to_string(p) +
                                   " re-emits particles but the wall temperature or the particle mass is not positive");
+    if (refuses_velocity(wall))
+      throw std::invalid_argument(mesh.source + ": patch " + std::to_string(p) +
+                                  " has a velocity, which only diffuse and maxwell walls take");
   }
 }
 

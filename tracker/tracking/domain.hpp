@@ -8,8 +8,9 @@
 namespace cosim::tracker {
 
 struct Domain {
-  // Throws std::invalid_argument if a patch of the mesh has no boundary condition, or a
-  // re-emitting wall has no temperature or the particles no mass. Keeps a reference to
+  // Throws std::invalid_argument if a patch of the mesh has no boundary condition, a
+  // re-emitting wall has no temperature or the particles no mass, or a wall that does not
+  // re-emit has a velocity. Keeps a reference to
   // the mesh, which must outlive it.
   Domain(const Mesh& mesh, Boundaries boundaries);
 

@@ -97,7 +97,7 @@ Vec3 Inflow::velocity(const Entry& entry, Random& random) const {
 }
 
 long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, Swarm& swarm,
-                    MoveTally& moves, std::span<ObstacleTally> tallies) const {
+                    MoveTally& moves, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) const {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<csg::State> states(static_cast<std::size_t>(obstacles.count()));
   long entered = 0;
@@ -108,7 +108,7 @@ long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt,
       Particle p{point_on(entry, random), velocity(entry, random), cell};
       obstacles.classify(cell, p.x, states);
       if (obstacles.inside_wall(cell, states)) continue;  // the face is covered by a wall there
-      const MoveResult result = move(domain, obstacles, p, states, uniform(random) * dt, random, tallies);
+      const MoveResult result = move(domain, obstacles, p, states, uniform(random) * dt, random, tallies, patches);
       moves.add(result);
       ++entered;
       if (!result.removed) swarm.add(p, states);

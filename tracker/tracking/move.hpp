@@ -25,9 +25,11 @@ MoveResult move(Algorithm algorithm, const Domain& domain, Particle& particle, d
 // The event-driven move among CSG obstacles: `states` holds the particle's logical state
 // per object (kept up to date), `tallies` one entry per object (added to). The face and
 // object events of the cell are merged in time order; a wall's boundary event reflects or
-// absorbs the particle (`removed`), a zone's is crossed and counted.
+// absorbs the particle (`removed`), a zone's is crossed and counted. `patches`, if not
+// empty, holds one tally per boundary condition of the domain (Boundaries::patches), added
+// to at every hit of a boundary face of that patch.
 MoveResult move(const Domain& domain, const Obstacles& obstacles, Particle& particle, std::span<csg::State> states,
-                double dt, Random& random, std::span<ObstacleTally> tallies);
+                double dt, Random& random, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches = {});
 
 // Sums of MoveResults over many moves, for studies and tests.
 struct MoveTally {

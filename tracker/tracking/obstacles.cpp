@@ -38,15 +38,12 @@ void require_periodic(const Mesh& mesh, const Obstacle& object) {
 }  // namespace
 
 void ObstacleTally::add(const ObstacleTally& other) {
-  hits += other.hits;
-  absorbed += other.absorbed;
+  SurfaceTally::add(other);
   entered += other.entered;
   left += other.left;
   released += other.released;
   overrun += other.overrun;
-  impulse += other.impulse;
   angular_impulse += other.angular_impulse;
-  energy += other.energy;
 }
 
 Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects)
@@ -63,6 +60,8 @@ Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const 
       throw std::invalid_argument("obstacle '" + object.name + "': a wall cannot be periodic");
     if (!object.permeable && re_emits(object.wall) && !(object.wall.temperature > 0.0))
       throw std::invalid_argument("obstacle '" + object.name + "': a re-emitting wall needs a positive temperature");
+    if (!object.permeable && refuses_velocity(object.wall))
+      throw std::invalid_argument("obstacle '" + object.name + "': only diffuse and maxwell walls take a velocity");
     require_periodic(tracking, object);
     emits_ = emits_ || (!object.permeable && re_emits(object.wall));
     cells_.emplace_back(bounding, object.shape);
@@ -83,10 +82,8 @@ void Obstacles::find_active() {
 }
 
 void ObstacleTally::exchange(const Vec3& x, const Vec3& origin, const Vec3& before, const Vec3& after) {
-  const Vec3 given = before - after;
-  impulse += given;
-  angular_impulse += (x - origin).cross(given);
-  energy += 0.5 * (before.squaredNorm() - after.squaredNorm());
+  SurfaceTally::exchange(before, after);
+  angular_impulse += (x - origin).cross(before - after);
 }
 
 void Obstacles::classify(Index cell, const Vec3& x, std::span<csg::State> states) const {

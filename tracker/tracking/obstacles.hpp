@@ -24,21 +24,17 @@ struct Obstacle {
   BoundaryCondition wall;         // impermeable: specular, diffuse, maxwell, or open (absorbs)
 };
 
-// What the particles did at one object's surface, summed over moves.
-struct ObstacleTally {
-  long long hits = 0;       // reflections off a wall, absorptions included
-  long long absorbed = 0;   // removed at an open wall
+// What the particles did at one object's surface, summed over moves: the SurfaceTally of its
+// hits (hits, absorbed at an open wall, impulse, energy) and what only objects have.
+struct ObstacleTally : SurfaceTally {
   long long entered = 0;    // into a permeable zone
   long long left = 0;       // out of a permeable zone
   long long released = 0;   // found inside a wall by their state and let out at its surface:
                             // a repaired state, 0 unless something went wrong
   long long overrun = 0;    // put back in front of a moving wall (Obstacles::set_pose)
-  // What the hits gave the object, per unit particle mass (times the mass and the simulator
-  // weight, over the sampled time: force, torque and heat flow): momentum v_before -
-  // v_after, its moment about the object's pose origin, and kinetic energy.
-  Vec3 impulse = Vec3::Zero();
+  // The moment of the impulse about the object's pose origin (times the mass and the
+  // simulator weight over the sampled time: the torque).
   Vec3 angular_impulse = Vec3::Zero();
-  double energy = 0.0;
   void add(const ObstacleTally& other);
   // A hit at x (an absorbed particle: after = 0).
   void exchange(const Vec3& x, const Vec3& origin, const Vec3& before, const Vec3& after);

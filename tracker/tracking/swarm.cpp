@@ -22,12 +22,12 @@ void Swarm::keep(std::size_t from, std::size_t to) {
 }
 
 void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, MoveTally& moves,
-                     std::span<ObstacleTally> tallies) {
+                     std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) {
   // The removed ones are dropped as the loop goes: each kept particle moves down at most once.
   std::size_t kept = 0;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     Particle p = particle(i);
-    const MoveResult result = move(domain, obstacles, p, states(i), dt, random, tallies);
+    const MoveResult result = move(domain, obstacles, p, states(i), dt, random, tallies, patches);
     moves.add(result);
     if (result.removed) continue;
     set(i, p);

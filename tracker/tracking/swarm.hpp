@@ -51,9 +51,10 @@ class Swarm {
     states_.resize(kept * objects_);
   }
   // Moves every particle by dt with the event-driven algorithm, drops the removed ones and
-  // adds what happened to `moves` and `tallies` (one per obstacle).
+  // adds what happened to `moves`, `tallies` (one per obstacle) and `patches` (one per
+  // boundary condition, or none: see move()).
   void move_all(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, MoveTally& moves,
-                std::span<ObstacleTally> tallies);
+                std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches = {});
   // Counting sort by cell (stable), as DSMC codes keep their particles: the particles of a
   // cell, and the cell's faces, are then together in memory.
   void sort_by_cell(Index cells);

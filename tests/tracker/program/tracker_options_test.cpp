@@ -71,6 +71,20 @@ TEST(TrackerOptions, WallMistakesNameTheKey) {
             "no error");
 }
 
+TEST(TrackerOptions, MovingWallsTakeAVelocityOnlyWhereTheyReEmit) {
+  const std::string p = std::string(kParticles) + "      boundaries:\n        default: {kind: specular}\n";
+  const TrackerScene t = read_tracker(scene_with(
+      p + "        y_max: {kind: diffuse, temperature: 300, velocity: [50, 0, -2]}\n"
+          "        y_min: {kind: maxwell, temperature: 300, accommodation: 0.5}\n"));
+  EXPECT_EQ(t.domain->boundaries.patches[3].velocity, Vec3(50, 0, -2));
+  EXPECT_EQ(t.domain->boundaries.patches[2].velocity, Vec3::Zero());
+  EXPECT_ERROR(p + "        y_max: {kind: specular, velocity: [50, 0, 0]}\n",
+               "boundaries.y_max.velocity = [50, 0, 0]: only diffuse and maxwell walls move");
+  EXPECT_ERROR(p + "        y_max: {kind: open, velocity: [1, 0, 0]}\n", "boundaries.y_max.velocity");
+  EXPECT_ERROR(p + "        y_max: {kind: diffuse, temperature: 300, velocity: [50, 0]}\n",
+               "boundaries.y_max.velocity");
+}
+
 TEST(TrackerOptions, ObstacleMistakesNameTheKey) {
   const std::string p = std::string(kParticles) + "      boundaries: {default: {kind: specular}}\n      obstacles:\n";
   const std::string ball = "shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}";

@@ -147,6 +147,33 @@ TEST(Sampling, OpenBoxCellsHaveTheStreamsMoments) {
   EXPECT_EQ(sampler.moments(0, 1.0, 1.0).count, 0.0);
 }
 
+// Two simulators in a cell of volume 1/8, velocities u +- c with c = (1, 2, 0), u = (3, 0, 1),
+// weight 4, mass 2 (n = 64): the pressure tensor is n m c c^T, the heat flux
+// n m <|c|^2 c> / 2 = 0 (symmetric), and with a third at rest the moments follow by hand.
+TEST(Sampling, StressAndHeatFluxFromTheSummedMoments) {
+  const Mesh mesh = unit_box(2);
+  Swarm swarm(0);
+  const Vec3 u(3, 0, 1), c(1, 2, 0);
+  swarm.add({Vec3::Constant(0.25), u + c, 0}, {});
+  swarm.add({Vec3::Constant(0.25), u - c, 0}, {});
+  CellSampler sampler(mesh);
+  sampler.sample(swarm);
+  CellMoments m = sampler.moments(0, 2.0, 4.0);
+  EXPECT_TRUE(m.stress.isApprox(64.0 * 2.0 * c * c.transpose(), 1e-12));
+  EXPECT_LT(m.heat_flux.norm(), 1e-9);
+  EXPECT_NEAR(m.pressure, m.stress.trace() / 3.0, 1e-12 * m.pressure);
+  // Add one at rest: n = 96, mean u' = 2u/3, peculiar velocities u/3 + c, u/3 - c, -2u/3.
+  swarm.add({Vec3::Constant(0.25), Vec3::Zero(), 0}, {});
+  sampler.reset();
+  sampler.sample(swarm);
+  m = sampler.moments(0, 2.0, 4.0);
+  const Vec3 a = u / 3 + c, b = u / 3 - c, d = -2.0 * u / 3;
+  const Eigen::Matrix3d stress = 96.0 * 2.0 / 3.0 * (a * a.transpose() + b * b.transpose() + d * d.transpose());
+  const Vec3 heat = 0.5 * 96.0 * 2.0 / 3.0 * (a.squaredNorm() * a + b.squaredNorm() * b + d.squaredNorm() * d);
+  EXPECT_TRUE(m.stress.isApprox(stress, 1e-12));
+  EXPECT_TRUE(m.heat_flux.isApprox(heat, 1e-12));
+}
+
 // Hits on a fixed wall give it momentum, its moment and energy: a head-on specular hit at
 // distance r from the origin along y gives 2 v, r x 2 v and no energy; an absorbed one v,
 // r x v and its kinetic energy.

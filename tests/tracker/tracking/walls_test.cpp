@@ -1,6 +1,8 @@
 // Boundary conditions: specular mirrors, diffuse re-emission statistics, Maxwell's
-// accommodation fraction, removal at open patches, and flights through periodic links.
+// accommodation fraction, moving walls, patch tallies, removal at open patches, and flights
+// through periodic links.
 
+#include "tracker/csg/shapes.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/voronoi_mesh.hpp"
 #include "tracker/tracking/move.hpp"
@@ -59,6 +61,82 @@ TEST(Walls, MaxwellAccommodationFraction) {
     mirrored += v == specular(incoming, n);
   }
   EXPECT_NEAR(double(mirrored) / samples, 0.7, 0.01);
+}
+
+TEST(Walls, MovingWallsReEmitAboutTheirTangentialVelocity) {
+  // The normal part of the velocity (here 30 m/s along n) is dropped: the patch does not move.
+  const Vec3 n = Vec3::UnitY(), velocity(100.0, 30.0, -40.0);
+  for (const BoundaryKind kind : {BoundaryKind::diffuse, BoundaryKind::maxwell}) {
+    const Boundaries boundaries{
+        {{.kind = kind, .temperature = 300.0, .accommodation = 1.0, .velocity = velocity}}, argon};
+    Random random(6);
+    const int samples = 100000;
+    Vec3 mean = Vec3::Zero();
+    for (int i = 0; i < samples; ++i) {
+      Vec3 v(0.0, -300.0, 0.0);
+      ASSERT_TRUE(hit_wall(boundaries, 0, n, v, random));
+      mean += v / samples;
+    }
+    // Tangential components: standard error sqrt(k T / m) / sqrt(samples) = 0.8 m/s.
+    const double normal = std::sqrt(std::numbers::pi * boltzmann * 300.0 / (2.0 * argon));
+    EXPECT_NEAR(mean.x(), 100.0, 4.0);
+    EXPECT_NEAR(mean.z(), -40.0, 4.0);
+    EXPECT_NEAR(mean.y() / normal, 1.0, 0.01);
+  }
+  // A mirror sliding along itself is the plain mirror: refused rather than ignored.
+  BoxSpec spec;
+  const Mesh mesh = box_mesh(spec);
+  Boundaries sliding{std::vector<BoundaryCondition>(6), argon};
+  sliding.patches[2].velocity = Vec3(1.0, 0.0, 0.0);
+  EXPECT_THROW(Domain(mesh, sliding), std::invalid_argument);
+  const BoundaryCondition mirror{.kind = BoundaryKind::specular, .velocity = Vec3(1.0, 0.0, 0.0)};
+  EXPECT_THROW(Obstacles(mesh, {{"ball", csg::Tree(csg::ball(Vec3::Constant(0.5), 0.2)), false, mirror}}),
+               std::invalid_argument);
+}
+
+TEST(Walls, PatchTalliesBalanceTheParticlesMomentumAndEnergy) {
+  // A closed box whose patches re-emit at two temperatures, slide, mirror and absorb: what
+  // the patches took is what the particles lost, to round-off (moved as Particles in double).
+  BoxSpec spec;
+  for (auto& axis : spec.axes) axis.cells = 3;
+  const Mesh mesh = box_mesh(spec);
+  Boundaries boundaries{std::vector<BoundaryCondition>(6), argon};
+  boundaries.patches[0] = {.kind = BoundaryKind::diffuse, .temperature = 200.0, .velocity = Vec3(0, 50, 0)};
+  boundaries.patches[1] = {.kind = BoundaryKind::diffuse, .temperature = 400.0};
+  boundaries.patches[2] = {.kind = BoundaryKind::maxwell, .temperature = 300.0, .accommodation = 0.5,
+                           .velocity = Vec3(-80, 0, 0)};
+  boundaries.patches[5] = {.kind = BoundaryKind::open};
+  const Domain domain(mesh, boundaries);
+  const Obstacles none;
+  Random random(7);
+  std::normal_distribution<double> gauss(0.0, 300.0);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<SurfaceTally> patches(6);
+  Vec3 lost_momentum = Vec3::Zero();
+  double lost_energy = 0.0;
+  long long removed = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 x(uniform(random), uniform(random), uniform(random));
+    Particle p{x, Vec3(gauss(random), gauss(random), gauss(random)), domain.locator.locate(x)};
+    const Vec3 before = p.v;
+    const MoveResult result = move(domain, none, p, {}, 0.05, random, {}, patches);
+    const Vec3 after = result.removed ? Vec3::Zero() : p.v;
+    removed += result.removed;
+    lost_momentum += before - after;
+    lost_energy += 0.5 * (before.squaredNorm() - after.squaredNorm());
+  }
+  SurfaceTally all;
+  for (const SurfaceTally& t : patches) all.add(t);
+  EXPECT_GT(all.hits, 2000);
+  EXPECT_EQ(all.absorbed, removed);
+  EXPECT_EQ(patches[5].absorbed, removed);
+  EXPECT_GT(patches[3].hits, 0);  // the specular y_max
+  EXPECT_LT((all.impulse - lost_momentum).norm(), 1e-9 * lost_momentum.norm());
+  EXPECT_NEAR(all.energy, lost_energy, 1e-9 * std::abs(lost_energy));
+  // Wrong sizes are refused.
+  std::vector<SurfaceTally> five(5);
+  Particle p{Vec3::Constant(0.5), Vec3::UnitX(), domain.locator.locate(Vec3::Constant(0.5))};
+  EXPECT_THROW(move(domain, none, p, {}, 0.05, random, {}, five), std::invalid_argument);
 }
 
 TEST(Walls, OpenPatchRemovesAndOthersReflect) {

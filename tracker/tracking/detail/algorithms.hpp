@@ -26,14 +26,17 @@ struct FaceEvent {
 FaceEvent first_exit(const Mesh& mesh, const Particle& particle, Index skip, bool clamp_behind, double horizon);
 
 // The particle is on `face` of its cell: it enters the neighbour (periodic shift applied),
-// or the wall changes its velocity, or it leaves through an open patch.
-Crossed cross(const Domain& domain, Particle& particle, Index face, Random& random, MoveResult& result);
+// or the wall changes its velocity, or it leaves through an open patch; a wall hit is added
+// to its patch's tally if `patches` is not empty.
+Crossed cross(const Domain& domain, Particle& particle, Index face, Random& random, MoveResult& result,
+              std::span<SurfaceTally> patches = {});
 
 // What a particle carries through the obstacles: its states, and where its hits are counted.
 struct Carried {
   const Obstacles* obstacles = nullptr;  // none: a move through the mesh alone
   std::span<csg::State> states;
   std::span<ObstacleTally> tallies;
+  std::span<SurfaceTally> patches;  // one per boundary condition, or none
 
   bool any() const { return obstacles != nullptr && !obstacles->empty(); }
   // The particle moved from cell `from` to its current cell (x as that cell sees it).

@@ -26,7 +26,8 @@ FaceEvent first_exit(const Mesh& mesh, const Particle& p, Index skip, bool clamp
   return first;
 }
 
-Crossed cross(const Domain& domain, Particle& particle, Index face_index, Random& random, MoveResult& result) {
+Crossed cross(const Domain& domain, Particle& particle, Index face_index, Random& random, MoveResult& result,
+              std::span<SurfaceTally> patches) {
   const Face& face = domain.mesh.faces[face_index];
   if (face.neighbour >= 0) {
     particle.x += domain.mesh.shifts[face.shift];
@@ -35,7 +36,16 @@ Crossed cross(const Domain& domain, Particle& particle, Index face_index, Random
     return Crossed::neighbour;
   }
   ++result.boundary_hits;
-  if (hit_wall(domain.boundaries, patch_of(face.neighbour), face.normal, particle.v, random)) return Crossed::wall;
+  const Index patch = patch_of(face.neighbour);
+  const Vec3 before = particle.v;
+  const bool kept = hit_wall(domain.boundaries, patch, face.normal, particle.v, random);
+  if (!patches.empty()) {
+    SurfaceTally& tally = patches[static_cast<std::size_t>(patch)];
+    ++tally.hits;
+    tally.absorbed += !kept;
+    tally.exchange(before, kept ? particle.v : Vec3::Zero());
+  }
+  if (kept) return Crossed::wall;
   result.removed = true;
   return Crossed::removed;
 }

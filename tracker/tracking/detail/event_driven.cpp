@@ -109,7 +109,7 @@ MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Rando
       continue;
     }
     const Index from = p.cell;
-    switch (cross(domain, p, face.face, random, result)) {
+    switch (cross(domain, p, face.face, random, result, carried.patches)) {
       case Crossed::removed: return result;
       case Crossed::neighbour:
         skip = domain.mesh.faces[face.face].twin;
