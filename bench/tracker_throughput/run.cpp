@@ -22,12 +22,6 @@ double kinetic_energy(const std::vector<Particle>& particles) {
   return sum;
 }
 
-std::vector<Particle> contents(const Swarm& swarm) {
-  std::vector<Particle> particles;
-  for (std::size_t i = 0; i < swarm.size(); ++i) particles.push_back(swarm.particle(i));
-  return particles;
-}
-
 // The particles as the program keeps them, those inside a cluster ball left out.
 Swarm swarm_of(const std::vector<Particle>& particles, const Obstacles& obstacles) {
   Swarm swarm(obstacles.count());
@@ -40,6 +34,21 @@ Swarm swarm_of(const std::vector<Particle>& particles, const Obstacles& obstacle
 }
 
 }  // namespace
+
+std::vector<Particle> contents(const Swarm& swarm) {
+  std::vector<Particle> particles;
+  for (std::size_t i = 0; i < swarm.size(); ++i) particles.push_back(swarm.particle(i));
+  return particles;
+}
+
+Misplaced misplaced(const Domain& domain, const std::vector<Particle>& particles) {
+  Misplaced m;
+  for (const Particle& p : particles) {
+    m.lost += is_lost(domain, p);
+    m.outside += outside(domain.mesh, p.cell, p.x).depth > domain.tolerance;
+  }
+  return m;
+}
 
 RunResult run(const FreeBox& box, const std::vector<Particle>& particles, const RunOptions& options) {
   const Domain& domain = *box.domain;
@@ -77,10 +86,9 @@ RunResult run(const FreeBox& box, const std::vector<Particle>& particles, const 
   const std::vector<Particle> end = in_place ? items : contents(swarm);
   result.particles = static_cast<long long>(end.size());
   result.bytes_per_particle = static_cast<double>(in_place ? sizeof(Particle) : swarm.bytes_per_particle());
-  for (const Particle& p : end) {
-    result.lost += is_lost(domain, p);
-    result.outside += outside(box.mesh, p.cell, p.x).depth > domain.tolerance;
-  }
+  const Misplaced m = misplaced(domain, end);
+  result.lost = m.lost;
+  result.outside = m.outside;
   result.energy_drift = std::abs(kinetic_energy(end) - energy) / energy;
   for (const ObstacleTally& t : tallies) result.obstacle_hits += t.hits;
   return result;

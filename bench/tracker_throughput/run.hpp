@@ -2,6 +2,7 @@
 // One timed run of the free deck with one algorithm and one particle storage.
 
 #include "free_deck.hpp"
+#include "tracker/tracking/swarm.hpp"
 
 #include <string>
 
@@ -43,5 +44,14 @@ struct RunResult {
 RunResult run(const FreeBox& box, const std::vector<tracker::Particle>& particles, const RunOptions& options);
 
 std::string label(const RunOptions& options);
+
+// The swarm's particles in its order, velocities widened to double.
+std::vector<tracker::Particle> contents(const tracker::Swarm& swarm);
+
+// Particles is_lost, and outside their cell by more than the tolerance.
+struct Misplaced {
+  long long lost = 0, outside = 0;
+};
+Misplaced misplaced(const tracker::Domain& domain, const std::vector<tracker::Particle>& particles);
 
 }  // namespace cosim::bench

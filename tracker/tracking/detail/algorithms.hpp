@@ -14,6 +14,11 @@ enum class Crossed { neighbour, wall, removed };
 struct FaceEvent {
   double dt;   // infinity: the particle leaves through no face
   Index face;
+  // The least f over the faces the particle moves away from (f' >= 0), `skip` left out;
+  // infinity if none. No event, and this above -tolerance: the particle ends its move
+  // inside its cell to the tolerance (f only grows on these faces, and stays >= 0 on the
+  // others), so the end-of-move check can be skipped.
+  double behind;
 };
 
 // The face the particle leaves its cell through first: per face with f' = n.v < 0 (n

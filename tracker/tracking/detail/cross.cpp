@@ -6,13 +6,17 @@
 namespace cosim::tracker::detail {
 
 FaceEvent first_exit(const Mesh& mesh, const Particle& p, Index skip, bool clamp_behind, double horizon) {
-  FaceEvent first{std::numeric_limits<double>::infinity(), -1};
+  constexpr double none = std::numeric_limits<double>::infinity();
+  FaceEvent first{none, -1, none};
   for (Index f = mesh.cell_faces[p.cell]; f < mesh.cell_faces[p.cell + 1]; ++f) {
     if (f == skip) continue;
     const Face& face = mesh.faces[f];
     const double rate = face.normal.dot(p.v);
-    if (rate >= 0.0) continue;
     const double depth = face.normal.dot(p.x - face.point);
+    if (rate >= 0.0) {
+      first.behind = std::min(first.behind, depth);
+      continue;
+    }
     // Still inside the plane at the horizon: no event, and no division (most moves end in
     // their cell).
     if (depth + rate * horizon >= 0.0) continue;
@@ -21,7 +25,10 @@ FaceEvent first_exit(const Mesh& mesh, const Particle& p, Index skip, bool clamp
       if (!clamp_behind) continue;
       dt = 0.0;
     }
-    if (dt < first.dt) first = {dt, f};
+    if (dt < first.dt) {
+      first.dt = dt;
+      first.face = f;
+    }
   }
   return first;
 }

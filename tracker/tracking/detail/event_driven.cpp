@@ -96,6 +96,8 @@ MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Rando
     const double event_dt = std::min(face.dt, object.event.dt);
     if (event_dt >= remaining) {
       p.x += remaining * p.v;
+      // Most moves end in their cell without an event: settle would scan the faces again.
+      if (skip < 0 && face.behind >= -domain.tolerance) return result;
       break;
     }
     p.x += event_dt * p.v;

@@ -1,0 +1,103 @@
+#include "sphere_deck.hpp"
+
+#include "run.hpp"
+#include "tracker/csg/shapes.hpp"
+#include "tracker/dsmc/free_molecular.hpp"
+#include "tracker/dsmc/species.hpp"
+#include "tracker/mesh/box_mesh.hpp"
+#include "tracker/program/collide.hpp"
+#include "tracker/program/seeding.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <numbers>
+
+namespace cosim::bench {
+
+using namespace cosim::tracker;
+
+namespace {
+
+const Vec3 kStreamVelocity(SphereDeck::kSpeed, 0.0, 0.0);
+constexpr double kBallVolume = 4.0 / 3.0 * std::numbers::pi * SphereDeck::kRadius * SphereDeck::kRadius * SphereDeck::kRadius;
+
+}  // namespace
+
+SphereBox::SphereBox()
+    : collisions{dsmc::CollisionModel::from_species(dsmc::read_species(dsmc::default_species_file()).at("Ar"),
+                                                    dsmc::Model::vss),
+                 false},
+      mass(collisions.model.mass()) {
+  BoxSpec spec;
+  for (AxisSpacing& axis : spec.axes)
+    axis = {.min = -SphereDeck::kHalfSide, .max = SphereDeck::kHalfSide, .cells = SphereDeck::kCells};
+  mesh = box_mesh(spec);
+  domain = std::make_unique<Domain>(
+      mesh, Boundaries{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::open}), mass});
+  sphere = Obstacles(mesh, {{"sphere", csg::Tree(csg::ball(Vec3::Zero(), SphereDeck::kRadius)), false,
+                             {.kind = BoundaryKind::diffuse, .temperature = SphereDeck::kTemperature}}});
+  std::vector<Index> all(mesh.patches.size());
+  for (std::size_t p = 0; p < all.size(); ++p) all[p] = static_cast<Index>(p);
+  inflow = std::make_unique<Inflow>(mesh, all,
+                                    Stream{.number_density = SphereDeck::kDensity,
+                                           .velocity = kStreamVelocity,
+                                           .temperature = SphereDeck::kTemperature,
+                                           .mass = mass,
+                                           .weight = SphereDeck::kWeight});
+}
+
+double SphereBox::stream_count() {
+  const double side = 2.0 * SphereDeck::kHalfSide;
+  return SphereDeck::kDensity * (side * side * side - kBallVolume) / SphereDeck::kWeight;
+}
+
+double SphereBox::free_molecular_drag() const {
+  const double s = SphereDeck::kSpeed / std::sqrt(2.0 * boltzmann * SphereDeck::kTemperature / mass);
+  return dsmc::sphere_drag_coefficient(s, 1.0) * 0.5 * SphereDeck::kDensity * mass * SphereDeck::kSpeed * SphereDeck::kSpeed *
+         std::numbers::pi * SphereDeck::kRadius * SphereDeck::kRadius;
+}
+
+SphereResult run_sphere(const SphereBox& box, const SphereDeck& deck) {
+  Random random(2026);
+  const Seeding stream{.total = static_cast<int>(std::lround(SphereBox::stream_count())),
+                       .temperature = SphereDeck::kTemperature,
+                       .drift = kStreamVelocity,
+                       .mass = box.mass,
+                       .weight = SphereDeck::kWeight};
+  Swarm swarm = seed_particles(box.mesh, box.sphere, stream, random);
+  CellCollider collider(box.mesh, box.collisions, SphereDeck::kTemperature, SphereDeck::kWeight, 7);
+  SphereResult result;
+  result.seeded = static_cast<long long>(swarm.size());
+  std::vector<ObstacleTally> tallies(1);
+  long long lost_in_warm_up = 0;
+  std::clock_t cpu_start = 0;
+  auto start = std::chrono::steady_clock::now();
+  for (int step = 0; step < deck.warm_up + deck.steps; ++step) {
+    if (step == deck.warm_up) {
+      lost_in_warm_up = result.tally.lost;
+      result.timed_from = static_cast<long long>(swarm.size());
+      result.tally = {};
+      result.collisions = 0;
+      tallies.assign(1, {});
+      cpu_start = std::clock();
+      start = std::chrono::steady_clock::now();
+    }
+    swarm.sort_by_cell(box.mesh.cell_count());
+    result.collisions += collider.collide(swarm, SphereDeck::kDt);
+    swarm.move_all(*box.domain, box.sphere, SphereDeck::kDt, random, result.tally, tallies);
+    box.inflow->inject(*box.domain, box.sphere, SphereDeck::kDt, random, swarm, result.tally, tallies);
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  result.particles = static_cast<long long>(swarm.size());
+  const Misplaced end = misplaced(*box.domain, contents(swarm));
+  result.lost = end.lost + lost_in_warm_up + result.tally.lost;
+  result.outside = end.outside;
+  result.sphere = tallies[0];
+  // The impulse is per unit particle mass and simulator.
+  result.drag = result.sphere.impulse.x() * box.mass * SphereDeck::kWeight / (deck.steps * SphereDeck::kDt);
+  return result;
+}
+
+}  // namespace cosim::bench
