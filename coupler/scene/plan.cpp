@@ -54,14 +54,14 @@ void assign_roles(const Scene& s, std::vector<Participant>& start) {
   // Fixed bodies' poses are part of INIT; only moving ones must be sent every window.
   const DataSet poses = any_free_body(s) ? bit(Data::Poses) : 0;
   const DataSet fields = tracers_need_fluid(s) ? bit(Data::Fields) : 0;
-  // The run file takes the fluid's fields too.
+  // The run file takes the fluid's and the tracker's fields too.
   const DataSet written = s.output.fields_every > 0 ? bit(Data::Fields) : 0;
   for (Participant& p : start) {
     if (p.name == "fluid") {
       p.provides = (s.has_effect(Hydrodynamics) ? bit(Data::Forces) : 0) | fields | written;
       p.needs = poses;
     } else if (p.name == "tracker") {
-      p.provides = s.has_effect(RarefiedGas) ? bit(Data::Forces) : 0;
+      p.provides = (s.has_effect(RarefiedGas) ? bit(Data::Forces) : 0) | written;
       p.needs = poses | fields;
     }
   }

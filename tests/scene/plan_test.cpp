@@ -73,14 +73,14 @@ TEST(Plan, TracersRideTheFluid) {
   const Plan plan = plan_for("[tracers]", true);
   EXPECT_EQ(names(plan), (Names{"fluid", "tracker"}));
   EXPECT_EQ(plan.start[0].provides, fields);
-  EXPECT_EQ(plan.start[1].provides, 0u);
+  EXPECT_EQ(plan.start[1].provides, fields);  // its samples, for the run file
   EXPECT_EQ(plan.start[1].needs, fields);
 }
 
 TEST(Plan, TracersInARarefiedGasNeedNoFluid) {
   const Plan plan = plan_for("[rarefied_gas, tracers]", false);
   EXPECT_EQ(names(plan), (Names{"rigidbody", "tracker"}));
-  EXPECT_EQ(plan.start[1].provides, forces);
+  EXPECT_EQ(plan.start[1].provides, forces | fields);
   EXPECT_EQ(plan.start[1].needs, poses);
   EXPECT_EQ(plan.start[0].needs, forces);
   EXPECT_EQ(plan.skipped, Names{"fluid: no declared effect needs it"});

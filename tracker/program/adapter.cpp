@@ -5,6 +5,7 @@
 #include <string>
 
 #include "participant/poses_at.hpp"
+#include "tracker/program/cell_fields.hpp"
 #include "protocol/message.hpp"
 
 namespace cosim::tracker {
@@ -72,6 +73,13 @@ participant::Outputs TrackerSolver::advance(const participant::Window& w, const 
     }
   }
   return {{}, forces, static_cast<double>(steps)};
+}
+
+output::FieldFrame TrackerSolver::fields() const {
+  // Taking the moments starts a new average: the next frame averages the windows since.
+  const std::vector<double> count = gas_->counts();
+  const std::vector<CellMoments> moments = gas_->take_moments();
+  return tracker_fields(gas_->mesh(), moments, count);
 }
 
 std::vector<double> TrackerSolver::state() const { return gas_->state(); }

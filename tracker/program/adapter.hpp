@@ -3,7 +3,7 @@
 // provides the gas's force and torque on each body (protocol::kForceWidth values per body,
 // zero for a body no obstacle is bound to). Over several ranks every rank runs one
 // (participant/mpi_team.hpp): its calls are collective and the forces are the sums over the
-// ranks, on every rank.
+// ranks, on every rank. It provides its sampled fields for the run file too.
 #pragma once
 
 #include <memory>
@@ -28,6 +28,9 @@ class TrackerSolver final : public participant::Solver {
   participant::Outputs advance(const participant::Window& w, const participant::Inputs& in) override;
   std::vector<double> state() const override;
   void restore(const std::vector<double>& state) override;
+  // The per-cell samples averaged since the last call (or the start) on the tracker's
+  // polyhedral mesh (cell_fields.hpp); collective, the whole frame on every rank.
+  output::FieldFrame fields() const override;
 
   const Simulation& gas() const { return *gas_; }
 
