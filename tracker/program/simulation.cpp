@@ -48,22 +48,55 @@ class StateIn {
 };
 
 // Bumped when the layout changes, so an old checkpoint is refused, not misread.
-constexpr double kStateVersion = 2;
+constexpr double kStateVersion = 3;
 
-void put_tally(StateOut& out, const ObstacleTally& t) {
-  for (long long n : {t.hits, t.absorbed, t.entered, t.left, t.released, t.overrun}) out.put(static_cast<double>(n));
-  for (const Vec3* v : {&t.impulse, &t.angular_impulse})
-    for (int k = 0; k < 3; ++k) out.put((*v)[k]);
-  out.put(t.energy);
+// A tally's numbers in one fixed order, for state arrays and sums over the ranks.
+std::vector<long long*> counters(SurfaceTally& t) { return {&t.hits, &t.absorbed}; }
+std::vector<double*> values(SurfaceTally& t) { return {&t.impulse[0], &t.impulse[1], &t.impulse[2], &t.energy}; }
+std::vector<long long*> counters(ObstacleTally& t) {
+  std::vector<long long*> out = counters(static_cast<SurfaceTally&>(t));
+  out.insert(out.end(), {&t.entered, &t.left, &t.released, &t.overrun});
+  return out;
+}
+std::vector<double*> values(ObstacleTally& t) {
+  std::vector<double*> out = values(static_cast<SurfaceTally&>(t));
+  out.insert(out.end(), {&t.angular_impulse[0], &t.angular_impulse[1], &t.angular_impulse[2]});
+  return out;
 }
 
-ObstacleTally get_tally(StateIn& in) {
-  ObstacleTally t;
-  for (long long* n : {&t.hits, &t.absorbed, &t.entered, &t.left, &t.released, &t.overrun}) *n = in.get_count<long long>();
-  for (Vec3* v : {&t.impulse, &t.angular_impulse})
-    for (int k = 0; k < 3; ++k) (*v)[k] = in.get();
-  t.energy = in.get();
-  return t;
+template <typename Tally>
+void put_tallies(StateOut& out, std::vector<Tally> tallies) {
+  for (Tally& t : tallies) {
+    for (long long* n : counters(t)) out.put(static_cast<double>(*n));
+    for (double* x : values(t)) out.put(*x);
+  }
+}
+
+template <typename Tally>
+void get_tallies(StateIn& in, std::vector<Tally>& tallies) {
+  for (Tally& t : tallies) {
+    for (long long* n : counters(t)) *n = in.get_count<long long>();
+    for (double* x : values(t)) *x = in.get();
+  }
+}
+
+template <typename Tally>
+std::vector<Tally> summed(std::vector<Tally> tallies, const Ranks& ranks) {
+  std::vector<long long> counts;
+  std::vector<double> numbers;
+  for (Tally& t : tallies) {
+    for (long long* n : counters(t)) counts.push_back(*n);
+    for (double* x : values(t)) numbers.push_back(*x);
+  }
+  ranks.sum(counts);
+  ranks.sum(numbers);
+  const long long* n = counts.data();
+  const double* x = numbers.data();
+  for (Tally& t : tallies) {
+    for (long long* count : counters(t)) *count = *n++;
+    for (double* value : values(t)) *value = *x++;
+  }
+  return tallies;
 }
 
 // MoveTally's counters in declaration order.
@@ -71,28 +104,6 @@ auto move_counters(MoveTally& m) {
   return std::array{&m.moves,    &m.faces_crossed, &m.zero_time_events, &m.boundary_hits,
                     &m.relocations, &m.cycles_broken, &m.stalled,        &m.removed,
                     &m.lost,     &m.object_events, &m.primitive_tests};
-}
-
-// A tally's counts and vectors summed over the ranks.
-std::vector<ObstacleTally> summed(std::vector<ObstacleTally> tallies, const Ranks& ranks) {
-  std::vector<long long> counts;
-  std::vector<double> values;
-  for (const ObstacleTally& t : tallies) {
-    counts.insert(counts.end(), {t.hits, t.absorbed, t.entered, t.left, t.released, t.overrun});
-    for (const Vec3* v : {&t.impulse, &t.angular_impulse}) values.insert(values.end(), v->data(), v->data() + 3);
-    values.push_back(t.energy);
-  }
-  ranks.sum(counts);
-  ranks.sum(values);
-  const long long* n = counts.data();
-  const double* x = values.data();
-  for (ObstacleTally& t : tallies) {
-    for (long long* count : {&t.hits, &t.absorbed, &t.entered, &t.left, &t.released, &t.overrun}) *count = *n++;
-    for (Vec3* v : {&t.impulse, &t.angular_impulse})
-      for (int k = 0; k < 3; ++k) (*v)[k] = *x++;
-    t.energy = *x++;
-  }
-  return tallies;
 }
 
 // Rank 0 draws what a one-rank run draws; another rank has streams of its own, and its
@@ -131,6 +142,7 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
                             ranks.size() > 1 ? decomposition_.owners() : std::span<const int>{}, ranks.rank())),
       sampler_(*setup_.mesh),
       tallies_(static_cast<std::size_t>(setup_.obstacles.count())),
+      patch_tallies_(setup_.domain->boundaries.patches.size()),
       seeded_(swarm_.size()) {
   if (ranks.size() > 1)
     for (Inflow& inflow : setup_.inflows) inflow.keep_faces_of([&](Index cell) { return decomposition_.owns(cell); });
@@ -171,10 +183,10 @@ void Simulation::step(double dt) {
   if (setup_.tracers)
     carry_tracers(dt);
   else
-    swarm_.move_all(*setup_.domain, setup_.obstacles, dt, random_, moves_, tallies_);
+    swarm_.move_all(*setup_.domain, setup_.obstacles, dt, random_, moves_, tallies_, patch_tallies_);
   for (const Inflow& inflow : setup_.inflows)
     injected_ += static_cast<std::size_t>(
-        inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_, tallies_));
+        inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_, tallies_, patch_tallies_));
   // The whole mesh is on every rank, so a move crosses into other ranks' cells freely; the
   // particles go to their cells' owners once all of them have moved.
   migrated_ += decomposition_.migrate(swarm_);
@@ -233,6 +245,7 @@ MoveTally Simulation::moves() const {
 }
 
 std::vector<ObstacleTally> Simulation::tallies() const { return summed(tallies_, decomposition_.ranks()); }
+std::vector<SurfaceTally> Simulation::patch_tallies() const { return summed(patch_tallies_, decomposition_.ranks()); }
 
 std::vector<double> Simulation::counts() const {
   std::vector<double> count(static_cast<std::size_t>(mesh().cell_count()), 0.0);
@@ -280,8 +293,9 @@ std::vector<double> Simulation::state() const {
     const Eigen::Quaterniond q(pose.rotation());
     for (double x : {pose.translation().x(), pose.translation().y(), pose.translation().z(), q.w(), q.x(), q.y(), q.z()})
       out.put(x);
-    put_tally(out, tallies_[static_cast<std::size_t>(o)]);
   }
+  put_tallies(out, tallies_);
+  put_tallies(out, patch_tallies_);
   MoveTally moves = moves_;
   for (long long* n : move_counters(moves)) out.put(static_cast<double>(*n));
   if (collider_)
@@ -330,8 +344,9 @@ void Simulation::restore(std::span<const double> state) {
     pose.translate(x);
     pose.rotate(q);
     setup_.obstacles.place(o, pose);
-    tallies_[static_cast<std::size_t>(o)] = get_tally(in);
   }
+  get_tallies(in, tallies_);
+  get_tallies(in, patch_tallies_);
   for (long long* n : move_counters(moves_)) *n = in.get_count<long long>();
   if (collider_)
     for (dsmc::CellCollisionState& c : collider_->cells()) {

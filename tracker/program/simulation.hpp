@@ -65,6 +65,8 @@ class Simulation {
   std::int64_t collisions() const;
   MoveTally moves() const;
   std::vector<ObstacleTally> tallies() const;
+  // Per boundary patch (Mesh::patches): what the particles gave the walls there.
+  std::vector<SurfaceTally> patch_tallies() const;
 
   // Particles per cell now (collective).
   std::vector<double> counts() const;
@@ -92,6 +94,7 @@ class Simulation {
   CellSampler sampler_;
   std::optional<CellCollider> collider_;
   std::vector<ObstacleTally> tallies_;
+  std::vector<SurfaceTally> patch_tallies_;
   MoveTally moves_;
   bool obstacles_moved_ = false;  // since the last step: overrun particles may have changed cell
   std::uint64_t steps_ = 0;

@@ -35,6 +35,7 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
     const std::vector<double> count = gas.counts();
     const std::vector<CellMoments> moments = gas.take_moments();
     const std::vector<ObstacleTally> tallies = gas.tallies();
+    const std::vector<SurfaceTally> patches = gas.patch_tallies();
     const MoveTally moves = gas.moves();
     const std::size_t particles = gas.particles();
     if (file)
@@ -44,6 +45,7 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
                    .count = count,
                    .moments = moments,
                    .objects = tallies,
+                   .patches = patches,
                    .moves = moves});
   };
   // Shown only on a terminal, and no rank's stderr is one under mpirun: its count is the run's.

@@ -10,6 +10,7 @@
 #include "output/series.hpp"
 #include "output/in_file.hpp"
 #include "output/text.hpp"
+#include "tracker/mesh/geometry.hpp"
 #include "tracker/program/cell_fields.hpp"
 
 namespace cosim::tracker {
@@ -29,17 +30,33 @@ std::vector<std::uint64_t> columns_of(const MoveTally& t) {
   return {std::begin(v), std::end(v)};
 }
 
+// The area of each boundary patch: the sum of its faces'.
+std::vector<double> patch_areas(const Mesh& mesh) {
+  std::vector<double> area(mesh.patches.size(), 0.0);
+  for (Index f = 0; f < mesh.face_count(); ++f)
+    if (const Index code = mesh.faces[static_cast<std::size_t>(f)].neighbour; code < 0)
+      area[static_cast<std::size_t>(patch_of(code))] += area_vector(mesh, f).norm();
+  return area;
+}
+
 }  // namespace
 
 struct TrackerFile::Impl {
   Impl(const std::filesystem::path& p, const Mesh& mesh, std::size_t object_count)
-      : path(p), objects(object_count), frame{polyhedral_grid(mesh), {}}, fields(p), volume(mesh.volume) {}
+      : path(p),
+        objects(object_count),
+        patches(mesh.patches.size()),
+        frame{polyhedral_grid(mesh), {}},
+        fields(p),
+        volume(mesh.volume) {}
 
   std::filesystem::path path;
   Handle file;
   std::size_t objects = 0;
   std::vector<Series> rows;     // step, time, particles, moves
   std::vector<Series> tallies;  // hits, absorbed, entered, left, released, impulse, angular_impulse, energy
+  std::size_t patches = 0;
+  std::vector<Series> patch_tallies;  // hits, absorbed, impulse, energy
   output::FieldFrame frame;     // the mesh, built once; the fields of the last write
   output::FieldWriter fields;
   std::vector<double> volume;   // per cell: into the grid's group once the first step wrote it
@@ -82,6 +99,16 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
       m.tallies.push_back(Series::create(objects.get(), "angular_impulse", 3 * m.objects, H5T_NATIVE_DOUBLE));
       m.tallies.push_back(Series::create(objects.get(), "energy", m.objects, H5T_NATIVE_DOUBLE));
     }
+    Handle patches = output::create_group(series.get(), "patches");
+    output::write_attribute(patches.get(), "names", mesh.patches);
+    if (m.patches > 0) {
+      const std::vector<double> area = patch_areas(mesh);
+      output::write_array(patches.get(), "area", {area.size()}, area.data());
+      for (const char* name : {"hits", "absorbed"})
+        m.patch_tallies.push_back(Series::create(patches.get(), name, m.patches, H5T_NATIVE_UINT64));
+      m.patch_tallies.push_back(Series::create(patches.get(), "impulse", 3 * m.patches, H5T_NATIVE_DOUBLE));
+      m.patch_tallies.push_back(Series::create(patches.get(), "energy", m.patches, H5T_NATIVE_DOUBLE));
+    }
     output::flush(file);
   });
 }
@@ -122,6 +149,23 @@ void TrackerFile::write(const Sample& s) {
       m.tallies[5].append(impulse.data());
       m.tallies[6].append(angular_impulse.data());
       m.tallies[7].append(energy.data());
+    }
+    if (s.patches.size() != m.patches)
+      throw output::ObjectError("step " + std::to_string(s.step) + ": " + std::to_string(s.patches.size()) +
+                                " patch tallies for " + std::to_string(m.patches) + " patches");
+    if (m.patches > 0) {
+      std::vector<std::uint64_t> hits, absorbed;
+      std::vector<double> impulse, energy;
+      for (const SurfaceTally& t : s.patches) {
+        hits.push_back(static_cast<std::uint64_t>(t.hits));
+        absorbed.push_back(static_cast<std::uint64_t>(t.absorbed));
+        impulse.insert(impulse.end(), t.impulse.begin(), t.impulse.end());
+        energy.push_back(t.energy);
+      }
+      m.patch_tallies[0].append(hits.data());
+      m.patch_tallies[1].append(absorbed.data());
+      m.patch_tallies[2].append(impulse.data());
+      m.patch_tallies[3].append(energy.data());
     }
     output::flush(file);
   });

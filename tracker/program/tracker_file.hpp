@@ -23,6 +23,11 @@
 //                             per unit particle mass: m/s, m^2/s), energy (rows x objects:
 //                             kinetic energy given to it per unit particle mass, m^2/s^2;
 //                             times mass and weight over the time, the heat flow into it, W)
+//   /tracker/patches/         attr names (the mesh's boundary patches); area (m^2 per patch);
+//                             hits, absorbed (rows x patches, uint64), impulse (rows x 3
+//                             patches), energy (rows x patches): as for objects, what the
+//                             particles gave each patch's walls since the start. The shear
+//                             stress on a patch: impulse x mass x weight / (area x time)
 // The sidecar <file>.xmf is rewritten after every write, once the file is flushed.
 #pragma once
 
@@ -46,6 +51,7 @@ struct Sample {
   std::span<const double> count;         // per cell, at this step
   std::span<const CellMoments> moments;  // per cell, averaged since the previous write
   std::span<const ObstacleTally> objects;
+  std::span<const SurfaceTally> patches;  // per boundary patch, by Mesh::patches index
   MoveTally moves;
 };
 
