@@ -118,5 +118,45 @@ TEST(TrackerCoupled, CouetteAloneWritesTheShearedProfileAsFields) {
   EXPECT_NEAR(0.5 * (ux(24) + ux(25)), 0.0, 15.0);
 }
 
+TEST(TrackerCoupled, BallReleasedInAFreeMolecularStreamFollowsBirdsDrag) {
+  // configs/rarefied-crossflow.yaml as it is (2 ms, 20 windows): the force in each window
+  // against Bird's drag at the ball's speed relative to the stream in that window, and the
+  // ball's speed against m dv/dt = drag(U - v) integrated (serial-explicit: a window's
+  // force moves the ball in the next one, so the run lags the ODE by one window).
+  std::ifstream in(std::filesystem::path(COSIM_CONFIGS_DIR) / "rarefied-crossflow.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string scene = std::regex_replace(text.str(), std::regex(R"(file: [^\n]+)"), "file: scene.h5");
+  const auto dir = testing::scratch_dir("rarefied_crossflow");
+  const testing::Finished run = testing::run_scene_text(dir, scene);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const testing::Series force = testing::read_series(dir / "scene.h5", "/bodies/ball/force");
+  const testing::Series velocity = testing::read_series(dir / "scene.h5", "/bodies/ball/velocity");
+  ASSERT_EQ(force.rows, 21u);
+
+  const double mass = 6.63e-26, n = 7.03e18, stream = 2500, radius = 0.5, boltzmann = 1.380649e-23;
+  const double ball = 3.8e-5 * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  const double most_probable = std::sqrt(2 * boltzmann * 300 / mass);
+  const auto drag = [&](double v) {
+    const double u = stream - v;
+    return dsmc::sphere_drag_coefficient(u / most_probable, 1.0) * 0.5 * n * mass * u * u * std::numbers::pi * radius *
+           radius;
+  };
+  double measured = 0, expected = 0;
+  for (std::size_t k = 1; k < force.rows; ++k) {
+    measured += force.at(k, 0);
+    expected += drag(0.5 * (velocity.at(k - 1, 0) + velocity.at(k, 0)));
+  }
+  double v = 0;  // the ODE to t = 1.9 ms, in steps of 1 us
+  for (int step = 0; step < 1900; ++step) v += drag(v) / ball * 1e-6;
+  std::printf("ball in a free-molecular stream: force %.3f N per window against Bird's %.3f N (%+.2f %%); "
+              "speed after 2 ms %.1f m/s, ODE %.1f m/s (%+.2f %%)\n",
+              measured / 20, expected / 20, 100 * (measured / expected - 1), velocity.at(20, 0), v,
+              100 * (velocity.at(20, 0) / v - 1));
+  EXPECT_NEAR(measured / expected, 1.0, 0.04);  // about 3300 hits: 2 %
+  EXPECT_NEAR(velocity.at(20, 0) / v, 1.0, 0.04);
+  EXPECT_GT(velocity.at(20, 0), 150.0);
+}
+
 }  // namespace
 }  // namespace cosim::tracker
