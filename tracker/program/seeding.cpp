@@ -2,9 +2,7 @@
 
 #include "tracker/mesh/geometry.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 #include <utility>
 
@@ -16,31 +14,6 @@ using scene::Range;
 // Bounding-box draws before giving up on a sliver of a cell (then its centroid is taken):
 // even a Kuhn tetrahedron fills 1/6 of its box.
 constexpr int kTries = 1000;
-
-// This rank's share of `total` particles: the ranks' volumes' shares rounded by largest
-// remainders (ties to the lower rank), which every rank computes alike from the owners.
-long long share_of(const Mesh& mesh, long long total, std::span<const int> owner, int rank) {
-  if (owner.empty()) return total;
-  const int ranks = *std::max_element(owner.begin(), owner.end()) + 1;
-  std::vector<double> volume(static_cast<std::size_t>(std::max(ranks, rank + 1)), 0.0);
-  for (Index c = 0; c < mesh.cell_count(); ++c) volume[static_cast<std::size_t>(owner[c])] += mesh.volume[c];
-  double whole = 0.0;
-  for (double v : volume) whole += v;
-  std::vector<long long> share;
-  std::vector<double> remainder;
-  long long given = 0;
-  for (double v : volume) {
-    const double exact = static_cast<double>(total) * v / whole;
-    share.push_back(static_cast<long long>(std::floor(exact)));
-    remainder.push_back(exact - std::floor(exact));
-    given += share.back();
-  }
-  std::vector<std::size_t> order(volume.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return remainder[a] > remainder[b]; });
-  for (std::size_t k = 0; given < total; ++k, ++given) ++share[order[k % order.size()]];
-  return share[static_cast<std::size_t>(rank)];
-}
 
 }  // namespace
 
@@ -59,9 +32,7 @@ Seeding read_seeding(const scene::Reader& r) {
   return s;
 }
 
-Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, Random& random,
-                     std::span<const int> owner, int rank) {
-  const auto mine = [&](Index c) { return owner.empty() || owner[static_cast<std::size_t>(c)] == rank; };
+Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, Random& random) {
   Swarm swarm(obstacles.count());
   std::vector<csg::State> states(static_cast<std::size_t>(obstacles.count()));
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -92,28 +63,21 @@ Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding
   if (seeding.per_cell > 0) {
     // The count is the whole cell's: draws inside a wall are dropped, so the gas is as
     // dense in a cell's free part as in a free cell of the same volume.
-    for (Index c = 0; c < mesh.cell_count(); ++c) {
-      if (!mine(c)) continue;
+    for (Index c = 0; c < mesh.cell_count(); ++c)
       for (int i = 0; i < seeding.per_cell; ++i)
         if (const auto [x, free] = draw(c); free) add(c, x);
-    }
   } else {
     // Exactly `total`: cells by volume, draws inside walls repeated.
-    std::vector<double> weights(mesh.volume.begin(), mesh.volume.end());
-    for (Index c = 0; c < mesh.cell_count(); ++c)
-      if (!mine(c)) weights[static_cast<std::size_t>(c)] = 0.0;
-    const long long count = share_of(mesh, seeding.total, owner, rank);
-    if (count == 0) return swarm;
-    std::discrete_distribution<Index> by_volume(weights.begin(), weights.end());
+    std::discrete_distribution<Index> by_volume(mesh.volume.begin(), mesh.volume.end());
     long long failures = 0;
-    for (long long i = 0; i < count; ++i) {
+    for (int i = 0; i < seeding.total; ++i) {
       for (;;) {
         const Index c = by_volume(random);
         if (const auto [x, free] = draw(c); free) {
           add(c, x);
           break;
         }
-        if (++failures > kTries * count + kTries)
+        if (++failures > kTries * static_cast<long long>(seeding.total) + kTries)
           throw std::runtime_error("particles: the walls leave (almost) no free space to seed in");
       }
     }

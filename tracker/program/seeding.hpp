@@ -11,15 +11,11 @@
 //
 // Positions are uniform in each cell (rejection in the cell's bounding box against its
 // planes) and outside every wall obstacle: with per_cell a draw inside a wall is dropped
-// (the cell keeps the density of the free gas), with total it is drawn again.
-//
-// Over several ranks (tracker/parallel) each rank seeds only the cells it owns: per_cell
-// as before, total split between the ranks by their cells' volume (largest remainders, so
-// the shares add up to total exactly).
+// (the cell keeps the density of the free gas), with total it is drawn again. Over several
+// ranks every rank seeds the whole gas and keeps its own cells' particles (Simulation).
 #pragma once
 
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "scene/reader.hpp"
@@ -39,8 +35,6 @@ struct Seeding {
 
 Seeding read_seeding(const scene::Reader& particles);
 
-// `owner`: the rank of every cell, and `rank` this one's; empty: every cell is this rank's.
-Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, Random& random,
-                     std::span<const int> owner = {}, int rank = 0);
+Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, Random& random);
 
 }  // namespace cosim::tracker

@@ -48,7 +48,7 @@ class StateIn {
 };
 
 // Bumped when the layout changes, so an old checkpoint is refused, not misread.
-constexpr double kStateVersion = 3;
+constexpr double kStateVersion = 4;
 
 // A tally's numbers in one fixed order, for state arrays and sums over the ranks.
 std::vector<long long*> counters(SurfaceTally& t) { return {&t.hits, &t.absorbed}; }
@@ -106,8 +106,8 @@ auto move_counters(MoveTally& m) {
                     &m.lost,     &m.object_events, &m.primitive_tests};
 }
 
-// Rank 0 draws what a one-rank run draws; another rank has streams of its own, and its
-// first (seeding) stream is none of its windows' (the seed sequences differ in length).
+// Rank 0 draws what a one-rank run draws; another rank has streams of its own after the
+// seeding, none of them its windows' (the seed sequences differ in length).
 Random first_random(std::uint64_t seed, int rank) {
   if (rank == 0) return Random(seed);
   std::seed_seq own{seed, static_cast<std::uint64_t>(rank), std::uint64_t{0}, std::uint64_t{0}};
@@ -137,15 +137,20 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
       velocity_(setup_.tracers ? setup_.tracers->velocity : std::nullopt),
       seed_(setup_.particles.seed),
       decomposition_(*setup_.mesh, ranks),
-      random_(first_random(seed_, ranks.rank())),
-      swarm_(seed_particles(*setup_.mesh, setup_.obstacles, setup_.particles, random_,
-                            ranks.size() > 1 ? decomposition_.owners() : std::span<const int>{}, ranks.rank())),
+      random_(seed_),
+      // Every rank seeds the whole gas as one rank does and keeps its cells' particles: the
+      // start is the same for any rank count, and a rank whose cells are partly inside walls
+      // is not filled denser than the rest.
+      swarm_(seed_particles(*setup_.mesh, setup_.obstacles, setup_.particles, random_)),
       sampler_(*setup_.mesh),
       tallies_(static_cast<std::size_t>(setup_.obstacles.count())),
-      patch_tallies_(setup_.domain->boundaries.patches.size()),
-      seeded_(swarm_.size()) {
-  if (ranks.size() > 1)
+      patch_tallies_(setup_.domain->boundaries.patches.size()) {
+  if (ranks.size() > 1) {
+    swarm_.remove_if([&](std::size_t i) { return !decomposition_.owns(swarm_.cell(i)); });
     for (Inflow& inflow : setup_.inflows) inflow.keep_faces_of([&](Index cell) { return decomposition_.owns(cell); });
+    if (ranks.rank() != 0) random_ = first_random(seed_, ranks.rank());
+  }
+  seeded_ = swarm_.size();
   if (setup_.collisions) {
     // The first (sigma g)_max per cell: at the hottest temperature the scene gives.
     double hottest = setup_.particles.temperature;
@@ -169,8 +174,9 @@ void Simulation::reseed(std::uint64_t stream) {
 }
 
 void Simulation::move_obstacle(int i, const Eigen::Isometry3d& pose, double dt) {
+  // Decided from the poses, which every rank has alike, so all ranks migrate or none.
+  obstacles_moved_ = obstacles_moved_ || pose.matrix() != setup_.obstacles.pose(i).matrix();
   setup_.obstacles.set_pose(i, pose, dt, *setup_.domain, swarm_, random_, tallies_[static_cast<std::size_t>(i)]);
-  obstacles_moved_ = true;
 }
 
 void Simulation::step(double dt) {
@@ -288,12 +294,10 @@ std::vector<double> Simulation::state() const {
     out.put(p.cell);
     for (csg::State s : swarm_.states(i)) out.put_bits(s);
   }
-  for (int o = 0; o < objects; ++o) {
-    const Eigen::Isometry3d& pose = setup_.obstacles.pose(o);
-    const Eigen::Quaterniond q(pose.rotation());
-    for (double x : {pose.translation().x(), pose.translation().y(), pose.translation().z(), q.w(), q.x(), q.y(), q.z()})
-      out.put(x);
-  }
+  // The pose's matrix itself: a quaternion would not give the same matrix back, and a
+  // repeated window must see the very pose the first attempt saw.
+  for (int o = 0; o < objects; ++o)
+    for (double x : setup_.obstacles.pose(o).matrix().topRows<3>().reshaped()) out.put(x);
   put_tallies(out, tallies_);
   put_tallies(out, patch_tallies_);
   MoveTally moves = moves_;
@@ -308,6 +312,7 @@ std::vector<double> Simulation::state() const {
 }
 
 void Simulation::restore(std::span<const double> state) {
+  // Read into copies first: a state that turns out bad changes nothing.
   StateIn in(state);
   const int objects = setup_.obstacles.count();
   in.expect(kStateVersion, "layout version");
@@ -315,11 +320,11 @@ void Simulation::restore(std::span<const double> state) {
   in.expect(decomposition_.ranks().rank(), "rank");
   in.expect(objects, "obstacles");
   in.expect(static_cast<double>(mesh().cell_count()), "cells");
-  steps_ = in.get_count<std::uint64_t>();
-  seeded_ = in.get_count<std::size_t>();
-  injected_ = in.get_count<std::size_t>();
-  migrated_ = in.get_count<std::size_t>();
-  collisions_ = in.get_count<std::int64_t>();
+  const auto steps = in.get_count<std::uint64_t>();
+  const auto seeded = in.get_count<std::size_t>();
+  const auto injected = in.get_count<std::size_t>();
+  const auto migrated = in.get_count<std::size_t>();
+  const auto collisions = in.get_count<std::int64_t>();
   Swarm swarm(objects);
   std::vector<csg::State> states(static_cast<std::size_t>(objects));
   for (auto n = in.get_count<std::size_t>(); n > 0; --n) {
@@ -332,32 +337,34 @@ void Simulation::restore(std::span<const double> state) {
     for (csg::State& s : states) s = in.get_bits();
     swarm.add(p, states);
   }
-  for (int o = 0; o < objects; ++o) {
-    Eigen::Vector3d x;
-    for (int k = 0; k < 3; ++k) x[k] = in.get();
-    Eigen::Quaterniond q;
-    q.w() = in.get();
-    q.x() = in.get();
-    q.y() = in.get();
-    q.z() = in.get();
-    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    pose.translate(x);
-    pose.rotate(q);
-    setup_.obstacles.place(o, pose);
-  }
-  get_tallies(in, tallies_);
-  get_tallies(in, patch_tallies_);
-  for (long long* n : move_counters(moves_)) *n = in.get_count<long long>();
+  std::vector<Eigen::Isometry3d> poses(static_cast<std::size_t>(objects), Eigen::Isometry3d::Identity());
+  for (Eigen::Isometry3d& pose : poses)
+    for (double& x : pose.matrix().topRows<3>().reshaped()) x = in.get();
+  std::vector<ObstacleTally> tallies(tallies_.size());
+  get_tallies(in, tallies);
+  std::vector<SurfaceTally> patch_tallies(patch_tallies_.size());
+  get_tallies(in, patch_tallies);
+  MoveTally moves;
+  for (long long* n : move_counters(moves)) *n = in.get_count<long long>();
+  std::vector<dsmc::CellCollisionState> cells;
   if (collider_)
-    for (dsmc::CellCollisionState& c : collider_->cells()) {
-      c.sigma_g_max = in.get();
-      c.remainder = in.get();
-    }
+    for (std::size_t c = 0; c < collider_->cells().size(); ++c) cells.push_back({in.get(), in.get()});
   std::vector<double> sums(sampler_.sums().size());
   for (double& x : sums) x = in.get();
   in.finish();
+
+  for (int o = 0; o < objects; ++o) setup_.obstacles.place(o, poses[static_cast<std::size_t>(o)]);
   sampler_.set_sums(sums);
+  if (collider_) std::copy(cells.begin(), cells.end(), collider_->cells().begin());
   swarm_ = std::move(swarm);
+  tallies_ = std::move(tallies);
+  patch_tallies_ = std::move(patch_tallies);
+  moves_ = moves;
+  steps_ = steps;
+  seeded_ = seeded;
+  injected_ = injected;
+  migrated_ = migrated;
+  collisions_ = collisions;
   obstacles_moved_ = false;
 }
 

@@ -42,16 +42,20 @@ participants:
                                        "moving_ball.yaml");
 }
 
-// Both bodies' poses with the ball's centre at x along the x axis, moving at u.
-std::vector<double> poses(double x, double u) {
+// Both bodies' poses with the ball's centre at x along the x axis, moving at u, turned by
+// `angle` about (1, 2, 3) (a ball looks the same turned, but its pose does not).
+std::vector<double> poses(double x, double u, double angle = 0) {
   std::vector<double> p(2 * kPose, 0.0);
   p[0] = 3, p[1] = 2, p[2] = 2, p[3] = 1;
-  p[kPose + 0] = x, p[kPose + 3] = 1, p[kPose + 7] = u;
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, 3).normalized()));
+  p[kPose + 0] = x, p[kPose + 3] = q.w(), p[kPose + 4] = q.x(), p[kPose + 5] = q.y(), p[kPose + 6] = q.z();
+  p[kPose + 7] = u;
   return p;
 }
 
-participant::Inputs window_inputs(const participant::Window& w, double x0, double u) {
-  return {poses(x0 + u * w.t0, u), poses(x0 + u * w.t1, u), {}, {}};
+// `turn` rad/s about that axis too (a turning diffuse ball feels a torque and a side force).
+participant::Inputs window_inputs(const participant::Window& w, double x0, double u, double turn = 0) {
+  return {poses(x0 + u * w.t0, u, turn * w.t0), poses(x0 + u * w.t1, u, turn * w.t1), {}, {}};
 }
 
 TEST(TrackerAdapter, BallMovedThroughGasAtRestFeelsTheFreeMolecularDrag) {
@@ -84,18 +88,19 @@ TEST(TrackerAdapter, BallMovedThroughGasAtRestFeelsTheFreeMolecularDrag) {
 }
 
 TEST(TrackerAdapter, RepeatedWindowAfterRestoreGivesTheSameForcesToTheBit) {
+  // The ball moves and turns: the restored pose must be the saved one to the bit.
   const scene::Scene scene = moving_ball_scene();
   TrackerSolver solver;
   solver.initialise(scene, "tracker", poses(-2, 2), {});
   const participant::Window first{0, 1, 0.0, 0.25}, second{1, 1, 0.25, 0.5};
-  solver.advance(first, window_inputs(first, -2, 2));
+  solver.advance(first, window_inputs(first, -2, 2, 1));
   const std::vector<double> start = solver.state();
-  const participant::Outputs once = solver.advance(second, window_inputs(second, -2, 2));
+  const participant::Outputs once = solver.advance(second, window_inputs(second, -2, 2, 1));
   const std::vector<double> end = solver.state();
   solver.restore(start);
   EXPECT_EQ(solver.state(), start);
   const participant::Window again{1, 2, 0.25, 0.5};
-  const participant::Outputs twice = solver.advance(again, window_inputs(again, -2, 2));
+  const participant::Outputs twice = solver.advance(again, window_inputs(again, -2, 2, 1));
   EXPECT_EQ(twice.forces, once.forces);
   EXPECT_EQ(solver.state(), end);
   EXPECT_NE(once.forces[kForce], 0.0);
@@ -103,7 +108,7 @@ TEST(TrackerAdapter, RepeatedWindowAfterRestoreGivesTheSameForcesToTheBit) {
   // A fresh solver resumed from the state continues the same way (a checkpoint).
   TrackerSolver resumed;
   resumed.initialise(scene, "tracker", poses(-2, 2), start);
-  EXPECT_EQ(resumed.advance(second, window_inputs(second, -2, 2)).forces, once.forces);
+  EXPECT_EQ(resumed.advance(second, window_inputs(second, -2, 2, 1)).forces, once.forces);
 }
 
 TEST(TrackerAdapter, StateOfAnotherSceneIsRefused) {
