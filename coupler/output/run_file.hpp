@@ -14,8 +14,10 @@
 //                        torque (n x 3)
 //   /coupling/           window (n, uint64), time (n), iterations (n, int32), residual (n),
 //                        wall_seconds (n): the whole window
-//   /coupling/participants/<name>/  wall_seconds (n), substeps (n); NaN where a window's
-//                        record had no value for that participant
+//   /coupling/participants/<name>/  wall_seconds (n), substeps (n), field_bytes (n: the
+//                        payload bytes of the grid fields the coupler forwarded to it in
+//                        the window, over all iterations; 0 for a participant that needs
+//                        none); NaN where a window's record had no value for that participant
 //   /fields/<participant>/grid/  written with the first fields (field_frame.hpp), either
 //                        rectilinear: x, y, z, node coordinates per axis (so stretched
 //                        axes are exact); or polyhedral: vertices (v x 3), topology
@@ -97,6 +99,7 @@ struct WindowRecord {
   std::vector<double> forces;             // bodies x 6
   std::map<std::string, double> participant_wall_seconds;
   std::map<std::string, double> participant_substeps;
+  std::map<std::string, double> participant_field_bytes;
 };
 
 struct Checkpoint {

@@ -26,8 +26,9 @@ constexpr Spec kCoupling[] = {{"window", 1, &native_type<std::uint64_t>},
 enum CouplingIndex { kWindow, kTime, kIterations, kResidual, kWallSeconds };
 
 constexpr Spec kParticipant[] = {{"wall_seconds", 1, &native_type<double>},
-                                 {"substeps", 1, &native_type<double>}};
-enum ParticipantIndex { kParticipantWallSeconds, kSubsteps };
+                                 {"substeps", 1, &native_type<double>},
+                                 {"field_bytes", 1, &native_type<double>}};
+enum ParticipantIndex { kParticipantWallSeconds, kSubsteps, kFieldBytes };
 
 constexpr Spec kBodyTime{"time", 1, &native_type<double>};
 // A body's series past `time` are column slices of its row in WindowRecord poses/forces.
@@ -112,6 +113,7 @@ void RunSeries::append(const WindowRecord& w) {
   check_body_rows(what, w.poses, w.forces, bodies_.size());
   check_participants(what, w.participant_wall_seconds, participant_names_);
   check_participants(what, w.participant_substeps, participant_names_);
+  check_participants(what, w.participant_field_bytes, participant_names_);
   coupling_[kWindow].append(&w.window);
   coupling_[kTime].append(&w.time);
   coupling_[kIterations].append(&w.iterations);
@@ -134,6 +136,8 @@ void RunSeries::append(const WindowRecord& w) {
     const double substeps = value_or_nan(w.participant_substeps, name);
     participants_[p][kParticipantWallSeconds].append(&wall);
     participants_[p][kSubsteps].append(&substeps);
+    const double field_bytes = value_or_nan(w.participant_field_bytes, name);
+    participants_[p][kFieldBytes].append(&field_bytes);
   }
 }
 

@@ -1,7 +1,7 @@
 // Every time series of a run, one row per committed window:
 //   /bodies/<name>/{time, position, orientation, velocity, angular_velocity, force, torque}
 //   /coupling/{window, time, iterations, residual, wall_seconds}
-//   /coupling/participants/<name>/{wall_seconds, substeps}
+//   /coupling/participants/<name>/{wall_seconds, substeps, field_bytes}
 #pragma once
 
 #include <hdf5.h>

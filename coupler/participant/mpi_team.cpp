@@ -1,9 +1,12 @@
 #include "participant/mpi_team.hpp"
 
+#include <array>
 #include <climits>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+
+#include "protocol/field_message.hpp"
 
 namespace cosim::participant {
 namespace {
@@ -48,6 +51,36 @@ void receive(MPI_Comm comm, Values& values) {
   share(comm, n);
   values.resize(n);
   MPI_Bcast(values.data(), count(n * sizeof(values[0])), MPI_BYTE, 0, comm);
+}
+
+// Forwarded fields cross as the arrays of the wire (field_message.hpp): none, no arrays.
+void send(MPI_Comm comm, const std::optional<output::FieldFrame>& fields) {
+  const std::vector<protocol::Array> arrays = fields ? protocol::field_arrays(*fields) : std::vector<protocol::Array>{};
+  unsigned long long n = arrays.size();
+  share(comm, n);
+  for (const protocol::Array& a : arrays) {
+    std::array<std::uint32_t, 3> shape{static_cast<std::uint32_t>(a.tag), a.rows, a.cols};
+    share(comm, shape);
+    send(comm, a.values);
+    send(comm, a.bytes);
+  }
+}
+
+std::optional<output::FieldFrame> receive_fields(MPI_Comm comm) {
+  unsigned long long n = 0;
+  share(comm, n);
+  if (n == 0) return std::nullopt;
+  std::vector<protocol::Array> arrays(n);
+  for (protocol::Array& a : arrays) {
+    std::array<std::uint32_t, 3> shape{};
+    share(comm, shape);
+    a.tag = static_cast<protocol::Tag>(shape[0]);
+    a.rows = shape[1];
+    a.cols = shape[2];
+    receive(comm, a.values);
+    receive(comm, a.bytes);
+  }
+  return protocol::field_frame(std::move(arrays), "the fields from rank 0");
 }
 
 // The per-rank sizes a gathered state announces, checked against this run's rank count
@@ -126,6 +159,7 @@ void advance_follower(Solver& local, MPI_Comm comm) {
   Inputs in;
   share(comm, w);
   for (std::vector<double>* v : {&in.poses_start, &in.poses_end, &in.forces_start, &in.forces_end}) receive(comm, *v);
+  in.fields = receive_fields(comm);
   local.advance(w, in);
 }
 
@@ -157,6 +191,7 @@ Outputs LeadSolver::advance(const Window& w, const Inputs& in) {
   Window shared = w;
   share(comm_, shared);
   for (const std::vector<double>* v : {&in.poses_start, &in.poses_end, &in.forces_start, &in.forces_end}) send(comm_, *v);
+  send(comm_, in.fields);
   return local_.advance(w, in);
 }
 
@@ -170,6 +205,8 @@ void LeadSolver::restore(const std::vector<double>& state) {
   announce(kRestore);
   local_.restore(scattered(comm_, state, sizes));
 }
+
+std::vector<std::string> LeadSolver::wanted_fields() const { return local_.wanted_fields(); }
 
 output::FieldFrame LeadSolver::fields() const {
   announce(kFields);

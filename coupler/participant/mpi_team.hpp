@@ -28,6 +28,7 @@ class LeadSolver final : public Solver {
   void restore(const std::vector<double>& state) override;
   // Each rank's share gathered by the solver's own fields() (rank 0 gets the whole frame).
   output::FieldFrame fields() const override;
+  std::vector<std::string> wanted_fields() const override;  // rank 0's: every rank runs the same solver
 
   // Lets the followers return `exit_code` from follow().
   void finish(int exit_code);

@@ -34,11 +34,6 @@ Message outputs_message(Type type, const Outputs& out, std::uint32_t provides, d
   return m;
 }
 
-Inputs inputs_of(const Message& m) {
-  return {values_or_empty(m, Tag::Poses, 0), values_or_empty(m, Tag::Poses, 1),
-          values_or_empty(m, Tag::Forces, 0), values_or_empty(m, Tag::Forces, 1)};
-}
-
 int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std::uint32_t needs,
           std::uint32_t ranks) {
   const Message init = client.hello(provides, needs, ranks);
@@ -51,7 +46,10 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
   auto start = std::chrono::steady_clock::now();
   const Outputs initial = solver.initialise(scene, client.name(), values_or_empty(init, Tag::Poses),
                                             values_or_empty(init, Tag::State));
-  client.reply(outputs_message(Type::Ready, initial, provides, seconds_since(start)));
+  Message ready = outputs_message(Type::Ready, initial, provides, seconds_since(start));
+  if (scene::has(needs, scene::Data::Fields))
+    for (const std::string& field : solver.wanted_fields()) ready.arrays.push_back(Array::text(field));
+  client.reply(std::move(ready));
 
   std::vector<double> window_start;
   for (;;) {
@@ -64,7 +62,7 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
         else if (implicit)
           window_start = solver.state();
         start = std::chrono::steady_clock::now();
-        const Outputs out = solver.advance(w, inputs_of(m));
+        const Outputs out = solver.advance(w, inputs_of(std::move(m)));
         Message result = outputs_message(Type::Result, out, provides, seconds_since(start));
         result.header.window = w.index;
         result.header.iteration = w.iteration;
@@ -101,6 +99,14 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
 }
 
 }  // namespace
+
+Inputs inputs_of(Message m) {
+  std::vector<Array> fields = protocol::take_field_arrays(m.arrays);
+  Inputs in{values_or_empty(m, Tag::Poses, 0), values_or_empty(m, Tag::Poses, 1),
+            values_or_empty(m, Tag::Forces, 0), values_or_empty(m, Tag::Forces, 1), std::nullopt};
+  if (!fields.empty()) in.fields = protocol::field_frame(std::move(fields), "the fields in Advance");
+  return in;
+}
 
 int run_participant(protocol::Client& client, Solver& solver, std::uint32_t provides,
                     std::uint32_t needs, std::uint32_t ranks) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,9 +25,12 @@ struct Window {
 // and end are equal (the first participant of serial-explicit, everyone in
 // parallel-explicit): held constant, first order. Implicit schemes converge the end value:
 // second order.
+// A participant that needs fields gets another's (the fluid's) as committed at t0, the
+// same in every iteration of the window: held constant over it, explicit, first order.
 struct Inputs {
   std::vector<double> poses_start, poses_end;
   std::vector<double> forces_start, forces_end;
+  std::optional<output::FieldFrame> fields;  // none unless the participant needs fields
 };
 
 // The value at s in [w.t0, w.t1] of an input that goes linearly from start to end.
@@ -54,6 +58,9 @@ class Solver {
   virtual void restore(const std::vector<double>& state) = 0;
   // The grid fields to write at output times now; no fields: nothing is written.
   virtual output::FieldFrame fields() const { return {}; }
+  // A participant that needs fields names those it uses, so that only they cross the
+  // wire; none named: the whole frame.
+  virtual std::vector<std::string> wanted_fields() const { return {}; }
 };
 
 }  // namespace cosim::participant

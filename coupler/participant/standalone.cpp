@@ -38,7 +38,8 @@ void run_standalone(const scene::Scene& scene, Solver& solver, const std::string
                  .poses = or_zeros(out.poses, protocol::kPoseWidth * bodies.size()),
                  .forces = or_zeros(out.forces, protocol::kForceWidth * bodies.size()),
                  .participant_wall_seconds = {{name, wall}},
-                 .participant_substeps = {{name, out.substeps}}});
+                 .participant_substeps = {{name, out.substeps}},
+                 .participant_field_bytes = {{name, 0.0}}});  // nobody forwards fields to a program alone
   };
   const std::uint64_t n = scene.windows();
   const auto write_fields = [&](std::uint64_t done, double time) {

@@ -1,6 +1,8 @@
 #include "protocol/field_message.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <variant>
@@ -47,8 +49,7 @@ void push_grid(std::vector<Array>& arrays, output::PolyhedralGrid& grid) {
 }
 
 // Moves the grid out of the leading arrays into frame; returns the index of the first field's name.
-std::size_t take_grid(Message& m, output::FieldFrame& frame, const std::string& who) {
-  auto& a = m.arrays;
+std::size_t take_grid(std::vector<Array>& a, output::FieldFrame& frame, const std::string& who) {
   if (a[0].bytes == "vertices") {
     if (a.size() < 6 || a[1].cols != 3 || a[2].bytes != "topology" || a[3].rows != 1)
       throw ProtocolError(who + ": vertices (v x 3) must be followed by the topology (1 x n) and a field");
@@ -91,27 +92,43 @@ std::vector<Array> field_arrays(output::FieldFrame frame) {
 }
 
 output::FieldFrame field_frame(Message m) {
+  return field_frame(std::move(m.arrays), "Field message of '" + m.header.participant + "'");
+}
+
+output::FieldFrame field_frame(std::vector<Array> arrays, const std::string& who) {
   output::FieldFrame frame;
-  if (m.arrays.empty()) return frame;
-  const std::string who = "Field message of '" + m.header.participant + "'";
-  if (m.arrays.size() % 2 != 0)
-    throw ProtocolError(who + " has " + std::to_string(m.arrays.size()) + " arrays: expected pairs of a name and values");
-  for (std::size_t i = 0; i < m.arrays.size(); i += 2)
-    if (m.arrays[i].tag != Tag::Text || m.arrays[i + 1].tag != Tag::Field)
+  if (arrays.empty()) return frame;
+  if (arrays.size() % 2 != 0)
+    throw ProtocolError(who + " has " + std::to_string(arrays.size()) + " arrays: expected pairs of a name and values");
+  for (std::size_t i = 0; i < arrays.size(); i += 2)
+    if (arrays[i].tag != Tag::Text || arrays[i + 1].tag != Tag::Field)
       throw ProtocolError(who + ": array " + std::to_string(i) + " must be a name (Text) followed by a Field array");
-  const std::size_t first_field = take_grid(m, frame, who);
+  const std::size_t first_field = take_grid(arrays, frame, who);
   if (const std::string problem = output::grid_problem(frame.grid); !problem.empty())
     throw ProtocolError(who + ": " + problem);
   const std::size_t cells = output::cell_count(frame.grid);
-  for (std::size_t i = first_field; i < m.arrays.size(); i += 2) {
-    const Array& name = m.arrays[i];
-    Array& values = m.arrays[i + 1];
+  for (std::size_t i = first_field; i < arrays.size(); i += 2) {
+    const Array& name = arrays[i];
+    Array& values = arrays[i + 1];
     if (values.rows != cells)
       throw ProtocolError(who + ": field " + name.bytes + " has " + std::to_string(values.rows) + " rows, the grid has " +
                           std::to_string(cells) + " cells");
     frame.fields.push_back({name.bytes, static_cast<int>(values.cols), std::move(values.values)});
   }
   return frame;
+}
+
+std::vector<Array> take_field_arrays(std::vector<Array>& arrays) {
+  const auto first = std::find_if(arrays.begin(), arrays.end(), [](const Array& a) { return a.tag == Tag::Text; });
+  std::vector<Array> fields(std::make_move_iterator(first), std::make_move_iterator(arrays.end()));
+  arrays.erase(first, arrays.end());
+  return fields;
+}
+
+std::size_t payload_bytes(const std::vector<Array>& arrays) {
+  std::size_t bytes = 0;
+  for (const Array& a : arrays) bytes += a.values.size() * sizeof(double) + a.bytes.size();
+  return bytes;
 }
 
 }  // namespace cosim::protocol

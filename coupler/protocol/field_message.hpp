@@ -5,8 +5,12 @@
 // (output::PolyhedralGrid) as float64, exact as its entries are below 2^53. Then per field
 // a Text with its name and a Field of cells x components; the cell count of a polyhedral
 // grid is not sent apart, it is the fields' rows.
+// An Advance to a participant that needs fields carries the same arrays after its inputs
+// (Poses and Forces arrays, none of them Text): the first Text array starts the frame.
 #pragma once
 
+#include <cstddef>
+#include <string>
 #include <vector>
 
 #include "output/field_frame.hpp"
@@ -22,5 +26,11 @@ std::vector<Array> field_arrays(output::FieldFrame frame);  // moves the values 
 // topology that is not the fields' cells, a name without its array, a field whose rows
 // are not the grid's cells).
 output::FieldFrame field_frame(Message m);  // moves them back out
+// The same from the field arrays alone; `who` names their sender in errors.
+output::FieldFrame field_frame(std::vector<Array> arrays, const std::string& who);
+// Moves the field arrays (from the first Text on) out of an Advance's arrays.
+std::vector<Array> take_field_arrays(std::vector<Array>& arrays);
+// What the arrays' payloads weigh on the wire (float64 values and text bytes).
+std::size_t payload_bytes(const std::vector<Array>& arrays);
 
 }  // namespace cosim::protocol

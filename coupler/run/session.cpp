@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <map>
+#include <set>
 
 #include "launcher/command.hpp"
 #include "protocol/client.hpp"
@@ -40,14 +42,38 @@ struct RunDirectory {
   fs::path path;
 };
 
+// A participant's own fields are not its input (the tracker provides its samples for the
+// run file), and frames of two others would have to be told apart on the wire.
+std::string field_source(const scene::Scene& scene, const scene::Plan& plan, const scene::Participant& consumer) {
+  std::vector<std::string> others;
+  for (const auto& p : plan.start)
+    if (p.name != consumer.name && scene::has(p.provides, scene::Data::Fields)) others.push_back(p.name);
+  if (others.size() != 1)
+    throw scene::SceneError(scene.file.string(), consumer.line, "participants." + consumer.name, "",
+                            others.empty() ? "needs fields, but no other participant provides them"
+                                           : "needs fields from one participant, but " + join(others) + " provide them");
+  return others.front();
+}
+
+// The fields named in `wanted`, in that order.
+std::vector<output::CellField> pick(std::vector<output::CellField> fields, const std::vector<std::string>& wanted,
+                                    const std::string& source, const std::string& consumer, const std::string& when) {
+  std::vector<output::CellField> out;
+  for (const auto& name : wanted) {
+    const auto f = std::find_if(fields.begin(), fields.end(), [&](const auto& field) { return field.name == name; });
+    if (f == fields.end())
+      throw ParticipantFailure(source, "sends no field '" + name + "', which '" + consumer + "' needs", when);
+    out.push_back(std::move(*f));
+  }
+  return out;
+}
+
 }  // namespace
 
 Session::Session(scene::Scene scene)
     : scene_(std::move(scene)), plan_(scene::plan_participants(scene_)), roles_(plan_.start) {
   for (const auto& p : plan_.start) {
-    if (scene::has(p.needs, scene::Data::Fields))
-      throw scene::SceneError(scene_.file.string(), p.line, "participants." + p.name, "",
-                              "needs fields, which the coupler does not exchange yet");
+    if (scene::has(p.needs, scene::Data::Fields)) field_source_[p.name] = field_source(scene_, plan_, p);
     commands_.push_back(launcher::participant_command(scene_, p, launcher::own_directory()));
   }
 }
@@ -153,6 +179,9 @@ void Session::handshake(Peers& peers) {
     inits.emplace(name, std::move(m));
   }
   const auto ready = peers.exchange(std::move(inits), protocol::Type::Ready, when);
+  for (const auto& [name, source] : field_source_)
+    for (const protocol::Array* field : ready.at(name).all(protocol::Tag::Text))
+      wanted_fields_[name].push_back(field->bytes);
   committed_ = w;
   if (resume_) {
     checkpointed_ = w;
@@ -162,7 +191,7 @@ void Session::handshake(Peers& peers) {
     current_.poses = take(ready.at(name), protocol::Tag::Poses, b * kPoseSize, when);
   for (const auto& name : roles_.force_providers)
     current_.forces += take(ready.at(name), protocol::Tag::Forces, b * kForceSize, when);
-  record(0, 0.0, WindowResult{current_, 0, 0.0, true, {}, {}}, 0.0);
+  record(0, 0.0, WindowResult{current_, 0, 0.0, true, {}, {}, {}}, 0.0);
   write_fields(peers, 0);
   checkpoint(peers, 0);
 }
@@ -174,7 +203,8 @@ void Session::windows(Peers& peers) {
   for (auto k = first_window(); k < n; ++k) {
     const auto started = clock::now();
     const double t1 = window_start(k + 1);
-    WindowResult r = runner.advance(k, window_start(k), t1, current_);
+    WindowResult r = runner.advance(k, window_start(k), t1, current_, forwarded_fields(peers, k));
+    for (const auto& [name, bytes] : r.field_bytes) forwarded_bytes_ += bytes;
     if (!r.converged)
       spdlog::warn("window {} (t = {} s): not converged after {} iterations, residual {:.3g}",
                    k, t1, r.iterations, r.residual);
@@ -193,6 +223,9 @@ void Session::windows(Peers& peers) {
     progress.update(k, t1, r.iterations);
   }
   progress.finish();
+  if (!field_source_.empty() && n > first_window())
+    spdlog::info("forwarded {:.0f} bytes of fields ({:.0f} per window)", forwarded_bytes_,
+                 forwarded_bytes_ / static_cast<double>(n - first_window()));
 }
 
 void Session::record(std::uint64_t window, double time, const WindowResult& r, double wall) {
@@ -207,33 +240,59 @@ void Session::record(std::uint64_t window, double time, const WindowResult& r, d
   for (const auto& name : roles_.all()) {
     rec.participant_wall_seconds[name] = r.wall_seconds.contains(name) ? r.wall_seconds.at(name) : 0.0;
     rec.participant_substeps[name] = r.substeps.contains(name) ? r.substeps.at(name) : 0.0;
+    rec.participant_field_bytes[name] = r.field_bytes.contains(name) ? r.field_bytes.at(name) : 0.0;
   }
   file_->append(rec);
 }
 
-void Session::write_fields(Peers& peers, std::uint64_t windows_done) {
-  if (!scene_.output.fields_at(windows_done, scene_.windows())) return;
-  const double time = window_start(windows_done);
+std::map<std::string, output::FieldFrame> Session::request_fields(Peers& peers,
+                                                                  const std::set<std::string>& providers,
+                                                                  std::uint64_t window, const std::string& when) {
   std::map<std::string, protocol::Message> requests;
-  for (const auto& [name, provides] : roles_.provides)
-    if (scene::has(provides, scene::Data::Fields)) {
-      protocol::Message m;
-      m.header.type = protocol::Type::Field;
-      m.header.window = windows_done;
-      m.header.t0 = m.header.t1 = time;
-      requests.emplace(name, std::move(m));
-    }
-  if (requests.empty()) return;
-  const auto when = fmt::format("while writing fields at t = {} s", time);
+  for (const auto& name : providers) {
+    protocol::Message m;
+    m.header.type = protocol::Type::Field;
+    m.header.window = window;
+    m.header.t0 = m.header.t1 = window_start(window);
+    requests.emplace(name, std::move(m));
+  }
+  std::map<std::string, output::FieldFrame> frames;
   for (auto& [name, m] : peers.exchange(std::move(requests), protocol::Type::Field, when)) {
-    output::FieldFrame frame;
     try {
-      frame = protocol::field_frame(std::move(m));
+      frames.emplace(name, protocol::field_frame(std::move(m)));
     } catch (const protocol::ProtocolError& e) {
       throw ParticipantFailure(name, e.what(), when);
     }
-    if (!frame.fields.empty()) file_->write_fields(name, windows_done, time, frame);
   }
+  return frames;
+}
+
+void Session::write_fields(Peers& peers, std::uint64_t windows_done) {
+  if (!scene_.output.fields_at(windows_done, scene_.windows())) return;
+  std::set<std::string> providers;
+  for (const auto& [name, provides] : roles_.provides)
+    if (scene::has(provides, scene::Data::Fields)) providers.insert(name);
+  if (providers.empty()) return;
+  const double time = window_start(windows_done);
+  const auto when = fmt::format("while writing fields at t = {} s", time);
+  for (const auto& [name, frame] : request_fields(peers, providers, windows_done, when))
+    if (!frame.fields.empty()) file_->write_fields(name, windows_done, time, frame);
+}
+
+FieldArrays Session::forwarded_fields(Peers& peers, std::uint64_t window) {
+  FieldArrays out;
+  if (field_source_.empty()) return out;
+  std::set<std::string> sources;
+  for (const auto& [consumer, source] : field_source_) sources.insert(source);
+  const auto when = fmt::format("while taking the fields to forward at t = {} s", window_start(window));
+  const auto frames = request_fields(peers, sources, window, when);
+  for (const auto& [consumer, source] : field_source_) {
+    output::FieldFrame frame = frames.at(source);  // a copy: a source may serve several
+    const auto& wanted = wanted_fields_[consumer];
+    if (!wanted.empty()) frame.fields = pick(std::move(frame.fields), wanted, source, consumer, when);
+    out.emplace(consumer, protocol::field_arrays(std::move(frame)));
+  }
+  return out;
 }
 
 void Session::checkpoint(Peers& peers, std::uint64_t next_window) {

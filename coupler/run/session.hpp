@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -40,14 +42,23 @@ class Session {
   void handshake(Peers& peers);
   void windows(Peers& peers);
   void record(std::uint64_t window, double time, const WindowResult& r, double wall);
+  // The fields of `providers` at the start of `window` (their committed state).
+  std::map<std::string, output::FieldFrame> request_fields(Peers& peers, const std::set<std::string>& providers,
+                                                           std::uint64_t window, const std::string& when);
   // At the scene's fields times, every participant that provides fields sends them.
   void write_fields(Peers& peers, std::uint64_t windows_done);
+  // What each participant that needs fields takes in `window`: its source's fields now,
+  // only those it named in Ready.
+  FieldArrays forwarded_fields(Peers& peers, std::uint64_t window);
   void checkpoint(Peers& peers, std::uint64_t next_window);
 
   scene::Scene scene_;
   scene::Plan plan_;
   Roles roles_;
   std::vector<std::vector<std::string>> commands_;  // per plan_.start
+  std::map<std::string, std::string> field_source_;  // participant that needs fields -> who sends them
+  std::map<std::string, std::vector<std::string>> wanted_fields_;  // by name, as its Ready said; none: all
+  double forwarded_bytes_ = 0;  // of fields, over the windows of this session
   std::optional<output::RunFile> file_;
   std::optional<output::Checkpoint> resume_;
   bool progress_ = true;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "protocol/field_message.hpp"
 #include "run/failure.hpp"
 
 namespace cosim::run {
@@ -50,8 +51,8 @@ WindowRunner::WindowRunner(Peers& peers, Roles roles, const scene::Coupling& cou
       accelerator_(coupling::make_accelerator(coupling.acceleration, coupling.relaxation)) {}
 
 WindowResult WindowRunner::advance(std::uint64_t window, double t0, double t1,
-                                   const Exchange& start) {
-  const Span s{window, t0, t1, in_window(window, t0, t1)};
+                                   const Exchange& start, const FieldArrays& fields) {
+  const Span s{window, t0, t1, in_window(window, t0, t1), fields};
   // With nobody on one side there is no loop to close: one pass is exact.
   const bool closed = !roles_.pose_providers.empty() && !roles_.force_providers.empty();
   switch (coupling_.scheme) {
@@ -82,6 +83,10 @@ Exchange WindowRunner::call(const std::vector<std::string>& names, const Span& s
     if (scene::has(roles_.needs.at(name), scene::Data::Forces)) {
       m.arrays.push_back(forces_array(start.forces));
       m.arrays.push_back(forces_array(end.forces));
+    }
+    if (const auto f = s.fields.find(name); f != s.fields.end()) {
+      m.arrays.insert(m.arrays.end(), f->second.begin(), f->second.end());
+      r.field_bytes[name] += static_cast<double>(protocol::payload_bytes(f->second));
     }
     requests.emplace(name, std::move(m));
   }

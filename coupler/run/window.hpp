@@ -8,12 +8,14 @@
 // serial-implicit iterates on the forces, parallel-implicit on poses and forces stacked
 // (each block divided by its norm in the first iteration so neither dominates the
 // accelerator). Participants that provide neither (observers) go last with the final
-// values, in every iteration so their rollback stays in step.
+// values, in every iteration so their rollback stays in step. A participant that needs
+// fields gets the same frame, taken at t0, in every iteration.
 #pragma once
 
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "coupling/acceleration.hpp"
 #include "run/exchange.hpp"
@@ -28,18 +30,24 @@ struct WindowResult {
   bool converged = true;
   std::map<std::string, double> wall_seconds;  // per participant, summed over iterations
   std::map<std::string, double> substeps;
+  std::map<std::string, double> field_bytes;  // forwarded to each participant, over all iterations
 };
+
+// Per participant that needs fields, the field arrays its Advance messages carry.
+using FieldArrays = std::map<std::string, std::vector<protocol::Array>>;
 
 class WindowRunner {
  public:
   WindowRunner(Peers& peers, Roles roles, const scene::Coupling& coupling);
-  WindowResult advance(std::uint64_t window, double t0, double t1, const Exchange& start);
+  WindowResult advance(std::uint64_t window, double t0, double t1, const Exchange& start,
+                       const FieldArrays& fields = {});
 
  private:
   struct Span {
     std::uint64_t window;
     double t0, t1;
     std::string when;  // labels failures
+    const FieldArrays& fields;
   };
   // Advance `names` over the span with inputs interpolated from start to end; returns
   // `end` with the outputs of those participants in place, and adds their stats to r.

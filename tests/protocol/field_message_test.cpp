@@ -142,5 +142,31 @@ TEST(FieldMessage, ASenderCannotSendABrokenGrid) {
   EXPECT_THROW(field_arrays(frame), ProtocolError);
 }
 
+// The coupler forwards a frame after an Advance's inputs; the participant splits it off.
+TEST(FieldMessage, AnAdvanceCarriesTheFieldsAfterItsInputs) {
+  Message m;
+  m.header.type = Type::Advance;
+  m.header.participant = "tracker";
+  const std::vector<double> pose{0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  m.arrays = {Array::of(Tag::Poses, 1, kPoseWidth, pose), Array::of(Tag::Poses, 1, kPoseWidth, pose)};
+  const std::vector<Array> fields = field_arrays(sample_frame());
+  // Grid nodes 3 + 4 + 2, velocity 18 and pressure 6 values; the names x, y, z, velocity, pressure.
+  EXPECT_EQ(payload_bytes(fields), 8 * (9 + 18 + 6) + 3 + 8 + 8);
+  m.arrays.insert(m.arrays.end(), fields.begin(), fields.end());
+
+  Message got = decode(encode(m));
+  std::vector<Array> taken = take_field_arrays(got.arrays);
+  ASSERT_EQ(got.arrays.size(), 2u);
+  EXPECT_EQ(got.arrays[1].values, pose);
+  const output::FieldFrame frame = field_frame(std::move(taken), "Advance");
+  EXPECT_EQ(std::get<output::RectilinearGrid>(frame.grid).nodes,
+            std::get<output::RectilinearGrid>(sample_frame().grid).nodes);
+  expect_same_fields(frame, sample_frame());
+
+  Message inputs_only = decode(encode(Message{m.header, {m.arrays[0]}}));
+  EXPECT_TRUE(take_field_arrays(inputs_only.arrays).empty());
+  EXPECT_EQ(inputs_only.arrays.size(), 1u);
+}
+
 }  // namespace
 }  // namespace cosim::protocol

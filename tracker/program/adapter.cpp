@@ -6,6 +6,7 @@
 
 #include "participant/poses_at.hpp"
 #include "tracker/program/cell_fields.hpp"
+#include "tracker/program/velocity_input.hpp"
 #include "protocol/message.hpp"
 
 namespace cosim::tracker {
@@ -44,6 +45,7 @@ void TrackerSolver::check_size(const std::vector<double>& poses) const {
 
 participant::Outputs TrackerSolver::advance(const participant::Window& w, const participant::Inputs& in) {
   gas_->reseed(w.index);
+  if (in.fields) gas_->set_velocity(velocity_of(*in.fields));
   const std::vector<ObstacleTally> before = gas_->tallies();
   const std::vector<int>& body_of = gas_->setup().obstacle_body;
   const int steps = gas_->advance(w.t0, w.t1, [&](double t, double h) {
@@ -81,6 +83,8 @@ output::FieldFrame TrackerSolver::fields() const {
   const std::vector<CellMoments> moments = gas_->take_moments();
   return tracker_fields(gas_->mesh(), moments, count);
 }
+
+std::vector<std::string> TrackerSolver::wanted_fields() const { return {"velocity"}; }
 
 std::vector<double> TrackerSolver::state() const { return gas_->state(); }
 

@@ -3,7 +3,9 @@
 // provides the gas's force and torque on each body (protocol::kForceWidth values per body,
 // zero for a body no obstacle is bound to). Over several ranks every rank runs one
 // (participant/mpi_team.hpp): its calls are collective and the forces are the sums over the
-// ranks, on every rank. It provides its sampled fields for the run file too.
+// ranks, on every rank. It provides its sampled fields for the run file too. In tracer mode
+// it needs the fluid's velocity: the coupler forwards the fluid's field at each window's
+// start, and the tracers are carried by it, held, through the window.
 #pragma once
 
 #include <memory>
@@ -21,7 +23,8 @@ class TrackerSolver final : public participant::Solver {
                                   const std::vector<double>& poses, const std::vector<double>& state) override;
   // Subcycles to exactly w.t1 in equal steps of at most the participant's dt; before each
   // step the bound obstacles move to their body's pose at the step's end (inputs
-  // interpolated in the window). Random draws come from the window's own stream
+  // interpolated in the window); forwarded fields replace the tracers' velocity field
+  // first. Random draws come from the window's own stream
   // (Simulation::reseed), so a repeated window with the same inputs gives the same
   // forces. The forces are the momentum and its moment the hits gave each body in the
   // window, over the window's length: the window's mean.
@@ -31,6 +34,8 @@ class TrackerSolver final : public participant::Solver {
   // The per-cell samples averaged since the last call (or the start) on the tracker's
   // polyhedral mesh (cell_fields.hpp); collective, the whole frame on every rank.
   output::FieldFrame fields() const override;
+  // Tracers need only the fluid's velocity of its frame.
+  std::vector<std::string> wanted_fields() const override;
 
   const Simulation& gas() const { return *gas_; }
 

@@ -25,11 +25,13 @@ int coupled() {
     int ranks = 1;
     MPI_Comm_size(MPI_COMM_WORLD, &ranks);
     auto client = cosim::protocol::Client::from_environment();
-    // Able to take poses and give forces and fields; the coupler's plan decides what flows.
+    // Able to take poses and fields (tracer mode) and give forces and fields; the coupler's
+    // plan decides what flows.
     return cosim::participant::run_participant(*client, lead,
                                                static_cast<std::uint32_t>(Data::Forces) |
                                                    static_cast<std::uint32_t>(Data::Fields),
-                                               static_cast<std::uint32_t>(Data::Poses),
+                                               static_cast<std::uint32_t>(Data::Poses) |
+                                                   static_cast<std::uint32_t>(Data::Fields),
                                                static_cast<std::uint32_t>(ranks));
   });
 }

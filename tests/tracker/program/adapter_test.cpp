@@ -55,7 +55,10 @@ std::vector<double> poses(double x, double u, double angle = 0) {
 
 // `turn` rad/s about that axis too (a turning diffuse ball feels a torque and a side force).
 participant::Inputs window_inputs(const participant::Window& w, double x0, double u, double turn = 0) {
-  return {poses(x0 + u * w.t0, u, turn * w.t0), poses(x0 + u * w.t1, u, turn * w.t1), {}, {}};
+  participant::Inputs in;
+  in.poses_start = poses(x0 + u * w.t0, u, turn * w.t0);
+  in.poses_end = poses(x0 + u * w.t1, u, turn * w.t1);
+  return in;
 }
 
 TEST(TrackerAdapter, BallMovedThroughGasAtRestFeelsTheFreeMolecularDrag) {

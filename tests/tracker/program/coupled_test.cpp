@@ -1,14 +1,18 @@
 // cosim-tracker through `cosim run`, as a user runs it: the tracker alone with a fixed
 // sphere in a free-molecular stream (the force in the run file against Bird's drag), and
-// with the rigid-body program, which the gas's force then pushes downstream.
+// with the rigid-body program, which the gas's force then pushes downstream; and tracers
+// carried by cosim-fluid's velocity, which the coupler forwards every window.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "cosim_process.hpp"
 #include "h5_read.hpp"
@@ -156,6 +160,148 @@ TEST(TrackerCoupled, BallReleasedInAFreeMolecularStreamFollowsBirdsDrag) {
   EXPECT_NEAR(measured / expected, 1.0, 0.04);  // about 3300 hits: 2 %
   EXPECT_NEAR(velocity.at(20, 0) / v, 1.0, 0.04);
   EXPECT_GT(velocity.at(20, 0), 150.0);
+}
+
+// A uniform stream of 0.1 m/s along a 0.4 m channel (inflow and outflow along x, periodic
+// across), cosim-fluid on 16 x 8 x 1 cells; with `tracers`, 400 massless tracers seeded
+// uniformly in the tracker's 8 x 4 x 1 box cells, leaving through x_max. 1 s: the stream
+// carries every tracer 0.1 m downstream, a quarter of the channel. A free cylinder in the
+// stream closes a loop with the rigid-body program: serial-implicit iterates the windows.
+std::string channel_scene(bool tracers, bool free_cylinder = false) {
+  const std::string effects = tracers && free_cylinder ? "tracers, hydrodynamics" : tracers ? "tracers" : "hydrodynamics";
+  std::string text = R"(
+time: {end: 1.0}
+coupling: {window: 0.05, scheme: )" + std::string(free_cylinder ? "serial-implicit" : "serial-explicit") + R"(}
+output: {fields_every: 20}
+domain: {min: [0, 0, 0], max: [0.4, 0.2, 0.01]}
+effects: [)" + effects + R"(]
+participants:
+  fluid:
+    dt: 0.01
+    options:
+      density: 1000
+      viscosity: {model: newtonian, mu: 0.01}
+      grid: {cells: [16, 8, 1]}
+      boundaries:
+        x_min: {type: inflow, velocity: [0.1, 0, 0]}
+        x_max: {type: outflow}
+        y_min: {type: periodic}
+        y_max: {type: periodic}
+        z_min: {type: periodic}
+        z_max: {type: periodic}
+      initial_velocity: [0.1, 0, 0]
+)";
+  if (tracers)
+    text += R"(  tracker:
+    dt: 0.01
+    options:
+      mesh: {type: box, cells: [8, 4, 1]}
+      boundaries: {default: {kind: specular}, x_max: {kind: open}}
+      tracers: {response_time: 0}
+      particles: {total: 400, temperature: 0, mass: 1.0e-12, seed: 3}
+)";
+  if (free_cylinder)
+    text += R"(  rigidbody:
+    dt: 0.01
+bodies:
+  - {name: cyl, shape: {type: cylinder, radius: 0.03, height: 0.01}, position: [0.2, 0.1, 0.005], material: {density: 1000}}
+)";
+  return text;
+}
+
+// The channel's velocity frame on the wire: the grid's 17 + 9 + 2 nodes and 128 x 3
+// values, and the names x, y, z and velocity.
+constexpr double kVelocityBytes = 8.0 * (17 + 9 + 2 + 128 * 3) + 11;
+
+// The x of each polyhedral cell's centre: the mean of its faces' vertices (exact for a box
+// cell, whose every vertex is on three faces), from the run file's Mixed topology.
+std::vector<double> cell_centres_x(const std::filesystem::path& file, const std::string& grid) {
+  const std::vector<double> vertices = testing::read_array(file, grid + "/vertices").values;
+  const std::vector<double> topology = testing::read_array(file, grid + "/topology").values;
+  std::vector<double> out;
+  for (std::size_t at = 0; at < topology.size();) {
+    const auto faces = static_cast<std::size_t>(topology[at + 1]);
+    at += 2;
+    double sum = 0;
+    std::size_t n = 0;
+    for (std::size_t f = 0; f < faces; ++f) {
+      const auto count = static_cast<std::size_t>(topology[at++]);
+      for (std::size_t k = 0; k < count; ++k, ++n) sum += vertices[3 * static_cast<std::size_t>(topology[at++])];
+    }
+    out.push_back(sum / static_cast<double>(n));
+  }
+  return out;
+}
+
+TEST(TrackerCoupled, TracersRideTheFluidsVelocityForwardedByTheCoupler) {
+  const auto dir = testing::scratch_dir("tracker_tracers");
+  const testing::Finished run = testing::run_scene_text(dir, channel_scene(true));
+  ASSERT_EQ(run.exit_code, 0) << run.output;  // the tracker fails the run if a tracer is lost
+  EXPECT_NE(run.output.find("tracker (provides fields, needs fields)"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("forwarded"), std::string::npos) << run.output;
+  const auto file = dir / "scene.h5";
+
+  // Only the velocity crosses, not the fluid's pressure and alpha.
+  const testing::Series forwarded = testing::read_series(file, "/coupling/participants/tracker/field_bytes");
+  const testing::Series to_fluid = testing::read_series(file, "/coupling/participants/fluid/field_bytes");
+  ASSERT_EQ(forwarded.rows, 21u);  // the start and 20 windows
+  EXPECT_EQ(forwarded.at(0), 0.0);
+  for (std::size_t k = 1; k < forwarded.rows; ++k) {
+    EXPECT_EQ(forwarded.at(k), kVelocityBytes) << "window " << k;
+    EXPECT_EQ(to_fluid.at(k), 0.0);
+  }
+
+  const std::vector<double> x = cell_centres_x(file, "/fields/tracker/grid");
+  const std::vector<double> start = testing::read_array(file, "/fields/tracker/000000/count").values;
+  const std::vector<double> end = testing::read_array(file, "/fields/tracker/000020/count").values;
+  const std::vector<double> velocity = testing::read_array(file, "/fields/tracker/000020/velocity").values;
+  ASSERT_EQ(start.size(), x.size());
+  double seeded = 0, remaining = 0, x_start = 0, x_end = 0, upstream = 0, u = 0;
+  for (std::size_t c = 0; c < x.size(); ++c) {
+    seeded += start[c];
+    remaining += end[c];
+    x_start += start[c] * x[c];
+    x_end += end[c] * x[c];
+    if (x[c] < 0.1) upstream += end[c];
+    if (end[c] > 0) u += end[c] * velocity[3 * c];  // a cell never sampled has no velocity
+  }
+  x_start /= seeded;
+  x_end /= remaining;
+  u /= remaining;
+  std::printf("tracers in a 0.1 m/s stream: %g seeded, %g remain after 1 s, mean x %.3f -> %.3f m, mean u %.4f m/s\n",
+              seeded, remaining, x_start, x_end, u);
+  EXPECT_EQ(seeded, 400);
+  // Those seeded in the last quarter have left: 300 expected, binomial spread 9.
+  EXPECT_NEAR(remaining, 300, 30);
+  EXPECT_EQ(upstream, 0) << "the first 0.1 m is behind every tracer";
+  EXPECT_NEAR(x_end - x_start, 0.05, 0.02);  // uniform in [0.1, 0.4] from uniform in [0, 0.4]
+  EXPECT_NEAR(u, 0.1, 1e-3);
+}
+
+// Every iteration of an implicit window takes the fluid's fields of the window's start again.
+TEST(TrackerCoupled, AnImplicitWindowForwardsTheFieldsInEveryIteration) {
+  const auto dir = testing::scratch_dir("tracker_tracers_implicit");
+  const testing::Finished run = testing::run_scene_text(dir, channel_scene(true, true));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const testing::Series iterations = testing::read_series(dir / "scene.h5", "/coupling/iterations");
+  const testing::Series forwarded = testing::read_series(dir / "scene.h5", "/coupling/participants/tracker/field_bytes");
+  ASSERT_EQ(forwarded.rows, 21u);
+  double most = 0;
+  for (std::size_t k = 1; k < forwarded.rows; ++k) {
+    EXPECT_EQ(forwarded.at(k), iterations.at(k) * kVelocityBytes) << "window " << k;
+    most = std::max(most, iterations.at(k));
+  }
+  EXPECT_GT(most, 1) << "no window was repeated";
+}
+
+TEST(TrackerCoupled, WithoutTracersNoFieldsAreForwarded) {
+  const auto dir = testing::scratch_dir("fluid_no_tracers");
+  const testing::Finished run = testing::run_scene_text(dir, channel_scene(false));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.output.find("forwarded"), std::string::npos) << run.output;
+  const testing::Series forwarded = testing::read_series(dir / "scene.h5", "/coupling/participants/fluid/field_bytes");
+  ASSERT_EQ(forwarded.rows, 21u);
+  for (std::size_t k = 0; k < forwarded.rows; ++k) EXPECT_EQ(forwarded.at(k), 0.0) << "window " << k;
 }
 
 }  // namespace
