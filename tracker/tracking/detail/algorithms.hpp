@@ -44,6 +44,8 @@ struct Carried {
   std::span<SurfaceTally> patches;  // one per boundary condition, or none
 
   bool any() const { return obstacles != nullptr && !obstacles->empty(); }
+  // No object has primitives in the particle's cell: no object event can happen there.
+  bool none_in(Index cell) const { return !any() || obstacles->active(obstacles->bounding_cell(cell)).empty(); }
   // The particle moved from cell `from` to its current cell (x as that cell sees it).
   void follow(Index from, const Particle& p, bool shifted) const {
     if (any()) obstacles->transfer(from, p.cell, p.x, shifted, states);
