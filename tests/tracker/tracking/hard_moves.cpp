@@ -47,4 +47,12 @@ Flight hard_move(const Mesh& mesh, Random& random) {
   return hard_move(mesh, random, cell, pick(mesh.cell_faces[cell], mesh.cell_faces[cell + 1]));
 }
 
+std::vector<Vec3> random_points(int count, std::uint64_t seed) {
+  Random random(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<Vec3> points;
+  for (int i = 0; i < count; ++i) points.emplace_back(uniform(random), uniform(random), uniform(random));
+  return points;
+}
+
 }  // namespace cosim::tracker::testing

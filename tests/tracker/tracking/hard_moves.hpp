@@ -7,6 +7,8 @@
 
 #include "tracker/tracking/particle.hpp"
 
+#include <vector>
+
 namespace cosim::tracker::testing {
 
 struct Flight {
@@ -18,5 +20,7 @@ Flight hard_move(const Mesh& mesh, Random& random);
 // The same from a given face of a given cell.
 Flight hard_move(const Mesh& mesh, Random& random, Index cell, Index face);
 Vec3 isotropic(Random& random);
+// `count` uniform points in the unit cube: Voronoi sites.
+std::vector<Vec3> random_points(int count, std::uint64_t seed);
 
 }  // namespace cosim::tracker::testing

@@ -3,6 +3,7 @@
 // where the full algorithm puts them (the full algorithm is what a Domain whose boxes are
 // all empty runs).
 
+#include "hard_moves.hpp"
 #include "tracker/csg/shapes.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/perturb.hpp"
@@ -25,14 +26,6 @@ Mesh graded_box(bool tetrahedra) {
   spec.axes[2] = {.min = 10.0, .max = 10.5, .cells = 3, .ratio = 0.5};
   spec.tetrahedra = tetrahedra;
   return box_mesh(spec);
-}
-
-std::vector<Vec3> random_points(int count, std::uint64_t seed) {
-  Random random(seed);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  std::vector<Vec3> points;
-  for (int i = 0; i < count; ++i) points.emplace_back(uniform(random), uniform(random), uniform(random));
-  return points;
 }
 
 Boundaries specular(const Mesh& mesh) {
@@ -71,8 +64,8 @@ TEST(InnerBox, InsideEveryCellByTheTolerance) {
   expect_inside("hexahedra", graded_box(false), 0.99);
   expect_inside("tetrahedra", graded_box(true), 0.003);
   expect_inside("perturbed hexahedra", perturbed(graded_box(false), {.fraction = 0.2, .seed = 3}), 0.05);
-  expect_inside("Voronoi", voronoi_mesh(random_points(200, 11), {}), 1e-3);
-  expect_inside("periodic Voronoi", voronoi_mesh(random_points(200, 12), {.periodic = {true, true, true}}), 1e-3);
+  expect_inside("Voronoi", voronoi_mesh(testing::random_points(200, 11), {}), 1e-3);
+  expect_inside("periodic Voronoi", voronoi_mesh(testing::random_points(200, 12), {.periodic = {true, true, true}}), 1e-3);
 }
 
 // The cell shrunk by the tolerance, rounded inwards to float: to one float step (the scale
@@ -197,7 +190,7 @@ TEST(FastPath, SwarmEndsWhereTheFullAlgorithmPutsIt) {
 // Short moves from random points of perturbed Voronoi cells (non-planar faces: the planes
 // of the two sides of a face differ), through move(): the same MoveResult and end.
 TEST(FastPath, PerturbedVoronoiMovesEndWhereTheFullAlgorithmPutsThem) {
-  const Mesh mesh = perturbed(voronoi_mesh(random_points(200, 13), {}), {.fraction = 0.05, .seed = 4});
+  const Mesh mesh = perturbed(voronoi_mesh(testing::random_points(200, 13), {}), {.fraction = 0.05, .seed = 4});
   const Domain fast(mesh, specular(mesh));
   Domain full(mesh, specular(mesh));
   without_fast_path(full);

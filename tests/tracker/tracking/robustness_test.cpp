@@ -68,14 +68,6 @@ BoxSpec cube(int cells, bool tetrahedra) {
   return spec;
 }
 
-std::vector<Vec3> random_points(int count, std::uint64_t seed) {
-  Random random(seed);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  std::vector<Vec3> points;
-  for (int i = 0; i < count; ++i) points.emplace_back(uniform(random), uniform(random), uniform(random));
-  return points;
-}
-
 TEST(NoParticleLost, PerturbedHexahedra) {
   expect_none_lost("perturbed hexahedra", perturbed(box_mesh(cube(6, false)), {.fraction = 0.2, .seed = 3}), true);
 }
@@ -85,12 +77,12 @@ TEST(NoParticleLost, PerturbedTetrahedra) {
 }
 
 TEST(NoParticleLost, PerturbedVoronoi) {
-  const Mesh voronoi = voronoi_mesh(random_points(200, 5), {});
+  const Mesh voronoi = voronoi_mesh(testing::random_points(200, 5), {});
   expect_none_lost("perturbed voronoi", perturbed(voronoi, {.fraction = 0.05, .seed = 5}), true);
 }
 
 TEST(NoParticleLost, PerturbedPeriodicVoronoi) {
-  const Mesh voronoi = voronoi_mesh(random_points(200, 6), {.periodic = {true, true, true}});
+  const Mesh voronoi = voronoi_mesh(testing::random_points(200, 6), {.periodic = {true, true, true}});
   expect_none_lost("perturbed periodic voronoi", perturbed(voronoi, {.fraction = 0.05, .seed = 6}), false);
 }
 
@@ -99,7 +91,7 @@ TEST(NoParticleLost, PerturbedPeriodicVoronoi) {
 // vertices, edges, inside, aimed at vertices or along the face), half anywhere.
 TEST(NoParticleLost, VoronoiWithTinyFaces) {
   for (const bool periodic : {false, true}) {
-    const Mesh mesh = voronoi_mesh(random_points(20000, periodic ? 8 : 7), {.periodic = {periodic, periodic, periodic}});
+    const Mesh mesh = voronoi_mesh(testing::random_points(20000, periodic ? 8 : 7), {.periodic = {periodic, periodic, periodic}});
     std::vector<Index> small;
     for (Index c = 0; c < mesh.cell_count(); ++c) {
       const double size = cell_box(mesh, c).diagonal().norm();
