@@ -35,13 +35,6 @@ struct Row {
   double seconds = 0;  // fastest repeat
 };
 
-BoxSpec cube(int cells, bool tetrahedra) {
-  BoxSpec spec;
-  for (auto& axis : spec.axes) axis.cells = cells;
-  spec.tetrahedra = tetrahedra;
-  return spec;
-}
-
 Mesh voronoi(int cells, std::uint64_t seed) {
   Random random(seed);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);

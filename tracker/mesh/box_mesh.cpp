@@ -80,6 +80,13 @@ void link_periodic(Mesh& mesh, int axis, double period, const LowId& low_id) {
 
 }  // namespace
 
+BoxSpec cube(int cells, bool tetrahedra) {
+  BoxSpec spec;
+  for (AxisSpacing& axis : spec.axes) axis.cells = cells;
+  spec.tetrahedra = tetrahedra;
+  return spec;
+}
+
 Mesh box_mesh(const BoxSpec& spec) {
   std::array<std::vector<double>, 3> nodes;
   for (int k = 0; k < 3; ++k) nodes[k] = axis_nodes(spec.axes[k]);

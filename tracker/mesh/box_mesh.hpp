@@ -32,6 +32,8 @@ struct BoxSpec {
 // Patches 0..5 are x_min, x_max, y_min, y_max, z_min, z_max. Cell order: x fastest, then
 // y, then z (times 6 tetrahedra when split). Throws std::invalid_argument on a bad spec.
 Mesh box_mesh(const BoxSpec& spec);
+// The unit cube in cells^3 equal hexahedra (or six tetrahedra each).
+BoxSpec cube(int cells, bool tetrahedra = false);
 
 std::vector<double> axis_nodes(const AxisSpacing& axis);
 

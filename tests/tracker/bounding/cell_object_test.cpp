@@ -19,12 +19,6 @@ struct Ball {
   double radius;
 };
 
-Mesh unit_box(int cells) {
-  BoxSpec spec;
-  for (auto& a : spec.axes) a.cells = cells;
-  return box_mesh(spec);
-}
-
 // 200 balls of radius 0.03 to 0.05 in the unit box: far more than a state holds.
 std::vector<Ball> cluster() {
   std::mt19937_64 rng(7);
@@ -47,7 +41,7 @@ bool clear_of(const std::vector<Ball>& balls, const Vec3& x) {
 }
 
 TEST(CellObject, PrunedTreesGiveTheObjectsAnswerEverywhere) {
-  const Mesh mesh = unit_box(16);
+  const Mesh mesh = box_mesh(cube(16));
   const std::vector<Ball> balls = cluster();
   const csg::Tree object = union_of(balls);
   const CellObject cells(mesh, object);
@@ -75,7 +69,7 @@ TEST(CellObject, PrunedTreesGiveTheObjectsAnswerEverywhere) {
 }
 
 TEST(CellObject, StatesCarriedAcrossEveryFaceEqualDirectEvaluation) {
-  const Mesh mesh = unit_box(12);
+  const Mesh mesh = box_mesh(cube(12));
   const std::vector<Ball> balls = cluster();
   const CellObject cells(mesh, union_of(balls));
   int checked = 0, carried = 0;
@@ -98,7 +92,7 @@ TEST(CellObject, StatesCarriedAcrossEveryFaceEqualDirectEvaluation) {
 // Infinite primitives register only where their surface is: a half-space (its plane inside
 // the fifth layer of cells) minus a ball.
 TEST(CellObject, HalfSpaceIsConstantAwayFromItsPlane) {
-  const Mesh mesh = unit_box(8);
+  const Mesh mesh = box_mesh(cube(8));
   const csg::Tree object(csg::half_space({0, 0, 0.55}, {0, 0, 1}) - csg::ball({0.5, 0.5, 0.25}, 0.1));
   const CellObject cells(mesh, object);
   const PointLocator locator(mesh);
@@ -116,7 +110,7 @@ TEST(CellObject, HalfSpaceIsConstantAwayFromItsPlane) {
 }
 
 TEST(CellObject, TooManyPrimitivesInOneCellIsRefusedNamingIt) {
-  const Mesh mesh = unit_box(2);
+  const Mesh mesh = box_mesh(cube(2));
   std::vector<Ball> balls;
   for (int i = 0; i < 70; ++i) balls.push_back({Vec3(0.1 + 0.004 * i, 0.2, 0.2), 0.01});
   try {

@@ -45,8 +45,7 @@ TEST(Locate, GradedHexahedra) {
 }
 
 TEST(Locate, PerturbedTetrahedraAndHexahedra) {
-  BoxSpec spec;
-  for (auto& axis : spec.axes) axis.cells = 5;
+  BoxSpec spec = cube(5);
   agrees_with_scan(perturbed(box_mesh(spec), {.fraction = 0.2, .seed = 8}), Vec3::Zero(), Vec3::Ones());
   spec.tetrahedra = true;
   agrees_with_scan(perturbed(box_mesh(spec), {.fraction = 0.2, .seed = 8}), Vec3::Zero(), Vec3::Ones());

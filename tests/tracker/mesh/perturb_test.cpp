@@ -12,13 +12,6 @@
 namespace cosim::tracker {
 namespace {
 
-BoxSpec cube(int n, bool tetrahedra) {
-  BoxSpec spec;
-  for (auto& axis : spec.axes) axis.cells = n;
-  spec.tetrahedra = tetrahedra;
-  return spec;
-}
-
 double largest_move(const Mesh& a, const Mesh& b) {
   double move = 0.0;
   for (std::size_t v = 0; v < a.vertices.size(); ++v) move = std::max(move, (a.vertices[v] - b.vertices[v]).norm());

@@ -33,14 +33,8 @@ int rank() {
   return r;
 }
 
-Mesh box(int n) {
-  BoxSpec spec;
-  for (AxisSpacing& a : spec.axes) a.cells = n;
-  return box_mesh(spec);
-}
-
 TEST(Decomposition, TheSameOnBothRanksAndMetisAnswer) {
-  const Mesh mesh = box(10);
+  const Mesh mesh = box_mesh(cube(10));
   const Decomposition d(mesh, Ranks(MPI_COMM_WORLD));
   ASSERT_EQ(d.ranks().size(), 2) << "run this test with mpirun -n 2";
   std::vector<int> owners(d.owners().begin(), d.owners().end()), low(owners.size()), high(owners.size());
@@ -51,7 +45,7 @@ TEST(Decomposition, TheSameOnBothRanksAndMetisAnswer) {
 }
 
 TEST(Migration, EveryParticleReachesItsCellsOwnerWithItsStates) {
-  const Mesh mesh = box(6);
+  const Mesh mesh = box_mesh(cube(6));
   const Decomposition d(mesh, Ranks(MPI_COMM_WORLD));
   // 1000 particles per rank in random cells; states: an id unique over the ranks and its
   // complement, so a record mixed up on the way shows.

@@ -14,12 +14,6 @@
 namespace cosim::tracker {
 namespace {
 
-Mesh unit_box(int cells) {
-  BoxSpec spec;
-  for (AxisSpacing& axis : spec.axes) axis.cells = cells;
-  return box_mesh(spec);
-}
-
 std::array<std::vector<double>, 3> unit_grid(int n) { return {uniform_axis(0, 1, n), uniform_axis(0, 1, n), uniform_axis(0, 1, n)}; }
 
 TEST(VelocityField, TrilinearIsExactForLinearFieldsAndClampsOutside) {
@@ -45,7 +39,7 @@ TEST(VelocityField, TrilinearIsExactForLinearFieldsAndClampsOutside) {
 // Solid-body rotation about the box's vertical axis: one period brings every massless
 // tracer back to its start (RK4: error of order (omega h)^4 per turn), through many cells.
 TEST(Tracers, SolidBodyRotationReturnsAfterOnePeriod) {
-  const Mesh mesh = unit_box(8);
+  const Mesh mesh = box_mesh(cube(8));
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6), 1.0});
   const double omega = 2.0 * std::numbers::pi;  // period 1
   const Vec3 centre(0.5, 0.5, 0.5);
@@ -76,7 +70,7 @@ TEST(Tracers, SolidBodyRotationReturnsAfterOnePeriod) {
 // An inertial tracer released at rest in a uniform stream: v = U (1 - e^(-t/tau)),
 // x = x0 + U (t - tau (1 - e^(-t/tau))), exactly, however few substeps.
 TEST(Tracers, StokesDragRelaxesToTheStreamExactly) {
-  const Mesh mesh = unit_box(4);
+  const Mesh mesh = box_mesh(cube(4));
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6), 1.0});
   const Vec3 stream(0.5, 0.1, 0.0);
   const VelocityField u = VelocityField::sampled(unit_grid(2), [&](const Vec3&) { return stream; });
@@ -95,7 +89,7 @@ TEST(Tracers, StokesDragRelaxesToTheStreamExactly) {
 // Tracers swirling around a fixed cylinder obstacle (its own wall) in the rotating flow:
 // none enters it or is lost, and the wall is met.
 TEST(Tracers, ObstaclesAndWallsHoldTracers) {
-  const Mesh mesh = unit_box(8);
+  const Mesh mesh = box_mesh(cube(8));
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6), 1.0});
   const Obstacles post(mesh, {{"post", csg::Tree(csg::cylinder({0.5, 0.75, 0.5}, {0, 0, 1}, 0.08)), false, {}}});
   const VelocityField u = VelocityField::sampled(unit_grid(16), [](const Vec3& x) -> Vec3 {

@@ -60,14 +60,8 @@ Stream unit_stream(double density, const Vec3& velocity) {
   return {.number_density = density, .velocity = velocity, .temperature = 1.0, .mass = 2.0 * boltzmann, .weight = 1.0};
 }
 
-Mesh unit_box(int cells) {
-  BoxSpec spec;
-  for (AxisSpacing& axis : spec.axes) axis.cells = cells;
-  return box_mesh(spec);
-}
-
 TEST(Inflow, CountMatchesBirdsFlux) {
-  const Mesh mesh = unit_box(3);
+  const Mesh mesh = box_mesh(cube(3));
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), 2.0 * boltzmann});
   const double s = 0.8;
   const Inflow inflow(mesh, {0}, unit_stream(1000.0, Vec3(s, 0.3, 0.0)));  // x_min, normal +x
@@ -89,7 +83,7 @@ TEST(Inflow, CountMatchesBirdsFlux) {
 }
 
 TEST(Inflow, OpenBoxFillsToTheStreamsDensityAndTemperature) {
-  const Mesh mesh = unit_box(4);
+  const Mesh mesh = box_mesh(cube(4));
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), 2.0 * boltzmann});
   const Inflow inflow(mesh, {0, 1, 2, 3, 4, 5}, unit_stream(4000.0, Vec3::Zero()));
   const Obstacles none;
@@ -119,7 +113,7 @@ TEST(Inflow, OpenBoxFillsToTheStreamsDensityAndTemperature) {
 // The sampled moments of the filled open box are the stream's in every cell: density n,
 // velocity 0, temperature T, pressure n k T (argon-like units here: c_mp = 1).
 TEST(Sampling, OpenBoxCellsHaveTheStreamsMoments) {
-  const Mesh mesh = unit_box(2);
+  const Mesh mesh = box_mesh(cube(2));
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), 2.0 * boltzmann});
   const Inflow inflow(mesh, {0, 1, 2, 3, 4, 5}, unit_stream(8000.0, Vec3::Zero()));
   const Obstacles none;
@@ -151,7 +145,7 @@ TEST(Sampling, OpenBoxCellsHaveTheStreamsMoments) {
 // weight 4, mass 2 (n = 64): the pressure tensor is n m c c^T, the heat flux
 // n m <|c|^2 c> / 2 = 0 (symmetric), and with a third at rest the moments follow by hand.
 TEST(Sampling, StressAndHeatFluxFromTheSummedMoments) {
-  const Mesh mesh = unit_box(2);
+  const Mesh mesh = box_mesh(cube(2));
   Swarm swarm(0);
   const Vec3 u(3, 0, 1), c(1, 2, 0);
   swarm.add({Vec3::Constant(0.25), u + c, 0}, {});
@@ -190,7 +184,7 @@ TEST(Tallies, MomentEnergyAndImpulseOfHits) {
 }
 
 TEST(Inflow, RefusesBadStreamsAndEmptyPatches) {
-  const Mesh mesh = unit_box(2);
+  const Mesh mesh = box_mesh(cube(2));
   EXPECT_THROW(Inflow(mesh, {0}, unit_stream(0.0, Vec3::Zero())), std::invalid_argument);
   EXPECT_THROW(Inflow(mesh, {7}, unit_stream(1.0, Vec3::Zero())), std::invalid_argument);
 }

@@ -118,8 +118,7 @@ void expect_same(const MoveTally& a, const MoveTally& b) {
 // walls, moved with and without the fast path from the same start with the same random
 // numbers: every position to the last bit, cell, state and tally the same.
 TEST(FastPath, SwarmEndsWhereTheFullAlgorithmPutsIt) {
-  BoxSpec spec;
-  for (AxisSpacing& axis : spec.axes) axis.cells = 8;
+  BoxSpec spec = cube(8);
   const Mesh mesh = box_mesh(spec);
   const double hot = 1.0 / 1.380649e-23;  // sigma = sqrt(k T / m) = 1 for unit mass
   Boundaries walls = specular(mesh);

@@ -19,12 +19,6 @@ namespace {
 using csg::ball;
 using csg::Expression;
 
-Mesh unit_box(int cells) {
-  BoxSpec spec;
-  for (AxisSpacing& axis : spec.axes) axis.cells = cells;
-  return box_mesh(spec);
-}
-
 Boundaries specular_box() { return {std::vector<BoundaryCondition>(6), 1.0}; }
 
 Random& random_for_test() {
@@ -86,7 +80,7 @@ Expression cluster(int count, double radius, unsigned seed) {
 }
 
 TEST(Obstacles, SpecularWallsKeepParticlesOutAndEnergyConstant) {
-  const Mesh mesh = unit_box(8);
+  const Mesh mesh = box_mesh(cube(8));
   const Domain domain(mesh, specular_box());
   // Three intersecting balls, a box and a cylinder piece: curved, flat and edged surfaces.
   const Expression three = ball({0.3, 0.3, 0.3}, 0.15) | ball({0.45, 0.3, 0.3}, 0.15) | ball({0.37, 0.42, 0.3}, 0.15);
@@ -158,7 +152,7 @@ TEST(Obstacles, PeriodicFoamKeepsParticlesOut) {
 // A wall whose plane is the mesh's cell faces, particles started exactly on it, and a slab
 // thinner than round-off at a cell's size: none gets through.
 TEST(Obstacles, WallsOnFacesAndThinnerThanRoundOffHold) {
-  const Mesh mesh = unit_box(8);
+  const Mesh mesh = box_mesh(cube(8));
   const Domain domain(mesh, specular_box());
   const Obstacles obstacles(mesh, {wall("right half", csg::half_space({0.5, 0.5, 0.5}, {-1.0, 0.0, 0.0})),
                                    wall("slab", csg::box({0.25, 0.5, 0.5}, {5e-15, 1.0, 1.0}))});
@@ -190,7 +184,7 @@ TEST(Obstacles, WallsOnFacesAndThinnerThanRoundOffHold) {
 // A column of particles flying head-on into the flat face of a box: each hits once and
 // gives it twice its momentum.
 TEST(Obstacles, ImpulseOnAWallIsTwiceTheMomentumOfHeadOnHits) {
-  const Mesh mesh = unit_box(6);
+  const Mesh mesh = box_mesh(cube(6));
   const Domain domain(mesh, specular_box());
   const Obstacles obstacles(mesh, {wall("block", csg::box({0.6, 0.5, 0.5}, {0.1, 0.3, 0.3}))});
   Random random(3);
@@ -213,7 +207,7 @@ TEST(Obstacles, ImpulseOnAWallIsTwiceTheMomentumOfHeadOnHits) {
 }
 
 TEST(Obstacles, OpenWallAbsorbsAndPermeableZoneCounts) {
-  const Mesh mesh = unit_box(8);
+  const Mesh mesh = box_mesh(cube(8));
   const Domain domain(mesh, specular_box());
   Obstacle sink = wall("sink", ball({0.25, 0.25, 0.25}, 0.12));
   sink.wall.kind = BoundaryKind::open;
@@ -250,7 +244,7 @@ TEST(Obstacles, OpenWallAbsorbsAndPermeableZoneCounts) {
 }
 
 TEST(Obstacles, SortByCellKeepsStatesWithTheirParticles) {
-  const Mesh mesh = unit_box(8);
+  const Mesh mesh = box_mesh(cube(8));
   const Domain domain(mesh, specular_box());
   const Obstacles obstacles(mesh, {wall("a", cluster(30, 0.06, 16)), wall("b", ball({0.2, 0.8, 0.5}, 0.15))});
   Flights run(domain, obstacles, 3000, 17);
@@ -272,7 +266,7 @@ TEST(Obstacles, SortByCellKeepsStatesWithTheirParticles) {
 // centre: they push the particles they overrun out in front of them, nobody ends inside,
 // and states stay the direct ones.
 TEST(Obstacles, MovingBallSweepsParticlesOut) {
-  const Mesh mesh = unit_box(10);
+  const Mesh mesh = box_mesh(cube(10));
   const Domain domain(mesh, specular_box());
   Obstacles obstacles(mesh, {wall("ball", ball({0.3, 0.5, 0.5}, 0.15)), wall("post", csg::capped_cylinder({0.5, 0.5, 0.2}, {0.5, 0.5, 0.8}, 0.05))});
   Flights run(domain, obstacles, 4000, 18);
@@ -311,7 +305,7 @@ TEST(Obstacles, MovingBallSweepsParticlesOut) {
 
 // A particle at rest overrun by a flat specular wall moving at u leaves at 2u.
 TEST(Obstacles, MovingWallReflectsInItsOwnFrame) {
-  const Mesh mesh = unit_box(8);
+  const Mesh mesh = box_mesh(cube(8));
   const Domain domain(mesh, specular_box());
   Obstacles obstacles(mesh, {wall("piston", csg::box({0.2, 0.5, 0.5}, {0.1, 0.4, 0.4}))});
   Swarm swarm(1);
@@ -339,7 +333,7 @@ TEST(Obstacles, MovingWallReflectsInItsOwnFrame) {
 // cell, lands on the particle in one move of less than a cell: the particle must not be
 // left inside (no entry point is known: it is removed and counted).
 TEST(Obstacles, MovingWallFromBeyondTheRingLeavesNobodyInside) {
-  const Mesh mesh = unit_box(10);
+  const Mesh mesh = box_mesh(cube(10));
   const Domain domain(mesh, specular_box());
   Obstacles obstacles(mesh, {wall("ball", ball({0.525, 0.525, 0.525}, 0.02))});
   Swarm swarm(1);
@@ -364,7 +358,7 @@ TEST(Obstacles, MovingWallFromBeyondTheRingLeavesNobodyInside) {
 // A particle whose state wrongly says it is inside a wall is let out at the surface and
 // counted, not reflected back in for ever.
 TEST(Obstacles, AWrongInsideStateIsReleasedAtTheSurface) {
-  const Mesh mesh = unit_box(4);
+  const Mesh mesh = box_mesh(cube(4));
   const Domain domain(mesh, specular_box());
   const Obstacles obstacles(mesh, {wall("ball", ball({0.5, 0.5, 0.5}, 0.2))});
   Particle p{{0.2, 0.5, 0.5}, {-1.0, 0.0, 0.0}, 0};
@@ -381,8 +375,7 @@ TEST(Obstacles, AWrongInsideStateIsReleasedAtTheSurface) {
 
 // A wall across a periodic link without its image on the other side is refused.
 TEST(Obstacles, AWallMustBePeriodicAcrossPeriodicLinks) {
-  BoxSpec spec;
-  for (AxisSpacing& axis : spec.axes) axis.cells = 4;
+  BoxSpec spec = cube(4);
   spec.periodic = {true, false, false};
   const Mesh mesh = box_mesh(spec);
   try {
@@ -397,13 +390,13 @@ TEST(Obstacles, AWallMustBePeriodicAcrossPeriodicLinks) {
 // The correctness check of Table 1 (REFERENCES.md): the events executed do not depend on
 // which bounding grid the objects are registered with, the events generated do.
 TEST(Obstacles, ExecutedEventsDoNotDependOnTheBoundingGrid) {
-  const Mesh mesh = unit_box(16);
+  const Mesh mesh = box_mesh(cube(16));
   const Domain domain(mesh, specular_box());
   // Two objects of 40 balls each: together more than a state holds in one bounding cell.
   const Expression a = cluster(40, 0.05, 7), b = cluster(40, 0.05, 8);
   std::vector<long long> executed, generated;
   for (const int n : {1, 2, 4, 8, 16}) {
-    const Mesh grid = unit_box(n);
+    const Mesh grid = box_mesh(cube(n));
     std::vector<Index> bounding(mesh.cell_count());
     const PointLocator locator(grid);
     for (Index c = 0; c < mesh.cell_count(); ++c) bounding[c] = locator.locate(mesh.centroid[c]);

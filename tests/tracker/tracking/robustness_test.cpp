@@ -61,13 +61,6 @@ void expect_none_lost(const std::string& label, const Mesh& mesh, bool walled) {
   }
 }
 
-BoxSpec cube(int cells, bool tetrahedra) {
-  BoxSpec spec;
-  for (auto& axis : spec.axes) axis.cells = cells;
-  spec.tetrahedra = tetrahedra;
-  return spec;
-}
-
 TEST(NoParticleLost, PerturbedHexahedra) {
   expect_none_lost("perturbed hexahedra", perturbed(box_mesh(cube(6, false)), {.fraction = 0.2, .seed = 3}), true);
 }

@@ -97,8 +97,7 @@ TEST(Walls, MovingWallsReEmitAboutTheirTangentialVelocity) {
 TEST(Walls, PatchTalliesBalanceTheParticlesMomentumAndEnergy) {
   // A closed box whose patches re-emit at two temperatures, slide, mirror and absorb: what
   // the patches took is what the particles lost, to round-off (moved as Particles in double).
-  BoxSpec spec;
-  for (auto& axis : spec.axes) axis.cells = 3;
+  BoxSpec spec = cube(3);
   const Mesh mesh = box_mesh(spec);
   Boundaries boundaries{std::vector<BoundaryCondition>(6), argon};
   boundaries.patches[0] = {.kind = BoundaryKind::diffuse, .temperature = 200.0, .velocity = Vec3(0, 50, 0)};
@@ -140,8 +139,7 @@ TEST(Walls, PatchTalliesBalanceTheParticlesMomentumAndEnergy) {
 }
 
 TEST(Walls, OpenPatchRemovesAndOthersReflect) {
-  BoxSpec spec;
-  for (auto& axis : spec.axes) axis.cells = 3;
+  BoxSpec spec = cube(3);
   const Mesh mesh = box_mesh(spec);
   Boundaries boundaries{std::vector<BoundaryCondition>(6), argon};
   boundaries.patches[1] = {.kind = BoundaryKind::open};  // x_max
