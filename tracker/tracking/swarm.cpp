@@ -30,8 +30,11 @@ void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt
     const MoveResult result = move(domain, obstacles, p, states(i), dt, random, tallies, patches);
     moves.add(result);
     if (result.removed) continue;
-    set(i, p);
-    keep(i, kept++);
+    // Straight into its kept slot: after a removal the record would otherwise be written twice.
+    if (kept != i)
+      std::copy_n(states_.begin() + static_cast<long>(i * objects_), objects_,
+                  states_.begin() + static_cast<long>(kept * objects_));
+    set(kept++, p);
   }
   particles_.resize(kept);
   states_.resize(kept * objects_);

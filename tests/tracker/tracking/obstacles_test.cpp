@@ -139,7 +139,6 @@ TEST(Obstacles, PeriodicFoamKeepsParticlesOut) {
     std::printf("%s\n", summary(run.moves).c_str());
     EXPECT_EQ(run.moves.lost, 0);
     EXPECT_EQ(run.released(), 0);
-  EXPECT_EQ(run.released(), 0);
     EXPECT_EQ(run.swarm.size(), 3000u);
     EXPECT_GT(run.tallies[0].hits, 1000);
     for (std::size_t i = 0; i < run.swarm.size(); ++i) {
@@ -407,7 +406,6 @@ TEST(Obstacles, ExecutedEventsDoNotDependOnTheBoundingGrid) {
     std::printf("bounding grid %2d^3: %s\n", n, summary(run.moves).c_str());
     EXPECT_EQ(run.moves.lost, 0);
     EXPECT_EQ(run.released(), 0);
-  EXPECT_EQ(run.released(), 0);
     executed.push_back(run.moves.object_events);
     generated.push_back(run.moves.primitive_tests);
   }
