@@ -53,9 +53,7 @@ double SphereBox::stream_count() {
 }
 
 double SphereBox::free_molecular_drag() const {
-  const double s = SphereDeck::kSpeed / std::sqrt(2.0 * boltzmann * SphereDeck::kTemperature / mass);
-  return dsmc::sphere_drag_coefficient(s, 1.0) * 0.5 * SphereDeck::kDensity * mass * SphereDeck::kSpeed * SphereDeck::kSpeed *
-         std::numbers::pi * SphereDeck::kRadius * SphereDeck::kRadius;
+  return dsmc::sphere_drag(SphereDeck::kDensity, mass, SphereDeck::kSpeed, SphereDeck::kTemperature, SphereDeck::kRadius);
 }
 
 SphereResult run_sphere(const SphereBox& box, const SphereDeck& deck) {

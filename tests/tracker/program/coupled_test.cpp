@@ -55,11 +55,7 @@ participants:
 )";
 }
 
-double bird_drag() {
-  const double mass = 6.63e-26, n = 7.03e18, u = 2500, boltzmann = 1.380649e-23;
-  const double s = u / std::sqrt(2 * boltzmann * 300 / mass);
-  return dsmc::sphere_drag_coefficient(s, 1.0) * 0.5 * n * mass * u * u * std::numbers::pi;
-}
+double bird_drag() { return dsmc::sphere_drag(7.03e18, 6.63e-26, 2500, 300, 1); }
 
 TEST(TrackerCoupled, FixedSphereAloneInAStreamGetsBirdsDragInTheRunFile) {
   const auto dir = testing::scratch_dir("tracker_alone");
@@ -138,14 +134,8 @@ TEST(TrackerCoupled, BallReleasedInAFreeMolecularStreamFollowsBirdsDrag) {
   const testing::Series velocity = testing::read_series(dir / "scene.h5", "/bodies/ball/velocity");
   ASSERT_EQ(force.rows, 21u);
 
-  const double mass = 6.63e-26, n = 7.03e18, stream = 2500, radius = 0.5, boltzmann = 1.380649e-23;
-  const double ball = 3.8e-5 * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
-  const double most_probable = std::sqrt(2 * boltzmann * 300 / mass);
-  const auto drag = [&](double v) {
-    const double u = stream - v;
-    return dsmc::sphere_drag_coefficient(u / most_probable, 1.0) * 0.5 * n * mass * u * u * std::numbers::pi * radius *
-           radius;
-  };
+  const double radius = 0.5, ball = 3.8e-5 * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  const auto drag = [&](double v) { return dsmc::sphere_drag(7.03e18, 6.63e-26, 2500 - v, 300, radius); };
   double measured = 0, expected = 0;
   for (std::size_t k = 1; k < force.rows; ++k) {
     measured += force.at(k, 0);

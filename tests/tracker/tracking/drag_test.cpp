@@ -54,7 +54,7 @@ TEST(FreeMolecularDrag, SphereMatchesTheClosedFormAtSeveralSpeedRatios) {
     const Exchange e = ball_in_stream(Vec3(s, 0, 0), 1.0, 400, 7);
     // Force per unit particle mass and weight: the x impulse over the measured time.
     const double drag = e.tally.impulse.x() / e.time, side = e.tally.impulse.tail<2>().norm() / e.time;
-    const double expected = dsmc::sphere_drag_coefficient(s, 1.0) * 0.5 * kDensity * s * s * std::numbers::pi;
+    const double expected = dsmc::sphere_drag(kDensity, kMass, s, 1.0, 1.0) / kMass;  // per unit particle mass
     std::printf("free-molecular sphere, s = %.1f: drag %.1f, Bird %.1f (%+.2f %%), side force %.1f, %lld hits, lost %lld\n",
                 s, drag, expected, 100.0 * (drag / expected - 1.0), side, e.tally.hits, e.lost);
     EXPECT_NEAR(drag / expected, 1.0, 0.03) << "s = " << s;
