@@ -99,13 +99,6 @@ std::vector<Tally> summed(std::vector<Tally> tallies, const Ranks& ranks) {
   return tallies;
 }
 
-// MoveTally's counters in declaration order.
-auto move_counters(MoveTally& m) {
-  return std::array{&m.moves,    &m.faces_crossed, &m.zero_time_events, &m.boundary_hits,
-                    &m.relocations, &m.cycles_broken, &m.stalled,        &m.removed,
-                    &m.lost,     &m.object_events, &m.primitive_tests};
-}
-
 // Rank 0 draws what a one-rank run draws; another rank has streams of its own after the
 // seeding, none of them its windows' (the seed sequences differ in length).
 Random first_random(std::uint64_t seed, int rank) {
@@ -244,9 +237,9 @@ std::int64_t Simulation::collisions() const { return decomposition_.ranks().sum(
 MoveTally Simulation::moves() const {
   MoveTally moves = moves_;
   std::vector<long long> counts;
-  for (long long* n : move_counters(moves)) counts.push_back(*n);
+  for (const MoveCounter& c : kMoveCounters) counts.push_back(moves.*c.count);
   decomposition_.ranks().sum(counts);
-  for (std::size_t k = 0; long long* n : move_counters(moves)) *n = counts[k++];
+  for (std::size_t k = 0; const MoveCounter& c : kMoveCounters) moves.*c.count = counts[k++];
   return moves;
 }
 
@@ -300,8 +293,7 @@ std::vector<double> Simulation::state() const {
     for (double x : setup_.obstacles.pose(o).matrix().topRows<3>().reshaped()) out.put(x);
   put_tallies(out, tallies_);
   put_tallies(out, patch_tallies_);
-  MoveTally moves = moves_;
-  for (long long* n : move_counters(moves)) out.put(static_cast<double>(*n));
+  for (const MoveCounter& c : kMoveCounters) out.put(static_cast<double>(moves_.*c.count));
   if (collider_)
     for (const dsmc::CellCollisionState& c : collider_->cells()) {
       out.put(c.sigma_g_max);
@@ -345,7 +337,7 @@ void Simulation::restore(std::span<const double> state) {
   std::vector<SurfaceTally> patch_tallies(patch_tallies_.size());
   get_tallies(in, patch_tallies);
   MoveTally moves;
-  for (long long* n : move_counters(moves)) *n = in.get_count<long long>();
+  for (const MoveCounter& c : kMoveCounters) moves.*c.count = in.get_count<long long>();
   std::vector<dsmc::CellCollisionState> cells;
   if (collider_)
     for (std::size_t c = 0; c < collider_->cells().size(); ++c) cells.push_back({in.get(), in.get()});

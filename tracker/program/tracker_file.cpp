@@ -19,15 +19,16 @@ namespace {
 using output::Handle;
 using output::Series;
 
-const std::vector<std::string> kMoveColumns{"moves",     "faces_crossed", "zero_time_events", "boundary_hits",
-                                            "relocations", "cycles_broken", "stalled",          "removed",
-                                            "lost",       "object_events", "primitive_tests"};
+std::vector<std::string> move_columns() {
+  std::vector<std::string> names;
+  for (const MoveCounter& c : kMoveCounters) names.emplace_back(c.name);
+  return names;
+}
 
 std::vector<std::uint64_t> columns_of(const MoveTally& t) {
-  const long long v[] = {t.moves,         t.faces_crossed, t.zero_time_events, t.boundary_hits,
-                         t.relocations,   t.cycles_broken, t.stalled,          t.removed,
-                         t.lost,          t.object_events, t.primitive_tests};
-  return {std::begin(v), std::end(v)};
+  std::vector<std::uint64_t> values;
+  for (const MoveCounter& c : kMoveCounters) values.push_back(static_cast<std::uint64_t>(t.*c.count));
+  return values;
 }
 
 // The area of each boundary patch: the sum of its faces'.
@@ -84,10 +85,10 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
     m.rows.push_back(Series::create(series.get(), "step", 1, H5T_NATIVE_UINT64));
     m.rows.push_back(Series::create(series.get(), "time", 1, H5T_NATIVE_DOUBLE));
     m.rows.push_back(Series::create(series.get(), "particles", 1, H5T_NATIVE_UINT64));
-    m.rows.push_back(Series::create(series.get(), "moves", kMoveColumns.size(), H5T_NATIVE_UINT64));
+    m.rows.push_back(Series::create(series.get(), "moves", kMoveCounters.size(), H5T_NATIVE_UINT64));
     {
       Handle moves(H5Dopen2(series.get(), "moves", H5P_DEFAULT), H5Dclose, "open /tracker/moves");
-      output::write_attribute(moves.get(), "columns", kMoveColumns);
+      output::write_attribute(moves.get(), "columns", move_columns());
     }
     Handle objects = output::create_group(series.get(), "objects");
     output::write_attribute(objects.get(), "names", object_names);

@@ -5,6 +5,7 @@
 #include "tracker/tracking/domain.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
+#include <array>
 #include <string>
 #include <string_view>
 
@@ -38,5 +39,21 @@ struct MoveTally {
   void add(const MoveResult& result);
 };
 std::string summary(const MoveTally& tally);
+// Its counters by name, in one order: run-file columns, state arrays, sums over ranks.
+struct MoveCounter {
+  const char* name;
+  long long MoveTally::*count;
+};
+inline constexpr std::array<MoveCounter, 11> kMoveCounters{{{"moves", &MoveTally::moves},
+                                                             {"faces_crossed", &MoveTally::faces_crossed},
+                                                             {"zero_time_events", &MoveTally::zero_time_events},
+                                                             {"boundary_hits", &MoveTally::boundary_hits},
+                                                             {"relocations", &MoveTally::relocations},
+                                                             {"cycles_broken", &MoveTally::cycles_broken},
+                                                             {"stalled", &MoveTally::stalled},
+                                                             {"removed", &MoveTally::removed},
+                                                             {"lost", &MoveTally::lost},
+                                                             {"object_events", &MoveTally::object_events},
+                                                             {"primitive_tests", &MoveTally::primitive_tests}}};
 
 }  // namespace cosim::tracker

@@ -48,20 +48,18 @@ struct RunFileView {
   double column(const char* name) const;
 };
 
-const std::vector<std::string> kColumns{"moves",       "faces_crossed", "zero_time_events", "boundary_hits",
-                                        "relocations", "cycles_broken", "stalled",          "removed",
-                                        "lost",        "object_events", "primitive_tests"};
 double RunFileView::column(const char* name) const {
-  return moves[static_cast<std::size_t>(std::find(kColumns.begin(), kColumns.end(), name) - kColumns.begin())];
+  const auto at = std::find_if(kMoveCounters.begin(), kMoveCounters.end(),
+                               [&](const MoveCounter& c) { return std::string_view(c.name) == name; });
+  return moves[static_cast<std::size_t>(at - kMoveCounters.begin())];
 }
-
 RunFileView read_run(const std::filesystem::path& path, bool objects) {
   output::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + path.string());
   const auto series = [&](const std::string& name) { return output::Series::open(file.get(), name).read_all(); };
   RunFileView run;
   run.particles = series("/tracker/particles");
   const std::vector<double> moves = series("/tracker/moves");
-  run.moves.assign(moves.end() - static_cast<std::ptrdiff_t>(kColumns.size()), moves.end());
+  run.moves.assign(moves.end() - static_cast<std::ptrdiff_t>(kMoveCounters.size()), moves.end());
   output::Handle fields = output::open_group(file.get(), "/fields/tracker");
   for (const std::string& step : output::link_names(fields.get())) {
     if (step == "grid") continue;
