@@ -56,14 +56,17 @@ std::string field_source(const scene::Scene& scene, const scene::Plan& plan, con
 }
 
 // The fields named in `wanted`, in that order.
-std::vector<output::CellField> pick(std::vector<output::CellField> fields, const std::vector<std::string>& wanted,
-                                    const std::string& source, const std::string& consumer, const std::string& when) {
-  std::vector<output::CellField> out;
+// The frame with only the `wanted` fields (all if none are named), copied out of the source's.
+output::FieldFrame pick(const output::FieldFrame& frame, const std::vector<std::string>& wanted,
+                        const std::string& source, const std::string& consumer, const std::string& when) {
+  if (wanted.empty()) return frame;
+  output::FieldFrame out{frame.grid, {}};
   for (const auto& name : wanted) {
-    const auto f = std::find_if(fields.begin(), fields.end(), [&](const auto& field) { return field.name == name; });
-    if (f == fields.end())
+    const auto f = std::find_if(frame.fields.begin(), frame.fields.end(),
+                                [&](const auto& field) { return field.name == name; });
+    if (f == frame.fields.end())
       throw ParticipantFailure(source, "sends no field '" + name + "', which '" + consumer + "' needs", when);
-    out.push_back(std::move(*f));
+    out.fields.push_back(*f);
   }
   return out;
 }
@@ -275,23 +278,24 @@ void Session::write_fields(Peers& peers, std::uint64_t windows_done) {
   if (providers.empty()) return;
   const double time = window_start(windows_done);
   const auto when = fmt::format("while writing fields at t = {} s", time);
-  for (const auto& [name, frame] : request_fields(peers, providers, windows_done, when))
+  written_fields_ = {windows_done, request_fields(peers, providers, windows_done, when)};
+  for (const auto& [name, frame] : written_fields_.frames)
     if (!frame.fields.empty()) file_->write_fields(name, windows_done, time, frame);
 }
 
 FieldArrays Session::forwarded_fields(Peers& peers, std::uint64_t window) {
   FieldArrays out;
   if (field_source_.empty()) return out;
+  // A source that has just sent its fields for the run file at this instant is not asked again.
+  const bool written = written_fields_.window == window;
   std::set<std::string> sources;
-  for (const auto& [consumer, source] : field_source_) sources.insert(source);
+  for (const auto& [consumer, source] : field_source_)
+    if (!written || !written_fields_.frames.contains(source)) sources.insert(source);
   const auto when = fmt::format("while taking the fields to forward at t = {} s", window_start(window));
-  const auto frames = request_fields(peers, sources, window, when);
-  for (const auto& [consumer, source] : field_source_) {
-    output::FieldFrame frame = frames.at(source);  // a copy: a source may serve several
-    const auto& wanted = wanted_fields_[consumer];
-    if (!wanted.empty()) frame.fields = pick(std::move(frame.fields), wanted, source, consumer, when);
-    out.emplace(consumer, protocol::field_arrays(std::move(frame)));
-  }
+  auto frames = request_fields(peers, sources, window, when);
+  if (written) frames.insert(written_fields_.frames.begin(), written_fields_.frames.end());
+  for (const auto& [consumer, source] : field_source_)
+    out.emplace(consumer, protocol::field_arrays(pick(frames.at(source), wanted_fields_[consumer], source, consumer, when)));
   return out;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -58,6 +59,11 @@ class Session {
   std::vector<std::vector<std::string>> commands_;  // per plan_.start
   std::map<std::string, std::string> field_source_;  // participant that needs fields -> who sends them
   std::map<std::string, std::vector<std::string>> wanted_fields_;  // by name, as its Ready said; none: all
+  // The frames write_fields took last, kept for forwarding at the same instant.
+  struct WrittenFields {
+    std::uint64_t window = std::numeric_limits<std::uint64_t>::max();
+    std::map<std::string, output::FieldFrame> frames;
+  } written_fields_;
   double forwarded_bytes_ = 0;  // of fields, over the windows of this session
   std::optional<output::RunFile> file_;
   std::optional<output::Checkpoint> resume_;
