@@ -19,7 +19,8 @@ dynamics::Wrench wrench_at(const std::vector<double>& forces, std::size_t body) 
 }
 
 // Empty forces: nobody sends any in this run, so the bodies feel only their own effects.
-std::vector<dynamics::WindowWrench> wrenches(const participant::Inputs& in, std::size_t bodies) {
+// The world's bodies after the scene's (the walls) get none.
+std::vector<dynamics::WindowWrench> wrenches(const participant::Inputs& in, std::size_t bodies, std::size_t world_size) {
   if (in.forces_start.empty()) return {};
   const auto& end = in.forces_end.empty() ? in.forces_start : in.forces_end;
   if (in.forces_start.size() != kForceWidth * bodies || end.size() != kForceWidth * bodies)
@@ -27,6 +28,7 @@ std::vector<dynamics::WindowWrench> wrenches(const participant::Inputs& in, std:
                              " bodies, the scene has " + std::to_string(bodies));
   std::vector<dynamics::WindowWrench> out;
   for (std::size_t b = 0; b < bodies; ++b) out.push_back({wrench_at(in.forces_start, b), wrench_at(end, b)});
+  out.resize(world_size);
   return out;
 }
 
@@ -60,7 +62,7 @@ participant::Outputs RigidSolver::initialise(const scene::Scene& scene, const st
 }
 
 participant::Outputs RigidSolver::advance(const participant::Window& w, const participant::Inputs& in) {
-  const auto external = wrenches(in, world_->size());
+  const auto external = wrenches(in, scene_.bodies.size(), world_->size());
   world_->set_time(w.t0);
   const auto report = world_->advance(w.t1 - w.t0, external);
   return {poses(), {}, static_cast<double>(report.substeps)};
@@ -91,8 +93,9 @@ void RigidSolver::restore(const std::vector<double>& state) {
 }
 
 std::vector<double> RigidSolver::poses() const {
-  std::vector<double> out(kPoseWidth * world_->size());
-  for (std::size_t b = 0; b < world_->size(); ++b) write(world_->states()[b], out.data() + kPoseWidth * b);
+  const std::size_t bodies = scene_.bodies.size();
+  std::vector<double> out(kPoseWidth * bodies);
+  for (std::size_t b = 0; b < bodies; ++b) write(world_->states()[b], out.data() + kPoseWidth * b);
   return out;
 }
 

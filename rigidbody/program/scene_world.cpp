@@ -46,6 +46,27 @@ std::vector<std::size_t> convex_hulls(const scene::Scene& scene, const scene::Re
   return bodies;
 }
 
+// Face f of the domain (x_min, x_max, y_min, ...) as a half-space whose normal points
+// into the domain, with the bodies' default material.
+std::vector<world::BodyDesc> walls(const scene::Scene& scene, const scene::Reader& options, bool friction) {
+  constexpr std::array face_names{"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+  if (!options.has("walls")) return {};
+  std::vector<world::BodyDesc> out;
+  for (std::size_t f : options.choices("walls", face_names)) {
+    const int axis = static_cast<int>(f / 2);
+    const bool upper = f % 2 == 1;
+    Vector3d normal = Vector3d::Zero();
+    normal[axis] = upper ? -1.0 : 1.0;
+    world::BodyDesc d{.shape = geometry::HalfSpace(normal), .name = face_names[f]};
+    d.state.position = scene::to_eigen(scene.domain.min);
+    d.state.position[axis] = upper ? scene.domain.max[axis] : scene.domain.min[axis];
+    if (!friction) d.material.friction = 0.0;
+    d.fixed = true;
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
 }  // namespace
 
 ProgramOptions program_options(const scene::Scene& scene) {
@@ -78,6 +99,7 @@ ProgramOptions program_options(const scene::Scene& scene) {
   s.dem.law = laws[options.choice("dem_law", law_names, 0)];
   s.dem.normal_stiffness = options.number("normal_stiffness", s.dem.normal_stiffness, scene::Range::above(0));
   out.convex_hulls = convex_hulls(scene, options);
+  out.walls = walls(scene, options, scene.has_effect(scene::Effect::Friction));
   options.finish();
   return out;
 }
@@ -108,6 +130,7 @@ std::unique_ptr<world::World> make_world(const scene::Scene& scene) {
     const bool hull = std::find(options.convex_hulls.begin(), options.convex_hulls.end(), i) != options.convex_hulls.end();
     w->add(body_of(scene.bodies[i], friction, hull));
   }
+  for (const world::BodyDesc& wall : options.walls) w->add(wall);
   return w;
 }
 

@@ -15,6 +15,10 @@ struct ProgramOptions {
   // Mesh bodies (scene indices) that collide as their convex hull: exact GJK/EPA contacts
   // instead of distance-map samples, for meshes that are convex or nearly so.
   std::vector<std::size_t> convex_hulls;
+  // Faces of the scene's domain that are walls for contact (the container of a fluid, whose
+  // faces cosim-fluid holds as boundaries rather than bodies): fixed half-spaces appended
+  // after the scene's bodies, never exchanged with the coupler.
+  std::vector<world::BodyDesc> walls;
 };
 
 // Reads participants.rigidbody (dt and options) and the effects. Throws SceneError naming
@@ -26,7 +30,8 @@ world::Settings settings_of(const scene::Scene& scene);  // program_options(scen
 // mass, so their state position is the scene position plus the rotated com_shift.
 world::BodyDesc body_of(const scene::Body& body, bool friction, bool convex_hull = false);
 
-// On the heap: a World is neither copyable nor movable.
+// The scene's bodies in scene order, then the walls. On the heap: a World is neither
+// copyable nor movable.
 std::unique_ptr<world::World> make_world(const scene::Scene& scene);
 
 }  // namespace cosim::program

@@ -1,6 +1,7 @@
 // Free fall through the whole program path (scene -> adapter -> world).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -50,6 +51,32 @@ TEST(FreeFall, ForcesFromTheCouplerAct) {
   solver.advance({1, 1, 0.01, 0.02}, {});
   solver.restore(state);
   EXPECT_EQ(solver.state(), state);
+}
+
+TEST(Walls, TheDomainFacesHoldTheBodiesInAndAreNotExchanged) {
+  // A ball thrown from 0.5 m above the floor of a unit box towards x_max at 2 m/s: it does not
+  // leave through x_max and comes to rest on z_min at z = r.
+  const auto scene = scene::load_scene_from_string(
+      "time: {end: 2.0}\ncoupling: {window: 0.01, scheme: serial-explicit}\n"
+      "domain: {min: [0, 0, 0], max: [1, 1, 1]}\neffects: [gravity, contact]\n"
+      "bodies:\n  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2500}, position: [0.5, 0.5, 0.6], "
+      "velocity: [2, 0, 0]}\n"
+      "participants:\n  rigidbody: {dt: 1.0e-3, options: {walls: [x_max, z_min]}}\n");
+  RigidSolver solver;
+  const auto start = solver.initialise(scene, "rigidbody", {}, {});
+  EXPECT_EQ(start.poses.size(), protocol::kPoseWidth);  // the walls are not bodies of the scene
+  std::vector<double> poses;
+  double highest_x = 0;
+  for (std::uint64_t k = 0; k < 200; ++k) {
+    poses = solver.advance({k, 1, k * 0.01, (k + 1) * 0.01}, {}).poses;
+    highest_x = std::max(highest_x, poses[0]);
+  }
+  EXPECT_LE(highest_x, 0.9 + 1e-3);
+  EXPECT_NEAR(poses[2], 0.1, 1e-3);
+  // One wrench per scene body is accepted; the walls take none.
+  participant::Inputs in;
+  in.forces_start = in.forces_end = {0, 0, 0, 0, 0, 0};
+  EXPECT_NO_THROW(solver.advance({200, 1, 2.0, 2.01}, in));
 }
 
 }  // namespace
