@@ -123,7 +123,8 @@ StepReport NavierStokes::step(double dt) {
   return report_;
 }
 
-std::vector<StepReport> NavierStokes::advance_to(double t_end, const std::function<void(double)>& before_step) {
+std::vector<StepReport> NavierStokes::advance_to(double t_end, const std::function<void(double)>& before_step,
+                                                 const std::function<void(const StepReport&)>& after_step) {
   std::vector<StepReport> reports;
   const double eps = 1e-12 * std::max(1.0, std::abs(t_end));
   while (time_ < t_end - eps) {
@@ -137,6 +138,7 @@ std::vector<StepReport> NavierStokes::advance_to(double t_end, const std::functi
       dt = remaining / 2;
     if (before_step) before_step(time_ + dt);
     reports.push_back(step(dt));
+    if (after_step) after_step(reports.back());
   }
   time_ = std::max(time_, t_end);
   return reports;

@@ -60,8 +60,10 @@ class NavierStokes {
   StepReport step(double dt);  // one step of a given size
   // Steps to exactly t_end, shortening the last two steps rather than leaving a sliver.
   // before_step(t) runs before each step with the step's end time t: where moving bodies
-  // must be placed (FictitiousBoundary::move).
-  std::vector<StepReport> advance_to(double t_end, const std::function<void(double)>& before_step = {});
+  // must be placed (FictitiousBoundary::move); after_step(report) after it, where the
+  // step's result (a body's load) can be read.
+  std::vector<StepReport> advance_to(double t_end, const std::function<void(double)>& before_step = {},
+                                     const std::function<void(const StepReport&)>& after_step = {});
   // Everything a step carries to the next, this rank's part: time, previous dt, u, p and
   // the convection history. restore() into a solver on the same grid repeats the following
   // steps bit for bit (rollback of an implicitly coupled window).

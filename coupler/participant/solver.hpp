@@ -20,11 +20,13 @@ struct Window {
 };
 
 // The coupler's values at the window's start and end, bodies in scene order (poses
-// b x 13, forces b x 6, row-major). A solver evaluates them at an instant s in [t0, t1]
-// by linear interpolation (lerp(), below). Where the scheme has no newer value yet, start
-// and end are equal (the first participant of serial-explicit, everyone in
-// parallel-explicit): held constant, first order. Implicit schemes converge the end value:
-// second order.
+// b x 13, forces b x 6, row-major). Poses are instants: a solver evaluates them at s in
+// [t0, t1] by linear interpolation (lerp(), below). The forces of cosim-fluid and
+// cosim-tracker are the window's means (impulse over length), which cosim-rigidbody holds
+// constant over the window; the oscillator doubles send instants and interpolate them.
+// Where the scheme has no newer value yet, start and end are equal (the first participant
+// of serial-explicit, everyone in parallel-explicit): held constant, first order. Implicit
+// schemes converge the end value.
 // A participant that needs fields gets another's (the fluid's) as committed at t0, the
 // same in every iteration of the window: held constant over it, explicit, first order.
 struct Inputs {

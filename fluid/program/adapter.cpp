@@ -66,16 +66,25 @@ participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const st
   // The coupler's poses (the rigid-body program's centres of mass) win over the scene's.
   place(prescribed_ || poses.empty() ? program::poses_at(setup_.motions, 0) : poses);
   if (!state.empty()) restore(state);
-  return outputs(0);
+  return {prescribed_ ? poses_ : std::vector<double>{}, forces(), 0};
 }
 
 participant::Outputs FluidSolver::advance(const participant::Window& w, const participant::Inputs& in) {
   if (!in.poses_start.empty()) check_size(in.poses_start, setup_.bodies.size(), "poses");
-  const auto steps = flow_->flow.advance_to(w.t1, [&](double t) { place(poses_at(w, in, t)); });
-  for (const fluid::StepReport& r : steps)
-    if (!std::isfinite(r.max_divergence))
-      throw std::runtime_error("fluid diverged at t = " + std::to_string(r.time) + " (non-finite velocity)");
-  return outputs(static_cast<double>(steps.size()));
+  // The window's mean load, the impulse over the window's length: a face switching between
+  // fluid and solid gives the staircase FBM's load a one-step spike, which as the window-end
+  // value would act on the body for the whole window.
+  std::vector<double> mean(kForceWidth * setup_.bodies.size(), 0.0);
+  const double length = w.t1 - w.t0;
+  const auto steps = flow_->flow.advance_to(
+      w.t1, [&](double t) { place(poses_at(w, in, t)); },
+      [&](const fluid::StepReport& r) {
+        if (!std::isfinite(r.max_divergence))
+          throw std::runtime_error("fluid diverged at t = " + std::to_string(r.time) + " (non-finite velocity)");
+        const std::vector<double> f = forces();
+        for (std::size_t i = 0; i < f.size(); ++i) mean[i] += f[i] * r.dt / length;
+      });
+  return {prescribed_ ? poses_ : std::vector<double>{}, mean, static_cast<double>(steps.size())};
 }
 
 std::vector<double> FluidSolver::poses_at(const participant::Window& w, const participant::Inputs& in,
@@ -95,11 +104,11 @@ void FluidSolver::place(const std::vector<double>& poses) {
   }
 }
 
-participant::Outputs FluidSolver::outputs(double substeps) const {
-  std::vector<double> forces;
+std::vector<double> FluidSolver::forces() const {
+  std::vector<double> out;
   for (const fluid::HydrodynamicLoad& l : flow_->fbm.loads(flow_->flow))
-    forces.insert(forces.end(), {l.force.x(), l.force.y(), l.force.z(), l.torque.x(), l.torque.y(), l.torque.z()});
-  return {prescribed_ ? poses_ : std::vector<double>{}, forces, substeps};
+    out.insert(out.end(), {l.force.x(), l.force.y(), l.force.z(), l.torque.x(), l.torque.y(), l.torque.z()});
+  return out;
 }
 
 output::FieldFrame FluidSolver::fields() const { return cell_fields(flow_->flow, flow_->fbm); }

@@ -35,7 +35,7 @@ class FluidSolver final : public participant::Solver {
   struct Flow;
   std::vector<double> poses_at(const participant::Window& w, const participant::Inputs& in, double t) const;
   void place(const std::vector<double>& poses);
-  participant::Outputs outputs(double substeps) const;
+  std::vector<double> forces() const;  // 6 per body: the loads of the flow as it is
 
   bool prescribed_;
   FluidSetup setup_;

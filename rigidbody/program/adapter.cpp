@@ -18,16 +18,18 @@ dynamics::Wrench wrench_at(const std::vector<double>& forces, std::size_t body) 
   return {{f[0], f[1], f[2]}, {f[3], f[4], f[5]}};
 }
 
+// The forces the fluid and the tracker send are the window's means (impulse over length),
+// so each acts constant over its window: the newest one the scheme has, the end value.
 // Empty forces: nobody sends any in this run, so the bodies feel only their own effects.
 // The world's bodies after the scene's (the walls) get none.
 std::vector<dynamics::WindowWrench> wrenches(const participant::Inputs& in, std::size_t bodies, std::size_t world_size) {
-  if (in.forces_start.empty()) return {};
-  const auto& end = in.forces_end.empty() ? in.forces_start : in.forces_end;
-  if (in.forces_start.size() != kForceWidth * bodies || end.size() != kForceWidth * bodies)
-    throw std::runtime_error("forces for " + std::to_string(in.forces_start.size() / kForceWidth) +
-                             " bodies, the scene has " + std::to_string(bodies));
+  const auto& mean = in.forces_end.empty() ? in.forces_start : in.forces_end;
+  if (mean.empty()) return {};
+  if (mean.size() != kForceWidth * bodies)
+    throw std::runtime_error("forces for " + std::to_string(mean.size() / kForceWidth) + " bodies, the scene has " +
+                             std::to_string(bodies));
   std::vector<dynamics::WindowWrench> out;
-  for (std::size_t b = 0; b < bodies; ++b) out.push_back({wrench_at(in.forces_start, b), wrench_at(end, b)});
+  for (std::size_t b = 0; b < bodies; ++b) out.push_back({wrench_at(mean, b), wrench_at(mean, b)});
   out.resize(world_size);
   return out;
 }
