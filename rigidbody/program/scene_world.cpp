@@ -90,8 +90,10 @@ ProgramOptions program_options(const scene::Scene& scene) {
   s.body_forces.gravity = scene.has_effect(scene::Effect::Gravity);
   s.body_forces.g = scene::to_eigen(scene.gravity);
   s.body_forces.buoyancy = scene.has_effect(scene::Effect::Buoyancy);
-  // Hydrostatic buoyancy needs the fluid's density, which the scene has nowhere else.
-  if (s.body_forces.buoyancy) s.body_forces.fluid_density = options.number("fluid_density", scene::Range::above(0));
+  // Hydrostatic buoyancy needs the fluid's density, which the scene has nowhere else; without
+  // the effect the key may stay, so switching effects needs no other edit.
+  if (s.body_forces.buoyancy || options.has("fluid_density"))
+    s.body_forces.fluid_density = options.number("fluid_density", scene::Range::above(0));
   s.contact = scene.has_effect(scene::Effect::Contact);
 
   constexpr std::array law_names{"linear", "hertz"};

@@ -1,0 +1,83 @@
+// Simulate only what the scene calls for: one scene with a section for every program, run
+// for real by `cosim run` with different effects. Each effect adds its program and nothing
+// else, and fields cross the wire only to a consumer.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cosim_process.hpp"
+#include "h5_read.hpp"
+
+namespace cosim::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+// A ball in a 1 m box of rarefied argon or of a viscous liquid, whichever the effects call
+// for: two windows of 1 ms.
+std::string scene(const std::string& effects) {
+  return "time: {end: 0.002}\n"
+         "coupling: {window: 0.001, scheme: serial-explicit}\n"
+         "output: {fields_every: 0}\n"
+         "gravity: [0, 0, -9.81]\n"
+         "domain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
+         "effects: " + effects + "\n"
+         "bodies:\n"
+         "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2000}, position: [0.5, 0.5, 0.5]}\n"
+         "participants:\n"
+         "  rigidbody: {dt: 1.0e-4, options: {fluid_density: 1000, walls: [z_min]}}\n"
+         "  fluid:\n"
+         "    dt: 1.0e-3\n"
+         "    options: {density: 1000, viscosity: {model: newtonian, mu: 1.0}, grid: {cells: [8, 8, 8]}}\n"
+         "  tracker:\n"
+         "    dt: 1.0e-3\n"
+         "    options:\n"
+         "      mesh: {type: box, cells: [4, 4, 4]}\n"
+         "      boundaries: {default: {kind: specular}}\n"
+         "      obstacles: [{name: ball, body: ball, wall: {kind: diffuse, temperature: 300}}]\n"
+         "      particles: {per_cell: 2, temperature: 300, mass: 6.63e-26, weight: 1.0e12, seed: 1}\n";
+}
+
+Finished run(const std::string& name, const std::string& effects) {
+  const Finished f = run_scene_text(scratch_dir(name), scene(effects));
+  EXPECT_EQ(f.exit_code, 0) << f.output;
+  return f;
+}
+
+TEST(Effects, GravityAndContactStartOnlyTheRigidBodyProgram) {
+  const Finished f = run("effects_rigid", "[gravity, contact]");
+  EXPECT_THAT(f.output, HasSubstr("effects: gravity, contact"));
+  EXPECT_THAT(f.output, HasSubstr("participants: rigidbody (provides poses, needs nothing)\n"));
+  EXPECT_THAT(f.output, HasSubstr("started rigidbody"));
+  EXPECT_THAT(f.output, Not(HasSubstr("started fluid")));
+  EXPECT_THAT(f.output, Not(HasSubstr("started tracker")));
+}
+
+TEST(Effects, HydrodynamicsAddsTheFluidWhichSendsNoFieldsNobodyTakes) {
+  const auto dir = scratch_dir("effects_fluid");
+  const Finished f = run_scene_text(dir, scene("[gravity, contact, buoyancy, hydrodynamics]"));
+  ASSERT_EQ(f.exit_code, 0) << f.output;
+  EXPECT_THAT(f.output,
+              HasSubstr("participants: rigidbody (provides poses, needs forces), fluid (provides forces, needs poses)\n"));
+  EXPECT_THAT(f.output, HasSubstr("started fluid"));
+  EXPECT_THAT(f.output, Not(HasSubstr("started tracker")));
+  // Neither the run file (fields_every: 0) nor a participant takes the fluid's fields.
+  for (const char* who : {"fluid", "rigidbody"}) {
+    const Series bytes = read_series(dir / "scene.h5", std::string("/coupling/participants/") + who + "/field_bytes");
+    ASSERT_EQ(bytes.rows, 3u);
+    for (std::size_t k = 0; k < bytes.rows; ++k) EXPECT_EQ(bytes.at(k), 0.0) << who << ", window " << k;
+  }
+}
+
+TEST(Effects, RarefiedGasAddsTheTracker) {
+  const Finished f = run("effects_tracker", "[gravity, contact, rarefied_gas]");
+  EXPECT_THAT(f.output,
+              HasSubstr("participants: rigidbody (provides poses, needs forces), tracker (provides forces, needs poses)\n"));
+  EXPECT_THAT(f.output, HasSubstr("started tracker"));
+  EXPECT_THAT(f.output, Not(HasSubstr("started fluid")));
+}
+
+}  // namespace
+}  // namespace cosim::testing
