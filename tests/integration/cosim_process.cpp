@@ -29,6 +29,20 @@ fs::path scratch_dir(const std::string& test_name) {
   return dir;
 }
 
+pid_t child_pid(pid_t parent, const std::string& program) {
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    std::ifstream cmdline(entry.path() / "cmdline");
+    std::string command;
+    std::getline(cmdline, command, '\0');
+    std::ifstream stat(entry.path() / "stat");
+    std::string pid, name, state;
+    pid_t parent_of = 0;
+    stat >> pid >> name >> state >> parent_of;
+    if (parent_of == parent && command.ends_with(program)) return std::stoi(pid);
+  }
+  return 0;
+}
+
 void write_file(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
 std::string read_file(const fs::path& path) {

@@ -33,6 +33,9 @@ Finished run_scene_text(const std::filesystem::path& dir, const std::string& yam
                         const std::string& stem = "scene");
 std::vector<std::string> run_args(const std::filesystem::path& dir, const std::string& stem = "scene");
 
+// The process started by `parent` whose command ends with `program`, or 0.
+pid_t child_pid(pid_t parent, const std::string& program);
+
 // A fresh folder for one test's files.
 std::filesystem::path scratch_dir(const std::string& test_name);
 void write_file(const std::filesystem::path& path, const std::string& text);

@@ -83,17 +83,7 @@ TEST(Failures, ParticipantKilledFromOutsideIsNamedWithItsSignal) {
   CosimProcess cosim(run_args(dir));
   std::this_thread::sleep_for(std::chrono::milliseconds(800));
   // The mass, which the coupler is usually not waiting for when it dies.
-  pid_t mass = 0;
-  for (const auto& entry : fs::directory_iterator("/proc")) {
-    std::ifstream cmdline(entry.path() / "cmdline");
-    std::string command;
-    std::getline(cmdline, command, '\0');
-    std::ifstream stat(entry.path() / "stat");
-    std::string pid, name, state;
-    pid_t parent = 0;
-    stat >> pid >> name >> state >> parent;
-    if (parent == cosim.pid() && command.ends_with("cosim-test-oscillator-mass")) mass = std::stoi(pid);
-  }
+  const pid_t mass = child_pid(cosim.pid(), "cosim-test-oscillator-mass");
   ASSERT_GT(mass, 0);
   kill(mass, SIGKILL);
   const auto r = cosim.wait();
