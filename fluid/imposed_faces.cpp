@@ -10,7 +10,7 @@ bool inside(const Box& b, const Index& p) {
 }
 }  // namespace
 
-ImposedFaces::ImposedFaces(const Grid& grid) : grid_(grid), owned_cells_(grid.owned(grid.cell_dm())) {
+ImposedFaces::ImposedFaces(const Grid& grid) : grid_(grid) {
   for (int c = 0; c < 3; ++c) {
     const Box b = grid.ghosted(grid.velocity_dm(c));
     ghosted_[static_cast<std::size_t>(c)] = b;
@@ -55,27 +55,8 @@ void ImposedFaces::add(int c, const Index& p, double value) {
 
 void ImposedFaces::finish() {
   int changed = seen_ != previous_ ? 1 : 0;
-  // An enclosed cell has its lower face imposed along any axis that carries variation.
-  int axis = 0;
-  while (axis < 2 && grid_.axis(axis).degenerate()) ++axis;
-  int enclosed = 0;
-  for (const Index& p : seen_[static_cast<std::size_t>(axis)])
-    if (inside(owned_cells_, p) && encloses(p)) {
-      enclosed = 1;
-      break;
-    }
-  int flags[2] = {changed, enclosed};
-  MPI_Allreduce(MPI_IN_PLACE, flags, 2, MPI_INT, MPI_MAX, grid_.comm());
-  if (flags[0]) ++generation_;
-  any_enclosed_ = flags[1] != 0;
-}
-
-bool ImposedFaces::encloses(const Index& cell) const {
-  for (int d = 0; d < 3; ++d) {
-    if (grid_.axis(d).degenerate()) continue;
-    if (!contains(d, cell) || !contains(d, shifted(cell, d, 1))) return false;
-  }
-  return true;
+  MPI_Allreduce(MPI_IN_PLACE, &changed, 1, MPI_INT, MPI_MAX, grid_.comm());
+  if (changed) ++generation_;
 }
 
 }  // namespace cosim::fluid

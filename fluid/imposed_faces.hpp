@@ -30,11 +30,6 @@ class ImposedFaces {
   const std::vector<ImposedFace>& owned(int c) const { return owned_[static_cast<std::size_t>(c)]; }
   // p within the ghosted range of component c.
   bool contains(int c, const Index& p) const { return mask_[static_cast<std::size_t>(c)][offset(c, p)] != 0; }
-  // Every face of the cell (along the non-degenerate axes) is imposed: the cell lies inside
-  // a body, its pressure is not an unknown of the projection. cell within the ghosted range
-  // of the cell DM, less its upper ghost layer.
-  bool encloses(const Index& cell) const;
-  bool any_enclosed() const { return any_enclosed_; }  // on any rank
   // Advances, on all ranks at once, whenever the set of imposed faces changes anywhere.
   int generation() const { return generation_; }
 
@@ -43,11 +38,9 @@ class ImposedFaces {
 
   const Grid& grid_;
   std::array<Box, 3> ghosted_, owned_box_;
-  Box owned_cells_;
   std::array<std::vector<std::uint8_t>, 3> mask_;
   std::array<std::vector<Index>, 3> seen_, previous_;  // every face set in the mask
   std::array<std::vector<ImposedFace>, 3> owned_;
-  bool any_enclosed_ = false;
   int generation_ = 0;
 };
 

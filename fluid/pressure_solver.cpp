@@ -66,8 +66,8 @@ PetscErrorCode PressureSolver::compute_operator(KSP ksp, Mat, Mat P, void* self)
     PetscScalar vals[7];
     int n = 0;
     double diagonal = 0;
-    // A cell inside a body keeps phi = 0 (identity row, scaled like its neighbours).
-    const bool enclosed = imposed && imposed->encloses(m);
+    // A closed cell keeps phi = 0 (identity row, scaled like its neighbours).
+    const bool enclosed = s.closed(m);
     for_each_cell_face(grid, m, [&](const CellFace& f) {
       if (f.boundary) {
         if (s.bc_.at(f.axis, f.side).kind == BoundaryKind::outflow) diagonal += f.area / f.distance;
@@ -96,11 +96,23 @@ PetscErrorCode PressureSolver::compute_operator(KSP ksp, Mat, Mat P, void* self)
   PetscFunctionReturn(0);
 }
 
+// A cell no correction can flow into or out of: inside a body, or a pocket a body closes
+// against a wall (a sphere landing on the floor). Left in the system its row would be zero
+// and the solve diverge.
+bool PressureSolver::closed(const Index& m) const {
+  if (!imposed_) return false;
+  bool open = false;
+  for_each_cell_face(grid_, m, [&](const CellFace& f) {
+    open = open || (f.boundary ? bc_.at(f.axis, f.side).kind == BoundaryKind::outflow : !imposed_->contains(f.axis, f.face));
+  });
+  return !open;
+}
+
 // Without an outflow phi is fixed up to a constant over the cells that are unknowns.
 void PressureSolver::update_null_space() {
   if (bc_.has_outflow()) return;
   COSIM_PETSC(MatNullSpaceDestroy(&constants_));
-  if (!imposed_ || !imposed_->any_enclosed()) {
+  if (!imposed_) {
     COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_TRUE, 0, nullptr, &constants_));
     return;
   }
@@ -109,7 +121,7 @@ void PressureSolver::update_null_space() {
   COSIM_PETSC(DMCreateGlobalVector(dm, &ones));
   PetscScalar*** v = nullptr;
   COSIM_PETSC(DMDAVecGetArray(dm, ones, &v));
-  for_each_index(grid_.owned(dm), [&](const Index& m) { v[m[2]][m[1]][m[0]] = imposed_->encloses(m) ? 0 : 1; });
+  for_each_index(grid_.owned(dm), [&](const Index& m) { v[m[2]][m[1]][m[0]] = closed(m) ? 0 : 1; });
   COSIM_PETSC(DMDAVecRestoreArray(dm, ones, &v));
   COSIM_PETSC(VecNormalize(ones, nullptr));
   COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_FALSE, 1, &ones, &constants_));
@@ -129,8 +141,7 @@ int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedF
   PetscScalar*** r = nullptr;
   COSIM_PETSC(DMDAVecGetArray(dm, rhs_, &r));
   for_each_index(grid_.owned(dm), [&](const Index& m) {
-    const bool enclosed = imposed && imposed->encloses(m);
-    r[m[2]][m[1]][m[0]] = enclosed ? 0 : -grid_.cell_volume(m) * divergence(grid_, u_star, m) / dt;
+    r[m[2]][m[1]][m[0]] = closed(m) ? 0 : -grid_.cell_volume(m) * divergence(grid_, u_star, m) / dt;
   });
   COSIM_PETSC(DMDAVecRestoreArray(dm, rhs_, &r));
   // Closed or periodic domains: the discrete compatibility condition holds only up to

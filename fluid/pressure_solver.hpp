@@ -27,6 +27,7 @@ class PressureSolver {
  private:
   void create();
   void release();
+  bool closed(const Index& cell) const;  // with the current imposed faces
   void update_null_space();
   static PetscErrorCode compute_operator(KSP ksp, Mat A, Mat P, void* self);
 
