@@ -4,7 +4,8 @@
 // cell-size error (Alexander, Garcia & Alder 1998) and the time-step error (Hadjiconstantinou
 // 2000). Prints a table; --csv writes it (plot.py draws error against wall time). --quick:
 // three short runs (the reference, dx = lambda, dt = tau), for ctest; fails if a particle is
-// lost or a viscosity is off its prediction by more than 4 sigma + 5 %.
+// lost or a viscosity is off its prediction by more than 4 sigma + 5 %. --sweep ppc|cell|dt:
+// only that sweep of the full study (with --quick: its runs, with the short batches).
 #include "channel.hpp"
 
 #include <CLI/CLI.hpp>
@@ -86,9 +87,12 @@ void write_csv(const std::string& path, const std::vector<Run>& runs) {
 int main(int argc, char** argv) {
   CLI::App app{"DSMC viscosity error in Couette flow against particles per cell, cell size and time step"};
   bool quick = false;
-  std::string csv;
+  std::string csv, sweep;
   app.add_flag("--quick", quick, "three short runs (ctest)");
   app.add_option("--csv", csv, "write the table as CSV");
+  app.add_option("--sweep", sweep,
+                 "only this sweep of the full study (with --quick: its runs with the quick batches; scripts/study)")
+      ->check(CLI::IsMember({"ppc", "cell", "dt"}));
   CLI11_PARSE(app, argc, argv);
 
   struct Case {
@@ -96,12 +100,16 @@ int main(int argc, char** argv) {
     double ppc, cell, dt;
   };
   // Reference: 20 particles per cell, dx = lambda / 3, dt = tau / 4; each sweep varies one.
-  const std::vector<Case> cases =
-      quick ? std::vector<Case>{{"ref", 20, 1.0 / 3, 0.25}, {"cell", 20, 1.0, 0.25}, {"dt", 20, 1.0 / 3, 1.0}}
-            : std::vector<Case>{{"ppc", 5, 1.0 / 3, 0.25},   {"ppc", 10, 1.0 / 3, 0.25}, {"ppc", 20, 1.0 / 3, 0.25},
-                                {"ppc", 40, 1.0 / 3, 0.25},  {"cell", 20, 2.0 / 3, 0.25}, {"cell", 20, 1.0, 0.25},
-                                {"cell", 20, 1.5, 0.25},     {"cell", 20, 2.0, 0.25},     {"dt", 20, 1.0 / 3, 0.5},
-                                {"dt", 20, 1.0 / 3, 1.0},    {"dt", 20, 1.0 / 3, 1.5},    {"dt", 20, 1.0 / 3, 2.0}};
+  const std::vector<Case> all =
+      quick && sweep.empty()
+          ? std::vector<Case>{{"ref", 20, 1.0 / 3, 0.25}, {"cell", 20, 1.0, 0.25}, {"dt", 20, 1.0 / 3, 1.0}}
+          : std::vector<Case>{{"ppc", 5, 1.0 / 3, 0.25},   {"ppc", 10, 1.0 / 3, 0.25}, {"ppc", 20, 1.0 / 3, 0.25},
+                              {"ppc", 40, 1.0 / 3, 0.25},  {"cell", 20, 2.0 / 3, 0.25}, {"cell", 20, 1.0, 0.25},
+                              {"cell", 20, 1.5, 0.25},     {"cell", 20, 2.0, 0.25},     {"dt", 20, 1.0 / 3, 0.5},
+                              {"dt", 20, 1.0 / 3, 1.0},    {"dt", 20, 1.0 / 3, 1.5},    {"dt", 20, 1.0 / 3, 2.0}};
+  std::vector<Case> cases;
+  for (const Case& c : all)
+    if (sweep.empty() || sweep == c.sweep) cases.push_back(c);
   const double batch_times = quick ? 50.0 : 1000.0;  // mean collision times per batch
   std::printf("Couette flow, hard-sphere argon, Kn = %.2f, U = %.0f m/s, 20 batches of %.0f mean collision times; "
               "mu from the plates' shear over du/dy in the bulk, against Chapman-Enskog\n",

@@ -15,18 +15,22 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 LABEL = {"ppc": ("particles_per_cell", "N={:g}"), "cell": ("cell_over_lambda", "dx={:.2g}"),
-         "dt": ("dt_over_collision_time", "dt={:.2g}")}
+         "dt": ("dt_over_collision_time", "dt={:.2g}"), "ref": ("particles_per_cell", "N={:g}")}
 
 
-def main(csv_path, png_path):
-    runs = defaultdict(list)  # sweep -> [(wall, error %, sigma %, predicted %, label)]
+def read(csv_path):
+    """sweep -> [(wall, error %, sigma %, predicted %, label)]"""
+    runs = defaultdict(list)
     with open(csv_path) as f:
         for row in csv.DictReader(f):
             column, fmt = LABEL[row["sweep"]]
             runs[row["sweep"]].append((float(row["wall_seconds"]), 100 * float(row["error"]),
                                        100 * float(row["error_sigma"]), 100 * float(row["predicted"]),
                                        fmt.format(float(row[column]))))
-    fig, ax = plt.subplots(figsize=(7, 4.5))
+    return runs
+
+
+def draw(ax, runs):
     for sweep, points in sorted(runs.items()):
         points.sort()
         line = ax.errorbar([p[0] for p in points], [p[1] for p in points], yerr=[p[2] for p in points], fmt="o-",
@@ -41,6 +45,11 @@ def main(csv_path, png_path):
     ax.set_title("DSMC Couette flow, hard-sphere argon, Kn = 0.05")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(title="sweep")
+
+
+def main(csv_path, png_path):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    draw(ax, read(csv_path))
     fig.tight_layout()
     fig.savefig(png_path, dpi=110)
 

@@ -5,38 +5,26 @@ alpha mode (point-sampled, sub-sampled) through the grid levels, labelled with t
     /usr/bin/python3 bench/fluid_accuracy/plot.py fluid_accuracy.csv fluid_accuracy.png
 """
 import csv
+import os
 import sys
 from collections import defaultdict
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import error_plot  # noqa: E402  (bench/error_plot.py)
 
 
-def main(csv_path, png_path):
-    runs = defaultdict(lambda: defaultdict(list))  # case -> alpha -> [(wall, |error|, level)]
+def read(csv_path):
+    """case -> alpha -> [(wall, |error|, level)]"""
+    runs = defaultdict(lambda: defaultdict(list))
     with open(csv_path) as f:
         for row in csv.DictReader(f):
             runs[row["case"]][row["alpha"]].append(
                 (float(row["wall_seconds"]), abs(float(row["error"])), row["level"]))
-    cases = sorted(runs)
-    fig, axes = plt.subplots(1, len(cases), figsize=(6 * len(cases), 4.5), squeeze=False)
-    for ax, case in zip(axes[0], cases):
-        for alpha, points in sorted(runs[case].items()):
-            points.sort()
-            ax.plot([p[0] for p in points], [p[1] for p in points], "o-", label=alpha)
-            for wall, error, level in points:
-                ax.annotate(level, (wall, error), fontsize=7, xytext=(3, 3), textcoords="offset points")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("wall time [s]")
-        ax.set_title(case)
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(title="alpha")
-    axes[0][0].set_ylabel("|relative error|")
-    fig.tight_layout()
-    fig.savefig(png_path, dpi=110)
+    return runs
+
+
+def main(csv_path, png_path):
+    error_plot.figure(read(csv_path), png_path, ylabel="|relative error|", legend_title="alpha")
 
 
 if __name__ == "__main__":

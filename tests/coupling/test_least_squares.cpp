@@ -42,6 +42,7 @@ TEST(FilteredLeastSquares, MoreColumnsThanRowsKeepsAtMostTheRowCount) {
 
 // Handing IQN-ILS the same (x, H(x)) twice makes V hold a zero column, then two equal
 // ones. The filter has to drop them and leave the step the clean history would give.
+// Guards against: a repeated (x, H(x)) making IQN-ILS divide by a zero column (NaN).
 TEST(IqnIlsFilter, RepeatedResidualGivesNoNaN) {
   const Problem problem = linear(Eigen::VectorXd::LinSpaced(5, -3.0, -1.0), 5);
   const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(5);
@@ -60,6 +61,7 @@ TEST(IqnIlsFilter, RepeatedResidualGivesNoNaN) {
 }
 
 // A participant that answers twice per iteration must not cost IQN-ILS its convergence.
+// Guards against: duplicate evaluations costing IQN-ILS its convergence.
 TEST(IqnIlsFilter, EveryEvaluationSubmittedTwiceStillConverges) {
   const Eigen::Index n = 6;
   const Problem problem = linear(Eigen::VectorXd::LinSpaced(n, -3.0, -1.0), 6);

@@ -76,6 +76,7 @@ TEST(FluidRanks, CosimRunOnTwoRanksWritesWhatStandaloneWrites) {
 // A cylinder 1.2 times as dense as the fluid sinks (the rigid bodies add the buoyancy); serial-implicit with
 // Aitken repeats windows, so the fluid restores its state, gathered from and scattered to
 // both ranks. The path matches one rank's.
+// Guards against: a restore on two ranks losing part of the state gathered from the other rank.
 TEST(FluidRanks, ImplicitCouplingOnTwoRanksMatchesOneRank) {
   std::string scene = oscillating_cylinder_scene();
   const auto replace = [&](const std::string& from, const std::string& to) {

@@ -38,6 +38,7 @@ OscillatorScene scene_for_failures() {
 // windows past the checkpoint; in every scheme it must end bit-identical.
 class KillAndResume : public ::testing::TestWithParam<std::string> {};
 
+// Guards against: a participant crash losing the run, or the resume not ending bit-identical.
 TEST_P(KillAndResume, EndsTheRunAndResumeFinishesIdentically) {
   const auto dir = scratch_dir("kill_resume_" + GetParam());
   auto s = scene_for_failures();
@@ -74,6 +75,7 @@ INSTANTIATE_TEST_SUITE_P(Failures, KillAndResume,
                            return name;
                          });
 
+// Guards against: a participant killed from outside hanging the coupler or going unnamed.
 TEST(Failures, ParticipantKilledFromOutsideIsNamedWithItsSignal) {
   const auto dir = scratch_dir("external_kill");
   auto s = scene_for_failures();
@@ -102,6 +104,7 @@ TEST(Failures, ParticipantSendingTheWrongSizeIsNamed) {
   EXPECT_THAT(r.output, HasSubstr("has no checkpoint to resume from"));
 }
 
+// Guards against: a hung participant hanging the whole run.
 TEST(Failures, HungParticipantTimesOut) {
   const auto dir = scratch_dir("hang");
   auto s = scene_for_failures();
@@ -122,6 +125,7 @@ bool process_gone(pid_t pid) {
   return close != std::string::npos && content.size() > close + 2 && content[close + 2] == 'Z';
 }
 
+// Guards against: Ctrl-C leaving orphan participants or an unreadable run file.
 TEST(Failures, CtrlCStopsEverythingAndLeavesAReadableFile) {
   const auto dir = scratch_dir("ctrl_c");
   auto s = scene_for_failures();

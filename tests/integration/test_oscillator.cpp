@@ -112,6 +112,8 @@ double max_amplitude(const Series& x) {
   return a;
 }
 
+// Guards against: implicit coupling failing on the added-mass-like stiff case that explicit coupling cannot
+// run.
 TEST(Oscillator, StiffCaseDivergesExplicitlyAndConvergesImplicitly) {
   auto s = stiff();
   s.scheme = "serial-explicit";

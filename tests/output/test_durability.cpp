@@ -79,6 +79,7 @@ TEST_F(DurabilityTest, ReadableByH5pyAfterTheWriterIsGone) {
             0);
 }
 
+// Guards against: a SIGKILL of the coupler losing windows already committed to the run file.
 TEST_F(DurabilityTest, SigkillAfterAppendLosesNothingCommitted) {
   const auto path = file("run.h5");
   run_and_kill([&] {
@@ -97,6 +98,7 @@ TEST_F(DurabilityTest, SigkillAfterAppendLosesNothingCommitted) {
   EXPECT_EQ(h5py_check(path, "assert f['bodies/ball/force'].shape == (5, 3)\n"), 0);
 }
 
+// Guards against: a run file killed mid-run not resuming.
 TEST_F(DurabilityTest, ResumeAfterSigkill) {
   const auto path = file("run.h5");
   run_and_kill([&] {
@@ -147,6 +149,7 @@ Checkpoint stress_checkpoint(std::uint64_t seq) {
 // SIGKILL at random moments of a loop that does nothing but write checkpoints: after every
 // kill the file opens and holds the last checkpoint the child finished, or the one it was
 // writing if the kill came after its commit point, never anything else.
+// Guards against: a SIGKILL during a checkpoint write corrupting the file or the last checkpoint.
 TEST_F(DurabilityTest, SigkillDuringCheckpointWritesKeepsTheLastCheckpoint) {
   constexpr int kKills = 100;
   const auto path = file("run.h5");

@@ -38,6 +38,7 @@ TEST(HashGridEdges, WallsAloneNeverPair) {
 
 // Spheres of radius 1/4 on a lattice of spacing 1/2, with level-0 cells 1 wide: every
 // centre lies on a cell boundary in some axis and every lattice neighbour touches exactly.
+// Guards against: an exactly touching pair being missed when the centres sit on cell boundaries.
 TEST(HashGridEdges, TouchingAcrossCellBoundaries) {
   std::vector<Object> objects;
   for (int x = -4; x <= 4; ++x)
@@ -66,6 +67,7 @@ std::vector<Object> touching_chain(std::uint32_t seed, double origin) {
   return objects;
 }
 
+// Guards against: exactly touching pairs far from the origin being lost to round-off.
 TEST(HashGridEdges, ExactlyTouchingChains) {
   for (std::uint32_t seed = 0; seed < 20; ++seed) {
     SCOPED_TRACE(seed);
@@ -76,6 +78,7 @@ TEST(HashGridEdges, ExactlyTouchingChains) {
   }
 }
 
+// Guards against: objects with coincident centres not pairing (a degenerate distance).
 TEST(HashGridEdges, CoincidentCentresAllPair) {
   std::vector<Object> objects;
   for (Id id = 0; id < 50; ++id) {
@@ -100,6 +103,7 @@ TEST(HashGridEdges, AllObjectsInOneCell) {
   EXPECT_EQ(expect_brute_force_pairs(heap), 100u * 99 / 2);
 }
 
+// Guards against: a huge size ratio putting small objects on a level that misses the large one.
 TEST(HashGridEdges, HugeAndTinyTogether) {
   std::vector<Object> objects = scenes::uniform(500, {-20.0, 20.0}, 1e-3, 1e-2, 3);
   objects.push_back(sphere(1000, {0.0, 0.0, 0.0}, 10.0));

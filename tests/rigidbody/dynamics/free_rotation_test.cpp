@@ -76,6 +76,7 @@ TEST(FreeRotation, SemiImplicitEulerDriftsBoundedlyAndGainsNoEnergy) {
 }
 
 // The explicit gyroscopic term would blow this up; the implicit one must not.
+// Guards against: the gyroscopic term blowing up at large steps (h |omega| ~ 3).
 TEST(FreeRotation, SemiImplicitEulerStaysStableForFastSpinAndLargeSteps) {
   const BodyInertia body = asymmetric_box();
   BodyState start = tumbling();

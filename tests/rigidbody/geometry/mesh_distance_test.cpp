@@ -76,6 +76,7 @@ double winding_number(const TriangleMesh& mesh, const Eigen::Vector3d& p) {
 // Points a hair off every vertex and edge midpoint, along the pseudo-normal, against it and
 // along random directions, at convex, concave and saddle features: the sign is the side
 // given by the winding number.
+// Guards against: the wrong inside/outside sign a hair off a mesh edge or vertex.
 TEST(MeshDistance, SignIsRobustAtEdgesAndVertices) {
   const TriangleMesh mesh = testing::make_mesh(testing::torus_mesh(1.0, 0.3, 16, 8));
   std::mt19937 rng(10);

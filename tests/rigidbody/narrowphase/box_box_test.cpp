@@ -73,6 +73,7 @@ TEST(BoxBox, SeparatedCornersUseTheTrueDistance) {
   EXPECT_TRUE(has_point(m, Vec3::Constant(1.05), 1e-6));
 }
 
+// Guards against: a wrong normal or no contact for deeply penetrating boxes with parallel faces.
 TEST(BoxBox, DeepPenetrationAndParallelFaces) {
   const Shape box = Box({1, 1, 1});
   const auto deep = contacts(box, at(), box, at({0, 0, 0.3}));

@@ -28,6 +28,8 @@ std::vector<double> run_windows(RigidSolver& solver, std::uint64_t from, std::ui
   return poses;
 }
 
+// Guards against: an implicit window repeated after a restore differing in the last bit (lost contact
+// memory).
 TEST(Rollback, RepeatsTheWindowsBitForBit) {
   RigidSolver solver;
   solver.initialise(boxes(), "rigidbody", {}, {});

@@ -59,6 +59,7 @@ Runs run_config(const std::string& name, const std::string& end, const std::vect
   return runs;
 }
 
+// Guards against: the shipped cradle scene losing its ball-by-ball transfer through the program.
 TEST(RigidScenes, NewtonsCradlePassesTheMomentumToTheLastBall) {
   const std::vector<std::string> balls{"ball1", "ball2", "ball3", "ball4", "ball5"};
   const auto runs = run_config("rigid_newtons_cradle", "0.1", balls);
@@ -70,6 +71,7 @@ TEST(RigidScenes, NewtonsCradlePassesTheMomentumToTheLastBall) {
   }
 }
 
+// Guards against: a sphere of the shipped pyramid sinking through the floor in the program.
 TEST(RigidScenes, SpherePyramidStaysOnTheFloor) {
   std::vector<std::string> spheres;
   for (int layer = 0; layer < 5; ++layer)
@@ -110,6 +112,7 @@ TEST(RigidScenes, MixedShapesLandOnThePlane) {
   }
 }
 
+// Guards against: the thin fast plate tunnelling through the plane, or the warning going missing.
 TEST(RigidScenes, ThinBoxAtFiftyMetresPerSecondStaysAboveThePlaneAndIsWarnedAbout) {
   const auto runs = run_config("rigid_thin_box", "0.2", {"plate"});
   EXPECT_NE(runs.coupled.output.find("warning: body 1 (plate) may move 0.0501 m per substep"), std::string::npos)

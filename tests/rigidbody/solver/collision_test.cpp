@@ -71,6 +71,7 @@ TEST(HeadOnDem, RestitutionFromDampingFormula) {
   }
 }
 
+// Guards against: sequential restitution moving a touching chain as one body.
 TEST(NewtonsCradle, SequentialRestitutionPassesMomentumThrough) {
   Row row({1, 1, 1, 1, 1}, {1, 0, 0, 0, 0});
   row.world.material = {.friction = 0.3, .restitution = 1.0};

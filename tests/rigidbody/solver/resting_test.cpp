@@ -35,6 +35,7 @@ struct SphereOnPlane {
 
 class RestingSphere : public ::testing::TestWithParam<Preset> {};
 
+// Guards against: a solver preset whose resting contact sinks into the slop, drifts or jitters.
 TEST_P(RestingSphere, SettlesWithoutDriftOrJitter) {
   SphereOnPlane scene(kRadius + 0.01);  // falls 1 cm first
   const Solver solver = impulses(GetParam().options);

@@ -40,6 +40,7 @@ TEST(WarmStart, ReducesIterationsOnRestingBox) {
 // load slowly through the light body, so this needs many iterations (or warm starting).
 class MassRatioStack : public ::testing::TestWithParam<Preset> {};
 
+// Guards against: the heavy sphere of a 1000:1 stack sinking through the light one.
 TEST_P(MassRatioStack, StaysAtRest) {
   constexpr double r = 0.5;
   World world;

@@ -7,6 +7,7 @@
 namespace cosim::world::test {
 namespace {
 
+// Guards against: the impulse of a touching chain being smeared over all balls, or energy gained or lost.
 TEST(Cradle, MomentumPassesThroughAndEnergyIsKept) {
   Settings s;
   s.body_forces.gravity = false;

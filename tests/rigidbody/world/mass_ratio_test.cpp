@@ -52,8 +52,10 @@ void expect_stable(const Extremes& e) {
 // Gauss-Seidel passes the heavy box's weight through the light one slowly: the default 50
 // iterations let the cold-started stack sag and slide apart (drift 3.9 cm, 0.52 m/s);
 // 1000 converge in the first steps, and the warm start then holds the stack.
+// Guards against: a 1000:1 heavy-on-light stack sagging and sliding apart (slow Gauss-Seidel).
 TEST(MassRatio, HeavyBoxOnALightOneStaysPut) { expect_stable(run_stack(10.0, 10000.0, 3000, 1000)); }
 
+// Guards against: a 1:1000 light-on-heavy stack jittering or drifting.
 TEST(MassRatio, LightBoxOnAHeavyOneStaysPut) { expect_stable(run_stack(10000.0, 10.0, 3000, 0)); }
 
 }  // namespace

@@ -8,6 +8,7 @@
 namespace cosim::world::test {
 namespace {
 
+// Guards against: many simultaneous frictional contacts sinking into each other or gaining energy.
 TEST(Pyramid, SpheresSettleWithoutPenetrationOrEnergyGain) {
   constexpr double r = 0.05, gap = 1e-3 * r;
   World world;

@@ -11,6 +11,7 @@ namespace {
 constexpr double kRadius = 0.1;
 
 // Issue case 1: after settling, the height varies by less than 1e-6 r (sequential impulses).
+// Guards against: a resting contact that never settles: the sphere buzzing on the ground after the impact.
 TEST(Resting, DroppedSphereSettlesWithoutJitter) {
   World world;  // SI, dt 1e-3, gravity
   add_ground(world, {.restitution = 0.5});
@@ -30,6 +31,7 @@ TEST(Resting, DroppedSphereSettlesWithoutJitter) {
 
 // Issue case 4: a column of spheres and a box exactly touching the ground and each other
 // at t = 0 under gravity: nothing may be pushed apart.
+// Guards against: bodies in exact contact at t = 0 being pushed apart by the first solve.
 TEST(Resting, BodiesTouchingAtStartDoNotJumpApart) {
   World world;
   add_ground(world);

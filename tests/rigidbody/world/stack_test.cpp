@@ -7,6 +7,7 @@
 namespace cosim::world::test {
 namespace {
 
+// Guards against: a tall resting stack creeping sideways or exploding over a long run.
 TEST(Stack, TenBoxesRestWithoutDriftOrExplosion) {
   const StackResult r = run_box_stack(kStackTestSteps);
   EXPECT_LT(r.horizontal_drift, 0.01 * r.box_size);

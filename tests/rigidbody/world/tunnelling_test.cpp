@@ -33,6 +33,7 @@ TEST(Tunnelling, ThinnestExtentOfEveryShape) {
   EXPECT_NEAR(thinnest_extent(geometry::ConvexHull(corners)), 0.01, 1e-12);
 }
 
+// Guards against: a body fast enough to tunnel in one substep going unreported.
 TEST(Tunnelling, FlagsBodiesFasterThanTheMarginOrHalfTheirThickness) {
   const std::vector<double> thinnest{0.2, 2 * plate_half, 0.2, 2 * plate_half};
   std::vector<dynamics::BodyState> states(4);
@@ -64,6 +65,7 @@ TEST(Tunnelling, FlagsBodiesFasterThanTheMarginOrHalfTheirThickness) {
 // and over three times the default margin. The world flags it, but a half-space reports
 // any depth with the right normal, so the plate cannot pass through the plane: it lands
 // and rests on it.
+// Guards against: a thin fast plate passing through a plane between two substeps.
 TEST(Tunnelling, ThinPlateAt50MetresPerSecondStopsOnAPlane) {
   World world;  // dt 1e-3, default margin: a tenth of the plate's bounding radius
   add_ground(world);
@@ -81,6 +83,7 @@ TEST(Tunnelling, ThinPlateAt50MetresPerSecondStopsOnAPlane) {
 // A ball at 50 m/s against a fixed 5 mm plate: at dt 1e-3 it jumps the plate between two
 // substeps without a contact. The check flags it; at the dt the warning asks for, the ball
 // is caught by a speculative contact and bounces back.
+// Guards against: the suggested smaller dt not catching a ball that jumps a thin plate.
 TEST(Tunnelling, BallThroughAThinPlateIsFlaggedAndStopsAtTheSuggestedDt) {
   constexpr double r = 0.02, v = 50.0;
   const auto shoot = [&](double dt) {

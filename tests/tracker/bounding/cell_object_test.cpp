@@ -68,6 +68,7 @@ TEST(CellObject, PrunedTreesGiveTheObjectsAnswerEverywhere) {
   EXPECT_GT(inside, 100);
 }
 
+// Guards against: an obstacle state carried across a cell face disagreeing with the next cell's pruned tree.
 TEST(CellObject, StatesCarriedAcrossEveryFaceEqualDirectEvaluation) {
   const Mesh mesh = box_mesh(cube(12));
   const std::vector<Ball> balls = cluster();

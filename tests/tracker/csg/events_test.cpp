@@ -25,6 +25,7 @@ std::vector<Event> follow(const Object& o, State& state, Eigen::Vector3d x, cons
   }
 }
 
+// Guards against: an exactly tangent flight producing a spurious crossing.
 TEST(Events, ExactTangentChangesNothing) {
   // |(-5 + t, 1, 0)| >= 1 with equality at t = 5; the discriminant is exactly 0.
   const Object o(ball({0, 0, 0}, 1.0), true);
@@ -33,6 +34,7 @@ TEST(Events, ExactTangentChangesNothing) {
   EXPECT_EQ(s, 0u);
 }
 
+// Guards against: a grazing hit giving an entry without its exit (state left inside).
 TEST(Events, GrazingGivesAConsistentPair) {
   const Object o(ball({0, 0, 0}, 1.0), true);
   const double y = 1.0 - 1e-12;
@@ -47,6 +49,7 @@ TEST(Events, GrazingGivesAConsistentPair) {
   EXPECT_EQ(s, 0u);
 }
 
+// Guards against: a particle exactly on the surface getting no event, or one with the wrong sign.
 TEST(Events, ParticleOnTheSurfaceGetsAConsistentEvent) {
   const Object o(ball({0, 0, 0}, 1.0), true);
   const Eigen::Vector3d x(1, 0, 0);
@@ -85,6 +88,7 @@ TEST(Events, ParticleOnTheSurfaceGetsAConsistentEvent) {
   }
 }
 
+// Guards against: a particle below the surface by round-off getting a negative time of flight.
 TEST(Events, SlightlyOnTheWrongSideIsClampedNeverNegative) {
   const Object o(half_space({0, 0, 0}, {0, 0, 1}));
   // Above the plane by round-off, state inside, moving up: leave now.
@@ -100,6 +104,7 @@ TEST(Events, SlightlyOnTheWrongSideIsClampedNeverNegative) {
   EXPECT_FALSE(next_event(o, 0, {0, 0, -1e-17}, {0, 0, 1}).happens());
 }
 
+// Guards against: a particle that just left a ball re-entering it through round-off.
 TEST(Events, JustLeftABallDoesNotReenter) {
   const Object o(ball({0.3, 0.1, 0}, 0.7), true);
   std::mt19937_64 rng(3);

@@ -11,6 +11,7 @@
 namespace cosim::csg {
 namespace {
 
+// Guards against: the CSG state drifting from the truth after 1e5 reflections.
 TEST(Flights, StateAgreesWithDirectEvaluationAfterManyReflections) {
   const Object o(half_space({0, 0, 0.15}, {0, 0, 1}) | ball({0.3, 0.3, 0.2}, 0.15) | ball({0.42, 0.35, 0.3}, 0.1) |
                  ball({0.7, 0.6, 0.6}, 0.2) | ball({0.5, 0.8, 0.5}, 0.12));

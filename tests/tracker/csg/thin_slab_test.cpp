@@ -34,7 +34,9 @@ void run(bool permeable) {
   EXPECT_GT(boundaries, 20000);
 }
 
+// Guards against: a particle skipping both faces of a slab thinner than its step.
 TEST(ThinSlab, ParticlesCrossAPermeableSlab) { run(true); }
+// Guards against: a particle tunnelling through a thin wall slab.
 TEST(ThinSlab, ParticlesBounceOffAWallSlab) { run(false); }
 
 }  // namespace

@@ -44,6 +44,7 @@ TEST(Locate, GradedHexahedra) {
   agrees_with_scan(box_mesh(spec), Vec3::Zero(), Vec3(2.0, 1.0, 1.0));
 }
 
+// Guards against: a point in a gap between perturbed cells being located in no cell.
 TEST(Locate, PerturbedTetrahedraAndHexahedra) {
   BoxSpec spec = cube(5);
   agrees_with_scan(perturbed(box_mesh(spec), {.fraction = 0.2, .seed = 8}), Vec3::Zero(), Vec3::Ones());

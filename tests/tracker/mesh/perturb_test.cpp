@@ -41,6 +41,7 @@ TEST(Perturb, SameSeedSameMesh) {
             0.0);
 }
 
+// Guards against: the perturbed meshes losing the gaps and overlaps the tracking tests need.
 TEST(Perturb, PlanesOfPerturbedHexahedraLeaveGapsAndOverlaps) {
   const Mesh moved = perturbed(box_mesh(cube(4, false)), {.fraction = 0.2, .seed = 1});
   std::mt19937_64 random(3);

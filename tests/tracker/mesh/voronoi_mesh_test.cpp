@@ -95,6 +95,7 @@ Index scan(const Mesh& mesh, const Vec3& x) {
   return -1;
 }
 
+// Guards against: nearly co-spherical points breaking the Voronoi mesh (tiny faces dropped or inconsistent).
 TEST(VoronoiMesh, ManyRandomPointsWithTinyFaces) {
   // One seed each, about 1 s per mesh in release (seeds 7 to 59, walled and periodic,
   // all build and validate; those looked at have 20 to 32 small faces).

@@ -89,6 +89,8 @@ TEST(TrackerAdapter, BallMovedThroughGasAtRestFeelsTheFreeMolecularDrag) {
   for (const ObstacleTally& t : solver.gas().tallies()) EXPECT_EQ(t.released, 0);
 }
 
+// Guards against: an implicit window repeated after a restore giving other forces (state or random stream not
+// restored).
 TEST(TrackerAdapter, RepeatedWindowAfterRestoreGivesTheSameForcesToTheBit) {
   // The ball moves and turns: the restored pose must be the saved one to the bit.
   const scene::Scene scene = moving_ball_scene();

@@ -146,6 +146,7 @@ TEST(TrackerStandalone, OpenOutflowAndAnAbsorbingObstacleRemoveParticles) {
   EXPECT_LT(run.absorbed.back(), run.column("removed"));  // the rest left through x_max
 }
 
+// Guards against: the program losing particles on periodic faces of a tetrahedral box.
 TEST(TrackerStandalone, PeriodicBoxKeepsEveryParticle) {
   // No walls at all: every side linked, the particles drift through them around a ball.
   const scene::Scene scene = scene_of_mesh(

@@ -188,6 +188,7 @@ TEST(FastPath, SwarmEndsWhereTheFullAlgorithmPutsIt) {
 
 // Short moves from random points of perturbed Voronoi cells (non-planar faces: the planes
 // of the two sides of a face differ), through move(): the same MoveResult and end.
+// Guards against: the fast path disagreeing with the full algorithm on non-planar faces.
 TEST(FastPath, PerturbedVoronoiMovesEndWhereTheFullAlgorithmPutsThem) {
   const Mesh mesh = perturbed(voronoi_mesh(testing::random_points(200, 13), {}), {.fraction = 0.05, .seed = 4});
   const Domain fast(mesh, specular(mesh));

@@ -119,6 +119,8 @@ TEST(Obstacles, SpecularWallsKeepParticlesOutAndEnergyConstant) {
 // An open-cell structure across periodic links: balls at the corners (all eight images)
 // and the centre of a periodic Voronoi box; states are re-evaluated on every periodic
 // crossing, and nobody gets into a ball, diffuse or specular.
+// Guards against: a particle getting into an obstacle whose state was not re-evaluated on a periodic
+// crossing.
 TEST(Obstacles, PeriodicFoamKeepsParticlesOut) {
   Random sites(11);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
@@ -150,6 +152,7 @@ TEST(Obstacles, PeriodicFoamKeepsParticlesOut) {
 
 // A wall whose plane is the mesh's cell faces, particles started exactly on it, and a slab
 // thinner than round-off at a cell's size: none gets through.
+// Guards against: particles leaking through a wall lying on cell faces or thinner than round-off.
 TEST(Obstacles, WallsOnFacesAndThinnerThanRoundOffHold) {
   const Mesh mesh = box_mesh(cube(8));
   const Domain domain(mesh, specular_box());
@@ -331,6 +334,8 @@ TEST(Obstacles, MovingWallReflectsInItsOwnFrame) {
 // A wall whose surface comes from a corner neighbour, beyond the ring of the particle's
 // cell, lands on the particle in one move of less than a cell: the particle must not be
 // left inside (no entry point is known: it is removed and counted).
+// Guards against: a moving wall from beyond the cell's neighbours overrunning a particle and leaving it
+// inside.
 TEST(Obstacles, MovingWallFromBeyondTheRingLeavesNobodyInside) {
   const Mesh mesh = box_mesh(cube(10));
   const Domain domain(mesh, specular_box());
@@ -356,6 +361,7 @@ TEST(Obstacles, MovingWallFromBeyondTheRingLeavesNobodyInside) {
 
 // A particle whose state wrongly says it is inside a wall is let out at the surface and
 // counted, not reflected back in for ever.
+// Guards against: a particle with a wrong inside state being reflected back in for ever.
 TEST(Obstacles, AWrongInsideStateIsReleasedAtTheSurface) {
   const Mesh mesh = box_mesh(cube(4));
   const Domain domain(mesh, specular_box());

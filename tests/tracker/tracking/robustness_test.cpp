@@ -61,19 +61,24 @@ void expect_none_lost(const std::string& label, const Mesh& mesh, bool walled) {
   }
 }
 
+// Guards against: a particle starting on or moving through a vertex, edge or face of non-planar hexahedra
+// being lost.
 TEST(NoParticleLost, PerturbedHexahedra) {
   expect_none_lost("perturbed hexahedra", perturbed(box_mesh(cube(6, false)), {.fraction = 0.2, .seed = 3}), true);
 }
 
+// Guards against: a particle on a shared vertex, edge or face of perturbed tetrahedra being lost.
 TEST(NoParticleLost, PerturbedTetrahedra) {
   expect_none_lost("perturbed tetrahedra", perturbed(box_mesh(cube(4, true)), {.fraction = 0.2, .seed = 4}), true);
 }
 
+// Guards against: a particle being lost in the gaps and overlaps between perturbed Voronoi cells.
 TEST(NoParticleLost, PerturbedVoronoi) {
   const Mesh voronoi = voronoi_mesh(testing::random_points(200, 5), {});
   expect_none_lost("perturbed voronoi", perturbed(voronoi, {.fraction = 0.05, .seed = 5}), true);
 }
 
+// Guards against: a particle being lost where a perturbed cell meets its periodic image.
 TEST(NoParticleLost, PerturbedPeriodicVoronoi) {
   const Mesh voronoi = voronoi_mesh(testing::random_points(200, 6), {.periodic = {true, true, true}});
   expect_none_lost("perturbed periodic voronoi", perturbed(voronoi, {.fraction = 0.05, .seed = 6}), false);
@@ -82,6 +87,7 @@ TEST(NoParticleLost, PerturbedPeriodicVoronoi) {
 // 20,000 random points give a few dozen faces some 1e-5 of their cells across (nearly
 // co-spherical quadruples). Unperturbed, starting half the moves on those faces (their
 // vertices, edges, inside, aimed at vertices or along the face), half anywhere.
+// Guards against: a particle being lost on faces some 1e-5 of their cells across.
 TEST(NoParticleLost, VoronoiWithTinyFaces) {
   for (const bool periodic : {false, true}) {
     const Mesh mesh = voronoi_mesh(testing::random_points(20000, periodic ? 8 : 7), {.periodic = {periodic, periodic, periodic}});

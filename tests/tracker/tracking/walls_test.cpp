@@ -159,6 +159,7 @@ TEST(Walls, OpenPatchRemovesAndOthersReflect) {
   }
 }
 
+// Guards against: a long flight through periodic faces being lost or wrapped by a wrong lattice vector.
 TEST(Walls, PeriodicLinksWrapTheFlight) {
   Random random(5);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
