@@ -96,17 +96,8 @@ PetscErrorCode PressureSolver::compute_operator(KSP ksp, Mat, Mat P, void* self)
   PetscFunctionReturn(0);
 }
 
-// A cell no correction can flow into or out of: inside a body, or a pocket a body closes
-// against a wall (a sphere landing on the floor). Left in the system its row would be zero
-// and the solve diverge.
-bool PressureSolver::closed(const Index& m) const {
-  if (!imposed_) return false;
-  bool open = false;
-  for_each_cell_face(grid_, m, [&](const CellFace& f) {
-    open = open || (f.boundary ? bc_.at(f.axis, f.side).kind == BoundaryKind::outflow : !imposed_->contains(f.axis, f.face));
-  });
-  return !open;
-}
+// Cells inside bodies and pockets closed by them (ConnectedCells) keep phi = 0.
+bool PressureSolver::closed(const Index& m) const { return imposed_ && !connected_.connected(m); }
 
 // Without an outflow phi is fixed up to a constant over the cells that are unknowns.
 void PressureSolver::update_null_space() {
@@ -133,6 +124,7 @@ int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedF
   if (imposed != imposed_ || generation != assembled_generation_) {
     imposed_ = imposed;
     assembled_generation_ = generation;
+    if (imposed_) connected_.update(grid_, bc_, *imposed_);
     update_null_space();
     // Asks the KSP to call compute_operator again before the next solve.
     COSIM_PETSC(KSPSetComputeOperators(ksp_, compute_operator, this));

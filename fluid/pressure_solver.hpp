@@ -6,6 +6,7 @@
 #include <petscksp.h>
 
 #include "fluid/boundary_conditions.hpp"
+#include "fluid/connected_cells.hpp"
 #include "fluid/grid.hpp"
 #include "fluid/imposed_faces.hpp"
 #include "fluid/local_velocity.hpp"
@@ -37,6 +38,7 @@ class PressureSolver {
   Vec rhs_ = nullptr;
   MatNullSpace constants_ = nullptr;  // only when no outflow pins the pressure level
   const ImposedFaces* imposed_ = nullptr;
+  ConnectedCells connected_;  // with imposed_
   int assembled_generation_ = -1;
 };
 
