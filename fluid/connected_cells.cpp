@@ -38,7 +38,9 @@ void ConnectedCells::update(const Grid& grid, const BoundaryConditions& bc, cons
       else
         imposed_face = imposed_face || imposed.contains(cf.axis, cf.face);
     });
-    if (outflow || !imposed_face) at(m) = 1;
+    // An outflow fixes the level of the region joined to it, and nothing else does; without
+    // one, the bulk fluid is what no body touches.
+    if (bc.has_outflow() ? outflow : !imposed_face) at(m) = 1;
   });
   // Owned values into the global vector by hand: DMLocalToGlobal cannot insert on a
   // periodic DMDA.

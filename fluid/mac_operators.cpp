@@ -18,7 +18,11 @@ double divergence(const Grid& grid, const LocalVelocity& u, const Index& cell) {
 double max_divergence(const Grid& grid, const LocalVelocity& u) {
   double local = 0;
   for_each_index(grid.owned(grid.pressure_dm()),
-                 [&](const Index& cell) { local = std::max(local, std::abs(divergence(grid, u, cell))); });
+                 [&](const Index& cell) {
+                   // Written so that a NaN wins: the callers check the result for a non-finite flow.
+                   const double d = std::abs(divergence(grid, u, cell));
+                   if (!(d <= local)) local = d;
+                 });
   double global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
   return global;

@@ -114,8 +114,10 @@ void PressureSolver::update_null_space() {
   COSIM_PETSC(DMDAVecGetArray(dm, ones, &v));
   for_each_index(grid_.owned(dm), [&](const Index& m) { v[m[2]][m[1]][m[0]] = closed(m) ? 0 : 1; });
   COSIM_PETSC(DMDAVecRestoreArray(dm, ones, &v));
-  COSIM_PETSC(VecNormalize(ones, nullptr));
-  COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_FALSE, 1, &ones, &constants_));
+  PetscReal norm = 0;
+  COSIM_PETSC(VecNormalize(ones, &norm));
+  // Every cell closed: the operator is the identity, without a null space.
+  if (norm > 0) COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_FALSE, 1, &ones, &constants_));
   COSIM_PETSC(VecDestroy(&ones));
 }
 

@@ -19,10 +19,18 @@ void check(hid_t id, const std::string& what) {
   if (id < 0) throw std::runtime_error("cannot read " + what);
 }
 
+// Without HDF5's file lock, so a test can read a run file the coupler is still writing (it
+// flushes after every window).
+hid_t open_for_reading(const std::filesystem::path& file) {
+  Handle access{H5Pcreate(H5P_FILE_ACCESS), H5Pclose};
+  H5Pset_file_locking(access.id, false, true);
+  return H5Fopen(file.c_str(), H5F_ACC_RDONLY, access.id);
+}
+
 }  // namespace
 
 Array read_array(const std::filesystem::path& file, const std::string& dataset) {
-  Handle f{H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  Handle f{open_for_reading(file), H5Fclose};
   check(f.id, file.string());
   Handle d{H5Dopen2(f.id, dataset.c_str(), H5P_DEFAULT), H5Dclose};
   check(d.id, file.string() + ":" + dataset);
@@ -42,7 +50,7 @@ Array read_array(const std::filesystem::path& file, const std::string& dataset) 
 }
 
 double read_double_attribute(const std::filesystem::path& file, const std::string& object, const std::string& name) {
-  Handle f{H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  Handle f{open_for_reading(file), H5Fclose};
   check(f.id, file.string());
   Handle a{H5Aopen_by_name(f.id, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
   check(a.id, object + "@" + name);
@@ -59,7 +67,7 @@ Series read_series(const std::filesystem::path& file, const std::string& dataset
 
 std::string read_string_attribute(const std::filesystem::path& file, const std::string& object,
                                   const std::string& name) {
-  Handle f{H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  Handle f{open_for_reading(file), H5Fclose};
   check(f.id, file.string());
   Handle a{H5Aopen_by_name(f.id, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
   check(a.id, object + "@" + name);

@@ -1,0 +1,68 @@
+#!/usr/bin/python3
+"""Spheres in a box from a run file (configs/sedimenting-bed.yaml, fluidized-bed.yaml,
+dkt-spheres.yaml): the deepest overlap of any two spheres and of a sphere with a wall of
+cosim-rigidbody, over all written rows, as a fraction of the radius; with --bed, the bed
+height h_b = 2 mean(z) (centres spread evenly over the bed), its solid fraction
+alpha = N (4/3) pi R^3 / (A h_b) averaged over the second half of the run, and
+Richardson-Zaki's alpha = 1 - (u0 / u_t)^(1/m) for the scene's inflow u0.
+
+    bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4]
+
+Reference: ../shared/REFERENCES.md (Aguilar et al.; Richardson-Zaki, m = 2.4 at Re_p 500).
+"""
+
+import argparse
+import math
+import os
+
+os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")  # a run still being written
+
+import h5py
+import numpy as np
+import yaml
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("run")
+    parser.add_argument("--bed", action="store_true", help="bed height and solid fraction against Richardson-Zaki")
+    parser.add_argument("--terminal", type=float, default=0.226, help="u_t [m/s] (Aguilar's beads)")
+    parser.add_argument("--exponent", type=float, default=2.4, help="Richardson-Zaki m (2.4 for Re_p >= 500)")
+    args = parser.parse_args()
+
+    with h5py.File(args.run, "r") as f:
+        scene = yaml.safe_load(f["run/scene_text"][()].decode())
+        spheres = [b for b in scene["bodies"] if b["shape"]["type"] == "sphere" and not b.get("fixed", False)]
+        t = f[f"bodies/{spheres[0]['name']}/time"][:]
+        x = np.stack([f[f"bodies/{b['name']}/position"][:] for b in spheres], axis=1)  # rows, bodies, 3
+    r = np.array([b["shape"]["radius"] for b in spheres])
+    lo, hi = np.array(scene["domain"]["min"]), np.array(scene["domain"]["max"])
+    walls = scene["participants"]["rigidbody"].get("options", {}).get("walls", [])
+
+    pair = np.triu(np.ones((len(r), len(r)), dtype=bool), 1)
+    deepest_pair = deepest_wall = 0.0
+    for row in x:
+        gap = np.linalg.norm(row[:, None, :] - row[None, :, :], axis=2) - (r[:, None] + r[None, :])
+        deepest_pair = max(deepest_pair, float(-(gap[pair] / np.minimum.outer(r, r)[pair]).min()))
+        for wall in walls:
+            axis = "xyz".index(wall[0])
+            distance = row[:, axis] - lo[axis] if wall.endswith("min") else hi[axis] - row[:, axis]
+            deepest_wall = max(deepest_wall, float(((r - distance) / r).max()))
+    print(f"{len(r)} spheres, {len(t)} rows to t = {t[-1]:.3f} s: deepest overlap sphere-sphere "
+          f"{deepest_pair:.2%} of the radius, sphere-wall {deepest_wall:.2%} (negative: never touched)")
+
+    if args.bed:
+        area = (hi[0] - lo[0]) * (hi[1] - lo[1])
+        half = t >= t[-1] / 2
+        height = 2 * (x[half, :, 2].mean(axis=1) - lo[2])
+        volume = sum(4 / 3 * math.pi * ri**3 for ri in r)
+        alpha = volume / (area * height)
+        u0 = scene["participants"]["fluid"]["options"]["boundaries"]["z_min"]["velocity"][2]
+        rz = 1 - (u0 / args.terminal) ** (1 / args.exponent)
+        print(f"bed over t >= {t[-1] / 2:.2f} s: h_b {height.mean() * 1e3:.1f} mm (from {height.min() * 1e3:.1f} to "
+              f"{height.max() * 1e3:.1f}), alpha {alpha.mean():.3f}; Richardson-Zaki with u0 = {u0} m/s, "
+              f"u_t = {args.terminal} m/s, m = {args.exponent}: alpha {rz:.3f} ({alpha.mean() / rz - 1:+.1%})")
+
+
+if __name__ == "__main__":
+    main()
