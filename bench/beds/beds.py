@@ -4,9 +4,11 @@ dkt-spheres.yaml): the deepest overlap of any two spheres and of a sphere with a
 cosim-rigidbody, over all written rows, as a fraction of the radius; with --bed, the bed
 height h_b = 2 mean(z) (centres spread evenly over the bed), its solid fraction
 alpha = N (4/3) pi R^3 / (A h_b) averaged over the second half of the run, and
-Richardson-Zaki's alpha = 1 - (u0 / u_t)^(1/m) for the scene's inflow u0.
+Richardson-Zaki's alpha = 1 - (u0 / u_t)^(1/m) for the scene's inflow u0; with --swap, for
+the first two spheres (drafting, kissing and tumbling), the closest approach and the times
+at which the higher one becomes the lower.
 
-    bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4]
+    bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4] [--swap]
 
 Reference: ../shared/REFERENCES.md (Aguilar et al.; Richardson-Zaki, m = 2.4 at Re_p 500).
 """
@@ -28,6 +30,7 @@ def main():
     parser.add_argument("--bed", action="store_true", help="bed height and solid fraction against Richardson-Zaki")
     parser.add_argument("--terminal", type=float, default=0.226, help="u_t [m/s] (Aguilar's beads)")
     parser.add_argument("--exponent", type=float, default=2.4, help="Richardson-Zaki m (2.4 for Re_p >= 500)")
+    parser.add_argument("--swap", action="store_true", help="closest approach and order swaps of the first two spheres")
     args = parser.parse_args()
 
     with h5py.File(args.run, "r") as f:
@@ -50,6 +53,14 @@ def main():
             deepest_wall = max(deepest_wall, float(((r - distance) / r).max()))
     print(f"{len(r)} spheres, {len(t)} rows to t = {t[-1]:.3f} s: deepest overlap sphere-sphere "
           f"{deepest_pair:.2%} of the radius, sphere-wall {deepest_wall:.2%} (negative: never touched)")
+
+    if args.swap:
+        distance = np.linalg.norm(x[:, 0] - x[:, 1], axis=1) / (r[0] + r[1])
+        above = x[:, 1, 2] > x[:, 0, 2]
+        swaps = [f"{t[k]:.3f}" for k in range(1, len(t)) if above[k] != above[k - 1]]
+        k = distance.argmin()
+        print(f"{spheres[0]['name']} and {spheres[1]['name']}: closest centre distance {distance[k]:.3f} d at "
+              f"t = {t[k]:.3f} s; order swapped at t = {', '.join(swaps) or 'never'} s")
 
     if args.bed:
         area = (hi[0] - lo[0]) * (hi[1] - lo[1])
