@@ -80,6 +80,13 @@ CosimProcess::CosimProcess(const std::vector<std::string>& args) {
   }
 }
 
+CosimProcess::~CosimProcess() {
+  if (pid_ <= 0) return;
+  kill(pid_, SIGKILL);
+  waitpid(pid_, nullptr, 0);
+  fs::remove(log_);
+}
+
 Finished CosimProcess::wait() {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   int status = 0;
@@ -87,10 +94,12 @@ Finished CosimProcess::wait() {
     if (std::chrono::steady_clock::now() > deadline) {
       kill(pid_, SIGKILL);
       waitpid(pid_, &status, 0);
+      pid_ = -1;
       throw std::runtime_error("cosim did not finish within 60 s");
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
+  pid_ = -1;
   Finished f;
   f.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   std::stringstream text;

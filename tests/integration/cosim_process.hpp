@@ -18,6 +18,10 @@ struct Finished {
 class CosimProcess {
  public:
   explicit CosimProcess(const std::vector<std::string>& args);
+  // A run a failed assertion left behind is killed (its participants follow the coupler).
+  ~CosimProcess();
+  CosimProcess(const CosimProcess&) = delete;
+  CosimProcess& operator=(const CosimProcess&) = delete;
   pid_t pid() const { return pid_; }
   Finished wait();  // fails the test (exception) after 60 s
 
