@@ -168,8 +168,10 @@ TEST(Settling, FiftyMillisecondWindowsStillConverge) {
 
 // Guards against: pockets of several cells that touching bodies close among themselves and
 // against a wall. The shipped fluidized bed starts with 112 beads in a lattice on its floor;
-// with only single closed cells fixed, its pressure solve diverged (DIVERGED_DTOL) in the
-// fourth window. Its first 10 windows run.
+// under serial-explicit coupling, with only single closed cells fixed, its pressure solve
+// diverged (DIVERGED_DTOL) in the fourth window. Its first 5 windows run, under the
+// scene's own implicit coupling (whether these would have failed without the pocket search
+// was not checked: the explicit run that did is itself unstable, see the scene).
 TEST(Settling, TheFluidizedBedsLatticeOfBeadsRunsPastItsStart) {
   std::ifstream in(std::string(COSIM_CONFIGS_DIR) + "/fluidized-bed.yaml");
   std::stringstream text;
@@ -177,11 +179,11 @@ TEST(Settling, TheFluidizedBedsLatticeOfBeadsRunsPastItsStart) {
   std::string yaml = text.str();
   const auto at = yaml.find("  end: 1.5");
   ASSERT_NE(at, std::string::npos);
-  yaml.replace(at, 10, "  end: 0.02");
+  yaml.replace(at, 10, "  end: 0.01");
   const auto dir = scratch_dir("settling_fluidized_bed");
   const Finished f = run_scene_text(dir, yaml);
   ASSERT_EQ(f.exit_code, 0) << f.output;
-  EXPECT_EQ(read_series(dir / "scene.h5", "/coupling/time").rows, 3u);  // every 5th window, and the start
+  EXPECT_EQ(read_series(dir / "scene.h5", "/coupling/time").rows, 2u);  // every 5th window, and the start
 }
 
 // Guards against: a participant dying in a coupled fluid run costing the run, or a resume
