@@ -101,17 +101,7 @@ void without_fast_path(Domain& domain) {
 }
 
 void expect_same(const MoveTally& a, const MoveTally& b) {
-  EXPECT_EQ(a.moves, b.moves);
-  EXPECT_EQ(a.faces_crossed, b.faces_crossed);
-  EXPECT_EQ(a.zero_time_events, b.zero_time_events);
-  EXPECT_EQ(a.boundary_hits, b.boundary_hits);
-  EXPECT_EQ(a.relocations, b.relocations);
-  EXPECT_EQ(a.cycles_broken, b.cycles_broken);
-  EXPECT_EQ(a.stalled, b.stalled);
-  EXPECT_EQ(a.removed, b.removed);
-  EXPECT_EQ(a.lost, b.lost);
-  EXPECT_EQ(a.object_events, b.object_events);
-  EXPECT_EQ(a.primitive_tests, b.primitive_tests);
+  for (const MoveCounter& c : kMoveCounters) EXPECT_EQ(a.*c.count, b.*c.count) << c.name;
 }
 
 // A swarm among a specular ball and a diffuse one, in a box with diffuse, specular and open
