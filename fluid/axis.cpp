@@ -1,5 +1,6 @@
 #include "fluid/axis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -54,6 +55,12 @@ Axis::Axis(std::vector<double> faces, bool periodic)
       at(cells_ + g) = 2 * at(cells_) - at(cells_ - g);
     }
   }
+}
+
+double Axis::max_width() const {
+  double widest = 0;
+  for (int i = 0; i < cells_; ++i) widest = std::max(widest, width(i));
+  return widest;
 }
 
 }  // namespace cosim::fluid

@@ -22,6 +22,7 @@ class Axis {
   double face(int i) const { return faces_[static_cast<std::size_t>(i + kGhost)]; }
   double centre(int i) const { return 0.5 * (face(i) + face(i + 1)); }
   double width(int i) const { return face(i + 1) - face(i); }
+  double max_width() const;
   // A periodic axis of one cell carries no variation: its derivative terms vanish and are
   // skipped (a two-dimensional problem is one cell layer thick and periodic).
   bool degenerate() const { return periodic_ && cells_ == 1; }

@@ -11,6 +11,7 @@ constexpr std::size_t kCellPatch = 3;
 FictitiousBoundary::FictitiousBoundary(const Grid& grid, FbmOptions options)
     : grid_(grid), options_(options), imposed_(grid) {
   if (options.subsamples < 1) throw std::invalid_argument("fictitious boundary: subsamples must be >= 1");
+  if (options.offset < 0) throw std::invalid_argument("fictitious boundary: the surface offset must be >= 0");
 }
 
 std::size_t FictitiousBoundary::add(RigidBody body) {
@@ -43,8 +44,9 @@ void FictitiousBoundary::move(std::size_t i, const geometry::Pose& pose, const E
 void FictitiousBoundary::build(Entry& e) const {
   e.patches.clear();
   for (int c = 0; c < 3; ++c)
-    e.patches.push_back(indicator(grid_, c, e.body, options_.subsamples, grid_.ghosted(grid_.velocity_dm(c))));
-  e.patches.push_back(indicator(grid_, kCellCentre, e.body, options_.subsamples, grid_.owned(grid_.cell_dm())));
+    e.patches.push_back(indicator(grid_, c, e.body, options_, grid_.ghosted(grid_.velocity_dm(c))));
+  e.patches.push_back(
+      indicator(grid_, kCellCentre, e.body, {.subsamples = options_.subsamples}, grid_.owned(grid_.cell_dm())));
 }
 
 void FictitiousBoundary::collect_imposed_faces() {

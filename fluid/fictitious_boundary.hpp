@@ -20,11 +20,9 @@
 
 namespace cosim::fluid {
 
-struct FbmOptions {
-  // 1: alpha is 0/1 by the point at the centre of each control volume; n > 1: volume
-  // fractions from n^3 sub-samples where the surface cuts a control volume.
-  int subsamples = 1;
-};
+// The offset grows the body at the velocity faces only (what is imposed and what the
+// force integral sees); the cell-centre fractions stay the body's own volume.
+using FbmOptions = IndicatorOptions;
 
 class FictitiousBoundary {
  public:

@@ -3,14 +3,16 @@
 dkt-spheres.yaml): the deepest overlap of any two spheres and of a sphere with a wall of
 cosim-rigidbody, over all written rows, as a fraction of the radius; with --bed, the bed
 height h_b = 2 mean(z) (centres spread evenly over the bed), its solid fraction
-alpha = N (4/3) pi R^3 / (A h_b) averaged over the second half of the run, and
-Richardson-Zaki's alpha = 1 - (u0 / u_t)^(1/m) for the scene's inflow u0; with --swap, for
+alpha = N (4/3) pi R^3 / (A h_b) averaged over the second half of the run (or from --since),
+and Richardson-Zaki's alpha = 1 - (u0 / u_t)^(1/m) for the scene's inflow u0, also with
+their wall correction log10 u_i = log10 u_t - d/D for a column of width D; with --swap, for
 the first two spheres (drafting, kissing and tumbling), the closest approach and the times
 at which the higher one becomes the lower.
 
-    bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4] [--swap]
+    bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4 --since 1.0] [--swap]
 
-Reference: ../shared/REFERENCES.md (Aguilar et al.; Richardson-Zaki, m = 2.4 at Re_p 500).
+Reference: ../shared/REFERENCES.md (Aguilar et al.; Richardson-Zaki, m = 2.4 at Re_p 500);
+the wall correction is Richardson & Zaki's (Trans. Inst. Chem. Eng. 32, 1954).
 """
 
 import argparse
@@ -30,6 +32,7 @@ def main():
     parser.add_argument("--bed", action="store_true", help="bed height and solid fraction against Richardson-Zaki")
     parser.add_argument("--terminal", type=float, default=0.226, help="u_t [m/s] (Aguilar's beads)")
     parser.add_argument("--exponent", type=float, default=2.4, help="Richardson-Zaki m (2.4 for Re_p >= 500)")
+    parser.add_argument("--since", type=float, help="average the bed over t >= this (default: the run's second half)")
     parser.add_argument("--swap", action="store_true", help="closest approach and order swaps of the first two spheres")
     args = parser.parse_args()
 
@@ -64,15 +67,22 @@ def main():
 
     if args.bed:
         area = (hi[0] - lo[0]) * (hi[1] - lo[1])
-        half = t >= t[-1] / 2
+        since = t[-1] / 2 if args.since is None else args.since
+        half = t >= since
         height = 2 * (x[half, :, 2].mean(axis=1) - lo[2])
         volume = sum(4 / 3 * math.pi * ri**3 for ri in r)
         alpha = volume / (area * height)
         u0 = scene["participants"]["fluid"]["options"]["boundaries"]["z_min"]["velocity"][2]
         rz = 1 - (u0 / args.terminal) ** (1 / args.exponent)
-        print(f"bed over t >= {t[-1] / 2:.2f} s: h_b {height.mean() * 1e3:.1f} mm (from {height.min() * 1e3:.1f} to "
+        # Richardson and Zaki's own wall correction, log10 u_i = log10 u_t - d/D, with D the
+        # column's narrower side.
+        d_over_d = 2 * max(r) / min(hi[0] - lo[0], hi[1] - lo[1])
+        rz_wall = 1 - (u0 / (args.terminal * 10 ** -d_over_d)) ** (1 / args.exponent)
+        print(f"bed over t >= {since:.2f} s: h_b {height.mean() * 1e3:.1f} mm (from {height.min() * 1e3:.1f} to "
               f"{height.max() * 1e3:.1f}), alpha {alpha.mean():.3f}; Richardson-Zaki with u0 = {u0} m/s, "
-              f"u_t = {args.terminal} m/s, m = {args.exponent}: alpha {rz:.3f} ({alpha.mean() / rz - 1:+.1%})")
+              f"u_t = {args.terminal} m/s, m = {args.exponent}: alpha {rz:.3f} ({alpha.mean() / rz - 1:+.1%}); "
+              f"with the wall correction for d/D = {d_over_d:.3f}: alpha {rz_wall:.3f} "
+              f"({alpha.mean() / rz_wall - 1:+.1%})")
 
 
 if __name__ == "__main__":

@@ -165,6 +165,7 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   s.steps.dt_initial = options.number("dt_initial", std::min(s.steps.dt_initial, p.dt), Range::left_open(0, p.dt));
   s.steps.theta = options.number("theta", s.steps.theta, Range::closed(0.5, 1));
   s.fbm.subsamples = options.integer("subsamples", s.fbm.subsamples, Range::at_least(1));
+  s.fbm.offset = options.number("surface_offset", fluid::kCalibratedSurfaceOffset, Range::at_least(0));
   try {
     s.petsc = parse_petsc_flags(options.string("petsc", ""));
   } catch (const std::invalid_argument& e) {

@@ -59,12 +59,16 @@ participant::Outputs RigidSolver::initialise(const scene::Scene& scene, const st
   // coupler's are not needed; a resumed run brings its own state.
   scene_ = scene;
   world_ = make_world(scene_);
+  const ProgramOptions options = program_options(scene_);
+  virtual_mass_ = VirtualMass(options.virtual_mass, options.settings.body_forces.fluid_density);
   if (!state.empty()) restore(state);
   return {poses(), {}, 0};
 }
 
 participant::Outputs RigidSolver::advance(const participant::Window& w, const participant::Inputs& in) {
-  const auto external = wrenches(in, scene_.bodies.size(), world_->size());
+  auto external = wrenches(in, scene_.bodies.size(), world_->size());
+  if (virtual_mass_.active() && !external.empty())
+    external = virtual_mass_.blend(w.t0, world_->states(), world_->inertias(), world_->settings().body_forces, external);
   world_->set_time(w.t0);
   const auto report = world_->advance(w.t1 - w.t0, external);
   return {poses(), {}, static_cast<double>(report.substeps)};
@@ -74,16 +78,18 @@ std::vector<double> RigidSolver::state() const {
   std::vector<double> s{world_->time()};
   const auto p = poses();
   s.insert(s.end(), p.begin(), p.end());
+  if (virtual_mass_.active()) virtual_mass_.save(s, world_->size());
   world_->contact_memory().save(s);
   return s;
 }
 
 void RigidSolver::restore(const std::vector<double>& state) {
   const std::size_t bodies = scene_.bodies.size();
-  const std::size_t fixed_part = 1 + kPoseWidth * bodies;
+  std::size_t fixed_part = 1 + kPoseWidth * bodies;
   if (state.size() < fixed_part)
     throw std::runtime_error("restart state has " + std::to_string(state.size()) + " values, expected at least " +
                              std::to_string(fixed_part));
+  if (virtual_mass_.active()) fixed_part += virtual_mass_.load(std::span(state).subspan(fixed_part), world_->size());
   try {
     world_->contact_memory().load(std::span(state).subspan(fixed_part));
   } catch (const std::invalid_argument& e) {

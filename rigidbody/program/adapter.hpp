@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "participant/solver.hpp"
+#include "rigidbody/program/virtual_mass.hpp"
 #include "rigidbody/world/world.hpp"
 
 namespace cosim::program {
@@ -15,7 +16,8 @@ class RigidSolver final : public participant::Solver {
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
                                   const std::vector<double>& poses, const std::vector<double>& state) override;
   participant::Outputs advance(const participant::Window& w, const participant::Inputs& in) override;
-  // [time, per body its 13 pose values (protocol::kPoseWidth), then the contact memory
+  // [time, per body its 13 pose values (protocol::kPoseWidth), with a virtual mass its
+  // previous window's velocities (VirtualMass::save), then the contact memory
   // (solver::ContactMemory::save)]: everything a substep carries to the next, so a rollback
   // repeats the windows bit for bit, warm starts included.
   std::vector<double> state() const override;
@@ -28,6 +30,7 @@ class RigidSolver final : public participant::Solver {
 
   scene::Scene scene_;
   std::unique_ptr<world::World> world_;
+  VirtualMass virtual_mass_{0, 0};
 };
 
 }  // namespace cosim::program

@@ -95,6 +95,9 @@ ProgramOptions program_options(const scene::Scene& scene) {
   if (s.body_forces.buoyancy || options.has("fluid_density"))
     s.body_forces.fluid_density = options.number("fluid_density", scene::Range::above(0));
   s.contact = scene.has_effect(scene::Effect::Contact);
+  out.virtual_mass = options.number("virtual_mass", 0.0, scene::Range::at_least(0));
+  if (out.virtual_mass > 0 && !options.has("fluid_density"))
+    options.fail("virtual_mass", "needs fluid_density, the density of the fluid whose mass it borrows");
 
   constexpr std::array law_names{"linear", "hertz"};
   constexpr std::array laws{solver::NormalLaw::linear, solver::NormalLaw::hertz};

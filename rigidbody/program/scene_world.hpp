@@ -19,6 +19,9 @@ struct ProgramOptions {
   // faces cosim-fluid holds as boundaries rather than bodies): fixed half-spaces appended
   // after the scene's bodies, never exchanged with the coupler.
   std::vector<world::BodyDesc> walls;
+  // C of the virtual mass C rho_f V that stabilizes explicitly coupled light bodies
+  // (virtual_mass.hpp); 0: off.
+  double virtual_mass = 0;
 };
 
 // Reads participants.rigidbody (dt and options) and the effects. Throws SceneError naming

@@ -1,7 +1,7 @@
 // The fictitious-boundary indicator: the grid volume sum(alpha * cell volume) of a sphere
 // and of a rotated box converges to the exact volume, faster with sub-cell fractions;
 // only the points in the body's bounding box are tested; imposed faces carry the rigid
-// velocity.
+// velocity; a surface offset grows the imposed faces only.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -95,6 +95,42 @@ TEST(FbmIndicator, ImposedFacesCarryTheRigidVelocity) {
   // About 3 * volume / h^3 faces.
   const double expected = 3 * geometry::volume(body.shape) * 24 * 24 * 24;
   EXPECT_NEAR(static_cast<double>(total), expected, 0.1 * expected);
+}
+
+// With an offset the faces within offset * h outside the surface are imposed too, and the
+// cell-centre fractions (the body's volume) stay as they were.
+TEST(FbmIndicator, SurfaceOffsetGrowsOnlyTheImposedFaces) {
+  const int n = 20;
+  const double h = 1.0 / n, offset = 0.4;
+  const Grid grid = cube(PETSC_COMM_WORLD, n, 1.0);
+  const RigidBody box{geometry::Box({0.13, 0.2, 0.17}), geometry::Pose({0.49, 0.52, 0.47}, Eigen::Quaterniond(
+                                                                          Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 1, 0).normalized())))};
+  FictitiousBoundary plain(grid), grown(grid, {.offset = offset});
+  const std::size_t b = plain.add(box);
+  grown.add(box);
+  EXPECT_DOUBLE_EQ(plain.grid_volume(b), grown.grid_volume(b));
+  long imposed[2] = {0, 0}, expected = 0;
+  for (int c = 0; c < 3; ++c) {
+    imposed[0] += static_cast<long>(plain.imposed_faces().owned(c).size());
+    imposed[1] += static_cast<long>(grown.imposed_faces().owned(c).size());
+    for (const ImposedFace& f : grown.imposed_faces().owned(c)) {
+      const Point x = grid.position(c, f.at);
+      EXPECT_LE(geometry::signed_distance(box.shape, box.pose, Eigen::Vector3d(x[0], x[1], x[2])), offset * h);
+    }
+    for_each_index(grid.owned(grid.velocity_dm(c)), [&](const Index& p) {
+      const Point x = grid.position(c, p);
+      if (!grid.on_boundary(c, p) &&
+          geometry::signed_distance(box.shape, box.pose, Eigen::Vector3d(x[0], x[1], x[2])) <= offset * h)
+        ++expected;
+    });
+  }
+  MPI_Allreduce(MPI_IN_PLACE, imposed, 2, MPI_LONG, MPI_SUM, PETSC_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &expected, 1, MPI_LONG, MPI_SUM, PETSC_COMM_WORLD);
+  EXPECT_EQ(imposed[1], expected);
+  // The grown box's faces: about 3 (V + offset h A) / h^3 more than the plain one's.
+  const double area = 8 * (0.13 * 0.2 + 0.2 * 0.17 + 0.13 * 0.17);  // half extents
+  EXPECT_NEAR(static_cast<double>(imposed[1] - imposed[0]), 3 * offset * h * area / (h * h * h),
+              0.15 * 3 * offset * area / (h * h));
 }
 
 }  // namespace

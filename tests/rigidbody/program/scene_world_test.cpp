@@ -99,6 +99,19 @@ TEST(SceneWorld, BuoyancyNeedsFluidDensity) {
   EXPECT_EQ(settings_of(with).body_forces.fluid_density, 1000.0);
 }
 
+TEST(SceneWorld, VirtualMassNeedsFluidDensity) {
+  const auto scene = scene::load_scene_from_string(scene_text("[gravity]", ball, "{virtual_mass: 1}"));
+  try {
+    program_options(scene);
+    FAIL() << "virtual_mass without fluid_density accepted";
+  } catch (const scene::SceneError& e) {
+    EXPECT_EQ(e.key, "participants.rigidbody.options.virtual_mass");
+    EXPECT_NE(std::string(e.what()).find("fluid_density"), std::string::npos) << e.what();
+  }
+  const auto with = scene::load_scene_from_string(scene_text("[gravity]", ball, "{virtual_mass: 0.5, fluid_density: 1000}"));
+  EXPECT_EQ(program_options(with).virtual_mass, 0.5);
+}
+
 TEST(SceneWorld, OptionsReachTheSettings) {
   const auto scene = scene::load_scene_from_string(scene_text(
       "[gravity]", ball, "{solver: pgs, iterations: 7, tolerance: 1.0e-4, contact_margin: 0.01, restitution: sequential}"));
