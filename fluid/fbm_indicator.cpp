@@ -91,7 +91,7 @@ IndicatorPatch indicator(const Grid& grid, int location, const RigidBody& body, 
           grow += hi[d] - lo[d];
           ++spanned;
         }
-      grow *= options.offset / spanned;
+      if (spanned > 0) grow *= options.offset / spanned;
     }
     const auto inside = [&](const Eigen::Vector3d& x) {
       return grow == 0 ? geometry::contains(body.shape, body.pose, x)

@@ -68,7 +68,7 @@ participant::Outputs RigidSolver::initialise(const scene::Scene& scene, const st
 participant::Outputs RigidSolver::advance(const participant::Window& w, const participant::Inputs& in) {
   auto external = wrenches(in, scene_.bodies.size(), world_->size());
   if (virtual_mass_.active() && !external.empty())
-    external = virtual_mass_.blend(w.t0, world_->states(), world_->inertias(), world_->settings().body_forces, external);
+    external = virtual_mass_.blend(world_->inertias(), world_->settings().body_forces, external);
   world_->set_time(w.t0);
   const auto report = world_->advance(w.t1 - w.t0, external);
   return {poses(), {}, static_cast<double>(report.substeps)};

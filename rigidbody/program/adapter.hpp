@@ -16,8 +16,8 @@ class RigidSolver final : public participant::Solver {
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
                                   const std::vector<double>& poses, const std::vector<double>& state) override;
   participant::Outputs advance(const participant::Window& w, const participant::Inputs& in) override;
-  // [time, per body its 13 pose values (protocol::kPoseWidth), with a virtual mass its
-  // previous window's velocities (VirtualMass::save), then the contact memory
+  // [time, per body its 13 pose values (protocol::kPoseWidth), with a virtual mass the
+  // previous window's applied wrenches (VirtualMass::save), then the contact memory
   // (solver::ContactMemory::save)]: everything a substep carries to the next, so a rollback
   // repeats the windows bit for bit, warm starts included.
   std::vector<double> state() const override;

@@ -27,10 +27,11 @@ TEST(FluidProgram, DfgCylinderStandaloneWritesTheDragHistory) {
   const Series force = read_series(dir / "dfg.h5", "/bodies/cylinder/force");
   ASSERT_EQ(force.rows, 11u);  // t = 0 and 10 windows
   // C = 2 F / (rho U_mean^2 D T); at 10 cells per diameter the FBM staircase gives
-  // C_D = 5.34 (reference 5.5795) and C_L about 0.011 (reference 0.0106).
+  // C_D = 5.354 with the default surface offset (5.34 without: the grid-aligned cylinder
+  // gains few faces; reference 5.5795) and C_L about 0.011 (reference 0.0106).
   const double scale = 2 / (0.2 * 0.2 * 0.1 * 0.01);
   const std::size_t last = force.rows - 1;
-  EXPECT_NEAR(scale * force.at(last, 0), 5.34, 0.02);
+  EXPECT_NEAR(scale * force.at(last, 0), 5.354, 0.01);
   EXPECT_NEAR(scale * force.at(last, 1), 0.011, 0.003);
   EXPECT_NEAR(scale * force.at(last - 1, 0), scale * force.at(last, 0), 1e-3);  // steady
   const Series substeps = read_series(dir / "dfg.h5", "/coupling/participants/fluid/substeps");
@@ -50,6 +51,7 @@ double hasimoto_error(const std::string& name, const std::string& extra_options)
   EXPECT_EQ(run_standalone("cosim-fluid", dir / "hasimoto.yaml", dir / "hasimoto.h5"), 0);
   const Series force = read_series(dir / "hasimoto.h5", "/bodies/sphere/force");
   EXPECT_EQ(force.rows, 7u);
+  if (force.rows < 2) return std::nan("");  // the run failed: reported above
   const std::size_t last = force.rows - 1;
   EXPECT_NEAR(force.at(last - 1, 0), force.at(last, 0), 1e-4 * force.at(last, 0));  // steady
   // U: the mean over the cells of the last field (uniform and periodic: the face mean).
