@@ -36,6 +36,8 @@ Axis::Axis(std::vector<double> faces, bool periodic)
   if (!periodic_ && cells_ < 2)
     throw std::invalid_argument("axis: a bounded axis needs at least two cells for its wall closure");
   const double length = faces.back() - faces.front();
+  for (int i = 0; i < cells_; ++i)
+    max_width_ = std::max(max_width_, faces[static_cast<std::size_t>(i) + 1] - faces[static_cast<std::size_t>(i)]);
   faces_.resize(faces.size() + 2 * kGhost);
   for (int i = 0; i <= cells_; ++i)
     faces_[static_cast<std::size_t>(i + kGhost)] = faces[static_cast<std::size_t>(i)];
@@ -55,12 +57,6 @@ Axis::Axis(std::vector<double> faces, bool periodic)
       at(cells_ + g) = 2 * at(cells_) - at(cells_ - g);
     }
   }
-}
-
-double Axis::max_width() const {
-  double widest = 0;
-  for (int i = 0; i < cells_; ++i) widest = std::max(widest, width(i));
-  return widest;
 }
 
 }  // namespace cosim::fluid

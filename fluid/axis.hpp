@@ -22,7 +22,7 @@ class Axis {
   double face(int i) const { return faces_[static_cast<std::size_t>(i + kGhost)]; }
   double centre(int i) const { return 0.5 * (face(i) + face(i + 1)); }
   double width(int i) const { return face(i + 1) - face(i); }
-  double max_width() const;
+  double max_width() const { return max_width_; }
   // A periodic axis of one cell carries no variation: its derivative terms vanish and are
   // skipped (a two-dimensional problem is one cell layer thick and periodic).
   bool degenerate() const { return periodic_ && cells_ == 1; }
@@ -33,6 +33,7 @@ class Axis {
   std::vector<double> faces_;  // faces -kGhost .. cells + kGhost
   int cells_ = 0;
   bool periodic_ = false;
+  double max_width_ = 0;
 };
 
 }  // namespace cosim::fluid

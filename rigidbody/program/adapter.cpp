@@ -58,8 +58,8 @@ participant::Outputs RigidSolver::initialise(const scene::Scene& scene, const st
   // The scene gives the initial poses (with each mesh's centre-of-mass shift), so the
   // coupler's are not needed; a resumed run brings its own state.
   scene_ = scene;
-  world_ = make_world(scene_);
   const ProgramOptions options = program_options(scene_);
+  world_ = make_world(scene_, options);
   virtual_mass_ = VirtualMass(options.virtual_mass, options.settings.body_forces.fluid_density);
   if (!state.empty()) restore(state);
   return {poses(), {}, 0};

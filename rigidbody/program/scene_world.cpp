@@ -127,8 +127,9 @@ world::BodyDesc body_of(const scene::Body& b, bool friction, bool convex_hull) {
   return d;
 }
 
-std::unique_ptr<world::World> make_world(const scene::Scene& scene) {
-  const ProgramOptions options = program_options(scene);
+std::unique_ptr<world::World> make_world(const scene::Scene& scene) { return make_world(scene, program_options(scene)); }
+
+std::unique_ptr<world::World> make_world(const scene::Scene& scene, const ProgramOptions& options) {
   auto w = std::make_unique<world::World>(options.settings);
   const bool friction = scene.has_effect(scene::Effect::Friction);
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {

@@ -36,5 +36,7 @@ world::BodyDesc body_of(const scene::Body& body, bool friction, bool convex_hull
 // The scene's bodies in scene order, then the walls. On the heap: a World is neither
 // copyable nor movable.
 std::unique_ptr<world::World> make_world(const scene::Scene& scene);
+// The same with the options already read (a caller that needs them too reads them once).
+std::unique_ptr<world::World> make_world(const scene::Scene& scene, const ProgramOptions& options);
 
 }  // namespace cosim::program
