@@ -267,8 +267,32 @@ void NavierStokes::project(double dt) {
     COSIM_PETSC(DMDAVecRestoreArray(dm, u_[c], &u));
   }
   COSIM_PETSC(DMDAVecRestoreArrayRead(pdm, p_local_, &phi));
-  COSIM_PETSC(VecAXPY(p_, fluid_.density, phi_));
+  update_pressure();
   COSIM_PETSC(PetscLogEventEnd(log_events().projection, 0, 0, 0, 0));
+}
+
+// p += rho phi, or in the rotational form (TimeStepOptions::rotational_pressure)
+// p += rho (phi - theta nu div u*): the implicit viscous term acted on u*, whose gradient
+// part the projection removes afterwards, and the rotational form puts that part's viscous
+// stress into the pressure. local_ still holds u* here.
+void NavierStokes::update_pressure() {
+  if (!controller_.options().rotational_pressure) {
+    COSIM_PETSC(VecAXPY(p_, fluid_.density, phi_));
+    return;
+  }
+  const double theta = controller_.options().theta;
+  DM pdm = grid_.pressure_dm();
+  PetscScalar*** p = nullptr;
+  const PetscScalar*** phi = nullptr;
+  COSIM_PETSC(DMDAVecGetArray(pdm, p_, &p));
+  COSIM_PETSC(DMDAVecGetArrayRead(pdm, phi_, &phi));
+  for_each_index(grid_.owned(pdm), [&](const Index& m) {
+    double update = phi[m[2]][m[1]][m[0]];
+    if (!pressure_solver_.closed(m)) update -= theta * viscosity_.at_cell(m) * divergence(grid_, local_, m);
+    p[m[2]][m[1]][m[0]] += fluid_.density * update;
+  });
+  COSIM_PETSC(DMDAVecRestoreArrayRead(pdm, phi_, &phi));
+  COSIM_PETSC(DMDAVecRestoreArray(pdm, p_, &p));
 }
 
 }  // namespace cosim::fluid

@@ -2,6 +2,8 @@
 // Incompressible Navier-Stokes on the MAC grid by incremental pressure correction:
 //   (u* - u^n)/dt + AB2[div(u u)] = -grad(p^{n-1/2})/rho + nu/2 lap(u* + u^n) + f
 //   div grad(phi) = div(u*)/dt,  u^{n+1} = u* - dt grad(phi),  p^{n+1/2} = p^{n-1/2} + rho phi
+// (or, in the rotational form of TimeStepOptions::rotational_pressure,
+// p^{n+1/2} = p^{n-1/2} + rho (phi - theta nu div u*); theta = 1/2 unless set otherwise).
 // Convection explicit (variable-step Adams-Bashforth 2, Euler on the first step),
 // viscosity implicit (Crank-Nicolson): second order in time for the velocity. A
 // generalized-Newtonian viscosity is evaluated from u^n (lagged, so first order in time
@@ -84,6 +86,7 @@ class NavierStokes {
  private:
   void predict(double dt);
   void project(double dt);
+  void update_pressure();
   double boundary_value(int c, const Index& p, double t) const;
 
   const Grid& grid_;

@@ -24,11 +24,12 @@ class PressureSolver {
   // u* - dt grad(phi) divergence-free, with the imposed faces (may be null) kept as they
   // are and phi = 0 in cells they enclose; returns the number of Krylov iterations.
   int solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi);
+  // An owned cell inside a body or a pocket they close, as of the last solve: phi = 0 there.
+  bool closed(const Index& cell) const;
 
  private:
   void create();
   void release();
-  bool closed(const Index& cell) const;  // with the current imposed faces
   void update_null_space();
   static PetscErrorCode compute_operator(KSP ksp, Mat A, Mat P, void* self);
 

@@ -19,6 +19,7 @@ using scene::Reader;
 constexpr std::array face_names{"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
 constexpr std::array boundary_names{"wall", "inflow", "outflow", "periodic"};
 constexpr std::array profile_names{"uniform", "parabolic"};
+constexpr std::array pressure_update_names{"standard", "rotational"};
 constexpr std::array viscosity_names{"newtonian", "power-law", "carreau"};
 
 const scene::Participant& section(const scene::Scene& scene) {
@@ -164,6 +165,7 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   s.steps.cfl = options.number("cfl", s.steps.cfl, Range::above(0));
   s.steps.dt_initial = options.number("dt_initial", std::min(s.steps.dt_initial, p.dt), Range::left_open(0, p.dt));
   s.steps.theta = options.number("theta", s.steps.theta, Range::closed(0.5, 1));
+  s.steps.rotational_pressure = options.choice("pressure_update", pressure_update_names, 0) == 1;
   s.fbm.subsamples = options.integer("subsamples", s.fbm.subsamples, Range::at_least(1));
   s.fbm.offset = options.number("surface_offset", fluid::kCalibratedSurfaceOffset, Range::at_least(0));
   try {

@@ -36,7 +36,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 TEST(FluidScene, ReadsGridFluidBoundariesAndBodies) {
   const FluidSetup s = setup_of(oscillating_cylinder_scene(
       "      cfl: 0.4\n      subsamples: 2\n      petsc: -pressure_pc_type hypre -pressure_ksp_rtol 1e-9\n"
-      "      body_force: [1.5, 0, -2]\n"));
+      "      body_force: [1.5, 0, -2]\n      pressure_update: rotational\n"));
   ASSERT_EQ(s.axes.size(), 3u);
   EXPECT_EQ(s.axes[0].cells(), 16);
   EXPECT_EQ(s.axes[1].cells(), 8);
@@ -51,6 +51,8 @@ TEST(FluidScene, ReadsGridFluidBoundariesAndBodies) {
   EXPECT_EQ(s.steps.dt_max, 0.01);
   EXPECT_EQ(s.steps.cfl, 0.4);
   EXPECT_EQ(s.fbm.subsamples, 2);
+  EXPECT_TRUE(s.steps.rotational_pressure);
+  EXPECT_FALSE(setup_of(oscillating_cylinder_scene()).steps.rotational_pressure);
   const PetscFlags flags{{"-pressure_pc_type", "hypre"}, {"-pressure_ksp_rtol", "1e-9"}};
   EXPECT_EQ(s.petsc, flags);
   ASSERT_EQ(s.bodies.size(), 1u);
@@ -137,6 +139,7 @@ TEST(FluidScene, ErrorsNameFileLineKeyAndValue) {
       {"amplitude: [0.05, 0, 0]", "amplitude: [0, 0, 0]", "motion.cyl.amplitude", "[0, 0, 0]"},
       {"density: 1000", "density: 1000\n      body_force: [1, 0]", "body_force", "[1, 0]"},
       {"density: 1000", "density: 1000\n      petsc: hypre", "petsc", "hypre"},
+      {"density: 1000", "density: 1000\n      pressure_update: incremental", "pressure_update", "incremental"},
   };
   for (const BadOption& c : cases) {
     const scene::SceneError e = error_of(replaced(good, c.from, c.to));
