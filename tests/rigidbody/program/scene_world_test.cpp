@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "cosim_process.hpp"
 #include "rigidbody/program/scene_world.hpp"
@@ -22,6 +23,22 @@ std::string scene_text(const std::string& effects, const std::string& bodies, co
 const std::string ball = "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2500}, position: [0, 0, 1]}\n";
 
 double mass(const world::World& w, std::uint32_t i) { return 1.0 / w.inertias()[i].inverse_mass; }
+
+struct Refusal {
+  std::string key, message;
+};
+
+// What reading the options of `text` with `read` refuses (a failure if it accepts them).
+template <typename Read>
+Refusal refusal(const std::string& text, Read read) {
+  try {
+    read(scene::load_scene_from_string(text));
+  } catch (const scene::SceneError& e) {
+    return {e.key, e.what()};
+  }
+  ADD_FAILURE() << "accepted:\n" << text;
+  return {};
+}
 
 TEST(SceneWorld, EveryShapeHasTheMassOfItsVolume) {
   const auto dir = testing::scratch_dir("shapes");
@@ -67,47 +84,30 @@ TEST(SceneWorld, EveryShapeHasTheMassOfItsVolume) {
   EXPECT_NEAR((w.states()[6].position - Eigen::Vector3d(1.5, 2.5, 3.5)).norm(), 0.0, 1e-6);
 }
 
+const auto read_settings = [](const scene::Scene& scene) { settings_of(scene); };
+
 TEST(SceneWorld, UnknownOptionIsNamed) {
-  const auto scene = scene::load_scene_from_string(scene_text("[gravity]", ball, "{iteration: 5}"));
-  try {
-    settings_of(scene);
-    FAIL() << "no error";
-  } catch (const scene::SceneError& e) {
-    EXPECT_EQ(e.key, "participants.rigidbody.options.iteration");
-  }
+  EXPECT_EQ(refusal(scene_text("[gravity]", ball, "{iteration: 5}"), read_settings).key,
+            "participants.rigidbody.options.iteration");
 }
 
 TEST(SceneWorld, BadSolverIsNamed) {
-  const auto scene = scene::load_scene_from_string(scene_text("[gravity]", ball, "{solver: newton}"));
-  EXPECT_THROW(
-      try { settings_of(scene); } catch (const scene::SceneError& e) {
-        EXPECT_EQ(e.key, "participants.rigidbody.options.solver");
-        throw;
-      },
-      scene::SceneError);
+  EXPECT_EQ(refusal(scene_text("[gravity]", ball, "{solver: newton}"), read_settings).key,
+            "participants.rigidbody.options.solver");
 }
 
 TEST(SceneWorld, BuoyancyNeedsFluidDensity) {
-  const auto scene = scene::load_scene_from_string(scene_text("[gravity, buoyancy]", ball));
-  EXPECT_THROW(
-      try { settings_of(scene); } catch (const scene::SceneError& e) {
-        EXPECT_EQ(e.key, "participants.rigidbody.options.fluid_density");
-        throw;
-      },
-      scene::SceneError);
+  EXPECT_EQ(refusal(scene_text("[gravity, buoyancy]", ball), read_settings).key,
+            "participants.rigidbody.options.fluid_density");
   const auto with = scene::load_scene_from_string(scene_text("[gravity, buoyancy]", ball, "{fluid_density: 1000}"));
   EXPECT_EQ(settings_of(with).body_forces.fluid_density, 1000.0);
 }
 
 TEST(SceneWorld, VirtualMassNeedsFluidDensity) {
-  const auto scene = scene::load_scene_from_string(scene_text("[gravity]", ball, "{virtual_mass: 1}"));
-  try {
-    program_options(scene);
-    FAIL() << "virtual_mass without fluid_density accepted";
-  } catch (const scene::SceneError& e) {
-    EXPECT_EQ(e.key, "participants.rigidbody.options.virtual_mass");
-    EXPECT_NE(std::string(e.what()).find("fluid_density"), std::string::npos) << e.what();
-  }
+  const Refusal r =
+      refusal(scene_text("[gravity]", ball, "{virtual_mass: 1}"), [](const scene::Scene& s) { program_options(s); });
+  EXPECT_EQ(r.key, "participants.rigidbody.options.virtual_mass");
+  EXPECT_NE(r.message.find("fluid_density"), std::string::npos) << r.message;
   const auto with = scene::load_scene_from_string(scene_text("[gravity]", ball, "{virtual_mass: 0.5, fluid_density: 1000}"));
   EXPECT_EQ(program_options(with).virtual_mass, 0.5);
 }
