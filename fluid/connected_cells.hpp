@@ -17,8 +17,9 @@ namespace cosim::fluid {
 class ConnectedCells {
  public:
   // Collective. Seeds: cells on an outflow face, or without an outflow the cells with no
-  // face imposed (a pocket holding such a cell stays a singular block: not caught);
-  // the rest is reached by sweeps over open faces, exchanging ghosts until nothing changes.
+  // face imposed, the bulk being the largest region they reach (a pocket closed around an
+  // untouched cell is not); regions are found by sweeps over open faces, exchanging ghosts
+  // until nothing changes.
   void update(const Grid& grid, const BoundaryConditions& bc, const ImposedFaces& imposed);
   bool connected(const Index& cell) const;  // an owned cell
 
