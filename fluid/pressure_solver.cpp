@@ -1,6 +1,7 @@
 #include "fluid/pressure_solver.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "fluid/cell_faces.hpp"
 #include "fluid/mac_operators.hpp"
@@ -92,33 +93,40 @@ PetscErrorCode PressureSolver::compute_operator(KSP ksp, Mat, Mat P, void* self)
   PetscCall(status);
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
-  if (s.constants_) PetscCall(MatSetNullSpace(P, s.constants_));
+  PetscCall(MatSetNullSpace(P, s.constants_));  // null: none, also in place of an earlier one
   PetscFunctionReturn(0);
 }
 
-// Cells inside bodies and pockets closed by them (ConnectedCells) keep phi = 0.
-bool PressureSolver::closed(const Index& m) const { return imposed_ && !connected_.connected(m); }
+// Cells inside bodies and slivers closed by them (ConnectedCells) keep phi = 0.
+bool PressureSolver::closed(const Index& m) const { return imposed_ && connected_.region(m) == 0; }
 
-// Without an outflow phi is fixed up to a constant over the cells that are unknowns.
+// phi is fixed up to a constant on each region no outflow pins: without bodies the whole
+// domain when it has no outflow, with them each region of ConnectedCells but the outflow's.
 void PressureSolver::update_null_space() {
-  if (bc_.has_outflow()) return;
   COSIM_PETSC(MatNullSpaceDestroy(&constants_));
   if (!imposed_) {
-    COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_TRUE, 0, nullptr, &constants_));
+    if (!bc_.has_outflow()) COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_TRUE, 0, nullptr, &constants_));
     return;
   }
   DM dm = grid_.pressure_dm();
-  Vec ones;
-  COSIM_PETSC(DMCreateGlobalVector(dm, &ones));
-  PetscScalar*** v = nullptr;
-  COSIM_PETSC(DMDAVecGetArray(dm, ones, &v));
-  for_each_index(grid_.owned(dm), [&](const Index& m) { v[m[2]][m[1]][m[0]] = closed(m) ? 0 : 1; });
-  COSIM_PETSC(DMDAVecRestoreArray(dm, ones, &v));
-  PetscReal norm = 0;
-  COSIM_PETSC(VecNormalize(ones, &norm));
-  // Every cell closed: the operator is the identity, without a null space.
-  if (norm > 0) COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_FALSE, 1, &ones, &constants_));
-  COSIM_PETSC(VecDestroy(&ones));
+  std::vector<Vec> constants;
+  for (const double region : connected_.regions()) {
+    if (region == ConnectedCells::kOutflowRegion) continue;
+    Vec ones;
+    COSIM_PETSC(DMCreateGlobalVector(dm, &ones));
+    PetscScalar*** v = nullptr;
+    COSIM_PETSC(DMDAVecGetArray(dm, ones, &v));
+    for_each_index(grid_.owned(dm), [&](const Index& m) { v[m[2]][m[1]][m[0]] = connected_.region(m) == region; });
+    COSIM_PETSC(DMDAVecRestoreArray(dm, ones, &v));
+    // The regions do not overlap: normalized, the vectors are orthonormal.
+    COSIM_PETSC(VecNormalize(ones, nullptr));
+    constants.push_back(ones);
+  }
+  // Every cell closed, or every region joined to an outflow: no null space.
+  if (!constants.empty())
+    COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_FALSE, static_cast<PetscInt>(constants.size()),
+                                   constants.data(), &constants_));
+  for (Vec& ones : constants) COSIM_PETSC(VecDestroy(&ones));
 }
 
 int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi) {

@@ -24,7 +24,7 @@ class PressureSolver {
   // u* - dt grad(phi) divergence-free, with the imposed faces (may be null) kept as they
   // are and phi = 0 in cells they enclose; returns the number of Krylov iterations.
   int solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi);
-  // An owned cell inside a body or a pocket they close, as of the last solve: phi = 0 there.
+  // An owned cell inside a body or a sliver they close, as of the last solve: phi = 0 there.
   bool closed(const Index& cell) const;
 
  private:
@@ -37,7 +37,7 @@ class PressureSolver {
   const BoundaryConditions& bc_;
   KSP ksp_ = nullptr;
   Vec rhs_ = nullptr;
-  MatNullSpace constants_ = nullptr;  // only when no outflow pins the pressure level
+  MatNullSpace constants_ = nullptr;  // a constant on each region no outflow pins, if any
   const ImposedFaces* imposed_ = nullptr;
   ConnectedCells connected_;  // with imposed_
   int assembled_generation_ = -1;
