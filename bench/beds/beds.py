@@ -5,11 +5,15 @@ cosim-rigidbody, over all written rows, as a fraction of the radius; with --bed,
 height h_b = 2 mean(z) (centres spread evenly over the bed), its solid fraction
 alpha = N (4/3) pi R^3 / (A h_b) averaged over the second half of the run (or from --since),
 and Richardson-Zaki's alpha = 1 - (u0 / u_t)^(1/m) for the scene's inflow u0, also with
-their wall correction log10 u_i = log10 u_t - d/D for a column of width D; with --swap, for
+their wall correction log10 u_i = log10 u_t - d/D for a column of width D; with --lone RUN,
+also with the settling velocity u_i of one bead in the same column on the same grid (a run
+of the scene with that bead alone), which holds the walls' and the grid's effect on a lone
+bead, so that what remains is the correlation itself, and the exponent n = ln(u0/u_i) /
+ln(1 - alpha) the bed's own alpha implies; with --swap, for
 the first two spheres (drafting, kissing and tumbling), the closest approach and the times
 at which the higher one becomes the lower.
 
-    bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4 --since 1.0] [--swap]
+    bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4 --since 1.0 --lone lone.h5] [--swap]
 
 Reference: ../shared/REFERENCES.md (Aguilar et al.; Richardson-Zaki, m = 2.4 at Re_p 500);
 the wall correction is Richardson & Zaki's (Trans. Inst. Chem. Eng. 32, 1954).
@@ -26,6 +30,20 @@ import numpy as np
 import yaml
 
 
+def settling_velocity(run):
+    """The first sphere's mean speed over the lower half of its fall, stopping one diameter
+    above where it lands: away from the start, and the staircase's oscillation, one cell
+    crossing long, averaged out by taking distance over time."""
+    with h5py.File(run, "r") as f:
+        body = next(iter(f["bodies"].values()))
+        radius = yaml.safe_load(f["run/scene_text"][()].decode())["bodies"][0]["shape"]["radius"]
+        t, z = body["time"][:], body["position"][:, 2]
+    lowest = z.min()
+    rows = np.flatnonzero((z <= (z[0] + lowest) / 2) & (z >= lowest + 2 * radius))
+    first, last = rows[0], rows[-1]
+    return (z[first] - z[last]) / (t[last] - t[first]), t[first], t[last]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("run")
@@ -33,6 +51,7 @@ def main():
     parser.add_argument("--terminal", type=float, default=0.226, help="u_t [m/s] (Aguilar's beads)")
     parser.add_argument("--exponent", type=float, default=2.4, help="Richardson-Zaki m (2.4 for Re_p >= 500)")
     parser.add_argument("--since", type=float, help="average the bed over t >= this (default: the run's second half)")
+    parser.add_argument("--lone", help="a run of one bead settling in the same column: its u_i for Richardson-Zaki")
     parser.add_argument("--swap", action="store_true", help="closest approach and order swaps of the first two spheres")
     args = parser.parse_args()
 
@@ -83,6 +102,12 @@ def main():
               f"u_t = {args.terminal} m/s, m = {args.exponent}: alpha {rz:.3f} ({alpha.mean() / rz - 1:+.1%}); "
               f"with the wall correction for d/D = {d_over_d:.3f}: alpha {rz_wall:.3f} "
               f"({alpha.mean() / rz_wall - 1:+.1%})")
+        if args.lone:
+            u_i, start, end = settling_velocity(args.lone)
+            rz_lone = 1 - (u0 / u_i) ** (1 / args.exponent)
+            print(f"a lone bead settles at u_i = {u_i:.4f} m/s ({start:.2f} to {end:.2f} s in {args.lone}): "
+                  f"Richardson-Zaki alpha {rz_lone:.3f} ({alpha.mean() / rz_lone - 1:+.1%}); the bed's alpha "
+                  f"implies n = {math.log(u0 / u_i) / math.log(1 - alpha.mean()):.2f} against m = {args.exponent}")
 
 
 if __name__ == "__main__":
