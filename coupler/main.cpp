@@ -1,5 +1,5 @@
 // cosim: the launcher and coupler.
-//   cosim check scene.yaml          validate a scene, show what would run
+//   cosim check scene.yaml          validate a scene (each program reads its section), show what would run
 //   cosim run scene.yaml [-o f.h5]  run it
 //   cosim run --resume f.h5         continue a run from its last checkpoint
 #include <CLI/CLI.hpp>
@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "launcher/command.hpp"
+#include "launcher/section_check.hpp"
 #include "run/coupler.hpp"
 #include "scene/error.hpp"
 #include "scene/plan.hpp"
@@ -18,6 +19,12 @@ namespace {
 int check(const std::string& file) {
   const auto scene = cosim::scene::load_scene(file);
   const auto plan = cosim::scene::plan_participants(scene);
+  const auto refused = cosim::launcher::refused_sections(scene, plan.start, cosim::launcher::own_directory());
+  if (!refused.empty()) {
+    std::cerr << "cosim: invalid scene: " << file << ": " << fmt::format("{}", fmt::join(refused, ", "))
+              << (refused.size() > 1 ? " refused their sections" : " refused its section") << " (above)\n";
+    return 2;
+  }
   std::cout << file << ": valid; " << scene.bodies.size() << " bodies, " << scene.windows()
             << " windows of " << scene.coupling.window << " s ("
             << cosim::scene::to_string(scene.coupling.scheme) << ")\n";

@@ -64,7 +64,11 @@ Process::Process(std::string name, const std::vector<std::string>& argv,
 }
 
 Process::Process(Process&& o) noexcept
-    : name_(std::move(o.name_)), pid_(o.pid_), ended_(std::move(o.ended_)), group_ended_(o.group_ended_) {
+    : name_(std::move(o.name_)),
+      pid_(o.pid_),
+      ended_(std::move(o.ended_)),
+      exit_status_(o.exit_status_),
+      group_ended_(o.group_ended_) {
   o.pid_ = -1;
 }
 
@@ -75,8 +79,13 @@ Process::~Process() {
 std::optional<std::string> Process::poll() {
   if (ended_ || pid_ <= 0) return ended_;
   int status = 0;
-  if (waitpid(pid_, &status, WNOHANG) == pid_) ended_ = describe(status);
+  if (waitpid(pid_, &status, WNOHANG) == pid_) ended(status);
   return ended_;
+}
+
+void Process::ended(int status) {
+  ended_ = describe(status);
+  if (WIFEXITED(status)) exit_status_ = WEXITSTATUS(status);
 }
 
 void Process::stop(std::chrono::milliseconds grace) {
@@ -93,7 +102,7 @@ void Process::stop(std::chrono::milliseconds grace) {
     if (!wait_until(clock::now() + std::chrono::seconds(5))) {
       kill(-pid_, SIGKILL);
       int status = 0;
-      if (waitpid(pid_, &status, 0) == pid_) ended_ = describe(status);
+      if (waitpid(pid_, &status, 0) == pid_) ended(status);
     }
   }
   // Helpers the participant forked into its group may outlive its main process. Once

@@ -29,13 +29,18 @@ class Process {
   // nullopt while running; otherwise how it ended ("exited with status 3",
   // "killed by signal 9 (Killed)").
   std::optional<std::string> poll();
+  // Its exit status once it has exited; nullopt while running or when a signal ended it.
+  std::optional<int> exit_status() const { return exit_status_; }
   // Waits up to `grace` for a voluntary exit, then SIGTERM, then SIGKILL to the group.
   void stop(std::chrono::milliseconds grace);
 
  private:
+  void ended(int status);
+
   std::string name_;
   pid_t pid_ = -1;
   std::optional<std::string> ended_;
+  std::optional<int> exit_status_;
   bool group_ended_ = false;
 };
 

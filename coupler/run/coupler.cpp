@@ -60,10 +60,16 @@ int run(const RunRequest& request) {
 
   const auto resume_hint = [&] {
     const auto from = session->checkpointed();
-    return from ? fmt::format("the run file {} keeps {} committed windows; continue from its checkpoint at "
-                              "window {} with: cosim run --resume {}",
-                              path.string(), session->committed(), *from, path.string())
-                : fmt::format("{} has no checkpoint to resume from", path.string());
+    if (from)
+      return fmt::format("the run file {} keeps {} committed windows; continue from its checkpoint at "
+                         "window {} with: cosim run --resume {}",
+                         path.string(), session->committed(), *from, path.string());
+    if (session->committed() == 0)
+      return fmt::format("no window was committed, so there is nothing to resume: fix the cause and run the "
+                         "scene again ({} records the error)",
+                         path.string());
+    return fmt::format("the run file {} keeps {} committed windows but no checkpoint to resume from",
+                       path.string(), session->committed());
   };
   try {
     session->execute();

@@ -1,6 +1,7 @@
 // cosim-fluid: the fluid program.
 //   started by `cosim run` (COSIM_ENDPOINT set)       a coupled participant
 //   cosim-fluid --standalone scene.yaml [-o f.h5]      bodies in prescribed motion
+//   cosim-fluid --check scene.yaml                     read the fluid section only (cosim check)
 // Arguments CLI11 does not know (-ksp_*, -pc_*, -log_view ...) go to PETSc. Under mpirun
 // rank 0 talks to the coupler or writes the run file, the others follow (mpi_team.hpp).
 #include <CLI/CLI.hpp>
@@ -12,6 +13,7 @@
 #include <spdlog/spdlog.h>
 
 #include "fluid/program/adapter.hpp"
+#include "fluid/program/scene_fluid.hpp"
 #include "fluid/program/standalone.hpp"
 #include "participant/mpi_team.hpp"
 #include "participant/run_participant.hpp"
@@ -57,11 +59,20 @@ int main(int argc, char** argv) {
 
   CLI::App app{"cosim-fluid: Navier-Stokes with fictitious-boundary bodies; coupled through cosim run, or --standalone"};
   app.allow_extras();
-  std::string scene, output;
-  app.add_option("--standalone", scene, "Run this scene with the bodies in prescribed motion")->required();
+  std::string scene, checked, output;
+  auto* mode = app.add_option_group("mode");
+  mode->add_option("--standalone", scene, "Run this scene with the bodies in prescribed motion");
+  mode->add_option("--check", checked, "Read this scene's fluid section as a run would, and say what is wrong");
+  mode->require_option(1);
   app.add_option("-o,--output", output, "Run file to write (default: the scene's output.file)");
   CLI11_PARSE(app, argc, argv);
   return with_petsc(app.remaining(), [&] {
-    return cosim::scene::exit_code("cosim-fluid", [&] { return cosim::program::run_fluid_standalone(scene, output); });
+    return cosim::scene::exit_code("cosim-fluid", [&] {
+      if (!checked.empty()) {
+        cosim::program::fluid_setup(cosim::scene::load_scene(checked));
+        return 0;
+      }
+      return cosim::program::run_fluid_standalone(scene, output);
+    });
   });
 }

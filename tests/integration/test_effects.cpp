@@ -79,5 +79,38 @@ TEST(Effects, RarefiedGasAddsTheTracker) {
   EXPECT_THAT(f.output, Not(HasSubstr("started fluid")));
 }
 
+// `cosim check` on the same scene: each built-in program reads its own section, so an
+// option only that program knows is refused before a run, with file, line, key and value,
+// instead of a scene called valid failing at the start of `cosim run`.
+TEST(Check, EachProgramItStartsReadsItsOwnSection) {
+  const auto dir = scratch_dir("check_sections");
+  const std::string all = "[gravity, contact, hydrodynamics, rarefied_gas]";
+  write_file(dir / "good.yaml", scene(all));
+  const Finished good = run_cosim({"check", (dir / "good.yaml").string()});
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  EXPECT_THAT(good.output, HasSubstr("starts tracker"));
+
+  struct Edit {
+    std::string from, to, program, message;
+  };
+  const Edit edits[] = {
+      {"walls: [z_min]", "walls: [z_mid]", "rigidbody",
+       ":10: participants.rigidbody.options.walls[0] = z_mid: expected one of"},
+      {"mu: 1.0", "mu: -1.0", "fluid", ":13: participants.fluid.options.viscosity.mu = -1.0: must be > 0"},
+      {"type: box, cells: [4, 4, 4]", "type: gmsh, file: no-such.msh", "tracker",
+       ":17: participants.tracker.options.mesh.file = no-such.msh"},
+  };
+  for (const Edit& e : edits) {
+    std::string yaml = scene(all);
+    yaml.replace(yaml.find(e.from), e.from.size(), e.to);
+    const auto file = dir / (e.program + ".yaml");
+    write_file(file, yaml);
+    const Finished bad = run_cosim({"check", file.string()});
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;
+    EXPECT_THAT(bad.output, HasSubstr("cosim-" + e.program + ": invalid scene: " + file.string() + e.message));
+    EXPECT_THAT(bad.output, HasSubstr("cosim: invalid scene: " + file.string() + ": " + e.program + " refused its section"));
+  }
+}
+
 }  // namespace
 }  // namespace cosim::testing

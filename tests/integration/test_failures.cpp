@@ -101,7 +101,7 @@ TEST(Failures, ParticipantSendingTheWrongSizeIsNamed) {
   const auto r = run_scene_text(dir, s.yaml());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.output, HasSubstr("participant 'spring' sent Forces with 12 values, expected 6 during start-up"));
-  EXPECT_THAT(r.output, HasSubstr("has no checkpoint to resume from"));
+  EXPECT_THAT(r.output, HasSubstr("no window was committed, so there is nothing to resume"));
 }
 
 // Guards against: a hung participant hanging the whole run.

@@ -285,8 +285,9 @@ TEST(Validation, YamlSyntaxErrorWithItsLine) {
             "scene.yaml:3: invalid YAML: end of map flow not found");
 }
 
-TEST(Validation, MissingFile) {
+TEST(Validation, MissingFileOrADirectory) {
   EXPECT_EQ(thrown([] { cosim::scene::load_scene("/no/such/scene.yaml"); }), "/no/such/scene.yaml: no such scene file");
+  EXPECT_EQ(thrown([] { cosim::scene::load_scene("/tmp"); }), "/tmp: not a file (a scene is a YAML file)");
 }
 
 }  // namespace

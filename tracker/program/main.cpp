@@ -1,6 +1,7 @@
 // cosim-tracker: the tracker program.
 //   started by `cosim run` (COSIM_ENDPOINT set)         a coupled participant (adapter.hpp)
 //   cosim-tracker --standalone scene.yaml [-o f.h5]     particles among the scene's obstacles
+//   cosim-tracker --check scene.yaml                    read the tracker section only (cosim check)
 // Under mpirun the gas is spread over the ranks (tracker/parallel): rank 0 talks to the
 // coupler or writes the run file, the others follow (participant/mpi_team.hpp).
 #include <CLI/CLI.hpp>
@@ -14,6 +15,7 @@
 #include "protocol/client.hpp"
 #include "scene/error.hpp"
 #include "tracker/program/adapter.hpp"
+#include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/standalone.hpp"
 
 namespace {
@@ -68,12 +70,18 @@ int main(int argc, char** argv) {
     code = coupled();
   } else {
     CLI::App app{"cosim-tracker: ballistic particles through polyhedral meshes among CSG obstacles"};
-    std::string scene, output;
-    app.add_option("--standalone", scene, "Run this scene's tracker alone")->required();
+    std::string scene, checked, output;
+    auto* mode = app.add_option_group("mode");
+    mode->add_option("--standalone", scene, "Run this scene's tracker alone");
+    mode->add_option("--check", checked, "Read this scene's tracker section as a run would, and say what is wrong");
+    mode->require_option(1);
     app.add_option("-o,--output", output, "Run file to write (default: the scene's output.file)");
     try {
       app.parse(argc, argv);
-      code = standalone(scene, output);
+      code = checked.empty() ? standalone(scene, output) : cosim::scene::exit_code("cosim-tracker", [&] {
+        cosim::tracker::read_tracker(cosim::scene::load_scene(checked));
+        return 0;
+      });
     } catch (const CLI::ParseError& e) {
       code = app.exit(e);
     }

@@ -1,0 +1,27 @@
+#include "launcher/section_check.hpp"
+
+#include <chrono>
+
+#include "launcher/command.hpp"
+#include "launcher/process.hpp"
+#include "scene/plan.hpp"
+
+namespace cosim::launcher {
+
+std::vector<std::string> refused_sections(const scene::Scene& scene, const std::vector<scene::Participant>& start,
+                                          const std::filesystem::path& programs_dir) {
+  std::vector<std::string> refused;
+  for (const scene::Participant& p : start) {
+    if (!p.command.empty() || !scene::is_builtin(p.name)) continue;
+    scene::Participant alone = p;
+    alone.ranks = 1;  // reading the section takes one process whatever the run's ranks
+    auto argv = participant_command(scene, alone, programs_dir);
+    argv.insert(argv.end(), {"--check", scene.file.string()});
+    Process program(p.name, argv, mpi_environment());
+    program.stop(std::chrono::milliseconds(static_cast<long>(scene.coupling.timeout * 1000)));
+    if (program.exit_status() != 0) refused.push_back(p.name);
+  }
+  return refused;
+}
+
+}  // namespace cosim::launcher
