@@ -108,25 +108,9 @@ void PressureSolver::update_null_space() {
     if (!bc_.has_outflow()) COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_TRUE, 0, nullptr, &constants_));
     return;
   }
-  DM dm = grid_.pressure_dm();
-  std::vector<Vec> constants;
-  for (const double region : connected_.regions()) {
-    if (region == ConnectedCells::kOutflowRegion) continue;
-    Vec ones;
-    COSIM_PETSC(DMCreateGlobalVector(dm, &ones));
-    PetscScalar*** v = nullptr;
-    COSIM_PETSC(DMDAVecGetArray(dm, ones, &v));
-    for_each_index(grid_.owned(dm), [&](const Index& m) { v[m[2]][m[1]][m[0]] = connected_.region(m) == region; });
-    COSIM_PETSC(DMDAVecRestoreArray(dm, ones, &v));
-    // The regions do not overlap: normalized, the vectors are orthonormal.
-    COSIM_PETSC(VecNormalize(ones, nullptr));
-    constants.push_back(ones);
-  }
+  region_means_.update(grid_, connected_);
   // Every cell closed, or every region joined to an outflow: no null space.
-  if (!constants.empty())
-    COSIM_PETSC(MatNullSpaceCreate(grid_.comm(), PETSC_FALSE, static_cast<PetscInt>(constants.size()),
-                                   constants.data(), &constants_));
-  for (Vec& ones : constants) COSIM_PETSC(VecDestroy(&ones));
+  if (!region_means_.empty()) constants_ = region_means_.null_space(grid_.comm());
 }
 
 int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi) {

@@ -10,6 +10,7 @@
 #include "fluid/grid.hpp"
 #include "fluid/imposed_faces.hpp"
 #include "fluid/local_velocity.hpp"
+#include "fluid/region_means.hpp"
 
 namespace cosim::fluid {
 
@@ -40,6 +41,7 @@ class PressureSolver {
   MatNullSpace constants_ = nullptr;  // a constant on each region no outflow pins, if any
   const ImposedFaces* imposed_ = nullptr;
   ConnectedCells connected_;  // with imposed_
+  RegionMeans region_means_;  // with connected_; constants_ removes through it
   int assembled_generation_ = -1;
 };
 
