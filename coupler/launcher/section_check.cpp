@@ -1,6 +1,7 @@
 #include "launcher/section_check.hpp"
 
 #include <chrono>
+#include <iostream>
 
 #include "launcher/command.hpp"
 #include "launcher/process.hpp"
@@ -19,7 +20,12 @@ std::vector<std::string> refused_sections(const scene::Scene& scene, const std::
     argv.insert(argv.end(), {"--check", scene.file.string()});
     Process program(p.name, argv, mpi_environment());
     program.stop(std::chrono::milliseconds(static_cast<long>(scene.coupling.timeout * 1000)));
-    if (program.exit_status() != 0) refused.push_back(p.name);
+    if (program.exit_status() == 0) continue;
+    // A program that refuses says why itself; one that did not end would leave no word.
+    if (!program.exit_status())
+      std::cerr << "cosim: " << argv.front() << " --check: " << program.poll().value_or("did not end")
+                << " (given coupling.timeout = " << scene.coupling.timeout << " s to read its section)\n";
+    refused.push_back(p.name);
   }
   return refused;
 }

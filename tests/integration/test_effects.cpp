@@ -110,6 +110,17 @@ TEST(Check, EachProgramItStartsReadsItsOwnSection) {
     EXPECT_THAT(bad.output, HasSubstr("cosim-" + e.program + ": invalid scene: " + file.string() + e.message));
     EXPECT_THAT(bad.output, HasSubstr("cosim: invalid scene: " + file.string() + ": " + e.program + " refused its section"));
   }
+
+  // A program that has not read its section within coupling.timeout is stopped and named:
+  // no program starts, let alone reads a scene, in a millisecond.
+  std::string slow = scene("[gravity, contact]");
+  const std::string scheme = "scheme: serial-explicit}";
+  slow.replace(slow.find(scheme), scheme.size(), "scheme: serial-explicit, timeout: 0.001}");
+  write_file(dir / "slow.yaml", slow);
+  const Finished stopped = run_cosim({"check", (dir / "slow.yaml").string()});
+  EXPECT_EQ(stopped.exit_code, 2) << stopped.output;
+  EXPECT_THAT(stopped.output, HasSubstr("cosim-rigidbody --check: killed by signal 15"));
+  EXPECT_THAT(stopped.output, HasSubstr("given coupling.timeout = 0.001 s to read its section"));
 }
 
 }  // namespace
