@@ -50,6 +50,11 @@ void ViscousSolver::create() {
     COSIM_PETSC(KSPCreate(grid.comm(), &ksp_[c]));
     COSIM_PETSC(KSPSetOptionsPrefix(ksp_[c], "viscous_"));
     COSIM_PETSC(KSPSetType(ksp_[c], KSPGMRES));
+    // SOR needs no storage beyond the matrix, where ILU(0), PETSc's default, keeps a copy:
+    // 0.26 KB per cell less at the same speed and iterations (fluid/README.md, Throughput).
+    PC pc;
+    COSIM_PETSC(KSPGetPC(ksp_[c], &pc));
+    COSIM_PETSC(PCSetType(pc, PCSOR));
     COSIM_PETSC(KSPSetTolerances(ksp_[c], 1e-10, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
     // The previous step's velocity is a good first guess.
     COSIM_PETSC(KSPSetInitialGuessNonzero(ksp_[c], PETSC_TRUE));
