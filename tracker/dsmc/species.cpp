@@ -49,7 +49,7 @@ struct Reader {
 
 }  // namespace
 
-const Species& SpeciesTable::at(const std::string& name) const {
+const Species& SpeciesTable::at(const std::string& name) const& {
   const auto it = species_.find(name);
   if (it == species_.end()) {
     std::string known;

@@ -35,7 +35,9 @@ class SpeciesError : public std::runtime_error {
 class SpeciesTable {
  public:
   // Throws SpeciesError naming the file and the species if it is not in the table.
-  const Species& at(const std::string& name) const;
+  const Species& at(const std::string& name) const&;
+  // On a temporary table (read_species(f).at("Ar")) a copy: a reference would dangle.
+  Species at(const std::string& name) && { return static_cast<const SpeciesTable&>(*this).at(name); }
   bool contains(const std::string& name) const { return species_.contains(name); }
   const std::map<std::string, Species>& all() const { return species_; }
   const std::filesystem::path& file() const { return file_; }
