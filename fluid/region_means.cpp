@@ -2,23 +2,11 @@
 
 #include <algorithm>
 #include <exception>
+#include <numeric>
 
 #include "fluid/petsc_check.hpp"
 
 namespace cosim::fluid {
-
-namespace {
-// Four partial sums, which the compiler may keep in vector lanes: a plain left-to-right sum
-// is one long chain of dependent additions (no reassociation without -ffast-math).
-double sum(const double* begin, const double* end) {
-  double s[4] = {0, 0, 0, 0};
-  const double* p = begin;
-  for (; p + 4 <= end; p += 4)
-    for (int l = 0; l < 4; ++l) s[l] += p[l];
-  for (; p < end; ++p) s[0] += *p;
-  return (s[0] + s[1]) + (s[2] + s[3]);
-}
-}  // namespace
 
 void RegionMeans::update(const Grid& grid, const ConnectedCells& connected) {
   comm_ = grid.comm();
@@ -48,7 +36,7 @@ void RegionMeans::remove(Vec x) const {
   PetscScalar* v = nullptr;
   COSIM_PETSC(VecGetArray(x, &v));
   std::vector<double> mean(cells_.size(), 0.0);
-  for (const Run& run : runs_) mean[run.region] += sum(v + run.begin, v + run.end);
+  for (const Run& run : runs_) mean[run.region] += std::accumulate(v + run.begin, v + run.end, 0.0);
   MPI_Allreduce(MPI_IN_PLACE, mean.data(), static_cast<int>(mean.size()), MPI_DOUBLE, MPI_SUM, comm_);
   for (std::size_t r = 0; r < mean.size(); ++r) mean[r] /= cells_[r];
   for (const Run& run : runs_) {
