@@ -16,6 +16,7 @@
 #include "fluid/program/scene_fluid.hpp"
 #include "fluid/program/standalone.hpp"
 #include "participant/mpi_team.hpp"
+#include "participant/program_args.hpp"
 #include "participant/run_participant.hpp"
 #include "scene/error.hpp"
 
@@ -59,20 +60,17 @@ int main(int argc, char** argv) {
 
   CLI::App app{"cosim-fluid: Navier-Stokes with fictitious-boundary bodies; coupled through cosim run, or --standalone"};
   app.allow_extras();
-  std::string scene, checked, output;
-  auto* mode = app.add_option_group("mode");
-  mode->add_option("--standalone", scene, "Run this scene with the bodies in prescribed motion");
-  mode->add_option("--check", checked, "Read this scene's fluid section as a run would, and say what is wrong");
-  mode->require_option(1);
-  app.add_option("-o,--output", output, "Run file to write (default: the scene's output.file)");
+  cosim::participant::ProgramArgs args;
+  cosim::participant::add_program_args(app, args, "Run this scene with the bodies in prescribed motion",
+                                       "fluid section");
   CLI11_PARSE(app, argc, argv);
   return with_petsc(app.remaining(), [&] {
     return cosim::scene::exit_code("cosim-fluid", [&] {
-      if (!checked.empty()) {
-        cosim::program::fluid_setup(cosim::scene::load_scene(checked));
+      if (!args.check.empty()) {
+        cosim::program::fluid_setup(cosim::scene::load_scene(args.check));
         return 0;
       }
-      return cosim::program::run_fluid_standalone(scene, output);
+      return cosim::program::run_fluid_standalone(args.standalone, args.output);
     });
   });
 }

@@ -6,6 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "participant/program_args.hpp"
 #include "participant/run_participant.hpp"
 #include "rigidbody/program/adapter.hpp"
 #include "rigidbody/program/scene_world.hpp"
@@ -24,21 +25,15 @@ int main(int argc, char** argv) {
   }
 
   CLI::App app{"cosim-rigidbody: rigid bodies with contacts; coupled through cosim run, or --standalone"};
-  std::string scene, checked, output;
-  auto* mode = app.add_option_group("mode");
-  mode->add_option("--standalone", scene, "Run this scene without a coupler");
-  mode->add_option("--check", checked, "Read this scene's bodies and rigidbody section as a run would, and say what is wrong");
-  mode->require_option(1);
-  app.add_option("-o,--output", output, "Run file to write (default: the scene's output.file)");
+  cosim::participant::ProgramArgs args;
+  cosim::participant::add_program_args(app, args, "Run this scene without a coupler", "bodies and rigidbody section");
   CLI11_PARSE(app, argc, argv);
 
   return cosim::scene::exit_code("cosim-rigidbody", [&] {
-    if (!checked.empty()) {
-      const auto s = cosim::scene::load_scene(checked);
-      cosim::program::make_world(s, cosim::program::program_options(s));
-    } else {
-      cosim::program::run_standalone(scene, output);
-    }
+    if (!args.check.empty())
+      cosim::program::make_world(cosim::scene::load_scene(args.check));
+    else
+      cosim::program::run_standalone(args.standalone, args.output);
     return 0;
   });
 }

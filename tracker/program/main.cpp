@@ -11,6 +11,7 @@
 #include <cstdlib>
 
 #include "participant/mpi_team.hpp"
+#include "participant/program_args.hpp"
 #include "participant/run_participant.hpp"
 #include "protocol/client.hpp"
 #include "scene/error.hpp"
@@ -70,16 +71,12 @@ int main(int argc, char** argv) {
     code = coupled();
   } else {
     CLI::App app{"cosim-tracker: ballistic particles through polyhedral meshes among CSG obstacles"};
-    std::string scene, checked, output;
-    auto* mode = app.add_option_group("mode");
-    mode->add_option("--standalone", scene, "Run this scene's tracker alone");
-    mode->add_option("--check", checked, "Read this scene's tracker section as a run would, and say what is wrong");
-    mode->require_option(1);
-    app.add_option("-o,--output", output, "Run file to write (default: the scene's output.file)");
+    cosim::participant::ProgramArgs args;
+    cosim::participant::add_program_args(app, args, "Run this scene's tracker alone", "tracker section");
     try {
       app.parse(argc, argv);
-      code = checked.empty() ? standalone(scene, output) : cosim::scene::exit_code("cosim-tracker", [&] {
-        cosim::tracker::read_tracker(cosim::scene::load_scene(checked));
+      code = args.check.empty() ? standalone(args.standalone, args.output) : cosim::scene::exit_code("cosim-tracker", [&] {
+        cosim::tracker::read_tracker(cosim::scene::load_scene(args.check));
         return 0;
       });
     } catch (const CLI::ParseError& e) {
