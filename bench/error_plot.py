@@ -4,8 +4,12 @@ case, one line per series through its resolutions, each point labelled with its 
     panels = {"DFG 2D-1 C_D": {"point": [(wall_seconds, error, "D/h=5"), ...], ...}, ...}
     figure(panels, "out.png", ylabel="|relative error|")
 
+A point may carry a fourth element, the range (low, high) its value takes over repeats
+(e.g. body positions): drawn as a vertical bar in the line's colour through the point.
+
 Log-log where every value is positive; a panel with a zero or negative value keeps a linear
-y axis (a log axis would drop those points).
+y axis (a log axis would drop those points). On a log axis a bar whose low end is not
+positive (a range through zero) runs to the bottom of the panel.
 """
 import matplotlib
 
@@ -24,20 +28,34 @@ def span_a_decade(ax, which, values):
 
 def draw(ax, series, title=None, ylabel=None, legend_title=None, by_wall=True):
     """One panel: series = {name: [(wall, value, label), ...]}, each joined in order of wall
-    time, or in the order given (by_wall=False: the order of the resolutions)."""
+    time, or in the order given (by_wall=False: the order of the resolutions); a point's
+    optional fourth element (low, high) is drawn as a bar."""
     values = [p[1] for points in series.values() for p in points]
-    for name, points in sorted(series.items()):
-        points = sorted(points) if by_wall else points
-        ax.plot([p[0] for p in points], [p[1] for p in points], "o-", label=name)
-        for wall, value, label in points:
-            ax.annotate(label, (wall, value), fontsize=7, xytext=(3, 3), textcoords="offset points")
+    bars = []  # (wall, low, high, colour)
+    for name, points in sorted(series.items(), key=lambda item: item[0]):
+        points = sorted(points, key=lambda p: p[:2]) if by_wall else points
+        line, = ax.plot([p[0] for p in points], [p[1] for p in points], "o-", label=name)
+        for p in points:
+            ax.annotate(p[2], (p[0], p[1]), fontsize=7, xytext=(3, 3), textcoords="offset points")
+            if len(p) > 3 and p[3] is not None:
+                bars.append((p[0], p[3][0], p[3][1], line.get_color()))
     walls = [p[0] for points in series.values() for p in points]
     ax.set_xscale("log")
     if walls:
         span_a_decade(ax, "x", walls)
-    if values and all(v > 0 for v in values):
+    log = bool(values) and all(v > 0 for v in values)
+    if log:
         ax.set_yscale("log")
-        span_a_decade(ax, "y", values)
+        span_a_decade(ax, "y", values + [v for _, low, high, _ in bars for v in (low, high) if v > 0])
+    if bars:
+        if log:  # the bars within the axis the points and the bars' positive ends set
+            ax.update_datalim([(wall, v) for wall, low, high, _ in bars for v in (low, high) if v > 0])
+            ax.autoscale_view()
+        bottom, top = ax.get_ylim()
+        for wall, low, high, colour in bars:
+            ax.vlines(wall, max(low, bottom) if log else low, high, colors=colour, lw=1.5, alpha=0.6)
+        if log:  # a bar through zero ends at the bottom, which must not move down to it
+            ax.set_ylim(bottom, top)
     ax.set(xlabel="wall time [s]", ylabel=ylabel, title=title)
     ax.grid(True, which="both", alpha=0.3)
     if series:

@@ -59,4 +59,17 @@ Axis::Axis(std::vector<double> faces, bool periodic)
   }
 }
 
+int Axis::cell_at(double x) const {
+  if (periodic_) {
+    const double period = hi() - lo();
+    x -= std::floor((x - lo()) / period) * period;
+  }
+  int lo_cell = 0, hi_cell = cells_;  // face(lo_cell) <= x < face(hi_cell), or clamped
+  while (hi_cell - lo_cell > 1) {
+    const int mid = (lo_cell + hi_cell) / 2;
+    (face(mid) <= x ? lo_cell : hi_cell) = mid;
+  }
+  return lo_cell;
+}
+
 }  // namespace cosim::fluid

@@ -23,6 +23,9 @@ class Axis {
   double centre(int i) const { return 0.5 * (face(i) + face(i + 1)); }
   double width(int i) const { return face(i + 1) - face(i); }
   double max_width() const { return max_width_; }
+  // The cell holding x: face(i) <= x < face(i + 1), clamped to the axis; on a periodic axis
+  // x is first wrapped into the period.
+  int cell_at(double x) const;
   // A periodic axis of one cell carries no variation: its derivative terms vanish and are
   // skipped (a two-dimensional problem is one cell layer thick and periodic).
   bool degenerate() const { return periodic_ && cells_ == 1; }

@@ -4,38 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fluid/control_volumes.hpp"
 #include "rigidbody/geometry/queries.hpp"
 
 namespace cosim::fluid {
-
-namespace {
-
-struct Interval {
-  double lo, hi;
-};
-
-// Extent along axis d of the control volume of point i: the cell for cell centres and for
-// the faces of other components, the span between the neighbouring cell centres for the
-// faces of component d itself.
-Interval control_interval(const Axis& axis, bool face_axis, PetscInt i) {
-  const int n = static_cast<int>(i);
-  return face_axis ? Interval{axis.centre(n - 1), axis.centre(n)} : Interval{axis.face(n), axis.face(n + 1)};
-}
-
-// First index in [lo, hi) for which pred is false; pred must be true then false.
-template <typename Pred>
-PetscInt partition_point(PetscInt lo, PetscInt hi, Pred pred) {
-  while (lo < hi) {
-    const PetscInt mid = lo + (hi - lo) / 2;
-    if (pred(mid))
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  return lo;
-}
-
-}  // namespace
 
 double IndicatorPatch::operator()(const Index& p) const {
   std::size_t at = 0, stride = 1;
@@ -57,16 +29,7 @@ IndicatorPatch indicator(const Grid& grid, int location, const RigidBody& body, 
     box.min.array() -= options.offset * widest;
     box.max.array() += options.offset * widest;
   }
-  Box range = within;
-  for (int d = 0; d < 3; ++d) {
-    const Axis& axis = grid.axis(d);
-    const bool face_axis = d == location;
-    range.lo[d] = partition_point(within.lo[d], within.hi[d],
-                                  [&](PetscInt i) { return control_interval(axis, face_axis, i).hi <= box.min[d]; });
-    range.hi[d] = std::max(range.lo[d], partition_point(range.lo[d], within.hi[d], [&](PetscInt i) {
-                                          return control_interval(axis, face_axis, i).lo < box.max[d];
-                                        }));
-  }
+  const Box range = control_volumes_meeting(grid, location, box, within);
   std::vector<double> values;
   values.reserve(static_cast<std::size_t>((range.hi[0] - range.lo[0]) * (range.hi[1] - range.lo[1]) *
                                           (range.hi[2] - range.lo[2])));

@@ -12,15 +12,11 @@
 #include <Eigen/Core>
 #include <array>
 
+#include "fluid/body_treatment.hpp"
 #include "fluid/fbm_indicator.hpp"
 #include "fluid/navier_stokes.hpp"
 
 namespace cosim::fluid {
-
-struct HydrodynamicLoad {
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N, on the body
-  Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // N m, about `centre`
-};
 
 // Collective: sums over all ranks. face_alpha[i] covers the ghosted faces of component i;
 // a face counts as the body's where it is >= 1/2 (the imposition rule). The stress is that

@@ -4,10 +4,6 @@
 
 namespace cosim::fluid {
 
-namespace {
-constexpr std::size_t kCellPatch = 3;
-}
-
 FictitiousBoundary::FictitiousBoundary(const Grid& grid, FbmOptions options)
     : grid_(grid), options_(options), imposed_(grid) {
   if (options.subsamples < 1) throw std::invalid_argument("fictitious boundary: subsamples must be >= 1");
@@ -70,10 +66,10 @@ std::vector<HydrodynamicLoad> FictitiousBoundary::loads(const NavierStokes& flow
   return out;
 }
 
-const IndicatorPatch& FictitiousBoundary::cell_indicator(std::size_t i) const { return bodies_.at(i).patches[kCellPatch]; }
+void FictitiousBoundary::attach(NavierStokes& flow) { flow.impose(&imposed_); }
 
 double FictitiousBoundary::grid_volume(std::size_t i) const {
-  const IndicatorPatch& alpha = cell_indicator(i);
+  const IndicatorPatch& alpha = bodies_.at(i).patches[kCellPatch];
   double volume = 0;
   for_each_index(alpha.range(), [&](const Index& m) { volume += alpha(m) * grid_.cell_volume(m); });
   MPI_Allreduce(MPI_IN_PLACE, &volume, 1, MPI_DOUBLE, MPI_SUM, grid_.comm());

@@ -12,6 +12,7 @@
 //   flow.step();  fbm.loads(flow)[sphere].force;  fbm.move(sphere, pose, velocity, omega);
 #include <vector>
 
+#include "fluid/body_treatment.hpp"
 #include "fluid/fbm_indicator.hpp"
 #include "fluid/fbm_load.hpp"
 #include "fluid/imposed_faces.hpp"
@@ -24,32 +25,34 @@ namespace cosim::fluid {
 // force integral sees); the cell-centre fractions stay the body's own volume.
 using FbmOptions = IndicatorOptions;
 
-class FictitiousBoundary {
+class FictitiousBoundary final : public BodyTreatment {
  public:
   // grid must outlive this object.
   explicit FictitiousBoundary(const Grid& grid, FbmOptions options = {});
 
-  std::size_t add(RigidBody body);  // returns the body's index
+  std::size_t add(RigidBody body) override;
   void move(std::size_t body, const geometry::Pose& pose, const Eigen::Vector3d& velocity,
-            const Eigen::Vector3d& angular_velocity);
-  const RigidBody& body(std::size_t i) const { return bodies_.at(i).body; }
-  std::size_t size() const { return bodies_.size(); }
+            const Eigen::Vector3d& angular_velocity) override;
+  const RigidBody& body(std::size_t i) const override { return bodies_.at(i).body; }
+  std::size_t size() const override { return bodies_.size(); }
 
+  // flow.impose(&imposed_faces()).
+  void attach(NavierStokes& flow) override;
   // The faces inside bodies with their rigid velocities (for NavierStokes::impose).
   const ImposedFaces& imposed_faces() const { return imposed_; }
-  // Force and torque (about the centre of mass) on every body from the flow's current
-  // state. Collective.
-  std::vector<HydrodynamicLoad> loads(const NavierStokes& flow) const;
+  // From the flow's current state: the load of the imposed faces (fbm_load.hpp).
+  std::vector<HydrodynamicLoad> loads(const NavierStokes& flow) const override;
   // sum of alpha times cell volume over the grid: the body's volume as the grid sees it.
   // Collective.
   double grid_volume(std::size_t i) const;
-  // Body i's alpha at this rank's owned cell centres (zero outside its patch).
-  const IndicatorPatch& cell_indicator(std::size_t i) const;
+  // The point-sampled (or sub-sampled) indicator.
+  IndicatorPatch cell_fraction(std::size_t i) const override { return bodies_.at(i).patches[kCellPatch]; }
   // Grid points tested against body i's shape on this rank at its last move (faces of the
   // three components and cell centres).
   std::size_t points_tested(std::size_t i) const;
 
  private:
+  static constexpr std::size_t kCellPatch = 3;
   struct Entry {
     RigidBody body;
     std::vector<IndicatorPatch> patches;  // velocity components 0..2, then cell centres

@@ -100,4 +100,13 @@ double Grid::cell_volume(const Index& cell) const {
          axes_[2].width(static_cast<int>(cell[2]));
 }
 
+double Grid::face_volume(int c, const Index& p) const {
+  double v = 1;
+  for (int d = 0; d < 3; ++d) {
+    const auto i = static_cast<int>(p[d]);
+    v *= d == c ? axes_[d].centre(i) - axes_[d].centre(i - 1) : axes_[d].width(i);
+  }
+  return v;
+}
+
 }  // namespace cosim::fluid

@@ -62,6 +62,9 @@ class Grid {
   // boundary condition, not from the momentum equation.
   bool on_boundary(int c, const Index& p) const;
   double cell_volume(const Index& cell) const;
+  // The control volume of face p of component c, not a boundary face: from the centre of
+  // the cell below to that of the cell above along c, the cell's widths across.
+  double face_volume(int c, const Index& p) const;
 
  private:
   void create();

@@ -32,7 +32,7 @@ const BoundaryConditions& checked(const BoundaryConditions& bc, const FluidPrope
 // FluidPressureSolve separates the pressure KSP (with its GAMG setup) from the viscous ones,
 // which PETSc logs under the same KSPSolve event; bench/fluid_throughput reads it.
 struct LogEvents {
-  PetscLogEvent convection_and_rhs, projection, pressure_solve;
+  PetscLogEvent convection_and_rhs, body_forcing, projection, pressure_solve;
 };
 
 const LogEvents& log_events() {
@@ -41,6 +41,7 @@ const LogEvents& log_events() {
     LogEvents e{};
     COSIM_PETSC(PetscClassIdRegister("cosim fluid", &id));
     COSIM_PETSC(PetscLogEventRegister("FluidMomentumRHS", id, &e.convection_and_rhs));
+    COSIM_PETSC(PetscLogEventRegister("FluidBodyForcing", id, &e.body_forcing));
     COSIM_PETSC(PetscLogEventRegister("FluidProjection", id, &e.projection));
     COSIM_PETSC(PetscLogEventRegister("FluidPressureSolve", id, &e.pressure_solve));
     return e;
@@ -74,6 +75,16 @@ NavierStokes::~NavierStokes() {
   VecDestroy(&p_);
   VecDestroy(&phi_);
   VecDestroy(&p_local_);
+}
+
+void NavierStokes::impose(const ImposedFaces* faces) {
+  if (faces && forcing_) throw std::invalid_argument("fluid: bodies are either imposed faces or a forcing, not both");
+  imposed_ = faces;
+}
+
+void NavierStokes::force(BodyForcing* forcing) {
+  if (forcing && imposed_) throw std::invalid_argument("fluid: bodies are either imposed faces or a forcing, not both");
+  forcing_ = forcing;
 }
 
 double NavierStokes::boundary_value(int c, const Index& p, double t) const {
@@ -117,6 +128,11 @@ StepReport NavierStokes::step(double dt) {
   previous_dt_ = dt;
   time_ += dt;
   local_.update(u_, bc_, time_);
+  if (forcing_) {
+    COSIM_PETSC(PetscLogEventBegin(log_events().body_forcing, 0, 0, 0, 0));
+    forcing_->finish_step(*this, dt);
+    COSIM_PETSC(PetscLogEventEnd(log_events().body_forcing, 0, 0, 0, 0));
+  }
   report_.time = time_;
   report_.dt = dt;
   report_.max_divergence = max_divergence(grid_, local_);
@@ -193,7 +209,8 @@ void NavierStokes::restore(std::span<const double> state) {
   viscosity_.update(local_);
 }
 
-// Momentum with the old pressure gradient, convection extrapolated, viscosity implicit.
+// Momentum with the old pressure gradient, convection extrapolated, viscosity implicit;
+// a body forcing sees the fully explicit estimate of the step and adds its force.
 void NavierStokes::predict(double dt) {
   const double t = time_, t_next = time_ + dt;
   const double theta = controller_.options().theta;
@@ -205,19 +222,29 @@ void NavierStokes::predict(double dt) {
   const PetscScalar*** p_old = nullptr;
   COSIM_PETSC(PetscLogEventBegin(log_events().convection_and_rhs, 0, 0, 0, 0));
   COSIM_PETSC(DMDAVecGetArrayRead(pdm, p_local_, &p_old));
+  std::array<Vec, 3> predicted{};
+  ForcingArrays arrays;
   for (int c = 0; c < 3; ++c) {
     DM dm = grid_.velocity_dm(c);
-    PetscScalar ***n_new = nullptr, ***rhs = nullptr;
+    PetscScalar*** n_new = nullptr;
     const PetscScalar*** n_old = nullptr;
     COSIM_PETSC(DMDAVecGetArray(dm, convection_[c], &n_new));
     COSIM_PETSC(DMDAVecGetArrayRead(dm, previous_convection_[c], &n_old));
-    COSIM_PETSC(DMDAVecGetArray(dm, rhs_[c], &rhs));
+    COSIM_PETSC(DMDAVecGetArray(dm, rhs_[c], &arrays.rhs[c]));
+    PetscScalar*** rhs = arrays.rhs[c];
+    PetscScalar*** estimate = nullptr;
+    if (forcing_) {
+      COSIM_PETSC(DMGetGlobalVector(dm, &predicted[c]));
+      COSIM_PETSC(DMDAVecGetArray(dm, predicted[c], &arrays.predicted[c]));
+      estimate = arrays.predicted[c];
+    }
     for_each_index(grid_.owned(dm), [&](const Index& p) {
       auto& out = rhs[p[2]][p[1]][p[0]];
       auto& conv = n_new[p[2]][p[1]][p[0]];
       if (grid_.on_boundary(c, p)) {
         out = boundary_value(c, p, t_next);
         conv = 0;
+        if (estimate) estimate[p[2]][p[1]][p[0]] = out;
         return;
       }
       conv = convection(grid_, local_, c, p);
@@ -233,15 +260,29 @@ void NavierStokes::predict(double dt) {
       const double pressure_gradient = face_gradient(grid_, bc_, p_old, c, p) / fluid_.density;
       out = local_(c, p) + dt * (-extrapolated + (1 - theta) * viscous + theta * next_boundary +
                                  fluid_.body_force[c] - pressure_gradient);
+      // The implicit part taken explicitly: the whole viscous term at u^n.
+      if (estimate) estimate[p[2]][p[1]][p[0]] = out + theta * dt * (viscous - next_boundary);
     });
     if (imposed_)
       for (const ImposedFace& f : imposed_->owned(c)) rhs[f.at[2]][f.at[1]][f.at[0]] = f.value;
-    COSIM_PETSC(DMDAVecRestoreArray(dm, rhs_[c], &rhs));
     COSIM_PETSC(DMDAVecRestoreArrayRead(dm, previous_convection_[c], &n_old));
     COSIM_PETSC(DMDAVecRestoreArray(dm, convection_[c], &n_new));
   }
   COSIM_PETSC(DMDAVecRestoreArrayRead(pdm, p_local_, &p_old));
   COSIM_PETSC(PetscLogEventEnd(log_events().convection_and_rhs, 0, 0, 0, 0));
+  if (forcing_) {
+    COSIM_PETSC(PetscLogEventBegin(log_events().body_forcing, 0, 0, 0, 0));
+    forcing_->force(*this, dt, arrays);
+    COSIM_PETSC(PetscLogEventEnd(log_events().body_forcing, 0, 0, 0, 0));
+  }
+  for (int c = 0; c < 3; ++c) {
+    DM dm = grid_.velocity_dm(c);
+    COSIM_PETSC(DMDAVecRestoreArray(dm, rhs_[c], &arrays.rhs[c]));
+    if (forcing_) {
+      COSIM_PETSC(DMDAVecRestoreArray(dm, predicted[c], &arrays.predicted[c]));
+      COSIM_PETSC(DMRestoreGlobalVector(dm, &predicted[c]));
+    }
+  }
   for (int c = 0; c < 3; ++c)
     report_.viscous_iterations[c] = viscous_.solve(c, theta * dt, viscosity_, imposed_, rhs_[c], u_[c]);
 }

@@ -15,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "fluid/body_forcing.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/grid.hpp"
 #include "fluid/imposed_faces.hpp"
@@ -55,7 +56,11 @@ class NavierStokes {
   // viscous solve, walls for the projection): the fictitious-boundary bodies. `faces` must
   // outlive the solver or be replaced; its owner may change the contents between steps.
   // nullptr for none.
-  void impose(const ImposedFaces* faces) { imposed_ = faces; }
+  void impose(const ImposedFaces* faces);
+  // A body force found inside each step (the immersed boundary's direct forcing): the
+  // operators stay those of the fluid alone. Not together with impose(). `forcing` must
+  // outlive the solver or be replaced; nullptr for none.
+  void force(BodyForcing* forcing);
 
   double stable_dt();          // from the CFL target and the controller's limits
   StepReport step();           // one step of stable_dt()
@@ -82,6 +87,8 @@ class NavierStokes {
   const LocalVelocity& local_velocity() const { return local_; }
   const ViscosityField& viscosity() const { return viscosity_; }
   const FluidProperties& fluid() const { return fluid_; }
+  // Assemblies of the projection's operator so far (PressureSolver::assemblies).
+  int pressure_assemblies() const { return pressure_solver_.assemblies(); }
 
  private:
   void predict(double dt);
@@ -104,6 +111,7 @@ class NavierStokes {
   double previous_dt_ = 0;  // 0: no convection history yet
   StepReport report_;
   const ImposedFaces* imposed_ = nullptr;
+  BodyForcing* forcing_ = nullptr;
 };
 
 }  // namespace cosim::fluid

@@ -46,6 +46,7 @@ void PressureSolver::release() {
 PetscErrorCode PressureSolver::compute_operator(KSP ksp, Mat, Mat P, void* self) {
   PetscFunctionBeginUser;
   auto& s = *static_cast<PressureSolver*>(self);
+  ++s.assemblies_;
   const Grid& grid = s.grid_;
   DM dm;
   PetscCall(KSPGetDM(ksp, &dm));

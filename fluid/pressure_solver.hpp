@@ -27,6 +27,9 @@ class PressureSolver {
   int solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi);
   // An owned cell inside a body or a sliver they close, as of the last solve: phi = 0 there.
   bool closed(const Index& cell) const;
+  // How often the operator was assembled: once for the fluid alone or an immersed boundary,
+  // at every change of the staircase's imposed faces.
+  int assemblies() const { return assemblies_; }
 
  private:
   void create();
@@ -43,6 +46,7 @@ class PressureSolver {
   ConnectedCells connected_;  // with imposed_
   RegionMeans region_means_;  // with connected_; constants_ removes through it
   int assembled_generation_ = -1;
+  int assemblies_ = 0;
 };
 
 }  // namespace cosim::fluid

@@ -15,7 +15,7 @@ at which the higher one becomes the lower.
 
     bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4 --since 1.0 --lone lone.h5] [--swap]
 
-Reference: ../shared/REFERENCES.md (Aguilar et al.; Richardson-Zaki, m = 2.4 at Re_p 500);
+Reference: docs/references.md (Aguilar et al.; Richardson-Zaki, m = 2.4 at Re_p 500);
 the wall correction is Richardson & Zaki's (Trans. Inst. Chem. Eng. 32, 1954).
 """
 

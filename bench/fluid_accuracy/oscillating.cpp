@@ -4,11 +4,10 @@
 #include <numbers>
 
 #include "channel.hpp"
-#include "fluid/fictitious_boundary.hpp"
 
 namespace cosim::bench {
 
-OscillatingRun oscillating_cylinder(int cells_per_diameter, double periods) {
+OscillatingRun oscillating_cylinder(int cells_per_diameter, double periods, const fluid::BodyOptions& method) {
   using namespace fluid;
   using namespace channel;
   constexpr double x0 = 1.1, y0 = 0.2, omega = 2 * std::numbers::pi * kOscillationFrequency;
@@ -20,25 +19,26 @@ OscillatingRun oscillating_cylinder(int cells_per_diameter, double periods) {
   BoundaryConditions bc(grid);
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(1e-3), {0, 0, 0}},
                     {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 1e-3});
-  FictitiousBoundary fbm(grid);
-  const auto body = fbm.add({geometry::Cylinder(D / 2, 3 * T),
+  const auto bodies = make_bodies(grid, method);
+  const auto body = bodies->add({geometry::Cylinder(D / 2, 3 * T),
                              geometry::Pose({x0, y0, T / 2}, Eigen::Quaterniond::Identity()),
                              {kOscillationAmplitude * omega, 0, 0}});
-  flow.impose(&fbm.imposed_faces());
+  bodies->attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
 
   OscillatingRun run;
   run.level = "D/h=" + std::to_string(cells_per_diameter);
+  run.method = label(method);
   const double to_coefficient = 2 / (D * T * U * U);
   auto record = [&] {
-    const HydrodynamicLoad load = fbm.loads(flow)[body];
+    const HydrodynamicLoad load = bodies->loads(flow)[body];
     run.history.push_back({flow.time(), to_coefficient * load.force[0], to_coefficient * load.force[1]});
   };
   // Before each step: the force of the step just finished, then the body where it is at the
   // next step's end.
   const auto steps = flow.advance_to(periods / kOscillationFrequency, [&](double t) {
     if (flow.time() > 0) record();
-    fbm.move(body, geometry::Pose({x0 + kOscillationAmplitude * std::sin(omega * t), y0, T / 2},
+    bodies->move(body, geometry::Pose({x0 + kOscillationAmplitude * std::sin(omega * t), y0, T / 2},
                                   Eigen::Quaterniond::Identity()),
              {kOscillationAmplitude * omega * std::cos(omega * t), 0, 0}, Eigen::Vector3d::Zero());
   });

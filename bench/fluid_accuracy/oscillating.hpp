@@ -1,10 +1,12 @@
-// The oscillating cylinder in the DFG channel (Wan & Turek; REFERENCES.md): how large the
+// The oscillating cylinder in the DFG channel (Wan & Turek; docs/references.md): how large the
 // force oscillations are that the staircase FBM adds when grid points switch between solid
 // and fluid, per grid level.
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include "fluid/body_methods.hpp"
 
 namespace cosim::bench {
 
@@ -16,20 +18,19 @@ struct ForceSample {
 };
 
 struct OscillatingRun {
-  std::string level;
+  std::string level, method;
   long cells = 0;
   int steps = 0;
   double seconds = 0;
   std::vector<ForceSample> history;  // after every step
 };
 
-// `periods` periods of the motion on D / h = cells_per_diameter (uniform cells, point-sampled
-// alpha).
-OscillatingRun oscillating_cylinder(int cells_per_diameter, double periods);
+// `periods` periods of the motion on D / h = cells_per_diameter (uniform cells).
+OscillatingRun oscillating_cylinder(int cells_per_diameter, double periods, const fluid::BodyOptions& method);
 
-// The study: D/h = 5, 10, 20 over two periods (quick: 5, 10 over 1.25); prints per level the
-// means over the last period and the spurious oscillations; csv (if not empty) gets every
-// level's history with its smooth part.
-void oscillating_study(bool quick, const std::string& csv);
+// The study: D/h = 5, 10, 20 over two periods (quick: 5, 10 over 1.25) per method; prints per
+// level the means over the last period and the spurious oscillations; csv (if not empty)
+// gets every level's history with its smooth part.
+void oscillating_study(bool quick, const std::string& csv, const std::vector<fluid::BodyOptions>& methods);
 
 }  // namespace cosim::bench

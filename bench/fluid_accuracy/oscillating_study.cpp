@@ -17,7 +17,7 @@ constexpr double kWindow = kPeriod / 20;
 void write_histories(const std::string& path, const std::vector<OscillatingRun>& runs) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
-  out << "level,time,drag,lift,drag_smooth,lift_smooth\n";
+  out << "level,method,time,drag,lift,drag_smooth,lift_smooth\n";
   for (const OscillatingRun& r : runs) {
     std::vector<double> time, drag, lift;
     for (const ForceSample& f : r.history) {
@@ -27,14 +27,14 @@ void write_histories(const std::string& path, const std::vector<OscillatingRun>&
     }
     const std::vector<double> drag_smooth = smoothed(time, drag, kWindow), lift_smooth = smoothed(time, lift, kWindow);
     for (std::size_t i = 0; i < time.size(); ++i)
-      out << r.level << ',' << time[i] << ',' << drag[i] << ',' << lift[i] << ',' << drag_smooth[i] << ','
+      out << r.level << ',' << r.method << ',' << time[i] << ',' << drag[i] << ',' << lift[i] << ',' << drag_smooth[i] << ','
           << lift_smooth[i] << '\n';
   }
 }
 
 }  // namespace
 
-void oscillating_study(bool quick, const std::string& csv) {
+void oscillating_study(bool quick, const std::string& csv, const std::vector<fluid::BodyOptions>& methods) {
   // Quick: a quarter period more than one, so that the last period starts after the
   // impulsive start (the body sets off at full speed through fluid at rest).
   const double periods = quick ? 1.25 : 2;
@@ -42,15 +42,16 @@ void oscillating_study(bool quick, const std::string& csv) {
               "Oscillating cylinder, %.2f periods of %.1f s; over the last period: mean C_D, C_L, peak |C_D| "
               "(smooth), spurious part (C - local quadratic fit over %.2f s): RMS and max\n",
               periods, kPeriod, kWindow);
-  PetscPrintf(PETSC_COMM_WORLD, "%-7s %6s %6s %9s %8s %8s %8s %9s %9s %9s %9s\n", "level", "cells", "steps",
+  PetscPrintf(PETSC_COMM_WORLD, "%-7s %-24s %6s %6s %9s %8s %8s %8s %9s %9s %9s %9s\n", "level", "method", "cells", "steps",
               "wall [s]", "mean C_D", "mean C_L", "peak C_D", "C_D rms", "C_D max", "C_L rms", "C_L max");
   std::vector<OscillatingRun> runs;
+  for (const fluid::BodyOptions& method : methods)
   for (int d : quick ? std::vector{5, 10} : std::vector{5, 10, 20}) {
-    runs.push_back(oscillating_cylinder(d, periods));
+    runs.push_back(oscillating_cylinder(d, periods, method));
     const OscillatingRun& r = runs.back();
     const ForceSummary s = summarise(r.history, (periods - 1) * kPeriod, kWindow);
-    PetscPrintf(PETSC_COMM_WORLD, "%-7s %6ld %6d %9.2f %8.4f %8.4f %8.3f %9.4f %9.4f %9.4f %9.4f\n", r.level.c_str(),
-                r.cells, r.steps, r.seconds, s.mean_drag, s.mean_lift, s.peak_drag, s.drag.rms, s.drag.max,
+    PetscPrintf(PETSC_COMM_WORLD, "%-7s %-24s %6ld %6d %9.2f %8.4f %8.4f %8.3f %9.4f %9.4f %9.4f %9.4f\n", r.level.c_str(),
+                r.method.c_str(), r.cells, r.steps, r.seconds, s.mean_drag, s.mean_lift, s.peak_drag, s.drag.rms, s.drag.max,
                 s.lift.rms, s.lift.max);
   }
   PetscMPIInt rank = 0;

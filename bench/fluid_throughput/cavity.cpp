@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <ctime>
 
+#include "fluid/body_methods.hpp"
 #include "fluid/navier_stokes.hpp"
 #include "fluid/petsc_check.hpp"
 
@@ -11,11 +12,12 @@ namespace {
 
 using namespace cosim::fluid;
 
-// This rank's time so far in the library's FluidPressureSolve event (the pressure KSP with
-// its multigrid setup), from PETSc's log.
-double pressure_solve_seconds() {
+// This rank's time so far in one of the library's events (FluidPressureSolve: the pressure
+// KSP with its multigrid setup; FluidBodyForcing: the immersed boundary's forcing and
+// loads), from PETSc's log.
+double event_seconds(const char* name) {
   PetscLogEvent event;
-  COSIM_PETSC(PetscLogEventGetId("FluidPressureSolve", &event));
+  COSIM_PETSC(PetscLogEventGetId(name, &event));
   PetscEventPerfInfo info{};
   COSIM_PETSC(PetscLogEventGetPerfInfo(PETSC_DETERMINE, event, &info));
   return info.time;
@@ -55,12 +57,22 @@ std::vector<double> centre_line(const NavierStokes& flow) {
   return line;
 }
 
+std::unique_ptr<BodyTreatment> sphere(const Grid& grid, CavityBody body) {
+  if (body == CavityBody::none) return nullptr;
+  auto bodies = body == CavityBody::ibm ? make_bodies(grid, IbmOptions{}) : make_bodies(grid, FbmOptions{});
+  bodies->add({geometry::Sphere(0.125), geometry::Pose({0.5, 0.3, 0.45}, Eigen::Quaterniond::Identity()),
+               {0, 0.25 * Cavity::kLidVelocity, 0}});
+  return bodies;
+}
+
 }  // namespace
 
 ThroughputRun run_cavity(const Cavity& cavity) {
   const MPI_Comm comm = PETSC_COMM_WORLD;
   ThroughputRun run;
-  run.solver = "cosim_fluid";
+  run.solver = cavity.body == CavityBody::none ? "cosim_fluid"
+               : cavity.body == CavityBody::ibm ? "+ibm sphere"
+                                                 : "+staircase";
   run.cavity = cavity;
   MPI_Comm_size(comm, &run.ranks);
   const PeakMemory memory(comm);
@@ -69,16 +81,30 @@ ThroughputRun run_cavity(const Cavity& cavity) {
   BoundaryConditions bc(grid);
   bc.set(2, Side::upper, Boundary::moving_wall({Cavity::kLidVelocity, 0, 0}));
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(cavity.viscosity()), {0, 0, 0}}, {});
+  const std::unique_ptr<BodyTreatment> bodies = sphere(grid, cavity.body);
+  if (bodies) bodies->attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
+  // The sphere where it is at the end of each step, and its load read after it, as a
+  // coupled run does.
+  const auto step = [&] {
+    if (bodies) {
+      const RigidBody& b = bodies->body(0);
+      bodies->move(0, geometry::Pose(b.pose.position() + cavity.dt() * b.velocity, b.pose.orientation()), b.velocity,
+                   b.angular_velocity);
+    }
+    const StepReport r = flow.step(cavity.dt());
+    if (bodies) bodies->loads(flow);
+    return r;
+  };
 
   MPI_Barrier(comm);
   const double cpu_start = cpu_seconds();
-  run.max_divergence = flow.step(cavity.dt()).max_divergence;
+  run.max_divergence = step().max_divergence;
   const double warm = synchronized_time(comm), cpu_warm = cpu_seconds();
-  const double pressure_warm = pressure_solve_seconds();
+  const double pressure_warm = event_seconds("FluidPressureSolve"), forcing_warm = event_seconds("FluidBodyForcing");
   long iterations = 0;
   for (int s = 1; s < cavity.steps; ++s) {
-    const StepReport r = flow.step(cavity.dt());
+    const StepReport r = step();
     iterations += r.pressure_iterations;
     run.max_divergence = std::max(run.max_divergence, r.max_divergence);
   }
@@ -87,7 +113,8 @@ ThroughputRun run_cavity(const Cavity& cavity) {
   run.first_step_seconds = slowest(cpu_warm - cpu_start, comm);
   run.seconds_per_step = (end - warm) / run.timed_steps;
   run.cpu_seconds_per_step = slowest(cpu_end - cpu_warm, comm) / run.timed_steps;
-  run.pressure_seconds_per_step = slowest(pressure_solve_seconds() - pressure_warm, comm) / run.timed_steps;
+  run.pressure_seconds_per_step = slowest(event_seconds("FluidPressureSolve") - pressure_warm, comm) / run.timed_steps;
+  run.forcing_seconds_per_step = slowest(event_seconds("FluidBodyForcing") - forcing_warm, comm) / run.timed_steps;
   run.pressure_iterations_per_step = static_cast<double>(iterations) / run.timed_steps;
   run.memory = memory.total();
   run.centre_line = centre_line(flow);

@@ -12,10 +12,15 @@
 
 namespace cosim::bench {
 
+// A body in the cavity: none, or a sphere a quarter of the side across moving through it
+// at a quarter of the lid's speed, held by the immersed boundary or the staircase.
+enum class CavityBody { none, ibm, staircase };
+
 struct Cavity {
   static constexpr double kLidVelocity = 1, kReynolds = 100, kCourant = 0.5;
   int n = 64;     // cells per side; even, so that x = y = 0.5 lies on faces
   int steps = 5;  // the first is the warm-up (assembly, multigrid setup)
+  CavityBody body = CavityBody::none;
   double viscosity() const { return kLidVelocity / kReynolds; }  // the side is 1
   double dt() const { return kCourant / (n * kLidVelocity); }
   double end_time() const { return steps * dt(); }
@@ -43,6 +48,7 @@ struct ThroughputRun {
   double cpu_seconds_per_step = 0;
   double pressure_seconds_per_step = kNotMeasured;  // wall, slowest rank
   double pressure_iterations_per_step = kNotMeasured;
+  double forcing_seconds_per_step = kNotMeasured;  // the immersed boundary's, wall, slowest rank
   double max_divergence = kNotMeasured;  // over all steps
   MemoryUse memory{kNotMeasured, kNotMeasured};
   std::vector<double> centre_line;  // u(0.5, 0.5, z) at the n cell-centre heights, at the end

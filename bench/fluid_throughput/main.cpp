@@ -111,7 +111,17 @@ bool physical(const ThroughputRun& r) {
   return ok;
 }
 
-int study(const std::vector<int>& sizes, int steps, bool openfoam, const std::string& csv) {
+// What a moving body adds to a step (the goal: at most 1.1 times the step without).
+void print_body_cost(const ThroughputRun& with, const ThroughputRun& without) {
+  const double ratio = with.cpu_seconds_per_step / without.cpu_seconds_per_step;
+  PetscPrintf(PETSC_COMM_WORLD,
+              "  %s: a step with the moving sphere costs %.3fx the step without (goal <= 1.1: %s); forcing and loads "
+              "%.4f s, pressure solve %.4f s against %.4f s\n",
+              with.solver.c_str(), ratio, ratio <= 1.1 ? "met" : "NOT met", with.forcing_seconds_per_step,
+              with.pressure_seconds_per_step, without.pressure_seconds_per_step);
+}
+
+int study(const std::vector<int>& sizes, int steps, bool openfoam, bool bodies, const std::string& csv) {
   for (int n : sizes)
     if (n < 4 || n % 2) throw std::invalid_argument("-n: the cells per side must be even and at least 4");
   if (steps < (openfoam ? 3 : 2)) throw std::invalid_argument("--steps: at least 2 (3 with --openfoam)");
@@ -126,14 +136,23 @@ int study(const std::vector<int>& sizes, int steps, bool openfoam, const std::st
   bool all_physical = true;
   for (int n : sizes) {
     const Cavity cavity{.n = n, .steps = steps};
-    const ThroughputRun& ours = runs.emplace_back(run_cavity(cavity));
-    print_row(ours);
-    print_memory_goal(ours);
-    all_physical = physical(ours) && all_physical;
+    const std::size_t ours = runs.size();
+    runs.push_back(run_cavity(cavity));
+    print_row(runs[ours]);
+    print_memory_goal(runs[ours]);
+    all_physical = physical(runs[ours]) && all_physical;
+    if (bodies)
+      for (CavityBody body : {CavityBody::ibm, CavityBody::staircase}) {
+        Cavity with = cavity;
+        with.body = body;
+        runs.push_back(run_cavity(with));
+        print_row(runs.back());
+        print_body_cost(runs.back(), runs[ours]);
+      }
     if (!openfoam) continue;
-    const ThroughputRun& theirs = runs.emplace_back(openfoam_run(cavity, ranks));
-    print_row(theirs);
-    print_comparison(runs[runs.size() - 2], theirs);
+    runs.push_back(openfoam_run(cavity, ranks));
+    print_row(runs.back());
+    print_comparison(runs[ours], runs.back());
   }
   if (!csv.empty() && rank() == 0) write_csv(csv, runs);
   return all_physical ? 0 : 1;
@@ -144,7 +163,7 @@ int study(const std::vector<int>& sizes, int steps, bool openfoam, const std::st
 int main(int argc, char** argv) {
   std::vector<int> sizes{64, 128};
   int steps = 5;
-  bool quick = false, openfoam = false;
+  bool quick = false, openfoam = false, bodies = false;
   std::string csv;
   CLI::App app{"fluid_throughput: cell-updates per second and memory per cell of cosim_fluid (3D lid-driven cavity)"};
   app.add_option("-n", sizes, "Cells per side, one run each (even)")->capture_default_str();
@@ -152,6 +171,9 @@ int main(int argc, char** argv) {
   app.add_flag("--quick", quick, "Smoke run: 16^3, 4 steps");
   app.add_flag("--openfoam", openfoam, "Also run icoFoam on the same case and compare");
   app.add_option("--csv", csv, "Also write the table to this CSV file");
+  app.add_flag("--bodies", bodies,
+               "Also run each size with a sphere (d = N/4 cells) moving through the cavity, held by the immersed "
+               "boundary and by the staircase, and compare their steps with the plain one's");
   CLI11_PARSE(app, argc, argv);
   if (quick) sizes = {16}, steps = 4;
 
@@ -163,7 +185,7 @@ int main(int argc, char** argv) {
   try {
     // The pressure-solve time comes from PETSc's event log.
     PetscCall(PetscLogDefaultBegin());
-    result = study(sizes, steps, openfoam, csv);
+    result = study(sizes, steps, openfoam, bodies, csv);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "fluid_throughput: %s\n", e.what());
   }

@@ -7,7 +7,7 @@ draws u/u_inf and h/d against t into a PNG.
 
     bench/tencate/tencate.py runs/tencate-e4.h5 [--case e4] [--png out.png] [--every 0.1] [--smooth 0.1]
 
-Reference values: ../shared/REFERENCES.md (ten Cate et al., Phys. Fluids 14, 2002).
+Reference values: docs/references.md (ten Cate et al., Phys. Fluids 14, 2002).
 """
 
 import argparse

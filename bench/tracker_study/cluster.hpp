@@ -1,5 +1,5 @@
 #pragma once
-// The sphere cluster of Strobl, Bannerman & Poeschel's Table 1 (REFERENCES.md), at any
+// The sphere cluster of Strobl, Bannerman & Poeschel's Table 1 (docs/references.md), at any
 // size: slightly polydisperse balls packed without overlap into a spherical region at the
 // centre of the unit box.
 

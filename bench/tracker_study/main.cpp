@@ -1,4 +1,4 @@
-// tracker_study: studies of the tracking against the references (REFERENCES.md, Tracker),
+// tracker_study: studies of the tracking against the references (docs/references.md, Tracker),
 // one part per source file; --part selects them.
 #include <CLI/CLI.hpp>
 

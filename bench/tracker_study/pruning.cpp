@@ -28,7 +28,7 @@ struct Published {
   double primitives, generated, executed, speed_up;
   int max_primitives;
 };
-// Table 1 of REFERENCES.md: events per step (averaged over 1000) of 25.2e6 particles.
+// Table 1 of docs/references.md: events per step (averaged over 1000) of 25.2e6 particles.
 // Generated: a primitive's next event computed; executed: a state changed or a wall hit.
 constexpr double published_particle_steps = 25.2e6;
 constexpr Published published[] = {

@@ -1,5 +1,5 @@
 #pragma once
-// SPARTA's `free` deck as REFERENCES.md describes it: a box of N^3 cubic cells of 1e-5 m
+// SPARTA's `free` deck as docs/references.md describes it: a box of N^3 cubic cells of 1e-5 m
 // with specular walls, argon at 273.15 K at rest, a number of particles per cell at
 // uniform random positions with Maxwellian velocities, no collisions.
 

@@ -1,5 +1,5 @@
 // tracker_throughput: ballistic particle moves per second on one core in SPARTA's `free`
-// deck (REFERENCES.md), for the event-driven tracking and the two baselines, and the
+// deck (docs/references.md), for the event-driven tracking and the two baselines, and the
 // bytes each particle takes; then particle-steps per second in SPARTA's `sphere` deck
 // (inflow, collisions, a diffuse ball). Fails (exit 1) when a particle ends outside its
 // cell, the kinetic energy drifts, which the specular walls must conserve, or the sphere
@@ -20,7 +20,7 @@ using cosim::tracker::Algorithm;
 
 namespace {
 
-constexpr double kSpartaMovesPerSecond = 19.5e6;  // REFERENCES.md, measured on this machine kind
+constexpr double kSpartaMovesPerSecond = 19.5e6;  // SPARTA's free deck, measured 2026-11-21 on a machine of this kind
 constexpr double kSpartaCollideDeck = 7.96e6;     // the collide deck, particle-steps/s
 constexpr double kSpartaSphereDeck = 46.3e6;      // the sphere deck, particle-steps/s
 // The seeded stream drifts to the flow around the ball (a denser cap in front, a thin wake):

@@ -1,5 +1,5 @@
 #pragma once
-// SPARTA's `sphere` deck as REFERENCES.md describes it, with a CSG ball for SPARTA's 1200
+// SPARTA's `sphere` deck as docs/references.md describes it, with a CSG ball for SPARTA's 1200
 // triangles: a box [-5,5]^3 m of 22^3 cells, open on every side, argon streaming at 2500 m/s
 // and 300 K (n = 7.03e18 m^-3) entering through every face, VSS collisions, a unit sphere
 // at the centre re-emitting diffusely at 300 K, dt 1e-5 s. The step is cosim-tracker's

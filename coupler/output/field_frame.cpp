@@ -1,7 +1,26 @@
 #include "output/field_frame.hpp"
 
+#include <algorithm>
+#include <set>
+
 namespace cosim::output {
 namespace {
+
+bool control(char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }
+
+// An HDF5 link name ("a/b" would nest, "." is the group itself) that is also an XDMF grid
+// name: XML 1.0 has no way to hold control characters (NUL would end HDF5's C string too).
+bool point_set_name(const std::string& name) {
+  return !name.empty() && name != "." && std::none_of(name.begin(), name.end(), [](char c) {
+    return c == '/' || control(c);
+  });
+}
+
+// Quoted, with control characters shown as '?' so that the message stays one readable line.
+std::string quoted(std::string name) {
+  std::replace_if(name.begin(), name.end(), control, '?');
+  return "'" + name + "'";
+}
 
 std::string topology_problem(const PolyhedralGrid& g) {
   if (g.cells == 0) return "a polyhedral grid without cells";
@@ -45,6 +64,18 @@ std::string grid_problem(const Grid& grid) {
   if (const auto* p = std::get_if<PolyhedralGrid>(&grid)) return topology_problem(*p);
   for (const auto& nodes : std::get<RectilinearGrid>(grid).nodes)
     if (nodes.size() < 2) return "an axis with fewer than 2 nodes";
+  return {};
+}
+
+std::string point_sets_problem(const std::vector<PointSet>& sets) {
+  std::set<std::string> seen;
+  for (const PointSet& s : sets) {
+    if (!point_set_name(s.name)) return "point set name " + quoted(s.name) + " cannot name an HDF5 dataset";
+    if (!seen.insert(s.name).second) return "point set name " + quoted(s.name) + " appears twice";
+    if (s.points.size() % 3 != 0)
+      return "point set " + quoted(s.name) + " has " + std::to_string(s.points.size()) +
+             " coordinates, not x y z triples";
+  }
   return {};
 }
 

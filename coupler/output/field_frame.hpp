@@ -44,9 +44,22 @@ struct CellField {
   std::vector<double> values;
 };
 
+// Points that belong to no cell, e.g. the surface markers of an immersed body: one XDMF
+// grid of Polyvertex topology per set, named after it, in the same time step as the cells.
+// A set may be empty (a body entirely outside the grid).
+struct PointSet {
+  std::string name;            // e.g. the body's name
+  std::vector<double> points;  // n x 3: x, y, z of a point together
+};
+
+// A frame without cell fields is none: nothing is written or sent, its point sets neither.
+// On several MPI ranks rank 0's frame is the one that counts (participant/mpi_team.hpp):
+// rank 0 alone fills the point sets, gathered from the others as the cell fields are.
 struct FieldFrame {
   Grid grid;
   std::vector<CellField> fields;
+  // With a default member initializer, frames built as {grid, fields} need not name it.
+  std::vector<PointSet> point_sets{};
 };
 
 std::size_t cell_count(const Grid& grid);
@@ -54,5 +67,8 @@ std::size_t cell_count(const Grid& grid);
 // not `cells` polyhedra of at least 4 faces of at least 3 vertices, all indices among
 // the vertices), or empty if it is.
 std::string grid_problem(const Grid& grid);
+// Why the point sets are not (a name that cannot name an HDF5 dataset or an XDMF grid, or
+// that appears twice; coordinates that are not x y z triples), or empty if they are.
+std::string point_sets_problem(const std::vector<PointSet>& sets);
 
 }  // namespace cosim::output

@@ -21,13 +21,17 @@ std::string step_name(std::uint64_t window) {
 }
 
 void check_frame(const FieldFrame& frame, const std::string& participant) {
-  if (const std::string problem = grid_problem(frame.grid); !problem.empty())
-    throw ObjectError("fields of " + participant + ": " + problem);
+  for (const std::string& problem : {grid_problem(frame.grid), point_sets_problem(frame.point_sets)})
+    if (!problem.empty()) throw ObjectError("fields of " + participant + ": " + problem);
   const std::size_t n = cell_count(frame.grid);
-  for (const CellField& f : frame.fields)
+  for (const CellField& f : frame.fields) {
     if (f.components < 1 || f.values.size() != n * static_cast<std::size_t>(f.components))
       throw ObjectError("field " + f.name + " of " + participant + ": " + std::to_string(f.values.size()) +
                         " values do not fit the grid");
+    if (f.name == kPointSetGroup && !frame.point_sets.empty())
+      throw ObjectError("field " + f.name + " of " + participant +
+                        ": the step's group of that name holds the point sets");
+  }
 }
 
 // A series without steps on the participant's grid: its shape is what a later frame's grid
@@ -61,6 +65,14 @@ void write_grid(hid_t participant_group, const Grid& grid) {
   const auto& nodes = std::get<RectilinearGrid>(grid).nodes;
   for (std::size_t a = 0; a < 3; ++a)
     write_array(group.get(), std::string(1, "xyz"[a]), {nodes[a].size()}, nodes[a].data());
+}
+
+// The point sets of a step already in the file, in name order.
+std::vector<XdmfPointSet> stored_point_sets(hid_t step) {
+  std::vector<XdmfPointSet> sets;
+  Handle points = open_group(step, kPointSetGroup);
+  for (const std::string& name : link_names(points.get())) sets.push_back({name, array_dims(points.get(), name).at(0)});
+  return sets;
 }
 
 // The series of a grid already in the file, as series_of() described it when it was written.
@@ -102,6 +114,13 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
     write_array(step.get(), f.name, dims, f.values.data());
     entry.fields.push_back({f.name, f.components});
   }
+  if (!frame.point_sets.empty()) {
+    Handle points = create_group(step.get(), kPointSetGroup);
+    for (const PointSet& p : frame.point_sets) {
+      write_array(points.get(), p.name, {p.points.size() / 3, 3}, p.points.data());
+      entry.point_sets.push_back({p.name, p.points.size() / 3});
+    }
+  }
   series.steps.push_back(std::move(entry));
 }
 
@@ -124,6 +143,11 @@ void FieldWriter::resume(hid_t file, std::uint64_t next_window) {
       Handle step = open_group(group.get(), name);
       XdmfStep entry{"/fields/" + participant + "/" + name, read_attribute<double>(step.get(), "time"), {}};
       for (const std::string& field : link_names(step.get())) {
+        // A cell field may have the group's name in a step without point sets.
+        if (field == kPointSetGroup && is_group(step.get(), field)) {
+          entry.point_sets = stored_point_sets(step.get());
+          continue;
+        }
         const auto dims = array_dims(step.get(), field);
         entry.fields.push_back({field, dims.size() > scalar_rank ? static_cast<int>(dims.back()) : 1});
       }

@@ -23,6 +23,11 @@ bool has_link(hid_t parent, const std::string& name) {
   return exists > 0;
 }
 
+bool is_group(hid_t parent, const std::string& name) {
+  Handle object(H5Oopen(parent, name.c_str(), H5P_DEFAULT), H5Oclose, "open " + child_path(parent, name));
+  return H5Iget_type(object.get()) == H5I_GROUP;
+}
+
 std::vector<std::string> link_names(hid_t group) {
   std::vector<std::string> names;
   const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {

@@ -14,6 +14,8 @@ Handle create_group(hid_t parent, const std::string& name);
 Handle open_group(hid_t parent, const std::string& name);
 Handle open_or_create_group(hid_t parent, const std::string& name);
 bool has_link(hid_t parent, const std::string& name);
+// Whether the object `name` links to is a group (false for a dataset).
+bool is_group(hid_t parent, const std::string& name);
 // The names in a group, in name order.
 std::vector<std::string> link_names(hid_t group);
 // Unlinks name; its object's space becomes free space of the file.

@@ -29,6 +29,10 @@
 //                        digits. cosim-fluid writes velocity (3), pressure and alpha on its
 //                        rectilinear grid; cosim-tracker count, mean_count, density,
 //                        velocity (3), temperature and pressure on its polyhedra
+//   /fields/<participant>/<window>/points/<set>  (n x 3) the x, y, z of each of the
+//                        frame's point sets (field_frame.hpp), e.g. an immersed body's
+//                        surface markers; (0 x 3) for a set without points; no group for a
+//                        frame without sets
 //   /checkpoint/         attr current ("a" or "b", fixed-length ASCII): the slot holding the
 //                        checkpoint; absent until the first checkpoint is complete
 //   /checkpoint/{a,b}/   attrs window (last committed window index + 1 = next window),
@@ -50,8 +54,10 @@
 // attribute moves /run's object header, and kills inside resume() then left files HDF5
 // could not open ("addr overflow").
 // Fields come with a sidecar <file>.xmf (XDMF 3: one temporal collection of 3DRectMesh or
-// Mixed grids per participant, referencing the datasets by the run file's name) that
-// ParaView opens (with its "XDMF Reader (Xdmf3ReaderS)" once a grid is polyhedral); it is rewritten, by rename, after every field write once the file is flushed.
+// Mixed grids per participant, referencing the datasets by the run file's name; with point
+// sets, each step a spatial collection of that grid and a Polyvertex grid per set, xdmf.hpp)
+// that ParaView opens (with its "XDMF Reader (Xdmf3ReaderS)" once a grid is polyhedral); it
+// is rewritten, by rename, after every field write once the file is flushed.
 // The file's descriptor is close-on-exec: participants forked while it is open must not
 // inherit it, nor with it HDF5's lock, which would keep --resume out after a crash.
 // Errors are std::runtime_error naming the file and the HDF5 object.

@@ -15,10 +15,19 @@ struct XdmfField {
   int components = 1;  // 1: a scalar, 3: a vector
 };
 
+// The group of a step that holds its point sets, one (points x 3) dataset per set.
+inline constexpr char kPointSetGroup[] = "points";
+
+struct XdmfPointSet {
+  std::string name;
+  std::size_t points = 0;
+};
+
 struct XdmfStep {
   std::string group;  // HDF5 path of the step's group, holding one dataset per field
   double time = 0.0;
   std::vector<XdmfField> fields;
+  std::vector<XdmfPointSet> point_sets{};  // in group/points
 };
 
 // Unstructured convex polyhedra: an XDMF "Mixed" topology of Polyhedron cells (type 16,
@@ -31,7 +40,12 @@ struct XdmfPolyhedra {
 };
 
 // The steps of one participant on one grid: rectilinear (node coordinates x, y, z in
-// grid_group, `cells` per axis) unless `polyhedra` has cells.
+// grid_group, `cells` per axis) unless `polyhedra` has cells. Once a step has point sets,
+// every step is a spatial collection of a grid "cells" and a Polyvertex grid per set, as
+// ParaView's Xdmf2 reader takes the first step's kind for all; without, a step is the
+// cells' grid alone. A set without points is left out: that reader fails on an empty
+// DataItem (the dataset is in the file all the same). That reader makes a vertex cell of
+// each point; the Xdmf3 readers give the points alone, without cells.
 struct XdmfSeries {
   std::string name;
   std::string grid_group;

@@ -7,6 +7,8 @@
 #include <utility>
 #include <variant>
 
+#include "protocol/point_set_arrays.hpp"
+
 namespace cosim::protocol {
 namespace {
 
@@ -79,8 +81,8 @@ std::size_t take_grid(std::vector<Array>& a, output::FieldFrame& frame, const st
 std::vector<Array> field_arrays(output::FieldFrame frame) {
   std::vector<Array> arrays;
   if (frame.fields.empty()) return arrays;
-  if (const std::string problem = output::grid_problem(frame.grid); !problem.empty())
-    throw ProtocolError("Field arrays: " + problem);
+  for (const std::string& problem : {output::grid_problem(frame.grid), output::point_sets_problem(frame.point_sets)})
+    if (!problem.empty()) throw ProtocolError("Field arrays: " + problem);
   std::visit([&](auto& grid) { push_grid(arrays, grid); }, frame.grid);
   for (output::CellField& f : frame.fields) {
     const auto components = static_cast<std::uint32_t>(f.components);
@@ -88,6 +90,7 @@ std::vector<Array> field_arrays(output::FieldFrame frame) {
     arrays.push_back(Array::text(f.name));
     arrays.push_back(Array::of(Tag::Field, rows, components, std::move(f.values)));
   }
+  push_point_sets(arrays, frame.point_sets);
   return arrays;
 }
 
@@ -98,6 +101,8 @@ output::FieldFrame field_frame(Message m) {
 output::FieldFrame field_frame(std::vector<Array> arrays, const std::string& who) {
   output::FieldFrame frame;
   if (arrays.empty()) return frame;
+  frame.point_sets = take_point_sets(arrays, who);
+  if (arrays.empty()) throw ProtocolError(who + ": point sets without a grid and cell fields");
   if (arrays.size() % 2 != 0)
     throw ProtocolError(who + " has " + std::to_string(arrays.size()) + " arrays: expected pairs of a name and values");
   for (std::size_t i = 0; i < arrays.size(); i += 2)

@@ -88,6 +88,7 @@ const char* to_string(Tag tag) {
     case Tag::State: return "State";
     case Tag::Text: return "Text";
     case Tag::Field: return "Field";
+    case Tag::Points: return "Points";
   }
   return "unknown tag";
 }

@@ -18,7 +18,8 @@
 namespace cosim::protocol {
 
 inline constexpr std::uint32_t kMagic = 0x4d495343;  // "CSIM" read as little-endian u32
-inline constexpr std::uint16_t kVersion = 1;
+// 2: Points arrays, for the point sets of a Field message (field_message.hpp).
+inline constexpr std::uint16_t kVersion = 2;
 inline constexpr std::size_t kNameSize = 32;          // participant name, NUL padded
 inline constexpr std::size_t kMaxArrays = 64;
 
@@ -55,6 +56,7 @@ enum class Tag : std::uint16_t {
   State,           // 1 x n: opaque restart state of a participant
   Text,            // bytes (rows = 1, cols = length): YAML or an error message
   Field,           // rows x cols float64 named field; name in a preceding Text array
+  Points,          // n x 3 float64: x, y, z of points, the point sets of a Field message
 };
 
 enum class DType : std::uint16_t { Float64 = 1, Bytes = 2 };

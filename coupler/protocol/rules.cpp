@@ -38,6 +38,7 @@ DType dtype_of(Tag tag) {
     case Tag::Stats:
     case Tag::State:
     case Tag::Field:
+    case Tag::Points:
       return DType::Float64;
     case Tag::Text:
       return DType::Bytes;
@@ -67,6 +68,7 @@ void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t c
   };
   if (tag == Tag::Poses) need_cols(kPoseWidth);
   if (tag == Tag::Forces) need_cols(kForceWidth);
+  if (tag == Tag::Points) need_cols(3);
   if (tag == Tag::Stats) {
     need_cols(kStatsWidth);
     if (rows != 1)

@@ -55,8 +55,8 @@ std::string field_source(const scene::Scene& scene, const scene::Plan& plan, con
   return others.front();
 }
 
-// The fields named in `wanted`, in that order.
-// The frame with only the `wanted` fields (all if none are named), copied out of the source's.
+// The frame with only the `wanted` fields, in that order (all if none are named, and only
+// then its point sets: a consumer that names fields uses those), copied out of the source's.
 output::FieldFrame pick(const output::FieldFrame& frame, const std::vector<std::string>& wanted,
                         const std::string& source, const std::string& consumer, const std::string& when) {
   if (wanted.empty()) return frame;

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "fluid/program/body_surfaces.hpp"
 #include "fluid/program/cell_fields.hpp"
 #include "fluid/program/petsc_flags.hpp"
 #include "participant/poses_at.hpp"
@@ -40,12 +41,13 @@ struct FluidSolver::Flow {
       : grid(PETSC_COMM_WORLD, {s.axes[0], s.axes[1], s.axes[2]}),
         bc(boundary_conditions(grid, s)),
         flow(grid, bc, s.properties, s.steps),
-        fbm(grid, s.fbm) {}
+        bodies(fluid::make_bodies(grid, s.body_method)) {}
 
   fluid::Grid grid;
   fluid::BoundaryConditions bc;
   fluid::NavierStokes flow;
-  fluid::FictitiousBoundary fbm;
+  std::unique_ptr<fluid::BodyTreatment> bodies;
+  std::unique_ptr<BodySurfaces> surfaces;  // once the bodies are added
 };
 
 FluidSolver::FluidSolver(bool prescribed) : prescribed_(prescribed) {}
@@ -59,8 +61,9 @@ participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const st
   // Before the solvers exist: they read the flags when they are created.
   insert_petsc_flags(setup_.petsc);
   flow_ = std::make_unique<Flow>(setup_);
-  for (const fluid::RigidBody& b : setup_.bodies) flow_->fbm.add(b);
-  flow_->flow.impose(&flow_->fbm.imposed_faces());
+  for (const fluid::RigidBody& b : setup_.bodies) flow_->bodies->add(b);
+  flow_->surfaces = std::make_unique<BodySurfaces>(flow_->grid, *flow_->bodies, setup_.body_names);
+  flow_->bodies->attach(flow_->flow);
   const fluid::Point u0 = setup_.initial_velocity;
   flow_->flow.set_velocity([&](const fluid::Point&) { return u0; });
   // The coupler's poses (the rigid-body program's centres of mass) win over the scene's.
@@ -100,24 +103,41 @@ void FluidSolver::place(const std::vector<double>& poses) {
   for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
     const double* v = poses.data() + kPoseWidth * b;
     const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
-    flow_->fbm.move(b, geometry::Pose(vector_at(v), q), vector_at(v + 7), vector_at(v + 10));
+    flow_->bodies->move(b, geometry::Pose(vector_at(v), q), vector_at(v + 7), vector_at(v + 10));
   }
 }
 
 std::vector<double> FluidSolver::forces() const {
   std::vector<double> out;
-  for (const fluid::HydrodynamicLoad& l : flow_->fbm.loads(flow_->flow))
+  for (const fluid::HydrodynamicLoad& l : flow_->bodies->loads(flow_->flow))
     out.insert(out.end(), {l.force.x(), l.force.y(), l.force.z(), l.torque.x(), l.torque.y(), l.torque.z()});
   return out;
 }
 
-output::FieldFrame FluidSolver::fields() const { return cell_fields(flow_->flow, flow_->fbm); }
+// Rank 0 alone fills the point sets (output/field_frame.hpp).
+output::FieldFrame FluidSolver::fields() const {
+  output::FieldFrame frame = cell_fields(flow_->flow, *flow_->bodies);
+  PetscMPIInt rank = 0;
+  MPI_Comm_rank(flow_->grid.comm(), &rank);
+  if (rank == 0) frame.point_sets = flow_->surfaces->where(*flow_->bodies);
+  return frame;
+}
 
-std::vector<double> FluidSolver::state() const { return flow_->flow.state(); }
+// The flow's state, then the bodies' (the immersed boundary's inner-fluid momenta).
+std::vector<double> FluidSolver::state() const {
+  std::vector<double> out = flow_->flow.state();
+  const std::vector<double> bodies = flow_->bodies->state();
+  out.insert(out.end(), bodies.begin(), bodies.end());
+  return out;
+}
 
 void FluidSolver::restore(const std::vector<double>& state) {
+  const std::size_t bodies = flow_->bodies->state().size();
   try {
-    flow_->flow.restore(state);
+    if (state.size() < bodies) throw std::invalid_argument("too short for the bodies' state");
+    const std::span<const double> all(state);
+    flow_->flow.restore(all.first(state.size() - bodies));
+    flow_->bodies->restore(all.last(bodies));
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(std::string("restart state: ") + e.what());
   }

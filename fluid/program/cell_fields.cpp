@@ -79,7 +79,7 @@ std::vector<double> centred_velocity(const fluid::Grid& grid, Vec u, int c) {
 
 }  // namespace
 
-output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::FictitiousBoundary& fbm) {
+output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::BodyTreatment& bodies) {
   const fluid::Grid& grid = flow.grid();
   output::RectilinearGrid axes;
   for (int a = 0; a < 3; ++a) axes.nodes[static_cast<std::size_t>(a)] = nodes(grid.axis(a));
@@ -90,8 +90,8 @@ output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::Fic
   std::vector<double> pressure = on_rank_zero(grid.pressure_dm(), flow.pressure());
   // Only each body's own cells are visited (its patch lies within this rank's cells).
   std::vector<double> alpha = cell_values(grid, [&](PetscScalar*** a) {
-    for (std::size_t b = 0; b < fbm.size(); ++b) {
-      const fluid::IndicatorPatch& body = fbm.cell_indicator(b);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const fluid::IndicatorPatch body = bodies.cell_fraction(b);
       fluid::for_each_index(body.range(), [&](const Index& m) {
         PetscScalar& largest = a[m[2]][m[1]][m[0]];
         largest = std::max(largest, body(m));

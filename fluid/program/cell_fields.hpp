@@ -1,9 +1,9 @@
 // The flow as cell-centred fields for the run file: velocity (3 components, the mean of
 // the two faces normal to each, exact for a linear profile on stretched axes too),
-// pressure, and alpha (the FBM indicator, the largest over the bodies).
+// pressure, and alpha (the bodies' volume fraction, the largest over the bodies).
 #pragma once
 
-#include "fluid/fictitious_boundary.hpp"
+#include "fluid/body_treatment.hpp"
 #include "fluid/navier_stokes.hpp"
 #include "output/field_frame.hpp"
 
@@ -11,6 +11,6 @@ namespace cosim::program {
 
 // Collective: every rank computes its own cells and rank 0 receives the whole grid in the
 // frame's order (other ranks get the grid's nodes and no fields).
-output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::FictitiousBoundary& fbm);
+output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::BodyTreatment& bodies);
 
 }  // namespace cosim::program

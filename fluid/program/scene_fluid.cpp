@@ -21,6 +21,8 @@ constexpr std::array boundary_names{"wall", "inflow", "outflow", "periodic"};
 constexpr std::array profile_names{"uniform", "parabolic"};
 constexpr std::array pressure_update_names{"standard", "rotational"};
 constexpr std::array viscosity_names{"newtonian", "power-law", "carreau"};
+constexpr std::array method_names{"ibm", "staircase"};
+constexpr std::array kernel_names{"roma3", "peskin4", "bao6"};
 
 const scene::Participant& section(const scene::Scene& scene) {
   const auto* p = scene.participant("fluid");
@@ -115,7 +117,42 @@ void read_boundaries(const Reader& options, const scene::Domain& domain, FluidSe
   list.finish();
 }
 
-// The FBM refuses half-spaces, and a body reaching across a periodic face would be cut.
+// bodies: {method: ibm, kernel, sweeps, tolerance, retraction, curvature_retraction,
+// marker_spacing} or
+// {method: staircase, subsamples, surface_offset}; a key of the other method is refused.
+fluid::BodyOptions read_body_method(const Reader& options) {
+  const fluid::FbmOptions staircase{.offset = fluid::kCalibratedSurfaceOffset};
+  fluid::IbmOptions defaults;
+  defaults.retraction = fluid::calibrated_retraction(defaults.kernel);
+  if (!options.has("bodies")) return defaults;
+  const Reader r = options.map("bodies");
+  const bool ibm = r.choice("method", method_names, 0) == 0;
+  for (const char* key : ibm ? std::array{"subsamples", "surface_offset", "", "", "", ""}
+                             : std::array{"kernel", "sweeps", "tolerance", "retraction", "curvature_retraction",
+                                          "marker_spacing"})
+    if (*key && r.has(key)) r.fail(key, std::string("applies to method ") + (ibm ? "staircase" : "ibm") + " only");
+  fluid::BodyOptions out;
+  if (ibm) {
+    fluid::IbmOptions o;
+    o.kernel = static_cast<fluid::DeltaKernel>(r.choice("kernel", kernel_names, static_cast<std::size_t>(o.kernel)));
+    o.sweeps = r.integer("sweeps", o.sweeps, Range::at_least(1));
+    o.tolerance = r.number("tolerance", o.tolerance, Range::open(0, 1));
+    const fluid::Retraction calibrated = fluid::calibrated_retraction(o.kernel);
+    o.retraction = fluid::Retraction{r.number("retraction", calibrated.constant, Range::closed(0, 2)),
+                                     r.number("curvature_retraction", calibrated.curvature, Range::closed(-2, 2))};
+    o.spacing = r.number("marker_spacing", o.spacing, Range::closed(0.25, 2));
+    out = o;
+  } else {
+    fluid::FbmOptions o = staircase;
+    o.subsamples = r.integer("subsamples", o.subsamples, Range::at_least(1));
+    o.offset = r.number("surface_offset", o.offset, Range::at_least(0));
+    out = o;
+  }
+  r.finish();
+  return out;
+}
+
+// Neither method holds a half-space, and a body reaching across a periodic face would be cut.
 void read_bodies(const scene::Scene& scene, const scene::Participant& p, FluidSetup& s) {
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& body = scene.bodies[b];
@@ -128,6 +165,7 @@ void read_bodies(const scene::Scene& scene, const scene::Participant& p, FluidSe
     const Eigen::Vector3d x = scene::to_eigen(body.position) + q * geometry::com_shift(r.shape);
     r.pose = geometry::Pose(x, q);
     s.bodies.push_back(std::move(r));
+    s.body_names.push_back(body.name);
     Motion m;
     m.position = x;
     m.orientation = q;
@@ -166,8 +204,7 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   s.steps.dt_initial = options.number("dt_initial", std::min(s.steps.dt_initial, p.dt), Range::left_open(0, p.dt));
   s.steps.theta = options.number("theta", s.steps.theta, Range::closed(0.5, 1));
   s.steps.rotational_pressure = options.choice("pressure_update", pressure_update_names, 0) == 1;
-  s.fbm.subsamples = options.integer("subsamples", s.fbm.subsamples, Range::at_least(1));
-  s.fbm.offset = options.number("surface_offset", fluid::kCalibratedSurfaceOffset, Range::at_least(0));
+  s.body_method = read_body_method(options);
   try {
     s.petsc = parse_petsc_flags(options.string("petsc", ""));
   } catch (const std::invalid_argument& e) {

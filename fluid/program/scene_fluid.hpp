@@ -8,7 +8,7 @@
 
 #include "fluid/axis.hpp"
 #include "fluid/boundary_conditions.hpp"
-#include "fluid/fictitious_boundary.hpp"
+#include "fluid/body_methods.hpp"
 #include "fluid/navier_stokes.hpp"
 #include "fluid/program/petsc_flags.hpp"
 #include "fluid/program/prescribed_motion.hpp"
@@ -23,9 +23,10 @@ struct FluidSetup {
   fluid::FluidProperties properties;
   fluid::TimeStepOptions steps;
   fluid::Point initial_velocity{};
-  fluid::FbmOptions fbm;
+  fluid::BodyOptions body_method;  // participants.fluid.options.bodies
   PetscFlags petsc;
   std::vector<fluid::RigidBody> bodies;  // scene order, centred at their centres of mass
+  std::vector<std::string> body_names;   // scene order
   std::vector<Motion> motions;           // scene order; used standalone
 };
 

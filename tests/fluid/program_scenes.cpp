@@ -48,6 +48,7 @@ participants:
         z_min: {{type: periodic}}
         z_max: {{type: periodic}}
       initial_velocity: [0.1, 0, 0]
+      bodies: {{tolerance: 1.0e-9}}  # the forcing converged: two ranks give one rank's answer
 )",
                      file);
 }

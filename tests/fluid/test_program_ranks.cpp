@@ -87,7 +87,7 @@ TEST(FluidRanks, ImplicitCouplingOnTwoRanksMatchesOneRank) {
   replace("      motion: {cyl: {type: sinusoidal, amplitude: [0.05, 0, 0], frequency: 2}}\n", "");
   replace("scheme: serial-explicit}", "scheme: serial-implicit, acceleration: aitken, tolerance: 1.0e-8}");
   replace("effects: [hydrodynamics]", "gravity: [0, -9.81, 0]\neffects: [gravity, buoyancy, hydrodynamics]");
-  scene += "  rigidbody: {dt: 0.01, options: {fluid_density: 1000}}\n";
+  scene += "      bodies: {tolerance: 1.0e-9}\n  rigidbody: {dt: 0.01, options: {fluid_density: 1000}}\n";
 
   std::vector<Series> poses;
   for (int ranks : {1, 2}) {

@@ -35,7 +35,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 
 TEST(FluidScene, ReadsGridFluidBoundariesAndBodies) {
   const FluidSetup s = setup_of(oscillating_cylinder_scene(
-      "      cfl: 0.4\n      subsamples: 2\n      petsc: -pressure_pc_type hypre -pressure_ksp_rtol 1e-9\n"
+      "      cfl: 0.4\n      bodies: {method: staircase, subsamples: 2}\n      petsc: -pressure_pc_type hypre -pressure_ksp_rtol 1e-9\n"
       "      body_force: [1.5, 0, -2]\n      pressure_update: rotational\n"));
   ASSERT_EQ(s.axes.size(), 3u);
   EXPECT_EQ(s.axes[0].cells(), 16);
@@ -50,13 +50,37 @@ TEST(FluidScene, ReadsGridFluidBoundariesAndBodies) {
   EXPECT_EQ(setup_of(oscillating_cylinder_scene()).properties.body_force, (fluid::Point{0, 0, 0}));
   EXPECT_EQ(s.steps.dt_max, 0.01);
   EXPECT_EQ(s.steps.cfl, 0.4);
-  EXPECT_EQ(s.fbm.subsamples, 2);
+  ASSERT_TRUE(std::holds_alternative<fluid::FbmOptions>(s.body_method));
+  EXPECT_EQ(std::get<fluid::FbmOptions>(s.body_method).subsamples, 2);
+  EXPECT_EQ(std::get<fluid::FbmOptions>(s.body_method).offset, fluid::kCalibratedSurfaceOffset);
   EXPECT_TRUE(s.steps.rotational_pressure);
   EXPECT_FALSE(setup_of(oscillating_cylinder_scene()).steps.rotational_pressure);
   const PetscFlags flags{{"-pressure_pc_type", "hypre"}, {"-pressure_ksp_rtol", "1e-9"}};
   EXPECT_EQ(s.petsc, flags);
   ASSERT_EQ(s.bodies.size(), 1u);
   EXPECT_EQ(s.bodies[0].pose.position(), Eigen::Vector3d(0.2, 0.1, 0.005));
+}
+
+// The immersed boundary unless the scene asks for the staircase; its options under bodies.
+TEST(FluidScene, BodyMethodAndItsOptions) {
+  const FluidSetup plain = setup_of(oscillating_cylinder_scene());
+  ASSERT_TRUE(std::holds_alternative<fluid::IbmOptions>(plain.body_method));
+  EXPECT_EQ(std::get<fluid::IbmOptions>(plain.body_method).kernel, fluid::DeltaKernel::roma3);
+  EXPECT_EQ(std::get<fluid::IbmOptions>(plain.body_method).retraction->constant,
+            fluid::calibrated_retraction(fluid::DeltaKernel::roma3).constant);
+  const FluidSetup bao = setup_of(oscillating_cylinder_scene("      bodies: {kernel: bao6, tolerance: 1e-8}\n"));
+  EXPECT_EQ(std::get<fluid::IbmOptions>(bao.body_method).retraction->constant,
+            fluid::calibrated_retraction(fluid::DeltaKernel::bao6).constant);
+  EXPECT_EQ(std::get<fluid::IbmOptions>(bao.body_method).tolerance, 1e-8);
+  const FluidSetup set = setup_of(oscillating_cylinder_scene(
+      "      bodies: {method: ibm, kernel: peskin4, sweeps: 4, retraction: 0.5, curvature_retraction: 0.1, "
+      "marker_spacing: 0.8}\n"));
+  const auto& ibm = std::get<fluid::IbmOptions>(set.body_method);
+  EXPECT_EQ(ibm.kernel, fluid::DeltaKernel::peskin4);
+  EXPECT_EQ(ibm.sweeps, 4);
+  EXPECT_EQ(ibm.retraction->constant, 0.5);
+  EXPECT_EQ(ibm.retraction->curvature, 0.1);
+  EXPECT_EQ(ibm.spacing, 0.8);
 }
 
 TEST(FluidScene, PrescribedMotionIsFixedConstantOrSinusoidal) {
@@ -140,6 +164,12 @@ TEST(FluidScene, ErrorsNameFileLineKeyAndValue) {
       {"density: 1000", "density: 1000\n      body_force: [1, 0]", "body_force", "[1, 0]"},
       {"density: 1000", "density: 1000\n      petsc: hypre", "petsc", "hypre"},
       {"density: 1000", "density: 1000\n      pressure_update: incremental", "pressure_update", "incremental"},
+      {"density: 1000", "density: 1000\n      bodies: {method: cutcell}", "bodies.method", "cutcell"},
+      {"density: 1000", "density: 1000\n      bodies: {kernel: gauss}", "bodies.kernel", "gauss"},
+      {"density: 1000", "density: 1000\n      bodies: {sweeps: 0}", "bodies.sweeps", "0"},
+      {"density: 1000", "density: 1000\n      bodies: {method: ibm, subsamples: 2}", "bodies.subsamples", "2"},
+      {"density: 1000", "density: 1000\n      bodies: {method: staircase, retraction: 0.3}", "bodies.retraction", "0.3"},
+      {"density: 1000", "density: 1000\n      subsamples: 2", "subsamples", "2"},
   };
   for (const BadOption& c : cases) {
     const scene::SceneError e = error_of(replaced(good, c.from, c.to));

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "flow_checks.hpp"
-#include "fluid/fictitious_boundary.hpp"
+#include "fluid/body_methods.hpp"
 
 namespace cosim::fluid {
 namespace {
@@ -42,41 +42,51 @@ struct BodyRun {
 };
 
 // A spinning box dragged through a closed 16 x 12 x 10 box of Carreau fluid for 12 steps;
-// the 2-rank split cuts through it.
-BodyRun moving_box(MPI_Comm comm) {
+// the 2-rank split cuts through it (and through the immersed boundary's kernels).
+BodyRun moving_box(MPI_Comm comm, const BodyOptions& method) {
   Grid grid(comm, {Axis::uniform(16, 0, 1.6, false), Axis::uniform(12, 0, 1.2, false), Axis::uniform(10, 0, 1, false)});
   BoundaryConditions bc(grid);
   // Shear-thinning, so the force reads the viscosity field across the rank boundary too.
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::carreau(0.05, 0.005, 1.0, 0.5), {0, 0, -1}},
                     {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 0.01});
   const Eigen::Vector3d velocity(0.4, 0.1, -0.1), spin(0.5, 0, 2), start(0.75, 0.6, 0.5);
-  FictitiousBoundary fbm(grid, {.subsamples = 2});
-  const std::size_t b = fbm.add({geometry::Box({0.2, 0.15, 0.1}), geometry::Pose(start, Eigen::Quaterniond::Identity()),
-                                 velocity, spin});
-  flow.impose(&fbm.imposed_faces());
+  const auto bodies = make_bodies(grid, method);
+  const std::size_t b = bodies->add({geometry::Box({0.2, 0.15, 0.1}),
+                                     geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity, spin});
+  bodies->attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   for (int s = 0; s < 12; ++s) {
     const double dt = flow.stable_dt(), t = flow.time() + dt;
-    fbm.move(b, geometry::Pose(start + t * velocity, Eigen::Quaterniond(Eigen::AngleAxisd(t * spin.norm(), spin.normalized()))),
-             velocity, spin);
+    bodies->move(b, geometry::Pose(start + t * velocity, Eigen::Quaterniond(Eigen::AngleAxisd(t * spin.norm(), spin.normalized()))),
+                 velocity, spin);
     EXPECT_LT(flow.step(dt).max_divergence, 1e-8) << "step " << s;
   }
-  return {{testing::gather(flow, 0), testing::gather(flow, 1), testing::gather(flow, 2)}, fbm.loads(flow)[b]};
+  return {{testing::gather(flow, 0), testing::gather(flow, 1), testing::gather(flow, 2)}, bodies->loads(flow)[b]};
 }
 
-TEST(TwoRanks, FictitiousBoundarySameAsOneRank) {
-  const BodyRun distributed = moving_box(PETSC_COMM_WORLD);
-  const BodyRun serial = moving_box(PETSC_COMM_SELF);
+void expect_bodies_same_on_one_and_two_ranks(const BodyOptions& method) {
+  const BodyRun distributed = moving_box(PETSC_COMM_WORLD, method);
+  const BodyRun serial = moving_box(PETSC_COMM_SELF, method);
   const double velocity = testing::max_difference(distributed.velocity, serial.velocity);
   const double force = (distributed.load.force - serial.load.force).norm();
   const double torque = (distributed.load.torque - serial.load.torque).norm();
   PetscPrintf(PETSC_COMM_WORLD,
-              "2 ranks vs 1 rank, moving FBM box in Carreau fluid (16 x 12 x 10, 12 steps): max |du| = %.2e, |dF| = %.2e (|F| = %.3f), "
-              "|dT| = %.2e (|T| = %.4f)\n",
-              velocity, force, serial.load.force.norm(), torque, serial.load.torque.norm());
+              "2 ranks vs 1 rank, moving box (%s) in Carreau fluid (16 x 12 x 10, 12 steps): max |du| = %.2e, |dF| = "
+              "%.2e (|F| = %.3f), |dT| = %.2e (|T| = %.4f)\n",
+              label(method).c_str(), velocity, force, serial.load.force.norm(), torque, serial.load.torque.norm());
   EXPECT_LT(velocity, 1e-8);
   EXPECT_LT(force, 1e-7 * serial.load.force.norm());
   EXPECT_LT(torque, 1e-7 * serial.load.torque.norm());
+}
+
+TEST(TwoRanks, FictitiousBoundarySameAsOneRank) { expect_bodies_same_on_one_and_two_ranks(FbmOptions{.subsamples = 2}); }
+
+// The markers' forcing converged tightly: its sweeps then end alike on one and two ranks.
+TEST(TwoRanks, ImmersedBoundarySameAsOneRank) {
+  IbmOptions ibm;
+  ibm.tolerance = 1e-10;
+  ibm.sweeps = 200;
+  expect_bodies_same_on_one_and_two_ranks(ibm);
 }
 
 }  // namespace

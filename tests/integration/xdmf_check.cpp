@@ -1,5 +1,6 @@
 #include "xdmf_check.hpp"
 
+#include <iterator>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -33,6 +34,36 @@ void check_nesting(const std::string& text) {
   if (text.find("<Xdmf") == std::string::npos) throw std::runtime_error("no Xdmf element");
 }
 
+XdmfDataItem data_item(const std::string& attributes, const std::string& where) {
+  XdmfDataItem d;
+  std::istringstream dims(attribute(attributes, "Dimensions"));
+  for (std::size_t n = 0; dims >> n;) d.dims.push_back(n);
+  const std::size_t colon = where.find(':');
+  if (colon == std::string::npos) throw std::runtime_error("DataItem without file:dataset: " + where);
+  d.file = where.substr(0, colon);
+  d.dataset = where.substr(colon + 1);
+  return d;
+}
+
+std::vector<XdmfPolyvertex> polyvertices(const std::string& text) {
+  std::vector<XdmfPolyvertex> out;
+  const std::regex grid("<Grid Name=\"([^\"]*)\"[^>]*>\\s*<Topology TopologyType=\"Polyvertex\"([^>]*)/>"
+                        "\\s*<Geometry GeometryType=\"XYZ\">\\s*<DataItem([^>]*)>([^<]*)</DataItem>\\s*</Geometry>");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), grid); it != std::sregex_iterator(); ++it) {
+    const std::smatch& m = *it;
+    XdmfPolyvertex p{m[1], std::stoul(attribute(m[2], "NumberOfElements")), data_item(m[3], m[4])};
+    if (p.points.dims != std::vector<std::size_t>{p.elements, 3})
+      throw std::runtime_error("Polyvertex grid " + p.name + " of " + std::to_string(p.elements) +
+                               " elements has points of other Dimensions");
+    out.push_back(p);
+  }
+  const std::regex topology("TopologyType=\"Polyvertex\"");
+  if (out.size() != static_cast<std::size_t>(std::distance(
+                        std::sregex_iterator(text.begin(), text.end(), topology), std::sregex_iterator())))
+    throw std::runtime_error("a Polyvertex topology without its XYZ geometry of one DataItem");
+  return out;
+}
+
 }  // namespace
 
 XdmfContents read_xdmf(const std::string& text) {
@@ -42,17 +73,9 @@ XdmfContents read_xdmf(const std::string& text) {
   for (auto it = std::sregex_iterator(text.begin(), text.end(), time); it != std::sregex_iterator(); ++it)
     c.times.push_back(std::stod(attribute(" " + (*it)[1].str(), "Value")));
   const std::regex item("<DataItem([^>]*)>([^<]*)</DataItem>");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), item); it != std::sregex_iterator(); ++it) {
-    XdmfDataItem d;
-    std::istringstream dims(attribute((*it)[1], "Dimensions"));
-    for (std::size_t n = 0; dims >> n;) d.dims.push_back(n);
-    const std::string where = (*it)[2];
-    const std::size_t colon = where.find(':');
-    if (colon == std::string::npos) throw std::runtime_error("DataItem without file:dataset: " + where);
-    d.file = where.substr(0, colon);
-    d.dataset = where.substr(colon + 1);
-    c.items.push_back(d);
-  }
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), item); it != std::sregex_iterator(); ++it)
+    c.items.push_back(data_item((*it)[1], (*it)[2]));
+  c.polyvertices = polyvertices(text);
   return c;
 }
 

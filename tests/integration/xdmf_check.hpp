@@ -14,12 +14,22 @@ struct XdmfDataItem {
   std::string dataset;            // after it
 };
 
-struct XdmfContents {
-  std::vector<double> times;  // of the Time elements, in order
-  std::vector<XdmfDataItem> items;
+// A grid of points without cells (a point set): Polyvertex topology, XYZ geometry.
+struct XdmfPolyvertex {
+  std::string name;
+  std::size_t elements = 0;  // the topology's NumberOfElements
+  XdmfDataItem points;       // the geometry's one DataItem
 };
 
-// Throws std::runtime_error if the document is not a nested XML element tree.
+struct XdmfContents {
+  std::vector<double> times;  // of the Time elements, in order
+  std::vector<XdmfDataItem> items;  // all of them, those of the Polyvertex grids too
+  std::vector<XdmfPolyvertex> polyvertices;  // in order
+};
+
+// Throws std::runtime_error if the document is not a nested XML element tree, or has a
+// Polyvertex grid whose geometry is not one DataItem of its NumberOfElements x 3 (so that
+// checking every item's dataset against its Dimensions checks the points' too).
 XdmfContents read_xdmf(const std::string& text);
 
 }  // namespace cosim::testing

@@ -142,6 +142,74 @@ TEST_F(ResumeTest, KeepsAPolyhedralGrid) {
             std::string::npos);
 }
 
+// A body's two markers at x = window in every frame, and a body outside the grid.
+FieldFrame frame_with_bodies(std::uint64_t window) {
+  FieldFrame frame = frame_of(window);
+  frame.point_sets = {{"ball", {double(window), 0.5, 0.5, double(window), 0.25, 0.5}}, {"cube", {}}};
+  return frame;
+}
+
+void write_fields_up_to(RunFile& run, std::uint64_t last, std::uint64_t checkpoint_window) {
+  for (std::uint64_t k = 0; k <= last; ++k) {
+    run.append(sample_window(k, kDt, kBodies.size(), kParticipants));
+    run.write_fields("fluid", k, kDt * double(k), frame_with_bodies(k));
+    if (k == checkpoint_window) run.write_checkpoint(checkpoint_after(k));
+  }
+}
+
+// The point sets go with their frames: those after the checkpoint are unlinked, those up to
+// it kept, and the sidecar names them as that of a run that stopped there would.
+TEST_F(ResumeTest, CutsPointSetsWithTheirFrames) {
+  const auto path = file("run.h5");
+  const RunInfo info{"scene: 1\n", "s.yaml", "abc", "0.1.0", 2};
+  {
+    RunFile run = RunFile::create(path, info, kBodies, kParticipants);
+    write_fields_up_to(run, 4, 2);
+  }
+  std::filesystem::create_directories(file("stopped"));
+  {
+    RunFile stopped = RunFile::create(file("stopped") / "run.h5", info, kBodies, kParticipants);
+    write_fields_up_to(stopped, 3, 2);
+  }
+  {
+    RunFile run = RunFile::resume(path, "d1e2f3");
+    ReadFile f(path);
+    for (std::uint64_t k = 0; k <= 3; ++k) {
+      const std::string step = "/fields/fluid/00000" + std::to_string(k);
+      EXPECT_EQ(f.doubles(step + "/points/ball"), frame_with_bodies(k).point_sets[0].points) << step;
+      EXPECT_EQ(f.dims(step + "/points/cube"), (std::vector<hsize_t>{0, 3})) << step;
+    }
+    EXPECT_FALSE(f.has("/fields/fluid/000004"));
+    EXPECT_EQ(file_bytes(file("run.xmf")), file_bytes(file("stopped") / "run.xmf"));
+    FieldFrame again = frame_with_bodies(4);
+    again.point_sets[0].points = {9.0, 9.0, 9.0};
+    run.write_fields("fluid", 4, 0.4, again);
+  }
+  ReadFile f(path);
+  EXPECT_EQ(f.doubles("/fields/fluid/000004/points/ball"), (std::vector<double>{9.0, 9.0, 9.0}));
+  const std::string sidecar = file_bytes(file("run.xmf"));
+  EXPECT_NE(sidecar.find("<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"1\"/>\n"
+                         "          <Geometry GeometryType=\"XYZ\">\n"
+                         "            <DataItem Dimensions=\"1 3\" NumberType=\"Float\" Precision=\"8\" "
+                         "Format=\"HDF\">run.h5:/fields/fluid/000004/points/ball"),
+            std::string::npos);
+}
+
+// In a frame without point sets "points" may name a cell field: resume() takes it as one.
+TEST_F(ResumeTest, KeepsACellFieldNamedPoints) {
+  const auto path = file("run.h5");
+  {
+    RunFile run = RunFile::create(path, RunInfo{}, kBodies, kParticipants);
+    FieldFrame frame = frame_of(0);
+    frame.fields[0].name = "points";
+    run.write_fields("fluid", 0, 0.0, frame);
+    run.write_checkpoint(checkpoint_after(0));
+  }
+  const std::string before = file_bytes(file("run.xmf"));
+  RunFile run = RunFile::resume(path, "d1e2f3");
+  EXPECT_EQ(file_bytes(file("run.xmf")), before);
+  EXPECT_NE(before.find("<Attribute Name=\"points\" AttributeType=\"Scalar\""), std::string::npos);
+}
 
 // --resume validates what peek() read before resume() changes anything: peek() must leave
 // every byte as it was.

@@ -1,7 +1,7 @@
 // The lead and its followers (participant/mpi_team.hpp) on two ranks: every call reaches
-// every rank with the lead's arguments, the state gathers into one array with its layout
-// and scatters back, and a state from another rank count is refused without leaving the
-// followers behind. Run under `mpirun -n 2`.
+// every rank with the lead's arguments (a forwarded frame's point sets too), the state
+// gathers into one array with its layout and scatters back, and a state from another rank
+// count is refused without leaving the followers behind. Run under `mpirun -n 2`.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -75,6 +75,36 @@ TEST(MpiTeam, AStateOfAnotherRankCountIsRefusedAndTheTeamGoesOn) {
     }
     EXPECT_THROW(lead.restore({2, 1, 2, 0, 0}), std::runtime_error);  // shorter than it says
     EXPECT_EQ(lead.state(), (std::vector<double>{2, 1, 2, 0, 10, 10}));
+    return 0;
+  });
+}
+
+// Sums over the ranks the z of the first point of the first point set it was forwarded.
+class PointSetSolver final : public Solver {
+ public:
+  Outputs initialise(const scene::Scene&, const std::string&, const std::vector<double>&,
+                     const std::vector<double>&) override {
+    return {};
+  }
+  Outputs advance(const Window&, const Inputs& in) override {
+    double local = in.fields ? in.fields->point_sets.at(0).points.at(2) : -100.0, sum = 0;
+    MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return {{}, {sum}, 1};
+  }
+  std::vector<double> state() const override { return {}; }
+  void restore(const std::vector<double>&) override {}
+};
+
+// A frame forwarded in an Advance reaches every rank whole, its point sets too.
+TEST(MpiTeam, AForwardedFrameReachesEveryRankWithItsPointSets) {
+  PointSetSolver local;
+  run_on_ranks(local, MPI_COMM_WORLD, [](Solver& lead) {
+    lead.initialise(tiny_scene(), "spring", {}, {});
+    Inputs in;
+    in.fields = output::FieldFrame{output::RectilinearGrid{{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}},
+                                   {{"p", 1, {1.0}}},
+                                   {{"ball", {0.5, 0.5, 2.5}}}};
+    EXPECT_EQ(lead.advance({0, 1, 0.0, 0.5}, in).forces, (std::vector<double>{5.0}));  // 2 x 2.5
     return 0;
   });
 }

@@ -4,9 +4,12 @@
 #include <cmath>
 
 #include "protocol/field_message.hpp"
+#include "wire.hpp"
 
 namespace cosim::protocol {
 namespace {
+
+using testing::field_message;
 
 // 2 x 3 x 1 cells on a stretched x axis, a vector and a scalar.
 output::FieldFrame sample_frame() {
@@ -27,14 +30,6 @@ output::FieldFrame polyhedral_frame() {
                    16, 4, 3, 0, 1, 2, 3, 0, 4, 1, 3, 1, 4, 2, 3, 2, 4, 0};
   grid.cells = 2;
   return {std::move(grid), {{"velocity", 3, {1, 2, 3, 4, 5, 6}}, {"density", 1, {1e20, 2.5e19}}}};
-}
-
-Message field_message(std::vector<Array> arrays) {
-  Message m;
-  m.header.type = Type::Field;
-  m.header.participant = "fluid";
-  m.arrays = std::move(arrays);
-  return decode(encode(m));
 }
 
 // The ProtocolError text of decoding arrays, or a test failure if they make a frame.

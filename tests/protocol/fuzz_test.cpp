@@ -88,7 +88,7 @@ class Fuzzer {
   }
 
   Array array() {
-    const auto tag = static_cast<Tag>(between(1, 6));
+    const auto tag = static_cast<Tag>(between(1, 7));
     if (tag == Tag::Text) {
       Frame b = bytes(between(0, 40));
       return Array::text(std::string(reinterpret_cast<const char*>(b.data()), b.size()));
@@ -98,6 +98,7 @@ class Fuzzer {
     const auto cols = static_cast<std::uint32_t>(tag == Tag::Poses    ? kPoseWidth
                                                  : tag == Tag::Forces ? kForceWidth
                                                  : tag == Tag::Stats  ? kStatsWidth
+                                                 : tag == Tag::Points ? 3
                                                                       : between(0, 6));
     std::vector<double> v(std::size_t{rows} * cols);
     for (double& x : v) x = value(!physics);

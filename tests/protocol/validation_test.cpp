@@ -80,9 +80,12 @@ TEST(Validation, WrongMagic) {
 
 TEST(Validation, VersionMismatch) {
   Frames f = valid_frames();
-  poke(f[0], L::kVersion, std::uint16_t{2});
+  poke(f[0], L::kVersion, std::uint16_t{kVersion + 1});
   f[0].resize(20);  // a future header may be laid out differently: the version still shows
-  EXPECT_THAT(decode_error(f), HasSubstr("protocol version 2, this build speaks 1"));
+  EXPECT_THAT(decode_error(f), HasSubstr("protocol version " + std::to_string(kVersion + 1) + ", this build speaks " +
+                                         std::to_string(kVersion)));
+  poke(f[0], L::kVersion, std::uint16_t{1});  // a peer from before Points arrays
+  EXPECT_THAT(decode_error(f), HasSubstr("protocol version 1, this build speaks " + std::to_string(kVersion)));
 }
 
 TEST(Validation, UnknownType) {

@@ -46,4 +46,13 @@ inline std::string decode_error(const Frames& frames) {
   return {};
 }
 
+// A Field message of participant "fluid" carrying `arrays`, encoded and decoded again.
+inline Message field_message(std::vector<Array> arrays) {
+  Message m;
+  m.header.type = Type::Field;
+  m.header.participant = "fluid";
+  m.arrays = std::move(arrays);
+  return decode(encode(m));
+}
+
 }  // namespace cosim::protocol::testing

@@ -392,7 +392,7 @@ TEST(Obstacles, AWallMustBePeriodicAcrossPeriodicLinks) {
   EXPECT_NO_THROW(Obstacles(mesh, {wall("both", ball({0.98, 0.5, 0.5}, 0.05) | ball({-0.02, 0.5, 0.5}, 0.05))}));
 }
 
-// The correctness check of Table 1 (REFERENCES.md): the events executed do not depend on
+// The correctness check of Table 1 (docs/references.md): the events executed do not depend on
 // which bounding grid the objects are registered with, the events generated do.
 TEST(Obstacles, ExecutedEventsDoNotDependOnTheBoundingGrid) {
   const Mesh mesh = box_mesh(cube(16));

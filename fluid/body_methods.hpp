@@ -1,0 +1,20 @@
+#pragma once
+// The two body treatments, and picking one by its options.
+#include <memory>
+#include <string>
+#include <variant>
+
+#include "fluid/fictitious_boundary.hpp"
+#include "fluid/ibm/immersed_boundary.hpp"
+
+namespace cosim::fluid {
+
+using BodyOptions = std::variant<IbmOptions, FbmOptions>;
+
+// grid must outlive the result.
+std::unique_ptr<BodyTreatment> make_bodies(const Grid& grid, const BodyOptions& options);
+
+// A short label for tables: "ibm roma3 s3 r0.30", "staircase offset 0.28".
+std::string label(const BodyOptions& options);
+
+}  // namespace cosim::fluid

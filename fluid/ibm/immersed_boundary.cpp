@@ -1,0 +1,475 @@
+#include "fluid/ibm/immersed_boundary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+
+#include "fluid/ibm/volume_fraction.hpp"
+#include "fluid/navier_stokes.hpp"
+#include "fluid/petsc_check.hpp"
+#include "rigidbody/geometry/queries.hpp"
+#include "rigidbody/geometry/surface_sampling.hpp"
+
+namespace cosim::fluid {
+namespace {
+
+constexpr std::size_t kInnerWidth = 6;  // momentum and angular momentum
+constexpr double kSamplingGap = 0.8;     // geometry::sample_surface's least distance, in spacings
+
+// The only axis of one periodic cell (a two-dimensional grid), or -1.
+int flat_axis(const Grid& grid) {
+  int flat = -1;
+  for (int d = 0; d < 3; ++d)
+    if (grid.axis(d).degenerate()) {
+      if (flat >= 0) throw std::invalid_argument("immersed boundary: at most one axis may be a single periodic cell");
+      flat = d;
+    }
+  return flat;
+}
+
+bool overlap(const geometry::Aabb& a, const geometry::Aabb& b) {
+  return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
+}
+
+// The retraction's law was calibrated at h kappa = 1/3 and 1/2 (spheres of twelve and eight
+// cells across) and holds at 2/3 (six: the Hasimoto error +0.3 %, fluid/README.md); it is
+// held at a sphere of four cells across, beyond which (small or sharp features) the markers
+// would meet the opposite side's kernels.
+constexpr double kLargestCurvature = 1.0;  // times 1 / h
+
+// kappa_1 + kappa_2 at surface point x: the Laplacian of the signed distance, by central
+// differences a quarter cell wide.
+double curvature_in_space(const geometry::Shape& shape, const geometry::Pose& pose, const Eigen::Vector3d& x, double h) {
+  const double e = h / 4;
+  double laplacian = 0;
+  for (int d = 0; d < 3; ++d) {
+    const Eigen::Vector3d step = e * Eigen::Vector3d::Unit(d);
+    laplacian += geometry::signed_distance(shape, pose, x + step) + geometry::signed_distance(shape, pose, x - step);
+  }
+  laplacian = (laplacian - 6 * geometry::signed_distance(shape, pose, x)) / (e * e);
+  return std::clamp(laplacian, -kLargestCurvature / h, kLargestCurvature / h);
+}
+
+// The curvature of a section's curve at sample i: of the circle through it and its two
+// nearest neighbours, positive where the curve bends away from its normal (convex).
+double curvature_in_plane(const std::vector<geometry::SurfaceSample>& curve, std::size_t i, double h) {
+  std::size_t a = i, b = i;
+  double da = std::numeric_limits<double>::infinity(), db = da;
+  for (std::size_t k = 0; k < curve.size(); ++k) {
+    if (k == i) continue;
+    const double d = (curve[k].point - curve[i].point).norm();
+    if (d < da) {
+      b = a;
+      db = da;
+      a = k;
+      da = d;
+    } else if (d < db) {
+      b = k;
+      db = d;
+    }
+  }
+  if (a == i || b == i) return 0;
+  const Eigen::Vector3d u = curve[a].point - curve[i].point, v = curve[b].point - curve[i].point;
+  const double chord = (u - v).norm(), area2 = u.cross(v).norm();  // twice the triangle's area
+  const double kappa = 2 * area2 / (u.norm() * v.norm() * chord);    // 1 / circumradius
+  const bool convex = (u + v).dot(curve[i].normal) < 0;              // the neighbours fall behind the normal
+  return std::clamp(convex ? kappa : -kappa, -kLargestCurvature / h, kLargestCurvature / h);
+}
+
+// Markers moved in along their normals crowd together where the surface curves (a sphere
+// of 3.75 cells across retracted by 0.4 of a cell: 1.6 times as many per area), and markers
+// much closer than a cell make the forcing's system nearly singular: its sweeps stall, the
+// forces turn noisy, and an implicitly coupled window no longer converges (30 iterations a
+// window in ten Cate's quick scene, 3.4 with them thinned). So a marker closer than `gap`
+// (the sampling's own minimum distance) to one kept before it is dropped, and its area goes
+// to that one.
+template <typename Marker>
+void thin_out(std::vector<Marker>& markers, double gap) {
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
+  const auto key = [&](const Eigen::Vector3d& x, int a, int b, int c) {
+    const auto at = [&](int d, int o) { return (static_cast<std::int64_t>(std::floor(x[d] / gap)) + o) & 0x1fffff; };
+    return at(0, a) | (at(1, b) << 21) | (at(2, c) << 42);
+  };
+  std::vector<Marker> kept;
+  for (const Marker& m : markers) {
+    std::size_t nearest = kept.size();
+    double best = gap * gap;
+    for (int a = -1; a <= 1; ++a)
+      for (int b = -1; b <= 1; ++b)
+        for (int c = -1; c <= 1; ++c) {
+          const auto it = cells.find(key(m.position, a, b, c));
+          if (it == cells.end()) continue;
+          for (std::size_t k : it->second)
+            if ((kept[k].position - m.position).squaredNorm() < best) {
+              best = (kept[k].position - m.position).squaredNorm();
+              nearest = k;
+            }
+        }
+    if (nearest < kept.size()) {
+      kept[nearest].area += m.area;
+      continue;
+    }
+    cells[key(m.position, 0, 0, 0)].push_back(kept.size());
+    kept.push_back(m);
+  }
+  markers = std::move(kept);
+}
+
+IbmOptions resolved(IbmOptions options) {
+  if (!options.retraction) options.retraction = calibrated_retraction(options.kernel);
+  return options;
+}
+
+}  // namespace
+
+Retraction calibrated_retraction(DeltaKernel kernel) {
+  switch (kernel) {
+    case DeltaKernel::roma3: return {0.275, 0.269};
+    case DeltaKernel::peskin4: return {0.633, 0};
+    default: return {0.809, 0};
+  }
+}
+
+
+ImmersedBoundary::ImmersedBoundary(const Grid& grid, IbmOptions options) : grid_(grid), options_(resolved(options)) {
+  if (options.sweeps < 1) throw std::invalid_argument("immersed boundary: sweeps must be >= 1");
+  if (!(options.tolerance > 0)) throw std::invalid_argument("immersed boundary: the tolerance must be > 0");
+  if (!(options.spacing > 0)) throw std::invalid_argument("immersed boundary: the marker spacing must be > 0");
+  flat_axis(grid);
+  const int reach = static_cast<int>(std::ceil(support_radius(options.kernel)));
+  for (int d = 0; d < 3; ++d) {
+    const Axis& a = grid.axis(d);
+    if (a.periodic() && !a.degenerate() && a.cells() < 2 * reach)
+      throw std::invalid_argument("immersed boundary: a periodic axis needs at least " + std::to_string(2 * reach) +
+                                  " cells for the " + std::string(name(options.kernel)) + " kernel");
+  }
+}
+
+std::size_t ImmersedBoundary::add(RigidBody body) {
+  if (!geometry::is_bounded(body.shape))
+    throw std::invalid_argument("immersed boundary: a half-space is not a body (use a wall boundary)");
+  // Markers about one cell apart where the body is: the smallest width of its cell on the
+  // axes that carry variation.
+  const int flat = flat_axis(grid_);
+  double h = std::numeric_limits<double>::infinity();
+  for (int d = 0; d < 3; ++d)
+    if (d != flat) h = std::min(h, grid_.axis(d).width(grid_.axis(d).cell_at(body.pose.position()[d])));
+  const std::vector<geometry::SurfaceSample> samples =
+      flat < 0 ? geometry::sample_surface(body.shape, body.pose, options_.spacing * h)
+               : geometry::sample_section(body.shape, body.pose, flat, grid_.axis(flat).centre(0), options_.spacing * h);
+  Entry e(grid_, std::move(body));
+  // On a two-dimensional grid a marker stands for its length of curve times the layer.
+  const double thickness = flat < 0 ? 1.0 : grid_.axis(flat).width(0);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const geometry::SurfaceSample& s = samples[i];
+    const double kappa = flat < 0 ? curvature_in_space(e.body.shape, e.body.pose, s.point, h)
+                                  : curvature_in_plane(samples, i, h);
+    const double depth = h * (options_.retraction->constant + options_.retraction->curvature * h * kappa);
+    const Eigen::Vector3d x = s.point - depth * s.normal;
+    const double inside = e.distance.at(e.body, x);
+    if (!(inside < 0)) continue;
+    // The moved surface's share: the area shrinks by (1 - depth kappa_i) along each
+    // principal direction (taken as equal in space).
+    const double shrink = flat < 0 ? std::pow(1 - depth * kappa / 2, 2) : 1 - depth * kappa;
+    e.markers.push_back({e.body.pose.to_body(x), e.body.pose.direction_to_body(s.normal),
+                         s.area * thickness * std::max(shrink, 0.1)});
+  }
+  thin_out(e.markers, kSamplingGap * options_.spacing * h);
+  if (e.markers.empty())
+    throw std::invalid_argument("immersed boundary: no marker stays inside the body once retracted by " +
+                                std::to_string(options_.retraction->constant) +
+                                " cell widths: it is thinner than twice that" +
+                                (flat < 0 ? std::string() : std::string(" or misses the grid's plane")));
+  bodies_.push_back(std::move(e));
+  return bodies_.size() - 1;
+}
+
+void ImmersedBoundary::move(std::size_t i, const geometry::Pose& pose, const Eigen::Vector3d& velocity,
+                            const Eigen::Vector3d& angular_velocity) {
+  RigidBody& b = bodies_.at(i).body;
+  b.pose = pose;
+  b.velocity = velocity;
+  b.angular_velocity = angular_velocity;
+}
+
+void ImmersedBoundary::attach(NavierStokes& flow) { flow.force(this); }
+
+std::vector<HydrodynamicLoad> ImmersedBoundary::loads(const NavierStokes&) const {
+  std::vector<HydrodynamicLoad> out;
+  for (const Entry& e : bodies_) out.push_back(e.load);
+  return out;
+}
+
+IndicatorPatch ImmersedBoundary::cell_fraction(std::size_t i) const {
+  const Entry& e = bodies_.at(i);
+  return volume_fraction(grid_, kCellCentre, e.body, e.distance, grid_.owned(grid_.cell_dm()));
+}
+
+std::vector<Eigen::Vector3d> ImmersedBoundary::markers(std::size_t i) const {
+  const Entry& e = bodies_.at(i);
+  std::vector<Eigen::Vector3d> out;
+  for (const Marker& m : e.markers) out.push_back(e.body.pose.to_world(m.position));
+  return out;
+}
+
+// Per body: the inner momenta, whether they are known, then 3 per marker.
+std::vector<double> ImmersedBoundary::state() const {
+  std::vector<double> out;
+  for (const Entry& e : bodies_) {
+    out.insert(out.end(), e.inner.begin(), e.inner.end());
+    out.push_back(e.inner_known ? 1 : 0);
+    for (const Marker& m : e.markers) out.insert(out.end(), m.force.data(), m.force.data() + 3);
+  }
+  return out;
+}
+
+void ImmersedBoundary::restore(std::span<const double> state) {
+  std::size_t expected = 0;
+  for (const Entry& e : bodies_) expected += kInnerWidth + 1 + 3 * e.markers.size();
+  if (state.size() != expected)
+    throw std::invalid_argument("immersed boundary state has " + std::to_string(state.size()) + " values, its " +
+                                std::to_string(bodies_.size()) + " bodies need " + std::to_string(expected));
+  auto at = state.begin();
+  for (Entry& e : bodies_) {
+    std::copy_n(at, kInnerWidth, e.inner.begin());
+    at += kInnerWidth;
+    e.inner_known = *at++ != 0;
+    for (Marker& m : e.markers) {
+      m.force = Eigen::Vector3d(at[0], at[1], at[2]);
+      at += 3;
+    }
+  }
+}
+
+// Markers inside the domain's bounded extent and outside every other body (where bodies
+// touch, the other's surface holds the fluid there), with their kernels on the grid.
+void ImmersedBoundary::collect_active_markers() {
+  active_.clear();
+  std::vector<geometry::Aabb> boxes;
+  for (const Entry& e : bodies_) boxes.push_back(geometry::world_aabb(e.body.shape, e.body.pose));
+  std::array<Box, 3> owned;
+  for (int c = 0; c < 3; ++c) owned[static_cast<std::size_t>(c)] = grid_.owned(grid_.velocity_dm(c));
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const RigidBody& body = bodies_[b].body;
+    std::vector<std::size_t> touching;
+    for (std::size_t o = 0; o < bodies_.size(); ++o)
+      if (o != b && overlap(boxes[b], boxes[o])) touching.push_back(o);
+    for (std::size_t k = 0; k < bodies_[b].markers.size(); ++k) {
+      const Marker& m = bodies_[b].markers[k];
+      Active a;
+      a.body = b;
+      a.marker = k;
+      a.position = body.pose.to_world(m.position);
+      bool inside_domain = true;
+      for (int d = 0; d < 3; ++d) {
+        const Axis& axis = grid_.axis(d);
+        inside_domain = inside_domain && (axis.periodic() || (a.position[d] > axis.lo() && a.position[d] < axis.hi()));
+      }
+      if (!inside_domain) continue;
+      const bool covered = std::any_of(touching.begin(), touching.end(), [&](std::size_t o) {
+        return boxes[o].contains(a.position) &&
+               geometry::signed_distance(bodies_[o].body.shape, bodies_[o].body.pose, a.position) < 0;
+      });
+      if (covered) continue;
+      const Point x{a.position[0], a.position[1], a.position[2]};
+      bool empty = false;
+      for (int c = 0; c < 3; ++c) {
+        a.stencil[static_cast<std::size_t>(c)] = kernel_stencil(grid_, c, options_.kernel, x);
+        empty = empty || a.stencil[static_cast<std::size_t>(c)].empty();
+        a.local[static_cast<std::size_t>(c)] = a.stencil[static_cast<std::size_t>(c)].meets(owned[static_cast<std::size_t>(c)]);
+      }
+      if (empty) continue;
+      // dV = area times the width across the surface.
+      const Eigen::Vector3d normal = body.pose.direction_to_world(m.normal);
+      double across = 0;
+      for (int d = 0; d < 3; ++d) across += normal[d] * normal[d] * a.stencil[0].axes[static_cast<std::size_t>(d)].width;
+      a.volume = m.area * across;
+      a.target = body.velocity_at(a.position);
+      active_.push_back(a);
+    }
+  }
+}
+
+// The markers' impulses g_l = dt F_l dV_l (velocity times volume, per component) are those
+// whose spread brings the interpolated velocity to the body's: B g = U - I[u~], where
+// B = I S, B_lm = sum_x w_l(x) w_m(x) / dV_x, is symmetric positive semi-definite, so
+// conjugate gradients solve it, one spread and one interpolation a sweep, from the last
+// step's forces. Once u~ has been read, `predicted` serves as the sweeps' scratch field.
+void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingArrays& arrays) {
+  collect_active_markers();
+  for (Entry& e : bodies_) {
+    e.fraction.clear();
+    for (int c = 0; c < 3; ++c)
+      e.fraction.push_back(volume_fraction(grid_, c, e.body, e.distance, grid_.owned(grid_.velocity_dm(c))));
+  }
+  // A body's inner momentum is carried from step to step; at the first step (or a body's
+  // first) it is taken from the flow as it is, with the body where it will be.
+  if (std::any_of(bodies_.begin(), bodies_.end(), [](const Entry& e) { return !e.inner_known; })) {
+    const std::vector<double> momenta = inner_momenta(flow);
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+      if (!bodies_[b].inner_known) {
+        std::copy_n(momenta.begin() + static_cast<std::ptrdiff_t>(kInnerWidth * b), kInnerWidth,
+                    bodies_[b].inner.begin());
+        bodies_[b].inner_known = true;
+      }
+  }
+  std::array<Box, 3> owned;
+  for (int c = 0; c < 3; ++c) owned[static_cast<std::size_t>(c)] = grid_.owned(grid_.velocity_dm(c));
+  const std::size_t n = active_.size();
+  // Over the markers' points of this rank: field += sum_l g_l w_l / dV, field = 0, and the
+  // interpolation sum_x w_l field (summed over the ranks).
+  const auto spread = [&](const std::array<PetscScalar***, 3>& field, const std::vector<double>& g) {
+    for (std::size_t l = 0; l < n; ++l)
+      for (std::size_t c = 0; c < 3; ++c) {
+        if (!active_[l].local[c] || g[3 * l + c] == 0) continue;
+        PetscScalar*** f = field[c];
+        for_each_point(active_[l].stencil[c], owned[c], [&](const Index& p, double w) {
+          f[p[2]][p[1]][p[0]] += g[3 * l + c] * w / grid_.face_volume(static_cast<int>(c), p);
+        });
+      }
+  };
+  const auto clear = [&](const std::array<PetscScalar***, 3>& field) {
+    for (std::size_t l = 0; l < n; ++l)
+      for (std::size_t c = 0; c < 3; ++c)
+        if (active_[l].local[c])
+          for_each_point(active_[l].stencil[c], owned[c],
+                         [&](const Index& p, double) { field[c][p[2]][p[1]][p[0]] = 0; });
+  };
+  const auto interpolate = [&](const std::array<PetscScalar***, 3>& field, std::vector<double>& out) {
+    for (std::size_t l = 0; l < n; ++l)
+      for (std::size_t c = 0; c < 3; ++c) {
+        double sum = 0;
+        if (active_[l].local[c])
+          for_each_point(active_[l].stencil[c], owned[c],
+                         [&](const Index& p, double w) { sum += w * field[c][p[2]][p[1]][p[0]]; });
+        out[3 * l + c] = sum;
+      }
+    MPI_Allreduce(MPI_IN_PLACE, out.data(), static_cast<int>(out.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+  };
+
+  std::vector<double> g(3 * n), residual(3 * n), direction(3 * n), image(3 * n), correction(3 * n, 0.0);
+  for (std::size_t l = 0; l < n; ++l) {
+    const Eigen::Vector3d& last = bodies_[active_[l].body].markers[active_[l].marker].force;
+    for (std::size_t c = 0; c < 3; ++c) g[3 * l + c] = dt * active_[l].volume * last[static_cast<Eigen::Index>(c)];
+  }
+  spread(arrays.predicted, g);
+  interpolate(arrays.predicted, residual);
+  double scale = 0;
+  for (std::size_t l = 0; l < n; ++l)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double target = active_[l].target[static_cast<Eigen::Index>(c)];
+      scale = std::max({scale, std::abs(target), std::abs(residual[3 * l + c])});
+      residual[3 * l + c] = target - residual[3 * l + c];
+    }
+  clear(arrays.predicted);
+  // Jacobi-preconditioned: B's diagonal, sum_x w_l(x)^2 / dV_x, evens out how strongly
+  // markers of different spacing and volume see themselves.
+  std::vector<double> diagonal(3 * n, 0.0), scaled(3 * n);
+  for (std::size_t l = 0; l < n; ++l)
+    for (std::size_t c = 0; c < 3; ++c)
+      if (active_[l].local[c])
+        for_each_point(active_[l].stencil[c], owned[c], [&](const Index& p, double w) {
+          diagonal[3 * l + c] += w * w / grid_.face_volume(static_cast<int>(c), p);
+        });
+  MPI_Allreduce(MPI_IN_PLACE, diagonal.data(), static_cast<int>(diagonal.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+  const auto precondition = [&] {
+    for (std::size_t i = 0; i < 3 * n; ++i) scaled[i] = diagonal[i] > 0 ? residual[i] / diagonal[i] : 0.0;
+  };
+  precondition();
+  direction = scaled;
+  const auto norms = [&](const std::vector<double>& a, const std::vector<double>& b) {
+    std::array<double, 3> dot{};
+    for (std::size_t i = 0; i < a.size(); ++i) dot[i % 3] += a[i] * b[i];
+    return dot;
+  };
+  const auto largest = [](const std::vector<double>& a) {
+    double m = 0;
+    for (double v : a) m = std::max(m, std::abs(v));
+    return m;
+  };
+  std::array<double, 3> rr = norms(residual, scaled);
+  sweeps_ = 0;
+  while (sweeps_ < options_.sweeps && largest(residual) > options_.tolerance * scale) {
+    ++sweeps_;
+    spread(arrays.predicted, direction);
+    interpolate(arrays.predicted, image);
+    clear(arrays.predicted);
+    const std::array<double, 3> curvature = norms(direction, image);
+    std::array<double, 3> step{};
+    for (std::size_t c = 0; c < 3; ++c) step[c] = curvature[c] > 0 ? rr[c] / curvature[c] : 0.0;
+    for (std::size_t i = 0; i < 3 * n; ++i) {
+      correction[i] += step[i % 3] * direction[i];
+      residual[i] -= step[i % 3] * image[i];
+    }
+    precondition();
+    const std::array<double, 3> next = norms(residual, scaled);
+    for (std::size_t i = 0; i < 3 * n; ++i)
+      direction[i] = scaled[i] + (rr[i % 3] > 0 ? next[i % 3] / rr[i % 3] : 0.0) * direction[i];
+    rr = next;
+  }
+  slip_ = largest(residual);
+  for (std::size_t i = 0; i < 3 * n; ++i) g[i] += correction[i];
+  spread(arrays.rhs, g);
+
+  for (Entry& e : bodies_) {
+    e.forcing = e.forcing_moment = Eigen::Vector3d::Zero();
+    for (Marker& m : e.markers) m.force = Eigen::Vector3d::Zero();  // inactive markers start afresh
+  }
+  for (std::size_t l = 0; l < n; ++l) {
+    Entry& e = bodies_[active_[l].body];
+    const Eigen::Vector3d impulse(g[3 * l], g[3 * l + 1], g[3 * l + 2]);
+    e.markers[active_[l].marker].force = impulse / (dt * active_[l].volume);
+    e.forcing += impulse / dt;
+    e.forcing_moment += (active_[l].position - e.body.pose.position()).cross(impulse / dt);
+  }
+}
+
+void ImmersedBoundary::finish_step(const NavierStokes& flow, double dt) {
+  const std::vector<double> momenta = inner_momenta(flow);
+  const double rho = flow.fluid().density;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    Entry& e = bodies_[b];
+    const double* now = momenta.data() + kInnerWidth * b;
+    const Eigen::Vector3d momentum(now[0], now[1], now[2]), angular(now[3], now[4], now[5]);
+    const Eigen::Vector3d momentum_before(e.inner[0], e.inner[1], e.inner[2]);
+    const Eigen::Vector3d angular_before(e.inner[3], e.inner[4], e.inner[5]);
+    e.load.force = -rho * e.forcing + rho * (momentum - momentum_before) / dt;
+    e.load.torque = -rho * e.forcing_moment + rho * (angular - angular_before) / dt;
+    std::copy_n(now, kInnerWidth, e.inner.begin());
+  }
+}
+
+std::vector<double> ImmersedBoundary::inner_momenta(const NavierStokes& flow) const {
+  std::vector<double> out(kInnerWidth * bodies_.size(), 0.0);
+  for (int c = 0; c < 3; ++c) {
+    DM dm = grid_.velocity_dm(c);
+    const PetscScalar*** u = nullptr;
+    COSIM_PETSC(DMDAVecGetArrayRead(dm, flow.velocity(c), &u));
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      const RigidBody& body = bodies_[b].body;
+      const IndicatorPatch& alpha = bodies_[b].fraction[static_cast<std::size_t>(c)];
+      Eigen::Vector3d momentum = Eigen::Vector3d::Zero(), angular = Eigen::Vector3d::Zero();
+      for_each_index(alpha.range(), [&](const Index& p) {
+        const double a = alpha(p);
+        if (a == 0 || grid_.on_boundary(c, p)) return;
+        const Point x = grid_.position(c, p);
+        Eigen::Vector3d m = Eigen::Vector3d::Zero();
+        m[c] = a * u[p[2]][p[1]][p[0]] * grid_.face_volume(c, p);
+        momentum += m;
+        angular += (Eigen::Vector3d(x[0], x[1], x[2]) - body.pose.position()).cross(m);
+      });
+      for (int d = 0; d < 3; ++d) {
+        out[kInnerWidth * b + static_cast<std::size_t>(d)] += momentum[d];
+        out[kInnerWidth * b + 3 + static_cast<std::size_t>(d)] += angular[d];
+      }
+    }
+    COSIM_PETSC(DMDAVecRestoreArrayRead(dm, flow.velocity(c), &u));
+  }
+  MPI_Allreduce(MPI_IN_PLACE, out.data(), static_cast<int>(out.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+  return out;
+}
+
+}  // namespace cosim::fluid

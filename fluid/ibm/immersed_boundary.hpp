@@ -1,0 +1,143 @@
+#pragma once
+// The immersed boundary method with multidirect forcing: bodies of any shape on the fixed
+// grid, their force smooth in the pose (Uhlmann, J. Comput. Phys. 209 (2005) 448; Breugem,
+// J. Comput. Phys. 231 (2012) 4469; Kempe & Froehlich, J. Comput. Phys. 231 (2012) 3663).
+//
+// Each body carries Lagrangian markers about one cell apart on its surface
+// (surface_sampling.hpp) moved inside by the retraction (below), each standing for the
+// volume dV_l = its share of the moved surface times the cell width across it. Inside every step, between the
+// explicit right-hand side and the implicit viscous solve (BodyForcing), the markers'
+// forces F_l are found such that the explicit estimate u~ with their spread force
+//   u~ + dt sum_l F_l delta(x - X_l) dV_l
+// interpolates to the body's velocity at every marker, U_l = sum_x u delta(x - X_l) h^3,
+// and the force goes into the viscous solve's right-hand side. Multidirect forcing finds
+// them by sweeps that each interpolate, correct F_l by the missing velocity over dt and
+// spread the correction, so that every marker sees its neighbours' forcing; here each sweep
+// is a conjugate-gradient iteration on that same linear system (symmetric in the impulses
+// dt F_l dV_l), which converges in a few sweeps where the plain correction stalls on the
+// system's slow modes, and the sweeps go on until the markers' velocity is met to
+// `tolerance`. Each step starts from the forces of the last one, so a steady flow needs
+// no sweep at all. The markers take part
+// on every rank (their interpolated velocities are summed over the ranks that own the
+// kernel's points), so no ghost layer is needed whatever the kernel's width. The projection
+// then runs over the whole domain with the fluid's own, never-changing operators.
+//
+// Load on a body: the reaction to the forcing plus the rate of change of the momentum of the
+// fluid inside it, whose inertia is then the fluid's own (Kempe & Froehlich):
+//   F = -rho sum_l F_l dV_l + rho d/dt int alpha u dV,
+//   T = -rho sum_l (X_l - x_c) x F_l dV_l + rho d/dt int alpha (x - x_c) x u dV,
+// alpha the volume fraction of volume_fraction.hpp, the derivative taken over the step. The
+// fluid's body force (a driving pressure gradient over rho) acts inside the bodies too, so
+// a body held against it feels it as the fluid it holds: the pressure gradient's force on
+// its volume.
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "fluid/body_forcing.hpp"
+#include "fluid/body_treatment.hpp"
+#include "fluid/grid.hpp"
+#include "fluid/ibm/body_distance.hpp"
+#include "fluid/ibm/delta_kernel.hpp"
+#include "fluid/ibm/kernel_stencil.hpp"
+
+namespace cosim::fluid {
+
+// How deep the markers sit under the surface, in cell widths h: the kernel spreads a
+// marker's force over a shell about as wide as itself, so the no-slip surface the markers
+// make lies outside them, and further out on a curved surface, where the shell's outer half
+// has more room than its inner one. So a marker moves in by
+//   h (constant + curvature h kappa),   kappa = kappa_1 + kappa_2,
+// the sum of the principal curvatures where it sits (2 / r on a sphere, 1 / r on a
+// cylinder, the section's curvature on a two-dimensional grid).
+struct Retraction {
+  double constant = 0;
+  double curvature = 0;
+};
+
+// Per kernel, the retraction calibrated on the Hasimoto array (`fluid_accuracy
+// --calibrate`): for Roma's kernel both parts, zeroing the mean error over sphere positions
+// at d/h = 8 and 12; for the wider kernels (whose markers go deeper, as their shell is
+// thicker) a constant only, zeroing it at d/h = 8.
+Retraction calibrated_retraction(DeltaKernel kernel);
+
+struct IbmOptions {
+  DeltaKernel kernel = DeltaKernel::roma3;
+  int sweeps = 50;          // forcing sweeps per step, at most
+  double tolerance = 1e-4;  // largest slip at a marker, of the largest velocity there
+  std::optional<Retraction> retraction;  // unset: calibrated_retraction(kernel)
+  double spacing = 1.0;                  // marker spacing in cell widths
+};
+
+class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
+ public:
+  // grid must outlive this object.
+  explicit ImmersedBoundary(const Grid& grid, IbmOptions options = {});
+
+  // Throws std::invalid_argument for a half-space, or a body none of whose markers stays
+  // inside it once retracted (thinner than twice the retraction, or off a two-dimensional
+  // grid's plane).
+  std::size_t add(RigidBody body) override;
+  void move(std::size_t body, const geometry::Pose& pose, const Eigen::Vector3d& velocity,
+            const Eigen::Vector3d& angular_velocity) override;
+  const RigidBody& body(std::size_t i) const override { return bodies_.at(i).body; }
+  std::size_t size() const override { return bodies_.size(); }
+
+  void attach(NavierStokes& flow) override;
+  // Measured in the last step (zero before the first).
+  std::vector<HydrodynamicLoad> loads(const NavierStokes& flow) const override;
+  IndicatorPatch cell_fraction(std::size_t i) const override;
+  // Per body the inner fluid's momentum and angular momentum at the last step's end, and
+  // its markers' forces.
+  std::vector<double> state() const override;
+  void restore(std::span<const double> state) override;
+
+  void force(const NavierStokes& flow, double dt, const ForcingArrays& arrays) override;
+  void finish_step(const NavierStokes& flow, double dt) override;
+
+  // Body i's markers where it is now, world frame.
+  std::vector<Eigen::Vector3d> markers(std::size_t i) const;
+  // Largest |U_body - U_l| over the markers after the last step's sweeps, and how many
+  // sweeps it took.
+  double slip() const { return slip_; }
+  int sweeps() const { return sweeps_; }
+  const IbmOptions& options() const { return options_; }
+
+ private:
+  struct Marker {
+    Eigen::Vector3d position, normal;  // body frame
+    double area = 0;
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();  // F_l of the last step, world frame
+  };
+  struct Entry {
+    Entry(const Grid& grid, RigidBody b) : body(std::move(b)), distance(grid, body) {}
+    RigidBody body;
+    BodyDistance distance;
+    std::vector<Marker> markers;
+    std::array<double, 6> inner{};  // int alpha u dV, int alpha (x - x_c) x u dV
+    bool inner_known = false;
+    Eigen::Vector3d forcing = Eigen::Vector3d::Zero(), forcing_moment = Eigen::Vector3d::Zero();  // sum F dV
+    std::vector<IndicatorPatch> fraction;  // alpha at this rank's faces of each component, where the body is
+    HydrodynamicLoad load;
+  };
+  // A marker taking part in the current step.
+  struct Active {
+    std::size_t body = 0, marker = 0;
+    Eigen::Vector3d position, target;
+    double volume = 0;
+    std::array<KernelStencil, 3> stencil;
+    std::array<bool, 3> local{};  // the stencil meets this rank's faces of the component
+  };
+
+  void collect_active_markers();
+  std::vector<double> inner_momenta(const NavierStokes& flow) const;  // 6 per body, summed over ranks
+
+  const Grid& grid_;
+  IbmOptions options_;
+  std::vector<Entry> bodies_;
+  std::vector<Active> active_;
+  double slip_ = 0;
+  int sweeps_ = 0;
+};
+
+}  // namespace cosim::fluid

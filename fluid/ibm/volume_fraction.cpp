@@ -1,0 +1,72 @@
+#include "fluid/ibm/volume_fraction.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "fluid/control_volumes.hpp"
+#include "rigidbody/geometry/aabb.hpp"
+
+namespace cosim::fluid {
+
+double level_set_fraction(std::span<const double> phi) {
+  double inside = 0, total = 0;
+  for (double p : phi) {
+    if (p < 0) inside -= p;
+    total += std::abs(p);
+  }
+  return total > 0 ? inside / total : 1.0;
+}
+
+IndicatorPatch volume_fraction(const Grid& grid, int location, const RigidBody& body, const BodyDistance& distance,
+                               const Box& within) {
+  const Box range = control_volumes_meeting(grid, location, geometry::world_aabb(body.shape, body.pose), within);
+  // The sub-boxes' corners form a lattice: along a component's own axis from cell centre to
+  // cell centre, across it (and for cell centres) from face to face, each interval halved;
+  // on a degenerate axis the midplane.
+  constexpr int kSplit = 2;
+  std::array<std::vector<double>, 3> corner;
+  for (int d = 0; d < 3; ++d) {
+    const Axis& axis = grid.axis(d);
+    if (axis.degenerate()) {
+      corner[d] = {axis.centre(0)};
+      continue;
+    }
+    for (PetscInt i = range.lo[d]; i < range.hi[d]; ++i) {
+      const Interval cv = control_interval(axis, d == location, i);
+      for (int k = 0; k < kSplit; ++k) corner[d].push_back(cv.lo + (cv.hi - cv.lo) * k / kSplit);
+    }
+    if (range.hi[d] > range.lo[d]) corner[d].push_back(control_interval(axis, d == location, range.hi[d] - 1).hi);
+  }
+  std::vector<Eigen::Vector3d> nodes;
+  for (double z : corner[2])
+    for (double y : corner[1])
+      for (double x : corner[0]) nodes.emplace_back(x, y, z);
+  std::vector<double> phi(nodes.size());
+  distance(body, nodes, phi);
+  const std::array<std::size_t, 3> n{corner[0].size(), corner[1].size(), corner[2].size()};
+  std::array<int, 3> split{};
+  for (int d = 0; d < 3; ++d) split[d] = n[d] == 1 ? 1 : kSplit;
+  std::vector<double> values;
+  for_each_index(range, [&](const Index& p) {
+    double sum = 0;
+    for (int a = 0; a < split[0]; ++a)
+      for (int b = 0; b < split[1]; ++b)
+        for (int c = 0; c < split[2]; ++c) {
+          const std::array<std::size_t, 3> first{
+              n[0] == 1 ? 0 : static_cast<std::size_t>(kSplit * (p[0] - range.lo[0]) + a),
+              n[1] == 1 ? 0 : static_cast<std::size_t>(kSplit * (p[1] - range.lo[1]) + b),
+              n[2] == 1 ? 0 : static_cast<std::size_t>(kSplit * (p[2] - range.lo[2]) + c)};
+          std::array<double, 8> corners{};
+          for (std::size_t m = 0; m < 8; ++m) {
+            std::array<std::size_t, 3> at{};
+            for (std::size_t d = 0; d < 3; ++d) at[d] = first[d] + (n[d] == 1 ? 0 : (m >> d) & 1);
+            corners[m] = phi[at[0] + n[0] * (at[1] + n[1] * at[2])];
+          }
+          sum += level_set_fraction(corners);
+        }
+    values.push_back(sum / (split[0] * split[1] * split[2]));
+  });
+  return {range, std::move(values)};
+}
+
+}  // namespace cosim::fluid

@@ -1,0 +1,29 @@
+#pragma once
+// A body's volume fraction in the control volumes of one kind of grid point, from the signed
+// distance phi at the corners of each of a control volume's 2 x 2 x 2 halves (Kempe &
+// Froehlich, J. Comput. Phys. 231 (2012) 3663, eq. 30, on each half, averaged):
+//   alpha = sum_m -phi_m H(-phi_m) / sum_m |phi_m|,
+// exact for a plane parallel to a face of the box and otherwise close to the cut volume,
+// and, unlike a count of sub-samples, continuous in the body's pose: the
+// immersed boundary's inner-fluid momentum int alpha u dV, whose rate of change is part of
+// the body's force, then changes smoothly as the body moves across the grid.
+#include <span>
+
+#include "fluid/fbm_indicator.hpp"
+#include "fluid/grid.hpp"
+#include "fluid/ibm/body_distance.hpp"
+#include "fluid/rigid_body.hpp"
+
+namespace cosim::fluid {
+
+// From the corners' signed distances (negative inside); 1 when all are zero.
+double level_set_fraction(std::span<const double> phi);
+
+// alpha at the points of `location` (a velocity component or kCellCentre) in `within`
+// whose control volumes meet the body's bounding box, with the body's distance as the
+// grid sees it; zero elsewhere. On a one-cell periodic axis the control volume's midplane
+// stands for it.
+IndicatorPatch volume_fraction(const Grid& grid, int location, const RigidBody& body, const BodyDistance& distance,
+                               const Box& within);
+
+}  // namespace cosim::fluid

@@ -1,0 +1,40 @@
+#include "fluid/program/body_surfaces.hpp"
+
+#include <limits>
+
+#include "rigidbody/geometry/surface_sampling.hpp"
+
+namespace cosim::program {
+
+BodySurfaces::BodySurfaces(const fluid::Grid& grid, const fluid::BodyTreatment& bodies, std::vector<std::string> names)
+    : names_(std::move(names)) {
+  int flat = -1;
+  for (int d = 0; d < 3; ++d)
+    if (grid.axis(d).degenerate()) flat = d;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const fluid::RigidBody& body = bodies.body(b);
+    double h = std::numeric_limits<double>::infinity();
+    for (int d = 0; d < 3; ++d)
+      if (d != flat) h = std::min(h, grid.axis(d).width(grid.axis(d).cell_at(body.pose.position()[d])));
+    const auto samples = flat < 0 ? geometry::sample_surface(body.shape, body.pose, h)
+                                   : geometry::sample_section(body.shape, body.pose, flat, grid.axis(flat).centre(0), h);
+    std::vector<Eigen::Vector3d> frame;
+    for (const geometry::SurfaceSample& s : samples) frame.push_back(body.pose.to_body(s.point));
+    points_.push_back(std::move(frame));
+  }
+}
+
+std::vector<output::PointSet> BodySurfaces::where(const fluid::BodyTreatment& bodies) const {
+  std::vector<output::PointSet> out;
+  for (std::size_t b = 0; b < points_.size(); ++b) {
+    output::PointSet set{names_.at(b), {}};
+    for (const Eigen::Vector3d& p : points_[b]) {
+      const Eigen::Vector3d x = bodies.body(b).pose.to_world(p);
+      set.points.insert(set.points.end(), {x[0], x[1], x[2]});
+    }
+    out.push_back(std::move(set));
+  }
+  return out;
+}
+
+}  // namespace cosim::program

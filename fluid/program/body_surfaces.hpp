@@ -1,0 +1,28 @@
+// The bodies' surfaces as point sets of the run file, so that ParaView shows the bodies
+// with the flow: points about a cell apart on each surface (geometry::sample_surface; on a
+// two-dimensional grid the section by the layer's midplane), kept in the body's frame and
+// placed where the body is now.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fluid/body_treatment.hpp"
+#include "fluid/grid.hpp"
+#include "output/field_frame.hpp"
+
+namespace cosim::program {
+
+class BodySurfaces {
+ public:
+  // `bodies` where they start, named as in the scene.
+  BodySurfaces(const fluid::Grid& grid, const fluid::BodyTreatment& bodies, std::vector<std::string> names);
+  // One set per body, named after it, where `bodies` places it now.
+  std::vector<output::PointSet> where(const fluid::BodyTreatment& bodies) const;
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<std::vector<Eigen::Vector3d>> points_;  // body frame
+};
+
+}  // namespace cosim::program
