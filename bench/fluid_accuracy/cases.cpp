@@ -209,4 +209,44 @@ Smoothness sphere_through_a_cell(const BodyOptions& method, int steps_per_cell) 
   return s;
 }
 
+Towed towed_sphere(const BodyOptions& method, double cells_per_step, double reynolds) {
+  constexpr int n = 40;
+  constexpr double h = 1.0 / n, d = 6 * h, U = 1, z_start = 1.2, z_measure = z_start - 3.3 * d;
+  const double nu = U * d / reynolds;
+  const double start_time = MPI_Wtime();
+  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(n, 0, 1, false), Axis::uniform(n, 0, 1, false),
+                               Axis::uniform(64, 0, 64 * h, false)});
+  BoundaryConditions bc(grid);
+  Towed out;
+  out.cells_per_step = cells_per_step;
+  const double dt = cells_per_step * h / U;
+  out.viscous_number = nu * dt / (h * h);
+  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(nu), {0, 0, 0}},
+                    {.cfl = 10, .dt_max = dt, .dt_initial = dt});
+  const auto bodies = make_bodies(grid, method);
+  const Eigen::Vector3d velocity(0, 0, -U);
+  // Off the cells' centres and faces by a generic amount.
+  const Eigen::Vector3d start(0.5 + 0.31 * h, 0.5 + 0.17 * h, z_start);
+  bodies->add({geometry::Sphere(d / 2), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
+  bodies->attach(flow);
+  flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
+  double last_z = z_start, last_drag = 0;
+  for (int k = 1;; ++k) {
+    const Eigen::Vector3d at = start + k * dt * velocity;
+    bodies->move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero());
+    flow.step(dt);
+    const double drag = bodies->loads(flow)[0].force.z();
+    if (at.z() <= z_measure) {  // linear between the two steps around it
+      const double w = (last_z - z_measure) / (last_z - at.z());
+      out.drag = (1 - w) * last_drag + w * drag;
+      out.steps = k;
+      break;
+    }
+    last_z = at.z();
+    last_drag = drag;
+  }
+  out.seconds = MPI_Wtime() - start_time;
+  return out;
+}
+
 }  // namespace cosim::bench

@@ -46,4 +46,15 @@ struct Smoothness {
 };
 Smoothness sphere_through_a_cell(const fluid::BodyOptions& method, int steps_per_cell);
 
+// What the time step costs a moving body: a sphere of six cells across (ten Cate's d/h, in
+// a closed box of 6.7 x 6.7 x 10.7 diameters on 40 x 40 x 64 cells, as their tank) towed
+// downwards at constant speed U from rest at Reynolds number U d / nu, its drag once it has
+// travelled 3.3 diameters, with the fluid's step dt = cells_per_step h / U. The viscous
+// number nu dt / h^2 is 6 cells_per_step / Re.
+struct Towed {
+  double cells_per_step = 0, viscous_number = 0, drag = 0, seconds = 0;
+  int steps = 0;
+};
+Towed towed_sphere(const fluid::BodyOptions& method, double cells_per_step, double reynolds);
+
 }  // namespace cosim::bench

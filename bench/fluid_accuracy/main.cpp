@@ -3,8 +3,8 @@
 // in the cell per grid: the spread over the body's alignment to the grid) and the DFG 2D-1
 // cylinder (C_D), each on several grid levels. Prints one row per run; --csv writes them too
 // (plot.py draws error against wall time). --oscillating runs the oscillating-cylinder
-// study instead (--csv: the force histories, plot_oscillating.py). Serial or under mpirun
-// (PETSC_COMM_WORLD).
+// study instead (--csv: the force histories, plot_oscillating.py), --towed the time-step
+// study of a moving sphere. Serial or under mpirun (PETSC_COMM_WORLD).
 #include <CLI/CLI.hpp>
 #include <petscsys.h>
 
@@ -114,6 +114,32 @@ void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ib
               std::string(name(ibm.kernel)).c_str(), constant, curvature, r1, 0.4 * boxes[0], r2, 0.4 * boxes[1]);
 }
 
+// The towed sphere at each time step, finest last: the drag's error against the finest
+// step's and its observed order in the step.
+void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, std::vector<double> cells_per_step,
+                 double reynolds) {
+  std::sort(cells_per_step.rbegin(), cells_per_step.rend());
+  PetscPrintf(PETSC_COMM_WORLD, "towed sphere, d/h 6, Re %g\n", reynolds);
+  PetscPrintf(PETSC_COMM_WORLD, "%-26s %10s %9s %6s %9s %10s %12s %7s\n", "method", "cells/step", "nu dt/h2", "steps",
+              "wall [s]", "drag", "vs finest", "order");
+  for (const auto& method : methods) {
+    std::vector<Towed> runs;
+    for (double c : cells_per_step) runs.push_back(towed_sphere(method, c, reynolds));
+    const double finest = runs.back().drag;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const Towed& r = runs[i];
+      // From the differences between neighbouring steps (each halving the last, or not).
+      double order = std::nan("");
+      if (i + 2 < runs.size())
+        order = std::log(std::abs((runs[i].drag - runs[i + 1].drag) / (runs[i + 1].drag - runs[i + 2].drag))) /
+                std::log(runs[i].cells_per_step / runs[i + 1].cells_per_step);
+      PetscPrintf(PETSC_COMM_WORLD, "%-26s %10.3f %9.3f %6d %9.1f %10.6f %+11.3f%% %7.2f\n", label(method).c_str(),
+                  r.cells_per_step, r.viscous_number, r.steps, r.seconds, r.drag, 100 * (r.drag - finest) / finest,
+                  order);
+    }
+  }
+}
+
 void study(const Settings& s, const std::string& csv) {
   std::vector<FluidRun> runs;
   print_header();
@@ -167,6 +193,11 @@ int main(int argc, char** argv) {
                "Hasimoto at d/h 4.8 on one position for 500 steps, DFG at D/h 5 (the oscillating cylinder: D/h 5, 10 "
                "over 1.25 periods)");
   app.add_flag("--oscillating", oscillating, "The oscillating cylinder (D/h 5, 10, 20, two periods) instead");
+  std::vector<double> towed;
+  app.add_option("--towed", towed,
+                 "The towed sphere (d/h 6) instead, at these time steps in cells the body moves per step");
+  double reynolds = 1.5;
+  app.add_option("--reynolds", reynolds, "The towed sphere's Reynolds number (ten Cate E1 1.5, E4 32)");
   app.add_option("--method", method, "ibm, staircase or both")->check(CLI::IsMember({"ibm", "staircase", "both"}));
   app.add_option("--kernel", kernel, "IBM kernel")->check(CLI::IsMember({"roma3", "peskin4", "bao6"}));
   double retraction = -1, curvature = 0;
@@ -205,6 +236,8 @@ int main(int argc, char** argv) {
   try {
     if (calibrating)
       calibrate(s.boxes, ibm, s.positions);
+    else if (!towed.empty())
+      towed_study(s.methods, towed, reynolds);
     else if (oscillating)
       oscillating_study(quick, csv, s.methods);
     else

@@ -189,11 +189,7 @@ std::size_t ImmersedBoundary::add(RigidBody body) {
 
 void ImmersedBoundary::move(std::size_t i, const geometry::Pose& pose, const Eigen::Vector3d& velocity,
                             const Eigen::Vector3d& angular_velocity) {
-  Entry& e = bodies_.at(i);
-  RigidBody& b = e.body;
-  // A body that stays put keeps its volume fractions (a fixed body: every step).
-  if (pose.position() != b.pose.position() || pose.orientation().coeffs() != b.pose.orientation().coeffs())
-    e.fraction.clear();
+  RigidBody& b = bodies_.at(i).body;
   b.pose = pose;
   b.velocity = velocity;
   b.angular_velocity = angular_velocity;
@@ -305,7 +301,7 @@ void ImmersedBoundary::collect_active_markers() {
 void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingArrays& arrays) {
   collect_active_markers();
   for (Entry& e : bodies_) {
-    if (!e.fraction.empty()) continue;
+    e.fraction.clear();
     for (int c = 0; c < 3; ++c)
       e.fraction.push_back(volume_fraction(grid_, c, e.body, e.distance, grid_.owned(grid_.velocity_dm(c))));
   }

@@ -117,7 +117,7 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
     std::array<double, 6> inner{};  // int alpha u dV, int alpha (x - x_c) x u dV
     bool inner_known = false;
     Eigen::Vector3d forcing = Eigen::Vector3d::Zero(), forcing_moment = Eigen::Vector3d::Zero();  // sum F dV
-    std::vector<IndicatorPatch> fraction;  // alpha at this rank's faces of each component; empty: to compute
+    std::vector<IndicatorPatch> fraction;  // alpha at this rank's faces of each component, where the body is
     HydrodynamicLoad load;
   };
   // A marker taking part in the current step.

@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
   spdlog::set_pattern("cosim-fluid: %^%l%$: %v");
   if (std::getenv(cosim::protocol::kEndpointEnv) != nullptr) return with_petsc({argv + 1, argv + argc}, coupled);
 
-  CLI::App app{"cosim-fluid: Navier-Stokes with fictitious-boundary bodies; coupled through cosim run, or --standalone"};
+  CLI::App app{"cosim-fluid: Navier-Stokes with rigid bodies inside (immersed boundary or staircase); coupled through cosim run, or --standalone"};
   app.allow_extras();
   cosim::participant::ProgramArgs args;
   cosim::participant::add_program_args(app, args, "Run this scene with the bodies in prescribed motion",
