@@ -138,6 +138,19 @@ class StokesArray {
   double velocity_ = 0, force_ = 0;
 };
 
+// Moves body 0 from `start` at constant `velocity`, one fluid step of dt at a time, and
+// after step k calls after(k, where the body is now) until it returns false.
+template <typename After>
+void tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start, const Eigen::Vector3d& velocity,
+         double dt, After after) {
+  for (int k = 1;; ++k) {
+    const Eigen::Vector3d at = start + k * dt * velocity;
+    bodies.move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero());
+    flow.step(dt);
+    if (!after(k, at)) return;
+  }
+}
+
 double hasimoto_error(double velocity) {
   const double c = 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius;  // V / L^3, L = 1
   const double k = 1 / (1 - 1.7601 * std::cbrt(c) + c - 1.5593 * c * c);
@@ -179,15 +192,13 @@ Smoothness sphere_through_a_cell(const BodyOptions& method, int steps_per_cell) 
   bodies->attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   std::vector<double> time, drag;
-  for (int k = 1; k <= warm + measured; ++k) {
-    bodies->move(0, geometry::Pose(start + k * dt * velocity, Eigen::Quaterniond::Identity()), velocity,
-                 Eigen::Vector3d::Zero());
-    flow.step(dt);
+  tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d&) {
     if (k > warm) {
       time.push_back(k * dt);
       drag.push_back(-bodies->loads(flow)[0].force.dot(direction));
     }
-  }
+    return k < warm + measured;
+  });
   // Least-squares quadratic through the drag (normal equations on t - mean: well scaled).
   const double tm = (time.front() + time.back()) / 2;
   Eigen::MatrixXd basis(time.size(), 3);
@@ -231,20 +242,18 @@ Towed towed_sphere(const BodyOptions& method, double cells_per_step, double reyn
   bodies->attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   double last_z = z_start, last_drag = 0;
-  for (int k = 1;; ++k) {
-    const Eigen::Vector3d at = start + k * dt * velocity;
-    bodies->move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero());
-    flow.step(dt);
+  tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
     const double drag = bodies->loads(flow)[0].force.z();
     if (at.z() <= z_measure) {  // linear between the two steps around it
       const double w = (last_z - z_measure) / (last_z - at.z());
       out.drag = (1 - w) * last_drag + w * drag;
       out.steps = k;
-      break;
+      return false;
     }
     last_z = at.z();
     last_drag = drag;
-  }
+    return true;
+  });
   out.seconds = MPI_Wtime() - start_time;
   return out;
 }
