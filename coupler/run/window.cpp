@@ -8,9 +8,12 @@
 namespace cosim::run {
 namespace {
 
-double relative(const Eigen::VectorXd& change, const Eigen::VectorXd& value) {
+// The change relative to the larger of the data at the window's start and end: the window
+// applies everything between the two, and a force that passes through zero in it (a body
+// stopping) would otherwise be held to a tolerance its own solver's round-off exceeds.
+double relative(const Eigen::VectorXd& change, const Eigen::VectorXd& start, const Eigen::VectorXd& end) {
   const double c = change.norm();
-  return c == 0.0 ? 0.0 : c / std::max(value.norm(), 1e-300);
+  return c == 0.0 ? 0.0 : c / std::max({start.norm(), end.norm(), 1e-300});
 }
 
 Eigen::VectorXd stack(const Exchange& e) {
@@ -140,7 +143,7 @@ WindowResult WindowRunner::serial_implicit(const Span& s, const Exchange& start)
     r.end = call(roles_.force_providers, s, it, start, moved, r);
     observe(s, it, start, r);
     r.iterations = it;
-    r.residual = relative(r.end.forces - x, r.end.forces);
+    r.residual = relative(r.end.forces - x, start.forces, r.end.forces);
     if (r.residual <= coupling_.tolerance) return r;
     x = accelerator_->next(x, r.end.forces);
   }
@@ -158,8 +161,8 @@ WindowResult WindowRunner::parallel_implicit(const Span& s, const Exchange& star
     const Exchange guess = with_unit_quaternions(unstack(x, n_poses));
     r.end = call(roles_.all(), s, it, start, guess, r);
     r.iterations = it;
-    r.residual = std::max(relative(r.end.poses - guess.poses, r.end.poses),
-                          relative(r.end.forces - guess.forces, r.end.forces));
+    r.residual = std::max(relative(r.end.poses - guess.poses, start.poses, r.end.poses),
+                          relative(r.end.forces - guess.forces, start.forces, r.end.forces));
     if (r.residual <= coupling_.tolerance) return r;
     if (it == 1) weights = block_weights(r.end);
     const Eigen::VectorXd next =

@@ -4,7 +4,8 @@
 // (rigid bodies) with the forces of t0 held constant, then the force providers with poses
 // going from those of t0 to the new ones; parallel-explicit advances everyone with the
 // values of t0 held constant. Implicit schemes repeat the window until the exchanged data
-// stop changing (relative residual below the tolerance) or max_iterations is reached:
+// stop changing (their change relative to the larger of their values at the window's start
+// and end below the tolerance) or max_iterations is reached:
 // serial-implicit iterates on the forces, parallel-implicit on poses and forces stacked
 // (each block divided by its norm in the first iteration so neither dominates the
 // accelerator). Participants that provide neither (observers) go last with the final

@@ -39,7 +39,7 @@ struct Coupling {
   Acceleration acceleration = Acceleration::IqnIls;
   double relaxation = 0.5;                 // constant factor, or Aitken's first factor
   int max_iterations = 50;
-  double tolerance = 1e-6;                 // relative residual of the exchanged data
+  double tolerance = 1e-6;                 // change of the exchanged data per iteration, relative to the larger of their start and end values
   Transport transport = Transport::Ipc;
   double timeout = 60.0;                   // seconds a participant may take to answer
 };

@@ -4,6 +4,8 @@
 #include <array>
 #include <stdexcept>
 
+#include <spdlog/spdlog.h>
+
 #include "rigidbody/geometry/scene_shape.hpp"
 #include "scene/eigen.hpp"
 #include "scene/error.hpp"
@@ -67,6 +69,24 @@ std::vector<world::BodyDesc> walls(const scene::Scene& scene, const scene::Reade
   return out;
 }
 
+// lubrication: {viscosity: mu, range: gap the fluid resolves, roughness: gap where it stops}
+solver::LubricationOptions lubrication(const scene::Reader& options, bool contact) {
+  if (!options.has("lubrication")) return {};
+  const scene::Reader r = options.map("lubrication");
+  solver::LubricationOptions l;
+  l.viscosity = r.number("viscosity", scene::Range::above(0));
+  l.range = r.number("range", scene::Range::above(0));
+  l.roughness = r.number("roughness", 1e-3 * l.range, scene::Range::above(0));
+  if (l.roughness >= l.range) r.fail("roughness", "must be below range (" + std::to_string(l.range) + " m)");
+  r.finish();
+  // The film acts on the pairs the contact pipeline finds; without it there are none.
+  if (!contact) {
+    spdlog::warn("{}: no contact effect in effects, so the lubrication force is not applied", options.path("lubrication"));
+    return {};
+  }
+  return l;
+}
+
 }  // namespace
 
 ProgramOptions program_options(const scene::Scene& scene) {
@@ -103,6 +123,7 @@ ProgramOptions program_options(const scene::Scene& scene) {
   constexpr std::array laws{solver::NormalLaw::linear, solver::NormalLaw::hertz};
   s.dem.law = laws[options.choice("dem_law", law_names, 0)];
   s.dem.normal_stiffness = options.number("normal_stiffness", s.dem.normal_stiffness, scene::Range::above(0));
+  s.lubrication = lubrication(options, s.contact);
   out.convex_hulls = convex_hulls(scene, options);
   out.walls = walls(scene, options, scene.has_effect(scene::Effect::Friction));
   options.finish();

@@ -4,6 +4,7 @@
 #include "rigidbody/dynamics/body_forces.hpp"
 #include "rigidbody/solver/dem_solver.hpp"
 #include "rigidbody/solver/impulse_solver.hpp"
+#include "rigidbody/solver/lubrication.hpp"
 
 namespace cosim::world {
 
@@ -21,10 +22,12 @@ struct Settings {
   // Simultaneous (Catto) or sequential (Newton's cradle passes momentum through).
   solver::Restitution restitution = solver::Restitution::simultaneous;
   solver::DemOptions dem{};
+  // The liquid film below the fluid grid's resolution, with either solver (off by default).
+  solver::LubricationOptions lubrication{};
   // Pairs whose bounding spheres are this close become graph edges, and points with a gap
   // below it are speculative contacts the solver keeps from closing too fast. It should
   // exceed the distance a body travels in one substep. 0: a tenth of the smallest bounded
-  // body's bounding radius.
+  // body's bounding radius. Never below the lubrication range.
   double contact_margin = 0.0;
   double dt = 1e-3;  // substep [s]
   dynamics::BodyForces body_forces{.gravity = true};  // gravity on/off and g, buoyancy

@@ -26,6 +26,9 @@ World::World(const Settings& settings)
     : settings_(settings), smallest_radius_(std::numeric_limits<double>::infinity()) {
   if (!(settings.dt > 0.0)) throw std::invalid_argument("world: dt must be positive");
   if (!(settings.contact_margin >= 0.0)) throw std::invalid_argument("world: contact margin must be >= 0");
+  const solver::LubricationOptions& l = settings.lubrication;
+  if (l.active() && !(l.roughness > 0.0 && l.range > l.roughness))
+    throw std::invalid_argument("world: lubrication needs 0 < roughness < range");
 }
 
 std::uint32_t World::add(const BodyDesc& body) {
@@ -41,6 +44,8 @@ std::uint32_t World::add(const BodyDesc& body) {
     inertia.density = body.density;
   }
   shapes_.push_back(body.shape);
+  // A sphere's film force is exact; other shapes get their bounding sphere's (an estimate).
+  radii_.push_back(bounded ? geometry::bounding_radius(body.shape) : std::numeric_limits<double>::infinity());
   states_.push_back(body.state);
   states_.back().orientation.normalize();
   inertias_.push_back(inertia);
@@ -52,9 +57,11 @@ std::uint32_t World::add(const BodyDesc& body) {
   return static_cast<std::uint32_t>(states_.size() - 1);
 }
 
+// Pairs within the lubrication range must reach the narrow phase whatever the margin.
 double World::margin() const {
-  if (settings_.contact_margin > 0.0 || !std::isfinite(smallest_radius_)) return settings_.contact_margin;
-  return 0.1 * smallest_radius_;
+  const double film = settings_.lubrication.active() ? settings_.lubrication.range : 0.0;
+  if (settings_.contact_margin > 0.0 || !std::isfinite(smallest_radius_)) return std::max(settings_.contact_margin, film);
+  return std::max(0.1 * smallest_radius_, film);
 }
 
 StepReport World::advance(double window, std::span<const dynamics::WindowWrench> external) {

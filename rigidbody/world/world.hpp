@@ -67,6 +67,7 @@ class World {
   Settings settings_;
   double time_ = 0.0;
   std::vector<geometry::Shape> shapes_;
+  std::vector<double> radii_;  // of curvature, for the lubrication force (infinite: a plane)
   std::vector<dynamics::BodyState> states_;
   std::vector<dynamics::BodyInertia> inertias_;
   std::vector<BodyMaterial> materials_;

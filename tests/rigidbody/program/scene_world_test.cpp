@@ -170,6 +170,28 @@ TEST(SceneWorld, BadDemOptionsAreNamed) {
   EXPECT_EQ(k.value, "-1");
 }
 
+TEST(SceneWorld, LubricationReachesTheSettings) {
+  const auto s = settings_of(scene::load_scene_from_string(
+      scene_text("[gravity, contact]", ball, "{lubrication: {viscosity: 0.058, range: 2.5e-3}}")));
+  EXPECT_EQ(s.lubrication.viscosity, 0.058);
+  EXPECT_EQ(s.lubrication.range, 2.5e-3);
+  EXPECT_DOUBLE_EQ(s.lubrication.roughness, 2.5e-6);  // a thousandth of the range unless given
+  EXPECT_FALSE(settings_of(scene::load_scene_from_string(scene_text("[gravity, contact]", ball))).lubrication.active());
+  // Without contact there are no pairs to act on: a warning, and no film.
+  EXPECT_FALSE(settings_of(scene::load_scene_from_string(
+                               scene_text("[gravity]", ball, "{lubrication: {viscosity: 0.058, range: 2.5e-3}}")))
+                   .lubrication.active());
+}
+
+TEST(SceneWorld, BadLubricationIsNamed) {
+  const auto rough = error_of("{lubrication: {viscosity: 0.058, range: 1.0e-3, roughness: 2.0e-3}}");
+  EXPECT_EQ(rough.key, "participants.rigidbody.options.lubrication.roughness");
+  EXPECT_EQ(rough.value, "2.0e-3");
+  EXPECT_EQ(error_of("{lubrication: {range: 1.0e-3}}").key, "participants.rigidbody.options.lubrication.viscosity");
+  EXPECT_EQ(error_of("{lubrication: {viscosity: 0.058, range: 1.0e-3, gap: 1}}").key,
+            "participants.rigidbody.options.lubrication.gap");
+}
+
 const std::string gem_and_ball =
     ball + "  - {name: gem, shape: {type: mesh, file: " COSIM_CONFIGS_DIR "/meshes/icosahedron.obj}, material: {density: 1000}, position: [1, 0, 1]}\n";
 
