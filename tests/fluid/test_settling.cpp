@@ -28,11 +28,13 @@ constexpr double kRadius = 0.0075;
 struct Settling {
   double rho_p = 1120, rho_f = 960, mu = 0.058;
   double z0 = 0.1275;
+  double w0 = 0;  // initial vertical velocity
   std::string scheme = "serial-implicit";
   double window = 0.005;
   double end = 0.05;
   int checkpoint_every = 1000;
   double virtual_mass = 0;
+  std::string lubrication;  // the rigid body's film options, none if empty
   std::string bodies = "{method: staircase, surface_offset: 0}";
   std::string cells = "[20, 20, 32]";
 
@@ -47,10 +49,11 @@ struct Settling {
            "effects: [gravity, buoyancy, hydrodynamics, contact]\n"
            "bodies:\n"
            "  - {name: sphere, shape: {type: sphere, radius: 0.0075}, material: {density: " + std::to_string(rho_p) +
-           "}, position: [0.05, 0.05, " + std::to_string(z0) + "]}\n"
+           "}, position: [0.05, 0.05, " + std::to_string(z0) + "], velocity: [0, 0, " + std::to_string(w0) + "]}\n"
            "participants:\n"
            "  rigidbody: {dt: " + std::to_string(std::min(window / 10, 5e-4)) + ", options: {fluid_density: " + std::to_string(rho_f) +
-           ", virtual_mass: " + std::to_string(virtual_mass) + ", walls: [z_min, z_max]}}\n"
+           ", virtual_mass: " + std::to_string(virtual_mass) + ", walls: [z_min, z_max]" +
+           (lubrication.empty() ? "" : ", lubrication: " + lubrication) + "}}\n"
            "  fluid:\n"
            "    dt: " + std::to_string(window) + "\n"
            "    options: {density: " + std::to_string(rho_f) + ", viscosity: {model: newtonian, mu: " + std::to_string(mu) +
@@ -208,6 +211,37 @@ TEST(Settling, ASphereRestingOnTheFloorAtTheStartStaysThere) {
   EXPECT_GT(lowest, kRadius * 0.99);
   EXPECT_LT(r.z.at(20), kRadius * 1.01);
   EXPECT_LT(fastest, 1e-3);
+}
+
+// Guards against: a landing through cosim-rigidbody's lubrication film (its implicit
+// normal damping, which grows like 1/gap, against the coupled fluid force) losing the
+// implicit scheme's convergence or bouncing the sphere. Launched at 0.2 m/s 4 mm above the
+// floor (d/h 4.5), the sphere still moves at 0.12 m/s after the first window. The window of an impulsive
+// landing stalls at max_iterations only when the contact falls so within it that IQN-ILS's
+// iterates straddle the kink (ten Cate's quick scene: 30 iterations, residual 0.27; with
+// the film 9, docs/results.md); this drop converges without the film too.
+TEST(Settling, ASphereLandingThroughTheFilmConvergesEveryWindow) {
+  Settling s = kImmersed;
+  s.cells = "[30, 30, 48]";
+  s.z0 = kRadius + 0.004;
+  s.w0 = -0.2;
+  s.end = 0.1;
+  s.lubrication = "{viscosity: 0.058, range: 3.3e-3}";
+  const Motion r = run("settling_landing", s);
+  const std::size_t last = r.z.rows - 1;
+  double fastest = 0, rising = 0, most = 0;
+  for (std::size_t k = 1; k < r.z.rows; ++k) {
+    EXPECT_LE(r.iterations.at(k), 12) << "window " << k;
+    most = std::max(most, r.iterations.at(k));
+    EXPECT_LT(r.residual.at(k), 1e-4) << "window " << k;
+    fastest = std::max(fastest, -r.w.at(k));
+    rising = std::max(rising, r.w.at(k));
+  }
+  std::printf("landing: fastest %.4f m/s, gap at the end %.3g m, fastest rise %.3g m/s, at most %g iterations\n",
+              fastest, r.z.at(last) - kRadius, rising, most);
+  EXPECT_GT(fastest, 0.08);
+  EXPECT_LT(r.z.at(last) - kRadius, 1e-4);
+  EXPECT_LT(rising, 1e-3);
 }
 
 // Guards against: losing the implicit scheme's convergence at long windows, where the
