@@ -222,6 +222,10 @@ int Reader::line(const std::string& key) const {
   return line_of(e ? e->key_node : map_);
 }
 
+std::string Reader::where(const std::string& key) const {
+  return file_ + ":" + std::to_string(line(key)) + ": " + path(key);
+}
+
 void Reader::fail(const std::string& key, const std::string& problem) const {
   const Entry* e = find(key);
   throw SceneError(file_, line(key), path(key), e ? text_of(e->value) : "", problem);

@@ -70,6 +70,7 @@ class Reader {
   YAML::Node node(const std::string& key) const;           // raw, required
 
   int line(const std::string& key) const;  // 1-based line of the key, or of this mapping if absent
+  std::string where(const std::string& key) const;  // "file:line: path.key", for warnings
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
   // Throws for the first key (in file order) present but never read:
   // "unknown key; expected one of: a, b, c".

@@ -81,7 +81,7 @@ solver::LubricationOptions lubrication(const scene::Reader& options, bool contac
   r.finish();
   // The film acts on the pairs the contact pipeline finds; without it there are none.
   if (!contact) {
-    spdlog::warn("{}: no contact effect in effects, so the lubrication force is not applied", options.path("lubrication"));
+    spdlog::warn("{}: no contact effect in effects, so the lubrication force is not applied", options.where("lubrication"));
     return {};
   }
   return l;
