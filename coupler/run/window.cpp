@@ -134,6 +134,10 @@ WindowResult WindowRunner::parallel_explicit(const Span& s, const Exchange& star
   return r;
 }
 
+bool WindowRunner::converged(double relative_change, const Eigen::VectorXd& force_change) const {
+  return relative_change <= coupling_.tolerance || force_change.norm() <= coupling_.force_tolerance;
+}
+
 WindowResult WindowRunner::serial_implicit(const Span& s, const Exchange& start) {
   WindowResult r;
   accelerator_->new_window();
@@ -144,7 +148,7 @@ WindowResult WindowRunner::serial_implicit(const Span& s, const Exchange& start)
     observe(s, it, start, r);
     r.iterations = it;
     r.residual = relative(r.end.forces - x, start.forces, r.end.forces);
-    if (r.residual <= coupling_.tolerance) return r;
+    if (converged(r.residual, r.end.forces - x)) return r;
     x = accelerator_->next(x, r.end.forces);
   }
   r.converged = false;
@@ -161,9 +165,10 @@ WindowResult WindowRunner::parallel_implicit(const Span& s, const Exchange& star
     const Exchange guess = with_unit_quaternions(unstack(x, n_poses));
     r.end = call(roles_.all(), s, it, start, guess, r);
     r.iterations = it;
-    r.residual = std::max(relative(r.end.poses - guess.poses, start.poses, r.end.poses),
-                          relative(r.end.forces - guess.forces, start.forces, r.end.forces));
-    if (r.residual <= coupling_.tolerance) return r;
+    const double poses = relative(r.end.poses - guess.poses, start.poses, r.end.poses);
+    const double forces = relative(r.end.forces - guess.forces, start.forces, r.end.forces);
+    r.residual = std::max(poses, forces);
+    if (poses <= coupling_.tolerance && converged(forces, r.end.forces - guess.forces)) return r;
     if (it == 1) weights = block_weights(r.end);
     const Eigen::VectorXd next =
         accelerator_->next(x.cwiseProduct(weights), stack(r.end).cwiseProduct(weights));

@@ -5,7 +5,8 @@
 // going from those of t0 to the new ones; parallel-explicit advances everyone with the
 // values of t0 held constant. Implicit schemes repeat the window until the exchanged data
 // stop changing (their change relative to the larger of their values at the window's start
-// and end below the tolerance) or max_iterations is reached:
+// and end below the tolerance, or the forces' change below force_tolerance) or
+// max_iterations is reached:
 // serial-implicit iterates on the forces, parallel-implicit on poses and forces stacked
 // (each block divided by its norm in the first iteration so neither dominates the
 // accelerator). Participants that provide neither (observers) go last with the final
@@ -59,6 +60,8 @@ class WindowRunner {
   WindowResult serial_implicit(const Span& s, const Exchange& start);
   WindowResult parallel_implicit(const Span& s, const Exchange& start);
   void observe(const Span& s, int iteration, const Exchange& start, WindowResult& r);
+  // The forces' relative change within the tolerance, or their change within force_tolerance.
+  bool converged(double relative_change, const Eigen::VectorXd& force_change) const;
 
   Peers& peers_;
   Roles roles_;

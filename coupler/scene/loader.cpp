@@ -40,6 +40,7 @@ Coupling read_coupling(const Reader& r, const Time& time) {
   c.relaxation = r.number("relaxation", c.relaxation, Range::left_open(0, 1));
   c.max_iterations = r.integer("max_iterations", c.max_iterations, Range::at_least(1));
   c.tolerance = r.number("tolerance", c.tolerance, Range::open(0, 1));
+  c.force_tolerance = r.number("force_tolerance", c.force_tolerance, Range::at_least(0));
   c.transport = pick(r, "transport", transport_names, c.transport);
   c.timeout = r.number("timeout", c.timeout, Range::above(0));
   r.finish();

@@ -40,6 +40,9 @@ struct Coupling {
   double relaxation = 0.5;                 // constant factor, or Aitken's first factor
   int max_iterations = 50;
   double tolerance = 1e-6;                 // change of the exchanged data per iteration, relative to the larger of their start and end values
+  // [N and N m] converged too when the forces change by at most this much: bodies at rest
+  // feel forces that fade towards the fluid solver's round-off. 0: the relative test only.
+  double force_tolerance = 0.0;
   Transport transport = Transport::Ipc;
   double timeout = 60.0;                   // seconds a participant may take to answer
 };

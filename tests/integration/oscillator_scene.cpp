@@ -19,6 +19,7 @@ std::string OscillatorScene::yaml() const {
     << "  relaxation: " << relaxation << "\n"
     << "  max_iterations: " << max_iterations << "\n"
     << "  tolerance: " << tolerance << "\n"
+    << "  force_tolerance: " << force_tolerance << "\n"
     << "  transport: " << transport << "\n"
     << "  timeout: " << timeout << "\n"
     << "output: {file: " << output << ", every: 1, checkpoint_every: " << checkpoint_every << "}\n"

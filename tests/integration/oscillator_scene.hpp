@@ -19,6 +19,7 @@ struct OscillatorScene {
   double relaxation = 0.5;
   int max_iterations = 100;
   double tolerance = 1e-10;
+  double force_tolerance = 0;
   std::string integrator = "verlet";
   std::string transport = "ipc";
   double timeout = 20;

@@ -157,6 +157,24 @@ TEST(Oscillator, AitkenAndIqnIlsNeedFewerIterationsThanConstantRelaxation) {
   EXPECT_LT(std::abs(by["iqn-ils"].max_error - by["constant"].max_error), 1e-6);
 }
 
+// Guards against: coupling.force_tolerance not stopping a window whose forces no longer
+// change by more than it (what bodies at rest need, whose forces fade towards round-off).
+// On the stiff case under constant relaxation (linear convergence, some 24 iterations per
+// window), whose spring force is some 40 N, a force tolerance of 1e-3 N stops windows
+// earlier than the relative 1e-8 alone, and the answer moves by far less than the
+// scheme's own error.
+TEST(Oscillator, ForceToleranceStopsWindowsWhoseForcesNoLongerChange) {
+  auto s = stiff();
+  s.acceleration = "constant";
+  const Outcome tight = run_scene(s, "force_tolerance_off");
+  s.force_tolerance = 1e-3;
+  const Outcome loose = run_scene(s, "force_tolerance_on");
+  std::cout << "force tolerance 0: " << tight.mean_iterations << " iterations per window, error "
+            << tight.max_error << "; 1e-3 N: " << loose.mean_iterations << ", error " << loose.max_error << "\n";
+  EXPECT_LT(loose.mean_iterations, tight.mean_iterations - 0.5);
+  EXPECT_LT(std::abs(loose.max_error - tight.max_error), 0.01 * tight.max_error);
+}
+
 TEST(Oscillator, SubcyclingWithDifferentStepsGivesTheSameAnswer) {
   auto s = base();
   s.window = 0.01;

@@ -195,6 +195,7 @@ TEST(Validation, CouplingBounds) {
   EXPECT_EQ(coupling("relaxation: 0"), "scene.yaml:2: coupling.relaxation = 0: must be in (0, 1]");
   EXPECT_EQ(coupling("tolerance: 1"), "scene.yaml:2: coupling.tolerance = 1: must be in (0, 1)");
   EXPECT_EQ(coupling("max_iterations: 0"), "scene.yaml:2: coupling.max_iterations = 0: must be >= 1");
+  EXPECT_EQ(coupling("force_tolerance: -1"), "scene.yaml:2: coupling.force_tolerance = -1: must be >= 0");
   EXPECT_EQ(coupling("timeout: -5"), "scene.yaml:2: coupling.timeout = -5: must be > 0");
   EXPECT_EQ(coupling("transport: udp"), "scene.yaml:2: coupling.transport = udp: expected one of: ipc, tcp");
   EXPECT_EQ(coupling("acceleration: anderson"),
