@@ -25,7 +25,7 @@ TEST(Validation, UnknownNestedKey) {
   EXPECT_EQ(load_error("time: {end: 1}\ncoupling: {window: 0.01, windw: 0.02}\n"
                        "domain: {min: [0, 0, 0], max: [1, 1, 1]}\n"),
             "scene.yaml:2: coupling.windw = 0.02: unknown key; expected one of: "
-            "window, scheme, acceleration, relaxation, max_iterations, tolerance, transport, timeout");
+            "window, scheme, acceleration, relaxation, max_iterations, tolerance, force_tolerance, transport, timeout");
   EXPECT_EQ(load_error(head + "bodies:\n" + ball(", colour: red")),
             "scene.yaml:5: bodies[0].colour = red: unknown key; expected one of: "
             "name, fixed, shape, material, position, orientation, velocity, angular_velocity");
