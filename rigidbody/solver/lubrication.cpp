@@ -11,12 +11,14 @@ namespace cosim::solver {
 
 void apply_lubrication(const ContactScene& scene, std::span<const double> radii, const LubricationOptions& options) {
   if (!options.active()) return;
-  const std::vector<Mobility> mobility = mobilities(scene.states, scene.inertias);
+  // Built at the first pair in the film: most substeps of a settling body have none.
+  std::vector<Mobility> mobility;
   for (const contact::PairContacts& pair : scene.contacts.pairs) {
     const std::span<const contact::ContactPoint> points = scene.contacts.points_of(pair);
     const contact::ContactPoint& p =
         *std::min_element(points.begin(), points.end(), [](const auto& x, const auto& y) { return x.distance < y.distance; });
     if (p.distance >= options.range) continue;
+    if (mobility.empty()) mobility = mobilities(scene.states, scene.inertias);
     // A plane's curvature is zero: R is then the other body's radius.
     const double curvature = 1.0 / radii[pair.a] + 1.0 / radii[pair.b];
     const double r = 1.0 / curvature;
