@@ -17,7 +17,6 @@ double damping_ratio(double restitution) {
 }
 
 DemReport solve_dem(const ContactScene& scene, std::span<CachedContact> memory, const DemOptions& options) {
-  const std::vector<Mobility> mobility = mobilities(scene.states, scene.inertias);
   const double dt = scene.dt;
   DemReport report;
   report.iterations = 1;
@@ -28,7 +27,7 @@ DemReport solve_dem(const ContactScene& scene, std::span<CachedContact> memory, 
     const contact::PairContacts& m = scene.contacts.pairs[i];
     const Material& material = scene.materials[i];
     // Translational reduced mass, the usual DEM choice (rotation does not soften the spring).
-    const double inverse_mass = mobility[m.a].inverse_mass + mobility[m.b].inverse_mass;
+    const double inverse_mass = scene.mobility[m.a].inverse_mass + scene.mobility[m.b].inverse_mass;
     if (inverse_mass == 0.0) continue;
     const double mass = 1.0 / inverse_mass;
     const double zeta = damping_ratio(material.restitution);
@@ -81,7 +80,7 @@ DemReport solve_dem(const ContactScene& scene, std::span<CachedContact> memory, 
   // Forces from the velocities at the start of the step, applied together: the result
   // does not depend on the order of the contacts.
   for (std::size_t i = 0; i < frames.size(); ++i)
-    frames[i].apply(dt * forces[i], scene.states, mobility);
+    frames[i].apply(dt * forces[i], scene.states, scene.mobility);
 
   if (dt > report.stable_dt && options.log)
     *options.log << "cosim DEM: dt = " << dt << " s exceeds the stable estimate " << report.stable_dt

@@ -37,9 +37,8 @@ struct Row {
 
 class GroupSolver {
  public:
-  GroupSolver(const ContactScene& scene, std::span<const Mobility> mobility,
-              std::span<const int> points_on, const ImpulseOptions& options)
-      : scene_(scene), mobility_(mobility), points_on_(points_on), options_(options) {}
+  GroupSolver(const ContactScene& scene, std::span<const int> points_on, const ImpulseOptions& options)
+      : scene_(scene), mobility_(scene.mobility), points_on_(points_on), options_(options) {}
 
   SolveReport solve(std::span<const std::uint32_t> pairs, std::span<CachedContact> memory) {
     build_rows(pairs, memory);
@@ -163,7 +162,6 @@ class GroupSolver {
 
 SolveReport solve_impulses(const ContactScene& scene, std::span<CachedContact> memory,
                            const ImpulseOptions& options) {
-  const std::vector<Mobility> mobility = mobilities(scene.states, scene.inertias);
   std::vector<int> points_on(scene.states.size(), 0);
   for (const auto& m : scene.contacts.pairs) {
     points_on[m.a] += static_cast<int>(m.count);
@@ -171,7 +169,7 @@ SolveReport solve_impulses(const ContactScene& scene, std::span<CachedContact> m
   }
   SolveReport total;
   for (const auto& group : contact_groups(scene.inertias, scene.contacts.pairs)) {
-    const SolveReport r = GroupSolver(scene, mobility, points_on, options).solve(group, memory);
+    const SolveReport r = GroupSolver(scene, points_on, options).solve(group, memory);
     total.iterations = std::max(total.iterations, r.iterations);
     total.residual = std::max(total.residual, r.residual);
     total.converged = total.converged && r.converged;

@@ -5,6 +5,7 @@
 
 #include "rigidbody/contact/contact_set.hpp"
 #include "rigidbody/dynamics/body.hpp"
+#include "rigidbody/solver/contact_frame.hpp"
 
 namespace cosim::solver {
 
@@ -19,6 +20,7 @@ struct Material {
 struct ContactScene {
   std::span<dynamics::BodyState> states;
   std::span<const dynamics::BodyInertia> inertias;
+  std::span<const Mobility> mobility;  // mobilities(states, inertias), once per step
   const contact::ContactSet& contacts;
   std::span<const Material> materials;  // one per contact pair
   double dt = 0.0;

@@ -52,7 +52,8 @@ void World::resolve_contacts(double dt, std::span<dynamics::BodyState> states, S
 
   // The solvers split the pairs into contact groups themselves (solver::contact_groups:
   // components linked through dynamic bodies only) and report the worst group.
-  const solver::ContactScene scene{states, inertias_, contacts, pair_materials_, dt};
+  mobility_ = solver::mobilities(states, inertias_);
+  const solver::ContactScene scene{states, inertias_, mobility_, contacts, pair_materials_, dt};
   // Before the contacts, so the solver sees the velocities the film has left.
   solver::apply_lubrication(scene, radii_, settings_.lubrication);
   const std::span<solver::CachedContact> memory = graph_.recall();

@@ -79,6 +79,7 @@ class World {
   std::vector<broadphase::Pair> pairs_;
   ContactGraph graph_;
   std::vector<solver::Material> pair_materials_;
+  std::vector<solver::Mobility> mobility_;
   narrowphase::MeshMaps mesh_maps_;
 };
 

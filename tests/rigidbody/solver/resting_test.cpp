@@ -91,7 +91,8 @@ TEST(RestingSphereDem, EstimatesStableStepAndWarns) {
   DemOptions options;
   std::ostringstream log;
   options.log = &log;
-  ContactScene problem{scene.world.states, scene.world.inertias, contacts, materials, 1e-4};
+  const std::vector<Mobility> mobility = mobilities(scene.world.states, scene.world.inertias);
+  ContactScene problem{scene.world.states, scene.world.inertias, mobility, contacts, materials, 1e-4};
   const double expected = 2.0 / std::sqrt(options.normal_stiffness / kMass) / options.safety;
   const DemReport fine = solve_dem(problem, memory, options);
   std::cout << "DEM stable dt estimate " << fine.stable_dt << " s\n";

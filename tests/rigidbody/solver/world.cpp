@@ -43,7 +43,8 @@ SolveReport World::step(double dt, const Contacts& contacts, const Solver& solve
   for (const contact::Manifold& m : manifolds) contact_set.add(m);
   const std::vector<Material> materials(contact_set.pairs.size(), material);
   memory.recall(contact_set, values);
-  const SolveReport report = solver({states, inertias, contact_set, materials, dt}, values);
+  const std::vector<Mobility> mobility = mobilities(states, inertias);
+  const SolveReport report = solver({states, inertias, mobility, contact_set, materials, dt}, values);
   memory.remember(contact_set, values);
   for (auto& s : states) {
     s.position += dt * s.velocity;
