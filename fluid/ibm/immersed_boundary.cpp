@@ -319,34 +319,58 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
   std::array<Box, 3> owned;
   for (int c = 0; c < 3; ++c) owned[static_cast<std::size_t>(c)] = grid_.owned(grid_.velocity_dm(c));
   const std::size_t n = active_.size();
-  // Over the markers' points of this rank: field += sum_l g_l w_l / dV, field = 0, and the
-  // interpolation sum_x w_l field (summed over the ranks).
+  // The stencils' points on this rank, flattened once per step: the sweeps spread onto,
+  // interpolate from and clear them up to `sweeps` times, and the per-point index and
+  // face-volume arithmetic took most of their time. A point is its offset from the owned
+  // box's first face, the same in every global vector of that component's DMDA.
+  struct Touch {
+    std::ptrdiff_t offset;
+    double weight;
+    double spread;  // weight / dV of the face
+  };
+  std::vector<Touch> touches;
+  std::vector<std::size_t> first(3 * n + 1, 0);
+  for (std::size_t l = 0; l < n; ++l)
+    for (std::size_t c = 0; c < 3; ++c) {
+      first[3 * l + c] = touches.size();
+      if (!active_[l].local[c]) continue;
+      const Box& box = owned[c];
+      for_each_point(active_[l].stencil[c], box, [&](const Index& p, double w) {
+        const std::ptrdiff_t offset =
+            ((p[2] - box.lo[2]) * (box.hi[1] - box.lo[1]) + (p[1] - box.lo[1])) * (box.hi[0] - box.lo[0]) +
+            (p[0] - box.lo[0]);
+        touches.push_back({offset, w, w / grid_.face_volume(static_cast<int>(c), p)});
+      });
+    }
+  first[3 * n] = touches.size();
+  const auto origins = [&](const std::array<PetscScalar***, 3>& field) {
+    std::array<PetscScalar*, 3> o{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      const Box& b = owned[c];
+      if (b.hi[0] > b.lo[0] && b.hi[1] > b.lo[1] && b.hi[2] > b.lo[2]) o[c] = &field[c][b.lo[2]][b.lo[1]][b.lo[0]];
+    }
+    return o;
+  };
+  // field += sum_l g_l w_l / dV; field = 0 there; and the interpolation sum_x w_l field
+  // (summed over the ranks).
   const auto spread = [&](const std::array<PetscScalar***, 3>& field, const std::vector<double>& g) {
-    for (std::size_t l = 0; l < n; ++l)
-      for (std::size_t c = 0; c < 3; ++c) {
-        if (!active_[l].local[c] || g[3 * l + c] == 0) continue;
-        PetscScalar*** f = field[c];
-        for_each_point(active_[l].stencil[c], owned[c], [&](const Index& p, double w) {
-          f[p[2]][p[1]][p[0]] += g[3 * l + c] * w / grid_.face_volume(static_cast<int>(c), p);
-        });
-      }
+    const auto o = origins(field);
+    for (std::size_t i = 0; i < 3 * n; ++i)
+      if (g[i] != 0)
+        for (std::size_t t = first[i]; t < first[i + 1]; ++t) o[i % 3][touches[t].offset] += g[i] * touches[t].spread;
   };
   const auto clear = [&](const std::array<PetscScalar***, 3>& field) {
-    for (std::size_t l = 0; l < n; ++l)
-      for (std::size_t c = 0; c < 3; ++c)
-        if (active_[l].local[c])
-          for_each_point(active_[l].stencil[c], owned[c],
-                         [&](const Index& p, double) { field[c][p[2]][p[1]][p[0]] = 0; });
+    const auto o = origins(field);
+    for (std::size_t i = 0; i < 3 * n; ++i)
+      for (std::size_t t = first[i]; t < first[i + 1]; ++t) o[i % 3][touches[t].offset] = 0;
   };
   const auto interpolate = [&](const std::array<PetscScalar***, 3>& field, std::vector<double>& out) {
-    for (std::size_t l = 0; l < n; ++l)
-      for (std::size_t c = 0; c < 3; ++c) {
-        double sum = 0;
-        if (active_[l].local[c])
-          for_each_point(active_[l].stencil[c], owned[c],
-                         [&](const Index& p, double w) { sum += w * field[c][p[2]][p[1]][p[0]]; });
-        out[3 * l + c] = sum;
-      }
+    const auto o = origins(field);
+    for (std::size_t i = 0; i < 3 * n; ++i) {
+      double sum = 0;
+      for (std::size_t t = first[i]; t < first[i + 1]; ++t) sum += touches[t].weight * o[i % 3][touches[t].offset];
+      out[i] = sum;
+    }
     MPI_Allreduce(MPI_IN_PLACE, out.data(), static_cast<int>(out.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
   };
 
@@ -368,12 +392,8 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
   // Jacobi-preconditioned: B's diagonal, sum_x w_l(x)^2 / dV_x, evens out how strongly
   // markers of different spacing and volume see themselves.
   std::vector<double> diagonal(3 * n, 0.0), scaled(3 * n);
-  for (std::size_t l = 0; l < n; ++l)
-    for (std::size_t c = 0; c < 3; ++c)
-      if (active_[l].local[c])
-        for_each_point(active_[l].stencil[c], owned[c], [&](const Index& p, double w) {
-          diagonal[3 * l + c] += w * w / grid_.face_volume(static_cast<int>(c), p);
-        });
+  for (std::size_t i = 0; i < 3 * n; ++i)
+    for (std::size_t t = first[i]; t < first[i + 1]; ++t) diagonal[i] += touches[t].weight * touches[t].spread;
   MPI_Allreduce(MPI_IN_PLACE, diagonal.data(), static_cast<int>(diagonal.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
   const auto precondition = [&] {
     for (std::size_t i = 0; i < 3 * n; ++i) scaled[i] = diagonal[i] > 0 ? residual[i] / diagonal[i] : 0.0;
