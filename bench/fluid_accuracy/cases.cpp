@@ -84,7 +84,10 @@ namespace {
 
 constexpr double kRadius = 0.2, kViscosity = 10, kDrive = 10;
 
-// Steady Stokes flow through the periodic array in the unit box on n^3 cells.
+// Steady Stokes flow through the periodic array in the unit box on n^3 cells, stepped at
+// the viscous number nu dt / h^2 = 1: the steady state does not depend on dt, but the
+// incremental scheme's slow splitting mode decays per step, and far more slowly at large
+// viscous numbers (fluid/README.md, "Accuracy study").
 class StokesArray {
  public:
   StokesArray(int n, const BodyOptions& method, const Eigen::Vector3d& centre)
@@ -93,7 +96,7 @@ class StokesArray {
               {Axis::uniform(n, 0, 1, true), Axis::uniform(n, 0, 1, true), Axis::uniform(n, 0, 1, true)}),
         bc_(grid_),
         flow_(grid_, bc_, {1.0, ViscosityModel::newtonian(kViscosity), {kDrive, 0, 0}},
-              {.cfl = 0.5, .dt_max = 0.002, .dt_initial = 0.002, .theta = 1.0}),
+              {.cfl = 0.5, .dt_max = dt(n), .dt_initial = dt(n), .theta = 1.0}),
         bodies_(make_bodies(grid_, method)) {
     bodies_->add({geometry::Sphere(kRadius), geometry::Pose(centre, Eigen::Quaterniond::Identity())});
     bodies_->attach(flow_);
@@ -101,10 +104,8 @@ class StokesArray {
   }
 
   // Steps to the steady state: until the mean velocity changes by less than 2e-5 of itself
-  // over 500 steps (at most max_steps). The immersed boundary's forcing and the projection settle
-  // together slowly, and not geometrically (fluid/README.md, "Accuracy study"): on 12^3 cells
-  // the error moves by 0.33, 0.08, 0.04, 0.02 % in the 500 steps after 500, 1000, 1500 and
-  // 2000 steps, 0.06 % in all from 2000 to 6500.
+  // over 500 steps (at most max_steps). On 16^3 cells the change per 100 steps shrank by a
+  // factor 0.79 each time, so what is left to come is below 1e-5 of U by then.
   int run_to_steady(int max_steps) {
     int steps = 0;
     for (double before = 0; steps < max_steps;) {
@@ -118,6 +119,7 @@ class StokesArray {
     return steps;
   }
 
+  static double dt(int n) { return 1.0 / (kViscosity * n * n); }
   double velocity() const { return velocity_; }
   double force() const { return force_; }
   double imposed_fraction() const {
