@@ -38,12 +38,12 @@ struct Row {
 class GroupSolver {
  public:
   GroupSolver(const ContactScene& scene, std::span<const int> points_on, const ImpulseOptions& options)
-      : scene_(scene), mobility_(scene.mobility), points_on_(points_on), options_(options) {}
+      : scene_(scene), points_on_(points_on), options_(options) {}
 
   SolveReport solve(std::span<const std::uint32_t> pairs, std::span<CachedContact> memory) {
     build_rows(pairs, memory);
     if (options_.restitution == Restitution::sequential) resolve_impacts();
-    for (const Row& r : rows_) r.frame.apply_local(r.impulse, scene_.states, mobility_);
+    for (const Row& r : rows_) r.frame.apply_local(r.impulse, scene_.states, scene_.mobility);
 
     SolveReport report;
     report.converged = false;
@@ -70,7 +70,7 @@ class GroupSolver {
         r.point = k;
         r.frame = make_frame(m, p, scene_.states);
         r.restitution = material.restitution;
-        r.law = {.response = r.frame.local_response(mobility_),
+        r.law = {.response = r.frame.local_response(scene_.mobility),
                  .target_normal_velocity = position_bias(p.distance),
                  .friction = material.friction,
                  .model = options_.friction};
@@ -110,7 +110,7 @@ class GroupSolver {
         const double un = r.frame.local_velocity(scene_.states)[0];
         if (un >= -options_.restitution_threshold) continue;
         const double impulse = -(1.0 + r.restitution) * un / r.law.response(0, 0);
-        r.frame.apply_local(Eigen::Vector3d(impulse, 0.0, 0.0), scene_.states, mobility_);
+        r.frame.apply_local(Eigen::Vector3d(impulse, 0.0, 0.0), scene_.states, scene_.mobility);
         fired = true;
       }
       if (!fired) return;
@@ -124,7 +124,7 @@ class GroupSolver {
     for (Row& r : rows_) {
       const Eigen::Vector3d next = update_point(r.law, r.frame.local_velocity(scene_.states), r.impulse);
       const Eigen::Vector3d delta = next - r.impulse;
-      r.frame.apply_local(delta, scene_.states, mobility_);
+      r.frame.apply_local(delta, scene_.states, scene_.mobility);
       r.impulse = next;
       change = std::max(change, delta.lpNorm<Eigen::Infinity>());
       size = std::max(size, next.lpNorm<Eigen::Infinity>());
@@ -142,7 +142,7 @@ class GroupSolver {
       Row& r = rows_[i];
       // A convex combination of two feasible impulses stays feasible: no re-projection.
       const Eigen::Vector3d delta = r.share * (proposals_[i] - r.impulse);
-      r.frame.apply_local(delta, scene_.states, mobility_);
+      r.frame.apply_local(delta, scene_.states, scene_.mobility);
       r.impulse += delta;
       change = std::max(change, delta.lpNorm<Eigen::Infinity>());
       size = std::max(size, r.impulse.lpNorm<Eigen::Infinity>());
@@ -151,7 +151,6 @@ class GroupSolver {
   }
 
   const ContactScene& scene_;
-  std::span<const Mobility> mobility_;
   std::span<const int> points_on_;  // contact points per body, all groups
   const ImpulseOptions& options_;
   std::vector<Row> rows_;
