@@ -13,7 +13,7 @@ std::string label(const BodyOptions& options) {
   char text[96];
   if (const auto* ibm = std::get_if<IbmOptions>(&options)) {
     const Retraction r = ibm->retraction.value_or(calibrated_retraction(ibm->kernel));
-    std::snprintf(text, sizeof text, "ibm %s r%.3f+%.3f", std::string(name(ibm->kernel)).c_str(), r.constant,
+    std::snprintf(text, sizeof text, "ibm %s r%.4f+%.4f", std::string(name(ibm->kernel)).c_str(), r.constant,
                   r.curvature);
   } else {
     std::snprintf(text, sizeof text, "staircase%s offset %.2f",

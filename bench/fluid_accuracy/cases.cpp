@@ -112,7 +112,8 @@ class StokesArray {
       for (int k = 0; k < 500; ++k) flow_.step();
       steps += 500;
       velocity_ = mean_u(flow_, double(n_) * n_ * n_);
-      if (std::abs(velocity_ - before) < 2e-5 * std::abs(velocity_)) break;
+      steady_ = std::abs(velocity_ - before) < 2e-5 * std::abs(velocity_);
+      if (steady_) break;
       before = velocity_;
     }
     force_ = bodies_->loads(flow_)[0].force[0];
@@ -122,6 +123,7 @@ class StokesArray {
   static double dt(int n) { return 1.0 / (kViscosity * n * n); }
   double velocity() const { return velocity_; }
   double force() const { return force_; }
+  bool steady() const { return steady_; }
   double imposed_fraction() const {
     const auto* staircase = dynamic_cast<const FictitiousBoundary*>(bodies_.get());
     if (!staircase) return 0;
@@ -138,6 +140,7 @@ class StokesArray {
   NavierStokes flow_;
   std::unique_ptr<BodyTreatment> bodies_;
   double velocity_ = 0, force_ = 0;
+  bool steady_ = false;
 };
 
 // Moves body 0 from `start` at constant `velocity`, one fluid step of dt at a time, and
@@ -167,6 +170,9 @@ FluidRun hasimoto_sphere(int n, const BodyOptions& method, const Eigen::Vector3d
   FluidRun run{"Hasimoto F", std::to_string(n) + "^3", label(method)};
   run.cells = array.cells();
   run.steps = array.run_to_steady(max_steps);
+  if (!array.steady())
+    PetscPrintf(PETSC_COMM_WORLD, "warning: Hasimoto %d^3 stopped at %d steps short of the steady state\n", n,
+                run.steps);
   run.value = kDrive;  // rho f L^3
   run.reference = kDrive / (1 + hasimoto_error(array.velocity()));
   run.check = array.force() / (kDrive * (1 - array.imposed_fraction()));

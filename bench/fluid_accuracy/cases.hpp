@@ -30,7 +30,7 @@ FluidRun dfg_cylinder(int cells_per_diameter, const fluid::BodyOptions& method, 
 // momentum balance's (one when steady; the staircase's counts the drive on its imposed
 // faces, which carry none).
 // At most `max_steps` steps (a quick run stops short of the steady state).
-FluidRun hasimoto_sphere(int n, const fluid::BodyOptions& method, const Eigen::Vector3d& centre, int max_steps = 6000);
+FluidRun hasimoto_sphere(int n, const fluid::BodyOptions& method, const Eigen::Vector3d& centre, int max_steps = 20000);
 
 // How smooth a body's force is in its pose: a sphere (d/h = 8) moved at a steady pace
 // through Stokes flow (Re 0.05) in a closed box, one cell in `steps_per_cell` steps along

@@ -57,26 +57,37 @@ Eigen::Vector3d halton(int k) {
   return x;
 }
 
+// Hasimoto sphere positions: the Halton indices first .. first + count - 1 (a first other
+// than 0 splits one grid's positions over processes).
+struct Positions {
+  int first = 0, count = 8;
+};
+
 struct Settings {
   std::vector<cosim::fluid::BodyOptions> methods;
   std::vector<int> boxes, diameters;
-  int positions = 8;
-  int max_steps = 6000;  // Hasimoto's
+  Positions positions;
+  int max_steps = 20000;  // Hasimoto's: a cap, as the run stops when steady
   bool hasimoto = true, dfg = true;
 };
 
-// Mean Hasimoto error of the immersed boundary over `positions` positions on n^3 cells.
-double mean_hasimoto_error(int n, const cosim::fluid::IbmOptions& ibm, int positions) {
+// The k-th Hasimoto sphere centre on n^3 cells: within one cell around the box's centre,
+// so that the spread over k is the method's dependence on how the sphere meets the grid.
+Eigen::Vector3d sphere_centre(int n, int k) { return Eigen::Vector3d::Constant(0.5) + halton(k) / n; }
+
+// Mean Hasimoto error of the immersed boundary over the given positions on n^3 cells.
+double mean_hasimoto_error(int n, const cosim::fluid::IbmOptions& ibm, Positions p) {
   double mean = 0;
-  for (int k = 0; k < positions; ++k)
-    mean += hasimoto_sphere(n, ibm, Eigen::Vector3d::Constant(0.5) + halton(k) / n).error() / positions;
+  for (int k = p.first; k < p.first + p.count; ++k) mean += hasimoto_sphere(n, ibm, sphere_centre(n, k)).error() / p.count;
   return mean;
 }
 
 // The constant retraction (no curvature term) that zeroes the mean Hasimoto error on n^3
-// cells, by the secant method (the error falls about linearly with the retraction).
-double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, int positions) {
-  double r0 = cosim::fluid::calibrated_retraction(ibm.kernel).constant, r1 = r0 + 0.1;
+// cells, by the secant method (the error falls about linearly with the retraction), from
+// the calibrated law's retraction there (the sphere's h kappa = 2 h / a = 10 / n).
+double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, Positions positions) {
+  const cosim::fluid::Retraction law = cosim::fluid::calibrated_retraction(ibm.kernel);
+  double r0 = law.constant + law.curvature * 10.0 / n, r1 = r0 + 0.02;
   ibm.retraction = cosim::fluid::Retraction{r0, 0};
   double e0 = mean_hasimoto_error(n, ibm, positions);
   for (int i = 0; i < 8; ++i) {
@@ -98,7 +109,7 @@ double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, int positions) {
 // h kappa = 2 h / a = 10 / n, the line through (10 / n, R_n).
 // With one box, only its zeroing constant retraction (run the two boxes as two processes
 // and put the line through them by hand to use both cores).
-void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ibm, int positions) {
+void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ibm, Positions positions) {
   if (boxes.size() == 1) {
     PetscPrintf(PETSC_COMM_WORLD, "zeroing retraction for %s at d/h %.1f: %.4f\n", std::string(name(ibm.kernel)).c_str(),
                 0.4 * boxes[0], zeroing_retraction(boxes[0], ibm, positions));
@@ -147,12 +158,9 @@ void study(const Settings& s, const std::string& csv) {
     double last_mean = 0;
     int last_n = 0;
     for (int n : s.hasimoto ? s.boxes : std::vector<int>{}) {
-      // Positions within one cell around the box's centre: their spread is the method's
-      // dependence on how the sphere meets the grid.
       std::vector<double> errors;
-      for (int k = 0; k < s.positions; ++k) {
-        const Eigen::Vector3d centre = Eigen::Vector3d::Constant(0.5) + halton(k) / n;
-        runs.push_back(hasimoto_sphere(n, method, centre, s.max_steps));
+      for (int k = s.positions.first; k < s.positions.first + s.positions.count; ++k) {
+        runs.push_back(hasimoto_sphere(n, method, sphere_centre(n, k), s.max_steps));
         print_row(runs.back());
         errors.push_back(runs.back().error());
       }
@@ -160,7 +168,7 @@ void study(const Settings& s, const std::string& csv) {
       for (double e : errors) mean += e / static_cast<double>(errors.size());
       const auto [lo, hi] = std::minmax_element(errors.begin(), errors.end());
       PetscPrintf(PETSC_COMM_WORLD, "  Hasimoto d/h %.1f, %s: mean error %+.3f %%, spread over %d positions %.3f %% (%+.3f .. %+.3f)\n",
-                  0.4 * n, label(method).c_str(), 100 * mean, s.positions, 100 * (*hi - *lo), 100 * *lo, 100 * *hi);
+                  0.4 * n, label(method).c_str(), 100 * mean, s.positions.count, 100 * (*hi - *lo), 100 * *lo, 100 * *hi);
       // The observed order of the mean error; meaningless where a calibration makes it cross zero.
       if (last_n > 0)
         PetscPrintf(PETSC_COMM_WORLD, "  observed order of the mean error from d/h %.1f to %.1f: %.2f\n", 0.4 * last_n,
@@ -207,7 +215,10 @@ int main(int argc, char** argv) {
   app.add_option("--spacing", ibm.spacing, "IBM marker spacing in cell widths");
   app.add_option("--boxes", s.boxes, "Hasimoto grids (cells per side; d/h = 0.4 n)");
   app.add_option("--diameters", s.diameters, "DFG cells per diameter");
-  app.add_option("--positions", s.positions, "Hasimoto sphere positions per grid");
+  app.add_option("--positions", s.positions.count, "Hasimoto sphere positions per grid")->check(CLI::PositiveNumber);
+  app.add_option("--first-position", s.positions.first,
+                 "Index of the first Hasimoto position (split one grid's positions over processes)")
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("--hasimoto", only_hasimoto, "Only the Hasimoto sphere");
   app.add_flag("--dfg", only_dfg, "Only the DFG cylinder");
   app.add_flag("--calibrate", calibrating,
@@ -224,7 +235,7 @@ int main(int argc, char** argv) {
   if (quick) {  // the pipeline end to end, not the steady state
     s.boxes = {12};
     s.diameters = {5};
-    s.positions = 1;
+    s.positions = {0, 1};
     s.max_steps = 500;
   }
 

@@ -127,7 +127,7 @@ IbmOptions resolved(IbmOptions options) {
 
 Retraction calibrated_retraction(DeltaKernel kernel) {
   switch (kernel) {
-    case DeltaKernel::roma3: return {0.275, 0.269};
+    case DeltaKernel::roma3: return {0.2985, 0.2274};
     case DeltaKernel::peskin4: return {0.633, 0};
     default: return {0.809, 0};
   }
