@@ -75,6 +75,9 @@ struct Settings {
 // so that the spread over k is the method's dependence on how the sphere meets the grid.
 Eigen::Vector3d sphere_centre(int n, int k) { return Eigen::Vector3d::Constant(0.5) + halton(k) / n; }
 
+// h kappa of the Hasimoto sphere on n^3 cells: 2 h / a with a = 0.2 and h = 1 / n.
+double sphere_h_kappa(int n) { return 10.0 / n; }
+
 // Mean Hasimoto error of the immersed boundary over the given positions on n^3 cells.
 double mean_hasimoto_error(int n, const cosim::fluid::IbmOptions& ibm, Positions p) {
   double mean = 0;
@@ -84,10 +87,10 @@ double mean_hasimoto_error(int n, const cosim::fluid::IbmOptions& ibm, Positions
 
 // The constant retraction (no curvature term) that zeroes the mean Hasimoto error on n^3
 // cells, by the secant method (the error falls about linearly with the retraction), from
-// the calibrated law's retraction there (the sphere's h kappa = 2 h / a = 10 / n).
+// the calibrated law's retraction there.
 double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, Positions positions) {
   const cosim::fluid::Retraction law = cosim::fluid::calibrated_retraction(ibm.kernel);
-  double r0 = law.constant + law.curvature * 10.0 / n, r1 = r0 + 0.02;
+  double r0 = law.constant + law.curvature * sphere_h_kappa(n), r1 = r0 + 0.02;
   ibm.retraction = cosim::fluid::Retraction{r0, 0};
   double e0 = mean_hasimoto_error(n, ibm, positions);
   for (int i = 0; i < 8; ++i) {
@@ -106,7 +109,7 @@ double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, Positions positio
 
 // The retraction h (constant + curvature h kappa) that zeroes the Hasimoto error on both
 // grids: on each the constant retraction R_n that does, then, as the sphere's
-// h kappa = 2 h / a = 10 / n, the line through (10 / n, R_n).
+// h kappa, the line through (sphere_h_kappa(n), R_n).
 // With one box, only its zeroing constant retraction (run the two boxes as two processes
 // and put the line through them by hand to use both cores).
 void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ibm, Positions positions) {
@@ -117,7 +120,7 @@ void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ib
   }
   if (boxes.size() != 2) throw std::invalid_argument("--calibrate needs one or two --boxes");
   const double r1 = zeroing_retraction(boxes[0], ibm, positions), r2 = zeroing_retraction(boxes[1], ibm, positions);
-  const double k1 = 10.0 / boxes[0], k2 = 10.0 / boxes[1];
+  const double k1 = sphere_h_kappa(boxes[0]), k2 = sphere_h_kappa(boxes[1]);
   const double curvature = (r1 - r2) / (k1 - k2), constant = r1 - curvature * k1;
   PetscPrintf(PETSC_COMM_WORLD,
               "calibrated retraction for %s: %.3f + %.3f h kappa cell widths (constant retractions %.4f at d/h %.1f, "
