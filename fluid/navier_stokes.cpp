@@ -110,6 +110,15 @@ void NavierStokes::set_velocity(const std::function<Point(const Point&)>& u0) {
   viscosity_.update(local_);
 }
 
+void NavierStokes::shift_frame(const Point& v) {
+  for (int d = 0; d < 3; ++d)
+    if (!grid_.axis(d).periodic()) throw std::logic_error("fluid: a change of frame needs a periodic grid");
+  for (int c = 0; c < 3; ++c) COSIM_PETSC(VecShift(u_[c], v[c]));
+  previous_dt_ = 0;
+  local_.update(u_, bc_, time_);
+  viscosity_.update(local_);
+}
+
 // local_ holds u_ at time_ (with boundary ghosts) from set_velocity(), restore() and the end
 // of every step: u_ changes nowhere else.
 double NavierStokes::stable_dt() {

@@ -52,6 +52,10 @@ class NavierStokes {
 
   // Initial velocity (each component sampled at its faces; imposed boundary values win).
   void set_velocity(const std::function<Point(const Point&)>& u0);
+  // Adds v to the velocity everywhere: on a grid periodic along every axis, the same flow
+  // seen from a frame moving at -v (Galilean invariance). The convection history restarts.
+  // Throws std::logic_error on a grid with walls, whose velocity the shift would change.
+  void shift_frame(const Point& v);
   // Faces whose velocity every following step prescribes (Dirichlet rows of the implicit
   // viscous solve, walls for the projection): the fictitious-boundary bodies. `faces` must
   // outlive the solver or be replaced; its owner may change the contents between steps.

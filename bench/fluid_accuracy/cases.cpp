@@ -84,19 +84,37 @@ namespace {
 
 constexpr double kRadius = 0.2, kViscosity = 10, kDrive = 10;
 
-// Steady Stokes flow through the periodic array in the unit box on n^3 cells, stepped at
-// the viscous number nu dt / h^2 = 1: the steady state does not depend on dt, but the
-// incremental scheme's slow splitting mode decays per step, and far more slowly at large
-// viscous numbers (fluid/README.md, "Accuracy study").
+// Moves body 0 from `start` at constant `velocity`, one fluid step of dt at a time, and
+// after step k calls after(k, where the body is now) until it returns false.
+template <typename After>
+void tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start, const Eigen::Vector3d& velocity,
+         double dt, After after) {
+  for (int k = 1;; ++k) {
+    const Eigen::Vector3d at = start + k * dt * velocity;
+    bodies.move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero());
+    flow.step(dt);
+    if (!after(k, at)) return;
+  }
+}
+
+// Steady flow through the periodic array in the unit box on n^3 cells. The incremental
+// scheme's slow splitting mode decays per step, and far more slowly at large viscous
+// numbers (fluid/README.md, "Accuracy study"), hence steps of nu dt / h^2 = 1 by default;
+// the steady state does not depend on them (the immersed boundary's Hasimoto drag by
+// 0.003 % from nu dt / h^2 = 0.08 to 1).
 class StokesArray {
  public:
-  StokesArray(int n, const BodyOptions& method, const Eigen::Vector3d& centre)
+  // `drive`: the body force per mass on the fluid along x (rho = 1).
+  StokesArray(int n, const BodyOptions& method, const Eigen::Vector3d& centre, const StokesStepping& stepping,
+              double drive = kDrive)
       : n_(n),
+        dt_(dt(n, stepping.viscous_number)),
+        centre_(centre),
         grid_(PETSC_COMM_WORLD,
               {Axis::uniform(n, 0, 1, true), Axis::uniform(n, 0, 1, true), Axis::uniform(n, 0, 1, true)}),
         bc_(grid_),
-        flow_(grid_, bc_, {1.0, ViscosityModel::newtonian(kViscosity), {kDrive, 0, 0}},
-              {.cfl = 0.5, .dt_max = dt(n), .dt_initial = dt(n), .theta = 1.0}),
+        flow_(grid_, bc_, {1.0, ViscosityModel::newtonian(kViscosity), {drive, 0, 0}},
+              {.cfl = 0.5, .dt_max = dt_, .dt_initial = dt_, .theta = stepping.theta}),
         bodies_(make_bodies(grid_, method)) {
     bodies_->add({geometry::Sphere(kRadius), geometry::Pose(centre, Eigen::Quaterniond::Identity())});
     bodies_->attach(flow_);
@@ -109,7 +127,7 @@ class StokesArray {
   int run_to_steady(int max_steps) {
     int steps = 0;
     for (double before = 0; steps < max_steps;) {
-      for (int k = 0; k < 500; ++k) flow_.step();
+      for (int k = 0; k < 500; ++k) flow_.step(dt_);
       steps += 500;
       velocity_ = mean_u(flow_, double(n_) * n_ * n_);
       steady_ = std::abs(velocity_ - before) < 2e-5 * std::abs(velocity_);
@@ -120,7 +138,25 @@ class StokesArray {
     return steps;
   }
 
-  static double dt(int n) { return 1.0 / (kViscosity * n * n); }
+  // The steady flow seen from a frame moving at -U along x (U the mean velocity now): the
+  // sphere towed at -U through fluid at rest far off, `cells` cell widths; its drag
+  // averaged over the last `averaged` of them (whole cells, over which the kernel's
+  // ripple averages out).
+  double towed_drag(int cells, int averaged) {
+    const double towed = -velocity_, h = 1.0 / n_;
+    flow_.shift_frame({towed, 0, 0});
+    const int steps = static_cast<int>(std::lround(cells * h / (std::abs(towed) * dt_)));
+    const int from = static_cast<int>(std::lround((cells - averaged) * h / (std::abs(towed) * dt_)));
+    double sum = 0;
+    tow(*bodies_, flow_, centre_, {towed, 0, 0}, dt_, [&](int k, const Eigen::Vector3d&) {
+      if (k > from) sum += bodies_->loads(flow_)[0].force[0];
+      return k < steps;
+    });
+    return sum / (steps - from);
+  }
+
+  static double dt(int n, double viscous_number) { return viscous_number / (kViscosity * n * n); }
+  double time_step() const { return dt_; }
   double velocity() const { return velocity_; }
   double force() const { return force_; }
   bool steady() const { return steady_; }
@@ -135,6 +171,8 @@ class StokesArray {
 
  private:
   int n_;
+  double dt_;
+  Eigen::Vector3d centre_;
   Grid grid_;
   BoundaryConditions bc_;
   NavierStokes flow_;
@@ -143,33 +181,23 @@ class StokesArray {
   bool steady_ = false;
 };
 
-// Moves body 0 from `start` at constant `velocity`, one fluid step of dt at a time, and
-// after step k calls after(k, where the body is now) until it returns false.
-template <typename After>
-void tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start, const Eigen::Vector3d& velocity,
-         double dt, After after) {
-  for (int k = 1;; ++k) {
-    const Eigen::Vector3d at = start + k * dt * velocity;
-    bodies.move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero());
-    flow.step(dt);
-    if (!after(k, at)) return;
-  }
+// Hasimoto's drag coefficient 6 pi mu a K(c) of the array's sphere (rho = 1, L = 1).
+double hasimoto_resistance() {
+  const double c = 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius;  // V / L^3
+  return 6 * std::numbers::pi * kViscosity * kRadius / (1 - 1.7601 * std::cbrt(c) + c - 1.5593 * c * c);
 }
 
-double hasimoto_error(double velocity) {
-  const double c = 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius;  // V / L^3, L = 1
-  const double k = 1 / (1 - 1.7601 * std::cbrt(c) + c - 1.5593 * c * c);
-  return kDrive / (6 * std::numbers::pi * kViscosity * kRadius * velocity * k) - 1;
-}
+double hasimoto_error(double velocity) { return kDrive / (hasimoto_resistance() * velocity) - 1; }
 
 }  // namespace
 
-FluidRun hasimoto_sphere(int n, const BodyOptions& method, const Eigen::Vector3d& centre, int max_steps) {
+FluidRun hasimoto_sphere(int n, const BodyOptions& method, const Eigen::Vector3d& centre,
+                         const StokesStepping& stepping) {
   const double start = MPI_Wtime();
-  StokesArray array(n, method, centre);
+  StokesArray array(n, method, centre, stepping);
   FluidRun run{"Hasimoto F", std::to_string(n) + "^3", label(method)};
   run.cells = array.cells();
-  run.steps = array.run_to_steady(max_steps);
+  run.steps = array.run_to_steady(stepping.max_steps);
   if (!array.steady())
     PetscPrintf(PETSC_COMM_WORLD, "warning: Hasimoto %d^3 stopped at %d steps short of the steady state\n", n,
                 run.steps);
@@ -263,6 +291,25 @@ Towed towed_sphere(const BodyOptions& method, double cells_per_step, double reyn
     return true;
   });
   out.seconds = MPI_Wtime() - start_time;
+  return out;
+}
+
+MovingFrame moving_frame(int n, const BodyOptions& method, double reynolds, double cells_per_step) {
+  const double start = MPI_Wtime();
+  const double h = 1.0 / n, estimate = reynolds * kViscosity / (2 * kRadius);  // U of Stokes drag
+  MovingFrame out;
+  out.viscous_number = cells_per_step * kViscosity / (estimate * h);
+  // Off the cell's centre by a generic amount, two cells ahead: the tow of four cells
+  // keeps the sphere and its kernels off the periodic boundary.
+  const Eigen::Vector3d centre = Eigen::Vector3d(0.5 + 2 * h, 0.5, 0.5) + Eigen::Vector3d(0.31, 0.17, 0.42) * h;
+  StokesArray array(n, method, centre, {.viscous_number = out.viscous_number, .theta = 0.5},
+                    hasimoto_resistance() * estimate);
+  array.run_to_steady(40000);
+  out.fixed_drag = array.force();
+  out.reynolds = array.velocity() * 2 * kRadius / kViscosity;
+  out.cells_per_step = array.velocity() * array.time_step() / h;
+  out.moving_drag = array.towed_drag(4, 2);
+  out.seconds = MPI_Wtime() - start;
   return out;
 }
 

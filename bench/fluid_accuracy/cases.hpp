@@ -29,8 +29,14 @@ FluidRun dfg_cylinder(int cells_per_diameter, const fluid::BodyOptions& method, 
 // sphere's centre is `centre` (box [0, 1]^3); `check` is the body's measured force over the
 // momentum balance's (one when steady; the staircase's counts the drive on its imposed
 // faces, which carry none).
-// At most `max_steps` steps (a quick run stops short of the steady state).
-FluidRun hasimoto_sphere(int n, const fluid::BodyOptions& method, const Eigen::Vector3d& centre, int max_steps = 20000);
+// Stepped at the viscous number nu dt / h^2 with the viscous term's implicit weight theta;
+// at most `max_steps` steps (a quick run stops short of the steady state).
+struct StokesStepping {
+  double viscous_number = 1, theta = 1;
+  int max_steps = 20000;
+};
+FluidRun hasimoto_sphere(int n, const fluid::BodyOptions& method, const Eigen::Vector3d& centre,
+                         const StokesStepping& stepping = {});
 
 // How smooth a body's force is in its pose: a sphere (d/h = 8) moved at a steady pace
 // through Stokes flow (Re 0.05) in a closed box, one cell in `steps_per_cell` steps along
@@ -56,5 +62,18 @@ struct Towed {
   int steps = 0;
 };
 Towed towed_sphere(const fluid::BodyOptions& method, double cells_per_step, double reynolds);
+
+// Galilean invariance of a moving body: Hasimoto's array driven to about Reynolds number
+// `reynolds` (2 a U / nu, the drive from Hasimoto's Stokes drag) with the sphere fixed until
+// steady, then the same flow seen from a frame moving at -U (NavierStokes::shift_frame):
+// the sphere towed at -U through fluid at rest far off, with fluid steps in which it moves
+// `cells_per_step` cells (Crank-Nicolson). The towed sphere's drag over its third and
+// fourth cell of travel against the fixed sphere's: they differ only where a moving body's
+// discretisation does.
+struct MovingFrame {
+  double reynolds = 0, cells_per_step = 0, viscous_number = 0, fixed_drag = 0, moving_drag = 0, seconds = 0;
+  double error() const { return moving_drag / fixed_drag - 1; }
+};
+MovingFrame moving_frame(int n, const fluid::BodyOptions& method, double reynolds, double cells_per_step);
 
 }  // namespace cosim::bench

@@ -67,7 +67,7 @@ struct Settings {
   std::vector<cosim::fluid::BodyOptions> methods;
   std::vector<int> boxes, diameters;
   Positions positions;
-  int max_steps = 20000;  // Hasimoto's: a cap, as the run stops when steady
+  cosim::bench::StokesStepping stepping;  // Hasimoto's
   bool hasimoto = true, dfg = true;
 };
 
@@ -79,23 +79,25 @@ Eigen::Vector3d sphere_centre(int n, int k) { return Eigen::Vector3d::Constant(0
 double sphere_h_kappa(int n) { return 10.0 / n; }
 
 // Mean Hasimoto error of the immersed boundary over the given positions on n^3 cells.
-double mean_hasimoto_error(int n, const cosim::fluid::IbmOptions& ibm, Positions p) {
+double mean_hasimoto_error(int n, const cosim::fluid::IbmOptions& ibm, const Settings& s) {
   double mean = 0;
-  for (int k = p.first; k < p.first + p.count; ++k) mean += hasimoto_sphere(n, ibm, sphere_centre(n, k)).error() / p.count;
+  const Positions& p = s.positions;
+  for (int k = p.first; k < p.first + p.count; ++k)
+    mean += hasimoto_sphere(n, ibm, sphere_centre(n, k), s.stepping).error() / p.count;
   return mean;
 }
 
 // The constant retraction (no curvature term) that zeroes the mean Hasimoto error on n^3
 // cells, by the secant method (the error falls about linearly with the retraction), from
 // the calibrated law's retraction there.
-double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, Positions positions) {
+double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, const Settings& s) {
   const cosim::fluid::Retraction law = cosim::fluid::calibrated_retraction(ibm.kernel);
   double r0 = law.constant + law.curvature * sphere_h_kappa(n), r1 = r0 + 0.02;
   ibm.retraction = cosim::fluid::Retraction{r0, 0};
-  double e0 = mean_hasimoto_error(n, ibm, positions);
+  double e0 = mean_hasimoto_error(n, ibm, s);
   for (int i = 0; i < 8; ++i) {
     ibm.retraction = cosim::fluid::Retraction{r1, 0};
-    const double e1 = mean_hasimoto_error(n, ibm, positions);
+    const double e1 = mean_hasimoto_error(n, ibm, s);
     PetscPrintf(PETSC_COMM_WORLD, "  %s, d/h %.1f: retraction %.4f -> mean error %+.3f %%\n",
                 std::string(name(ibm.kernel)).c_str(), 0.4 * n, r1, 100 * e1);
     if (std::abs(e1) < 2e-4 || e1 == e0) break;
@@ -112,14 +114,14 @@ double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, Positions positio
 // h kappa, the line through (sphere_h_kappa(n), R_n).
 // With one box, only its zeroing constant retraction (run the two boxes as two processes
 // and put the line through them by hand to use both cores).
-void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ibm, Positions positions) {
+void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ibm, const Settings& s) {
   if (boxes.size() == 1) {
     PetscPrintf(PETSC_COMM_WORLD, "zeroing retraction for %s at d/h %.1f: %.4f\n", std::string(name(ibm.kernel)).c_str(),
-                0.4 * boxes[0], zeroing_retraction(boxes[0], ibm, positions));
+                0.4 * boxes[0], zeroing_retraction(boxes[0], ibm, s));
     return;
   }
   if (boxes.size() != 2) throw std::invalid_argument("--calibrate needs one or two --boxes");
-  const double r1 = zeroing_retraction(boxes[0], ibm, positions), r2 = zeroing_retraction(boxes[1], ibm, positions);
+  const double r1 = zeroing_retraction(boxes[0], ibm, s), r2 = zeroing_retraction(boxes[1], ibm, s);
   const double k1 = sphere_h_kappa(boxes[0]), k2 = sphere_h_kappa(boxes[1]);
   const double curvature = (r1 - r2) / (k1 - k2), constant = r1 - curvature * k1;
   PetscPrintf(PETSC_COMM_WORLD,
@@ -154,6 +156,21 @@ void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, std::vec
   }
 }
 
+// The Galilean check at each time step: the towed sphere's drag against the fixed one's.
+void moving_frame_study(const std::vector<cosim::fluid::BodyOptions>& methods, int n,
+                        const std::vector<double>& cells_per_step, double reynolds) {
+  PetscPrintf(PETSC_COMM_WORLD, "Hasimoto sphere fixed, then towed through fluid at rest, d/h %.1f\n", 0.4 * n);
+  PetscPrintf(PETSC_COMM_WORLD, "%-26s %6s %10s %9s %9s %11s %11s %9s\n", "method", "Re", "cells/step", "nu dt/h2",
+              "wall [s]", "fixed", "towed", "towed/fixed");
+  for (const auto& method : methods)
+    for (double c : cells_per_step) {
+      const MovingFrame r = moving_frame(n, method, reynolds, c);
+      PetscPrintf(PETSC_COMM_WORLD, "%-26s %6.3f %10.4f %9.4f %9.1f %11.4f %11.4f %+10.3f%%\n", label(method).c_str(),
+                  r.reynolds, r.cells_per_step, r.viscous_number, r.seconds, r.fixed_drag, r.moving_drag,
+                  100 * r.error());
+    }
+}
+
 void study(const Settings& s, const std::string& csv) {
   std::vector<FluidRun> runs;
   print_header();
@@ -163,7 +180,7 @@ void study(const Settings& s, const std::string& csv) {
     for (int n : s.hasimoto ? s.boxes : std::vector<int>{}) {
       std::vector<double> errors;
       for (int k = s.positions.first; k < s.positions.first + s.positions.count; ++k) {
-        runs.push_back(hasimoto_sphere(n, method, sphere_centre(n, k), s.max_steps));
+        runs.push_back(hasimoto_sphere(n, method, sphere_centre(n, k), s.stepping));
         print_row(runs.back());
         errors.push_back(runs.back().error());
       }
@@ -208,7 +225,9 @@ int main(int argc, char** argv) {
   app.add_option("--towed", towed,
                  "The towed sphere (d/h 6) instead, at these time steps in cells the body moves per step");
   double reynolds = 1.5;
-  app.add_option("--reynolds", reynolds, "The towed sphere's Reynolds number (ten Cate E1 1.5, E4 32)");
+  app.add_option("--reynolds", reynolds,
+                 "The towed sphere's Reynolds number (ten Cate E1 1.5, E4 32); with --moving-frame Hasimoto's, "
+                 "estimated from Stokes drag");
   app.add_option("--method", method, "ibm, staircase or both")->check(CLI::IsMember({"ibm", "staircase", "both"}));
   app.add_option("--kernel", kernel, "IBM kernel")->check(CLI::IsMember({"roma3", "peskin4", "bao6"}));
   double retraction = -1, curvature = 0;
@@ -222,11 +241,19 @@ int main(int argc, char** argv) {
   app.add_option("--first-position", s.positions.first,
                  "Index of the first Hasimoto position (split one grid's positions over processes)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--viscous-number", s.stepping.viscous_number, "Hasimoto's step as nu dt / h^2")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--theta", s.stepping.theta, "Hasimoto's implicit weight of the viscous term")
+      ->check(CLI::Range(0.5, 1.0));
   app.add_flag("--hasimoto", only_hasimoto, "Only the Hasimoto sphere");
   app.add_flag("--dfg", only_dfg, "Only the DFG cylinder");
   app.add_flag("--calibrate", calibrating,
                "Find the IBM retraction (constant and curvature part) that zeroes the mean Hasimoto error on both of "
                "two --boxes over --positions positions");
+  std::vector<double> moving;
+  app.add_option("--moving-frame", moving,
+                 "Galilean check instead: Hasimoto's sphere (the first --boxes) at --reynolds, fixed, then towed "
+                 "through fluid at rest, at these time steps in cells the body moves per step");
   CLI11_PARSE(app, argc, argv);
   if (retraction >= 0) ibm.retraction = cosim::fluid::Retraction{retraction, curvature};
   ibm.kernel = kernel == "roma3" ? cosim::fluid::DeltaKernel::roma3
@@ -239,7 +266,7 @@ int main(int argc, char** argv) {
     s.boxes = {12};
     s.diameters = {5};
     s.positions = {0, 1};
-    s.max_steps = 500;
+    s.stepping.max_steps = 500;
   }
 
   // PETSc sees no arguments: the options are the study's.
@@ -248,8 +275,10 @@ int main(int argc, char** argv) {
   PetscCall(PetscInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr));
   int result = 1;
   try {
-    if (calibrating)
-      calibrate(s.boxes, ibm, s.positions);
+    if (!moving.empty())
+      moving_frame_study(s.methods, s.boxes.front(), moving, reynolds);
+    else if (calibrating)
+      calibrate(s.boxes, ibm, s);
     else if (!towed.empty())
       towed_study(s.methods, towed, reynolds);
     else if (oscillating)

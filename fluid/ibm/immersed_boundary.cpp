@@ -128,11 +128,10 @@ IbmOptions resolved(IbmOptions options) {
 Retraction calibrated_retraction(DeltaKernel kernel) {
   switch (kernel) {
     case DeltaKernel::roma3: return {0.2985, 0.2274};
-    case DeltaKernel::peskin4: return {0.633, 0};
-    default: return {0.809, 0};
+    case DeltaKernel::peskin4: return {0.4363, 0.4458};
+    default: return {0.3969, 0.8484};
   }
 }
-
 
 ImmersedBoundary::ImmersedBoundary(const Grid& grid, IbmOptions options) : grid_(grid), options_(resolved(options)) {
   if (options.sweeps < 1) throw std::invalid_argument("immersed boundary: sweeps must be >= 1");

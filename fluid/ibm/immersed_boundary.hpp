@@ -56,9 +56,8 @@ struct Retraction {
 };
 
 // Per kernel, the retraction calibrated on the Hasimoto array (`fluid_accuracy
-// --calibrate`): for Roma's kernel both parts, zeroing the mean error over sphere positions
-// at d/h = 8 and 12; for the wider kernels (whose markers go deeper, as their shell is
-// thicker) a constant only, zeroing it at d/h = 8.
+// --calibrate`): for each kernel both parts, zeroing the mean error over sphere positions
+// at d/h = 8 and 12 (the wider kernels' markers go deeper, as their shell is thicker).
 Retraction calibrated_retraction(DeltaKernel kernel);
 
 struct IbmOptions {
