@@ -126,14 +126,17 @@ class StokesArray {
   // factor 0.79 each time, so what is left to come is below 1e-5 of U by then.
   int run_to_steady(int max_steps) {
     int steps = 0;
-    for (double before = 0; steps < max_steps;) {
+    bool steady = false;
+    for (double before = 0; !steady && steps < max_steps;) {
       for (int k = 0; k < 500; ++k) flow_.step(dt_);
       steps += 500;
       velocity_ = mean_u(flow_, double(n_) * n_ * n_);
-      steady_ = std::abs(velocity_ - before) < 2e-5 * std::abs(velocity_);
-      if (steady_) break;
+      steady = std::abs(velocity_ - before) < 2e-5 * std::abs(velocity_);
       before = velocity_;
     }
+    if (!steady)
+      PetscPrintf(PETSC_COMM_WORLD, "warning: Hasimoto %d^3 stopped at %d steps short of the steady state\n", n_,
+                  steps);
     force_ = bodies_->loads(flow_)[0].force[0];
     return steps;
   }
@@ -145,8 +148,8 @@ class StokesArray {
   double towed_drag(int cells, int averaged) {
     const double towed = -velocity_, h = 1.0 / n_;
     flow_.shift_frame({towed, 0, 0});
-    const int steps = static_cast<int>(std::lround(cells * h / (std::abs(towed) * dt_)));
-    const int from = static_cast<int>(std::lround((cells - averaged) * h / (std::abs(towed) * dt_)));
+    auto steps_for = [&](int c) { return static_cast<int>(std::lround(c * h / (std::abs(towed) * dt_))); };
+    const int steps = steps_for(cells), from = steps_for(cells - averaged);
     double sum = 0;
     tow(*bodies_, flow_, centre_, {towed, 0, 0}, dt_, [&](int k, const Eigen::Vector3d&) {
       if (k > from) sum += bodies_->loads(flow_)[0].force[0];
@@ -159,7 +162,6 @@ class StokesArray {
   double time_step() const { return dt_; }
   double velocity() const { return velocity_; }
   double force() const { return force_; }
-  bool steady() const { return steady_; }
   double imposed_fraction() const {
     const auto* staircase = dynamic_cast<const FictitiousBoundary*>(bodies_.get());
     if (!staircase) return 0;
@@ -178,7 +180,6 @@ class StokesArray {
   NavierStokes flow_;
   std::unique_ptr<BodyTreatment> bodies_;
   double velocity_ = 0, force_ = 0;
-  bool steady_ = false;
 };
 
 // Hasimoto's drag coefficient 6 pi mu a K(c) of the array's sphere (rho = 1, L = 1).
@@ -198,9 +199,6 @@ FluidRun hasimoto_sphere(int n, const BodyOptions& method, const Eigen::Vector3d
   FluidRun run{"Hasimoto F", std::to_string(n) + "^3", label(method)};
   run.cells = array.cells();
   run.steps = array.run_to_steady(stepping.max_steps);
-  if (!array.steady())
-    PetscPrintf(PETSC_COMM_WORLD, "warning: Hasimoto %d^3 stopped at %d steps short of the steady state\n", n,
-                run.steps);
   run.value = kDrive;  // rho f L^3
   run.reference = kDrive / (1 + hasimoto_error(array.velocity()));
   run.check = array.force() / (kDrive * (1 - array.imposed_fraction()));
