@@ -4,6 +4,7 @@ find_package(MPI REQUIRED COMPONENTS C CXX)
 find_package(PkgConfig REQUIRED)
 # PETSc's pkg-config file carries no MPI include path: link MPI::MPI_CXX alongside it.
 pkg_check_modules(PETSC REQUIRED IMPORTED_TARGET PETSc)
+pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET fftw3)  # PkgConfig::FFTW: the fluid's pressure transforms
 
 # python3-h5py pulls in the serial HDF5 runtime; PETSc loads the parallel one. Both must
 # be the same library, so insist on the parallel build.

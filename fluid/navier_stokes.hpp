@@ -12,6 +12,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -25,6 +26,7 @@
 #include "fluid/viscosity_field.hpp"
 #include "fluid/viscosity_model.hpp"
 #include "fluid/viscous_solver.hpp"
+#include "fluid/viscous_stencil.hpp"
 
 namespace cosim::fluid {
 
@@ -106,6 +108,7 @@ class NavierStokes {
   TimeStepController controller_;
   LocalVelocity local_;
   ViscosityField viscosity_;
+  std::optional<UniformViscousWeights> uniform_weights_;  // a Newtonian fluid's
   ViscousSolver viscous_;
   PressureSolver pressure_solver_;
   // convection_ holds the explicitly extrapolated terms (convection and cross stresses).

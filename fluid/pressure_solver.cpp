@@ -1,6 +1,8 @@
 #include "fluid/pressure_solver.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "fluid/cell_faces.hpp"
@@ -9,14 +11,47 @@
 
 namespace cosim::fluid {
 
-PressureSolver::PressureSolver(const Grid& grid, const BoundaryConditions& bc) : grid_(grid), bc_(bc) {
-  // A bad -pressure_* option fails here.
-  create_or_release([this] { create(); }, [this] { release(); });
+namespace {
+
+// -pressure_solver, or fft where it applies unless a KSP or PC flag asks for the Krylov solver.
+bool use_transforms(const Grid& grid) {
+  char name[16] = "";
+  PetscBool set = PETSC_FALSE;
+  COSIM_PETSC(PetscOptionsGetString(nullptr, nullptr, "-pressure_solver", name, sizeof name, &set));
+  const std::string chosen = set ? name : "";
+  if (set && chosen != "fft" && chosen != "krylov")
+    throw std::invalid_argument("-pressure_solver: '" + chosen + "' is neither fft nor krylov");
+  if (chosen == "fft" && !FastPoisson::applies(grid))
+    throw std::invalid_argument("-pressure_solver fft: needs uniform x and y axes; this grid stretches one");
+  if (set) return chosen == "fft";
+  char* all = nullptr;
+  COSIM_PETSC(PetscOptionsGetAll(nullptr, &all));
+  const std::string options = all ? all : "";
+  COSIM_PETSC(PetscFree(all));
+  const bool krylov_flags = options.find("-pressure_ksp_") != std::string::npos ||
+                            options.find("-pressure_pc_") != std::string::npos;
+  return !krylov_flags && FastPoisson::applies(grid);
 }
 
-void PressureSolver::create() {
+}  // namespace
+
+PressureSolver::PressureSolver(const Grid& grid, const BoundaryConditions& bc) : grid_(grid), bc_(bc) {
+  create_or_release(
+      [this] {
+        update_null_space();
+        COSIM_PETSC(DMCreateGlobalVector(grid_.pressure_dm(), &rhs_));
+        if (use_transforms(grid_)) {
+          fast_ = std::make_unique<FastPoisson>(grid_, bc_);
+          ++assemblies_;
+        } else {
+          create_krylov();  // a bad -pressure_* option fails here
+        }
+      },
+      [this] { release(); });
+}
+
+void PressureSolver::create_krylov() {
   const Grid& grid = grid_;
-  update_null_space();
   COSIM_PETSC(KSPCreate(grid.comm(), &ksp_));
   COSIM_PETSC(KSPSetOptionsPrefix(ksp_, "pressure_"));
   COSIM_PETSC(KSPSetDM(ksp_, grid.pressure_dm()));
@@ -30,12 +65,12 @@ void PressureSolver::create() {
   COSIM_PETSC(PCGAMGSetReuseInterpolation(pc, PETSC_FALSE));
   COSIM_PETSC(KSPSetTolerances(ksp_, 1e-10, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
   COSIM_PETSC(KSPSetFromOptions(ksp_));
-  COSIM_PETSC(DMCreateGlobalVector(grid.pressure_dm(), &rhs_));
 }
 
 PressureSolver::~PressureSolver() { release(); }
 
 void PressureSolver::release() {
+  fast_.reset();
   VecDestroy(&rhs_);
   KSPDestroy(&ksp_);
   MatNullSpaceDestroy(&constants_);
@@ -115,6 +150,8 @@ void PressureSolver::update_null_space() {
 }
 
 int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi) {
+  const bool transforms = fast_ && !imposed;
+  if (!transforms && !ksp_) create_krylov();
   const int generation = imposed ? imposed->generation() : -1;
   if (imposed != imposed_ || generation != assembled_generation_) {
     imposed_ = imposed;
@@ -122,7 +159,7 @@ int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedF
     if (imposed_) connected_.update(grid_, bc_, *imposed_);
     update_null_space();
     // Asks the KSP to call compute_operator again before the next solve.
-    COSIM_PETSC(KSPSetComputeOperators(ksp_, compute_operator, this));
+    if (!transforms) COSIM_PETSC(KSPSetComputeOperators(ksp_, compute_operator, this));
   }
   DM dm = grid_.pressure_dm();
   PetscScalar*** r = nullptr;
@@ -134,7 +171,11 @@ int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedF
   // Closed or periodic domains: the discrete compatibility condition holds only up to
   // round-off, which the solver must not try to fit.
   if (constants_) COSIM_PETSC(MatNullSpaceRemove(constants_, rhs_));
-  return solve_or_throw(ksp_, rhs_, phi, "pressure solve");
+  if (!transforms) return solve_or_throw(ksp_, rhs_, phi, "pressure solve");
+  fast_->solve(rhs_, phi);
+  // The transforms leave phi's constant free: the Krylov solver's zero mean.
+  if (constants_) COSIM_PETSC(MatNullSpaceRemove(constants_, phi));
+  return 0;
 }
 
 }  // namespace cosim::fluid

@@ -1,12 +1,19 @@
 #pragma once
 // The pressure-correction Poisson equation div(grad phi) = div(u*)/dt on the cell-centred
-// DMDA. KSP options prefix `pressure_`: the defaults (CG + GAMG) can be replaced with any
-// -pressure_ksp_* / -pressure_pc_* flags, e.g. geometric multigrid on the DMDA hierarchy
-// with -pressure_pc_type mg -pressure_pc_mg_levels 3 -pressure_pc_mg_galerkin pmat.
+// DMDA, by one of two solvers (`-pressure_solver fft|krylov`):
+// - fft (the default where it applies: x and y uniform, no imposed faces): FastPoisson's
+//   transforms and tridiagonal lines, exact to round-off, set up once;
+// - krylov (the staircase's imposed faces, stretched x or y, or any -pressure_ksp_* /
+//   -pressure_pc_* flag): KSP with options prefix `pressure_`, CG + GAMG to 1e-10 by
+//   default, e.g. geometric multigrid on the DMDA hierarchy with -pressure_pc_type mg
+//   -pressure_pc_mg_levels 3 -pressure_pc_mg_galerkin pmat.
 #include <petscksp.h>
+
+#include <memory>
 
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/connected_cells.hpp"
+#include "fluid/fast_poisson.hpp"
 #include "fluid/grid.hpp"
 #include "fluid/imposed_faces.hpp"
 #include "fluid/local_velocity.hpp"
@@ -23,23 +30,25 @@ class PressureSolver {
 
   // Solves for the correction phi (global vector of the pressure DM) that makes
   // u* - dt grad(phi) divergence-free, with the imposed faces (may be null) kept as they
-  // are and phi = 0 in cells they enclose; returns the number of Krylov iterations.
+  // are and phi = 0 in cells they enclose; returns the number of Krylov iterations (0 for
+  // the transforms).
   int solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi);
   // An owned cell inside a body or a sliver they close, as of the last solve: phi = 0 there.
   bool closed(const Index& cell) const;
-  // How often the operator was assembled: once for the fluid alone or an immersed boundary,
-  // at every change of the staircase's imposed faces.
+  // How often the operator was set up (transforms planned or matrix assembled): once for
+  // the fluid alone or an immersed boundary, at every change of the staircase's imposed faces.
   int assemblies() const { return assemblies_; }
 
  private:
-  void create();
+  void create_krylov();
   void release();
   void update_null_space();
   static PetscErrorCode compute_operator(KSP ksp, Mat A, Mat P, void* self);
 
   const Grid& grid_;
   const BoundaryConditions& bc_;
-  KSP ksp_ = nullptr;
+  std::unique_ptr<FastPoisson> fast_;  // where it applies and was not declined
+  KSP ksp_ = nullptr;                   // when first needed
   Vec rhs_ = nullptr;
   MatNullSpace constants_ = nullptr;  // a constant on each region no outflow pins, if any
   const ImposedFaces* imposed_ = nullptr;

@@ -1,7 +1,11 @@
 #pragma once
 // The implicit viscous half-step (I - s div(nu grad)) u* = rhs per velocity component,
-// s = dt / 2 for Crank-Nicolson. KSP options prefix `viscous_` (default GMRES + block
-// Jacobi/ILU: the matrix is diagonally dominant and not symmetric next to walls).
+// s = dt / 2 for Crank-Nicolson; the operator is diagonally dominant, and not symmetric
+// next to walls. KSP options prefix `viscous_`. With a uniform viscosity the operator is
+// applied from its stencil weights (UniformViscousWeights) and stores nothing: BiCGStab
+// with Jacobi by default, whose diagonal the weights give. A generalized-Newtonian
+// viscosity varies from point to point and step to step: its operator is assembled (a
+// 7-point AIJ matrix per component) and solved with GMRES + SOR by default.
 #include <petscksp.h>
 
 #include <array>
@@ -10,31 +14,45 @@
 #include "fluid/grid.hpp"
 #include "fluid/imposed_faces.hpp"
 #include "fluid/viscosity_field.hpp"
+#include "fluid/viscous_stencil.hpp"
 
 namespace cosim::fluid {
 
 class ViscousSolver {
  public:
-  ViscousSolver(const Grid& grid, const BoundaryConditions& bc);
+  // weights: a uniform viscosity's (outliving the solver), or null for a varying one.
+  ViscousSolver(const Grid& grid, const BoundaryConditions& bc, const UniformViscousWeights* weights);
   ~ViscousSolver();
   ViscousSolver(const ViscousSolver&) = delete;
   ViscousSolver& operator=(const ViscousSolver&) = delete;
 
   // rhs holds, on boundary faces, the imposed value (wall/inflow) or zero (outflow, where
   // the row says u_face = u_inside), and on the `imposed` faces their values (identity
-  // rows). Reassembles when s, a non-uniform viscosity or the imposed faces change.
-  // Returns iterations.
+  // rows). An assembled operator is rebuilt when s, the viscosity or the imposed faces
+  // change. Returns iterations.
   int solve(int c, double s, const ViscosityField& nu, const ImposedFaces* imposed, Vec rhs, Vec x);
 
  private:
   void create();
   void release();
   void assemble(int c, double s, const ViscosityField& nu, const ImposedFaces* imposed);
+  // The stencil operator's product and diagonal (MATSHELL callbacks).
+  static PetscErrorCode multiply(Mat A, Vec x, Vec y);
+  static PetscErrorCode diagonal(Mat A, Vec d);
 
   const Grid& grid_;
   const BoundaryConditions& bc_;
+  const UniformViscousWeights* weights_;
   std::array<KSP, 3> ksp_{};
-  std::array<Mat, 3> matrix_{};
+  std::array<Mat, 3> matrix_{};  // assembled, or the stencil operator
+  struct Operator {                // what the stencil operator of one component reads
+    const ViscousSolver* solver = nullptr;
+    int c = 0;
+    double s = 0;
+    const ImposedFaces* imposed = nullptr;
+    Vec local = nullptr;  // x with ghosts
+  };
+  std::array<Operator, 3> operators_{};
   std::array<double, 3> assembled_for_{-1, -1, -1};
   std::array<int, 3> assembled_generation_{-1, -1, -1};
 };

@@ -1,14 +1,50 @@
 #pragma once
-// The implicit part of the viscous term, div(nu grad u_c): one stencil shared by the
+// The implicit part of the viscous term, div(nu grad u_c): one set of weights shared by the
 // implicit matrix and the explicit half of Crank-Nicolson so both always discretise the
 // same thing.
 #include <array>
+#include <vector>
 
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/grid.hpp"
 #include "fluid/viscosity_field.hpp"
 
 namespace cosim::fluid {
+
+// One axis d's part of div(nu grad u_c) at a point p: the weights of u_c at p - e_d, p and
+// p + e_d, and of the boundary value u_b on the wall next to p (zero away from walls and
+// at an outflow); a weight across a wall is zero.
+struct ViscousWeights {
+  double below = 0, centre = 0, above = 0, boundary = 0;
+};
+
+// Second order on stretched axes (three-point differences exact for quadratics, and a
+// one-sided quadratic closure through the boundary value next to a wall, so a parabolic
+// profile is reproduced exactly). i is p's index along d, nu_below and nu_above the
+// viscosities at the flux points below and above p along d. p must not be a boundary face
+// of component c, and d must carry variation.
+ViscousWeights viscous_axis_weights(const Grid& grid, const BoundaryConditions& bc, int c, int d, int i, double nu_below,
+                                 double nu_above);
+
+// The viscosities at p's flux points along d (cell centres along c, edges across).
+double nu_below(const ViscosityField& nu, int c, int d, const Index& p);
+double nu_above(const ViscosityField& nu, int c, int d, const Index& p);
+
+// The value a wall holds u_c at next to p along d (the side p touches), at time t.
+double boundary_velocity(const Grid& grid, const BoundaryConditions& bc, int c, int d, const Index& p, double t);
+
+// A uniform viscosity's weights depend on the position along each axis only: listed once
+// per component and axis, so the explicit half of Crank-Nicolson reads them per point.
+class UniformViscousWeights {
+ public:
+  UniformViscousWeights(const Grid& grid, const BoundaryConditions& bc, double nu);
+  const ViscousWeights& at(int c, int d, PetscInt i) const {
+    return weights_[static_cast<std::size_t>(3 * c + d)][static_cast<std::size_t>(i)];
+  }
+
+ private:
+  std::array<std::vector<ViscousWeights>, 9> weights_;
+};
 
 struct StencilEntry {
   Index at{};
@@ -18,7 +54,7 @@ struct StencilEntry {
 // div(nu grad u_c)(p) = sum(weight * u_c[at]) + constant; the constant carries the wall
 // velocities. Entries may repeat an index on a periodic axis of two cells: add them up.
 struct Stencil {
-  std::array<StencilEntry, 12> entries{};  // 3 along the own axis, up to 4 per wall closure
+  std::array<StencilEntry, 7> entries{};  // the point and its neighbours along each axis
   int size = 0;
   double constant = 0;
   void add(const Index& at, double weight) { entries[static_cast<std::size_t>(size++)] = {at, weight}; }
@@ -30,9 +66,7 @@ struct Stencil {
 // motion. (It equals the cell width up to O(h^2) on a smoothly stretched axis.)
 double shear_flux_span(const Axis& axis, int i);
 
-// Second order on stretched axes (three-point differences exact for quadratics, and a
-// one-sided quadratic closure through the boundary value next to a wall, so a parabolic
-// profile is reproduced exactly). p must not be a boundary face of component c.
+// The axes' weights of p as a stencil over its neighbours.
 Stencil viscous_stencil(const Grid& grid, const BoundaryConditions& bc, const ViscosityField& nu, int c,
                         const Index& p, double t);
 

@@ -1,0 +1,338 @@
+#include "fluid/fast_poisson.hpp"
+
+#include <petscdmda.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <tuple>
+
+#include "fluid/petsc_check.hpp"
+
+namespace cosim::fluid {
+
+namespace {
+
+bool uniform(const Axis& a) {
+  if (a.degenerate()) return true;
+  const double h = a.width(0);
+  for (int i = 1; i < a.cells(); ++i)
+    if (std::abs(a.width(i) - h) > 1e-9 * a.max_width()) return false;
+  return true;
+}
+
+// The transform that diagonalises the cell-centred 1D Laplacian of a uniform axis, its
+// inverse, their combined scale and the eigenvalues -4 sin^2(theta_k / 2) / h^2, in the
+// order FFTW returns the coefficients. A wall or an inflow holds the velocity, so phi has
+// zero gradient there (even about the face); an outflow holds phi = 0 on the face (odd).
+struct AxisTransform {
+  fftw_r2r_kind forward, backward;
+  double scale;
+  std::vector<double> eigenvalues;
+};
+
+AxisTransform axis_transform(const Axis& axis, BoundaryKind lower, BoundaryKind upper) {
+  const int n = axis.cells();
+  const double h = axis.width(0);
+  AxisTransform t{FFTW_R2HC, FFTW_HC2R, static_cast<double>(n), std::vector<double>(static_cast<std::size_t>(n))};
+  // theta_k = pi (k + shift) / n * factor
+  double shift = 0, factor = 1;
+  if (axis.periodic()) {
+    factor = 2;  // half-complex index k holds frequency k or n - k: the same cosine
+  } else {
+    const bool lower_open = lower == BoundaryKind::outflow, upper_open = upper == BoundaryKind::outflow;
+    t.scale = 2.0 * n;
+    if (!lower_open && !upper_open) {
+      t.forward = FFTW_REDFT10, t.backward = FFTW_REDFT01;
+    } else if (lower_open && upper_open) {
+      t.forward = FFTW_RODFT10, t.backward = FFTW_RODFT01, shift = 1;
+    } else {
+      t.forward = t.backward = lower_open ? FFTW_RODFT11 : FFTW_REDFT11;
+      shift = 0.5;
+    }
+  }
+  for (int k = 0; k < n; ++k) {
+    const double half = 0.5 * std::numbers::pi * (k + shift) * factor / n;
+    t.eigenvalues[static_cast<std::size_t>(k)] = k == 0 && shift == 0 ? 0 : -4 * std::pow(std::sin(half) / h, 2);
+  }
+  return t;
+}
+
+// [begin, end) of n items split over `size` ranks as evenly as possible.
+std::pair<PetscInt, PetscInt> share(PetscInt n, int rank, int size) {
+  const PetscInt base = n / size, extra = n % size;
+  const PetscInt begin = rank * base + std::min<PetscInt>(rank, extra);
+  return {begin, begin + base + (rank < extra ? 1 : 0)};
+}
+
+}  // namespace
+
+bool FastPoisson::applies(const Grid& grid) { return uniform(grid.axis(0)) && uniform(grid.axis(1)); }
+
+FastPoisson::FastPoisson(const Grid& grid, const BoundaryConditions& bc) : grid_(grid) {
+  const auto n = grid.cells();
+  nx_ = n[0], ny_ = n[1], nz_ = n[2];
+  int rank = 0, size = 1;
+  MPI_Comm_rank(grid.comm(), &rank);
+  MPI_Comm_size(grid.comm(), &size);
+  serial_ = size == 1;
+  std::tie(k_begin_, k_end_) = share(nz_, rank, size);
+  std::tie(j_begin_, j_end_) = share(ny_, rank, size);
+
+  const AxisTransform x = axis_transform(grid.axis(0), bc.at(0, Side::lower).kind, bc.at(0, Side::upper).kind);
+  const AxisTransform y = axis_transform(grid.axis(1), bc.at(1, Side::lower).kind, bc.at(1, Side::upper).kind);
+  eigen_x_ = x.eigenvalues;
+  eigen_y_ = y.eigenvalues;
+  scale_ = 1 / (x.scale * y.scale);
+
+  // Along z the couplings of PressureSolver's rows, divided by the cell's volume.
+  const Axis& z = grid.axis(2);
+  const bool open_lower = bc.at(2, Side::lower).kind == BoundaryKind::outflow;
+  const bool open_upper = bc.at(2, Side::upper).kind == BoundaryKind::outflow;
+  periodic_z_ = z.periodic() && !z.degenerate();
+  volume_.resize(static_cast<std::size_t>(nz_));
+  lower_.assign(volume_.size(), 0);
+  upper_.assign(volume_.size(), 0);
+  outlet_.assign(volume_.size(), 0);
+  for (int k = 0; k < nz_; ++k) {
+    const auto at = static_cast<std::size_t>(k);
+    volume_[at] = grid.cell_volume({0, 0, k});
+    if (z.degenerate()) continue;
+    const double w = z.width(k);
+    if (k > 0 || periodic_z_) lower_[at] = 1 / (w * (z.centre(k) - z.centre(k - 1)));
+    if (k < nz_ - 1 || periodic_z_) upper_[at] = 1 / (w * (z.centre(k + 1) - z.centre(k)));
+    if (k == 0 && open_lower && !z.periodic()) outlet_[at] += 1 / (w * (z.centre(0) - z.lo()));
+    if (k == nz_ - 1 && open_upper && !z.periodic()) outlet_[at] += 1 / (w * (z.hi() - z.centre(k)));
+  }
+  work_.resize(2 * static_cast<std::size_t>(nz_ * nx_));
+  singular_.resize(static_cast<std::size_t>(nz_));
+
+  create_or_release(
+      [&] {
+        const int planes = static_cast<int>(k_end_ - k_begin_);
+        if (planes > 0) {
+          // Planned on a scratch array (FFTW_ESTIMATE leaves it alone and, unlike
+          // FFTW_MEASURE, picks the same algorithm in every run, so runs repeat bit for
+          // bit); executed on PETSc's arrays, whose alignment may differ.
+          std::vector<double> scratch(static_cast<std::size_t>(planes * nx_ * ny_));
+          const int dims[2] = {static_cast<int>(ny_), static_cast<int>(nx_)};
+          const int plane = static_cast<int>(nx_ * ny_);
+          const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED;
+          const fftw_r2r_kind forward[2] = {y.forward, x.forward}, backward[2] = {y.backward, x.backward};
+          forward_ = fftw_plan_many_r2r(2, dims, planes, scratch.data(), nullptr, 1, plane, scratch.data(), nullptr, 1,
+                                        plane, forward, flags);
+          backward_ = fftw_plan_many_r2r(2, dims, planes, scratch.data(), nullptr, 1, plane, scratch.data(), nullptr,
+                                         1, plane, backward, flags);
+          if (!forward_ || !backward_) throw std::runtime_error("fluid: FFTW could not plan the pressure transforms");
+        }
+        if (!serial_) create_scatters();
+      },
+      [this] { release(); });
+}
+
+FastPoisson::~FastPoisson() { release(); }
+
+void FastPoisson::release() {
+  if (forward_) fftw_destroy_plan(forward_);
+  if (backward_) fftw_destroy_plan(backward_);
+  forward_ = backward_ = nullptr;
+  VecScatterDestroy(&to_planes_);
+  VecScatterDestroy(&to_lines_);
+  VecDestroy(&planes_);
+  VecDestroy(&lines_);
+}
+
+// planes_ holds whole x-y planes k_begin_ .. k_end_ in natural order (so its global index
+// is the natural one); lines_ holds rows j_begin_ .. j_end_ as (j, k, i), whole z lines.
+void FastPoisson::create_scatters() {
+  MPI_Comm comm = grid_.comm();
+  DM dm = grid_.pressure_dm();
+  const PetscInt plane = nx_ * ny_;
+  const PetscInt in_planes = plane * (k_end_ - k_begin_), in_lines = nx_ * nz_ * (j_end_ - j_begin_);
+  COSIM_PETSC(VecCreateMPI(comm, in_planes, PETSC_DETERMINE, &planes_));
+  COSIM_PETSC(VecCreateMPI(comm, in_lines, PETSC_DETERMINE, &lines_));
+
+  std::vector<PetscInt> from(static_cast<std::size_t>(in_planes));
+  for (PetscInt n = 0; n < in_planes; ++n) from[static_cast<std::size_t>(n)] = plane * k_begin_ + n;
+  AO ao;
+  COSIM_PETSC(DMDAGetAO(dm, &ao));
+  COSIM_PETSC(AOApplicationToPetsc(ao, in_planes, from.data()));
+  IS is_from, is_to;
+  COSIM_PETSC(ISCreateGeneral(comm, in_planes, from.data(), PETSC_COPY_VALUES, &is_from));
+  COSIM_PETSC(ISCreateStride(comm, in_planes, plane * k_begin_, 1, &is_to));
+  Vec global;
+  COSIM_PETSC(DMGetGlobalVector(dm, &global));
+  const PetscErrorCode made = VecScatterCreate(global, is_from, planes_, is_to, &to_planes_);
+  COSIM_PETSC(DMRestoreGlobalVector(dm, &global));
+  ISDestroy(&is_from);
+  ISDestroy(&is_to);
+  COSIM_PETSC(made);
+
+  from.resize(static_cast<std::size_t>(in_lines));
+  std::size_t at = 0;
+  for (PetscInt j = j_begin_; j < j_end_; ++j)
+    for (PetscInt k = 0; k < nz_; ++k)
+      for (PetscInt i = 0; i < nx_; ++i) from[at++] = (k * ny_ + j) * nx_ + i;
+  COSIM_PETSC(ISCreateGeneral(comm, in_lines, from.data(), PETSC_COPY_VALUES, &is_from));
+  COSIM_PETSC(ISCreateStride(comm, in_lines, nx_ * nz_ * j_begin_, 1, &is_to));
+  const PetscErrorCode made_lines = VecScatterCreate(planes_, is_from, lines_, is_to, &to_lines_);
+  ISDestroy(&is_from);
+  ISDestroy(&is_to);
+  COSIM_PETSC(made_lines);
+}
+
+void FastPoisson::solve(Vec b, Vec phi) {
+  if (serial_) {
+    // One rank holds everything in natural order: transforms and lines in place in phi.
+    COSIM_PETSC(VecCopy(b, phi));
+    PetscScalar* data = nullptr;
+    COSIM_PETSC(VecGetArray(phi, &data));
+    transform(data, true);
+    solve_lines(data, 0, ny_, nx_, nx_ * ny_);
+    transform(data, false);
+    COSIM_PETSC(VecRestoreArray(phi, &data));
+    return;
+  }
+  COSIM_PETSC(VecScatterBegin(to_planes_, b, planes_, INSERT_VALUES, SCATTER_FORWARD));
+  COSIM_PETSC(VecScatterEnd(to_planes_, b, planes_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscScalar* data = nullptr;
+  COSIM_PETSC(VecGetArray(planes_, &data));
+  transform(data, true);
+  COSIM_PETSC(VecRestoreArray(planes_, &data));
+  COSIM_PETSC(VecScatterBegin(to_lines_, planes_, lines_, INSERT_VALUES, SCATTER_FORWARD));
+  COSIM_PETSC(VecScatterEnd(to_lines_, planes_, lines_, INSERT_VALUES, SCATTER_FORWARD));
+  COSIM_PETSC(VecGetArray(lines_, &data));
+  solve_lines(data, j_begin_, j_end_, nz_ * nx_, nx_);
+  COSIM_PETSC(VecRestoreArray(lines_, &data));
+  COSIM_PETSC(VecScatterBegin(to_lines_, lines_, planes_, INSERT_VALUES, SCATTER_REVERSE));
+  COSIM_PETSC(VecScatterEnd(to_lines_, lines_, planes_, INSERT_VALUES, SCATTER_REVERSE));
+  COSIM_PETSC(VecGetArray(planes_, &data));
+  transform(data, false);
+  COSIM_PETSC(VecRestoreArray(planes_, &data));
+  COSIM_PETSC(VecScatterBegin(to_planes_, planes_, phi, INSERT_VALUES, SCATTER_REVERSE));
+  COSIM_PETSC(VecScatterEnd(to_planes_, planes_, phi, INSERT_VALUES, SCATTER_REVERSE));
+}
+
+// In place on whole planes k_begin_ .. k_end_; the forward pass first divides by the cell
+// volume (A's rows carry it), the backward pass undoes the transforms' scale.
+void FastPoisson::transform(double* planes, bool forward) {
+  if (k_end_ == k_begin_) return;
+  const PetscInt plane = nx_ * ny_;
+  if (forward) {
+    for (PetscInt k = k_begin_; k < k_end_; ++k) {
+      double* p = planes + (k - k_begin_) * plane;
+      const double inverse = 1 / volume_[static_cast<std::size_t>(k)];
+      for (PetscInt n = 0; n < plane; ++n) p[n] *= inverse;
+    }
+    fftw_execute_r2r(forward_, planes, planes);
+  } else {
+    fftw_execute_r2r(backward_, planes, planes);
+    const PetscInt total = plane * (k_end_ - k_begin_);
+    for (PetscInt n = 0; n < total; ++n) planes[n] *= scale_;
+  }
+}
+
+// For each mode (i, j) the z system (lower + upper + outlet - sigma) phi_k - lower phi_{k-1}
+// - upper phi_{k+1} = f_k, sigma = eigen_x[i] + eigen_y[j] <= 0, by Thomas' algorithm
+// across all i of a row at once; on a periodic z axis the corners are folded in by
+// Sherman-Morrison. The one singular mode (sigma = 0 with no outlet along z) is fixed by
+// phi_0 = 0. Element (i, j, k) sits at data[(j - j_begin) j_stride + k k_stride + i].
+void FastPoisson::solve_lines(double* data, PetscInt j_begin, PetscInt j_end, PetscInt j_stride, PetscInt k_stride) {
+  const PetscInt n = nz_, nx = nx_;
+  const bool closed = std::all_of(outlet_.begin(), outlet_.end(), [](double o) { return o == 0; });
+  double* w = work_.data();
+  double* v = work_.data() + n * nx;  // Sherman-Morrison's second right-hand side
+  const auto L = [&](PetscInt k) { return lower_[static_cast<std::size_t>(k)]; };
+  const auto U = [&](PetscInt k) { return upper_[static_cast<std::size_t>(k)]; };
+  const auto O = [&](PetscInt k) { return outlet_[static_cast<std::size_t>(k)]; };
+  for (PetscInt j = j_begin; j < j_end; ++j) {
+    double* row = data + (j - j_begin) * j_stride;
+    const double sigma_y = eigen_y_[static_cast<std::size_t>(j)];
+    const auto diagonal = [&](PetscInt k, PetscInt i) {
+      return L(k) + U(k) + O(k) - (eigen_x_[static_cast<std::size_t>(i)] + sigma_y);
+    };
+    // The singular mode, if in this row: its right-hand side kept for a solve of its own.
+    const bool singular = closed && sigma_y == 0 && eigen_x_[0] == 0;
+    if (singular)
+      for (PetscInt k = 0; k < n; ++k) singular_[static_cast<std::size_t>(k)] = row[k * k_stride];
+    // The corners of a cyclic line: row 0 reaches k = n - 1 (beta), row n - 1 reaches 0 (alpha).
+    const double alpha = -U(n - 1), beta = -L(0);
+    for (PetscInt i = 0; i < nx; ++i) {
+      w[i] = diagonal(0, i);
+      if (periodic_z_) {
+        const double gamma = -w[i];
+        w[i] -= gamma;
+        v[i] = gamma;
+      }
+    }
+    if (periodic_z_)
+      for (PetscInt k = 1; k < n; ++k)
+        for (PetscInt i = 0; i < nx; ++i) v[k * nx + i] = k == n - 1 ? alpha : 0;
+    // Forward elimination, with the periodic line's last diagonal modified.
+    for (PetscInt k = 1; k < n; ++k) {
+      double* f = row + k * k_stride;
+      const double* f_prev = row + (k - 1) * k_stride;
+      const double a = -L(k), c_prev = -U(k - 1);
+      for (PetscInt i = 0; i < nx; ++i) {
+        double d = diagonal(k, i);
+        if (periodic_z_ && k == n - 1) d -= alpha * beta / -diagonal(0, i);
+        const double m = a / w[(k - 1) * nx + i];
+        w[k * nx + i] = d - m * c_prev;
+        f[i] -= m * f_prev[i];
+        if (periodic_z_) v[k * nx + i] -= m * v[(k - 1) * nx + i];
+      }
+    }
+    // Back substitution.
+    for (PetscInt i = 0; i < nx; ++i) {
+      row[(n - 1) * k_stride + i] /= w[(n - 1) * nx + i];
+      if (periodic_z_) v[(n - 1) * nx + i] /= w[(n - 1) * nx + i];
+    }
+    for (PetscInt k = n - 2; k >= 0; --k) {
+      double* f = row + k * k_stride;
+      const double* f_next = row + (k + 1) * k_stride;
+      const double c = -U(k);
+      for (PetscInt i = 0; i < nx; ++i) {
+        f[i] = (f[i] - c * f_next[i]) / w[k * nx + i];
+        if (periodic_z_) v[k * nx + i] = (v[k * nx + i] - c * v[(k + 1) * nx + i]) / w[k * nx + i];
+      }
+    }
+    if (periodic_z_)
+      for (PetscInt i = 0; i < nx; ++i) {
+        const double gamma = -diagonal(0, i);
+        double* first = row + i;
+        const double* last = row + (n - 1) * k_stride + i;
+        const double fact = (*first + beta * *last / gamma) / (1 + v[i] + beta * v[(n - 1) * nx + i] / gamma);
+        for (PetscInt k = 0; k < n; ++k) row[k * k_stride + i] -= fact * v[k * nx + i];
+      }
+    if (singular) solve_singular_line(row, k_stride);
+  }
+}
+
+// The mode sigma = 0 of a z axis without outlet: phi is fixed only up to a constant, so
+// phi_0 = 0 and rows 1 .. n - 1 are solved without it (the right-hand side sums to zero, so
+// row 0 then holds too). Writes column i = 0 of the row.
+void FastPoisson::solve_singular_line(double* row, PetscInt k_stride) {
+  const PetscInt n = nz_;
+  std::vector<double>& f = singular_;
+  std::vector<double> w(static_cast<std::size_t>(n), 0);
+  const auto at = [](PetscInt k) { return static_cast<std::size_t>(k); };
+  for (PetscInt k = 1; k < n; ++k) {
+    const double d = lower_[at(k)] + upper_[at(k)] + outlet_[at(k)];
+    if (k == 1) {
+      w[at(k)] = d;
+      continue;
+    }
+    const double m = -lower_[at(k)] / w[at(k - 1)];
+    w[at(k)] = d - m * -upper_[at(k - 1)];
+    f[at(k)] -= m * f[at(k - 1)];
+  }
+  f[0] = 0;
+  for (PetscInt k = n - 1; k >= 1; --k) {
+    const double next = k + 1 < n ? f[at(k + 1)] : 0;
+    f[at(k)] = (f[at(k)] + upper_[at(k)] * next) / w[at(k)];
+  }
+  for (PetscInt k = 0; k < n; ++k) row[k * k_stride] = f[at(k)];
+}
+
+}  // namespace cosim::fluid

@@ -1,0 +1,66 @@
+#pragma once
+// A direct solver for the projection's Poisson equation when no face is imposed (the fluid
+// alone, or bodies by the immersed boundary): the operator never changes, so it is
+// diagonalised once. Along x and y, which must be uniform, the discrete Laplacian of the
+// cell-centred grid has known eigenvectors (cosine transforms between walls, sine
+// transforms between outflows, quarter-wave transforms between one of each, real Fourier
+// transforms on periodic axes: Schumann & Sweet, J. Comput. Phys. 20 (1976) 171); in each
+// of their modes what is left along z, uniform or stretched, is a tridiagonal system
+// (cyclic on a periodic axis), solved exactly. CaNS (Costa, Comput. Math. Appl. 76 (2018)
+// 1853) solves its pressure the same way.
+//
+// It solves the same equations PressureSolver assembles, to round-off, with no iteration.
+// On several ranks the right-hand side is redistributed into slabs of whole x-y planes
+// for the transforms, then into slabs of whole z lines for the tridiagonal solves, and back
+// (PETSc scatters); the grid's own partition is left as it is.
+#include <fftw3.h>
+#include <petscvec.h>
+
+#include <vector>
+
+#include "fluid/boundary_conditions.hpp"
+#include "fluid/grid.hpp"
+
+namespace cosim::fluid {
+
+class FastPoisson {
+ public:
+  // Whether the grid allows it: x and y uniform (or one periodic cell).
+  static bool applies(const Grid& grid);
+
+  FastPoisson(const Grid& grid, const BoundaryConditions& bc);
+  ~FastPoisson();
+  FastPoisson(const FastPoisson&) = delete;
+  FastPoisson& operator=(const FastPoisson&) = delete;
+
+  // Solves A phi = b for A the operator -V div(grad) of PressureSolver (global vectors of the
+  // pressure DM). Where A is singular (no outflow), b must have zero sum; phi is then the
+  // solution whose own z-line over the (0, 0) mode starts at zero, and the caller removes
+  // the constant it wants.
+  void solve(Vec b, Vec phi);
+
+ private:
+  void create_scatters();
+  void release();
+  void transform(double* planes, bool forward);
+  void solve_lines(double* data, PetscInt j_begin, PetscInt j_end, PetscInt j_stride, PetscInt k_stride);
+  void solve_singular_line(double* row, PetscInt k_stride);
+
+  const Grid& grid_;
+  PetscInt nx_ = 0, ny_ = 0, nz_ = 0;
+  bool serial_ = true;
+  PetscInt k_begin_ = 0, k_end_ = 0;  // this rank's x-y planes
+  PetscInt j_begin_ = 0, j_end_ = 0;  // this rank's z lines: all i, j in range
+  std::vector<double> eigen_x_, eigen_y_;  // of the 1D Laplacians, <= 0
+  double scale_ = 1;                       // of a forward and backward transform together
+  std::vector<double> volume_;             // cell volume per z layer
+  std::vector<double> lower_, upper_, outlet_;  // z couplings over the cell volume
+  bool periodic_z_ = false;
+  fftw_plan forward_ = nullptr, backward_ = nullptr;
+  Vec planes_ = nullptr, lines_ = nullptr;  // several ranks only
+  VecScatter to_planes_ = nullptr, to_lines_ = nullptr;
+  std::vector<double> work_;      // the sweep's modified diagonal, and a second solution for cyclic lines
+  std::vector<double> singular_;  // the right-hand side of the singular mode's line
+};
+
+}  // namespace cosim::fluid
