@@ -1,5 +1,6 @@
 #include "fluid/fast_poisson.hpp"
 
+#include <fftw3.h>
 #include <petscdmda.h>
 
 #include <algorithm>
@@ -39,7 +40,7 @@ AxisTransform axis_transform(const Axis& axis, BoundaryKind lower, BoundaryKind 
   // theta_k = pi (k + shift) / n * factor
   double shift = 0, factor = 1;
   if (axis.periodic()) {
-    factor = 2;  // half-complex index k holds frequency k or n - k: the same cosine
+    factor = 2;  // half-complex index k holds frequency k or n - k: the same eigenvalue
   } else {
     const bool lower_open = lower == BoundaryKind::outflow, upper_open = upper == BoundaryKind::outflow;
     t.scale = 2.0 * n;
@@ -84,6 +85,8 @@ FastPoisson::FastPoisson(const Grid& grid, const BoundaryConditions& bc) : grid_
   const AxisTransform y = axis_transform(grid.axis(1), bc.at(1, Side::lower).kind, bc.at(1, Side::upper).kind);
   eigen_x_ = x.eigenvalues;
   eigen_y_ = y.eigenvalues;
+  eigen_x_pinned_ = eigen_x_;
+  eigen_x_pinned_[0] = -1;
   scale_ = 1 / (x.scale * y.scale);
 
   // Along z the couplings of PressureSolver's rows, divided by the cell's volume.
@@ -124,8 +127,11 @@ FastPoisson::FastPoisson(const Grid& grid, const BoundaryConditions& bc) : grid_
                                         plane, forward, flags);
           backward_ = fftw_plan_many_r2r(2, dims, planes, scratch.data(), nullptr, 1, plane, scratch.data(), nullptr,
                                          1, plane, backward, flags);
-          if (!forward_ || !backward_) throw std::runtime_error("fluid: FFTW could not plan the pressure transforms");
         }
+        // Every rank learns whether any failed, so none waits in the scatters' set-up.
+        int failed = planes > 0 && (!forward_ || !backward_) ? 1 : 0;
+        MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, grid.comm());
+        if (failed) throw std::runtime_error("fluid: FFTW could not plan the pressure transforms");
         if (!serial_) create_scatters();
       },
       [this] { release(); });
@@ -249,11 +255,12 @@ void FastPoisson::solve_lines(double* data, PetscInt j_begin, PetscInt j_end, Pe
   for (PetscInt j = j_begin; j < j_end; ++j) {
     double* row = data + (j - j_begin) * j_stride;
     const double sigma_y = eigen_y_[static_cast<std::size_t>(j)];
-    const auto diagonal = [&](PetscInt k, PetscInt i) {
-      return L(k) + U(k) + O(k) - (eigen_x_[static_cast<std::size_t>(i)] + sigma_y);
-    };
-    // The singular mode, if in this row: its right-hand side kept for a solve of its own.
+    // The singular mode, if in this row: its right-hand side kept for a solve of its own,
+    // and the row's sweep run with a stand-in eigenvalue there, which divides by nothing
+    // near zero (its result is overwritten).
     const bool singular = closed && sigma_y == 0 && eigen_x_[0] == 0;
+    const double* sigma_x = singular ? eigen_x_pinned_.data() : eigen_x_.data();
+    const auto diagonal = [&](PetscInt k, PetscInt i) { return L(k) + U(k) + O(k) - (sigma_x[i] + sigma_y); };
     if (singular)
       for (PetscInt k = 0; k < n; ++k) singular_[static_cast<std::size_t>(k)] = row[k * k_stride];
     // The corners of a cyclic line: row 0 reaches k = n - 1 (beta), row n - 1 reaches 0 (alpha).
@@ -310,8 +317,8 @@ void FastPoisson::solve_lines(double* data, PetscInt j_begin, PetscInt j_end, Pe
 }
 
 // The mode sigma = 0 of a z axis without outlet: phi is fixed only up to a constant, so
-// phi_0 = 0 and rows 1 .. n - 1 are solved without it (the right-hand side sums to zero, so
-// row 0 then holds too). Writes column i = 0 of the row.
+// phi_0 = 0 and rows 1 .. n - 1 are solved without it (the right-hand side weighted by the
+// cell widths sums to zero, so row 0 then holds too). Writes column i = 0 of the row.
 void FastPoisson::solve_singular_line(double* row, PetscInt k_stride) {
   const PetscInt n = nz_;
   std::vector<double>& f = singular_;

@@ -13,13 +13,14 @@
 // On several ranks the right-hand side is redistributed into slabs of whole x-y planes
 // for the transforms, then into slabs of whole z lines for the tridiagonal solves, and back
 // (PETSc scatters); the grid's own partition is left as it is.
-#include <fftw3.h>
 #include <petscvec.h>
 
 #include <vector>
 
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/grid.hpp"
+
+struct fftw_plan_s;  // FFTW's plan, kept out of this header
 
 namespace cosim::fluid {
 
@@ -35,8 +36,8 @@ class FastPoisson {
 
   // Solves A phi = b for A the operator -V div(grad) of PressureSolver (global vectors of the
   // pressure DM). Where A is singular (no outflow), b must have zero sum; phi is then the
-  // solution whose own z-line over the (0, 0) mode starts at zero, and the caller removes
-  // the constant it wants.
+  // solution whose z line of the (0, 0) mode starts at zero, and the caller removes the
+  // constant it wants.
   void solve(Vec b, Vec phi);
 
  private:
@@ -52,11 +53,12 @@ class FastPoisson {
   PetscInt k_begin_ = 0, k_end_ = 0;  // this rank's x-y planes
   PetscInt j_begin_ = 0, j_end_ = 0;  // this rank's z lines: all i, j in range
   std::vector<double> eigen_x_, eigen_y_;  // of the 1D Laplacians, <= 0
+  std::vector<double> eigen_x_pinned_;     // eigen_x_ with the zero replaced: the singular row's sweep
   double scale_ = 1;                       // of a forward and backward transform together
   std::vector<double> volume_;             // cell volume per z layer
   std::vector<double> lower_, upper_, outlet_;  // z couplings over the cell volume
   bool periodic_z_ = false;
-  fftw_plan forward_ = nullptr, backward_ = nullptr;
+  fftw_plan_s *forward_ = nullptr, *backward_ = nullptr;
   Vec planes_ = nullptr, lines_ = nullptr;  // several ranks only
   VecScatter to_planes_ = nullptr, to_lines_ = nullptr;
   std::vector<double> work_;      // the sweep's modified diagonal, and a second solution for cyclic lines

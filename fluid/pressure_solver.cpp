@@ -40,12 +40,8 @@ PressureSolver::PressureSolver(const Grid& grid, const BoundaryConditions& bc) :
       [this] {
         update_null_space();
         COSIM_PETSC(DMCreateGlobalVector(grid_.pressure_dm(), &rhs_));
-        if (use_transforms(grid_)) {
-          fast_ = std::make_unique<FastPoisson>(grid_, bc_);
-          ++assemblies_;
-        } else {
-          create_krylov();  // a bad -pressure_* option fails here
-        }
+        transforms_ = use_transforms(grid_);
+        if (!transforms_) create_krylov();  // a bad -pressure_* option fails here
       },
       [this] { release(); });
 }
@@ -150,8 +146,14 @@ void PressureSolver::update_null_space() {
 }
 
 int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi) {
-  const bool transforms = fast_ && !imposed;
-  if (!transforms && !ksp_) create_krylov();
+  // Each solver is set up when first needed: the staircase's imposed faces on a grid the
+  // transforms could serve take the Krylov solver from their first step.
+  const bool transforms = transforms_ && !imposed;
+  if (transforms && !fast_) {
+    fast_ = std::make_unique<FastPoisson>(grid_, bc_);
+    ++assemblies_;
+  }
+  if (!transforms && !ksp_) create_or_release([this] { create_krylov(); }, [this] { KSPDestroy(&ksp_); });
   const int generation = imposed ? imposed->generation() : -1;
   if (imposed != imposed_ || generation != assembled_generation_) {
     imposed_ = imposed;

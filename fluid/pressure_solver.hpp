@@ -47,7 +47,8 @@ class PressureSolver {
 
   const Grid& grid_;
   const BoundaryConditions& bc_;
-  std::unique_ptr<FastPoisson> fast_;  // where it applies and was not declined
+  bool transforms_ = false;             // where they apply and were not declined
+  std::unique_ptr<FastPoisson> fast_;  // when first needed
   KSP ksp_ = nullptr;                   // when first needed
   Vec rhs_ = nullptr;
   MatNullSpace constants_ = nullptr;  // a constant on each region no outflow pins, if any

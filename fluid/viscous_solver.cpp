@@ -39,7 +39,8 @@ Mat star_matrix(DM box) {
 
 ViscousSolver::ViscousSolver(const Grid& grid, const BoundaryConditions& bc, const UniformViscousWeights* weights)
     : grid_(grid), bc_(bc), weights_(weights) {
-  // A bad -viscous_* option fails here.
+  // A misspelt -viscous_* option fails here; a preconditioner the stencil operator cannot
+  // serve, at the first solve.
   create_or_release([this] { create(); }, [this] { release(); });
 }
 
@@ -68,9 +69,9 @@ void ViscousSolver::create() {
     COSIM_PETSC(KSPSetOptionsPrefix(ksp_[c], "viscous_"));
     // SOR needs no storage beyond the matrix, where ILU(0), PETSc's default, keeps a copy:
     // 0.26 KB per cell less at the same speed and iterations (fluid/README.md, Throughput).
-    // Without a matrix, Jacobi, which needs more iterations and keeps fewer vectors: GMRES
-    // restarted after 10 (BiCGStab, with still fewer, broke down on the staircase's
-    // identity rows).
+    // Without a matrix, Jacobi, which needs more iterations; GMRES restarted after 10 keeps
+    // fewer vectors than after 30 (BiCGStab, with still fewer, broke down on the
+    // staircase's identity rows).
     COSIM_PETSC(KSPSetType(ksp_[c], KSPGMRES));
     if (weights_) COSIM_PETSC(KSPGMRESSetRestart(ksp_[c], 10));
     PC pc;

@@ -69,6 +69,8 @@ std::vector<Case> cases() {
        {{{in, out}, {out, wall}, {wall, wall}}}},
       {"fully periodic, two cells along z", {Axis::uniform(8, 0, 1, true), Axis::uniform(6, 0, 1, true), Axis::uniform(2, 0, 1, true)},
        {{{wall, wall}, {wall, wall}, {wall, wall}}}},
+      {"two-dimensional: one periodic cell along z (on two ranks one holds no plane)", {Axis::uniform(10, 0, 1, false), Axis::uniform(6, 0, 1, false), Axis::uniform(1, 0, 0.1, true)},
+       {{{wall, out}, {in, wall}, {wall, wall}}}},
       {"two-dimensional: one periodic cell along y", {Axis::uniform(16, 0, 2, false), Axis::uniform(1, 0, 0.1, true), Axis::uniform(8, 0, 1, false)},
        {{{in, out}, {wall, wall}, {wall, wall}}}},
   };
