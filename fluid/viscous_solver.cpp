@@ -69,11 +69,12 @@ void ViscousSolver::create() {
     COSIM_PETSC(KSPSetOptionsPrefix(ksp_[c], "viscous_"));
     // SOR needs no storage beyond the matrix, where ILU(0), PETSc's default, keeps a copy:
     // 0.26 KB per cell less at the same speed and iterations (fluid/README.md, Throughput).
-    // Without a matrix, Jacobi, which needs more iterations; GMRES restarted after 10 keeps
-    // fewer vectors than after 30 (BiCGStab, with still fewer, broke down on the
-    // staircase's identity rows).
+    // Without a matrix, Jacobi, which needs more iterations; GMRES restarted after 4 keeps 6
+    // vectors where 30 keeps up to 32, and was as fast on the cavity and on Hasimoto's
+    // array at nu dt / h^2 = 1 (fluid/README.md, Throughput). BiCGStab, with fewer still,
+    // broke down on the staircase's identity rows.
     COSIM_PETSC(KSPSetType(ksp_[c], KSPGMRES));
-    if (weights_) COSIM_PETSC(KSPGMRESSetRestart(ksp_[c], 10));
+    if (weights_) COSIM_PETSC(KSPGMRESSetRestart(ksp_[c], 4));
     PC pc;
     COSIM_PETSC(KSPGetPC(ksp_[c], &pc));
     COSIM_PETSC(PCSetType(pc, weights_ ? PCJACOBI : PCSOR));

@@ -2,7 +2,7 @@
 // The implicit viscous half-step (I - s div(nu grad)) u* = rhs per velocity component,
 // s = dt / 2 for Crank-Nicolson; the operator is diagonally dominant, and not symmetric
 // next to walls. KSP options prefix `viscous_`. With a uniform viscosity the operator is
-// applied from its stencil weights (UniformViscousWeights) without a matrix: GMRES(10) with
+// applied from its stencil weights (UniformViscousWeights) without a matrix: GMRES(4) with
 // Jacobi by default, whose diagonal the weights give (a preconditioner that needs the
 // matrix's entries, SOR or ILU, fails at the first solve). A generalized-Newtonian
 // viscosity varies from point to point and step to step: its operator is assembled (a
