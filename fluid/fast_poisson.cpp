@@ -108,7 +108,7 @@ FastPoisson::FastPoisson(const Grid& grid, const BoundaryConditions& bc) : grid_
     if (k == 0 && open_lower && !z.periodic()) outlet_[at] += 1 / (w * (z.centre(0) - z.lo()));
     if (k == nz_ - 1 && open_upper && !z.periodic()) outlet_[at] += 1 / (w * (z.hi() - z.centre(k)));
   }
-  work_.resize(2 * static_cast<std::size_t>(nz_ * nx_));
+  work_.resize(static_cast<std::size_t>((2 * nz_ + 1) * nx_));
   singular_.resize(static_cast<std::size_t>(nz_));
 
   create_or_release(
@@ -249,6 +249,7 @@ void FastPoisson::solve_lines(double* data, PetscInt j_begin, PetscInt j_end, Pe
   const bool closed = std::all_of(outlet_.begin(), outlet_.end(), [](double o) { return o == 0; });
   double* w = work_.data();
   double* v = work_.data() + n * nx;  // Sherman-Morrison's second right-hand side
+  double* gamma = v + n * nx;          // and its free parameter, minus row 0's diagonal
   const auto L = [&](PetscInt k) { return lower_[static_cast<std::size_t>(k)]; };
   const auto U = [&](PetscInt k) { return upper_[static_cast<std::size_t>(k)]; };
   const auto O = [&](PetscInt k) { return outlet_[static_cast<std::size_t>(k)]; };
@@ -268,9 +269,9 @@ void FastPoisson::solve_lines(double* data, PetscInt j_begin, PetscInt j_end, Pe
     for (PetscInt i = 0; i < nx; ++i) {
       w[i] = diagonal(0, i);
       if (periodic_z_) {
-        const double gamma = -w[i];
-        w[i] -= gamma;
-        v[i] = gamma;
+        gamma[i] = -w[i];
+        w[i] -= gamma[i];
+        v[i] = gamma[i];
       }
     }
     if (periodic_z_)
@@ -283,7 +284,7 @@ void FastPoisson::solve_lines(double* data, PetscInt j_begin, PetscInt j_end, Pe
       const double a = -L(k), c_prev = -U(k - 1);
       for (PetscInt i = 0; i < nx; ++i) {
         double d = diagonal(k, i);
-        if (periodic_z_ && k == n - 1) d -= alpha * beta / -diagonal(0, i);
+        if (periodic_z_ && k == n - 1) d -= alpha * beta / gamma[i];
         const double m = a / w[(k - 1) * nx + i];
         w[k * nx + i] = d - m * c_prev;
         f[i] -= m * f_prev[i];
@@ -306,10 +307,10 @@ void FastPoisson::solve_lines(double* data, PetscInt j_begin, PetscInt j_end, Pe
     }
     if (periodic_z_)
       for (PetscInt i = 0; i < nx; ++i) {
-        const double gamma = -diagonal(0, i);
         double* first = row + i;
         const double* last = row + (n - 1) * k_stride + i;
-        const double fact = (*first + beta * *last / gamma) / (1 + v[i] + beta * v[(n - 1) * nx + i] / gamma);
+        const double fact =
+            (*first + beta * *last / gamma[i]) / (1 + v[i] + beta * v[(n - 1) * nx + i] / gamma[i]);
         for (PetscInt k = 0; k < n; ++k) row[k * k_stride + i] -= fact * v[k * nx + i];
       }
     if (singular) solve_singular_line(row, k_stride);

@@ -61,7 +61,7 @@ class FastPoisson {
   fftw_plan_s *forward_ = nullptr, *backward_ = nullptr;
   Vec planes_ = nullptr, lines_ = nullptr;  // several ranks only
   VecScatter to_planes_ = nullptr, to_lines_ = nullptr;
-  std::vector<double> work_;      // the sweep's modified diagonal, and a second solution for cyclic lines
+  std::vector<double> work_;      // the sweep's modified diagonal; for cyclic lines a second solution and gamma
   std::vector<double> singular_;  // the right-hand side of the singular mode's line
 };
 

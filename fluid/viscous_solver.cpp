@@ -203,11 +203,8 @@ PetscErrorCode ViscousSolver::multiply(Mat A, Vec x, Vec y) {
       const PetscScalar *south = u[k][j - 1], *north = u[k][j + 1], *down = u[k - 1][j], *up = u[k + 1][j];
       PetscScalar* result = out[k][j];
       for (PetscInt i = first[0]; i < last[0]; ++i) {
-        const ViscousWeights& wx = across_x[i];
-        const double laplacian = (wx.centre + wy.centre + wz.centre) * row[i] + wx.below * row[i - 1] +
-                                 wx.above * row[i + 1] + wy.below * south[i] + wy.above * north[i] +
-                                 wz.below * down[i] + wz.above * up[i];
-        result[i] = row[i] - s * laplacian;
+        const SevenPoints points{row[i], {row[i - 1], south[i], down[i]}, {row[i + 1], north[i], up[i]}};
+        result[i] = row[i] - s * weighted_sum(across_x[i], wy, wz, points);
       }
       for (PetscInt i = box.lo[0]; i < first[0]; ++i) boundary_row({i, j, k});
       for (PetscInt i = last[0]; i < box.hi[0]; ++i) boundary_row({i, j, k});

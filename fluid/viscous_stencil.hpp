@@ -18,6 +18,20 @@ struct ViscousWeights {
   double below = 0, centre = 0, above = 0, boundary = 0;
 };
 
+// u_c at a point and at its neighbours below and above it along x, y and z.
+struct SevenPoints {
+  double centre = 0;
+  std::array<double, 3> below{}, above{};
+};
+
+// The three axes' weights applied to the seven points: div(nu grad u_c) without its wall
+// terms. The explicit half of Crank-Nicolson and the matrix-free implicit operator share it.
+inline double weighted_sum(const ViscousWeights& x, const ViscousWeights& y, const ViscousWeights& z,
+                           const SevenPoints& u) {
+  return (x.centre + y.centre + z.centre) * u.centre + x.below * u.below[0] + x.above * u.above[0] +
+         y.below * u.below[1] + y.above * u.above[1] + z.below * u.below[2] + z.above * u.above[2];
+}
+
 // Second order on stretched axes (three-point differences exact for quadratics, and a
 // one-sided quadratic closure through the boundary value next to a wall, so a parabolic
 // profile is reproduced exactly). i is p's index along d, nu_below and nu_above the
