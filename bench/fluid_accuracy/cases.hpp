@@ -63,6 +63,19 @@ struct Towed {
 };
 Towed towed_sphere(const fluid::BodyOptions& method, double cells_per_step, double reynolds);
 
+// ten Cate's tank seen from its settling sphere, without the lids: the sphere held in a
+// square duct 20/3 diameters wide (100 mm for 15 mm), 5 diameters downstream of a uniform
+// inflow U and 11 upstream of the outflow, its walls sliding past at U. The steady drag
+// over Stokes's 3 pi mu U d (the side walls' and the Reynolds number's corrections
+// together), for comparison with an independent solver on the same geometry
+// (openfoam_duct.py).
+struct DuctDrag {
+  long cells = 0;
+  int steps = 0;
+  double factor = 0, seconds = 0;
+};
+DuctDrag sphere_in_sliding_duct(const fluid::BodyOptions& method, int cells_per_diameter, double reynolds);
+
 // Galilean invariance of a moving body: Hasimoto's array driven to about Reynolds number
 // `reynolds` (2 a U / nu, the drive from Hasimoto's Stokes drag) with the sphere fixed until
 // steady, then the same flow seen from a frame moving at -U (NavierStokes::shift_frame):

@@ -4,7 +4,8 @@
 // cylinder (C_D), each on several grid levels. Prints one row per run; --csv writes them too
 // (plot.py draws error against wall time). --oscillating runs the oscillating-cylinder
 // study instead (--csv: the force histories, plot_oscillating.py), --towed the time-step
-// study of a moving sphere. Serial or under mpirun (PETSC_COMM_WORLD).
+// study of a moving sphere, --duct the settling sphere's tank seen from the sphere. Serial
+// or under mpirun (PETSC_COMM_WORLD).
 #include <CLI/CLI.hpp>
 #include <petscsys.h>
 
@@ -156,6 +157,20 @@ void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, std::vec
   }
 }
 
+// The sphere held in the sliding duct at each grid.
+void duct_study(const std::vector<cosim::fluid::BodyOptions>& methods, const std::vector<int>& diameters,
+                double reynolds) {
+  PetscPrintf(PETSC_COMM_WORLD, "sphere held in the sliding duct, Re %g\n", reynolds);
+  PetscPrintf(PETSC_COMM_WORLD, "%-26s %5s %8s %6s %9s %14s\n", "method", "d/h", "cells", "steps", "wall [s]",
+              "F/(3 pi mu U d)");
+  for (const auto& method : methods)
+    for (int n : diameters) {
+      const DuctDrag r = sphere_in_sliding_duct(method, n, reynolds);
+      PetscPrintf(PETSC_COMM_WORLD, "%-26s %5d %8ld %6d %9.1f %14.5f\n", label(method).c_str(), n, r.cells, r.steps,
+                  r.seconds, r.factor);
+    }
+}
+
 // The Galilean check at each time step: the towed sphere's drag against the fixed one's.
 void moving_frame_study(const std::vector<cosim::fluid::BodyOptions>& methods, int n,
                         const std::vector<double>& cells_per_step, double reynolds) {
@@ -254,6 +269,10 @@ int main(int argc, char** argv) {
   app.add_option("--moving-frame", moving,
                  "Galilean check instead: Hasimoto's sphere (the first --boxes) at --reynolds, fixed, then towed "
                  "through fluid at rest, at these time steps in cells the body moves per step");
+  std::vector<int> duct;
+  app.add_option("--duct", duct,
+                 "ten Cate's tank seen from the sphere instead (held in a square duct whose walls slide past, at "
+                 "--reynolds), at these cells per diameter (multiples of 3)");
   CLI11_PARSE(app, argc, argv);
   if (retraction >= 0) ibm.retraction = cosim::fluid::Retraction{retraction, curvature};
   ibm.kernel = kernel == "roma3" ? cosim::fluid::DeltaKernel::roma3
@@ -279,6 +298,8 @@ int main(int argc, char** argv) {
       moving_frame_study(s.methods, s.boxes.front(), moving, reynolds);
     else if (calibrating)
       calibrate(s.boxes, ibm, s);
+    else if (!duct.empty())
+      duct_study(s.methods, duct, reynolds);
     else if (!towed.empty())
       towed_study(s.methods, towed, reynolds);
     else if (oscillating)
