@@ -35,6 +35,21 @@ Axis along_channel(double h) {
 Point parabola(const Point& x) { return Point{4 * Umax * x[1] * (H - x[1]) / (H * H), 0, 0}; }
 }  // namespace dfg
 
+// Advances `flow` by `interval` at a time (at most to t_max) until measure() moves by less
+// than `tolerance` of itself over one interval; the steps taken.
+template <typename Measure>
+int run_to_steady(NavierStokes& flow, double interval, double t_max, double tolerance, Measure measure) {
+  int steps = 0;
+  double value = 0;
+  for (double t = interval; t <= t_max; t += interval) {
+    steps += static_cast<int>(flow.advance_to(t).size());
+    const double before = value;
+    value = measure();
+    if (std::abs(value - before) < tolerance * std::abs(value)) break;
+  }
+  return steps;
+}
+
 double mean_u(const NavierStokes& flow, double cells) {
   // The mean over the cells of the face velocities: periodic, so one face per cell.
   PetscScalar total = 0;
@@ -65,12 +80,8 @@ FluidRun dfg_cylinder(int cells_per_diameter, const BodyOptions& method, const E
   FluidRun run{"DFG 2D-1 C_D", "D/h=" + std::to_string(cells_per_diameter), label(method)};
   // Steady: C_D moves by less than 1e-4 of itself over half a time unit (at most t = 12).
   double cd = 0;
-  for (double t = 0.5; t <= 12; t += 0.5) {
-    run.steps += static_cast<int>(flow.advance_to(t).size());
-    const double before = cd;
-    cd = to_coefficient * bodies->loads(flow)[body].force[0];
-    if (std::abs(cd - before) < 1e-4 * cd) break;
-  }
+  run.steps = run_to_steady(flow, 0.5, 12, 1e-4,
+                            [&] { return cd = to_coefficient * bodies->loads(flow)[body].force[0]; });
   run.check = to_coefficient * bodies->loads(flow)[body].force[1];
   const auto n = grid.cells();
   run.cells = static_cast<long>(n[0] * n[1] * n[2]);
@@ -317,12 +328,7 @@ DuctDrag sphere_in_sliding_duct(const BodyOptions& method, int cells_per_diamete
   DuctDrag out;
   // Steady: the drag moves by less than 1e-5 of itself over one d / U (at most 200).
   double drag = 0;
-  for (double t = 1; t <= 200; t += 1) {
-    out.steps += static_cast<int>(flow.advance_to(t).size());
-    const double before = drag;
-    drag = bodies->loads(flow)[0].force.z();
-    if (std::abs(drag - before) < 1e-5 * std::abs(drag)) break;
-  }
+  out.steps = run_to_steady(flow, 1, 200, 1e-5, [&] { return drag = bodies->loads(flow)[0].force.z(); });
   out.factor = drag / (3 * std::numbers::pi * nu * U * d);
   out.cells = static_cast<long>(across) * across * along;
   out.seconds = MPI_Wtime() - start_time;

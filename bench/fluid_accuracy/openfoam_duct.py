@@ -11,7 +11,6 @@ Example: bench/fluid_accuracy/openfoam_duct.py --cells-per-diameter 6 --levels 2
 """
 import argparse
 import math
-import os
 import pathlib
 import subprocess
 import tempfile
