@@ -27,18 +27,26 @@ MoveResult move(Algorithm algorithm, const Domain& domain, Particle& particle, d
   return {};
 }
 
-MoveResult move(const Domain& domain, const Obstacles& obstacles, Particle& particle, std::span<csg::State> states,
-                double dt, Random& random, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) {
-  if (states.size() != static_cast<std::size_t>(obstacles.count()) ||
-      tallies.size() != static_cast<std::size_t>(obstacles.count()))
-    throw std::invalid_argument("move: " + std::to_string(obstacles.count()) + " obstacles but " +
-                                std::to_string(states.size()) + " states and " + std::to_string(tallies.size()) +
-                                " tallies");
-  if (!patches.empty() && patches.size() != domain.boundaries.patches.size())
-    throw std::invalid_argument("move: " + std::to_string(patches.size()) + " patch tallies for " +
+namespace detail {
+
+void check_carried(const Domain& domain, const Obstacles& obstacles, std::size_t states, std::size_t tallies,
+                   std::size_t patches) {
+  const auto objects = static_cast<std::size_t>(obstacles.count());
+  if (states != objects || tallies != objects)
+    throw std::invalid_argument("move: " + std::to_string(objects) + " obstacles but " + std::to_string(states) +
+                                " states and " + std::to_string(tallies) + " tallies");
+  if (patches != 0 && patches != domain.boundaries.patches.size())
+    throw std::invalid_argument("move: " + std::to_string(patches) + " patch tallies for " +
                                 std::to_string(domain.boundaries.patches.size()) + " boundary conditions");
   if (obstacles.emits() && !(domain.boundaries.mass > 0.0))
     throw std::invalid_argument("an obstacle re-emits particles but the particle mass is not positive");
+}
+
+}  // namespace detail
+
+MoveResult move(const Domain& domain, const Obstacles& obstacles, Particle& particle, std::span<csg::State> states,
+                double dt, Random& random, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) {
+  detail::check_carried(domain, obstacles, states.size(), tallies.size(), patches.size());
   return detail::move_event_driven(domain, particle, dt, random, {&obstacles, states, tallies, patches});
 }
 

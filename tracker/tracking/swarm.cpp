@@ -1,5 +1,7 @@
 #include "tracker/tracking/swarm.hpp"
 
+#include "tracker/tracking/detail/algorithms.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -18,24 +20,35 @@ void Swarm::add(const Particle& particle, std::span<const csg::State> states) {
 void Swarm::keep(std::size_t from, std::size_t to) {
   if (from == to) return;
   particles_[to] = particles_[from];
-  std::copy_n(states_.begin() + static_cast<long>(from * objects_), objects_, states_.begin() + static_cast<long>(to * objects_));
+  copy_states(states_.data() + from * objects_, states_.data() + to * objects_);
 }
 
 void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, MoveTally& moves,
                      std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) {
+  detail::check_carried(domain, obstacles, static_cast<std::size_t>(objects_), tallies.size(), patches.size());
+  const detail::Carried any_particle{&obstacles, {}, tallies, patches};
   // The removed ones are dropped as the loop goes: each kept particle moves down at most once.
   std::size_t kept = 0;
+  long long inside = 0;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
+    if (kept != i) copy_states(states_.data() + i * objects_, states_.data() + kept * objects_);
+    // Most moves stay inside their cell: on the stored record, without the detour through a
+    // Particle and a MoveResult (the same x + dt v the event loop computes for them).
+    const StoredParticle& s = particles_[i];
+    const Vec3 end = Vec3(s.x[0], s.x[1], s.x[2]) + dt * Vec3(s.v[0], s.v[1], s.v[2]);
+    if (detail::ends_inside(domain, any_particle, s.cell, end)) {
+      particles_[kept] = {{end[0], end[1], end[2]}, {s.v[0], s.v[1], s.v[2]}, s.cell};
+      ++kept;
+      ++inside;
+      continue;
+    }
     Particle p = particle(i);
-    const MoveResult result = move(domain, obstacles, p, states(i), dt, random, tallies, patches);
+    const MoveResult result = detail::move_event_driven(domain, p, dt, random,
+                                                        {&obstacles, states(kept), tallies, patches});
     moves.add(result);
-    if (result.removed) continue;
-    // Straight into its kept slot: after a removal the record would otherwise be written twice.
-    if (kept != i)
-      std::copy_n(states_.begin() + static_cast<long>(i * objects_), objects_,
-                  states_.begin() + static_cast<long>(kept * objects_));
-    set(kept++, p);
+    if (!result.removed) set(kept++, p);
   }
+  moves.moves += inside;
   particles_.resize(kept);
   states_.resize(kept * objects_);
 }
@@ -51,8 +64,7 @@ void Swarm::sort_by_cell(Index cells) {
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const std::size_t to = start[static_cast<std::size_t>(particles_[i].cell)]++;
     sorted_particles_[to] = particles_[i];
-    std::copy_n(states_.begin() + static_cast<long>(i * objects_), objects_,
-                sorted_states_.begin() + static_cast<long>(to * objects_));
+    copy_states(states_.data() + i * objects_, sorted_states_.data() + to * objects_);
   }
   particles_.swap(sorted_particles_);
   states_.swap(sorted_states_);

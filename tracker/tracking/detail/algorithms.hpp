@@ -52,6 +52,19 @@ struct Carried {
   }
 };
 
+// A move (or its rest) that ends in the cell's inner box, in a cell where no object is
+// active, is x + dt v and nothing else: every face plane the particle moves towards is at
+// least the tolerance ahead of the end, and f is linear along the path, so the event loop
+// would find no event after a scan of all the faces, and settle would find the end inside.
+inline bool ends_inside(const Domain& domain, const Carried& carried, Index cell, const Vec3& end) {
+  return domain.inner_boxes[static_cast<std::size_t>(cell)].contains(end) && carried.none_in(cell);
+}
+
+// Throws std::invalid_argument unless there is one state and one tally per obstacle, and
+// one patch tally per boundary condition or none.
+void check_carried(const Domain& domain, const Obstacles& obstacles, std::size_t states, std::size_t tallies,
+                   std::size_t patches);
+
 // The earliest event of the objects in the particle's (bounding) cell; object -1: none.
 struct ObjectEvent {
   csg::Event event;

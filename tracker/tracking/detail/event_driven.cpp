@@ -73,19 +73,6 @@ bool jump_out_of_gap(const Domain& domain, Particle& p, const Carried& carried, 
 
 MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Random& random, const Carried& carried) {
   MoveResult result;
-  // Most moves of a DSMC step stay well inside their cell. From the inner box to the inner
-  // box, with no object in the cell, the loop below would find no face within reach (every
-  // plane is at least the tolerance away at both ends, and f is linear along the path), no
-  // object event, and the particle ahead of every face it moves away from: it would move by
-  // the same x + dt v and return this empty result, after a scan of all the faces.
-  const InnerBox& inner = domain.inner_boxes[static_cast<std::size_t>(p.cell)];
-  if (inner.contains(p.x)) {
-    const Vec3 end = p.x + dt * p.v;
-    if (inner.contains(end) && carried.none_in(p.cell)) {
-      p.x = end;
-      return result;
-    }
-  }
   double remaining = dt;
   Index skip = -1;
   int streak = 0;
@@ -98,6 +85,11 @@ MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Rando
         result.stalled = true;  // the rest of the move is dropped, the cell kept
         break;
       }
+    }
+    // Most moves of a DSMC step end well inside the cell they start in or cross into.
+    if (const Vec3 end = p.x + remaining * p.v; ends_inside(domain, carried, p.cell, end)) {
+      p.x = end;
+      return result;
     }
     // Bannerman, Strobl & Poeschel: the earliest dt >= 0 with f <= 0 and f' < 0; a particle
     // slightly outside a face it moves out through gets dt = 0, never a negative time. The
