@@ -43,8 +43,8 @@ void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt
       continue;
     }
     Particle p = particle(i);
-    const MoveResult result = detail::move_event_driven(domain, p, dt, random,
-                                                        {&obstacles, states(kept), tallies, patches});
+    const MoveResult result =
+        detail::follow_events(domain, p, dt, random, {&obstacles, states(kept), tallies, patches});
     moves.add(result);
     if (!result.removed) set(kept++, p);
   }

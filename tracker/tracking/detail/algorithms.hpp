@@ -78,6 +78,9 @@ bool execute(const Carried& carried, double mass, Particle& particle, const Obje
 
 MoveResult move_event_driven(const Domain& domain, Particle& particle, double dt, Random& random,
                              const Carried& carried = {});
+// The same for a move that does not end in its start cell's inner box (ends_inside false):
+// the event loop.
+MoveResult follow_events(const Domain& domain, Particle& particle, double dt, Random& random, const Carried& carried);
 
 // How the face-intersection baselines put back a particle found outside its cell.
 enum class Recovery {

@@ -72,11 +72,20 @@ bool jump_out_of_gap(const Domain& domain, Particle& p, const Carried& carried, 
 }  // namespace
 
 MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Random& random, const Carried& carried) {
+  // Most moves of a DSMC step end well inside the cell they start in.
+  if (const Vec3 end = p.x + dt * p.v; ends_inside(domain, carried, p.cell, end)) {
+    p.x = end;
+    return {};
+  }
+  return follow_events(domain, p, dt, random, carried);
+}
+
+MoveResult follow_events(const Domain& domain, Particle& p, double dt, Random& random, const Carried& carried) {
   MoveResult result;
   double remaining = dt;
   Index skip = -1;
   int streak = 0;
-  for (;;) {
+  for (bool first = true;; first = false) {
     if (streak > cycle_length) {
       ++result.cycles_broken;
       streak = 0;
@@ -86,8 +95,9 @@ MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Rando
         break;
       }
     }
-    // Most moves of a DSMC step end well inside the cell they start in or cross into.
-    if (const Vec3 end = p.x + remaining * p.v; ends_inside(domain, carried, p.cell, end)) {
+    // The rest of most crossing moves ends well inside the cell they cross into (the caller
+    // tested the start cell).
+    if (const Vec3 end = p.x + remaining * p.v; !first && ends_inside(domain, carried, p.cell, end)) {
       p.x = end;
       return result;
     }
