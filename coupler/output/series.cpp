@@ -13,16 +13,16 @@ int rank_for(hsize_t columns) { return columns > 1 ? 2 : 1; }
 
 }  // namespace
 
-Series::Series(Handle dataset, std::string path, hsize_t rows, hsize_t columns)
-    : dataset_(std::move(dataset)), path_(std::move(path)), rows_(rows), columns_(columns) {}
+Series::Series(Handle dataset, std::string path, hsize_t rows, hsize_t columns, int rank)
+    : dataset_(std::move(dataset)), path_(std::move(path)), rows_(rows), columns_(columns), rank_(rank) {}
 
 Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize_t columns,
-                         hsize_t chunk_rows) {
+                         hsize_t chunk_rows, int rank) {
   const std::string where = "dataset " + child_path(group, name);
   const hsize_t dims[2] = {0, columns};
   const hsize_t max_dims[2] = {H5S_UNLIMITED, columns};
   const hsize_t chunk[2] = {chunk_rows, columns};
-  const int rank = rank_for(columns);
+  if (rank == 0) rank = rank_for(columns);
   Handle space(H5Screate_simple(rank, dims, max_dims), H5Sclose, "make dataspace for " + where);
   Handle props(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "make properties for " + where);
   check(H5Pset_chunk(props.get(), rank, chunk), "set chunks of " + where);
@@ -34,7 +34,13 @@ Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize
 Series Series::create(hid_t group, const std::string& name, hsize_t columns, hid_t type) {
   Handle ds = create_extendible(group, name, type, columns, kChunkRows);
   std::string path = path_of(ds.get());
-  return Series(std::move(ds), std::move(path), 0, columns);
+  return Series(std::move(ds), std::move(path), 0, columns, rank_for(columns));
+}
+
+Series Series::create_table(hid_t group, const std::string& name, hsize_t columns, hid_t type) {
+  Handle ds = create_extendible(group, name, type, columns, kChunkRows, 2);
+  std::string path = path_of(ds.get());
+  return Series(std::move(ds), std::move(path), 0, columns, 2);
 }
 
 Series Series::open(hid_t group, const std::string& name) {
@@ -45,7 +51,7 @@ Series Series::open(hid_t group, const std::string& name) {
   const int rank = H5Sget_simple_extent_dims(space.get(), dims, nullptr);
   if (rank != 1 && rank != 2) throw ObjectError(where + " is not a 1-d or 2-d dataset");
   std::string path = path_of(ds.get());
-  return Series(std::move(ds), std::move(path), dims[0], rank == 2 ? dims[1] : 1);
+  return Series(std::move(ds), std::move(path), dims[0], rank == 2 ? dims[1] : 1, rank);
 }
 
 void Series::append_raw(const void* row, hid_t type) {
@@ -56,7 +62,7 @@ void Series::append_raw(const void* row, hid_t type) {
   const hsize_t count[2] = {1, columns_};
   check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
         "select last row of series " + path_);
-  Handle row_space(H5Screate_simple(rank_for(columns_), count, nullptr), H5Sclose,
+  Handle row_space(H5Screate_simple(rank_, count, nullptr), H5Sclose,
                    "make row dataspace for series " + path_);
   check(H5Dwrite(dataset_.get(), type, row_space.get(), file_space.get(), H5P_DEFAULT, row),
         "write series " + path_);

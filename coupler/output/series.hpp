@@ -12,14 +12,19 @@
 
 namespace cosim::output {
 
-// A chunked dataset of 0 rows of `columns` values (1-d when columns == 1) with an unlimited
-// first dimension, so rows can be added later without moving what is written.
+// A chunked dataset of 0 rows of `columns` values (1-d when columns == 1 and rank is 1)
+// with an unlimited first dimension, so rows can be added later without moving what is
+// written.
 Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize_t columns,
-                         hsize_t chunk_rows);
+                         hsize_t chunk_rows, int rank = 0);
 
 class Series {
  public:
+  // n, or n x columns when columns > 1.
   static Series create(hid_t group, const std::string& name, hsize_t columns, hid_t type);
+  // n x columns even for one column: a table with a column per object keeps its shape
+  // when there is one object, so readers can index [:, i] alike.
+  static Series create_table(hid_t group, const std::string& name, hsize_t columns, hid_t type);
   static Series open(hid_t group, const std::string& name);
 
   // Adds one row of `columns()` values.
@@ -36,13 +41,14 @@ class Series {
   const std::string& path() const { return path_; }
 
  private:
-  Series(Handle dataset, std::string path, hsize_t rows, hsize_t columns);
+  Series(Handle dataset, std::string path, hsize_t rows, hsize_t columns, int rank);
   void append_raw(const void* row, hid_t type);
 
   Handle dataset_;
   std::string path_;
   hsize_t rows_ = 0;
   hsize_t columns_ = 1;
+  int rank_ = 1;
 };
 
 }  // namespace cosim::output

@@ -95,10 +95,10 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
     // A dataset needs at least one column: with no objects the tallies are not written.
     if (m.objects > 0) {
       for (const char* name : {"hits", "absorbed", "entered", "left", "released"})
-        m.tallies.push_back(Series::create(objects.get(), name, m.objects, H5T_NATIVE_UINT64));
-      m.tallies.push_back(Series::create(objects.get(), "impulse", 3 * m.objects, H5T_NATIVE_DOUBLE));
-      m.tallies.push_back(Series::create(objects.get(), "angular_impulse", 3 * m.objects, H5T_NATIVE_DOUBLE));
-      m.tallies.push_back(Series::create(objects.get(), "energy", m.objects, H5T_NATIVE_DOUBLE));
+        m.tallies.push_back(Series::create_table(objects.get(), name, m.objects, H5T_NATIVE_UINT64));
+      m.tallies.push_back(Series::create_table(objects.get(), "impulse", 3 * m.objects, H5T_NATIVE_DOUBLE));
+      m.tallies.push_back(Series::create_table(objects.get(), "angular_impulse", 3 * m.objects, H5T_NATIVE_DOUBLE));
+      m.tallies.push_back(Series::create_table(objects.get(), "energy", m.objects, H5T_NATIVE_DOUBLE));
     }
     Handle patches = output::create_group(series.get(), "patches");
     output::write_attribute(patches.get(), "names", mesh.patches);
@@ -106,9 +106,9 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
       const std::vector<double> area = patch_areas(mesh);
       output::write_array(patches.get(), "area", {area.size()}, area.data());
       for (const char* name : {"hits", "absorbed"})
-        m.patch_tallies.push_back(Series::create(patches.get(), name, m.patches, H5T_NATIVE_UINT64));
-      m.patch_tallies.push_back(Series::create(patches.get(), "impulse", 3 * m.patches, H5T_NATIVE_DOUBLE));
-      m.patch_tallies.push_back(Series::create(patches.get(), "energy", m.patches, H5T_NATIVE_DOUBLE));
+        m.patch_tallies.push_back(Series::create_table(patches.get(), name, m.patches, H5T_NATIVE_UINT64));
+      m.patch_tallies.push_back(Series::create_table(patches.get(), "impulse", 3 * m.patches, H5T_NATIVE_DOUBLE));
+      m.patch_tallies.push_back(Series::create_table(patches.get(), "energy", m.patches, H5T_NATIVE_DOUBLE));
     }
     output::flush(file);
   });

@@ -28,6 +28,7 @@
 //                             patches), energy (rows x patches): as for objects, what the
 //                             particles gave each patch's walls since the start. The shear
 //                             stress on a patch: impulse x mass x weight / (area x time)
+// Object and patch tables are 2-d even for one object or patch, so [:, i] reads column i.
 // The sidecar <file>.xmf is rewritten after every write, once the file is flushed.
 #pragma once
 

@@ -144,6 +144,15 @@ TEST(TrackerStandalone, OpenOutflowAndAnAbsorbingObstacleRemoveParticles) {
   EXPECT_GT(run.absorbed.back(), 50);  // the ball's shadow: about its cross-section's share
   EXPECT_EQ(run.absorbed.back(), run.hits.back());
   EXPECT_LT(run.absorbed.back(), run.column("removed"));  // the rest left through x_max
+
+  // One object and six patches: tables of rows x objects (patches) all the same, so that
+  // [:, i] reads a column whatever the count.
+  output::Handle file(H5Fopen(out("outflow.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open");
+  const std::vector<hsize_t> rows_by_one{run.particles.size(), 1}, rows_by_three{run.particles.size(), 3};
+  for (const char* name : {"hits", "absorbed", "entered", "left", "released", "energy"})
+    EXPECT_EQ(output::array_dims(file.get(), std::string("/tracker/objects/") + name), rows_by_one) << name;
+  EXPECT_EQ(output::array_dims(file.get(), "/tracker/objects/impulse"), rows_by_three);
+  EXPECT_EQ(output::array_dims(file.get(), "/tracker/patches/hits").size(), 2u);
 }
 
 // Guards against: the program losing particles on periodic faces of a tetrahedral box.
