@@ -6,7 +6,7 @@
 #include "tracker/dsmc/species.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/program/collide.hpp"
-#include "tracker/program/seeding.hpp"
+#include "tracker/program/seed_particles.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -63,7 +63,7 @@ SphereResult run_sphere(const SphereBox& box, const SphereDeck& deck) {
                        .drift = kStreamVelocity,
                        .mass = box.mass,
                        .weight = SphereDeck::kWeight};
-  Swarm swarm = seed_particles(box.mesh, box.sphere, stream, random);
+  Swarm swarm = seed_particles(box.mesh, box.sphere, stream, Decomposition(box.mesh, {}));
   CellCollider collider(box.mesh, box.collisions, SphereDeck::kTemperature, SphereDeck::kWeight, 7);
   SphereResult result;
   result.seeded = static_cast<long long>(swarm.size());

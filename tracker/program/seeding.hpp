@@ -9,17 +9,14 @@
 //     weight: 1e10           # optional: real molecules per simulator (fnum), default 1
 //     seed: 1                # optional: of every random draw of the run
 //
-// Positions are uniform in each cell (rejection in the cell's bounding box against its
-// planes) and outside every wall obstacle: with per_cell a draw inside a wall is dropped
-// (the cell keeps the density of the free gas), with total it is drawn again. Over several
-// ranks every rank seeds the whole gas and keeps its own cells' particles (Simulation).
+// How the particles are drawn from these: seed_particles.hpp.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "scene/reader.hpp"
-#include "tracker/tracking/swarm.hpp"
+#include "tracker/tracking/particle.hpp"
 
 namespace cosim::tracker {
 
@@ -34,7 +31,5 @@ struct Seeding {
 };
 
 Seeding read_seeding(const scene::Reader& particles);
-
-Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, Random& random);
 
 }  // namespace cosim::tracker

@@ -99,8 +99,8 @@ std::vector<Tally> summed(std::vector<Tally> tallies, const Ranks& ranks) {
   return tallies;
 }
 
-// Rank 0 draws what a one-rank run draws; another rank has streams of its own after the
-// seeding, none of them its windows' (the seed sequences differ in length).
+// Rank 0 draws what a one-rank run draws; another rank has a stream of its own, none of
+// them its windows' (the seed sequences differ in length).
 Random first_random(std::uint64_t seed, int rank) {
   if (rank == 0) return Random(seed);
   std::seed_seq own{seed, static_cast<std::uint64_t>(rank), std::uint64_t{0}, std::uint64_t{0}};
@@ -130,19 +130,13 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
       velocity_(setup_.tracers ? setup_.tracers->velocity : std::nullopt),
       seed_(setup_.particles.seed),
       decomposition_(*setup_.mesh, ranks),
-      random_(seed_),
-      // Every rank seeds the whole gas as one rank does and keeps its cells' particles: the
-      // start is the same for any rank count, and a rank whose cells are partly inside walls
-      // is not filled denser than the rest.
-      swarm_(seed_particles(*setup_.mesh, setup_.obstacles, setup_.particles, random_)),
+      random_(first_random(seed_, ranks.rank())),
+      swarm_(seed_particles(*setup_.mesh, setup_.obstacles, setup_.particles, decomposition_)),
       sampler_(*setup_.mesh),
       tallies_(static_cast<std::size_t>(setup_.obstacles.count())),
       patch_tallies_(setup_.domain->boundaries.patches.size()) {
-  if (ranks.size() > 1) {
-    swarm_.remove_if([&](std::size_t i) { return !decomposition_.owns(swarm_.cell(i)); });
+  if (ranks.size() > 1)
     for (Inflow& inflow : setup_.inflows) inflow.keep_faces_of([&](Index cell) { return decomposition_.owns(cell); });
-    if (ranks.rank() != 0) random_ = first_random(seed_, ranks.rank());
-  }
   seeded_ = swarm_.size();
   if (setup_.collisions) {
     // The first (sigma g)_max per cell: at the hottest temperature the scene gives.

@@ -18,6 +18,7 @@
 #include "scene/scene.hpp"
 #include "tracker/program/collide.hpp"
 #include "tracker/program/scene_tracker.hpp"
+#include "tracker/program/seed_particles.hpp"
 #include "tracker/parallel/decomposition.hpp"
 #include "tracker/tracking/sampling.hpp"
 
@@ -28,8 +29,8 @@ class Simulation {
   // Reads the scene's tracker section (scene::SceneError if it is bad) and seeds the
   // particles with the scene's seed, around the obstacles bound to bodies at `body_poses`
   // (one per scene body, world from body frame) or, if none are given, where the scene
-  // puts the bodies. Collective over `ranks`: each rank seeds the cells it owns, from its
-  // own random stream (rank 0's is a one-rank run's).
+  // puts the bodies. Collective over `ranks`: each rank seeds the cells it owns, with the
+  // particles a one-rank run has there (seed_particles.hpp).
   explicit Simulation(const scene::Scene& scene, const std::vector<Eigen::Isometry3d>& body_poses = {},
                       Ranks ranks = {});
 

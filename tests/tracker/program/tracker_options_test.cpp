@@ -1,6 +1,5 @@
 // The tracker's own options (walls, obstacles, particles): every mistake names file, line,
-// key and value, a good section reads into the conditions the tracking uses, and the seeded
-// particles are where and as fast as the section says.
+// key and value, and a good section reads into the conditions the tracking uses.
 #include <gtest/gtest.h>
 
 #include "scene/error.hpp"
@@ -125,32 +124,6 @@ TEST(TrackerOptions, ParticleMistakesNameTheKey) {
   EXPECT_ERROR(walls + "      particles: {total: 9, temperature: 1, mass: 1, colour: red}\n",
                "particles.colour = red: unknown key");
   EXPECT_ERROR(walls + kParticles + "      velocity: 3\n", "options.velocity = 3: unknown key");
-}
-
-TEST(Seeding, UniformInTheCellsOutsideTheWallsWithAMaxwellian) {
-  // mass = k_B: the velocity variance per component is T.
-  const TrackerScene t = read_tracker(scene_with(
-      "      boundaries: {default: {kind: specular}}\n"
-      "      obstacles:\n        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.4}}}\n"
-      "      particles: {total: 20000, temperature: 4, drift: [1, 0, -2], mass: 1.380649e-23, seed: 5}\n"));
-  Random random(t.particles.seed);
-  const Swarm swarm = seed_particles(*t.mesh, t.obstacles, t.particles, random);
-  ASSERT_EQ(swarm.size(), 20000u);
-  ASSERT_EQ(swarm.objects(), 1);
-  Vec3 mean = Vec3::Zero(), square = Vec3::Zero();
-  int octant0 = 0;
-  for (std::size_t i = 0; i < swarm.size(); ++i) {
-    const Particle p = swarm.particle(i);
-    EXPECT_TRUE(contains(*t.mesh, p.cell, p.x));
-    EXPECT_GT((p.x - Vec3(0.5, 0.5, 0.5)).norm(), 0.4);
-    mean += p.v / 20000.0;
-    square += p.v.cwiseProduct(p.v) / 20000.0;
-    octant0 += p.cell == 0;
-  }
-  const Vec3 variance = square - mean.cwiseProduct(mean);
-  EXPECT_LT((mean - Vec3(1, 0, -2)).norm(), 0.05);  // 3 sigma: 3 * 2 / sqrt(20000)
-  for (int a = 0; a < 3; ++a) EXPECT_NEAR(variance[a], 4.0, 0.15);
-  EXPECT_NEAR(octant0, 20000 / 8, 150);  // the ball is symmetric: each cell an eighth
 }
 
 }  // namespace

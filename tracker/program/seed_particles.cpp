@@ -1,0 +1,117 @@
+#include "tracker/program/seed_particles.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "tracker/dsmc/random.hpp"
+#include "tracker/mesh/geometry.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+// Bounding-box draws before giving up on a sliver of a cell (then its centroid is taken):
+// even a Kuhn tetrahedron fills 1/6 of its box.
+constexpr int kTries = 1000;
+
+enum class Drawn : std::uint64_t { range_share = 0, cell_particles = 1 };
+
+// pcg64 keeps 127 bits of a stream number (the top bit is lost to the increment's low one):
+// the round above bit 65, what is drawn at bit 64, the key (a cell, or a range a << 32 | b
+// of 31-bit cell indices) below.
+dsmc::Rng keyed(std::uint64_t seed, std::uint64_t round, Drawn what, std::uint64_t key) {
+  using Stream = pcg_extras::pcg128_t;
+  return dsmc::Rng(seed, Stream(round) << 65 | Stream(static_cast<std::uint64_t>(what)) << 64 | Stream(key));
+}
+
+class Seeder {
+ public:
+  Seeder(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells)
+      : mesh_(mesh), obstacles_(obstacles), seeding_(seeding), states_(static_cast<std::size_t>(obstacles.count())),
+        sigma_(std::sqrt(boltzmann * seeding.temperature / seeding.mass)), swarm_(obstacles.count()) {
+    for (Index c = 0; c < mesh.cell_count(); ++c)
+      if (cells.owns(c)) owned_.push_back(c);
+  }
+
+  Swarm per_cell() {
+    for (Index c : owned_) draw(c, seeding_.per_cell, 0);
+    return std::move(swarm_);
+  }
+
+  Swarm total(const Ranks& ranks) {
+    prefix_volume_.assign(1, 0.0);
+    for (double v : mesh_.volume) prefix_volume_.push_back(prefix_volume_.back() + v);
+    long long wanted = seeding_.total, drawn = 0;
+    for (std::uint64_t round = 0; wanted > 0; ++round) {
+      drawn += wanted;
+      wanted -= ranks.sum(split(0, mesh_.cell_count(), wanted, round));
+      if (wanted > 0 && drawn > kTries * (static_cast<long long>(seeding_.total) + 1))
+        throw std::runtime_error("particles: the walls leave (almost) no free space to seed in");
+    }
+    return std::move(swarm_);
+  }
+
+ private:
+  // Splits n draws over the cells [a, b) by volume and draws this rank's; returns how many
+  // of those are free.
+  long long split(Index a, Index b, long long n, std::uint64_t round) {
+    const auto first = std::lower_bound(owned_.begin(), owned_.end(), a);
+    if (n == 0 || first == owned_.end() || *first >= b) return 0;
+    if (b - a == 1) return draw(a, n, round);
+    const Index m = a + (b - a) / 2;
+    const std::size_t ua = static_cast<std::size_t>(a), um = static_cast<std::size_t>(m),
+                      ub = static_cast<std::size_t>(b);
+    // Monotone prefix sums: the share is in [0, 1] despite round-off.
+    const double share = (prefix_volume_[um] - prefix_volume_[ua]) / (prefix_volume_[ub] - prefix_volume_[ua]);
+    dsmc::Rng rng = keyed(seeding_.seed, round, Drawn::range_share,
+                          static_cast<std::uint64_t>(a) << 32 | static_cast<std::uint64_t>(b));
+    const long long low = std::binomial_distribution<long long>(n, share)(rng);
+    return split(a, m, low, round) + split(m, b, n - low, round);
+  }
+
+  // n uniform draws in the cell; adds those outside every wall, with Maxwellian velocities.
+  long long draw(Index cell, long long n, std::uint64_t round) {
+    dsmc::Rng rng = keyed(seeding_.seed, round, Drawn::cell_particles, static_cast<std::uint64_t>(cell));
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    // normal_distribution needs a positive deviation: a cold gas draws no thermal part.
+    std::normal_distribution<double> gauss(0.0, sigma_ > 0 ? sigma_ : 1.0);
+    const Eigen::AlignedBox3d box = cell_box(mesh_, cell);
+    long long kept = 0;
+    for (long long i = 0; i < n; ++i) {
+      Vec3 x = mesh_.centroid[cell];
+      for (int t = 0; t < kTries; ++t) {
+        Vec3 y;
+        for (int a = 0; a < 3; ++a) y[a] = box.min()[a] + unit(rng) * (box.max()[a] - box.min()[a]);
+        if (contains(mesh_, cell, y)) {
+          x = y;
+          break;
+        }
+      }
+      obstacles_.classify(cell, x, states_);
+      if (obstacles_.inside_wall(cell, states_)) continue;
+      const Vec3 thermal = sigma_ > 0 ? Vec3(gauss(rng), gauss(rng), gauss(rng)) : Vec3::Zero();
+      swarm_.add({x, seeding_.drift + thermal, cell}, states_);
+      ++kept;
+    }
+    return kept;
+  }
+
+  const Mesh& mesh_;
+  const Obstacles& obstacles_;
+  const Seeding& seeding_;
+  std::vector<Index> owned_;  // ascending
+  std::vector<double> prefix_volume_;  // of the cells before each index
+  std::vector<csg::State> states_;
+  double sigma_;
+  Swarm swarm_;
+};
+
+}  // namespace
+
+Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells) {
+  Seeder seeder(mesh, obstacles, seeding, cells);
+  return seeding.per_cell > 0 ? seeder.per_cell() : seeder.total(cells.ranks());
+}
+
+}  // namespace cosim::tracker

@@ -1,0 +1,27 @@
+// The initial gas of a scene (Seeding, seeding.hpp), the same for any number of ranks: each
+// random number comes from a pcg64 stream keyed by what it decides (one cell's positions and
+// velocities; one range of cells' share of a count), not from one sequence that every rank
+// would have to run through in full. A rank draws only its own cells' particles, and 1 and
+// N ranks start from identical particles (in each cell, in the same order).
+//
+// per_cell: that many draws in every cell, uniform in the cell (rejection in its bounding
+// box against its planes); a draw inside a wall obstacle is dropped, so a cell keeps the
+// density of the free gas.
+// total: exactly `total` particles, uniform over the free space, in rounds: the round's count
+// is split over the cells by volume (a multinomial, as nested binomial splits of ranges of
+// cell indices), each cell draws its share and drops draws inside walls, and the next round
+// draws as many again as all ranks dropped. That is rejection sampling of the free space, so
+// the result is exact in distribution; every rank takes part in every round (collective).
+#pragma once
+
+#include "tracker/parallel/decomposition.hpp"
+#include "tracker/program/seeding.hpp"
+#include "tracker/tracking/obstacles.hpp"
+
+namespace cosim::tracker {
+
+// The particles of the cells `cells` gives this rank (collective over its ranks). Throws
+// std::runtime_error when the walls leave (almost) no free space to seed `total` in.
+Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells);
+
+}  // namespace cosim::tracker
