@@ -29,6 +29,6 @@ Decomposition::Decomposition(const Mesh& mesh, Ranks ranks)
   MPI_Bcast(owner_.data(), static_cast<int>(owner_.size()), MPI_INT, 0, ranks_.comm());
 }
 
-std::size_t Decomposition::migrate(Swarm& swarm) const { return tracker::migrate(swarm, owner_, ranks_); }
+std::size_t Decomposition::migrate(Swarm& swarm) { return tracker::migrate(swarm, owner_, ranks_, migrations_++); }
 
 }  // namespace cosim::tracker

@@ -4,6 +4,7 @@
 // own cells between steps.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -23,11 +24,12 @@ class Decomposition {
   bool owns(Index cell) const { return owner(cell) == ranks_.rank(); }
   // Collective: sends the swarm's particles in other ranks' cells there (migration.hpp);
   // returns how many left this rank.
-  std::size_t migrate(Swarm& swarm) const;
+  std::size_t migrate(Swarm& swarm);
 
  private:
   Ranks ranks_;
   std::vector<int> owner_;
+  std::uint64_t migrations_ = 0;
 };
 
 }  // namespace cosim::tracker

@@ -1,6 +1,7 @@
 #include "tracker/parallel/migration.hpp"
 
 #include <climits>
+#include <map>
 #include <cstring>
 #include <stdexcept>
 #include <vector>
@@ -15,6 +16,9 @@ struct Record {
   Index cell;
 };
 static_assert(sizeof(Record) == 40);
+
+// Two tags, alternating with the round: ranks are at most one migration apart.
+constexpr int kMigrationTags[2] = {7301, 7302};
 
 int bytes_count(std::size_t n) {
   if (n > static_cast<std::size_t>(INT_MAX))
@@ -50,43 +54,58 @@ void unpack(std::span<const std::byte> records, Swarm& swarm) {
   }
 }
 
-std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks) {
+std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks, std::uint64_t round) {
   if (ranks.size() == 1) return 0;
-  const auto n = static_cast<std::size_t>(ranks.size());
   const int me = ranks.rank();
   const std::size_t size = record_bytes(swarm.objects());
   const auto owner_of = [&](std::size_t i) { return owner[static_cast<std::size_t>(swarm.cell(i))]; };
 
-  std::vector<std::size_t> leaving(n, 0);
-  for (std::size_t i = 0; i < swarm.size(); ++i) ++leaving[static_cast<std::size_t>(owner_of(i))];
-  leaving[static_cast<std::size_t>(me)] = 0;
-  std::vector<int> send_bytes(n), send_at(n), receive_bytes(n), receive_at(n);
-  std::size_t total = 0;
-  for (std::size_t r = 0; r < n; ++r) {
-    send_at[r] = bytes_count(total);
-    send_bytes[r] = bytes_count(leaving[r] * size);
-    total += leaving[r] * size;
-  }
-  std::vector<std::byte> out(total);
-  std::vector<std::size_t> filled(send_at.begin(), send_at.end());
+  // One buffer per rank sent to, in rank order.
+  std::map<int, std::vector<std::byte>> out;
+  std::size_t left = 0;
   for (std::size_t i = 0; i < swarm.size(); ++i)
-    if (const auto r = static_cast<std::size_t>(owner_of(i)); r != static_cast<std::size_t>(me)) {
-      pack(swarm, i, std::span(out).subspan(filled[r], size));
-      filled[r] += size;
+    if (const int r = owner_of(i); r != me) {
+      std::vector<std::byte>& to = out[r];
+      to.resize(to.size() + size);
+      pack(swarm, i, std::span(to).last(size));
+      ++left;
     }
   swarm.remove_if([&](std::size_t i) { return owner_of(i) != me; });
 
-  MPI_Alltoall(send_bytes.data(), 1, MPI_INT, receive_bytes.data(), 1, MPI_INT, ranks.comm());
-  std::size_t received = 0;
-  for (std::size_t r = 0; r < n; ++r) {
-    receive_at[r] = bytes_count(received);
-    received += static_cast<std::size_t>(receive_bytes[r]);
+  // NBX: synchronous sends complete only once received; a rank whose sends are all received
+  // enters a non-blocking barrier and keeps receiving until every rank is in it.
+  const int tag = kMigrationTags[round % 2];
+  std::vector<MPI_Request> sends;
+  for (auto& [rank, bytes] : out) {
+    sends.emplace_back();
+    MPI_Issend(bytes.data(), bytes_count(bytes.size()), MPI_BYTE, rank, tag, ranks.comm(), &sends.back());
   }
-  std::vector<std::byte> in(received);
-  MPI_Alltoallv(out.data(), send_bytes.data(), send_at.data(), MPI_BYTE, in.data(), receive_bytes.data(),
-                receive_at.data(), MPI_BYTE, ranks.comm());
-  unpack(in, swarm);
-  return total / size;
+  MPI_Request barrier = MPI_REQUEST_NULL;
+  std::vector<std::byte> in;
+  for (bool sent = false;;) {
+    int arrived = 0;
+    MPI_Status status;
+    MPI_Iprobe(MPI_ANY_SOURCE, tag, ranks.comm(), &arrived, &status);
+    if (arrived) {
+      int bytes = 0;
+      MPI_Get_count(&status, MPI_BYTE, &bytes);
+      in.resize(static_cast<std::size_t>(bytes));
+      MPI_Recv(in.data(), bytes, MPI_BYTE, status.MPI_SOURCE, tag, ranks.comm(), MPI_STATUS_IGNORE);
+      unpack(in, swarm);
+    }
+    int done = 0;
+    if (!sent) {
+      MPI_Testall(static_cast<int>(sends.size()), sends.data(), &done, MPI_STATUSES_IGNORE);
+      if (done) {
+        MPI_Ibarrier(ranks.comm(), &barrier);
+        sent = true;
+      }
+    } else {
+      MPI_Test(&barrier, &done, MPI_STATUS_IGNORE);
+      if (done) break;
+    }
+  }
+  return left;
 }
 
 }  // namespace cosim::tracker

@@ -1,9 +1,13 @@
 // Particles that crossed into another rank's cells go to that rank: each as one record of
-// bytes (its stored 40 bytes, then its logical state per obstacle), all of a step's in one
-// MPI_Alltoallv.
+// bytes (its stored 40 bytes, then its logical state per obstacle), all of a step's for one
+// rank in one message. Only ranks that exchange particles talk (mostly the owners of
+// neighbouring cells): a sparse exchange by the NBX protocol (Hoefler, Siebert & Lumsdaine,
+// "Scalable communication protocols for dynamic sparse data exchange", PPoPP 2010), whose
+// cost does not grow with the rank count as an all-to-all's does.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 
 #include "tracker/parallel/ranks.hpp"
@@ -21,6 +25,9 @@ void unpack(std::span<const std::byte> records, Swarm& swarm);
 
 // Collective: every particle whose cell `owner` gives to another rank leaves the swarm
 // for that rank, and what the others send here is appended. Returns how many left.
-std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks);
+// `round` counts the migrations (any count the ranks agree on): a rank may start the next
+// one before another has seen this one end, and the round's parity keeps their messages
+// apart.
+std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks, std::uint64_t round);
 
 }  // namespace cosim::tracker

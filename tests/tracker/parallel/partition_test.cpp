@@ -102,7 +102,7 @@ TEST(Migration, OneRankKeepsEveryParticle) {
   Swarm swarm(0);
   for (int i = 0; i < 10; ++i) swarm.add({{0, 0, 0}, {1, 0, 0}, i}, {});
   const std::vector<int> owner(10, 0);
-  EXPECT_EQ(migrate(swarm, owner, Ranks()), 0u);
+  EXPECT_EQ(migrate(swarm, owner, Ranks(), 0), 0u);
   EXPECT_EQ(swarm.size(), 10u);
 }
 

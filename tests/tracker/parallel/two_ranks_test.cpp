@@ -48,7 +48,7 @@ TEST(Decomposition, TheSameOnBothRanksAndMetisAnswer) {
 
 TEST(Migration, EveryParticleReachesItsCellsOwnerWithItsStates) {
   const Mesh mesh = box_mesh(cube(6));
-  const Decomposition d(mesh, Ranks(MPI_COMM_WORLD));
+  Decomposition d(mesh, Ranks(MPI_COMM_WORLD));
   // 1000 particles per rank in random cells; states: an id unique over the ranks and its
   // complement, so a record mixed up on the way shows.
   Swarm swarm(2);
