@@ -1,20 +1,13 @@
 #include "output/field_frame.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace cosim::output {
 namespace {
 
 bool control(char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }
-
-// An HDF5 link name ("a/b" would nest, "." is the group itself) that is also an XDMF grid
-// name: XML 1.0 has no way to hold control characters (NUL would end HDF5's C string too).
-bool point_set_name(const std::string& name) {
-  return !name.empty() && name != "." && std::none_of(name.begin(), name.end(), [](char c) {
-    return c == '/' || control(c);
-  });
-}
 
 // Quoted, with control characters shown as '?' so that the message stays one readable line.
 std::string quoted(std::string name) {
@@ -52,7 +45,31 @@ std::string topology_problem(const PolyhedralGrid& g) {
   return {};
 }
 
+// Every integer up to this is a float64, and a float64 beyond it may stand for several.
+constexpr double kExactIntegers = 9007199254740992.0;  // 2^53
+
+std::string attribute_problem(const PointSet& set, const PointAttribute& a) {
+  const std::string what = "attribute " + quoted(a.name) + " of point set " + quoted(set.name);
+  const std::size_t n = set.points.size() / 3;
+  if (a.components < 1) return what + " has " + std::to_string(a.components) + " components";
+  if (a.values.size() != n * static_cast<std::size_t>(a.components))
+    return what + " has " + std::to_string(a.values.size()) + " values for " + std::to_string(n) + " points of " +
+           std::to_string(a.components) + " components";
+  if (a.integer)
+    for (const double v : a.values)
+      if (!(std::abs(v) <= kExactIntegers && v == std::floor(v)))  // NaN fails too
+        return what + " holds " + std::to_string(v) + ", not a whole number within +-2^53";
+  return {};
+}
+
 }  // namespace
+
+bool dataset_name(const std::string& name) {
+  // "a/b" would nest and "." is the group itself; NUL would end HDF5's C string too.
+  return !name.empty() && name != "." && std::none_of(name.begin(), name.end(), [](char c) {
+    return c == '/' || control(c);
+  });
+}
 
 std::size_t cell_count(const Grid& grid) {
   if (const auto* p = std::get_if<PolyhedralGrid>(&grid)) return p->cells;
@@ -70,11 +87,19 @@ std::string grid_problem(const Grid& grid) {
 std::string point_sets_problem(const std::vector<PointSet>& sets) {
   std::set<std::string> seen;
   for (const PointSet& s : sets) {
-    if (!point_set_name(s.name)) return "point set name " + quoted(s.name) + " cannot name an HDF5 dataset";
+    if (!dataset_name(s.name)) return "point set name " + quoted(s.name) + " cannot name an HDF5 dataset";
     if (!seen.insert(s.name).second) return "point set name " + quoted(s.name) + " appears twice";
     if (s.points.size() % 3 != 0)
       return "point set " + quoted(s.name) + " has " + std::to_string(s.points.size()) +
              " coordinates, not x y z triples";
+    std::set<std::string> attributes;
+    for (const PointAttribute& a : s.attributes) {
+      if (!dataset_name(a.name))
+        return "attribute name " + quoted(a.name) + " of point set " + quoted(s.name) + " cannot name an HDF5 dataset";
+      if (!attributes.insert(a.name).second)
+        return "attribute name " + quoted(a.name) + " appears twice in point set " + quoted(s.name);
+      if (std::string problem = attribute_problem(s, a); !problem.empty()) return problem;
+    }
   }
   return {};
 }

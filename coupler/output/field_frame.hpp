@@ -44,12 +44,25 @@ struct CellField {
   std::vector<double> values;
 };
 
-// Points that belong to no cell, e.g. the surface markers of an immersed body: one XDMF
-// grid of Polyvertex topology per set, named after it, in the same time step as the cells.
-// A set may be empty (a body entirely outside the grid).
+// A value per point of a set, e.g. a particle's velocity: n x components values, the
+// components of a point together. `integer` values are whole numbers (cell indices, bit
+// patterns), written as int64; float64 carries them, so they must lie within +-2^53.
+struct PointAttribute {
+  std::string name;
+  int components = 1;
+  std::vector<double> values;
+  bool integer = false;
+};
+
+// Points that belong to no cell, e.g. the surface markers of an immersed body or a sample
+// of the tracker's particles: one XDMF grid of Polyvertex topology per set, named after it,
+// in the same time step as the cells, its attributes node-centred on it. A set may be empty
+// (a body entirely outside the grid).
 struct PointSet {
   std::string name;            // e.g. the body's name
   std::vector<double> points;  // n x 3: x, y, z of a point together
+  // With a default member initializer, sets built as {name, points} need not name it.
+  std::vector<PointAttribute> attributes{};
 };
 
 // A frame without cell fields is none: nothing is written or sent, its point sets neither.
@@ -67,8 +80,13 @@ std::size_t cell_count(const Grid& grid);
 // not `cells` polyhedra of at least 4 faces of at least 3 vertices, all indices among
 // the vertices), or empty if it is.
 std::string grid_problem(const Grid& grid);
-// Why the point sets are not (a name that cannot name an HDF5 dataset or an XDMF grid, or
-// that appears twice; coordinates that are not x y z triples), or empty if they are.
+// Whether `name` can name an HDF5 dataset (no '/', not ".") and an XDMF grid or attribute
+// (no control characters: XML 1.0 cannot hold them), as point sets and their attributes must.
+bool dataset_name(const std::string& name);
+// Why the point sets are not (a set or attribute name that dataset_name() refuses, or that
+// appears twice among the sets or within a set; coordinates that are not x y z triples; an
+// attribute without components, or whose values are not n x components; an integer one
+// with a value that is not a whole number within +-2^53), or empty if they are.
 std::string point_sets_problem(const std::vector<PointSet>& sets);
 
 }  // namespace cosim::output

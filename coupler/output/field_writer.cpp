@@ -20,6 +20,11 @@ std::string step_name(std::uint64_t window) {
   return text;
 }
 
+bool has_attributes(const FieldFrame& frame) {
+  return std::any_of(frame.point_sets.begin(), frame.point_sets.end(),
+                     [](const PointSet& p) { return !p.attributes.empty(); });
+}
+
 void check_frame(const FieldFrame& frame, const std::string& participant) {
   for (const std::string& problem : {grid_problem(frame.grid), point_sets_problem(frame.point_sets)})
     if (!problem.empty()) throw ObjectError("fields of " + participant + ": " + problem);
@@ -31,6 +36,9 @@ void check_frame(const FieldFrame& frame, const std::string& participant) {
     if (f.name == kPointSetGroup && !frame.point_sets.empty())
       throw ObjectError("field " + f.name + " of " + participant +
                         ": the step's group of that name holds the point sets");
+    if (f.name == kPointAttributeGroup && has_attributes(frame))
+      throw ObjectError("field " + f.name + " of " + participant +
+                        ": the step's group of that name holds the point sets' attributes");
   }
 }
 
@@ -67,11 +75,43 @@ void write_grid(hid_t participant_group, const Grid& grid) {
     write_array(group.get(), std::string(1, "xyz"[a]), {nodes[a].size()}, nodes[a].data());
 }
 
-// The point sets of a step already in the file, in name order.
+// The set's attributes beside its points: (n) for one component, (n, c) for c, int64 if integer.
+void write_point_attributes(hid_t group, const PointSet& p, XdmfPointSet& entry) {
+  if (p.attributes.empty()) return;
+  Handle set = create_group(group, p.name);
+  const hsize_t n = p.points.size() / 3;
+  for (const PointAttribute& a : p.attributes) {
+    std::vector<hsize_t> dims{n};
+    if (a.components > 1) dims.push_back(static_cast<hsize_t>(a.components));
+    if (a.integer) {
+      // Exact: point_sets_problem() has bounded them by 2^53.
+      const std::vector<std::int64_t> whole(a.values.begin(), a.values.end());
+      write_array(set.get(), a.name, dims, whole.data());
+    } else {
+      write_array(set.get(), a.name, dims, a.values.data());
+    }
+    entry.attributes.push_back({a.name, a.components, a.integer});
+  }
+}
+
+// The point sets of a step already in the file, in name order, their attributes too.
 std::vector<XdmfPointSet> stored_point_sets(hid_t step) {
   std::vector<XdmfPointSet> sets;
   Handle points = open_group(step, kPointSetGroup);
-  for (const std::string& name : link_names(points.get())) sets.push_back({name, array_dims(points.get(), name).at(0)});
+  // Without attributes the name may be a cell field's.
+  const bool attributes = has_link(step, kPointAttributeGroup) && is_group(step, kPointAttributeGroup);
+  Handle all = attributes ? open_group(step, kPointAttributeGroup) : Handle();
+  for (const std::string& name : link_names(points.get())) {
+    XdmfPointSet set{name, array_dims(points.get(), name).at(0)};
+    if (attributes && has_link(all.get(), name)) {
+      Handle group = open_group(all.get(), name);
+      for (const std::string& a : link_names(group.get())) {
+        const auto dims = array_dims(group.get(), a);
+        set.attributes.push_back({a, dims.size() > 1 ? static_cast<int>(dims[1]) : 1, integer_array(group.get(), a)});
+      }
+    }
+    sets.push_back(std::move(set));
+  }
   return sets;
 }
 
@@ -116,9 +156,11 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
   }
   if (!frame.point_sets.empty()) {
     Handle points = create_group(step.get(), kPointSetGroup);
+    Handle attributes = has_attributes(frame) ? create_group(step.get(), kPointAttributeGroup) : Handle();
     for (const PointSet& p : frame.point_sets) {
       write_array(points.get(), p.name, {p.points.size() / 3, 3}, p.points.data());
       entry.point_sets.push_back({p.name, p.points.size() / 3});
+      write_point_attributes(attributes.get(), p, entry.point_sets.back());
     }
   }
   series.steps.push_back(std::move(entry));
@@ -143,11 +185,12 @@ void FieldWriter::resume(hid_t file, std::uint64_t next_window) {
       Handle step = open_group(group.get(), name);
       XdmfStep entry{"/fields/" + participant + "/" + name, read_attribute<double>(step.get(), "time"), {}};
       for (const std::string& field : link_names(step.get())) {
-        // A cell field may have the group's name in a step without point sets.
+        // A cell field may have a group's name in a step without point sets (or attributes).
         if (field == kPointSetGroup && is_group(step.get(), field)) {
           entry.point_sets = stored_point_sets(step.get());
           continue;
         }
+        if (field == kPointAttributeGroup && is_group(step.get(), field)) continue;  // read with the sets
         const auto dims = array_dims(step.get(), field);
         entry.fields.push_back({field, dims.size() > scalar_rank ? static_cast<int>(dims.back()) : 1});
       }

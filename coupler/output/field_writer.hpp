@@ -21,14 +21,16 @@ class FieldWriter {
 
   // Writes the grid (first call per participant: /fields/<participant>/grid, layout in
   // run_file.hpp) and the step group /fields/<participant>/<window, 6+ digits>/<field> with
-  // attr time, and points/<set> for each point set. Throws ObjectError for a frame whose
-  // sizes do not add up (grid_problem()), whose point sets are not (point_sets_problem()),
-  // that has point sets beside a cell field named "points", or whose grid is not the first
-  // one's kind and size.
+  // attr time, points/<set> for each point set and point_attributes/<set>/<attribute> for
+  // each of its attributes. Throws ObjectError for a frame whose sizes do not add up
+  // (grid_problem()), whose point sets are not (point_sets_problem()), that has point sets
+  // beside a cell field named "points" (attributes beside one named "point_attributes"), or
+  // whose grid is not the first one's kind and size.
   void write(hid_t file, const std::string& participant, std::uint64_t window, double time,
              const FieldFrame& frame);
   // For --resume from window `next_window`: unlinks the steps after it (their point sets
-  // with them), which the resumed run writes again, and takes those up to it into the sidecar.
+  // and attributes with them), which the resumed run writes again, and takes those up to it
+  // into the sidecar.
   void resume(hid_t file, std::uint64_t next_window);
   // Rewrites the sidecar for every step written so far: call it once the file is flushed,
   // so it never names a dataset that is not on disk.

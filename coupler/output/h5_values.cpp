@@ -222,6 +222,13 @@ std::vector<hsize_t> array_dims(hid_t group, const std::string& name) {
   return dims;
 }
 
+bool integer_array(hid_t group, const std::string& name) {
+  const std::string where = dataset_where(group, name);
+  Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
+  Handle type(H5Dget_type(ds.get()), H5Tclose, "type of " + where);
+  return H5Tget_class(type.get()) == H5T_INTEGER;
+}
+
 std::vector<double> read_array(hid_t group, const std::string& name) {
   std::size_t size = 1;
   for (hsize_t d : array_dims(group, name)) size *= d;

@@ -42,6 +42,8 @@ void write_array(hid_t group, const std::string& name, const std::vector<hsize_t
 
 // The shape of a dataset, as write_array() was given it.
 std::vector<hsize_t> array_dims(hid_t group, const std::string& name);
+// Whether a dataset holds integers (written by the int64 write_array()).
+bool integer_array(hid_t group, const std::string& name);
 // All its values as doubles, row-major.
 std::vector<double> read_array(hid_t group, const std::string& name);
 

@@ -31,8 +31,13 @@
 //                        velocity (3), temperature and pressure on its polyhedra
 //   /fields/<participant>/<window>/points/<set>  (n x 3) the x, y, z of each of the
 //                        frame's point sets (field_frame.hpp), e.g. an immersed body's
-//                        surface markers; (0 x 3) for a set without points; no group for a
-//                        frame without sets
+//                        surface markers or the tracker's particles; (0 x 3) for a set
+//                        without points; no group for a frame without sets
+//   /fields/<participant>/<window>/point_attributes/<set>/<attribute>  (n) for one
+//                        component, (n x c) for c: a value per point of the set, in the
+//                        order of points/<set> (float64, or int64 for whole numbers such as
+//                        cell indices); a group only for sets that have attributes, none for
+//                        a frame without
 //   /checkpoint/         attr current ("a" or "b", fixed-length ASCII): the slot holding the
 //                        checkpoint; absent until the first checkpoint is complete
 //   /checkpoint/{a,b}/   attrs window (last committed window index + 1 = next window),
@@ -55,7 +60,8 @@
 // could not open ("addr overflow").
 // Fields come with a sidecar <file>.xmf (XDMF 3: one temporal collection of 3DRectMesh or
 // Mixed grids per participant, referencing the datasets by the run file's name; with point
-// sets, each step a spatial collection of that grid and a Polyvertex grid per set, xdmf.hpp)
+// sets, each step a spatial collection of that grid and a Polyvertex grid per set with its
+// attributes node-centred, xdmf.hpp)
 // that ParaView opens (with its "XDMF Reader (Xdmf3ReaderS)" once a grid is polyhedral); it
 // is rewritten, by rename, after every field write once the file is flushed.
 // The file's descriptor is close-on-exec: participants forked while it is open must not

@@ -39,21 +39,30 @@ std::string write_grid(std::ostream& out, const std::string& h5_file, const Xdmf
   return std::to_string(n[2]) + " " + std::to_string(n[1]) + " " + std::to_string(n[0]);
 }
 
+// XDMF's types by component count: ParaView takes a Vector for 3 components only.
+const char* attribute_type(int components) {
+  return components == 1 ? "Scalar" : components == 3 ? "Vector" : "Matrix";
+}
+
+// An Attribute of `count` (cells or points) rows at `center`, indented by `pad`.
+void write_attribute(std::ostream& out, const std::string& h5_file, const XdmfField& f, const std::string& center,
+                     const std::string& count, const std::string& dataset, const std::string& pad) {
+  out << pad << "<Attribute Name=\"" << xml_escaped(f.name) << "\" AttributeType=\"" << attribute_type(f.components)
+      << "\" Center=\"" << center << "\">\n";
+  data_item(out, f.components > 1 ? count + " " + std::to_string(f.components) : count, h5_file, dataset, pad + "  ",
+            f.integer ? "Int" : "Float");
+  out << pad << "</Attribute>\n";
+}
+
 // The children of the step's cell grid, indented by `pad`: the grid and the step's cell fields.
 void write_cells(std::ostream& out, const std::string& h5_file, const XdmfSeries& s, const XdmfStep& step,
                  const std::string& pad) {
   const std::string cells = write_grid(out, h5_file, s, pad);
-  for (const XdmfField& f : step.fields) {
-    const bool vector = f.components > 1;
-    out << pad << "<Attribute Name=\"" << xml_escaped(f.name) << "\" AttributeType=\"" << (vector ? "Vector" : "Scalar")
-        << "\" Center=\"Cell\">\n";
-    data_item(out, vector ? cells + " " + std::to_string(f.components) : cells, h5_file, step.group + "/" + f.name,
-              pad + "  ");
-    out << pad << "</Attribute>\n";
-  }
+  for (const XdmfField& f : step.fields)
+    write_attribute(out, h5_file, f, "Cell", cells, step.group + "/" + f.name, pad);
 }
 
-// The set's Polyvertex grid, indented by `pad`.
+// The set's Polyvertex grid with its attributes, indented by `pad`.
 void write_point_set(std::ostream& out, const std::string& h5_file, const XdmfStep& step, const XdmfPointSet& p,
                      const std::string& pad) {
   const std::string n = std::to_string(p.points);
@@ -61,7 +70,10 @@ void write_point_set(std::ostream& out, const std::string& h5_file, const XdmfSt
       << pad << "  <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\"/>\n"
       << pad << "  <Geometry GeometryType=\"XYZ\">\n";
   data_item(out, n + " 3", h5_file, step.group + "/" + kPointSetGroup + "/" + p.name, pad + "    ");
-  out << pad << "  </Geometry>\n" << pad << "</Grid>\n";
+  out << pad << "  </Geometry>\n";
+  const std::string attributes = step.group + "/" + kPointAttributeGroup + "/" + p.name + "/";
+  for (const XdmfField& a : p.attributes) write_attribute(out, h5_file, a, "Node", n, attributes + a.name, pad + "  ");
+  out << pad << "</Grid>\n";
 }
 
 void write_step(std::ostream& out, const std::string& h5_file, const XdmfSeries& s, const XdmfStep& step,

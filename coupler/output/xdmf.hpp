@@ -12,15 +12,20 @@ namespace cosim::output {
 
 struct XdmfField {
   std::string name;
-  int components = 1;  // 1: a scalar, 3: a vector
+  int components = 1;    // 1: a scalar, 3: a vector, any other number a matrix of that many columns
+  bool integer = false;  // an int64 dataset (point attributes only)
 };
 
 // The group of a step that holds its point sets, one (points x 3) dataset per set.
 inline constexpr char kPointSetGroup[] = "points";
+// The group of a step that holds its sets' attributes: a group per set that has any, and
+// in it a dataset per attribute, (points) or (points, components).
+inline constexpr char kPointAttributeGroup[] = "point_attributes";
 
 struct XdmfPointSet {
   std::string name;
   std::size_t points = 0;
+  std::vector<XdmfField> attributes{};  // in group/point_attributes/<name>
 };
 
 struct XdmfStep {
@@ -45,7 +50,8 @@ struct XdmfPolyhedra {
 // ParaView's Xdmf2 reader takes the first step's kind for all; without, a step is the
 // cells' grid alone. A set without points is left out: that reader fails on an empty
 // DataItem (the dataset is in the file all the same). That reader makes a vertex cell of
-// each point; the Xdmf3 readers give the points alone, without cells.
+// each point; the Xdmf3 readers give the points alone, without cells. A set's attributes
+// are Attributes with Center="Node" on its grid, integer ones of NumberType "Int".
 struct XdmfSeries {
   std::string name;
   std::string grid_group;

@@ -5,7 +5,8 @@
 // (output::PolyhedralGrid) as float64, exact as its entries are below 2^53. Then per field
 // a Text with its name and a Field of cells x components; the cell count of a polyhedral
 // grid is not sent apart, it is the fields' rows. Then the frame's point sets, if it has
-// any, in three arrays (point_set_arrays.hpp), the last one tagged Points.
+// any, in three arrays (point_set_arrays.hpp), the last one tagged Points, and their
+// attributes, if any, in three more, the last one tagged PointAttributes.
 // An Advance to a participant that needs fields carries the same arrays after its inputs
 // (Poses and Forces arrays, none of them Text): the first Text array starts the frame.
 #pragma once

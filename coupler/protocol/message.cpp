@@ -89,6 +89,7 @@ const char* to_string(Tag tag) {
     case Tag::Text: return "Text";
     case Tag::Field: return "Field";
     case Tag::Points: return "Points";
+    case Tag::PointAttributes: return "PointAttributes";
   }
   return "unknown tag";
 }

@@ -19,7 +19,8 @@ namespace cosim::protocol {
 
 inline constexpr std::uint32_t kMagic = 0x4d495343;  // "CSIM" read as little-endian u32
 // 2: Points arrays, for the point sets of a Field message (field_message.hpp).
-inline constexpr std::uint16_t kVersion = 2;
+// 3: PointAttributes arrays, for the values per point of those sets (point_set_arrays.hpp).
+inline constexpr std::uint16_t kVersion = 3;
 inline constexpr std::size_t kNameSize = 32;          // participant name, NUL padded
 inline constexpr std::size_t kMaxArrays = 64;
 
@@ -57,6 +58,7 @@ enum class Tag : std::uint16_t {
   Text,            // bytes (rows = 1, cols = length): YAML or an error message
   Field,           // rows x cols float64 named field; name in a preceding Text array
   Points,          // n x 3 float64: x, y, z of points, the point sets of a Field message
+  PointAttributes, // 1 x n float64: the values per point of those point sets' attributes
 };
 
 enum class DType : std::uint16_t { Float64 = 1, Bytes = 2 };

@@ -39,6 +39,7 @@ DType dtype_of(Tag tag) {
     case Tag::State:
     case Tag::Field:
     case Tag::Points:
+    case Tag::PointAttributes:
       return DType::Float64;
     case Tag::Text:
       return DType::Bytes;

@@ -45,16 +45,33 @@ XdmfDataItem data_item(const std::string& attributes, const std::string& where) 
   return d;
 }
 
+// The Attribute elements of `block`, each of one DataItem.
+std::vector<XdmfAttribute> attributes(const std::string& block) {
+  std::vector<XdmfAttribute> out;
+  const std::regex element("<Attribute([^>]*)>\\s*<DataItem([^>]*)>([^<]*)</DataItem>\\s*</Attribute>");
+  for (auto it = std::sregex_iterator(block.begin(), block.end(), element); it != std::sregex_iterator(); ++it) {
+    const std::smatch& m = *it;
+    out.push_back({attribute(m[1], "Name"), attribute(m[1], "AttributeType"), attribute(m[1], "Center"),
+                   attribute(m[2], "NumberType"), data_item(m[2], m[3])});
+  }
+  return out;
+}
+
 std::vector<XdmfPolyvertex> polyvertices(const std::string& text) {
   std::vector<XdmfPolyvertex> out;
   const std::regex grid("<Grid Name=\"([^\"]*)\"[^>]*>\\s*<Topology TopologyType=\"Polyvertex\"([^>]*)/>"
-                        "\\s*<Geometry GeometryType=\"XYZ\">\\s*<DataItem([^>]*)>([^<]*)</DataItem>\\s*</Geometry>");
+                        "\\s*<Geometry GeometryType=\"XYZ\">\\s*<DataItem([^>]*)>([^<]*)</DataItem>\\s*</Geometry>"
+                        "((?:\\s*<Attribute[^>]*>\\s*<DataItem[^>]*>[^<]*</DataItem>\\s*</Attribute>)*)\\s*</Grid>");
   for (auto it = std::sregex_iterator(text.begin(), text.end(), grid); it != std::sregex_iterator(); ++it) {
     const std::smatch& m = *it;
-    XdmfPolyvertex p{m[1], std::stoul(attribute(m[2], "NumberOfElements")), data_item(m[3], m[4])};
+    XdmfPolyvertex p{m[1], std::stoul(attribute(m[2], "NumberOfElements")), data_item(m[3], m[4]), attributes(m[5])};
     if (p.points.dims != std::vector<std::size_t>{p.elements, 3})
       throw std::runtime_error("Polyvertex grid " + p.name + " of " + std::to_string(p.elements) +
                                " elements has points of other Dimensions");
+    for (const XdmfAttribute& a : p.attributes)
+      if (a.center != "Node" || a.item.dims.empty() || a.item.dims[0] != p.elements)
+        throw std::runtime_error("attribute " + a.name + " of Polyvertex grid " + p.name +
+                                 " is not node-centred with a row per point");
     out.push_back(p);
   }
   const std::regex topology("TopologyType=\"Polyvertex\"");

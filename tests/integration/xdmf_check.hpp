@@ -14,11 +14,22 @@ struct XdmfDataItem {
   std::string dataset;            // after it
 };
 
-// A grid of points without cells (a point set): Polyvertex topology, XYZ geometry.
+// An Attribute of one DataItem.
+struct XdmfAttribute {
+  std::string name;
+  std::string type;         // AttributeType: Scalar, Vector, Matrix
+  std::string center;       // Center: Node, Cell
+  std::string number_type;  // the DataItem's NumberType: Float, Int
+  XdmfDataItem item;
+};
+
+// A grid of points without cells (a point set): Polyvertex topology, XYZ geometry, and the
+// attributes after it.
 struct XdmfPolyvertex {
   std::string name;
   std::size_t elements = 0;  // the topology's NumberOfElements
   XdmfDataItem points;       // the geometry's one DataItem
+  std::vector<XdmfAttribute> attributes{};
 };
 
 struct XdmfContents {
@@ -29,7 +40,8 @@ struct XdmfContents {
 
 // Throws std::runtime_error if the document is not a nested XML element tree, or has a
 // Polyvertex grid whose geometry is not one DataItem of its NumberOfElements x 3 (so that
-// checking every item's dataset against its Dimensions checks the points' too).
+// checking every item's dataset against its Dimensions checks the points' too), or whose
+// attributes are not node-centred with a row per point.
 XdmfContents read_xdmf(const std::string& text);
 
 }  // namespace cosim::testing

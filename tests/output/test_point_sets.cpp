@@ -1,9 +1,12 @@
-// Point sets in field frames (an immersed body's surface markers): a dataset per set per
-// frame beside the cell fields, a Polyvertex grid per set in the sidecar, the sidecar of
-// frames without them as it always was, and the names the writer refuses.
+// Point sets in field frames (an immersed body's surface markers, the tracker's particles):
+// a dataset per set per frame beside the cell fields, a Polyvertex grid per set in the
+// sidecar, the sets' attributes beside them and node-centred on those grids, the sidecar of
+// frames without them as it always was, and the names and values the writer refuses.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <functional>
 #include <iterator>
 
 #include "h5_read.hpp"
@@ -169,6 +172,64 @@ TEST_F(PointSetsTest, FramesWithoutPointSetsKeepTheirSidecar) {
   EXPECT_FALSE(ReadFile(file("run.h5")).has("/fields/fluid/000001/points"));
 }
 
+// Two particles with a velocity, a cell index and a 64-bit state as two 32-bit halves;
+// and a set with attributes but no points.
+FieldFrame frame_with_particles(std::uint64_t window) {
+  FieldFrame frame = cells_of(window);
+  const double w = double(window);
+  frame.point_sets = {{"particles",
+                       {0.25, 0.5, 0.5, 0.75, 0.5, 0.5},
+                       {{"velocity", 3, {1, 2, w, 4, 5, 6}},
+                        {"cell", 1, {0, 1}, true},
+                        {"state_ball", 2, {4294967295.0, 4294967295.0, 0, w}, true}}},
+                      {"none", {}, {{"speed", 1, {}}}},
+                      {"markers", {0.5, 0.5, 0.5}}};
+  return frame;
+}
+
+TEST_F(PointSetsTest, AttributesBesideThePointsAndNodeCentredOnTheirGrid) {
+  {
+    RunFile run = new_run(file("run.h5"));
+    for (std::uint64_t k = 0; k < 2; ++k) run.write_fields("tracker", k, 0.5 * double(k), frame_with_particles(k));
+  }
+  ReadFile f(file("run.h5"));
+  const std::string at = "/fields/tracker/000001/point_attributes/";
+  EXPECT_EQ(f.dims(at + "particles/velocity"), (std::vector<hsize_t>{2, 3}));
+  EXPECT_EQ(f.doubles(at + "particles/velocity"), (std::vector<double>{1, 2, 1, 4, 5, 6}));
+  EXPECT_EQ(f.dims(at + "particles/cell"), (std::vector<hsize_t>{2}));
+  // Whole numbers as int64: a state's halves come back exactly.
+  EXPECT_EQ(f.values<std::int64_t>(at + "particles/cell", H5T_NATIVE_INT64), (std::vector<std::int64_t>{0, 1}));
+  EXPECT_EQ(f.dims(at + "particles/state_ball"), (std::vector<hsize_t>{2, 2}));
+  EXPECT_EQ(f.values<std::int64_t>(at + "particles/state_ball", H5T_NATIVE_INT64),
+            (std::vector<std::int64_t>{4294967295, 4294967295, 0, 1}));
+  EXPECT_EQ(f.dims(at + "none/speed"), (std::vector<hsize_t>{0}));
+  EXPECT_FALSE(f.has(at + "markers"));  // a set without attributes has no group
+  EXPECT_EQ(f.dims("/fields/tracker/000001/points/particles"), (std::vector<hsize_t>{2, 3}));
+
+  const testing::XdmfContents xdmf = checked_sidecar(file("run.h5"));
+  ASSERT_EQ(xdmf.polyvertices.size(), 4u);  // per step particles and markers; "none" has no points
+  const testing::XdmfPolyvertex& particles = xdmf.polyvertices[2];
+  EXPECT_EQ(particles.name, "particles");
+  ASSERT_EQ(particles.attributes.size(), 3u);
+  const std::string names[] = {"velocity", "cell", "state_ball"}, types[] = {"Vector", "Scalar", "Matrix"},
+                    numbers[] = {"Float", "Int", "Int"};
+  const std::vector<std::size_t> dims[] = {{2, 3}, {2}, {2, 2}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(particles.attributes[k].name, names[k]);
+    EXPECT_EQ(particles.attributes[k].type, types[k]);
+    EXPECT_EQ(particles.attributes[k].number_type, numbers[k]);
+    EXPECT_EQ(particles.attributes[k].item.dims, dims[k]);
+    EXPECT_EQ(particles.attributes[k].item.dataset, at + "particles/" + names[k]);
+  }
+  EXPECT_TRUE(xdmf.polyvertices[3].attributes.empty());
+  EXPECT_NE(text_of(file("run.xmf")).find("          <Attribute Name=\"cell\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+                                          "            <DataItem Dimensions=\"2\" NumberType=\"Int\" Precision=\"8\" "
+                                          "Format=\"HDF\">run.h5:/fields/tracker/000000/point_attributes/particles/cell"
+                                          "</DataItem>\n"
+                                          "          </Attribute>\n"),
+            std::string::npos);
+}
+
 std::string write_error(RunFile& run, const FieldFrame& frame) {
   try {
     run.write_fields("fluid", 1, 0.1, frame);
@@ -204,6 +265,41 @@ TEST_F(PointSetsTest, RefusesANameThatIsNoDatasetNameOrComesTwice) {
 
   run.write_fields("fluid", 1, 0.1, renamed("wall left"));  // any other name will do
   EXPECT_EQ(ReadFile(file("run.h5")).dims("/fields/fluid/000001/points/wall left"), (std::vector<hsize_t>{0, 3}));
+}
+
+TEST_F(PointSetsTest, RefusesAttributesThatDoNotFitTheirSet) {
+  RunFile run = new_run(file("run.h5"));
+  const auto changed = [](const std::function<void(PointAttribute&)>& change) {
+    FieldFrame frame = frame_with_particles(1);
+    change(frame.point_sets[0].attributes[1]);  // cell
+    return frame;
+  };
+  const std::string in = file("run.h5").string() + ": fields of fluid: ";
+  EXPECT_EQ(write_error(run, changed([](PointAttribute& a) { a.name = "a/b"; })),
+            in + "attribute name 'a/b' of point set 'particles' cannot name an HDF5 dataset");
+  EXPECT_EQ(write_error(run, changed([](PointAttribute& a) { a.name = "velocity"; })),
+            in + "attribute name 'velocity' appears twice in point set 'particles'");
+  EXPECT_EQ(write_error(run, changed([](PointAttribute& a) { a.values.pop_back(); })),
+            in + "attribute 'cell' of point set 'particles' has 1 values for 2 points of 1 components");
+  EXPECT_EQ(write_error(run, changed([](PointAttribute& a) { a.components = 0; })),
+            in + "attribute 'cell' of point set 'particles' has 0 components");
+  EXPECT_EQ(write_error(run, changed([](PointAttribute& a) { a.values[1] = 0.5; })),
+            in + "attribute 'cell' of point set 'particles' holds 0.500000, not a whole number within +-2^53");
+  // Beyond 2^53 a float64 stands for several integers.
+  EXPECT_NE(write_error(run, changed([](PointAttribute& a) { a.values[1] = 0x1p53 + 2; })).find("holds 9007199254740994"),
+            std::string::npos);
+  EXPECT_NE(write_error(run, changed([](PointAttribute& a) { a.values[1] = std::nan(""); })).find("holds nan"),
+            std::string::npos);
+  FieldFrame clash = frame_with_particles(1);
+  clash.fields[0].name = "point_attributes";
+  EXPECT_EQ(write_error(run, clash),
+            file("run.h5").string() +
+                ": field point_attributes of fluid: the step's group of that name holds the point sets' attributes");
+  EXPECT_FALSE(ReadFile(file("run.h5")).has("/fields"));
+  run.write_fields("fluid", 1, 0.1, changed([](PointAttribute& a) { a.values[1] = 0x1p53; }));  // the last exact one
+  EXPECT_EQ(ReadFile(file("run.h5")).values<std::int64_t>("/fields/fluid/000001/point_attributes/particles/cell",
+                                                         H5T_NATIVE_INT64),
+            (std::vector<std::int64_t>{0, std::int64_t{1} << 53}));
 }
 
 }  // namespace

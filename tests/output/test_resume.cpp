@@ -142,10 +142,13 @@ TEST_F(ResumeTest, KeepsAPolyhedralGrid) {
             std::string::npos);
 }
 
-// A body's two markers at x = window in every frame, and a body outside the grid.
+// A body's two markers at x = window in every frame, with an index and a speed each (in
+// name order, as resume() reads them back), and a body outside the grid.
 FieldFrame frame_with_bodies(std::uint64_t window) {
   FieldFrame frame = frame_of(window);
-  frame.point_sets = {{"ball", {double(window), 0.5, 0.5, double(window), 0.25, 0.5}}, {"cube", {}}};
+  const double w = double(window);
+  frame.point_sets = {{"ball", {w, 0.5, 0.5, w, 0.25, 0.5}, {{"index", 1, {0, 1}, true}, {"speed", 1, {w, 2 * w}}}},
+                      {"cube", {}}};
   return frame;
 }
 
@@ -157,8 +160,9 @@ void write_fields_up_to(RunFile& run, std::uint64_t last, std::uint64_t checkpoi
   }
 }
 
-// The point sets go with their frames: those after the checkpoint are unlinked, those up to
-// it kept, and the sidecar names them as that of a run that stopped there would.
+// The point sets go with their frames, their attributes too: those after the checkpoint are
+// unlinked, those up to it kept, and the sidecar names them as that of a run that stopped
+// there would.
 TEST_F(ResumeTest, CutsPointSetsWithTheirFrames) {
   const auto path = file("run.h5");
   const RunInfo info{"scene: 1\n", "s.yaml", "abc", "0.1.0", 2};
@@ -178,15 +182,19 @@ TEST_F(ResumeTest, CutsPointSetsWithTheirFrames) {
       const std::string step = "/fields/fluid/00000" + std::to_string(k);
       EXPECT_EQ(f.doubles(step + "/points/ball"), frame_with_bodies(k).point_sets[0].points) << step;
       EXPECT_EQ(f.dims(step + "/points/cube"), (std::vector<hsize_t>{0, 3})) << step;
+      EXPECT_EQ(f.doubles(step + "/point_attributes/ball/speed"), frame_with_bodies(k).point_sets[0].attributes[1].values);
     }
     EXPECT_FALSE(f.has("/fields/fluid/000004"));
     EXPECT_EQ(file_bytes(file("run.xmf")), file_bytes(file("stopped") / "run.xmf"));
     FieldFrame again = frame_with_bodies(4);
     again.point_sets[0].points = {9.0, 9.0, 9.0};
+    again.point_sets[0].attributes = {{"index", 1, {7}, true}};
     run.write_fields("fluid", 4, 0.4, again);
   }
   ReadFile f(path);
   EXPECT_EQ(f.doubles("/fields/fluid/000004/points/ball"), (std::vector<double>{9.0, 9.0, 9.0}));
+  EXPECT_EQ(f.doubles("/fields/fluid/000004/point_attributes/ball/index"), (std::vector<double>{7.0}));
+  EXPECT_FALSE(f.has("/fields/fluid/000004/point_attributes/ball/speed"));
   const std::string sidecar = file_bytes(file("run.xmf"));
   EXPECT_NE(sidecar.find("<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"1\"/>\n"
                          "          <Geometry GeometryType=\"XYZ\">\n"

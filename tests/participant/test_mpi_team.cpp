@@ -79,7 +79,8 @@ TEST(MpiTeam, AStateOfAnotherRankCountIsRefusedAndTheTeamGoesOn) {
   });
 }
 
-// Sums over the ranks the z of the first point of the first point set it was forwarded.
+// Sums over the ranks the z of the first point of the first point set it was forwarded, and
+// that point's first attribute value.
 class PointSetSolver final : public Solver {
  public:
   Outputs initialise(const scene::Scene&, const std::string&, const std::vector<double>&,
@@ -87,7 +88,8 @@ class PointSetSolver final : public Solver {
     return {};
   }
   Outputs advance(const Window&, const Inputs& in) override {
-    double local = in.fields ? in.fields->point_sets.at(0).points.at(2) : -100.0, sum = 0;
+    const output::PointSet* set = in.fields ? &in.fields->point_sets.at(0) : nullptr;
+    double local = set ? set->points.at(2) + set->attributes.at(0).values.at(0) : -100.0, sum = 0;
     MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
     return {{}, {sum}, 1};
   }
@@ -95,7 +97,8 @@ class PointSetSolver final : public Solver {
   void restore(const std::vector<double>&) override {}
 };
 
-// A frame forwarded in an Advance reaches every rank whole, its point sets too.
+// A frame forwarded in an Advance reaches every rank whole, its point sets and their
+// attributes too.
 TEST(MpiTeam, AForwardedFrameReachesEveryRankWithItsPointSets) {
   PointSetSolver local;
   run_on_ranks(local, MPI_COMM_WORLD, [](Solver& lead) {
@@ -103,8 +106,8 @@ TEST(MpiTeam, AForwardedFrameReachesEveryRankWithItsPointSets) {
     Inputs in;
     in.fields = output::FieldFrame{output::RectilinearGrid{{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}},
                                    {{"p", 1, {1.0}}},
-                                   {{"ball", {0.5, 0.5, 2.5}}}};
-    EXPECT_EQ(lead.advance({0, 1, 0.0, 0.5}, in).forces, (std::vector<double>{5.0}));  // 2 x 2.5
+                                   {{"ball", {0.5, 0.5, 2.5}, {{"id", 1, {4.0}, true}}}}};
+    EXPECT_EQ(lead.advance({0, 1, 0.0, 0.5}, in).forces, (std::vector<double>{13.0}));  // 2 x (2.5 + 4)
     return 0;
   });
 }

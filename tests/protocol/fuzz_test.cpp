@@ -88,7 +88,7 @@ class Fuzzer {
   }
 
   Array array() {
-    const auto tag = static_cast<Tag>(between(1, 7));
+    const auto tag = static_cast<Tag>(between(1, 8));
     if (tag == Tag::Text) {
       Frame b = bytes(between(0, 40));
       return Array::text(std::string(reinterpret_cast<const char*>(b.data()), b.size()));

@@ -1,5 +1,6 @@
 // A frame's point sets through a Field message and back (after its cell fields, in three
-// arrays however many sets), and the point sets a sender or the coupler refuses.
+// arrays however many sets, and three more for their attributes), and the point sets a
+// sender or the coupler refuses.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,9 +41,27 @@ std::string decode_refusal(std::vector<Array> arrays) {
 void expect_same_point_sets(const output::FieldFrame& got, const output::FieldFrame& sent) {
   ASSERT_EQ(got.point_sets.size(), sent.point_sets.size());
   for (std::size_t i = 0; i < sent.point_sets.size(); ++i) {
-    EXPECT_EQ(got.point_sets[i].name, sent.point_sets[i].name);
-    EXPECT_EQ(got.point_sets[i].points, sent.point_sets[i].points);
+    const output::PointSet &g = got.point_sets[i], &s = sent.point_sets[i];
+    EXPECT_EQ(g.name, s.name);
+    EXPECT_EQ(g.points, s.points);
+    ASSERT_EQ(g.attributes.size(), s.attributes.size()) << s.name;
+    for (std::size_t k = 0; k < s.attributes.size(); ++k) {
+      EXPECT_EQ(g.attributes[k].name, s.attributes[k].name);
+      EXPECT_EQ(g.attributes[k].components, s.attributes[k].components);
+      EXPECT_EQ(g.attributes[k].values, s.attributes[k].values);
+      EXPECT_EQ(g.attributes[k].integer, s.attributes[k].integer);
+    }
   }
+}
+
+// The bodies' frame with attributes: two on the ball, none on the body outside, one on a
+// third set of one point.
+output::FieldFrame frame_with_attributes() {
+  output::FieldFrame frame = frame_with_bodies();
+  frame.point_sets[0].attributes = {{"velocity", 3, {1, 2, 3, 4, 5, 6, 7, 8, 9.5}},
+                                    {"state", 2, {4294967295.0, 0, 1, 2, 0x1p53, -7}, true}};
+  frame.point_sets.push_back({"dust", {1, 1, 1}, {{"cell", 1, {12}, true}}});
+  return frame;
 }
 
 TEST(PointSets, TwoSetsRoundTripThroughTheWire) {
@@ -78,6 +97,78 @@ TEST(PointSets, OnAPolyhedralGridAndInAnAdvance) {
   const output::FieldFrame frame = field_frame(std::move(fields), "Advance");
   EXPECT_EQ(std::get<output::PolyhedralGrid>(frame.grid).cells, 1u);
   expect_same_point_sets(frame, sent);
+}
+
+TEST(PointSets, AttributesRoundTripThroughTheWire) {
+  const output::FieldFrame sent = frame_with_attributes();
+  const std::vector<Array> arrays = field_arrays(sent);
+  ASSERT_EQ(arrays.size(), 6u + 2u + 3u + 3u);  // ..., names, shapes, values of the attributes
+  EXPECT_EQ(arrays[10].tag, Tag::Points);
+  EXPECT_EQ(arrays[11].bytes, std::string("velocity\0state\0cell\0", 20));
+  EXPECT_EQ(arrays[12].rows, 3u);
+  EXPECT_EQ(arrays[12].values, (std::vector<double>{0, 0, 2, 3, 2, 1, 0, 1, 1}));  // sets, components, integer
+  EXPECT_EQ(arrays[13].tag, Tag::PointAttributes);
+  EXPECT_EQ(arrays[13].values.size(), 9u + 6u + 1u);
+  expect_same_point_sets(field_frame(field_message(arrays)), sent);
+}
+
+// The tracker's particles when none are left (or none is in the sample): no values at all.
+TEST(PointSets, AnEmptySetKeepsItsAttributes) {
+  output::FieldFrame sent = frame_with_bodies();
+  sent.point_sets = {{"particles", {}, {{"velocity", 3, {}}, {"cell", 1, {}, true}}}};
+  const std::vector<Array> arrays = field_arrays(sent);
+  ASSERT_EQ(arrays.back().tag, Tag::PointAttributes);
+  EXPECT_TRUE(arrays.back().values.empty());
+  expect_same_point_sets(field_frame(field_message(arrays)), sent);
+}
+
+TEST(PointSets, TheReceiverRefusesAttributesThatDoNotAddUp) {
+  const std::vector<Array> good = field_arrays(frame_with_attributes());
+  const auto with_shape = [&](std::size_t at, double value) {
+    std::vector<Array> a = good;
+    a[12].values[at] = value;
+    return decode_refusal(a);
+  };
+  const std::string who = "Field message of 'fluid': ";
+  EXPECT_EQ(with_shape(2, 1), who + "the point attributes take 15 values, 16 were sent");  // cell on the body outside
+  EXPECT_EQ(with_shape(1, 3), who + "point attribute 'state' names set 3.000000 after set 0.000000, of 3 sets");
+  EXPECT_EQ(with_shape(0, 1), who + "point attribute 'state' names set 0.000000 after set 1.000000, of 3 sets");
+  EXPECT_EQ(with_shape(4, 3),
+            who + "point attribute 'state' of point set 'ball' takes 3 x 3.000000 values, 7 are left");
+  for (const double bad : {0.0, 1.5, std::nan("")})
+    EXPECT_NE(with_shape(3, bad).find(who + "point attribute 'velocity' has"), std::string::npos) << bad;
+  EXPECT_EQ(with_shape(6, 2), who + "point attribute 'velocity' is marked integer 2.000000, not 0 or 1");
+  // A float attribute may hold any value, an integer one only whole numbers.
+  EXPECT_EQ(with_shape(6, 1),
+            who + "attribute 'velocity' of point set 'ball' holds 9.500000, not a whole number within +-2^53");
+  std::vector<Array> a = good;
+  a[13].values.push_back(1);
+  a[13].cols += 1;
+  EXPECT_EQ(decode_refusal(a), who + "the point attributes take 16 values, 17 were sent");
+  a = good;
+  a[11] = Array::text(std::string("velocity\0state\0", 15));
+  EXPECT_EQ(decode_refusal(a), who + "2 point attribute names for 3 shapes");
+  a = good;
+  a[11] = Array::text(std::string("velocity\0velocity\0cell\0", 23));
+  EXPECT_EQ(decode_refusal(a), who + "attribute name 'velocity' appears twice in point set 'ball'");
+  a = good;
+  a[11] = Array::text("velocity");
+  EXPECT_EQ(decode_refusal(a), who + "the point attribute names do not end with a NUL");
+  a = good;
+  a.erase(a.begin() + 12);  // the shapes
+  EXPECT_EQ(decode_refusal(a),
+            who + "the point attribute values (1 x m) must follow their names (Text) and shapes (3 x a)");
+  a = good;
+  a.erase(a.begin() + 8, a.begin() + 11);  // the sets
+  EXPECT_EQ(decode_refusal(a), who + "point attributes without the point sets (n x 3) before them");
+}
+
+// The sender learns of an attribute that does not fit its set before anything leaves.
+TEST(PointSets, ASenderCannotSendABadAttribute) {
+  output::FieldFrame frame = frame_with_attributes();
+  frame.point_sets[2].attributes[0].values = {12, 13};
+  EXPECT_EQ(refusal([&] { field_arrays(frame); }),
+            "Field arrays: attribute 'cell' of point set 'dust' has 2 values for 1 points of 1 components");
 }
 
 TEST(PointSets, AFrameWithoutThemKeepsItsArrays) {

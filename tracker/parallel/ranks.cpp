@@ -33,4 +33,19 @@ long long Ranks::sum(long long value) const {
   return value;
 }
 
+std::vector<double> Ranks::gather(std::span<const double> values) const {
+  if (size_ == 1) return {values.begin(), values.end()};
+  const int mine = count(values.size());
+  std::vector<int> counts(lead() ? static_cast<std::size_t>(size_) : 0), offsets;
+  MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
+  std::size_t total = 0;
+  for (const int n : counts) {
+    offsets.push_back(count(total));
+    total += static_cast<std::size_t>(n);
+  }
+  std::vector<double> all(total);
+  MPI_Gatherv(values.data(), mine, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, comm_);
+  return all;
+}
+
 }  // namespace cosim::tracker

@@ -5,6 +5,7 @@
 #include <mpi.h>
 
 #include <span>
+#include <vector>
 
 namespace cosim::tracker {
 
@@ -22,6 +23,8 @@ class Ranks {
   void sum(std::span<double> values) const;
   void sum(std::span<long long> values) const;
   long long sum(long long value) const;
+  // Every rank's values, rank after rank, on rank 0; nothing on the others (collective).
+  std::vector<double> gather(std::span<const double> values) const;
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;

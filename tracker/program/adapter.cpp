@@ -6,6 +6,7 @@
 
 #include "participant/poses_at.hpp"
 #include "tracker/program/cell_fields.hpp"
+#include "tracker/program/particle_dump.hpp"
 #include "tracker/program/velocity_input.hpp"
 #include "protocol/message.hpp"
 
@@ -28,6 +29,7 @@ Eigen::Isometry3d pose_of(const std::vector<double>& poses, std::size_t body) {
 participant::Outputs TrackerSolver::initialise(const scene::Scene& scene, const std::string&,
                                                const std::vector<double>& poses, const std::vector<double>& state) {
   bodies_ = scene.bodies.size();
+  windows_ = scene.windows();
   check_size(poses);
   // The coupler's poses (the rigid-body program's) win over the scene's.
   std::vector<Eigen::Isometry3d> placed;
@@ -45,6 +47,7 @@ void TrackerSolver::check_size(const std::vector<double>& poses) const {
 
 participant::Outputs TrackerSolver::advance(const participant::Window& w, const participant::Inputs& in) {
   gas_->reseed(w.index);
+  done_ = w.index + 1;
   if (in.fields) gas_->set_velocity(velocity_of(*in.fields));
   const std::vector<ObstacleTally> before = gas_->tallies();
   const std::vector<int>& body_of = gas_->setup().obstacle_body;
@@ -81,7 +84,10 @@ output::FieldFrame TrackerSolver::fields() const {
   // Taking the moments starts a new average: the next frame averages the windows since.
   const std::vector<double> count = gas_->counts();
   const std::vector<CellMoments> moments = gas_->take_moments();
-  return tracker_fields(gas_->mesh(), moments, count);
+  output::FieldFrame frame = tracker_fields(gas_->mesh(), moments, count);
+  if (const std::optional<ParticleOutput>& dump = gas_->setup().particle_output; dump && dump->at(done_, windows_))
+    frame.point_sets.push_back(particle_set(*gas_, *dump));
+  return frame;
 }
 
 std::vector<std::string> TrackerSolver::wanted_fields() const { return {"velocity"}; }

@@ -32,7 +32,9 @@ class TrackerSolver final : public participant::Solver {
   std::vector<double> state() const override;
   void restore(const std::vector<double>& state) override;
   // The per-cell samples averaged since the last call (or the start) on the tracker's
-  // polyhedral mesh (cell_fields.hpp); collective, the whole frame on every rank.
+  // polyhedral mesh (cell_fields.hpp); collective, the whole frame on every rank. After the
+  // windows particle_output names (counted from the last advance()) the particles too, on
+  // rank 0 (particle_dump.hpp).
   output::FieldFrame fields() const override;
   // Tracers need only the fluid's velocity of its frame.
   std::vector<std::string> wanted_fields() const override;
@@ -45,6 +47,8 @@ class TrackerSolver final : public participant::Solver {
   Ranks ranks_;
   std::unique_ptr<Simulation> gas_;
   std::size_t bodies_ = 0;
+  std::uint64_t windows_ = 0;  // of the run
+  std::uint64_t done_ = 0;     // windows advanced through: the last one's index + 1
 };
 
 }  // namespace cosim::tracker

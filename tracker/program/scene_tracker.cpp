@@ -49,6 +49,7 @@ TrackerScene read_tracker(const scene::Scene& scene) {
         options.fail("obstacles", "obstacle '" + t.obstacles.object(i).name +
                                       "': its surface meets no cell of the mesh (outside the domain, or in other units?)");
   }
+  t.particle_output = read_particle_output(options, scene, t.obstacles);
   options.finish();
   return t;
 }

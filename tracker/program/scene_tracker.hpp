@@ -1,13 +1,14 @@
 // Everything the standalone tracker reads from participants.tracker of a scene: the mesh
 // (scene_mesh.hpp), the walls (scene_walls.hpp), the obstacles (scene_obstacles.hpp), the
-// particles (seeding.hpp) and the participant's dt; checked together, so a key nobody reads
-// is an error.
+// particles (seeding.hpp), their output (scene_particle_output.hpp) and the participant's
+// dt; checked together, so a key nobody reads is an error.
 #pragma once
 
 #include <memory>
 
 #include "scene/scene.hpp"
 #include "tracker/program/scene_collisions.hpp"
+#include "tracker/program/scene_particle_output.hpp"
 #include "tracker/program/scene_tracers.hpp"
 #include "tracker/program/seeding.hpp"
 #include "tracker/tracking/inflow.hpp"
@@ -26,6 +27,7 @@ struct TrackerScene {
   std::vector<Inflow> inflows;
   std::optional<Collisions> collisions;
   std::optional<Tracers> tracers;  // tracer mode: no collisions, no inflow
+  std::optional<ParticleOutput> particle_output;  // particles written with the fields
   double dt = 0.0;
 };
 

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "participant/seconds_since.hpp"
+#include "tracker/program/particle_dump.hpp"
 #include "tracker/program/progress.hpp"
 #include "tracker/program/simulation.hpp"
 #include "tracker/program/tracker_file.hpp"
@@ -30,8 +31,11 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
 
   RunSummary summary;
   const std::uint64_t windows = scene.windows();
-  // Every rank gathers (the sums are collective), rank 0 writes.
-  const auto write = [&](double time) {
+  const std::optional<ParticleOutput>& particle_output = gas.setup().particle_output;
+  // Every rank gathers (the sums and the particles are collective), rank 0 writes.
+  const auto write = [&](std::uint64_t done, double time) {
+    std::vector<output::PointSet> point_sets;
+    if (particle_output && particle_output->at(done, windows)) point_sets.push_back(particle_set(gas, *particle_output));
     const std::vector<double> count = gas.counts();
     const std::vector<CellMoments> moments = gas.take_moments();
     const std::vector<ObstacleTally> tallies = gas.tallies();
@@ -46,18 +50,19 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
                    .moments = moments,
                    .objects = tallies,
                    .patches = patches,
-                   .moves = moves});
+                   .moves = moves,
+                   .point_sets = std::move(point_sets)});
   };
   // Shown only on a terminal, and no rank's stderr is one under mpirun: its count is the run's.
   Progress progress(windows, scene.time.end);
   try {
-    write(0.0);
+    write(0, 0.0);
     for (std::uint64_t k = 0; k < windows; ++k) {
       // Window bounds computed as the coupler does, so both runs take identical steps.
       const double t1 = static_cast<double>(k + 1) * scene.coupling.window;
       gas.advance(static_cast<double>(k) * scene.coupling.window, t1);
       // The start and the end always: the file is the run's only record.
-      if (scene.output.fields_at(k + 1, windows) || k + 1 == windows) write(t1);
+      if (scene.output.fields_at(k + 1, windows) || k + 1 == windows) write(k + 1, t1);
       progress.update(k + 1, t1, gas.swarm().size());
     }
   } catch (const std::exception& e) {

@@ -1,6 +1,7 @@
 // cosim-tracker --standalone: the scene's gas without a coupler, window by window as
 // `cosim run` steps it (Simulation::advance), written to the tracker's run file
-// (tracker_file.hpp) at the start, every output.fields_every windows and the last.
+// (tracker_file.hpp) at the start, every output.fields_every windows and the last, with the
+// particles where particle_output asks for them (scene_particle_output.hpp).
 // Over several ranks (`mpirun -n N cosim-tracker --standalone`) every rank runs it on its
 // cells' particles and rank 0 alone writes the file, of the sums over the ranks.
 #pragma once

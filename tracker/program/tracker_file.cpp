@@ -117,7 +117,7 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
 TrackerFile::TrackerFile(TrackerFile&&) noexcept = default;
 TrackerFile::~TrackerFile() = default;
 
-void TrackerFile::write(const Sample& s) {
+void TrackerFile::write(Sample s) {
   Impl& m = *impl_;
   output::in_file(m.path, [&] {
     const hid_t file = m.file.get();
@@ -125,7 +125,9 @@ void TrackerFile::write(const Sample& s) {
       throw output::ObjectError("step " + std::to_string(s.step) + ": " + std::to_string(s.objects.size()) +
                                 " object tallies for " + std::to_string(m.objects) + " objects");
     m.frame.fields = cell_fields(s.moments, s.count);
+    m.frame.point_sets = std::move(s.point_sets);
     m.fields.write(file, "tracker", s.step, s.time, m.frame);
+    m.frame.point_sets.clear();  // the particles may be many: not kept until the next write
     if (!m.volume.empty()) {  // the first write has just made the grid's group
       Handle grid = output::open_group(file, "/fields/tracker/grid");
       output::write_array(grid.get(), "volume", {m.volume.size()}, m.volume.data());

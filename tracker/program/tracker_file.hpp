@@ -12,6 +12,13 @@
 //                             (1/m^3), velocity (cells x 3, m/s), temperature (K), pressure
 //                             (Pa): the moments of tracking/sampling.hpp. <step>: the step
 //                             index, 6+ digits
+//   /fields/tracker/<step>/points/particles  with particle_output (scene_particle_output.hpp)
+//                             at the steps it names: (n x 3) the particles' positions (all,
+//                             or the sample), in cell order; and beside them
+//                             point_attributes/particles/ velocity (n x 3, m/s), cell (n,
+//                             int64) and per obstacle state_<name> (n x 2, int64: the high
+//                             and low 32 bits of its logical state) and inside_<name> (n,
+//                             int64, 1 inside it), particle_dump.hpp
 //   /tracker/                 one row per written step: step (uint64), time, particles
 //                             (uint64), moves (11 columns, attr columns: the MoveTally
 //                             totals since the start)
@@ -29,7 +36,8 @@
 //                             particles gave each patch's walls since the start. The shear
 //                             stress on a patch: impulse x mass x weight / (area x time)
 // Object and patch tables are 2-d even for one object or patch, so [:, i] reads column i.
-// The sidecar <file>.xmf is rewritten after every write, once the file is flushed.
+// The sidecar <file>.xmf is rewritten after every write, once the file is flushed; the
+// particles are a Polyvertex grid "particles" in it, their attributes node-centred.
 #pragma once
 
 #include <cstdint>
@@ -39,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "output/field_frame.hpp"
 #include "scene/scene.hpp"
 #include "tracker/tracking/move.hpp"
 #include "tracker/tracking/sampling.hpp"
@@ -54,6 +63,7 @@ struct Sample {
   std::span<const ObstacleTally> objects;
   std::span<const SurfaceTally> patches;  // per boundary patch, by Mesh::patches index
   MoveTally moves;
+  std::vector<output::PointSet> point_sets;  // with the fields, e.g. the particles (particle_dump.hpp)
 };
 
 class TrackerFile {
@@ -64,7 +74,7 @@ class TrackerFile {
   TrackerFile(TrackerFile&&) noexcept;
   ~TrackerFile();
 
-  void write(const Sample& sample);  // flushes, then rewrites the sidecar
+  void write(Sample sample);  // flushes, then rewrites the sidecar
   void set_status(const std::string& status, double wall_seconds);
 
  private:

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
 #include <numbers>
@@ -96,12 +97,14 @@ TEST(TrackerCoupled, FreeSpherePushedByTheGasGainsTheMomentumOfItsForces) {
 
 TEST(TrackerCoupled, CouetteAloneWritesTheShearedProfileAsFields) {
   // configs/tracker-couette.yaml for 0.1 ms through `cosim run`: no bodies, only the
-  // tracker; its sampled velocity per cell lands in the coupler's run file.
+  // tracker; its sampled velocity per cell lands in the coupler's run file, and its
+  // particles at the start and the end with it.
   std::ifstream in(std::filesystem::path(COSIM_CONFIGS_DIR) / "tracker-couette.yaml");
   std::stringstream text;
   text << in.rdbuf();
   std::string scene = std::regex_replace(text.str(), std::regex(R"(end: [^\n]+)"), "end: 1.0e-4");
   scene = std::regex_replace(scene, std::regex(R"(file: [^\n]+)"), "file: scene.h5");
+  scene += "      particle_output: {every: 5}\n";
   const auto dir = testing::scratch_dir("tracker_couette");
   const testing::Finished run = testing::run_scene_text(dir, scene);
   ASSERT_EQ(run.exit_code, 0) << run.output;
@@ -116,6 +119,23 @@ TEST(TrackerCoupled, CouetteAloneWritesTheShearedProfileAsFields) {
   EXPECT_GT(ux(49), 100);
   EXPECT_GT(ux(0), -150);  // slip: the gas lags the wall
   EXPECT_NEAR(0.5 * (ux(24) + ux(25)), 0.0, 15.0);
+
+  // Every particle, in the cell the cell fields count it in.
+  for (const std::string step : {"000000", "000005"}) {
+    const std::string at = "/fields/tracker/" + step + "/";
+    const testing::Array count = testing::read_array(dir / "scene.h5", at + "count");
+    const testing::Array points = testing::read_array(dir / "scene.h5", at + "points/particles");
+    const testing::Array cell = testing::read_array(dir / "scene.h5", at + "point_attributes/particles/cell");
+    const testing::Array v = testing::read_array(dir / "scene.h5", at + "point_attributes/particles/velocity");
+    ASSERT_EQ(points.dims, (std::vector<std::size_t>{5000, 3})) << step;  // 100 per cell, nothing leaves
+    EXPECT_EQ(v.dims, points.dims);
+    std::vector<double> per_cell(count.values.size(), 0.0);
+    for (const double c : cell.values) per_cell.at(static_cast<std::size_t>(c)) += 1;
+    EXPECT_EQ(per_cell, count.values) << step;
+  }
+  std::ifstream sidecar(dir / "scene.xmf");
+  const std::string xmf{std::istreambuf_iterator<char>(sidecar), {}};
+  EXPECT_NE(xmf.find("<Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">"), std::string::npos);
 }
 
 TEST(TrackerCoupled, BallReleasedInAFreeMolecularStreamFollowsBirdsDrag) {

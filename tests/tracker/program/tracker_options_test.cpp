@@ -1,6 +1,10 @@
-// The tracker's own options (walls, obstacles, particles): every mistake names file, line,
-// key and value, and a good section reads into the conditions the tracking uses.
+// The tracker's own options (walls, obstacles, particles, particle output): every mistake
+// names file, line, key and value, and a good section reads into the conditions the
+// tracking uses.
 #include <gtest/gtest.h>
+
+#include <optional>
+#include <utility>
 
 #include "scene/error.hpp"
 #include "tracker/program/scene_tracker.hpp"
@@ -124,6 +128,54 @@ TEST(TrackerOptions, ParticleMistakesNameTheKey) {
   EXPECT_ERROR(walls + "      particles: {total: 9, temperature: 1, mass: 1, colour: red}\n",
                "particles.colour = red: unknown key");
   EXPECT_ERROR(walls + kParticles + "      velocity: 3\n", "options.velocity = 3: unknown key");
+}
+
+TEST(TrackerOptions, ParticleOutputDefaultsToEveryFieldWriteOfAllParticles) {
+  const std::string p = std::string(kParticles) + "      boundaries: {default: {kind: specular}}\n";
+  EXPECT_FALSE(read_tracker(scene_with(p)).particle_output);
+  const std::optional<ParticleOutput> all = read_tracker(scene_with(p + "      particle_output: {}\n")).particle_output;
+  ASSERT_TRUE(all);
+  EXPECT_EQ(all->every, 10);  // output.fields_every's default
+  EXPECT_EQ(all->fraction, 1.0);
+  EXPECT_EQ(all->seed, 0u);
+  const std::optional<ParticleOutput> some =
+      read_tracker(scene_with(p + "      particle_output: {every: 20, fraction: 0.25, seed: 3}\n")).particle_output;
+  ASSERT_TRUE(some);
+  EXPECT_EQ(some->every, 20);
+  EXPECT_EQ(some->fraction, 0.25);
+  EXPECT_EQ(some->seed, 3u);
+  // The start, every 20th window and the last, as the fields.
+  for (const auto& [done, written] : {std::pair{0, true}, std::pair{10, false}, std::pair{20, true},
+                                      std::pair{35, true}, std::pair{34, false}})
+    EXPECT_EQ(some->at(static_cast<std::uint64_t>(done), 35), written) << done;
+}
+
+TEST(TrackerOptions, ParticleOutputMistakesNameTheKey) {
+  const std::string p = std::string(kParticles) + "      boundaries: {default: {kind: specular}}\n";
+  EXPECT_EQ(error_of(p + "      particle_output: {every: 15}\n"),
+            "scene.yaml:12: participants.tracker.options.particle_output.every = 15: particles are written with the "
+            "fields: give a multiple of output.fields_every (10)");
+  EXPECT_ERROR(p + "      particle_output: {every: 0}\n", "particle_output.every = 0: must be");
+  EXPECT_ERROR(p + "      particle_output: {fraction: 0}\n", "particle_output.fraction = 0: must be in (0, 1]");
+  EXPECT_ERROR(p + "      particle_output: {fraction: 1.5}\n", "particle_output.fraction = 1.5: must be in (0, 1]");
+  EXPECT_ERROR(p + "      particle_output: {seed: -1}\n", "particle_output.seed = -1");
+  EXPECT_ERROR(p + "      particle_output: {every: 10, sample: 3}\n", "particle_output.sample = 3: unknown key");
+  EXPECT_ERROR(p + "      particle_output: 10\n", "particle_output = 10");
+  EXPECT_ERROR(p + "      particle_output: {}\n      obstacles:\n"
+                   "        - {name: a/b, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}}\n",
+               "particle_output = {}: obstacle 'a/b' cannot name the particles' attribute state_a/b");
+  // No fields, no particles: refused rather than never written.
+  const std::string none = testing::scene_error_of([&] {
+    read_tracker(scene::load_scene_from_string(
+        "time: {end: 0.1}\ncoupling: {window: 0.1}\noutput: {fields_every: 0}\n"
+        "domain: {min: [0, 0, 0], max: [1, 1, 1]}\neffects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n"
+        "    options:\n      mesh: {type: box, cells: [2, 2, 2]}\n" + p + "      particle_output: {every: 1}\n",
+        "scene.yaml"));
+  });
+  EXPECT_NE(none.find("participants.tracker.options.particle_output = {every: 1}: particles are written with the "
+                      "fields, and output.fields_every is 0"),
+            std::string::npos)
+      << none;
 }
 
 }  // namespace
