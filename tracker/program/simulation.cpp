@@ -161,15 +161,14 @@ void Simulation::reseed(std::uint64_t stream) {
 }
 
 void Simulation::move_obstacle(int i, const Eigen::Isometry3d& pose, double dt) {
-  // Decided from the poses, which every rank has alike, so all ranks migrate or none.
-  obstacles_moved_ = obstacles_moved_ || pose.matrix() != setup_.obstacles.pose(i).matrix();
   setup_.obstacles.set_pose(i, pose, dt, *setup_.domain, swarm_, random_, tallies_[static_cast<std::size_t>(i)]);
 }
 
 void Simulation::step(double dt) {
-  // An overrun particle is put back where the wall met it, maybe in another rank's cell.
-  if (obstacles_moved_) migrated_ += decomposition_.migrate(swarm_);
-  obstacles_moved_ = false;
+  // The whole mesh is on every rank, so the last step's moves crossed into other ranks'
+  // cells freely, and a wall that moved since may have put an overrun particle back in one:
+  // all of them go to their cells' owners at once, before the collisions need them there.
+  migrated_ += decomposition_.migrate(swarm_);
   // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
   swarm_.sort_by_cell(mesh().cell_count());
   if (collider_) collisions_ += collider_->collide(swarm_, dt);
@@ -180,9 +179,7 @@ void Simulation::step(double dt) {
   for (const Inflow& inflow : setup_.inflows)
     injected_ += static_cast<std::size_t>(
         inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_, tallies_, patch_tallies_));
-  // The whole mesh is on every rank, so a move crosses into other ranks' cells freely; the
-  // particles go to their cells' owners once all of them have moved.
-  migrated_ += decomposition_.migrate(swarm_);
+  // Where they are: a rank's sums over cells it does not own add up with the owner's.
   sampler_.sample(swarm_);
   ++steps_;
 }
@@ -319,7 +316,6 @@ void Simulation::restore(std::span<const double> state) {
     for (int k = 0; k < 3; ++k) p.v[k] = in.get();
     p.cell = in.get_count<Index>();
     if (p.cell < 0 || p.cell >= mesh().cell_count()) throw std::runtime_error("tracker state: a particle in no cell");
-    if (!decomposition_.owns(p.cell)) throw std::runtime_error("tracker state: a particle in another rank's cell");
     for (csg::State& s : states) s = in.get_bits();
     swarm.add(p, states);
   }
@@ -351,7 +347,6 @@ void Simulation::restore(std::span<const double> state) {
   injected_ = injected;
   migrated_ = migrated;
   collisions_ = collisions;
-  obstacles_moved_ = false;
 }
 
 }  // namespace cosim::tracker

@@ -4,8 +4,9 @@
 // inject, sample.
 //
 // Over several ranks (tracker/parallel) every rank holds the whole mesh and all obstacles
-// but only the particles in the cells it owns; particles that moved into another rank's
-// cells migrate there before sampling. The totals and per-cell results below are sums over
+// but only the particles it tracks: those in its cells at the start of a step. Particles
+// that moved into another rank's cells migrate there at the start of the next step, once
+// per step. The totals and per-cell results below are sums over
 // the ranks: those calls are collective, every rank must make them in the same order.
 #pragma once
 
@@ -37,7 +38,8 @@ class Simulation {
   const TrackerScene& setup() const { return setup_; }
   const Mesh& mesh() const { return *setup_.mesh; }
   const Decomposition& decomposition() const { return decomposition_; }
-  // This rank's particles: those in its cells.
+  // This rank's particles: those in its cells, and those that left them in the last step
+  // (they migrate at the start of the next).
   const Swarm& swarm() const { return swarm_; }
 
   // Every random draw from here on comes from `stream` of the scene's seed (one stream per
@@ -97,7 +99,6 @@ class Simulation {
   std::vector<ObstacleTally> tallies_;
   std::vector<SurfaceTally> patch_tallies_;
   MoveTally moves_;
-  bool obstacles_moved_ = false;  // since the last step: overrun particles may have changed cell
   std::uint64_t steps_ = 0;
   // This rank's.
   std::size_t seeded_ = 0, injected_ = 0, migrated_ = 0;

@@ -30,6 +30,7 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
   }
 
   RunSummary summary;
+  summary.setup_seconds = participant::seconds_since(started);
   const std::uint64_t windows = scene.windows();
   const std::optional<ParticleOutput>& particle_output = gas.setup().particle_output;
   // Every rank gathers (the sums and the particles are collective), rank 0 writes.

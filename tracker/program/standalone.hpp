@@ -23,6 +23,7 @@ struct RunSummary {
   std::size_t migrated = 0;               // particles sent between ranks
   MoveTally moves;
   double wall_seconds = 0.0;
+  double setup_seconds = 0.0;  // of this rank: the scene read, the mesh built, the gas seeded
 };
 
 // Writes `output` (empty: the scene's output.file). Throws scene::SceneError for a bad
