@@ -1,10 +1,11 @@
 // One gas over several ranks: which rank owns each cell (partition.hpp, computed on rank 0
-// and broadcast), and the step's migration of particles to the owners of their cells
-// (migration.hpp). Every rank keeps the whole mesh; a rank holds only the particles in its
+// and broadcast, again with the particles as weights when the loads drift apart), and the
+// step's migration of particles to the owners of their cells (migration.hpp). Every rank keeps the whole mesh; a rank holds only the particles in its
 // own cells between steps.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -25,8 +26,18 @@ class Decomposition {
   // Collective: sends the swarm's particles in other ranks' cells there (migration.hpp);
   // returns how many left this rank.
   std::size_t migrate(Swarm& swarm);
+  // Collective: a new partition with every cell weighted by 1 + its particles (`particles`:
+  // per cell, the same on every rank), as rank 0's METIS gives it. The particles stay where
+  // they are until the next migrate().
+  void repartition(const Mesh& mesh, std::span<const double> particles);
+  // Owners as a state saved them (the same on every rank): std::invalid_argument unless one
+  // rank in range per cell.
+  void set_owners(std::vector<int> owners);
 
  private:
+  // Rank 0's partition, or its failure, on every rank.
+  void adopt(const std::function<std::vector<int>()>& partition);
+
   Ranks ranks_;
   std::vector<int> owner_;
   std::uint64_t migrations_ = 0;

@@ -34,11 +34,18 @@ CellGraph cell_graph(const Mesh& mesh) {
   return graph;
 }
 
-std::vector<int> partition_cells(const Mesh& mesh, int parts) {
+std::vector<int> partition_cells(const Mesh& mesh, int parts, std::span<const int> weight) {
   const Index cells = mesh.cell_count();
   if (parts < 1 || parts > cells)
     throw std::invalid_argument("cannot split " + std::to_string(cells) + " cells into " + std::to_string(parts) +
                                 " parts");
+  if (!weight.empty()) {
+    long long total = 0;
+    for (const int w : weight) total += w;
+    if (weight.size() != static_cast<std::size_t>(cells) || *std::min_element(weight.begin(), weight.end()) < 1 ||
+        total > (1LL << 31) - 1)
+      throw std::invalid_argument("cell weights: one of at least 1 per cell, at most 2^31 in all");
+  }
   std::vector<int> part(static_cast<std::size_t>(cells), 0);
   if (parts == 1) return part;
   CellGraph graph = cell_graph(mesh);
@@ -46,8 +53,11 @@ std::vector<int> partition_cells(const Mesh& mesh, int parts) {
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_SEED] = kSeed;
-  const int status = METIS_PartGraphKway(&vertices, &constraints, graph.start.data(), graph.neighbours.data(), nullptr,
-                                         nullptr, nullptr, &nparts, nullptr, nullptr, options, &cut, part.data());
+  // METIS does not write through its weights.
+  idx_t* vertex_weights = weight.empty() ? nullptr : const_cast<idx_t*>(weight.data());
+  const int status = METIS_PartGraphKway(&vertices, &constraints, graph.start.data(), graph.neighbours.data(),
+                                         vertex_weights, nullptr, nullptr, &nparts, nullptr, nullptr, options, &cut,
+                                         part.data());
   if (status != METIS_OK)
     throw std::runtime_error(mesh.source + ": METIS could not split the cells into " + std::to_string(parts) +
                              " parts (status " + std::to_string(status) + ")");

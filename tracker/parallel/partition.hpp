@@ -2,6 +2,7 @@
 // METIS k-way partitioning (Karypis & Kumar 1998) of the cells' dual graph.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "tracker/mesh/mesh.hpp"
@@ -18,10 +19,11 @@ struct CellGraph {
 CellGraph cell_graph(const Mesh& mesh);
 
 // The part (0 .. parts - 1) of every cell. Deterministic: METIS runs with a fixed seed, so
-// the same mesh and part count give the same parts on every rank and every run. One part
-// calls no METIS. Parts hold the same number of cells within METIS's default imbalance
-// (3 %). Throws std::invalid_argument for parts < 1 or more parts than cells, and
-// std::runtime_error if METIS fails.
-std::vector<int> partition_cells(const Mesh& mesh, int parts);
+// the same mesh, part count and weights give the same parts on every rank and every run.
+// One part calls no METIS. Parts hold the same number of cells, or the same weight if
+// `weight` gives one per cell (>= 1 each, at most 2^31 in all), within METIS's default
+// imbalance (3 %). Throws std::invalid_argument for parts < 1, more parts than cells or bad
+// weights, and std::runtime_error if METIS fails.
+std::vector<int> partition_cells(const Mesh& mesh, int parts, std::span<const int> weight = {});
 
 }  // namespace cosim::tracker

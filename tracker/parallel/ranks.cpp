@@ -33,6 +33,10 @@ long long Ranks::sum(long long value) const {
   return value;
 }
 
+void Ranks::max(std::span<double> values) const {
+  if (size_ > 1) MPI_Allreduce(MPI_IN_PLACE, values.data(), count(values.size()), MPI_DOUBLE, MPI_MAX, comm_);
+}
+
 std::vector<double> Ranks::gather(std::span<const double> values) const {
   if (size_ == 1) return {values.begin(), values.end()};
   const int mine = count(values.size());

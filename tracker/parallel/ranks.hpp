@@ -23,6 +23,8 @@ class Ranks {
   void sum(std::span<double> values) const;
   void sum(std::span<long long> values) const;
   long long sum(long long value) const;
+  // Each value replaced by its largest over the ranks, on every rank (collective).
+  void max(std::span<double> values) const;
   // Every rank's values, rank after rank, on rank 0; nothing on the others (collective).
   std::vector<double> gather(std::span<const double> values) const;
 

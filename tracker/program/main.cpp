@@ -50,7 +50,8 @@ int standalone(const std::string& scene, const std::string& output) {
                  static_cast<long long>(s.collisions), s.wall_seconds, s.setup_seconds,
                  cosim::tracker::summary(s.moves).c_str());
     if (ranks.size() > 1)
-      std::fprintf(stderr, "cosim-tracker: %d ranks, %zu particles moved between them\n", ranks.size(), s.migrated);
+      std::fprintf(stderr, "cosim-tracker: %d ranks, %zu particles moved between them, %llu re-partitions\n",
+                   ranks.size(), s.migrated, static_cast<unsigned long long>(s.rebalances));
     if (s.moves.lost > 0) {
       std::fprintf(stderr, "cosim-tracker: %lld particles lost (outside their cells): a tracking bug\n", s.moves.lost);
       return 1;

@@ -50,6 +50,7 @@ TrackerScene read_tracker(const scene::Scene& scene) {
                                       "': its surface meets no cell of the mesh (outside the domain, or in other units?)");
   }
   t.particle_output = read_particle_output(options, scene, t.obstacles);
+  t.balance = read_balance(options);
   options.finish();
   return t;
 }

@@ -1,12 +1,13 @@
 // Everything the standalone tracker reads from participants.tracker of a scene: the mesh
 // (scene_mesh.hpp), the walls (scene_walls.hpp), the obstacles (scene_obstacles.hpp), the
-// particles (seeding.hpp), their output (scene_particle_output.hpp) and the participant's
-// dt; checked together, so a key nobody reads is an error.
+// particles (seeding.hpp), their output (scene_particle_output.hpp), the ranks' balance
+// (scene_balance.hpp) and the participant's dt; checked together, so a key nobody reads is an error.
 #pragma once
 
 #include <memory>
 
 #include "scene/scene.hpp"
+#include "tracker/program/scene_balance.hpp"
 #include "tracker/program/scene_collisions.hpp"
 #include "tracker/program/scene_particle_output.hpp"
 #include "tracker/program/scene_tracers.hpp"
@@ -28,6 +29,7 @@ struct TrackerScene {
   std::optional<Collisions> collisions;
   std::optional<Tracers> tracers;  // tracer mode: no collisions, no inflow
   std::optional<ParticleOutput> particle_output;  // particles written with the fields
+  Balance balance;                                 // over several ranks
   double dt = 0.0;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -48,7 +49,7 @@ class StateIn {
 };
 
 // Bumped when the layout changes, so an old checkpoint is refused, not misread.
-constexpr double kStateVersion = 4;
+constexpr double kStateVersion = 5;
 
 // A tally's numbers in one fixed order, for state arrays and sums over the ranks.
 std::vector<long long*> counters(SurfaceTally& t) { return {&t.hits, &t.absorbed}; }
@@ -135,8 +136,10 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
       sampler_(*setup_.mesh),
       tallies_(static_cast<std::size_t>(setup_.obstacles.count())),
       patch_tallies_(setup_.domain->boundaries.patches.size()) {
-  if (ranks.size() > 1)
-    for (Inflow& inflow : setup_.inflows) inflow.keep_faces_of([&](Index cell) { return decomposition_.owns(cell); });
+  if (ranks.size() > 1) {
+    all_inflows_ = std::vector<Inflow>(setup_.inflows);  // Inflow refers to the mesh: copied, not assigned
+    keep_own_inflow_faces();
+  }
   seeded_ = swarm_.size();
   if (setup_.collisions) {
     // The first (sigma g)_max per cell: at the hottest temperature the scene gives.
@@ -169,6 +172,8 @@ void Simulation::step(double dt) {
   // cells freely, and a wall that moved since may have put an overrun particle back in one:
   // all of them go to their cells' owners at once, before the collisions need them there.
   migrated_ += decomposition_.migrate(swarm_);
+  if (const int every = setup_.balance.every; decomposition_.ranks().size() > 1 && every > 0 && steps_ % every == 0)
+    balance();
   // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
   swarm_.sort_by_cell(mesh().cell_count());
   if (collider_) collisions_ += collider_->collide(swarm_, dt);
@@ -182,6 +187,38 @@ void Simulation::step(double dt) {
   // Where they are: a rank's sums over cells it does not own add up with the owner's.
   sampler_.sample(swarm_);
   ++steps_;
+}
+
+void Simulation::balance() {
+  const Ranks& ranks = decomposition_.ranks();
+  std::vector<long long> held(static_cast<std::size_t>(ranks.size()), 0);
+  held[static_cast<std::size_t>(ranks.rank())] = static_cast<long long>(swarm_.size());
+  ranks.sum(held);
+  const double mean = static_cast<double>(std::accumulate(held.begin(), held.end(), 0LL)) / ranks.size();
+  if (!(static_cast<double>(*std::max_element(held.begin(), held.end())) > setup_.balance.threshold * mean)) return;
+  decomposition_.repartition(mesh(), counts());
+  migrated_ += decomposition_.migrate(swarm_);
+  keep_own_inflow_faces();
+  if (collider_) {
+    // A cell's collision state is its old owner's: the largest (sigma g)_max (it only grows,
+    // the other ranks keep the first) and the one remainder that is not 0. Then only the new
+    // owner keeps a remainder, so the next hand-over finds one again.
+    std::vector<double> sigma_g_max, remainder;
+    for (const dsmc::CellCollisionState& c : collider_->cells()) {
+      sigma_g_max.push_back(c.sigma_g_max);
+      remainder.push_back(c.remainder);
+    }
+    ranks.max(sigma_g_max);
+    ranks.sum(remainder);
+    for (std::size_t c = 0; c < remainder.size(); ++c)
+      collider_->cells()[c] = {sigma_g_max[c], decomposition_.owns(static_cast<Index>(c)) ? remainder[c] : 0.0};
+  }
+  ++rebalances_;
+}
+
+void Simulation::keep_own_inflow_faces() {
+  setup_.inflows = std::vector<Inflow>(all_inflows_);
+  for (Inflow& inflow : setup_.inflows) inflow.keep_faces_of([&](Index cell) { return decomposition_.owns(cell); });
 }
 
 void Simulation::carry_tracers(double dt) {
@@ -270,6 +307,10 @@ std::vector<double> Simulation::state() const {
   out.put(static_cast<double>(injected_));
   out.put(static_cast<double>(migrated_));
   out.put(static_cast<double>(collisions_));
+  out.put(static_cast<double>(rebalances_));
+  // The partition may have changed since the start (balance()).
+  if (decomposition_.ranks().size() > 1)
+    for (const int owner : decomposition_.owners()) out.put(owner);
   out.put(static_cast<double>(swarm_.size()));
   for (std::size_t i = 0; i < swarm_.size(); ++i) {
     const Particle p = swarm_.particle(i);
@@ -308,6 +349,10 @@ void Simulation::restore(std::span<const double> state) {
   const auto injected = in.get_count<std::size_t>();
   const auto migrated = in.get_count<std::size_t>();
   const auto collisions = in.get_count<std::int64_t>();
+  const auto rebalances = in.get_count<std::uint64_t>();
+  std::vector<int> owners;
+  if (decomposition_.ranks().size() > 1)
+    for (Index c = 0; c < mesh().cell_count(); ++c) owners.push_back(in.get_count<int>());
   Swarm swarm(objects);
   std::vector<csg::State> states(static_cast<std::size_t>(objects));
   for (auto n = in.get_count<std::size_t>(); n > 0; --n) {
@@ -335,6 +380,14 @@ void Simulation::restore(std::span<const double> state) {
   for (double& x : sums) x = in.get();
   in.finish();
 
+  if (!owners.empty()) {
+    try {
+      decomposition_.set_owners(std::move(owners));
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(std::string("tracker state: ") + e.what());
+    }
+    keep_own_inflow_faces();
+  }
   for (int o = 0; o < objects; ++o) setup_.obstacles.place(o, poses[static_cast<std::size_t>(o)]);
   sampler_.set_sums(sums);
   if (collider_) std::copy(cells.begin(), cells.end(), collider_->cells().begin());
@@ -347,6 +400,7 @@ void Simulation::restore(std::span<const double> state) {
   injected_ = injected;
   migrated_ = migrated;
   collisions_ = collisions;
+  rebalances_ = rebalances;
 }
 
 }  // namespace cosim::tracker

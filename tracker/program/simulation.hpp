@@ -66,6 +66,9 @@ class Simulation {
   std::size_t injected() const;  // through inflow patches
   std::size_t migrated() const;  // sent to another rank, counted once per move between ranks
   std::int64_t collisions() const;
+  // Re-partitions (the same on every rank): the particle loads drifted apart past the
+  // scene's balance threshold (scene_balance.hpp).
+  std::uint64_t rebalances() const { return rebalances_; }
   MoveTally moves() const;
   std::vector<ObstacleTally> tallies() const;
   // Per boundary patch (Mesh::patches): what the particles gave the walls there.
@@ -87,6 +90,11 @@ class Simulation {
 
  private:
   void carry_tracers(double dt);
+  // Collective, every setup_.balance.every steps on several ranks: a new partition
+  // weighted by the particles if the most a rank holds exceeds the mean by the threshold;
+  // the particles, the inflow faces and the cells' collision state follow their cells.
+  void balance();
+  void keep_own_inflow_faces();
 
   TrackerScene setup_;
   std::optional<VelocityField> velocity_;  // tracer mode
@@ -103,6 +111,8 @@ class Simulation {
   // This rank's.
   std::size_t seeded_ = 0, injected_ = 0, migrated_ = 0;
   std::int64_t collisions_ = 0;
+  std::uint64_t rebalances_ = 0;
+  std::vector<Inflow> all_inflows_;  // the scene's, every face: a rank keeps its own cells'
 };
 
 }  // namespace cosim::tracker

@@ -21,6 +21,7 @@ struct RunSummary {
                                           // seeded + injected - moves.removed
   std::int64_t collisions = 0;            // DSMC collisions, if the scene has them
   std::size_t migrated = 0;               // particles sent between ranks
+  std::uint64_t rebalances = 0;           // re-partitions by particles (scene_balance.hpp)
   MoveTally moves;
   double wall_seconds = 0.0;
   double setup_seconds = 0.0;  // of this rank: the scene read, the mesh built, the gas seeded

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 
 #include "tracker/mesh/box_mesh.hpp"
@@ -65,6 +66,26 @@ TEST(Partition, EveryCellInOnePartBalancedAndDeterministic) {
       EXPECT_EQ(partition_cells(mesh, parts), part);
     }
   }
+}
+
+// Weights 20 in the cells x < 5 of a 20^3 box and 1 elsewhere: the parts hold equal
+// weight, so the heavy quarter is split between more parts than its share of the cells.
+TEST(Partition, WeightsBalanceTheirSumNotTheCells) {
+  const Mesh mesh = box({20, 20, 20});
+  std::vector<int> weight(static_cast<std::size_t>(mesh.cell_count()), 1);
+  for (Index c = 0; c < mesh.cell_count(); ++c)
+    if (c % 20 < 5) weight[static_cast<std::size_t>(c)] = 20;
+  const long long total = std::accumulate(weight.begin(), weight.end(), 0LL);
+  for (int parts : {2, 4}) {
+    const std::vector<int> part = partition_cells(mesh, parts, weight);
+    std::vector<long long> load(static_cast<std::size_t>(parts), 0);
+    for (std::size_t c = 0; c < part.size(); ++c) load[static_cast<std::size_t>(part[c])] += weight[c];
+    for (long long l : load) EXPECT_LE(static_cast<double>(l), 1.04 * static_cast<double>(total) / parts) << parts;
+    EXPECT_EQ(partition_cells(mesh, parts, weight), part);
+  }
+  weight[3] = 0;
+  EXPECT_THROW(partition_cells(mesh, 2, weight), std::invalid_argument);
+  EXPECT_THROW(partition_cells(mesh, 2, std::vector<int>(5, 1)), std::invalid_argument);
 }
 
 TEST(Partition, OnePartWithoutMetisAndBadCountsRefused) {

@@ -26,6 +26,7 @@
 #include "tracker/program/adapter.hpp"
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/seed_particles.hpp"
+#include "tracker/program/simulation.hpp"
 #include "tracker/program/standalone.hpp"
 
 namespace cosim::tracker {
@@ -316,6 +317,52 @@ participants:
   EXPECT_EQ(gas.moves().lost, 0);
   EXPECT_GT(gas.migrated(), 100u);
   EXPECT_GT(gas.tallies().at(0).overrun, 10);
+}
+
+// A closed box whose left half is mostly a wall block, with collisions: the partition by
+// cells gives one rank far fewer particles. The first step's check re-partitions by
+// particles, after which the loads are even; particles are kept and none lost; and ten
+// steps from a state saved under the first partition repeat bit for bit (the state holds
+// the owners).
+TEST(TwoRanks, ParticleWeightedBalanceEvensTheLoads) {
+  const scene::Scene scene = scene::load_scene_from_string(
+      "time: {end: 7.0e-8}\ncoupling: {window: 7.0e-8}\n"
+      "domain: {min: [0, 0, 0], max: [2.0e-4, 1.0e-4, 1.0e-4]}\neffects: [rarefied_gas]\n"
+      "participants:\n  tracker:\n    dt: 7.0e-9\n    options:\n"
+      "      mesh: {type: box, cells: [16, 6, 6]}\n"
+      "      boundaries: {default: {kind: specular}}\n"
+      "      collisions: {species: Ar, model: vss}\n"
+      "      obstacles:\n"
+      "        - {name: block, shape: {box: {centre: [0.5e-4, 0.5e-4, 0.5e-4], half_extents: [0.45e-4, 0.6e-4, "
+      "0.6e-4]}}, wall: {kind: diffuse, temperature: 273.15}}\n"
+      "      particles: {per_cell: 20, temperature: 273.15, mass: 6.63e-26, weight: 3.5e6, seed: 3}\n"
+      "      balance: {every: 5, threshold: 1.2}\n",
+      "balance.yaml");
+  Simulation gas(scene, {}, Ranks(MPI_COMM_WORLD));
+  const auto imbalance = [&] {
+    std::vector<long long> held(2, 0);
+    held[static_cast<std::size_t>(rank())] = static_cast<long long>(gas.swarm().size());
+    gas.decomposition().ranks().sum(held);
+    return static_cast<double>(std::max(held[0], held[1])) / (0.5 * static_cast<double>(held[0] + held[1]));
+  };
+  const double before = imbalance();
+  ASSERT_GT(before, 1.3) << "the cells' partition should load the ranks unevenly here";
+  const std::vector<double> start = gas.state();
+  gas.reseed(1);
+  for (int k = 0; k < 10; ++k) gas.step(7.0e-9);
+  const double after = imbalance();
+  std::printf("balance: max/mean %.3f with the cells' partition, %.3f after %llu re-partition(s)\n", before, after,
+              static_cast<unsigned long long>(gas.rebalances()));
+  EXPECT_GE(gas.rebalances(), 1u);
+  EXPECT_LT(after, 1.1);
+  EXPECT_EQ(gas.particles(), gas.seeded());
+  EXPECT_EQ(gas.moves().lost, 0);
+  EXPECT_GT(gas.collisions(), 100);
+  const std::vector<double> end = gas.state();
+  gas.restore(start);
+  gas.reseed(1);
+  for (int k = 0; k < 10; ++k) gas.step(7.0e-9);
+  EXPECT_TRUE(gas.state() == end) << "ten steps after restore() differ";
 }
 
 // A gas that draws no random numbers after seeding (specular walls and ball, a permeable

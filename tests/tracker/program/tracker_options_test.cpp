@@ -128,6 +128,9 @@ TEST(TrackerOptions, ParticleMistakesNameTheKey) {
   EXPECT_ERROR(walls + "      particles: {total: 9, temperature: 1, mass: 1, colour: red}\n",
                "particles.colour = red: unknown key");
   EXPECT_ERROR(walls + kParticles + "      velocity: 3\n", "options.velocity = 3: unknown key");
+  EXPECT_ERROR(walls + kParticles + "      balance: {every: -1}\n", "balance.every = -1");
+  EXPECT_ERROR(walls + kParticles + "      balance: {threshold: 0.9}\n", "balance.threshold = 0.9");
+  EXPECT_ERROR(walls + kParticles + "      balance: {often: 3}\n", "balance.often = 3: unknown key");
 }
 
 TEST(TrackerOptions, ParticleOutputDefaultsToEveryFieldWriteOfAllParticles) {
