@@ -3,9 +3,10 @@
 
     bench/tracker_scaling/run.py [--tracker build/release/bin/cosim-tracker] [--cells 64] [--steps 20] [--ranks 1 2 4]
 
-Each rank runs under /usr/bin/time, which reports its peak resident memory; cosim-tracker
-prints rank 0's setup time (scene read, mesh, locator, obstacles, partition, seeding) and the
-run's wall time. The time per step is (wall - setup) / steps, the start and end writes
+Each rank runs under /usr/bin/time, which reports its peak resident memory (the ranks'
+peaks are printed in ascending order: /usr/bin/time does not say which rank is which);
+cosim-tracker prints rank 0's setup time (mesh, locator, obstacles, partition, seeding,
+the run file created; the scene was read before) and the run's wall time. The time per step is (wall - setup) / steps, the start and end writes
 included. On a machine with fewer cores than ranks, the ranks share cores (oversubscribed):
 then only setup and memory per rank mean anything.
 """
@@ -22,14 +23,17 @@ HERE = Path(__file__).resolve().parent
 
 def scene_text(cells, steps):
     text = (HERE / "scene.yaml").read_text()
-    side = cells * 1.0e-5
-    text = text.replace("cells: [64, 64, 64]", f"cells: [{cells}, {cells}, {cells}]")
-    text = text.replace("max: [6.4e-4, 6.4e-4, 6.4e-4]", f"max: [{side:g}, {side:g}, {side:g}]")
-    text = text.replace("centre: [3.2e-4, 3.2e-4, 3.2e-4], radius: 1.0e-4",
-                        f"centre: [{side / 2:g}, {side / 2:g}, {side / 2:g}], radius: {side / 6.4:g}")
-    end = steps * 1.0e-8
-    return text.replace("time: {end: 2.0e-7}", f"time: {{end: {end:g}}}").replace(
-        "coupling: {window: 2.0e-7}", f"coupling: {{window: {end:g}}}")
+    side, end = cells * 1.0e-5, steps * 1.0e-8
+    for old, new in [("cells: [64, 64, 64]", f"cells: [{cells}, {cells}, {cells}]"),
+                     ("max: [6.4e-4, 6.4e-4, 6.4e-4]", f"max: [{side:g}, {side:g}, {side:g}]"),
+                     ("centre: [3.2e-4, 3.2e-4, 3.2e-4], radius: 1.0e-4",
+                      f"centre: [{side / 2:g}, {side / 2:g}, {side / 2:g}], radius: {side / 6.4:g}"),
+                     ("time: {end: 2.0e-7}", f"time: {{end: {end:g}}}"),
+                     ("coupling: {window: 2.0e-7}", f"coupling: {{window: {end:g}}}")]:
+        if old not in text:
+            sys.exit(f"bench/tracker_scaling/scene.yaml no longer has '{old}': update run.py")
+        text = text.replace(old, new)
+    return text
 
 
 def run(tracker, ranks, scene, out):
@@ -57,7 +61,7 @@ def main():
         scene = Path(scratch) / "scene.yaml"
         scene.write_text(scene_text(args.cells, args.steps))
         print(f"{args.cells}^3 cells, {args.steps} steps")
-        print(f"{'ranks':>5} {'particles':>10} {'setup s':>8} {'s/step':>8} {'peak MB per rank':>30}")
+        print(f"{'ranks':>5} {'particles':>10} {'setup s':>8} {'s/step':>8} {'peak MB per rank, ascending':>30}")
         for ranks in args.ranks:
             peaks, wall, setup, particles = run(args.tracker, ranks, str(scene), str(Path(scratch) / "run.h5"))
             per_step = (wall - setup) / args.steps

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -12,32 +13,51 @@ namespace cosim::tracker {
 
 Decomposition::Decomposition(const Mesh& mesh, Ranks ranks)
     : ranks_(ranks), owner_(static_cast<std::size_t>(mesh.cell_count()), 0) {
-  if (ranks_.size() > 1) adopt([&] { return partition_cells(mesh, ranks_.size()); });
+  if (ranks_.size() > 1) owner_ = agreed([&] { return partition_cells(mesh, ranks_.size()); });
 }
 
-void Decomposition::repartition(const Mesh& mesh, std::span<const double> particles) {
-  if (ranks_.size() == 1) return;
-  adopt([&] {
-    // Scaled down if need be: METIS adds the weights in 32-bit integers.
-    double total = 0;
-    for (const double n : particles) total += n;
-    const double scale = std::min(1.0, 1.0e9 / std::max(total, 1.0));
+std::vector<int> Decomposition::proposal(const Mesh& mesh, std::span<const double> particles) const {
+  if (ranks_.size() == 1) return owner_;
+  return agreed([&] {
+    // The particles' weights add up to 100 per cell on average (fewer if that passes 1e9:
+    // METIS adds them in 32-bit integers), every cell 1 more.
+    const double total = std::max(std::accumulate(particles.begin(), particles.end(), 0.0), 1.0);
+    const double scale = std::min(1.0e9, 100.0 * static_cast<double>(particles.size())) / total;
     std::vector<int> weight;
     weight.reserve(particles.size());
     for (const double n : particles) weight.push_back(1 + static_cast<int>(std::lround(n * scale)));
-    return partition_cells(mesh, ranks_.size(), weight);
+    std::vector<int> part = partition_cells(mesh, ranks_.size(), weight);
+    // METIS numbers its parts as it likes: each part goes to the rank holding most of its
+    // particles now (greedily, the largest overlaps first), so a small shift moves few.
+    const auto ranks = static_cast<std::size_t>(ranks_.size());
+    std::vector<double> overlap(ranks * ranks, 0.0);  // [part][rank]
+    for (std::size_t c = 0; c < part.size(); ++c)
+      overlap[static_cast<std::size_t>(part[c]) * ranks + static_cast<std::size_t>(owner_[c])] += particles[c] + 1e-3;
+    std::vector<std::size_t> order(overlap.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return overlap[a] > overlap[b]; });
+    std::vector<int> rank_of(ranks, -1);
+    std::vector<bool> taken(ranks, false);
+    for (const std::size_t k : order)
+      if (const std::size_t p = k / ranks, r = k % ranks; rank_of[p] < 0 && !taken[r]) {
+        rank_of[p] = static_cast<int>(r);
+        taken[r] = true;
+      }
+    for (int& p : part) p = rank_of[static_cast<std::size_t>(p)];
+    return part;
   });
 }
 
-void Decomposition::adopt(const std::function<std::vector<int>()>& partition) {
+std::vector<int> Decomposition::agreed(const std::function<std::vector<int>()>& partition) const {
   // METIS is deterministic for a fixed seed, but only rank 0's answer is certain to be the
   // same everywhere: one broadcast settles it for good (a rank with another METIS build).
   // Rank 0 says first whether it has one: if METIS fails there, every rank throws alike
   // instead of the others waiting for owners that never come.
+  std::vector<int> owners(owner_.size());
   std::string failure;
   if (ranks_.lead()) {
     try {
-      owner_ = partition();
+      owners = partition();
     } catch (const std::exception& e) {
       failure = e.what();
     }
@@ -45,7 +65,8 @@ void Decomposition::adopt(const std::function<std::vector<int>()>& partition) {
   int failed = failure.empty() ? 0 : 1;
   MPI_Bcast(&failed, 1, MPI_INT, 0, ranks_.comm());
   if (failed) throw std::runtime_error(ranks_.lead() ? failure : "rank 0 could not partition the mesh");
-  MPI_Bcast(owner_.data(), static_cast<int>(owner_.size()), MPI_INT, 0, ranks_.comm());
+  MPI_Bcast(owners.data(), static_cast<int>(owners.size()), MPI_INT, 0, ranks_.comm());
+  return owners;
 }
 
 void Decomposition::set_owners(std::vector<int> owners) {

@@ -1,7 +1,7 @@
 // One gas over several ranks: which rank owns each cell (partition.hpp, computed on rank 0
 // and broadcast, again with the particles as weights when the loads drift apart), and the
-// step's migration of particles to the owners of their cells (migration.hpp). Every rank keeps the whole mesh; a rank holds only the particles in its
-// own cells between steps.
+// step's migration of particles to the owners of their cells (migration.hpp). Every rank
+// keeps the whole mesh; a rank holds the particles in its own cells once they migrated.
 #pragma once
 
 #include <cstdint>
@@ -26,17 +26,19 @@ class Decomposition {
   // Collective: sends the swarm's particles in other ranks' cells there (migration.hpp);
   // returns how many left this rank.
   std::size_t migrate(Swarm& swarm);
-  // Collective: a new partition with every cell weighted by 1 + its particles (`particles`:
-  // per cell, the same on every rank), as rank 0's METIS gives it. The particles stay where
-  // they are until the next migrate().
-  void repartition(const Mesh& mesh, std::span<const double> particles);
-  // Owners as a state saved them (the same on every rank): std::invalid_argument unless one
-  // rank in range per cell.
+  // Collective: owners for a partition balanced by particles (`particles`: per cell, the
+  // same on every rank), as rank 0's METIS gives it with every cell weighted by its
+  // particles (and 1 % of the mean weight, so empty cells still spread), its parts numbered
+  // after the ranks that hold most of their particles now. Changes nothing here.
+  std::vector<int> proposal(const Mesh& mesh, std::span<const double> particles) const;
+  // New owners (a proposal, or those a state saved; the same on every rank):
+  // std::invalid_argument unless one rank in range per cell. The particles stay where they
+  // are until the next migrate().
   void set_owners(std::vector<int> owners);
 
  private:
   // Rank 0's partition, or its failure, on every rank.
-  void adopt(const std::function<std::vector<int>()>& partition);
+  std::vector<int> agreed(const std::function<std::vector<int>()>& partition) const;
 
   Ranks ranks_;
   std::vector<int> owner_;

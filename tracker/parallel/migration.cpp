@@ -75,13 +75,16 @@ std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks
   // NBX: synchronous sends complete only once received; a rank whose sends are all received
   // enters a non-blocking barrier and keeps receiving until every rank is in it.
   const int tag = kMigrationTags[round % 2];
+  for (const auto& [rank, bytes] : out) bytes_count(bytes.size());  // every size checked before a send is posted
   std::vector<MPI_Request> sends;
   for (auto& [rank, bytes] : out) {
     sends.emplace_back();
     MPI_Issend(bytes.data(), bytes_count(bytes.size()), MPI_BYTE, rank, tag, ranks.comm(), &sends.back());
   }
   MPI_Request barrier = MPI_REQUEST_NULL;
-  std::vector<std::byte> in;
+  // Unpacked by sender once all have come, not as they arrive: a cell's particles then
+  // stand in the same order in every run, and so draw the same random numbers.
+  std::map<int, std::vector<std::byte>> in;
   for (bool sent = false;;) {
     int arrived = 0;
     MPI_Status status;
@@ -89,9 +92,9 @@ std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks
     if (arrived) {
       int bytes = 0;
       MPI_Get_count(&status, MPI_BYTE, &bytes);
-      in.resize(static_cast<std::size_t>(bytes));
-      MPI_Recv(in.data(), bytes, MPI_BYTE, status.MPI_SOURCE, tag, ranks.comm(), MPI_STATUS_IGNORE);
-      unpack(in, swarm);
+      std::vector<std::byte>& from = in[status.MPI_SOURCE];
+      from.resize(static_cast<std::size_t>(bytes));
+      MPI_Recv(from.data(), bytes, MPI_BYTE, status.MPI_SOURCE, tag, ranks.comm(), MPI_STATUS_IGNORE);
     }
     int done = 0;
     if (!sent) {
@@ -105,6 +108,7 @@ std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks
       if (done) break;
     }
   }
+  for (const auto& [rank, bytes] : in) unpack(bytes, swarm);
   return left;
 }
 

@@ -25,9 +25,11 @@ void unpack(std::span<const std::byte> records, Swarm& swarm);
 
 // Collective: every particle whose cell `owner` gives to another rank leaves the swarm
 // for that rank, and what the others send here is appended. Returns how many left.
-// `round` counts the migrations (any count the ranks agree on): a rank may start the next
-// one before another has seen this one end, and the round's parity keeps their messages
-// apart.
+// Received particles are appended in the order of their senders' ranks. `round` counts
+// the migrations on the communicator: a rank may start the next one before another has
+// seen this one end, and the round's parity keeps their messages apart, so consecutive
+// migrations on one communicator must differ in parity (one Decomposition at a time per
+// communicator, or a collective between two that start their counts afresh).
 std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks, std::uint64_t round);
 
 }  // namespace cosim::tracker

@@ -18,11 +18,13 @@ constexpr int kTries = 1000;
 enum class Drawn : std::uint64_t { range_share = 0, cell_particles = 1 };
 
 // pcg64 keeps 127 bits of a stream number (the top bit is lost to the increment's low one):
-// the round above bit 65, what is drawn at bit 64, the key (a cell, or a range a << 32 | b
-// of 31-bit cell indices) below.
+// bit 126 set, so that no stream of the run's other generators (collisions: below 2^64)
+// is one of these; the round from bit 65, what is drawn at bit 64, the key (a cell, or a
+// range a << 32 | b of 31-bit cell indices) below.
 dsmc::Rng keyed(std::uint64_t seed, std::uint64_t round, Drawn what, std::uint64_t key) {
   using Stream = pcg_extras::pcg128_t;
-  return dsmc::Rng(seed, Stream(round) << 65 | Stream(static_cast<std::uint64_t>(what)) << 64 | Stream(key));
+  return dsmc::Rng(seed, Stream(1) << 126 | Stream(round) << 65 | Stream(static_cast<std::uint64_t>(what)) << 64 |
+                             Stream(key));
 }
 
 class Seeder {

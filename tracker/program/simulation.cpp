@@ -1,5 +1,7 @@
 #include "tracker/program/simulation.hpp"
 
+#include "tracker/program/seed_particles.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -191,12 +193,26 @@ void Simulation::step(double dt) {
 
 void Simulation::balance() {
   const Ranks& ranks = decomposition_.ranks();
-  std::vector<long long> held(static_cast<std::size_t>(ranks.size()), 0);
-  held[static_cast<std::size_t>(ranks.rank())] = static_cast<long long>(swarm_.size());
+  const auto max_over_mean = [&](const std::vector<double>& load) {
+    return *std::max_element(load.begin(), load.end()) / (std::accumulate(load.begin(), load.end(), 0.0) / ranks.size());
+  };
+  std::vector<double> held(static_cast<std::size_t>(ranks.size()), 0.0);
+  held[static_cast<std::size_t>(ranks.rank())] = static_cast<double>(swarm_.size());
   ranks.sum(held);
-  const double mean = static_cast<double>(std::accumulate(held.begin(), held.end(), 0LL)) / ranks.size();
-  if (!(static_cast<double>(*std::max_element(held.begin(), held.end())) > setup_.balance.threshold * mean)) return;
-  decomposition_.repartition(mesh(), counts());
+  const double now = max_over_mean(held);
+  if (!(now > setup_.balance.threshold && now > balance_floor_)) return;
+  const std::vector<double> count = counts();
+  std::vector<int> owners = decomposition_.proposal(mesh(), count);
+  std::vector<double> load(held.size(), 0.0);
+  for (std::size_t c = 0; c < owners.size(); ++c) load[static_cast<std::size_t>(owners[c])] += count[c];
+  // A partition that would not help (too few particles, or cells that cannot be split
+  // finer) is not taken, nor sought again until the loads drift 10 % further apart.
+  if (!(max_over_mean(load) < 0.9 * now)) {
+    balance_floor_ = 1.1 * now;
+    return;
+  }
+  balance_floor_ = 0.0;
+  decomposition_.set_owners(std::move(owners));
   migrated_ += decomposition_.migrate(swarm_);
   keep_own_inflow_faces();
   if (collider_) {
@@ -282,8 +298,9 @@ std::vector<double> Simulation::counts() const {
 }
 
 std::vector<CellMoments> Simulation::take_moments() {
-  // A rank's sums are zero outside its cells. Every rank sampled at every step: the sample
-  // count (the first value) is each rank's, not summed.
+  // A cell's sums are spread over the ranks whose particles were in it when sampled; they
+  // add up. Every rank sampled at every step: the sample count (the first value) is each
+  // rank's, not summed.
   std::vector<double> sums = sampler_.sums();
   decomposition_.ranks().sum(std::span(sums).subspan(1));
   sampler_.set_sums(sums);
@@ -308,6 +325,7 @@ std::vector<double> Simulation::state() const {
   out.put(static_cast<double>(migrated_));
   out.put(static_cast<double>(collisions_));
   out.put(static_cast<double>(rebalances_));
+  out.put(balance_floor_);
   // The partition may have changed since the start (balance()).
   if (decomposition_.ranks().size() > 1)
     for (const int owner : decomposition_.owners()) out.put(owner);
@@ -350,6 +368,7 @@ void Simulation::restore(std::span<const double> state) {
   const auto migrated = in.get_count<std::size_t>();
   const auto collisions = in.get_count<std::int64_t>();
   const auto rebalances = in.get_count<std::uint64_t>();
+  const double balance_floor = in.get();
   std::vector<int> owners;
   if (decomposition_.ranks().size() > 1)
     for (Index c = 0; c < mesh().cell_count(); ++c) owners.push_back(in.get_count<int>());
@@ -401,6 +420,7 @@ void Simulation::restore(std::span<const double> state) {
   migrated_ = migrated;
   collisions_ = collisions;
   rebalances_ = rebalances;
+  balance_floor_ = balance_floor;
 }
 
 }  // namespace cosim::tracker

@@ -1,7 +1,7 @@
 // The gas of a scene as cosim-tracker advances it, the same standalone and coupled: the
 // particles, their collisions, inflow, walls and obstacles, and what is sampled of them.
-// One step (step()) is what DSMC codes do per time step: sort by cell, collide, move,
-// inject, sample.
+// One step (step()) is what DSMC codes do per time step: migrate (over several ranks; now
+// and then re-partition), sort by cell, collide, move, inject, sample.
 //
 // Over several ranks (tracker/parallel) every rank holds the whole mesh and all obstacles
 // but only the particles it tracks: those in its cells at the start of a step. Particles
@@ -19,7 +19,6 @@
 #include "scene/scene.hpp"
 #include "tracker/program/collide.hpp"
 #include "tracker/program/scene_tracker.hpp"
-#include "tracker/program/seed_particles.hpp"
 #include "tracker/parallel/decomposition.hpp"
 #include "tracker/tracking/sampling.hpp"
 
@@ -112,6 +111,7 @@ class Simulation {
   std::size_t seeded_ = 0, injected_ = 0, migrated_ = 0;
   std::int64_t collisions_ = 0;
   std::uint64_t rebalances_ = 0;
+  double balance_floor_ = 0.0;  // max/mean a re-partition could not improve, times 1.1
   std::vector<Inflow> all_inflows_;  // the scene's, every face: a rank keeps its own cells'
 };
 

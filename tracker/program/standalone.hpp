@@ -24,7 +24,7 @@ struct RunSummary {
   std::uint64_t rebalances = 0;           // re-partitions by particles (scene_balance.hpp)
   MoveTally moves;
   double wall_seconds = 0.0;
-  double setup_seconds = 0.0;  // of this rank: the scene read, the mesh built, the gas seeded
+  double setup_seconds = 0.0;  // of this rank: the mesh built, the gas seeded, the file made
 };
 
 // Writes `output` (empty: the scene's output.file). Throws scene::SceneError for a bad

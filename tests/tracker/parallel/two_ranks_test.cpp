@@ -363,6 +363,14 @@ TEST(TwoRanks, ParticleWeightedBalanceEvensTheLoads) {
   gas.reseed(1);
   for (int k = 0; k < 10; ++k) gas.step(7.0e-9);
   EXPECT_TRUE(gas.state() == end) << "ten steps after restore() differ";
+
+  // One particle: max/mean is 2 whatever the partition, so none is taken.
+  std::string alone = scene.text;
+  alone.replace(alone.find("per_cell: 20"), 12, "total: 1");
+  Simulation one(scene::load_scene_from_string(alone, "alone.yaml"), {}, Ranks(MPI_COMM_WORLD));
+  for (int k = 0; k < 30; ++k) one.step(7.0e-9);
+  EXPECT_EQ(one.rebalances(), 0u);
+  EXPECT_EQ(one.particles(), 1u);
 }
 
 // A gas that draws no random numbers after seeding (specular walls and ball, a permeable
