@@ -45,10 +45,11 @@ int standalone(const std::string& scene, const std::string& output) {
     const cosim::tracker::RunSummary s = cosim::tracker::run_tracker(cosim::scene::load_scene(scene), output, ranks);
     if (!ranks.lead()) return s.moves.lost > 0 ? 1 : 0;
     std::fprintf(stderr, "cosim-tracker: %llu steps, %zu particles seeded, %zu entered, %zu remain, %lld collisions, "
-                         "%.2f s (setup %.2f s)\n  %s\n",
+                         "%.2f s (setup %.2f s)\n  %s\n  steps%s: %s\n",
                  static_cast<unsigned long long>(s.steps), s.seeded, s.injected, s.remaining,
                  static_cast<long long>(s.collisions), s.wall_seconds, s.setup_seconds,
-                 cosim::tracker::summary(s.moves).c_str());
+                 cosim::tracker::summary(s.moves).c_str(), ranks.size() > 1 ? " on rank 0" : "",
+                 s.stages.summary().c_str());
     if (ranks.size() > 1)
       std::fprintf(stderr, "cosim-tracker: %d ranks, %zu particles moved between them, %llu re-partitions\n",
                    ranks.size(), s.migrated, static_cast<unsigned long long>(s.rebalances));

@@ -173,28 +173,35 @@ void Simulation::step(double dt) {
   // The whole mesh is on every rank, so the last step's moves crossed into other ranks'
   // cells freely, and a wall that moved since may have put an overrun particle back in one:
   // all of them go to their cells' owners at once, before the collisions need them there.
-  migrated_ += decomposition_.migrate(swarm_);
-  if (const int every = setup_.balance.every; decomposition_.ranks().size() > 1 && every > 0 && steps_ % every == 0)
-    balance();
+  stages_.time(Stage::migrate, [&] {
+    migrated_ += decomposition_.migrate(swarm_);
+    if (const int every = setup_.balance.every; decomposition_.ranks().size() > 1 && every > 0 && steps_ % every == 0)
+      balance();
+  });
   // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
-  swarm_.sort_by_cell(mesh().cell_count());
-  if (collider_) collisions_ += collider_->collide(swarm_, dt);
-  if (setup_.tracers)
-    carry_tracers(dt);
-  else
-    swarm_.move_all(*setup_.domain, setup_.obstacles, dt, random_, moves_, tallies_, patch_tallies_);
-  for (const Inflow& inflow : setup_.inflows)
-    injected_ += static_cast<std::size_t>(
-        inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_, tallies_, patch_tallies_));
+  stages_.time(Stage::sort, [&] { swarm_.sort_by_cell(mesh().cell_count()); });
+  if (collider_) stages_.time(Stage::collide, [&] { collisions_ += collider_->collide(swarm_, dt); });
+  stages_.time(Stage::move, [&] {
+    if (setup_.tracers)
+      carry_tracers(dt);
+    else
+      swarm_.move_all(*setup_.domain, setup_.obstacles, dt, random_, moves_, tallies_, patch_tallies_);
+  });
+  stages_.time(Stage::inject, [&] {
+    for (const Inflow& inflow : setup_.inflows)
+      injected_ += static_cast<std::size_t>(
+          inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_, tallies_, patch_tallies_));
+  });
   // Where they are: a rank's sums over cells it does not own add up with the owner's.
-  sampler_.sample(swarm_);
+  stages_.time(Stage::sample, [&] { sampler_.sample(swarm_); });
   ++steps_;
 }
 
 void Simulation::balance() {
   const Ranks& ranks = decomposition_.ranks();
   const auto max_over_mean = [&](const std::vector<double>& load) {
-    return *std::max_element(load.begin(), load.end()) / (std::accumulate(load.begin(), load.end(), 0.0) / ranks.size());
+    const double mean = std::accumulate(load.begin(), load.end(), 0.0) / ranks.size();
+    return *std::max_element(load.begin(), load.end()) / mean;
   };
   std::vector<double> held(static_cast<std::size_t>(ranks.size()), 0.0);
   held[static_cast<std::size_t>(ranks.rank())] = static_cast<double>(swarm_.size());

@@ -19,6 +19,7 @@
 #include "scene/scene.hpp"
 #include "tracker/program/collide.hpp"
 #include "tracker/program/scene_tracker.hpp"
+#include "tracker/program/stage_times.hpp"
 #include "tracker/parallel/decomposition.hpp"
 #include "tracker/tracking/sampling.hpp"
 
@@ -68,6 +69,8 @@ class Simulation {
   // Re-partitions (the same on every rank): the particle loads drifted apart past the
   // scene's balance threshold (scene_balance.hpp).
   std::uint64_t rebalances() const { return rebalances_; }
+  // This rank's wall time per stage of step() since the start (not restored by restore()).
+  const StageTimes& stages() const { return stages_; }
   MoveTally moves() const;
   std::vector<ObstacleTally> tallies() const;
   // Per boundary patch (Mesh::patches): what the particles gave the walls there.
@@ -111,6 +114,7 @@ class Simulation {
   std::size_t seeded_ = 0, injected_ = 0, migrated_ = 0;
   std::int64_t collisions_ = 0;
   std::uint64_t rebalances_ = 0;
+  StageTimes stages_;
   double balance_floor_ = 0.0;  // max/mean a re-partition could not improve, times 1.1
   std::vector<Inflow> all_inflows_;  // the scene's, every face: a rank keeps its own cells'
 };

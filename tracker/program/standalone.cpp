@@ -78,6 +78,7 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
   summary.remaining = gas.particles();
   summary.migrated = gas.migrated();
   summary.rebalances = gas.rebalances();
+  summary.stages = gas.stages();
   summary.collisions = gas.collisions();
   summary.moves = gas.moves();
   summary.wall_seconds = participant::seconds_since(started);

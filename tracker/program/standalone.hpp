@@ -10,6 +10,7 @@
 
 #include "scene/scene.hpp"
 #include "tracker/parallel/ranks.hpp"
+#include "tracker/program/stage_times.hpp"
 #include "tracker/tracking/move.hpp"
 
 namespace cosim::tracker {
@@ -25,6 +26,7 @@ struct RunSummary {
   MoveTally moves;
   double wall_seconds = 0.0;
   double setup_seconds = 0.0;  // of this rank: the mesh built, the gas seeded, the file made
+  StageTimes stages;           // of this rank's steps
 };
 
 // Writes `output` (empty: the scene's output.file). Throws scene::SceneError for a bad

@@ -54,7 +54,10 @@ TEST(Migration, RoundsAfterRoundsOnEveryRankCount) {
     std::this_thread::sleep_for(std::chrono::milliseconds(pause(random)));
     d.migrate(swarm);
     for (std::size_t i = 1; i < swarm.size(); ++i) {
-      const auto holder = [&](std::size_t k) { return swarm.particle(k).v.x() == rank ? -1.0 : swarm.particle(k).v.x(); };
+      const auto holder = [&](std::size_t k) {
+        const double v = swarm.particle(k).v.x();
+        return v == rank ? -1.0 : v;
+      };
       unordered += holder(i) < holder(i - 1);
     }
     // Counted, not asserted: a rank that left the loop early would leave the others waiting.

@@ -21,7 +21,9 @@ TrackerScene tracker_with(const std::string& particles, const std::string& mesh 
       "scene.yaml"));
 }
 
-Swarm seeded(const TrackerScene& t) { return seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {})); }
+Swarm seeded(const TrackerScene& t) {
+  return seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}));
+}
 
 TEST(Seeding, UniformInTheCellsOutsideTheWallsWithAMaxwellian) {
   // mass = k_B: the velocity variance per component is T.
@@ -73,7 +75,7 @@ TEST(Seeding, TotalFollowsTheFreeVolumeOfUnequalCells) {
   }
 }
 
-TEST(Seeding, PerCellDropsDrawsInsideWallsAndKeysEachCellsStream) {
+TEST(Seeding, PerCellDropsDrawsInsideWallsAndRepeatsForItsSeed) {
   // 8 cells, each a corner of the ball: every cell keeps its free part's share of 2000 draws.
   const TrackerScene t = tracker_with("{per_cell: 2000, temperature: 1, mass: 1.380649e-23, seed: 9}");
   const Swarm swarm = seeded(t);
@@ -93,7 +95,8 @@ TEST(Seeding, AlmostNoFreeSpaceIsAnError) {
       "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
       "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
       "      mesh: {type: box, cells: [2, 2, 2]}\n      boundaries: {default: {kind: specular}}\n"
-      "      obstacles:\n        - {name: block, shape: {box: {centre: [0.5, 0.5, 0.5], half_extents: [0.75, 0.75, 0.4999]}}}\n"
+      "      obstacles:\n"
+      "        - {name: block, shape: {box: {centre: [0.5, 0.5, 0.5], half_extents: [0.75, 0.75, 0.4999]}}}\n"
       "      particles: {total: 10, temperature: 1, mass: 1}\n",
       "scene.yaml"));
   EXPECT_THROW(seeded(t), std::runtime_error);

@@ -1,0 +1,32 @@
+// Wall seconds per stage of the tracker's step, summed over the steps since the start: what
+// each stage of a run costs (cosim-tracker prints them; bench READMEs quote them).
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <string>
+
+namespace cosim::tracker {
+
+enum class Stage { migrate, sort, collide, move, inject, sample };
+inline constexpr std::array kStageNames{"migrate", "sort", "collide", "move", "inject", "sample"};
+
+class StageTimes {
+ public:
+  // Runs f and adds its wall time to the stage's.
+  template <class F>
+  void time(Stage stage, F&& f) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+    seconds_[static_cast<std::size_t>(stage)] += took.count();
+  }
+  double seconds(Stage stage) const { return seconds_[static_cast<std::size_t>(stage)]; }
+  // "migrate 0.12 s, sort 0.80 s, ...": the stages that took any time.
+  std::string summary() const;
+
+ private:
+  std::array<double, kStageNames.size()> seconds_{};
+};
+
+}  // namespace cosim::tracker
