@@ -37,6 +37,10 @@ void Ranks::max(std::span<double> values) const {
   if (size_ > 1) MPI_Allreduce(MPI_IN_PLACE, values.data(), count(values.size()), MPI_DOUBLE, MPI_MAX, comm_);
 }
 
+void Ranks::broadcast(std::span<int> values) const {
+  if (size_ > 1) MPI_Bcast(values.data(), count(values.size()), MPI_INT, 0, comm_);
+}
+
 std::vector<double> Ranks::gather(std::span<const double> values) const {
   if (size_ == 1) return {values.begin(), values.end()};
   const int mine = count(values.size());

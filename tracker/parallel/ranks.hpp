@@ -25,6 +25,8 @@ class Ranks {
   long long sum(long long value) const;
   // Each value replaced by its largest over the ranks, on every rank (collective).
   void max(std::span<double> values) const;
+  // Rank 0's values on every rank (collective; the same count everywhere).
+  void broadcast(std::span<int> values) const;
   // Every rank's values, rank after rank, on rank 0; nothing on the others (collective).
   std::vector<double> gather(std::span<const double> values) const;
 

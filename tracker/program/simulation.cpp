@@ -333,8 +333,8 @@ std::vector<double> Simulation::state() const {
   out.put(static_cast<double>(collisions_));
   out.put(static_cast<double>(rebalances_));
   out.put(balance_floor_);
-  // The partition may have changed since the start (balance()).
-  if (decomposition_.ranks().size() > 1)
+  // The partition may have changed since the start (balance()): rank 0 keeps it for all.
+  if (decomposition_.ranks().size() > 1 && decomposition_.ranks().lead())
     for (const int owner : decomposition_.owners()) out.put(owner);
   out.put(static_cast<double>(swarm_.size()));
   for (std::size_t i = 0; i < swarm_.size(); ++i) {
@@ -377,7 +377,8 @@ void Simulation::restore(std::span<const double> state) {
   const auto rebalances = in.get_count<std::uint64_t>();
   const double balance_floor = in.get();
   std::vector<int> owners;
-  if (decomposition_.ranks().size() > 1)
+  const bool partitioned = decomposition_.ranks().size() > 1;
+  if (partitioned && decomposition_.ranks().lead())
     for (Index c = 0; c < mesh().cell_count(); ++c) owners.push_back(in.get_count<int>());
   Swarm swarm(objects);
   std::vector<csg::State> states(static_cast<std::size_t>(objects));
@@ -406,7 +407,11 @@ void Simulation::restore(std::span<const double> state) {
   for (double& x : sums) x = in.get();
   in.finish();
 
-  if (!owners.empty()) {
+  if (partitioned) {
+    // Every rank restores at once (participant/mpi_team.hpp); a rank that threw above ends
+    // the job (MPI_Abort) rather than leave the others waiting here.
+    owners.resize(static_cast<std::size_t>(mesh().cell_count()));
+    decomposition_.ranks().broadcast(owners);
     try {
       decomposition_.set_owners(std::move(owners));
     } catch (const std::invalid_argument& e) {

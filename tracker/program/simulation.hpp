@@ -87,7 +87,8 @@ class Simulation {
   // cell, the sampler's sums and the rank's totals. Random generators are not in it (see
   // reseed()). A state restores on the rank, and the rank count, that wrote it.
   std::vector<double> state() const;
-  // std::runtime_error for a state that is not one of this scene's.
+  // std::runtime_error for a state that is not one of this scene's. Collective over the
+  // ranks (rank 0's state holds the cells' owners for all).
   void restore(std::span<const double> state);
 
  private:
