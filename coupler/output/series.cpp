@@ -9,7 +9,7 @@ namespace {
 // chunks, and the partly filled last chunk rewritten at every flush stays small.
 constexpr hsize_t kChunkRows = 256;
 
-int rank_for(hsize_t columns) { return columns > 1 ? 2 : 1; }
+int rank_for(hsize_t columns, bool table) { return table || columns > 1 ? 2 : 1; }
 
 }  // namespace
 
@@ -17,12 +17,12 @@ Series::Series(Handle dataset, std::string path, hsize_t rows, hsize_t columns, 
     : dataset_(std::move(dataset)), path_(std::move(path)), rows_(rows), columns_(columns), rank_(rank) {}
 
 Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize_t columns,
-                         hsize_t chunk_rows, int rank) {
+                         hsize_t chunk_rows, bool table) {
   const std::string where = "dataset " + child_path(group, name);
   const hsize_t dims[2] = {0, columns};
   const hsize_t max_dims[2] = {H5S_UNLIMITED, columns};
   const hsize_t chunk[2] = {chunk_rows, columns};
-  if (rank == 0) rank = rank_for(columns);
+  const int rank = rank_for(columns, table);
   Handle space(H5Screate_simple(rank, dims, max_dims), H5Sclose, "make dataspace for " + where);
   Handle props(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "make properties for " + where);
   check(H5Pset_chunk(props.get(), rank, chunk), "set chunks of " + where);
@@ -32,15 +32,17 @@ Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize
 }
 
 Series Series::create(hid_t group, const std::string& name, hsize_t columns, hid_t type) {
-  Handle ds = create_extendible(group, name, type, columns, kChunkRows);
-  std::string path = path_of(ds.get());
-  return Series(std::move(ds), std::move(path), 0, columns, rank_for(columns));
+  return make(group, name, columns, type, false);
 }
 
 Series Series::create_table(hid_t group, const std::string& name, hsize_t columns, hid_t type) {
-  Handle ds = create_extendible(group, name, type, columns, kChunkRows, 2);
+  return make(group, name, columns, type, true);
+}
+
+Series Series::make(hid_t group, const std::string& name, hsize_t columns, hid_t type, bool table) {
+  Handle ds = create_extendible(group, name, type, columns, kChunkRows, table);
   std::string path = path_of(ds.get());
-  return Series(std::move(ds), std::move(path), 0, columns, 2);
+  return Series(std::move(ds), std::move(path), 0, columns, rank_for(columns, table));
 }
 
 Series Series::open(hid_t group, const std::string& name) {

@@ -12,11 +12,11 @@
 
 namespace cosim::output {
 
-// A chunked dataset of 0 rows of `columns` values (1-d when columns == 1 and rank is 1)
+// A chunked dataset of 0 rows of `columns` values (1-d when columns == 1, unless `table`)
 // with an unlimited first dimension, so rows can be added later without moving what is
 // written.
 Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize_t columns,
-                         hsize_t chunk_rows, int rank = 0);
+                         hsize_t chunk_rows, bool table = false);
 
 class Series {
  public:
@@ -42,6 +42,7 @@ class Series {
 
  private:
   Series(Handle dataset, std::string path, hsize_t rows, hsize_t columns, int rank);
+  static Series make(hid_t group, const std::string& name, hsize_t columns, hid_t type, bool table);
   void append_raw(const void* row, hid_t type);
 
   Handle dataset_;
