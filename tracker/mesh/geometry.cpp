@@ -69,4 +69,11 @@ Eigen::AlignedBox3d cell_box(const Mesh& mesh, Index cell) {
   return box;
 }
 
+double whole_diagonal(const Mesh& mesh) {
+  if (mesh.whole_diagonal > 0.0) return mesh.whole_diagonal;
+  Eigen::AlignedBox3d box;
+  for (const Vec3& x : mesh.vertices) box.extend(x);
+  return box.isEmpty() ? 0.0 : box.diagonal().norm();
+}
+
 }  // namespace cosim::tracker

@@ -17,5 +17,7 @@ Vec3 vertex_mean(const Mesh& mesh, Index face);
 // The box around a cell's vertices (its planes' intersection pokes out of it by the order
 // of the faces' non-planarity).
 Eigen::AlignedBox3d cell_box(const Mesh& mesh, Index cell);
+// The diagonal of the box around the whole mesh's vertices (Mesh::whole_diagonal for a part).
+double whole_diagonal(const Mesh& mesh);
 
 }  // namespace cosim::tracker

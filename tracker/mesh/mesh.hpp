@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct Face {
 static_assert(sizeof(Face) == 64);
 
 constexpr Index boundary_code(Index patch) { return -1 - patch; }
+// The neighbour of a part's ghost across a face to a cell outside the part: no particle
+// moves in a ghost, so none reaches such a face.
+constexpr Index kBeyondPart = std::numeric_limits<Index>::min();
 constexpr Index patch_of(Index code) { return -1 - code; }
 
 struct Mesh {
@@ -46,7 +50,17 @@ struct Mesh {
   std::vector<Vec3> shifts{Vec3::Zero()};  // periodic translations; 0 is "none"
   std::string source;                   // file or generator, for messages
 
+  // A rank's part of a larger mesh (part.hpp): its last `ghosts` cells surround the others
+  // and belong to other ranks, global[c] is cell c's index in the whole mesh, and faces
+  // beyond the part have the neighbour kBeyondPart. A whole mesh has none of these.
+  std::vector<Index> global;
+  Index ghosts = 0;
+  double whole_diagonal = 0.0;  // the whole mesh's bounding-box diagonal (0: this one's)
+
   Index cell_count() const { return static_cast<Index>(cell_faces.size()) - 1; }
+  // The cells whose particles are tracked here: all but the ghosts.
+  Index own_cells() const { return cell_count() - ghosts; }
+  Index global_cell(Index cell) const { return global.empty() ? cell : global[static_cast<std::size_t>(cell)]; }
   Index face_count() const { return static_cast<Index>(faces.size()); }
   Index vertex_count(Index face) const {
     return face_vertex_begin[face + 1] - face_vertex_begin[face];

@@ -77,6 +77,12 @@ void Decomposition::set_owners(std::vector<int> owners) {
   owner_ = std::move(owners);
 }
 
-std::size_t Decomposition::migrate(Swarm& swarm) { return tracker::migrate(swarm, owner_, ranks_, migrations_++); }
+std::size_t Decomposition::migrate(Swarm& swarm, const Numbering& numbering) {
+  return tracker::migrate(swarm, owner_, ranks_, migrations_++, numbering);
+}
+
+std::size_t Decomposition::hand_over(Handover& handover, const Numbering& numbering) {
+  return tracker::migrate(handover, owner_, ranks_, migrations_++, numbering);
+}
 
 }  // namespace cosim::tracker

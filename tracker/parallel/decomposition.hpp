@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "tracker/parallel/migration.hpp"
 #include "tracker/parallel/ranks.hpp"
 #include "tracker/tracking/swarm.hpp"
 
@@ -24,8 +25,11 @@ class Decomposition {
   int owner(Index cell) const { return owner_[static_cast<std::size_t>(cell)]; }
   bool owns(Index cell) const { return owner(cell) == ranks_.rank(); }
   // Collective: sends the swarm's particles in other ranks' cells there (migration.hpp);
-  // returns how many left this rank.
-  std::size_t migrate(Swarm& swarm);
+  // returns how many left this rank. `numbering`: the swarm's cells are a part's.
+  std::size_t migrate(Swarm& swarm, const Numbering& numbering = {});
+  // Collective: the moves handed over go on to their cells' owners, and the handover holds
+  // those that came here; returns how many left.
+  std::size_t hand_over(Handover& handover, const Numbering& numbering);
   // Collective: owners for a partition balanced by particles (`particles`: per cell, the
   // same on every rank), as rank 0's METIS gives it with every cell weighted by its
   // particles (and 1 % of the mean weight, so empty cells still spread), its parts numbered

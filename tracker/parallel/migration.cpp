@@ -4,6 +4,7 @@
 #include <map>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace cosim::tracker {
@@ -17,8 +18,22 @@ struct Record {
 };
 static_assert(sizeof(Record) == 40);
 
+// A move handed over: the particle as the move has it, and the rest of the move.
+struct FlightRecord {
+  double x[3];
+  double v[3];
+  double remaining;
+  Index cell;
+  std::int32_t entered;
+  std::int32_t streak;
+  std::int32_t unused = 0;
+};
+static_assert(sizeof(FlightRecord) == 72);
+
 // Two tags, alternating with the round: ranks are at most one migration apart.
 constexpr int kMigrationTags[2] = {7301, 7302};
+
+using Messages = std::map<int, std::vector<std::byte>>;  // by rank, in rank order
 
 int bytes_count(std::size_t n) {
   if (n > static_cast<std::size_t>(INT_MAX))
@@ -26,54 +41,11 @@ int bytes_count(std::size_t n) {
   return static_cast<int>(n);
 }
 
-}  // namespace
-
-std::size_t record_bytes(int objects) { return sizeof(Record) + static_cast<std::size_t>(objects) * sizeof(csg::State); }
-
-void pack(const Swarm& swarm, std::size_t i, std::span<std::byte> record) {
-  const Particle p = swarm.particle(i);
-  const Record r{{p.x[0], p.x[1], p.x[2]},
-                 {static_cast<float>(p.v[0]), static_cast<float>(p.v[1]), static_cast<float>(p.v[2])},
-                 p.cell};
-  std::memcpy(record.data(), &r, sizeof r);
-  const std::span<const csg::State> states = swarm.states(i);
-  std::memcpy(record.data() + sizeof r, states.data(), states.size_bytes());
-}
-
-void unpack(std::span<const std::byte> records, Swarm& swarm) {
-  const std::size_t size = record_bytes(swarm.objects());
-  if (records.size() % size != 0)
-    throw std::invalid_argument("unpack: " + std::to_string(records.size()) + " bytes are not whole records of " +
-                                std::to_string(size));
-  std::vector<csg::State> states(static_cast<std::size_t>(swarm.objects()));
-  for (std::size_t at = 0; at < records.size(); at += size) {
-    Record r;
-    std::memcpy(&r, records.data() + at, sizeof r);
-    std::memcpy(states.data(), records.data() + at + sizeof r, states.size() * sizeof(csg::State));
-    swarm.add({{r.x[0], r.x[1], r.x[2]}, {r.v[0], r.v[1], r.v[2]}, r.cell}, states);
-  }
-}
-
-std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks, std::uint64_t round) {
-  if (ranks.size() == 1) return 0;
-  const int me = ranks.rank();
-  const std::size_t size = record_bytes(swarm.objects());
-  const auto owner_of = [&](std::size_t i) { return owner[static_cast<std::size_t>(swarm.cell(i))]; };
-
-  // One buffer per rank sent to, in rank order.
-  std::map<int, std::vector<std::byte>> out;
-  std::size_t left = 0;
-  for (std::size_t i = 0; i < swarm.size(); ++i)
-    if (const int r = owner_of(i); r != me) {
-      std::vector<std::byte>& to = out[r];
-      to.resize(to.size() + size);
-      pack(swarm, i, std::span(to).last(size));
-      ++left;
-    }
-  swarm.remove_if([&](std::size_t i) { return owner_of(i) != me; });
-
-  // NBX: synchronous sends complete only once received; a rank whose sends are all received
-  // enters a non-blocking barrier and keeps receiving until every rank is in it.
+// NBX: synchronous sends complete only once received; a rank whose sends are all received
+// enters a non-blocking barrier and keeps receiving until every rank is in it. Returns what
+// came, by sender: unpacked in that order, not as they arrive, a cell's particles stand in
+// the same order in every run, and so draw the same random numbers.
+Messages exchange(Messages& out, const Ranks& ranks, std::uint64_t round) {
   const int tag = kMigrationTags[round % 2];
   for (const auto& [rank, bytes] : out) bytes_count(bytes.size());  // every size checked before a send is posted
   std::vector<MPI_Request> sends;
@@ -82,9 +54,7 @@ std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks
     MPI_Issend(bytes.data(), bytes_count(bytes.size()), MPI_BYTE, rank, tag, ranks.comm(), &sends.back());
   }
   MPI_Request barrier = MPI_REQUEST_NULL;
-  // Unpacked by sender once all have come, not as they arrive: a cell's particles then
-  // stand in the same order in every run, and so draw the same random numbers.
-  std::map<int, std::vector<std::byte>> in;
+  Messages in;
   for (bool sent = false;;) {
     int arrived = 0;
     MPI_Status status;
@@ -108,7 +78,102 @@ std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks
       if (done) break;
     }
   }
-  for (const auto& [rank, bytes] : in) unpack(bytes, swarm);
+  return in;
+}
+
+// Appends `record` (a record, then the states) to the message for `rank`.
+template <typename R>
+void append(Messages& out, int rank, const R& record, std::span<const csg::State> states) {
+  std::vector<std::byte>& to = out[rank];
+  const std::size_t at = to.size();
+  to.resize(at + sizeof record + states.size_bytes());
+  std::memcpy(to.data() + at, &record, sizeof record);
+  std::memcpy(to.data() + at + sizeof record, states.data(), states.size_bytes());
+}
+
+// Calls take(record, states) for each whole record of `records`.
+template <typename R, typename Take>
+void for_each_record(std::span<const std::byte> records, int objects, const Take& take) {
+  const std::size_t size = sizeof(R) + static_cast<std::size_t>(objects) * sizeof(csg::State);
+  if (records.size() % size != 0)
+    throw std::invalid_argument("unpack: " + std::to_string(records.size()) + " bytes are not whole records of " +
+                                std::to_string(size));
+  std::vector<csg::State> states(static_cast<std::size_t>(objects));
+  for (std::size_t at = 0; at < records.size(); at += size) {
+    R r;
+    std::memcpy(&r, records.data() + at, sizeof r);
+    std::memcpy(states.data(), records.data() + at + sizeof r, states.size() * sizeof(csg::State));
+    take(r, std::span<const csg::State>(states));
+  }
+}
+
+Record record_of(const Particle& p, const Numbering& numbering) {
+  return {{p.x[0], p.x[1], p.x[2]},
+          {static_cast<float>(p.v[0]), static_cast<float>(p.v[1]), static_cast<float>(p.v[2])},
+          numbering.global(p.cell)};
+}
+
+}  // namespace
+
+Index Numbering::local(Index global) const {
+  if (cells == nullptr) return global;
+  const Index c = cells->local(global);
+  if (c < 0) throw std::logic_error("a particle in cell " + std::to_string(global) + ", which this rank does not have");
+  return c;
+}
+
+std::size_t record_bytes(int objects) { return sizeof(Record) + static_cast<std::size_t>(objects) * sizeof(csg::State); }
+
+void pack(const Swarm& swarm, std::size_t i, std::span<std::byte> record, const Numbering& numbering) {
+  const Record r = record_of(swarm.particle(i), numbering);
+  std::memcpy(record.data(), &r, sizeof r);
+  const std::span<const csg::State> states = swarm.states(i);
+  std::memcpy(record.data() + sizeof r, states.data(), states.size_bytes());
+}
+
+void unpack(std::span<const std::byte> records, Swarm& swarm, const Numbering& numbering) {
+  for_each_record<Record>(records, swarm.objects(), [&](const Record& r, std::span<const csg::State> states) {
+    swarm.add({{r.x[0], r.x[1], r.x[2]}, {r.v[0], r.v[1], r.v[2]}, numbering.local(r.cell)}, states);
+  });
+}
+
+std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks, std::uint64_t round,
+                    const Numbering& numbering) {
+  if (ranks.size() == 1) return 0;
+  const int me = ranks.rank();
+  const auto owner_of = [&](std::size_t i) { return owner[static_cast<std::size_t>(numbering.global(swarm.cell(i)))]; };
+  Messages out;
+  std::size_t left = 0;
+  for (std::size_t i = 0; i < swarm.size(); ++i)
+    if (const int r = owner_of(i); r != me) {
+      append(out, r, record_of(swarm.particle(i), numbering), swarm.states(i));
+      ++left;
+    }
+  swarm.remove_if([&](std::size_t i) { return owner_of(i) != me; });
+  for (const auto& [rank, bytes] : exchange(out, ranks, round)) unpack(bytes, swarm, numbering);
+  return left;
+}
+
+std::size_t migrate(Handover& handover, std::span<const int> owner, const Ranks& ranks, std::uint64_t round,
+                    const Numbering& numbering) {
+  if (ranks.size() == 1) return 0;
+  Messages out;
+  for (std::size_t i = 0; i < handover.size(); ++i) {
+    const Particle& p = handover.particle(i);
+    const Flight& f = handover.flight(i);
+    const Index cell = numbering.global(p.cell);
+    const FlightRecord r{{p.x[0], p.x[1], p.x[2]}, {p.v[0], p.v[1], p.v[2]}, f.remaining, cell, f.entered, f.streak};
+    append(out, owner[static_cast<std::size_t>(cell)], r, handover.states(i));
+  }
+  const std::size_t left = handover.size();
+  handover.clear();
+  for (const auto& [rank, bytes] : exchange(out, ranks, round))
+    for_each_record<FlightRecord>(bytes, handover.objects(),
+                                  [&](const FlightRecord& r, std::span<const csg::State> states) {
+                                    handover.add({{r.x[0], r.x[1], r.x[2]}, {r.v[0], r.v[1], r.v[2]},
+                                                  numbering.local(r.cell)},
+                                                 states, {r.remaining, r.entered, r.streak});
+                                  });
   return left;
 }
 

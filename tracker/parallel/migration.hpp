@@ -3,33 +3,50 @@
 // rank in one message. Only ranks that exchange particles talk (mostly the owners of
 // neighbouring cells): a sparse exchange by the NBX protocol (Hoefler, Siebert & Lumsdaine,
 // "Scalable communication protocols for dynamic sparse data exchange", PPoPP 2010), whose
-// cost does not grow with the rank count as an all-to-all's does.
+// cost does not grow with the rank count as an all-to-all's does. Records carry the whole
+// mesh's cell numbers, so a rank that has only its part of the mesh (mesh/part.hpp) takes
+// them in its own.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <span>
 
+#include "tracker/mesh/part.hpp"
 #include "tracker/parallel/ranks.hpp"
-#include "tracker/tracking/swarm.hpp"
+#include "tracker/tracking/handover.hpp"
 
 namespace cosim::tracker {
+
+// A rank's cell numbers against the whole mesh's: the identity when it has the whole mesh.
+struct Numbering {
+  const Mesh* part = nullptr;
+  const PartCells* cells = nullptr;  // the part's numbers back
+  Index global(Index cell) const { return part ? part->global_cell(cell) : cell; }
+  // std::logic_error if the part does not have the cell (a particle sent to the wrong rank).
+  Index local(Index global) const;
+};
 
 // Bytes of one particle's record with `objects` obstacles.
 std::size_t record_bytes(int objects);
 // Particle i of the swarm into `record` (record_bytes(swarm.objects()) long).
-void pack(const Swarm& swarm, std::size_t i, std::span<std::byte> record);
+void pack(const Swarm& swarm, std::size_t i, std::span<std::byte> record, const Numbering& numbering = {});
 // Adds the particle of every record in `records` (whole records, as pack() wrote them) to
 // the swarm, bit for bit as it was packed.
-void unpack(std::span<const std::byte> records, Swarm& swarm);
+void unpack(std::span<const std::byte> records, Swarm& swarm, const Numbering& numbering = {});
 
-// Collective: every particle whose cell `owner` gives to another rank leaves the swarm
-// for that rank, and what the others send here is appended. Returns how many left.
-// Received particles are appended in the order of their senders' ranks. `round` counts
-// the migrations on the communicator: a rank may start the next one before another has
-// seen this one end, and the round's parity keeps their messages apart, so consecutive
+// Collective: every particle whose cell `owner` (per whole-mesh cell) gives to another rank
+// leaves the swarm for that rank, and what the others send here is appended. Returns how
+// many left. Received particles are appended in the order of their senders' ranks. `round`
+// counts the migrations on the communicator: a rank may start the next one before another
+// has seen this one end, and the round's parity keeps their messages apart, so consecutive
 // migrations on one communicator must differ in parity (one Decomposition at a time per
 // communicator, or a collective between two that start their counts afresh).
-std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks, std::uint64_t round);
+std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks, std::uint64_t round,
+                    const Numbering& numbering = {});
+// The same for moves handed over (each particle in another rank's cell, with the rest of
+// its move): the handover then holds what the others sent here.
+std::size_t migrate(Handover& handover, std::span<const int> owner, const Ranks& ranks, std::uint64_t round,
+                    const Numbering& numbering);
 
 }  // namespace cosim::tracker

@@ -1,5 +1,7 @@
 #include "tracker/tracking/domain.hpp"
 
+#include "tracker/mesh/geometry.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,15 +11,6 @@
 namespace cosim::tracker {
 
 namespace {
-
-double diagonal(const Mesh& mesh) {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const Vec3& x : mesh.vertices) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  return (hi - lo).norm();
-}
 
 void check(const Mesh& mesh, const Boundaries& boundaries) {
   if (boundaries.patches.size() < mesh.patches.size())
@@ -37,7 +30,7 @@ void check(const Mesh& mesh, const Boundaries& boundaries) {
 }  // namespace
 
 Domain::Domain(const Mesh& mesh_, Boundaries boundaries_)
-    : mesh(mesh_), boundaries(std::move(boundaries_)), locator(mesh_), tolerance(1e-10 * diagonal(mesh_)) {
+    : mesh(mesh_), boundaries(std::move(boundaries_)), locator(mesh_), tolerance(1e-10 * whole_diagonal(mesh_)) {
   check(mesh, boundaries);
   inner_boxes.reserve(static_cast<std::size_t>(mesh.cell_count()));
   for (Index c = 0; c < mesh.cell_count(); ++c) inner_boxes.push_back(inner_box(mesh, c, tolerance));

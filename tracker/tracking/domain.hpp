@@ -41,7 +41,7 @@ struct Domain {
   const Mesh& mesh;
   Boundaries boundaries;
   PointLocator locator;
-  double tolerance;  // 1e-10 of the mesh's bounding-box diagonal
+  double tolerance;  // 1e-10 of the (whole) mesh's bounding-box diagonal
   std::vector<InnerBox> inner_boxes;  // per cell, inside by the tolerance
 };
 

@@ -1,5 +1,7 @@
 #include "tracker/tracking/inflow.hpp"
 
+#include "tracker/tracking/handover.hpp"
+
 #include "tracker/mesh/geometry.hpp"
 
 #include <cmath>
@@ -48,7 +50,7 @@ Inflow::Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream
   for (const Index patch : patches) {
     const std::size_t before = entries_.size();
     for (Index f = 0; f < mesh.face_count(); ++f) {
-      if (mesh.faces[f].neighbour != boundary_code(patch)) continue;
+      if (mesh.faces[f].neighbour != boundary_code(patch) || mesh.cell_of_face(f) >= mesh.own_cells()) continue;
       const double area = area_vector(mesh, f).norm();
       const double s = stream.velocity.dot(mesh.faces[f].normal) / most_probable_;
       const double rate = stream.number_density / stream.weight * most_probable_ * flux_factor(s) * area;
@@ -56,7 +58,7 @@ Inflow::Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream
       entries_.push_back({f, mesh.cell_of_face(f), rate, s, area, t1, mesh.faces[f].normal.cross(t1)});
       rate_ += rate;
     }
-    if (entries_.size() == before)
+    if (entries_.size() == before && mesh.global.empty())
       throw std::invalid_argument(mesh.source + ": inflow patch " + std::to_string(patch) + " has no boundary faces");
   }
 }
@@ -97,7 +99,10 @@ Vec3 Inflow::velocity(const Entry& entry, Random& random) const {
 }
 
 long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, Swarm& swarm,
-                    MoveTally& moves, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) const {
+                    MoveTally& moves, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches,
+                    Handover* away) const {
+  if (domain.mesh.ghosts > 0 && away == nullptr)
+    throw std::invalid_argument("Inflow::inject: a part of a mesh needs a handover for the moves that leave it");
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<csg::State> states(static_cast<std::size_t>(obstacles.count()));
   long entered = 0;
@@ -111,7 +116,10 @@ long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt,
       const MoveResult result = move(domain, obstacles, p, states, uniform(random) * dt, random, tallies, patches);
       moves.add(result);
       ++entered;
-      if (!result.removed) swarm.add(p, states);
+      if (result.handed_over)
+        away->add(p, states, result.rest);
+      else if (!result.removed)
+        swarm.add(p, states);
     }
   }
   return entered;

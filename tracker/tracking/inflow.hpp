@@ -23,9 +23,10 @@ struct Stream {
 
 class Inflow {
  public:
-  // The boundary faces of `patches` (indices into Mesh::patches). Throws
-  // std::invalid_argument for a non-positive density, temperature, mass or weight, or a
-  // patch without faces. Keeps a reference to the mesh.
+  // The boundary faces of `patches` (indices into Mesh::patches); on a part of a mesh
+  // (mesh/part.hpp), those of its own cells. Throws std::invalid_argument for a
+  // non-positive density, temperature, mass or weight, or a patch without faces (in a
+  // whole mesh). Keeps a reference to the mesh.
   Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream& stream);
 
   // Keeps only the faces of the cells `mine` accepts (a rank's own, tracker/parallel):
@@ -39,9 +40,11 @@ class Inflow {
   // The count per face is the expected one rounded up or down at random (unbiased).
   // Returns how many entered, those that left again within dt included (they count in
   // moves.removed), so particles = seeded + entered - removed. Wall hits on the way are
-  // added to `tallies` and `patches` as in move().
+  // added to `tallies` and `patches` as in move(). On a part of a mesh, a particle whose
+  // move enters a ghost goes to `away` with the rest of its move (Swarm::move_all).
   long inject(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, Swarm& swarm,
-              MoveTally& moves, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches = {}) const;
+              MoveTally& moves, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches = {},
+              Handover* away = nullptr) const;
 
  private:
   // A face's constants, fixed at construction.

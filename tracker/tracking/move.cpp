@@ -52,6 +52,10 @@ MoveResult move(const Domain& domain, const Obstacles& obstacles, Particle& part
 
 void MoveTally::add(const MoveResult& result) {
   ++moves;
+  add_rest(result);
+}
+
+void MoveTally::add_rest(const MoveResult& result) {
   faces_crossed += result.faces_crossed;
   zero_time_events += result.zero_time_events;
   boundary_hits += result.boundary_hits;

@@ -37,6 +37,8 @@ struct MoveTally {
   long long moves = 0, faces_crossed = 0, zero_time_events = 0, boundary_hits = 0, relocations = 0,
             cycles_broken = 0, stalled = 0, removed = 0, lost = 0, object_events = 0, primitive_tests = 0;
   void add(const MoveResult& result);
+  // The rest of a move handed over by another rank (Handover): counted as a move there.
+  void add_rest(const MoveResult& result);
 };
 std::string summary(const MoveTally& tally);
 // Its counters by name, in one order: run-file columns, state arrays, sums over ranks.

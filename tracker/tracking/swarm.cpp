@@ -1,6 +1,7 @@
 #include "tracker/tracking/swarm.hpp"
 
 #include "tracker/tracking/detail/algorithms.hpp"
+#include "tracker/tracking/handover.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -24,8 +25,10 @@ void Swarm::keep(std::size_t from, std::size_t to) {
 }
 
 void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, MoveTally& moves,
-                     std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) {
+                     std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches, Handover* away) {
   detail::check_carried(domain, obstacles, static_cast<std::size_t>(objects_), tallies.size(), patches.size());
+  if (domain.mesh.ghosts > 0 && away == nullptr)
+    throw std::invalid_argument("Swarm::move_all: a part of a mesh needs a handover for the moves that leave it");
   const detail::Carried any_particle{&obstacles, {}, tallies, patches};
   // The removed ones are dropped as the loop goes: each kept particle moves down at most once.
   std::size_t kept = 0;
@@ -46,7 +49,10 @@ void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt
     const MoveResult result =
         detail::follow_events(domain, p, dt, random, {&obstacles, states(kept), tallies, patches});
     moves.add(result);
-    if (!result.removed) set(kept++, p);
+    if (result.handed_over)
+      away->add(p, states(kept), result.rest);
+    else if (!result.removed)
+      set(kept++, p);
   }
   moves.moves += inside;
   particles_.resize(kept);

@@ -13,6 +13,8 @@
 
 namespace cosim::tracker {
 
+class Handover;
+
 struct StoredParticle {
   double x[3];
   float v[3];
@@ -53,9 +55,11 @@ class Swarm {
   }
   // Moves every particle by dt with the event-driven algorithm, drops the removed ones and
   // adds what happened to `moves`, `tallies` (one per obstacle) and `patches` (one per
-  // boundary condition, or none: see move()).
+  // boundary condition, or none: see move()). On a part of a mesh (Mesh::ghosts) a move
+  // that enters a ghost stops there: the particle leaves the swarm for `away` with the rest
+  // of its move (std::invalid_argument if the mesh has ghosts and there is no `away`).
   void move_all(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, MoveTally& moves,
-                std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches = {});
+                std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches = {}, Handover* away = nullptr);
   // Counting sort by cell (stable), as DSMC codes keep their particles: the particles of a
   // cell, and the cell's faces, are then together in memory.
   void sort_by_cell(Index cells);

@@ -81,6 +81,12 @@ MoveResult move_event_driven(const Domain& domain, Particle& particle, double dt
 // The same for a move that does not end in its start cell's inner box (ends_inside false):
 // the event loop.
 MoveResult follow_events(const Domain& domain, Particle& particle, double dt, Random& random, const Carried& carried);
+// The rest of a move another rank handed over (MoveResult::rest), in one of this rank's cells.
+MoveResult resume_flight(const Domain& domain, Particle& particle, const Flight& flight, Random& random,
+                         const Carried& carried);
+// The event loop from `flight`; `first`: the caller tested the start cell's inner box.
+MoveResult follow_events(const Domain& domain, Particle& particle, const Flight& flight, Random& random,
+                         const Carried& carried, bool first);
 
 // How the face-intersection baselines put back a particle found outside its cell.
 enum class Recovery {

@@ -81,11 +81,22 @@ MoveResult move_event_driven(const Domain& domain, Particle& p, double dt, Rando
 }
 
 MoveResult follow_events(const Domain& domain, Particle& p, double dt, Random& random, const Carried& carried) {
+  return follow_events(domain, p, Flight{dt, -1, 0}, random, carried, true);
+}
+
+MoveResult resume_flight(const Domain& domain, Particle& p, const Flight& flight, Random& random,
+                         const Carried& carried) {
+  return follow_events(domain, p, flight, random, carried, false);
+}
+
+MoveResult follow_events(const Domain& domain, Particle& p, const Flight& flight, Random& random,
+                         const Carried& carried, bool first) {
   MoveResult result;
-  double remaining = dt;
-  Index skip = -1;
-  int streak = 0;
-  for (bool first = true;; first = false) {
+  double remaining = flight.remaining;
+  Index skip = flight.entered < 0 ? -1 : domain.mesh.cell_faces[p.cell] + flight.entered;
+  int streak = flight.streak;
+  const Index own_cells = domain.mesh.own_cells();
+  for (;; first = false) {
     if (streak > cycle_length) {
       ++result.cycles_broken;
       streak = 0;
@@ -94,6 +105,12 @@ MoveResult follow_events(const Domain& domain, Particle& p, double dt, Random& r
         result.stalled = true;  // the rest of the move is dropped, the cell kept
         break;
       }
+    }
+    // In another rank's cell: that rank goes on from here with what the loop carries.
+    if (p.cell >= own_cells) {
+      result.handed_over = true;
+      result.rest = {remaining, skip < 0 ? -1 : static_cast<int>(skip - domain.mesh.cell_faces[p.cell]), streak};
+      return result;
     }
     // The rest of most crossing moves ends well inside the cell they cross into (the caller
     // tested the start cell).

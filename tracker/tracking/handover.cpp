@@ -1,0 +1,43 @@
+#include "tracker/tracking/handover.hpp"
+
+#include "tracker/tracking/detail/algorithms.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace cosim::tracker {
+
+void Handover::add(const Particle& particle, std::span<const csg::State> states, const Flight& rest) {
+  if (states.size() != static_cast<std::size_t>(objects_))
+    throw std::invalid_argument("Handover::add: " + std::to_string(states.size()) + " states for " +
+                                std::to_string(objects_) + " obstacles");
+  particles_.push_back(particle);
+  states_.insert(states_.end(), states.begin(), states.end());
+  flights_.push_back(rest);
+}
+
+void Handover::clear() {
+  particles_.clear();
+  states_.clear();
+  flights_.clear();
+}
+
+void Handover::resume_all(const Domain& domain, const Obstacles& obstacles, Random& random, Swarm& swarm,
+                          MoveTally& moves, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) {
+  detail::check_carried(domain, obstacles, static_cast<std::size_t>(objects_), tallies.size(), patches.size());
+  Handover again(objects_);
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    Particle& p = particles_[i];
+    const std::span<csg::State> states(states_.data() + i * objects_, static_cast<std::size_t>(objects_));
+    const MoveResult result = detail::resume_flight(domain, p, flights_[i], random, {&obstacles, states, tallies, patches});
+    moves.add_rest(result);
+    if (result.handed_over)
+      again.add(p, states, result.rest);
+    else if (!result.removed)
+      swarm.add(p, states);
+  }
+  *this = std::move(again);
+}
+
+}  // namespace cosim::tracker

@@ -1,0 +1,40 @@
+#pragma once
+// Particles whose move entered a ghost cell of the rank's part (Mesh::ghosts) part-way, each
+// with the rest of its move: they go to the ghost's owner (parallel/migration.hpp), which
+// goes on with them as one rank would have, and hands over again those that leave its cells
+// in turn, until every move of the step is done (SPARTA's move does the same in passes).
+// Velocities are kept in double, as the move has them, not in the Swarm's float.
+
+#include "tracker/tracking/swarm.hpp"
+
+#include <vector>
+
+namespace cosim::tracker {
+
+class Handover {
+ public:
+  explicit Handover(int objects) : objects_(objects) {}
+
+  int objects() const { return objects_; }
+  std::size_t size() const { return particles_.size(); }
+  const Particle& particle(std::size_t i) const { return particles_[i]; }
+  std::span<const csg::State> states(std::size_t i) const {
+    return {states_.data() + i * objects_, static_cast<std::size_t>(objects_)};
+  }
+  const Flight& flight(std::size_t i) const { return flights_[i]; }
+  void add(const Particle& particle, std::span<const csg::State> states, const Flight& rest);
+  void clear();
+
+  // Goes on with every particle's move (each in one of this rank's cells): those that end
+  // it here join `swarm`, those that enter a ghost again replace the handover's particles.
+  void resume_all(const Domain& domain, const Obstacles& obstacles, Random& random, Swarm& swarm, MoveTally& moves,
+                  std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches);
+
+ private:
+  int objects_;
+  std::vector<Particle> particles_;
+  std::vector<csg::State> states_;
+  std::vector<Flight> flights_;
+};
+
+}  // namespace cosim::tracker
