@@ -27,6 +27,8 @@ class CellCollider {
   // Per cell, for rollback and checkpoints.
   std::span<dsmc::CellCollisionState> cells() { return cells_; }
   std::span<const dsmc::CellCollisionState> cells() const { return cells_; }
+  // One per cell of the mesh given at construction, which has changed (a rank's new part).
+  void set_cells(std::vector<dsmc::CellCollisionState> cells) { cells_ = std::move(cells); }
 
  private:
   const Mesh& mesh_;

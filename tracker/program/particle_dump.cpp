@@ -38,9 +38,9 @@ csg::State cell_state(const Obstacles& obstacles, int o, Index cell, csg::State 
   return n >= 64 ? state : state & ((csg::State{1} << n) - 1);
 }
 
-void add_record(std::vector<double>& records, const Obstacles& obstacles, const Particle& p,
+void add_record(std::vector<double>& records, const Obstacles& obstacles, const Particle& p, Index global_cell,
                 std::span<const csg::State> states) {
-  records.push_back(p.cell);
+  records.push_back(global_cell);
   records.insert(records.end(), p.x.data(), p.x.data() + 3);
   records.insert(records.end(), p.v.data(), p.v.data() + 3);
   for (int o = 0; o < obstacles.count(); ++o) {
@@ -60,7 +60,8 @@ output::PointSet particle_set(const Simulation& gas, const ParticleOutput& outpu
   const std::size_t width = kObstacles + kPerObstacle * objects;
   std::vector<double> mine;
   for (std::size_t i = 0; i < swarm.size(); ++i)
-    if (const Particle p = swarm.particle(i); chosen(p.x, output)) add_record(mine, obstacles, p, swarm.states(i));
+    if (const Particle p = swarm.particle(i); chosen(p.x, output))
+      add_record(mine, obstacles, p, gas.tracked().global_cell(p.cell), swarm.states(i));
   const std::vector<double> all = gas.decomposition().ranks().gather(mine);
   const std::size_t n = all.size() / width;
   const auto record = [&](std::size_t i) { return all.begin() + static_cast<std::ptrdiff_t>(i * width); };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <utility>
 
 #include "tracker/dsmc/random.hpp"
 #include "tracker/mesh/geometry.hpp"
@@ -32,22 +33,23 @@ class Seeder {
   Seeder(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells)
       : mesh_(mesh), obstacles_(obstacles), seeding_(seeding), states_(static_cast<std::size_t>(obstacles.count())),
         sigma_(std::sqrt(boltzmann * seeding.temperature / seeding.mass)), swarm_(obstacles.count()) {
-    for (Index c = 0; c < mesh.cell_count(); ++c)
-      if (cells.owns(c)) owned_.push_back(c);
+    // A part's own cells come first, in the whole's order.
+    for (Index c = 0; c < mesh.own_cells(); ++c)
+      if (const Index g = mesh.global_cell(c); cells.owns(g)) owned_.push_back({g, c});
   }
 
   Swarm per_cell() {
-    for (Index c : owned_) draw(c, seeding_.per_cell, 0);
+    for (const auto& [global, local] : owned_) draw(global, local, seeding_.per_cell, 0);
     return std::move(swarm_);
   }
 
-  Swarm total(const Ranks& ranks) {
+  Swarm total(const Ranks& ranks, std::span<const double> whole_volume) {
     prefix_volume_.assign(1, 0.0);
-    for (double v : mesh_.volume) prefix_volume_.push_back(prefix_volume_.back() + v);
+    for (double v : whole_volume) prefix_volume_.push_back(prefix_volume_.back() + v);
     long long wanted = seeding_.total, drawn = 0;
     for (std::uint64_t round = 0; wanted > 0; ++round) {
       drawn += wanted;
-      wanted -= ranks.sum(split(0, mesh_.cell_count(), wanted, round));
+      wanted -= ranks.sum(split(0, static_cast<Index>(whole_volume.size()), wanted, round));
       if (wanted > 0 && drawn > kTries * (static_cast<long long>(seeding_.total) + 1))
         throw std::runtime_error("particles: the walls leave (almost) no free space to seed in");
     }
@@ -58,9 +60,9 @@ class Seeder {
   // Splits n draws over the cells [a, b) by volume and draws this rank's; returns how many
   // of those are free.
   long long split(Index a, Index b, long long n, std::uint64_t round) {
-    const auto first = std::lower_bound(owned_.begin(), owned_.end(), a);
-    if (n == 0 || first == owned_.end() || *first >= b) return 0;
-    if (b - a == 1) return draw(a, n, round);
+    const auto first = std::lower_bound(owned_.begin(), owned_.end(), std::pair<Index, Index>{a, -1});
+    if (n == 0 || first == owned_.end() || first->first >= b) return 0;
+    if (b - a == 1) return draw(a, first->second, n, round);
     const Index m = a + (b - a) / 2;
     const std::size_t ua = static_cast<std::size_t>(a), um = static_cast<std::size_t>(m),
                       ub = static_cast<std::size_t>(b);
@@ -72,9 +74,10 @@ class Seeder {
     return split(a, m, low, round) + split(m, b, n - low, round);
   }
 
-  // n uniform draws in the cell; adds those outside every wall, with Maxwellian velocities.
-  long long draw(Index cell, long long n, std::uint64_t round) {
-    dsmc::Rng rng = keyed(seeding_.seed, round, Drawn::cell_particles, static_cast<std::uint64_t>(cell));
+  // n uniform draws in the cell (`global` in the whole mesh, `cell` here); adds those outside
+  // every wall, with Maxwellian velocities.
+  long long draw(Index global, Index cell, long long n, std::uint64_t round) {
+    dsmc::Rng rng = keyed(seeding_.seed, round, Drawn::cell_particles, static_cast<std::uint64_t>(global));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     // normal_distribution needs a positive deviation: a cold gas draws no thermal part.
     std::normal_distribution<double> gauss(0.0, sigma_ > 0 ? sigma_ : 1.0);
@@ -102,7 +105,7 @@ class Seeder {
   const Mesh& mesh_;
   const Obstacles& obstacles_;
   const Seeding& seeding_;
-  std::vector<Index> owned_;  // ascending
+  std::vector<std::pair<Index, Index>> owned_;  // (in the whole, here), ascending
   std::vector<double> prefix_volume_;  // of the cells before each index
   std::vector<csg::State> states_;
   double sigma_;
@@ -111,9 +114,10 @@ class Seeder {
 
 }  // namespace
 
-Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells) {
+Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells,
+                     std::span<const double> whole_volume) {
   Seeder seeder(mesh, obstacles, seeding, cells);
-  return seeding.per_cell > 0 ? seeder.per_cell() : seeder.total(cells.ranks());
+  return seeding.per_cell > 0 ? seeder.per_cell() : seeder.total(cells.ranks(), whole_volume);
 }
 
 }  // namespace cosim::tracker

@@ -20,8 +20,12 @@
 
 namespace cosim::tracker {
 
-// The particles of the cells `cells` gives this rank (collective over its ranks). Throws
-// std::runtime_error when the walls leave (almost) no free space to seed `total` in.
-Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells);
+// The particles of the cells `cells` gives this rank (collective over its ranks), numbered
+// by `mesh`'s cells: the whole mesh or this rank's part (obstacles registered there), while
+// the streams are keyed by the whole's cell numbers. `whole_volume`: every cell's volume in
+// the whole mesh. Throws std::runtime_error when the walls leave (almost) no free space to
+// seed `total` in.
+Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells,
+                     std::span<const double> whole_volume);
 
 }  // namespace cosim::tracker

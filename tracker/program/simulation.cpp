@@ -3,6 +3,7 @@
 #include "tracker/program/seed_particles.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -51,7 +52,7 @@ class StateIn {
 };
 
 // Bumped when the layout changes, so an old checkpoint is refused, not misread.
-constexpr double kStateVersion = 5;
+constexpr double kStateVersion = 6;
 
 // A tally's numbers in one fixed order, for state arrays and sums over the ranks.
 std::vector<long long*> counters(SurfaceTally& t) { return {&t.hits, &t.absorbed}; }
@@ -134,20 +135,23 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
       seed_(setup_.particles.seed),
       decomposition_(*setup_.mesh, ranks),
       random_(first_random(seed_, ranks.rank())),
-      swarm_(seed_particles(*setup_.mesh, setup_.obstacles, setup_.particles, decomposition_)),
+      swarm_(setup_.obstacles.count()),
       sampler_(*setup_.mesh),
       tallies_(static_cast<std::size_t>(setup_.obstacles.count())),
-      patch_tallies_(setup_.domain->boundaries.patches.size()) {
-  if (ranks.size() > 1) {
-    all_inflows_ = std::vector<Inflow>(setup_.inflows);  // Inflow refers to the mesh: copied, not assigned
-    keep_own_inflow_faces();
+      patch_tallies_(setup_.domain->boundaries.patches.size()),
+      away_(setup_.obstacles.count()) {
+  if (ranks.size() > 1 && !setup_.tracers) {
+    part_ = std::make_unique<Mesh>();
+    take_part();
+    sampler_ = CellSampler(*part_);
   }
+  swarm_ = seed_particles(tracked(), setup_.obstacles, setup_.particles, decomposition_, mesh().volume);
   seeded_ = swarm_.size();
   if (setup_.collisions) {
     // The first (sigma g)_max per cell: at the hottest temperature the scene gives.
     double hottest = setup_.particles.temperature;
     for (const Inflow& inflow : setup_.inflows) hottest = std::max(hottest, inflow.temperature());
-    collider_.emplace(*setup_.mesh, *setup_.collisions, std::max(hottest, 1.0), setup_.particles.weight, seed_);
+    collider_.emplace(tracked(), *setup_.collisions, std::max(hottest, 1.0), setup_.particles.weight, seed_);
     collider_->reseed(seed_, collision_stream(0, ranks.rank()));
   }
   sampler_.sample(swarm_);
@@ -170,28 +174,36 @@ void Simulation::move_obstacle(int i, const Eigen::Isometry3d& pose, double dt) 
 }
 
 void Simulation::step(double dt) {
-  // The whole mesh is on every rank, so the last step's moves crossed into other ranks'
-  // cells freely, and a wall that moved since may have put an overrun particle back in one:
-  // all of them go to their cells' owners at once, before the collisions need them there.
+  // A wall that moved since the last step may have put an overrun particle in a ghost (or,
+  // in tracer mode, the last step's moves crossed into other ranks' cells): they go to their
+  // cells' owners before the collisions need them there.
   stages_.time(Stage::migrate, [&] {
-    migrated_ += decomposition_.migrate(swarm_);
+    migrated_ += decomposition_.migrate(swarm_, numbering());
     if (const int every = setup_.balance.every; decomposition_.ranks().size() > 1 && every > 0 && steps_ % every == 0)
       balance();
   });
   // In cell order, as DSMC codes keep them: a cell's particles then share its faces in cache.
-  stages_.time(Stage::sort, [&] { swarm_.sort_by_cell(mesh().cell_count()); });
+  stages_.time(Stage::sort, [&] { swarm_.sort_by_cell(tracked().cell_count()); });
   if (collider_) stages_.time(Stage::collide, [&] { collisions_ += collider_->collide(swarm_, dt); });
   stages_.time(Stage::move, [&] {
     if (setup_.tracers)
       carry_tracers(dt);
     else
-      swarm_.move_all(*setup_.domain, setup_.obstacles, dt, random_, moves_, tallies_, patch_tallies_);
+      swarm_.move_all(*setup_.domain, setup_.obstacles, dt, random_, moves_, tallies_, patch_tallies_, &away_);
   });
   stages_.time(Stage::inject, [&] {
     for (const Inflow& inflow : setup_.inflows)
-      injected_ += static_cast<std::size_t>(
-          inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_, tallies_, patch_tallies_));
+      injected_ += static_cast<std::size_t>(inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_,
+                                                          tallies_, patch_tallies_, &away_));
   });
+  // The moves that entered other ranks' cells go on there, in rounds until all are done.
+  if (part_)
+    stages_.time(Stage::migrate, [&] {
+      while (decomposition_.ranks().sum(static_cast<long long>(away_.size())) > 0) {
+        migrated_ += decomposition_.hand_over(away_, numbering());
+        away_.resume_all(*setup_.domain, setup_.obstacles, random_, swarm_, moves_, tallies_, patch_tallies_);
+      }
+    });
   // Where they are: a rank's sums over cells it does not own add up with the owner's.
   stages_.time(Stage::sample, [&] { sampler_.sample(swarm_); });
   ++steps_;
@@ -219,29 +231,74 @@ void Simulation::balance() {
     return;
   }
   balance_floor_ = 0.0;
-  decomposition_.set_owners(std::move(owners));
-  migrated_ += decomposition_.migrate(swarm_);
-  keep_own_inflow_faces();
+  ++rebalances_;
+  if (!part_) {  // tracer mode: the whole mesh everywhere, nothing kept per cell
+    decomposition_.set_owners(std::move(owners));
+    migrated_ += decomposition_.migrate(swarm_);
+    return;
+  }
+  // What is kept per cell, by the whole mesh's numbers: a cell's collision state is its old
+  // owner's, the sampler's sums add up over the ranks; the new owner takes them.
+  std::vector<double> sigma_g_max, remainder;
   if (collider_) {
-    // A cell's collision state is its old owner's: the largest (sigma g)_max (it only grows,
-    // the other ranks keep the first) and the one remainder that is not 0. Then only the new
-    // owner keeps a remainder, so the next hand-over finds one again.
-    std::vector<double> sigma_g_max, remainder;
     for (const dsmc::CellCollisionState& c : collider_->cells()) {
       sigma_g_max.push_back(c.sigma_g_max);
       remainder.push_back(c.remainder);
     }
-    ranks.max(sigma_g_max);
-    ranks.sum(remainder);
-    for (std::size_t c = 0; c < remainder.size(); ++c)
-      collider_->cells()[c] = {sigma_g_max[c], decomposition_.owns(static_cast<Index>(c)) ? remainder[c] : 0.0};
+    // Ghosts have no particles to collide: the owner's state is the cell's.
+    for (Index c = tracked().own_cells(); c < tracked().cell_count(); ++c) sigma_g_max[static_cast<std::size_t>(c)] = 0;
+    sigma_g_max = whole_sums(sigma_g_max, 1);
+    remainder = whole_sums(remainder, 1);
   }
-  ++rebalances_;
+  const std::vector<double> samples = sampler_.sums();
+  const std::vector<double> sums = whole_sums(std::span(samples).subspan(1), CellSampler::kSumsPerCell);
+  // The particles by the whole's cell numbers while the parts change.
+  for (std::size_t i = 0; i < swarm_.size(); ++i) {
+    Particle p = swarm_.particle(i);
+    p.cell = tracked().global_cell(p.cell);
+    swarm_.set(i, p);
+  }
+  decomposition_.set_owners(std::move(owners));
+  take_part();
+  migrated_ += decomposition_.migrate(swarm_);
+  for (std::size_t i = 0; i < swarm_.size(); ++i) {
+    Particle p = swarm_.particle(i);
+    p.cell = numbering().local(p.cell);
+    swarm_.set(i, p);
+  }
+  std::vector<double> own_sums{samples[0]};
+  std::vector<dsmc::CellCollisionState> cells;
+  for (Index c = 0; c < tracked().cell_count(); ++c) {
+    const auto g = static_cast<std::size_t>(tracked().global_cell(c));
+    const bool own = c < tracked().own_cells();
+    for (std::size_t k = 0; k < CellSampler::kSumsPerCell; ++k)
+      own_sums.push_back(own ? sums[g * CellSampler::kSumsPerCell + k] : 0.0);
+    if (collider_) cells.push_back({sigma_g_max[g], own ? remainder[g] : 0.0});
+  }
+  sampler_ = CellSampler(*part_);
+  sampler_.set_sums(own_sums);
+  if (collider_) collider_->set_cells(std::move(cells));
 }
 
-void Simulation::keep_own_inflow_faces() {
-  setup_.inflows = std::vector<Inflow>(all_inflows_);
-  for (Inflow& inflow : setup_.inflows) inflow.keep_faces_of([&](Index cell) { return decomposition_.owns(cell); });
+void Simulation::take_part() {
+  const Ranks& ranks = decomposition_.ranks();
+  *part_ = extract_part(*setup_.mesh, decomposition_.owners(), ranks.rank());
+  part_cells_ = std::make_unique<PartCells>(*part_);
+  setup_.domain = std::make_unique<const Domain>(*part_, setup_.domain->boundaries);
+  setup_.obstacles = setup_.obstacles.on(*part_);
+  std::vector<Inflow> inflows;
+  for (const Inflow& inflow : setup_.inflows) inflows.push_back(inflow.on(*part_));
+  setup_.inflows = std::move(inflows);
+}
+
+std::vector<double> Simulation::whole_sums(std::span<const double> mine, std::size_t width) const {
+  std::vector<double> whole(width * static_cast<std::size_t>(mesh().cell_count()), 0.0);
+  for (Index c = 0; c < tracked().cell_count(); ++c) {
+    const auto from = static_cast<std::size_t>(c) * width, to = static_cast<std::size_t>(tracked().global_cell(c)) * width;
+    for (std::size_t k = 0; k < width; ++k) whole[to + k] += mine[from + k];
+  }
+  decomposition_.ranks().sum(whole);
+  return whole;
 }
 
 void Simulation::carry_tracers(double dt) {
@@ -298,10 +355,9 @@ std::vector<ObstacleTally> Simulation::tallies() const { return summed(tallies_,
 std::vector<SurfaceTally> Simulation::patch_tallies() const { return summed(patch_tallies_, decomposition_.ranks()); }
 
 std::vector<double> Simulation::counts() const {
-  std::vector<double> count(static_cast<std::size_t>(mesh().cell_count()), 0.0);
+  std::vector<double> count(static_cast<std::size_t>(tracked().cell_count()), 0.0);
   for (std::size_t i = 0; i < swarm_.size(); ++i) count[static_cast<std::size_t>(swarm_.cell(i))] += 1.0;
-  decomposition_.ranks().sum(count);
-  return count;
+  return whole_sums(count, 1);
 }
 
 std::vector<CellMoments> Simulation::take_moments() {
@@ -309,11 +365,20 @@ std::vector<CellMoments> Simulation::take_moments() {
   // add up. Every rank sampled at every step: the sample count (the first value) is each
   // rank's, not summed.
   std::vector<double> sums = sampler_.sums();
-  decomposition_.ranks().sum(std::span(sums).subspan(1));
-  sampler_.set_sums(sums);
+  std::optional<CellSampler> whole;  // on a part: the sums by the whole mesh's cells
+  if (part_) {
+    std::vector<double> cells = whole_sums(std::span(sums).subspan(1), CellSampler::kSumsPerCell);
+    cells.insert(cells.begin(), sums[0]);
+    sums = std::move(cells);
+    whole.emplace(mesh());
+  } else {
+    decomposition_.ranks().sum(std::span(sums).subspan(1));
+  }
+  CellSampler& summed = whole ? *whole : sampler_;
+  summed.set_sums(sums);
   std::vector<CellMoments> moments;
   for (Index c = 0; c < mesh().cell_count(); ++c)
-    moments.push_back(sampler_.moments(c, setup_.particles.mass, setup_.particles.weight));
+    moments.push_back(summed.moments(c, setup_.particles.mass, setup_.particles.weight));
   sampler_.reset();
   return moments;
 }
@@ -341,7 +406,7 @@ std::vector<double> Simulation::state() const {
     const Particle p = swarm_.particle(i);
     for (int k = 0; k < 3; ++k) out.put(p.x[k]);
     for (int k = 0; k < 3; ++k) out.put(p.v[k]);
-    out.put(p.cell);
+    out.put(tracked().global_cell(p.cell));
     for (csg::State s : swarm_.states(i)) out.put_bits(s);
   }
   // The pose's matrix itself: a quaternion would not give the same matrix back, and a
@@ -351,6 +416,8 @@ std::vector<double> Simulation::state() const {
   put_tallies(out, tallies_);
   put_tallies(out, patch_tallies_);
   for (const MoveCounter& c : kMoveCounters) out.put(static_cast<double>(moves_.*c.count));
+  // Per cell of this rank's (its part, as the owners above give it), then.
+  out.put(static_cast<double>(tracked().cell_count()));
   if (collider_)
     for (const dsmc::CellCollisionState& c : collider_->cells()) {
       out.put(c.sigma_g_max);
@@ -386,7 +453,7 @@ void Simulation::restore(std::span<const double> state) {
     Particle p;
     for (int k = 0; k < 3; ++k) p.x[k] = in.get();
     for (int k = 0; k < 3; ++k) p.v[k] = in.get();
-    p.cell = in.get_count<Index>();
+    p.cell = in.get_count<Index>();  // in the whole mesh
     if (p.cell < 0 || p.cell >= mesh().cell_count()) throw std::runtime_error("tracker state: a particle in no cell");
     for (csg::State& s : states) s = in.get_bits();
     swarm.add(p, states);
@@ -400,10 +467,13 @@ void Simulation::restore(std::span<const double> state) {
   get_tallies(in, patch_tallies);
   MoveTally moves;
   for (const MoveCounter& c : kMoveCounters) moves.*c.count = in.get_count<long long>();
+  const auto part_cells = in.get_count<std::size_t>();
+  if (part_cells > static_cast<std::size_t>(mesh().cell_count()))
+    throw std::runtime_error("tracker state: " + std::to_string(part_cells) + " cells on a rank");
   std::vector<dsmc::CellCollisionState> cells;
   if (collider_)
-    for (std::size_t c = 0; c < collider_->cells().size(); ++c) cells.push_back({in.get(), in.get()});
-  std::vector<double> sums(sampler_.sums().size());
+    for (std::size_t c = 0; c < part_cells; ++c) cells.push_back({in.get(), in.get()});
+  std::vector<double> sums(1 + part_cells * CellSampler::kSumsPerCell);
   for (double& x : sums) x = in.get();
   in.finish();
 
@@ -412,16 +482,31 @@ void Simulation::restore(std::span<const double> state) {
     // the job (MPI_Abort) rather than leave the others waiting here.
     owners.resize(static_cast<std::size_t>(mesh().cell_count()));
     decomposition_.ranks().broadcast(owners);
-    try {
-      decomposition_.set_owners(std::move(owners));
-    } catch (const std::invalid_argument& e) {
-      throw std::runtime_error(std::string("tracker state: ") + e.what());
+    if (!std::ranges::equal(owners, decomposition_.owners())) {
+      try {
+        decomposition_.set_owners(std::move(owners));
+      } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(std::string("tracker state: ") + e.what());
+      }
+      if (part_) {
+        take_part();
+        sampler_ = CellSampler(*part_);
+      }
     }
-    keep_own_inflow_faces();
+  }
+  if (part_cells != static_cast<std::size_t>(tracked().cell_count()))
+    throw std::runtime_error("tracker state: " + std::to_string(part_cells) + " cells on rank " +
+                             std::to_string(decomposition_.ranks().rank()) + ", its part has " +
+                             std::to_string(tracked().cell_count()));
+  for (std::size_t i = 0; i < swarm.size(); ++i) {
+    Particle p = swarm.particle(i);
+    p.cell = tracked().global.empty() ? p.cell : part_cells_->local(p.cell);
+    if (p.cell < 0) throw std::runtime_error("tracker state: a particle in a cell of another rank's");
+    swarm.set(i, p);
   }
   for (int o = 0; o < objects; ++o) setup_.obstacles.place(o, poses[static_cast<std::size_t>(o)]);
   sampler_.set_sums(sums);
-  if (collider_) std::copy(cells.begin(), cells.end(), collider_->cells().begin());
+  if (collider_) collider_->set_cells(std::move(cells));
   swarm_ = std::move(swarm);
   tallies_ = std::move(tallies);
   patch_tallies_ = std::move(patch_tallies);

@@ -3,15 +3,20 @@
 // One step (step()) is what DSMC codes do per time step: migrate (over several ranks; now
 // and then re-partition), sort by cell, collide, move, inject, sample.
 //
-// Over several ranks (tracker/parallel) every rank holds the whole mesh and all obstacles
-// but only the particles it tracks: those in its cells at the start of a step. Particles
-// that moved into another rank's cells migrate there at the start of the next step, once
-// per step. The totals and per-cell results below are sums over
-// the ranks: those calls are collective, every rank must make them in the same order.
+// Over several ranks (tracker/parallel) a rank tracks on its part of the mesh (its cells and
+// two layers of ghosts, mesh/part.hpp) with the obstacles registered there, and holds the
+// particles in its cells: a move that enters a ghost goes on on the ghost's owner within
+// the step (tracking/handover.hpp), and a particle a moving wall put in a ghost migrates
+// at the start of the next. Tracer mode keeps the whole mesh on every rank (a tracer's step
+// is not handed over): its tracers migrate at the start of a step. The whole mesh is still
+// kept on every rank for the output and the re-partitions. The totals and per-cell results
+// below are sums over the ranks: those calls are collective, every rank must make them in
+// the same order.
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -20,6 +25,7 @@
 #include "tracker/program/collide.hpp"
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/stage_times.hpp"
+#include "tracker/mesh/part.hpp"
 #include "tracker/parallel/decomposition.hpp"
 #include "tracker/tracking/sampling.hpp"
 
@@ -36,10 +42,14 @@ class Simulation {
                       Ranks ranks = {});
 
   const TrackerScene& setup() const { return setup_; }
+  // The whole mesh, as the output shows it.
   const Mesh& mesh() const { return *setup_.mesh; }
+  // This rank's cells (the swarm's cell numbers): the whole mesh, or its part on several
+  // ranks (Mesh::global_cell gives a cell's number in the whole).
+  const Mesh& tracked() const { return part_ ? *part_ : *setup_.mesh; }
   const Decomposition& decomposition() const { return decomposition_; }
-  // This rank's particles: those in its cells, and those that left them in the last step
-  // (they migrate at the start of the next).
+  // This rank's particles, numbered by tracked()'s cells: those in its cells, and the few
+  // a moving wall or a recovery put in a ghost (they migrate at the start of the next step).
   const Swarm& swarm() const { return swarm_; }
 
   // Every random draw from here on comes from `stream` of the scene's seed (one stream per
@@ -97,7 +107,13 @@ class Simulation {
   // weighted by the particles if the most a rank holds exceeds the mean by the threshold;
   // the particles, the inflow faces and the cells' collision state follow their cells.
   void balance();
-  void keep_own_inflow_faces();
+  // Builds this rank's part of the mesh for the decomposition's owners, and the walls,
+  // obstacles and inflows on it.
+  void take_part();
+  Numbering numbering() const { return part_ ? Numbering{part_.get(), part_cells_.get()} : Numbering{}; }
+  // Per-cell sums of this rank's cells as per-cell sums of the whole mesh's (`width`
+  // values a cell), added up over the ranks (collective).
+  std::vector<double> whole_sums(std::span<const double> mine, std::size_t width) const;
 
   TrackerScene setup_;
   std::optional<VelocityField> velocity_;  // tracer mode
@@ -117,7 +133,11 @@ class Simulation {
   std::uint64_t rebalances_ = 0;
   StageTimes stages_;
   double balance_floor_ = 0.0;  // max/mean a re-partition could not improve, times 1.1
-  std::vector<Inflow> all_inflows_;  // the scene's, every face: a rank keeps its own cells'
+  // This rank's part of the mesh, at one address for good (the collider refers to it);
+  // null on one rank and in tracer mode.
+  std::unique_ptr<Mesh> part_;
+  std::unique_ptr<PartCells> part_cells_;
+  Handover away_;  // the moves of a step that entered ghosts, until they are done
 };
 
 }  // namespace cosim::tracker

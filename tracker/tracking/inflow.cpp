@@ -43,7 +43,7 @@ double inflow_normal_speed(double s, double u) {
 }
 
 Inflow::Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream& stream)
-    : mesh_(mesh), stream_(stream) {
+    : mesh_(mesh), patches_(patches), stream_(stream) {
   if (!(stream.number_density > 0.0 && stream.temperature > 0.0 && stream.mass > 0.0 && stream.weight > 0.0))
     throw std::invalid_argument("inflow: number density, temperature, mass and weight must be positive");
   most_probable_ = std::sqrt(2.0 * boltzmann * stream.temperature / stream.mass);
@@ -61,12 +61,6 @@ Inflow::Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream
     if (entries_.size() == before && mesh.global.empty())
       throw std::invalid_argument(mesh.source + ": inflow patch " + std::to_string(patch) + " has no boundary faces");
   }
-}
-
-void Inflow::keep_faces_of(const std::function<bool(Index cell)>& mine) {
-  std::erase_if(entries_, [&](const Entry& e) { return !mine(e.cell); });
-  rate_ = 0.0;
-  for (const Entry& e : entries_) rate_ += e.rate;
 }
 
 Vec3 Inflow::point_on(const Entry& entry, Random& random) const {

@@ -29,9 +29,8 @@ class Inflow {
   // whole mesh). Keeps a reference to the mesh.
   Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream& stream);
 
-  // Keeps only the faces of the cells `mine` accepts (a rank's own, tracker/parallel):
-  // inject() and rate() then cover those.
-  void keep_faces_of(const std::function<bool(Index cell)>& mine);
+  // The same stream through the same patches of another mesh (a rank's new part).
+  Inflow on(const Mesh& mesh) const { return Inflow(mesh, patches_, stream_); }
   // Simulators entering per second through all the faces (the mean of inject / dt).
   double rate() const { return rate_; }
   double temperature() const { return stream_.temperature; }
@@ -60,6 +59,7 @@ class Inflow {
   Vec3 velocity(const Entry& entry, Random& random) const;
 
   const Mesh& mesh_;
+  std::vector<Index> patches_;
   Stream stream_;
   double most_probable_;  // sqrt(2 k T / m)
   std::vector<Entry> entries_;

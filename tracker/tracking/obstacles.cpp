@@ -71,6 +71,13 @@ Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const 
   find_active();
 }
 
+Obstacles Obstacles::on(const Mesh& tracking) const {
+  Obstacles moved(tracking, objects_);  // the shapes as they are placed now
+  moved.poses_ = poses_;
+  moved.motions_ = motions_;
+  return moved;
+}
+
 void Obstacles::find_active() {
   active_first_.assign(1, 0);
   active_.clear();

@@ -55,6 +55,10 @@ class Obstacles {
   Obstacles(Mesh&&, std::vector<Obstacle>) = delete;
   Obstacles(const Mesh&, std::vector<Obstacle>, Mesh&&, std::vector<Index>) = delete;
 
+  // The same objects at the same poses and motions, registered with another tracking mesh
+  // (a rank's part, mesh/part.hpp) as their bounding mesh.
+  Obstacles on(const Mesh& tracking) const;
+
   int count() const { return static_cast<int>(objects_.size()); }
   bool empty() const { return objects_.empty(); }
   // Some wall re-emits particles (diffuse or maxwell): the tracking needs their mass.

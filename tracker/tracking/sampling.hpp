@@ -35,6 +35,7 @@ class CellSampler {
   CellMoments moments(Index cell, double mass, double weight) const;
   // Starts a new average.
   void reset();
+  static constexpr std::size_t kSumsPerCell = 1 + 3 + 9 + 3;
   // The sums as one array: the sample count, then per cell (kSumsPerCell values) its
   // simulator count and the sums of v, v v^T (column-major) and |v|^2 v. For rollback,
   // checkpoints and sums over ranks.
@@ -43,7 +44,6 @@ class CellSampler {
   void set_sums(std::span<const double> sums);
 
  private:
-  static constexpr std::size_t kSumsPerCell = 1 + 3 + 9 + 3;
   std::vector<double> volume_;
   // Sums of 1, v, v v^T and |v|^2 v over the samples.
   std::vector<double> count_;

@@ -90,8 +90,8 @@ TEST(Seeding, TwoRanksSeedWhatOneRankSeeds) {
         "      particles: " + std::string(particles) + "\n",
         "seeding.yaml"));
     const Decomposition two(*t.mesh, Ranks(MPI_COMM_WORLD));
-    const Swarm mine = seed_particles(*t.mesh, t.obstacles, t.particles, two);
-    const Swarm all = seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}));
+    const Swarm mine = seed_particles(*t.mesh, t.obstacles, t.particles, two, t.mesh->volume);
+    const Swarm all = seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), t.mesh->volume);
     std::size_t k = 0;
     for (std::size_t i = 0; i < all.size(); ++i) {
       if (!two.owns(all.cell(i))) continue;
@@ -410,6 +410,29 @@ TEST(TwoRanks, TheSameParticleSampleAsOneRank) {
       EXPECT_EQ(output::read_array(two.get(), name), output::read_array(one.get(), name)) << name;
     }
   }
+}
+
+// Each rank tracks on its part of the mesh (its cells and two layers of ghosts), and the
+// moves that cross into the other rank's cells are finished there within the step: the
+// deterministic gas makes exactly one rank's moves, crossings and object events.
+TEST(TwoRanks, EachRankTracksOnItsPartAndHandsMovesOver) {
+  const scene::Scene scene = deterministic_gas("0.1");
+  Simulation two(scene, {}, Ranks(MPI_COMM_WORLD));
+  Simulation one(scene, {}, Ranks());
+  const Mesh& part = two.tracked();
+  EXPECT_LT(part.cell_count(), two.mesh().cell_count());
+  EXPECT_GT(part.ghosts, 0);
+  EXPECT_EQ(two.decomposition().ranks().sum(static_cast<long long>(part.own_cells())), two.mesh().cell_count());
+  two.advance(0.0, 0.2);
+  one.advance(0.0, 0.2);
+  const MoveTally a = one.moves(), b = two.moves();
+  EXPECT_EQ(b.moves, a.moves);
+  EXPECT_EQ(b.faces_crossed, a.faces_crossed);
+  EXPECT_EQ(b.object_events, a.object_events);
+  EXPECT_EQ(b.lost, 0);
+  EXPECT_EQ(two.particles(), one.particles());
+  EXPECT_GT(two.migrated(), 100u);
+  EXPECT_EQ(two.counts(), one.counts());
 }
 
 // Coupled, the frame of rank 0 carries every rank's particles, at the windows the option names.

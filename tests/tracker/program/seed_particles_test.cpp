@@ -22,7 +22,7 @@ TrackerScene tracker_with(const std::string& particles, const std::string& mesh 
 }
 
 Swarm seeded(const TrackerScene& t) {
-  return seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}));
+  return seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), t.mesh->volume);
 }
 
 TEST(Seeding, UniformInTheCellsOutsideTheWallsWithAMaxwellian) {

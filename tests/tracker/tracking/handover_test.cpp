@@ -82,7 +82,9 @@ TEST(Part, HasItsCellsAndTwoLayersOfNeighboursWithTheWholesFaces) {
         // Layer by layer, each in the whole's order.
         for (Index c = 1; c < part.cell_count(); ++c) {
           EXPECT_LE(layer[c - 1], layer[c]);
-          if (layer[c - 1] == layer[c]) EXPECT_LT(part.global_cell(c - 1), part.global_cell(c));
+          if (layer[c - 1] == layer[c]) {
+            EXPECT_LT(part.global_cell(c - 1), part.global_cell(c));
+          }
         }
         EXPECT_LT(cells.local(-5), 0);
       }
