@@ -10,11 +10,11 @@ namespace cosim::tracker {
 namespace {
 
 // The part's cells in the whole's numbers: the owned ones, then each layer of neighbours.
-std::vector<Index> part_cells(const Mesh& whole, std::span<const int> owner, int rank, int layers,
+std::vector<Index> part_cells(const Mesh& whole, const std::function<int(Index)>& owner, int rank, int layers,
                               std::vector<Index>& local) {
   std::vector<Index> cells;
   for (Index c = 0; c < whole.cell_count(); ++c)
-    if (owner[static_cast<std::size_t>(c)] == rank) {
+    if (owner(c) == rank) {
       local[static_cast<std::size_t>(c)] = static_cast<Index>(cells.size());
       cells.push_back(c);
     }
@@ -41,15 +41,12 @@ std::vector<Index> part_cells(const Mesh& whole, std::span<const int> owner, int
 
 }  // namespace
 
-Mesh extract_part(const Mesh& whole, std::span<const int> owner, int rank, int layers) {
-  if (owner.size() != static_cast<std::size_t>(whole.cell_count()))
-    throw std::invalid_argument(whole.source + ": " + std::to_string(owner.size()) + " owners for " +
-                                std::to_string(whole.cell_count()) + " cells");
+Mesh extract_part(const Mesh& whole, const std::function<int(Index)>& owner, int rank, int layers) {
   std::vector<Index> local(static_cast<std::size_t>(whole.cell_count()), -1);
   Mesh part;
   part.global = part_cells(whole, owner, rank, layers, local);
   part.ghosts = static_cast<Index>(std::count_if(part.global.begin(), part.global.end(),
-                                                 [&](Index c) { return owner[static_cast<std::size_t>(c)] != rank; }));
+                                                 [&](Index c) { return owner(c) != rank; }));
   part.patches = whole.patches;
   part.shifts = whole.shifts;
   part.source = whole.source;

@@ -7,7 +7,7 @@
 // first-layer ghost is registered as its owner registers it, so the particle's logical
 // states mean the same on both ranks.
 
-#include <span>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -17,8 +17,8 @@ namespace cosim::tracker {
 
 // The cells of `whole` that `owner` gives to `rank`, then `layers` layers of ghosts, each
 // in the whole's order, with their faces, vertices and geometry as in the whole (Mesh::global,
-// ghosts, whole_diagonal set). std::invalid_argument unless one owner per cell.
-Mesh extract_part(const Mesh& whole, std::span<const int> owner, int rank, int layers = 2);
+// ghosts, whole_diagonal set).
+Mesh extract_part(const Mesh& whole, const std::function<int(Index)>& owner, int rank, int layers = 2);
 
 // A part's cell numbers from the whole's.
 class PartCells {

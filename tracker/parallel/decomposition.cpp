@@ -12,13 +12,28 @@
 namespace cosim::tracker {
 
 Decomposition::Decomposition(const Mesh& mesh, Ranks ranks)
-    : ranks_(ranks), owner_(static_cast<std::size_t>(mesh.cell_count()), 0) {
-  if (ranks_.size() > 1) owner_ = agreed([&] { return partition_cells(mesh, ranks_.size()); });
+    : ranks_(ranks), owners_(std::vector<int>(static_cast<std::size_t>(mesh.cell_count()), 0)) {
+  if (ranks_.size() > 1) owners_ = Owners(agreed([&] { return partition_cells(mesh, ranks_.size()); }));
 }
 
-std::vector<int> Decomposition::proposal(const Mesh& mesh, std::span<const double> particles) const {
-  if (ranks_.size() == 1) return owner_;
-  return agreed([&] {
+Decomposition::Decomposition(std::array<int, 3> hexahedra, int per_hex, Ranks ranks)
+    : ranks_(ranks), owners_(Bricks(hexahedra, per_hex, ranks.size(), {})) {}
+
+Owners Decomposition::proposal(const Mesh& mesh, std::span<const double> particles) const {
+  if (ranks_.size() == 1) return owners_;
+  if (const std::optional<Bricks>& bricks = owners_.bricks()) {
+    const std::vector<int> cuts = agreed([&] {
+      // Every cell 1 % of the mean besides its particles, so empty space still spreads.
+      const double floor = 0.01 * std::accumulate(particles.begin(), particles.end(), 0.0) /
+                           std::max<double>(1.0, static_cast<double>(particles.size()));
+      std::vector<double> weight;
+      weight.reserve(particles.size());
+      for (const double n : particles) weight.push_back(n + floor);
+      return Bricks(bricks->hexahedra(), bricks->per_hex(), ranks_.size(), weight).cuts();
+    });
+    return Owners(Bricks::from_cuts(bricks->hexahedra(), bricks->per_hex(), ranks_.size(), cuts));
+  }
+  return Owners(agreed([&] {
     // The particles' weights add up to 100 per cell on average (fewer if that passes 1e9:
     // METIS adds them in 32-bit integers), every cell 1 more.
     const double total = std::max(std::accumulate(particles.begin(), particles.end(), 0.0), 1.0);
@@ -32,7 +47,8 @@ std::vector<int> Decomposition::proposal(const Mesh& mesh, std::span<const doubl
     const auto ranks = static_cast<std::size_t>(ranks_.size());
     std::vector<double> overlap(ranks * ranks, 0.0);  // [part][rank]
     for (std::size_t c = 0; c < part.size(); ++c)
-      overlap[static_cast<std::size_t>(part[c]) * ranks + static_cast<std::size_t>(owner_[c])] += particles[c] + 1e-3;
+      overlap[static_cast<std::size_t>(part[c]) * ranks + static_cast<std::size_t>(owner(static_cast<Index>(c)))] +=
+          particles[c] + 1e-3;
     std::vector<std::size_t> order(overlap.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return overlap[a] > overlap[b]; });
@@ -45,7 +61,7 @@ std::vector<int> Decomposition::proposal(const Mesh& mesh, std::span<const doubl
       }
     for (int& p : part) p = rank_of[static_cast<std::size_t>(p)];
     return part;
-  });
+  }));
 }
 
 std::vector<int> Decomposition::agreed(const std::function<std::vector<int>()>& partition) const {
@@ -53,36 +69,29 @@ std::vector<int> Decomposition::agreed(const std::function<std::vector<int>()>& 
   // same everywhere: one broadcast settles it for good (a rank with another METIS build).
   // Rank 0 says first whether it has one: if METIS fails there, every rank throws alike
   // instead of the others waiting for owners that never come.
-  std::vector<int> owners(owner_.size());
+  std::vector<int> numbers;
   std::string failure;
   if (ranks_.lead()) {
     try {
-      owners = partition();
+      numbers = partition();
     } catch (const std::exception& e) {
       failure = e.what();
     }
   }
-  int failed = failure.empty() ? 0 : 1;
-  MPI_Bcast(&failed, 1, MPI_INT, 0, ranks_.comm());
-  if (failed) throw std::runtime_error(ranks_.lead() ? failure : "rank 0 could not partition the mesh");
-  MPI_Bcast(owners.data(), static_cast<int>(owners.size()), MPI_INT, 0, ranks_.comm());
-  return owners;
-}
-
-void Decomposition::set_owners(std::vector<int> owners) {
-  if (owners.size() != owner_.size() ||
-      std::any_of(owners.begin(), owners.end(), [&](int r) { return r < 0 || r >= ranks_.size(); }))
-    throw std::invalid_argument("owners: one rank of " + std::to_string(ranks_.size()) + " per cell of " +
-                                std::to_string(owner_.size()));
-  owner_ = std::move(owners);
+  long long size = failure.empty() ? static_cast<long long>(numbers.size()) : -1;
+  MPI_Bcast(&size, 1, MPI_LONG_LONG, 0, ranks_.comm());
+  if (size < 0) throw std::runtime_error(ranks_.lead() ? failure : "rank 0 could not partition the mesh");
+  numbers.resize(static_cast<std::size_t>(size));
+  MPI_Bcast(numbers.data(), static_cast<int>(size), MPI_INT, 0, ranks_.comm());
+  return numbers;
 }
 
 std::size_t Decomposition::migrate(Swarm& swarm, const Numbering& numbering) {
-  return tracker::migrate(swarm, owner_, ranks_, migrations_++, numbering);
+  return tracker::migrate(swarm, owners_, ranks_, migrations_++, numbering);
 }
 
 std::size_t Decomposition::hand_over(Handover& handover, const Numbering& numbering) {
-  return tracker::migrate(handover, owner_, ranks_, migrations_++, numbering);
+  return tracker::migrate(handover, owners_, ranks_, migrations_++, numbering);
 }
 
 }  // namespace cosim::tracker

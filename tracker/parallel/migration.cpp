@@ -137,11 +137,11 @@ void unpack(std::span<const std::byte> records, Swarm& swarm, const Numbering& n
   });
 }
 
-std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks, std::uint64_t round,
+std::size_t migrate(Swarm& swarm, const Owners& owner, const Ranks& ranks, std::uint64_t round,
                     const Numbering& numbering) {
   if (ranks.size() == 1) return 0;
   const int me = ranks.rank();
-  const auto owner_of = [&](std::size_t i) { return owner[static_cast<std::size_t>(numbering.global(swarm.cell(i)))]; };
+  const auto owner_of = [&](std::size_t i) { return owner(numbering.global(swarm.cell(i))); };
   Messages out;
   std::size_t left = 0;
   for (std::size_t i = 0; i < swarm.size(); ++i)
@@ -154,7 +154,7 @@ std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks
   return left;
 }
 
-std::size_t migrate(Handover& handover, std::span<const int> owner, const Ranks& ranks, std::uint64_t round,
+std::size_t migrate(Handover& handover, const Owners& owner, const Ranks& ranks, std::uint64_t round,
                     const Numbering& numbering) {
   if (ranks.size() == 1) return 0;
   Messages out;
@@ -163,7 +163,7 @@ std::size_t migrate(Handover& handover, std::span<const int> owner, const Ranks&
     const Flight& f = handover.flight(i);
     const Index cell = numbering.global(p.cell);
     const FlightRecord r{{p.x[0], p.x[1], p.x[2]}, {p.v[0], p.v[1], p.v[2]}, f.remaining, cell, f.entered, f.streak};
-    append(out, owner[static_cast<std::size_t>(cell)], r, handover.states(i));
+    append(out, owner(cell), r, handover.states(i));
   }
   const std::size_t left = handover.size();
   handover.clear();

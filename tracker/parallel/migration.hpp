@@ -13,6 +13,7 @@
 #include <span>
 
 #include "tracker/mesh/part.hpp"
+#include "tracker/parallel/owners.hpp"
 #include "tracker/parallel/ranks.hpp"
 #include "tracker/tracking/handover.hpp"
 
@@ -35,18 +36,18 @@ void pack(const Swarm& swarm, std::size_t i, std::span<std::byte> record, const 
 // the swarm, bit for bit as it was packed.
 void unpack(std::span<const std::byte> records, Swarm& swarm, const Numbering& numbering = {});
 
-// Collective: every particle whose cell `owner` (per whole-mesh cell) gives to another rank
+// Collective: every particle whose cell (in the whole mesh) `owner` gives to another rank
 // leaves the swarm for that rank, and what the others send here is appended. Returns how
 // many left. Received particles are appended in the order of their senders' ranks. `round`
 // counts the migrations on the communicator: a rank may start the next one before another
 // has seen this one end, and the round's parity keeps their messages apart, so consecutive
 // migrations on one communicator must differ in parity (one Decomposition at a time per
 // communicator, or a collective between two that start their counts afresh).
-std::size_t migrate(Swarm& swarm, std::span<const int> owner, const Ranks& ranks, std::uint64_t round,
+std::size_t migrate(Swarm& swarm, const Owners& owner, const Ranks& ranks, std::uint64_t round,
                     const Numbering& numbering = {});
 // The same for moves handed over (each particle in another rank's cell, with the rest of
 // its move): the handover then holds what the others sent here.
-std::size_t migrate(Handover& handover, std::span<const int> owner, const Ranks& ranks, std::uint64_t round,
+std::size_t migrate(Handover& handover, const Owners& owner, const Ranks& ranks, std::uint64_t round,
                     const Numbering& numbering);
 
 }  // namespace cosim::tracker

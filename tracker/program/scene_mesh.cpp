@@ -41,7 +41,7 @@ std::array<bool, 3> periodic(const Reader& r) {
   return out;
 }
 
-Mesh box(const Reader& r, const scene::Domain& domain) {
+BoxSpec box(const Reader& r, const scene::Domain& domain) {
   std::array<double, 3> cells{}, ratio{1, 1, 1};
   r.numbers("cells", cells, Range::closed(1, 1e6));
   if (r.has("ratio")) r.numbers("ratio", ratio, Range::above(0));
@@ -51,7 +51,7 @@ Mesh box(const Reader& r, const scene::Domain& domain) {
     spec.axes[a] = {.min = domain.min[a], .max = domain.max[a], .cells = n[a], .ratio = ratio[a]};
   spec.tetrahedra = r.boolean("tetrahedra", false);
   spec.periodic = periodic(r);
-  return box_mesh(spec);
+  return spec;
 }
 
 Mesh voronoi(const Reader& r, const scene::Domain& domain) {
@@ -70,19 +70,24 @@ Mesh voronoi(const Reader& r, const scene::Domain& domain) {
 
 }  // namespace
 
-Mesh read_mesh(const Reader& r, const scene::Scene& scene) {
+SceneMesh read_mesh(const Reader& r, const scene::Scene& scene) {
   const auto type = static_cast<Type>(r.choice("type", kTypes));
   // The key a failure of the mesh itself is blamed on.
   const std::string blamed = type == kGmsh ? "file" : "type";
   Mesh mesh;
+  std::optional<BoxSpec> spec;
   try {
     switch (type) {
-      case kBox: mesh = box(r, scene.domain); break;
+      case kBox:
+        spec = box(r, scene.domain);
+        mesh = box_mesh(*spec);
+        break;
       case kGmsh: mesh = load_gmsh(scene.file.parent_path() / r.string("file")); break;
       case kVoronoi: mesh = voronoi(r, scene.domain); break;
     }
     if (r.has("perturb")) {
       const Reader p = r.map("perturb");
+      spec.reset();
       mesh = perturbed(std::move(mesh), {.fraction = p.number("fraction", Range::open(0, 0.5)),
                                          .seed = static_cast<std::uint64_t>(p.integer("seed", 1, Range::at_least(0)))});
       p.finish();
@@ -91,7 +96,7 @@ Mesh read_mesh(const Reader& r, const scene::Scene& scene) {
     r.fail(blamed, e.what());
   }
   r.finish();
-  return mesh;
+  return {std::move(mesh), std::move(spec)};
 }
 
 }  // namespace cosim::tracker

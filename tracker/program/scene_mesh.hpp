@@ -16,10 +16,16 @@
 #pragma once
 
 #include "scene/reader.hpp"
-#include "tracker/mesh/mesh.hpp"
+#include "tracker/mesh/box_mesh.hpp"
+
+#include <optional>
 
 namespace cosim::tracker {
 
-Mesh read_mesh(const scene::Reader& mesh, const scene::Scene& scene);
+struct SceneMesh {
+  Mesh mesh;
+  std::optional<BoxSpec> box;  // the mesh is this box's (not perturbed)
+};
+SceneMesh read_mesh(const scene::Reader& mesh, const scene::Scene& scene);
 
 }  // namespace cosim::tracker

@@ -18,7 +18,9 @@ TrackerScene read_tracker(const scene::Scene& scene) {
 
   TrackerScene t;
   t.dt = p->dt;
-  t.mesh = std::make_unique<const Mesh>(read_mesh(options.map("mesh"), scene));
+  SceneMesh mesh = read_mesh(options.map("mesh"), scene);
+  t.mesh = std::make_unique<const Mesh>(std::move(mesh.mesh));
+  t.box = std::move(mesh.box);
   t.particles = read_seeding(options.map("particles"));
   Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass);
   t.inflows = read_inflows(options, *t.mesh, boundaries, t.particles.mass, t.particles.weight);

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "scene/scene.hpp"
+#include "tracker/mesh/box_mesh.hpp"
 #include "tracker/program/scene_balance.hpp"
 #include "tracker/program/scene_collisions.hpp"
 #include "tracker/program/scene_particle_output.hpp"
@@ -21,6 +22,7 @@ namespace cosim::tracker {
 struct TrackerScene {
   // On the heap: the domain and the obstacles refer to the mesh, and the whole moves.
   std::unique_ptr<const Mesh> mesh;
+  std::optional<BoxSpec> box;     // the mesh is this box's
   std::unique_ptr<const Domain> domain;
   Obstacles obstacles;            // bound ones at their body's initial pose
   std::vector<int> obstacle_body; // per obstacle: the scene body it moves with, or -1

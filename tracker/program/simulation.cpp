@@ -52,7 +52,7 @@ class StateIn {
 };
 
 // Bumped when the layout changes, so an old checkpoint is refused, not misread.
-constexpr double kStateVersion = 6;
+constexpr double kStateVersion = 7;
 
 // A tally's numbers in one fixed order, for state arrays and sums over the ranks.
 std::vector<long long*> counters(SurfaceTally& t) { return {&t.hits, &t.absorbed}; }
@@ -115,6 +115,14 @@ Random first_random(std::uint64_t seed, int rank) {
 // rank; ranks are 2^48 streams apart, more windows than any run has.
 std::uint64_t collision_stream(std::uint64_t window, int rank) { return window + (static_cast<std::uint64_t>(rank) << 48); }
 
+// Bricks for a box, METIS's parts of any other mesh.
+Decomposition decompose(const TrackerScene& setup, Ranks ranks) {
+  if (!setup.box) return Decomposition(*setup.mesh, ranks);
+  std::array<int, 3> hexahedra{};
+  for (int a = 0; a < 3; ++a) hexahedra[a] = static_cast<int>(axis_nodes(setup.box->axes[a]).size()) - 1;
+  return Decomposition(hexahedra, setup.box->tetrahedra ? 6 : 1, ranks);
+}
+
 TrackerScene placed(TrackerScene setup, const std::vector<Eigen::Isometry3d>& body_poses) {
   if (body_poses.empty()) return setup;
   for (int i = 0; i < setup.obstacles.count(); ++i)
@@ -133,7 +141,7 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
     : setup_(placed(read_tracker(scene), body_poses)),
       velocity_(setup_.tracers ? setup_.tracers->velocity : std::nullopt),
       seed_(setup_.particles.seed),
-      decomposition_(*setup_.mesh, ranks),
+      decomposition_(decompose(setup_, ranks)),
       random_(first_random(seed_, ranks.rank())),
       swarm_(setup_.obstacles.count()),
       sampler_(*setup_.mesh),
@@ -221,9 +229,9 @@ void Simulation::balance() {
   const double now = max_over_mean(held);
   if (!(now > setup_.balance.threshold && now > balance_floor_)) return;
   const std::vector<double> count = counts();
-  std::vector<int> owners = decomposition_.proposal(mesh(), count);
+  Owners owners = decomposition_.proposal(mesh(), count);
   std::vector<double> load(held.size(), 0.0);
-  for (std::size_t c = 0; c < owners.size(); ++c) load[static_cast<std::size_t>(owners[c])] += count[c];
+  for (std::size_t c = 0; c < count.size(); ++c) load[static_cast<std::size_t>(owners(static_cast<Index>(c)))] += count[c];
   // A partition that would not help (too few particles, or cells that cannot be split
   // finer) is not taken, nor sought again until the loads drift 10 % further apart.
   if (!(max_over_mean(load) < 0.9 * now)) {
@@ -282,7 +290,7 @@ void Simulation::balance() {
 
 void Simulation::take_part() {
   const Ranks& ranks = decomposition_.ranks();
-  *part_ = extract_part(*setup_.mesh, decomposition_.owners(), ranks.rank());
+  *part_ = extract_part(*setup_.mesh, [&](Index c) { return decomposition_.owner(c); }, ranks.rank());
   part_cells_ = std::make_unique<PartCells>(*part_);
   setup_.domain = std::make_unique<const Domain>(*part_, setup_.domain->boundaries);
   setup_.obstacles = setup_.obstacles.on(*part_);
@@ -399,8 +407,11 @@ std::vector<double> Simulation::state() const {
   out.put(static_cast<double>(rebalances_));
   out.put(balance_floor_);
   // The partition may have changed since the start (balance()): rank 0 keeps it for all.
-  if (decomposition_.ranks().size() > 1 && decomposition_.ranks().lead())
-    for (const int owner : decomposition_.owners()) out.put(owner);
+  if (decomposition_.ranks().size() > 1 && decomposition_.ranks().lead()) {
+    const std::vector<int> owners = decomposition_.owners().saved();
+    out.put(static_cast<double>(owners.size()));
+    for (const int x : owners) out.put(x);
+  }
   out.put(static_cast<double>(swarm_.size()));
   for (std::size_t i = 0; i < swarm_.size(); ++i) {
     const Particle p = swarm_.particle(i);
@@ -445,8 +456,11 @@ void Simulation::restore(std::span<const double> state) {
   const double balance_floor = in.get();
   std::vector<int> owners;
   const bool partitioned = decomposition_.ranks().size() > 1;
-  if (partitioned && decomposition_.ranks().lead())
-    for (Index c = 0; c < mesh().cell_count(); ++c) owners.push_back(in.get_count<int>());
+  if (partitioned && decomposition_.ranks().lead()) {
+    const auto n = in.get_count<std::size_t>();
+    if (n > static_cast<std::size_t>(mesh().cell_count())) throw std::runtime_error("tracker state: owners too long");
+    for (std::size_t k = 0; k < n; ++k) owners.push_back(in.get_count<int>());
+  }
   Swarm swarm(objects);
   std::vector<csg::State> states(static_cast<std::size_t>(objects));
   for (auto n = in.get_count<std::size_t>(); n > 0; --n) {
@@ -480,11 +494,14 @@ void Simulation::restore(std::span<const double> state) {
   if (partitioned) {
     // Every rank restores at once (participant/mpi_team.hpp); a rank that threw above ends
     // the job (MPI_Abort) rather than leave the others waiting here.
-    owners.resize(static_cast<std::size_t>(mesh().cell_count()));
+    std::vector<int> size{static_cast<int>(owners.size())};
+    decomposition_.ranks().broadcast(size);
+    owners.resize(static_cast<std::size_t>(size[0]));
     decomposition_.ranks().broadcast(owners);
-    if (!std::ranges::equal(owners, decomposition_.owners())) {
+    if (owners != decomposition_.owners().saved()) {
       try {
-        decomposition_.set_owners(std::move(owners));
+        decomposition_.set_owners(
+            Owners::restored(owners, decomposition_.owners(), mesh().cell_count(), decomposition_.ranks().size()));
       } catch (const std::invalid_argument& e) {
         throw std::runtime_error(std::string("tracker state: ") + e.what());
       }

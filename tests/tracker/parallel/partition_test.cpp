@@ -122,8 +122,7 @@ TEST(Migration, RecordsCarryAParticleAndItsStatesBitForBit) {
 TEST(Migration, OneRankKeepsEveryParticle) {
   Swarm swarm(0);
   for (int i = 0; i < 10; ++i) swarm.add({{0, 0, 0}, {1, 0, 0}, i}, {});
-  const std::vector<int> owner(10, 0);
-  EXPECT_EQ(migrate(swarm, owner, Ranks(), 0), 0u);
+  EXPECT_EQ(migrate(swarm, Owners(std::vector<int>(10, 0)), Ranks(), 0), 0u);
   EXPECT_EQ(swarm.size(), 10u);
 }
 

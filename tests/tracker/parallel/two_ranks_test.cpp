@@ -42,7 +42,7 @@ TEST(Decomposition, TheSameOnBothRanksAndMetisAnswer) {
   const Mesh mesh = box_mesh(cube(10));
   const Decomposition d(mesh, Ranks(MPI_COMM_WORLD));
   ASSERT_EQ(d.ranks().size(), 2) << "run this test with mpirun -n 2";
-  std::vector<int> owners(d.owners().begin(), d.owners().end()), low(owners.size()), high(owners.size());
+  std::vector<int> owners = d.owners().saved(), low(owners.size()), high(owners.size());
   MPI_Allreduce(owners.data(), low.data(), static_cast<int>(owners.size()), MPI_INT, MPI_MIN, MPI_COMM_WORLD);
   MPI_Allreduce(owners.data(), high.data(), static_cast<int>(owners.size()), MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   EXPECT_EQ(low, high);

@@ -20,7 +20,7 @@ scene::Scene with_mesh(const std::string& mesh) {
 
 Mesh mesh_of(const std::string& mesh) {
   const scene::Scene s = with_mesh(mesh);
-  return read_mesh(scene::options_of(s, *s.participant("tracker")).map("mesh"), s);
+  return read_mesh(scene::options_of(s, *s.participant("tracker")).map("mesh"), s).mesh;
 }
 
 std::string error_of(const std::string& mesh) {

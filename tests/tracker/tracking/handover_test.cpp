@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <memory>
 #include <tuple>
 #include <vector>
@@ -29,6 +30,10 @@ std::vector<int> interleaved_owners(const Mesh& mesh) {
   return owner;
 }
 
+std::function<int(Index)> table(const std::vector<int>& owner) {
+  return [&owner](Index c) { return owner[static_cast<std::size_t>(c)]; };
+}
+
 bool same_face(const Face& a, const Face& b) { return a.normal == b.normal && a.point == b.point && a.shift == b.shift; }
 
 TEST(Part, HasItsCellsAndTwoLayersOfNeighboursWithTheWholesFaces) {
@@ -39,7 +44,7 @@ TEST(Part, HasItsCellsAndTwoLayersOfNeighboursWithTheWholesFaces) {
       const Mesh whole = box_mesh(s);
       const std::vector<int> owner = interleaved_owners(whole);
       for (int rank = 0; rank < kRanks; ++rank) {
-        const Mesh part = extract_part(whole, owner, rank);
+        const Mesh part = extract_part(whole, table(owner), rank);
         const PartCells cells(part);
         const auto owned = static_cast<Index>(std::count(owner.begin(), owner.end(), rank));
         ASSERT_EQ(part.own_cells(), owned);
@@ -122,7 +127,7 @@ TEST(Handover, MovesThroughThreePartsEndWhereTheWholeMeshPutsThem) {
   for (int r = 0; r < kRanks; ++r) {
     ranks.emplace_back(2);
     Rank& rank = ranks.back();
-    rank.mesh = std::make_unique<Mesh>(extract_part(whole, owner, r));
+    rank.mesh = std::make_unique<Mesh>(extract_part(whole, table(owner), r));
     rank.domain = std::make_unique<Domain>(*rank.mesh, walls);
     rank.obstacles = std::make_unique<Obstacles>(*rank.mesh, objects);
     rank.cells = std::make_unique<PartCells>(*rank.mesh);
@@ -214,7 +219,8 @@ TEST(Handover, MovesThroughThreePartsEndWhereTheWholeMeshPutsThem) {
 
 TEST(Handover, APartWithoutAHandoverIsRefused) {
   const Mesh whole = box_mesh(cube(3));
-  const Mesh part = extract_part(whole, interleaved_owners(whole), 0);
+  const std::vector<int> owner = interleaved_owners(whole);
+  const Mesh part = extract_part(whole, table(owner), 0);
   const Domain domain(part, {std::vector<BoundaryCondition>(6), 1.0});
   Swarm swarm(0);
   MoveTally moves;

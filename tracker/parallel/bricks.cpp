@@ -1,0 +1,124 @@
+#include "tracker/parallel/bricks.hpp"
+
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace cosim::tracker {
+namespace {
+
+// The axis to cut: the longest in hexahedra (the lowest on a tie), or -1 if every axis is
+// one hexahedron (or none) long.
+int longest(const Bricks::Range& r) {
+  int axis = -1, length = 1;
+  for (int a = 0; a < 3; ++a)
+    if (r.hi[a] - r.lo[a] > length) {
+      length = r.hi[a] - r.lo[a];
+      axis = a;
+    }
+  return axis;
+}
+
+}  // namespace
+
+Bricks::Bricks(std::array<int, 3> hexahedra, int per_hex, int parts)
+    : hexahedra_(hexahedra), per_hex_(per_hex), bricks_(static_cast<std::size_t>(std::max(parts, 0))) {
+  if (parts < 1 || per_hex < 1 || hexahedra[0] < 1 || hexahedra[1] < 1 || hexahedra[2] < 1)
+    throw std::invalid_argument("bricks: " + std::to_string(parts) + " parts of " + std::to_string(hexahedra[0]) +
+                                " x " + std::to_string(hexahedra[1]) + " x " + std::to_string(hexahedra[2]) +
+                                " hexahedra");
+}
+
+Bricks::Bricks(std::array<int, 3> hexahedra, int per_hex, int parts, std::span<const double> weight)
+    : Bricks(hexahedra, per_hex, parts) {
+  const long long cells = 1LL * hexahedra[0] * hexahedra[1] * hexahedra[2] * per_hex;
+  if (!weight.empty() && static_cast<long long>(weight.size()) != cells)
+    throw std::invalid_argument("bricks: " + std::to_string(weight.size()) + " weights for " + std::to_string(cells) +
+                                " cells");
+  split({{0, 0, 0}, hexahedra}, 0, parts, [&](const Range& r, int axis, int low_parts, int count) {
+    // The weight of each slab of hexahedra across the axis, then the cut nearest the share.
+    std::vector<double> slab(static_cast<std::size_t>(r.hi[axis] - r.lo[axis]), 0.0);
+    for (int k = r.lo[2]; k < r.hi[2]; ++k)
+      for (int j = r.lo[1]; j < r.hi[1]; ++j)
+        for (int i = r.lo[0]; i < r.hi[0]; ++i) {
+          const std::array<int, 3> at{i, j, k};
+          double w = per_hex;
+          if (!weight.empty()) {
+            const long long hex = i + 1LL * hexahedra[0] * (j + 1LL * hexahedra[1] * k);
+            w = 0.0;
+            for (int t = 0; t < per_hex; ++t) w += weight[static_cast<std::size_t>(hex * per_hex + t)];
+          }
+          slab[static_cast<std::size_t>(at[axis] - r.lo[axis])] += w;
+        }
+    const double total = std::accumulate(slab.begin(), slab.end(), 0.0);
+    const double share = total * low_parts / count;
+    // Each side keeps at least one slab.
+    int best = r.lo[axis] + 1;
+    double below = slab[0], best_miss = std::abs(below - share);
+    for (int c = r.lo[axis] + 2; c < r.hi[axis]; ++c) {
+      below += slab[static_cast<std::size_t>(c - 1 - r.lo[axis])];
+      if (const double miss = std::abs(below - share); miss < best_miss) {
+        best_miss = miss;
+        best = c;
+      }
+    }
+    return best;
+  });
+}
+
+Bricks Bricks::from_cuts(std::array<int, 3> hexahedra, int per_hex, int parts, std::span<const int> cuts) {
+  Bricks bricks(hexahedra, per_hex, parts);
+  std::size_t next = 0;
+  bricks.split({{0, 0, 0}, hexahedra}, 0, parts, [&](const Range& r, int axis, int, int) {
+    if (next == cuts.size()) throw std::invalid_argument("bricks: fewer cuts than the partition makes");
+    const int cut = cuts[next++];
+    if (cut <= r.lo[axis] || cut >= r.hi[axis]) throw std::invalid_argument("bricks: a cut outside its brick");
+    return cut;
+  });
+  if (next != cuts.size()) throw std::invalid_argument("bricks: more cuts than the partition makes");
+  return bricks;
+}
+
+template <typename CutOf>
+int Bricks::split(const Range& range, int first, int count, const CutOf& cut_of) {
+  const int axis = longest(range);
+  if (count == 1 || axis < 0) {
+    // One part, or one hexahedron left: it goes to the first part, the others stay empty.
+    for (int p = first; p < first + count; ++p)
+      bricks_[static_cast<std::size_t>(p)] = p == first ? range : Range{range.lo, range.lo};
+    return -1 - first;
+  }
+  const int low_parts = count / 2;
+  const int cut = cut_of(range, axis, low_parts, count);
+  const int at = static_cast<int>(nodes_.size());
+  nodes_.push_back({axis, cut, 0, 0});
+  Range low = range, high = range;
+  low.hi[axis] = cut;
+  high.lo[axis] = cut;
+  const int l = split(low, first, low_parts, cut_of);
+  const int h = split(high, first + low_parts, count - low_parts, cut_of);
+  nodes_[static_cast<std::size_t>(at)].low = l;
+  nodes_[static_cast<std::size_t>(at)].high = h;
+  return at;
+}
+
+int Bricks::owner(Index cell) const {
+  const long long hex = cell / per_hex_;
+  const std::array<int, 3> at{static_cast<int>(hex % hexahedra_[0]), static_cast<int>(hex / hexahedra_[0] % hexahedra_[1]),
+                              static_cast<int>(hex / (1LL * hexahedra_[0] * hexahedra_[1]))};
+  int node = nodes_.empty() ? -1 : 0;
+  while (node >= 0) {
+    const Node& n = nodes_[static_cast<std::size_t>(node)];
+    node = at[n.axis] < n.cut ? n.low : n.high;
+  }
+  return nodes_.empty() ? 0 : -1 - node;
+}
+
+std::vector<int> Bricks::cuts() const {
+  std::vector<int> out;
+  for (const Node& n : nodes_) out.push_back(n.cut);
+  return out;
+}
+
+}  // namespace cosim::tracker
