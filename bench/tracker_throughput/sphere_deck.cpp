@@ -63,7 +63,7 @@ SphereResult run_sphere(const SphereBox& box, const SphereDeck& deck) {
                        .drift = kStreamVelocity,
                        .mass = box.mass,
                        .weight = SphereDeck::kWeight};
-  Swarm swarm = seed_particles(box.mesh, box.sphere, stream, Decomposition(box.mesh, {}), box.mesh.volume);
+  Swarm swarm = seed_particles(box.mesh, box.sphere, stream, Decomposition(box.mesh, {}), volumes_of(box.mesh));
   CellCollider collider(box.mesh, box.collisions, SphereDeck::kTemperature, SphereDeck::kWeight, 7);
   SphereResult result;
   result.seeded = static_cast<long long>(swarm.size());

@@ -1,6 +1,8 @@
 #include "tracker/program/seed_particles.hpp"
 
 #include <algorithm>
+#include <array>
+#include <memory>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -43,13 +45,12 @@ class Seeder {
     return std::move(swarm_);
   }
 
-  Swarm total(const Ranks& ranks, std::span<const double> whole_volume) {
-    prefix_volume_.assign(1, 0.0);
-    for (double v : whole_volume) prefix_volume_.push_back(prefix_volume_.back() + v);
+  Swarm total(const Ranks& ranks, const CellVolumes& volumes) {
+    volumes_ = &volumes;
     long long wanted = seeding_.total, drawn = 0;
     for (std::uint64_t round = 0; wanted > 0; ++round) {
       drawn += wanted;
-      wanted -= ranks.sum(split(0, static_cast<Index>(whole_volume.size()), wanted, round));
+      wanted -= ranks.sum(split(0, volumes.cells, wanted, round));
       if (wanted > 0 && drawn > kTries * (static_cast<long long>(seeding_.total) + 1))
         throw std::runtime_error("particles: the walls leave (almost) no free space to seed in");
     }
@@ -64,10 +65,8 @@ class Seeder {
     if (n == 0 || first == owned_.end() || first->first >= b) return 0;
     if (b - a == 1) return draw(a, first->second, n, round);
     const Index m = a + (b - a) / 2;
-    const std::size_t ua = static_cast<std::size_t>(a), um = static_cast<std::size_t>(m),
-                      ub = static_cast<std::size_t>(b);
-    // Monotone prefix sums: the share is in [0, 1] despite round-off.
-    const double share = (prefix_volume_[um] - prefix_volume_[ua]) / (prefix_volume_[ub] - prefix_volume_[ua]);
+    const double below = volumes_->below(a);
+    const double share = std::clamp((volumes_->below(m) - below) / (volumes_->below(b) - below), 0.0, 1.0);
     dsmc::Rng rng = keyed(seeding_.seed, round, Drawn::range_share,
                           static_cast<std::uint64_t>(a) << 32 | static_cast<std::uint64_t>(b));
     const long long low = std::binomial_distribution<long long>(n, share)(rng);
@@ -106,7 +105,7 @@ class Seeder {
   const Obstacles& obstacles_;
   const Seeding& seeding_;
   std::vector<std::pair<Index, Index>> owned_;  // (in the whole, here), ascending
-  std::vector<double> prefix_volume_;  // of the cells before each index
+  const CellVolumes* volumes_ = nullptr;
   std::vector<csg::State> states_;
   double sigma_;
   Swarm swarm_;
@@ -114,10 +113,39 @@ class Seeder {
 
 }  // namespace
 
+CellVolumes volumes_of(const Mesh& whole) {
+  // Monotone prefix sums: a range's share of a larger one is in [0, 1] despite round-off.
+  auto prefix = std::make_shared<std::vector<double>>(1, 0.0);
+  for (const double v : whole.volume) prefix->push_back(prefix->back() + v);
+  return {whole.cell_count(), [prefix](Index c) { return (*prefix)[static_cast<std::size_t>(c)]; }};
+}
+
+CellVolumes volumes_of(const BoxSpec& box) {
+  std::array<std::vector<double>, 3> nodes;
+  for (int a = 0; a < 3; ++a) nodes[a] = axis_nodes(box.axes[a]);
+  const Index nx = static_cast<Index>(nodes[0].size()) - 1, ny = static_cast<Index>(nodes[1].size()) - 1,
+              nz = static_cast<Index>(nodes[2].size()) - 1, per_hex = box.tetrahedra ? 6 : 1;
+  const auto from_first = [nodes](int a, Index i) { return nodes[a][static_cast<std::size_t>(i)] - nodes[a][0]; };
+  const auto width = [nodes](int a, Index i) {
+    return nodes[a][static_cast<std::size_t>(i) + 1] - nodes[a][static_cast<std::size_t>(i)];
+  };
+  const double wx = from_first(0, nx), wy = from_first(1, ny), wz = from_first(2, nz);
+  const Index cells = nx * ny * nz * per_hex;
+  // Whole layers in z, then whole rows in y of the layer, then whole hexahedra of the row,
+  // then tetrahedra of the hexahedron.
+  return {cells, [=](Index c) {
+            if (c >= cells) return wx * wy * wz;
+            const Index hex = c / per_hex, i = hex % nx, j = hex / nx % ny, k = hex / (nx * ny);
+            return from_first(2, k) * wy * wx +
+                   width(2, k) * (from_first(1, j) * wx +
+                                  width(1, j) * (from_first(0, i) + width(0, i) * static_cast<double>(c % per_hex) / per_hex));
+          }};
+}
+
 Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells,
-                     std::span<const double> whole_volume) {
+                     const CellVolumes& volumes) {
   Seeder seeder(mesh, obstacles, seeding, cells);
-  return seeding.per_cell > 0 ? seeder.per_cell() : seeder.total(cells.ranks(), whole_volume);
+  return seeding.per_cell > 0 ? seeder.per_cell() : seeder.total(cells.ranks(), volumes);
 }
 
 }  // namespace cosim::tracker

@@ -14,18 +14,32 @@
 // the result is exact in distribution; every rank takes part in every round (collective).
 #pragma once
 
+#include <functional>
+
+#include "tracker/mesh/box_mesh.hpp"
 #include "tracker/parallel/decomposition.hpp"
 #include "tracker/program/seeding.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
 namespace cosim::tracker {
 
+// The whole mesh's cells by volume, for `total`'s split: `below(c)` is the volume of the cells
+// numbered below c (0 <= c <= cells), without holding every cell's.
+struct CellVolumes {
+  Index cells = 0;
+  std::function<double(Index)> below;
+};
+// From the mesh's cells (prefix sums: every rank of a run must see the same mesh).
+CellVolumes volumes_of(const Mesh& whole);
+// From the box's nodes (every Kuhn tetrahedron a sixth of its hexahedron), as box_mesh numbers
+// the cells: no mesh needed.
+CellVolumes volumes_of(const BoxSpec& box);
+
 // The particles of the cells `cells` gives this rank (collective over its ranks), numbered
 // by `mesh`'s cells: the whole mesh or this rank's part (obstacles registered there), while
-// the streams are keyed by the whole's cell numbers. `whole_volume`: every cell's volume in
-// the whole mesh. Throws std::runtime_error when the walls leave (almost) no free space to
-// seed `total` in.
+// the streams are keyed by the whole's cell numbers. Throws std::runtime_error when the
+// walls leave (almost) no free space to seed `total` in.
 Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells,
-                     std::span<const double> whole_volume);
+                     const CellVolumes& volumes);
 
 }  // namespace cosim::tracker

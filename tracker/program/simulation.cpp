@@ -153,7 +153,8 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
     take_part();
     sampler_ = CellSampler(*part_);
   }
-  swarm_ = seed_particles(tracked(), setup_.obstacles, setup_.particles, decomposition_, mesh().volume);
+  swarm_ = seed_particles(tracked(), setup_.obstacles, setup_.particles, decomposition_,
+                          setup_.box ? volumes_of(*setup_.box) : volumes_of(mesh()));
   seeded_ = swarm_.size();
   if (setup_.collisions) {
     // The first (sigma g)_max per cell: at the hottest temperature the scene gives.

@@ -90,8 +90,8 @@ TEST(Seeding, TwoRanksSeedWhatOneRankSeeds) {
         "      particles: " + std::string(particles) + "\n",
         "seeding.yaml"));
     const Decomposition two(*t.mesh, Ranks(MPI_COMM_WORLD));
-    const Swarm mine = seed_particles(*t.mesh, t.obstacles, t.particles, two, t.mesh->volume);
-    const Swarm all = seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), t.mesh->volume);
+    const Swarm mine = seed_particles(*t.mesh, t.obstacles, t.particles, two, volumes_of(*t.mesh));
+    const Swarm all = seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), volumes_of(*t.mesh));
     std::size_t k = 0;
     for (std::size_t i = 0; i < all.size(); ++i) {
       if (!two.owns(all.cell(i))) continue;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
+#include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/geometry.hpp"
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/seed_particles.hpp"
@@ -22,7 +23,18 @@ TrackerScene tracker_with(const std::string& particles, const std::string& mesh 
 }
 
 Swarm seeded(const TrackerScene& t) {
-  return seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), t.mesh->volume);
+  return seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), volumes_of(*t.mesh));
+}
+
+// A box's volumes from its nodes are its mesh's, up to round-off, at every cell number.
+TEST(Seeding, ABoxsVolumesWithoutItsMesh) {
+  BoxSpec box = cube(5, true);
+  box.axes[0] = {.min = -2.0, .max = 3.0, .cells = 7, .ratio = 4.0};
+  box.axes[1].nodes = {0.0, 0.1, 0.5, 0.55, 1.0};
+  const CellVolumes exact = volumes_of(box_mesh(box)), from_nodes = volumes_of(box);
+  ASSERT_EQ(from_nodes.cells, exact.cells);
+  const double all = exact.below(exact.cells);
+  for (Index c = 0; c <= exact.cells; ++c) ASSERT_NEAR(from_nodes.below(c), exact.below(c), 1e-13 * all) << c;
 }
 
 TEST(Seeding, UniformInTheCellsOutsideTheWallsWithAMaxwellian) {

@@ -4,6 +4,7 @@
 
 #include "tracker/csg/shapes.hpp"
 #include "tracker/mesh/box_mesh.hpp"
+#include "tracker/mesh/box_part.hpp"
 #include "tracker/mesh/geometry.hpp"
 #include "tracker/mesh/part.hpp"
 #include "tracker/tracking/handover.hpp"
@@ -95,6 +96,50 @@ TEST(Part, HasItsCellsAndTwoLayersOfNeighboursWithTheWholesFaces) {
       }
     }
   }
+}
+
+// A box's part built from a box around the brick is the part of the whole box, to the bit:
+// graded axes, tetrahedra, periodic axes that wrap and that do not.
+TEST(Part, OfABoxIsBuiltWithoutTheWhole) {
+  BoxSpec spec = cube(7, true);
+  spec.axes[0] = {.min = -1.0, .max = 2.0, .cells = 11, .ratio = 3.0};
+  spec.axes[2].cells = 9;
+  for (const std::array<bool, 3> periodic : {std::array{false, false, false}, std::array{true, false, true}}) {
+    spec.periodic = periodic;
+    const Mesh whole = box_mesh(spec);
+    // Bricks: a corner, the middle, a slab through the box.
+    const std::array<std::array<std::array<int, 3>, 2>, 3> bricks{{{{{0, 0, 0}, {4, 3, 2}}},
+                                                                   {{{3, 2, 3}, {8, 5, 6}}},
+                                                                   {{{5, 0, 0}, {6, 7, 9}}}}};
+    for (const auto& [lo, hi] : bricks) {
+      const auto owner = [&](Index c) {
+        const Index hex = c / 6;
+        const std::array<Index, 3> at{hex % 11, hex / 11 % 7, hex / 77};
+        for (int a = 0; a < 3; ++a)
+          if (at[a] < lo[a] || at[a] >= hi[a]) return 1;
+        return 0;
+      };
+      const Mesh a = box_part(spec, lo, hi, owner, 0), b = extract_part(whole, owner, 0);
+      ASSERT_EQ(a.global, b.global);
+      EXPECT_EQ(a.ghosts, b.ghosts);
+      EXPECT_EQ(a.whole_diagonal, b.whole_diagonal);
+      EXPECT_EQ(a.cell_faces, b.cell_faces);
+      EXPECT_EQ(a.vertices, b.vertices);
+      EXPECT_EQ(a.face_vertex_index, b.face_vertex_index);
+      EXPECT_EQ(a.volume, b.volume);
+      EXPECT_EQ(a.centroid, b.centroid);
+      EXPECT_EQ(a.patches, b.patches);
+      ASSERT_EQ(a.faces.size(), b.faces.size());
+      for (std::size_t f = 0; f < a.faces.size(); ++f) {
+        EXPECT_EQ(a.faces[f].normal, b.faces[f].normal);
+        EXPECT_EQ(a.faces[f].point, b.faces[f].point);
+        EXPECT_EQ(a.faces[f].neighbour, b.faces[f].neighbour) << "face " << f;
+        EXPECT_EQ(a.faces[f].twin, b.faces[f].twin);
+        EXPECT_EQ(a.shifts[a.faces[f].shift], b.shifts[b.faces[f].shift]);
+      }
+    }
+  }
+  EXPECT_THROW(box_part(spec, {0, 0, 0}, {0, 1, 1}, [](Index) { return 0; }, 0), std::invalid_argument);
 }
 
 // One "rank": its part, walls and obstacles registered on it, its particles.
