@@ -16,10 +16,7 @@ Decomposition::Decomposition(const Mesh& mesh, Ranks ranks)
   if (ranks_.size() > 1) owners_ = Owners(agreed([&] { return partition_cells(mesh, ranks_.size()); }));
 }
 
-Decomposition::Decomposition(std::array<int, 3> hexahedra, int per_hex, Ranks ranks)
-    : ranks_(ranks), owners_(Bricks(hexahedra, per_hex, ranks.size(), {})) {}
-
-Owners Decomposition::proposal(const Mesh& mesh, std::span<const double> particles) const {
+Owners Decomposition::proposal(const Mesh* mesh, std::span<const double> particles) const {
   if (ranks_.size() == 1) return owners_;
   if (const std::optional<Bricks>& bricks = owners_.bricks()) {
     const std::vector<int> cuts = agreed([&] {
@@ -41,7 +38,7 @@ Owners Decomposition::proposal(const Mesh& mesh, std::span<const double> particl
     std::vector<int> weight;
     weight.reserve(particles.size());
     for (const double n : particles) weight.push_back(1 + static_cast<int>(std::lround(n * scale)));
-    std::vector<int> part = partition_cells(mesh, ranks_.size(), weight);
+    std::vector<int> part = partition_cells(*mesh, ranks_.size(), weight);
     // METIS numbers its parts as it likes: each part goes to the rank holding most of its
     // particles now (greedily, the largest overlaps first), so a small shift moves few.
     const auto ranks = static_cast<std::size_t>(ranks_.size());

@@ -23,7 +23,7 @@ class Decomposition {
   // rank owns every cell (no METIS, no MPI).
   Decomposition(const Mesh& mesh, Ranks ranks);
   // Bricks of a structured box (bricks.hpp): every rank computes the same, no mesh needed.
-  Decomposition(std::array<int, 3> hexahedra, int per_hex, Ranks ranks);
+  Decomposition(Bricks bricks, Ranks ranks) : ranks_(ranks), owners_(std::move(bricks)) {}
 
   const Ranks& ranks() const { return ranks_; }
   const Owners& owners() const { return owners_; }
@@ -35,12 +35,15 @@ class Decomposition {
   // Collective: the moves handed over go on to their cells' owners, and the handover holds
   // those that came here; returns how many left.
   std::size_t hand_over(Handover& handover, const Numbering& numbering);
+  // Collective: the sparse exchange of migrate(), for other records.
+  Messages exchange(const Messages& out) { return tracker::exchange(out, ranks_, migrations_++); }
   // Collective: owners balanced by `particles` (per cell of the whole mesh; read on rank 0
   // only), computed on rank 0 and broadcast: bricks cut where the particles split in the
-  // ratio of the ranks, or METIS's parts of `mesh` with every cell weighted by its particles
+  // ratio of the ranks, or METIS's parts of `mesh` (the whole, on rank 0; only for a table)
+  // with every cell weighted by its particles
   // (and 1 % of the mean weight, so empty cells still spread), numbered after the ranks
   // that hold most of their particles now. Changes nothing here.
-  Owners proposal(const Mesh& mesh, std::span<const double> particles) const;
+  Owners proposal(const Mesh* mesh, std::span<const double> particles) const;
   // New owners (a proposal, or those a state saved; the same on every rank). The particles
   // stay where they are until the next migrate().
   void set_owners(Owners owners) { owners_ = std::move(owners); }

@@ -33,23 +33,23 @@ static_assert(sizeof(FlightRecord) == 72);
 // Two tags, alternating with the round: ranks are at most one migration apart.
 constexpr int kMigrationTags[2] = {7301, 7302};
 
-using Messages = std::map<int, std::vector<std::byte>>;  // by rank, in rank order
-
 int bytes_count(std::size_t n) {
   if (n > static_cast<std::size_t>(INT_MAX))
     throw std::length_error("a rank sends more than 2 GB of particles in one step");
   return static_cast<int>(n);
 }
 
+}  // namespace
+
 // NBX: synchronous sends complete only once received; a rank whose sends are all received
 // enters a non-blocking barrier and keeps receiving until every rank is in it. Returns what
 // came, by sender: unpacked in that order, not as they arrive, a cell's particles stand in
 // the same order in every run, and so draw the same random numbers.
-Messages exchange(Messages& out, const Ranks& ranks, std::uint64_t round) {
+Messages exchange(const Messages& out, const Ranks& ranks, std::uint64_t round) {
   const int tag = kMigrationTags[round % 2];
   for (const auto& [rank, bytes] : out) bytes_count(bytes.size());  // every size checked before a send is posted
   std::vector<MPI_Request> sends;
-  for (auto& [rank, bytes] : out) {
+  for (const auto& [rank, bytes] : out) {
     sends.emplace_back();
     MPI_Issend(bytes.data(), bytes_count(bytes.size()), MPI_BYTE, rank, tag, ranks.comm(), &sends.back());
   }
@@ -80,6 +80,8 @@ Messages exchange(Messages& out, const Ranks& ranks, std::uint64_t round) {
   }
   return in;
 }
+
+namespace {
 
 // Appends `record` (a record, then the states) to the message for `rank`.
 template <typename R>

@@ -10,7 +10,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <span>
+#include <vector>
 
 #include "tracker/mesh/part.hpp"
 #include "tracker/parallel/owners.hpp"
@@ -27,6 +29,12 @@ struct Numbering {
   // std::logic_error if the part does not have the cell (a particle sent to the wrong rank).
   Index local(Index global) const;
 };
+
+// Messages of bytes by rank, in rank order.
+using Messages = std::map<int, std::vector<std::byte>>;
+// Collective, the sparse exchange itself: `out` to their ranks, and what came here by sender.
+// `round`: as for migrate().
+Messages exchange(const Messages& out, const Ranks& ranks, std::uint64_t round);
 
 // Bytes of one particle's record with `objects` obstacles.
 std::size_t record_bytes(int objects);

@@ -84,9 +84,12 @@ output::FieldFrame TrackerSolver::fields() const {
   // Taking the moments starts a new average: the next frame averages the windows since.
   const std::vector<double> count = gas_->counts();
   const std::vector<CellMoments> moments = gas_->take_moments();
-  output::FieldFrame frame = tracker_fields(gas_->mesh(), moments, count);
+  std::optional<output::PointSet> particles;
   if (const std::optional<ParticleOutput>& dump = gas_->setup().particle_output; dump && dump->at(done_, windows_))
-    frame.point_sets.push_back(particle_set(*gas_, *dump));
+    particles = particle_set(*gas_, *dump);
+  if (!ranks_.lead()) return {};  // rank 0 answers the coupler, and only it has the whole mesh
+  output::FieldFrame frame = tracker_fields(gas_->mesh(), moments, count);
+  if (particles) frame.point_sets.push_back(std::move(*particles));
   return frame;
 }
 

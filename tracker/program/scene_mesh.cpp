@@ -70,7 +70,7 @@ Mesh voronoi(const Reader& r, const scene::Domain& domain) {
 
 }  // namespace
 
-SceneMesh read_mesh(const Reader& r, const scene::Scene& scene) {
+SceneMesh read_mesh(const Reader& r, const scene::Scene& scene, const std::function<Mesh(const BoxSpec&)>& box_part) {
   const auto type = static_cast<Type>(r.choice("type", kTypes));
   // The key a failure of the mesh itself is blamed on.
   const std::string blamed = type == kGmsh ? "file" : "type";
@@ -80,7 +80,7 @@ SceneMesh read_mesh(const Reader& r, const scene::Scene& scene) {
     switch (type) {
       case kBox:
         spec = box(r, scene.domain);
-        mesh = box_mesh(*spec);
+        mesh = box_part && !r.has("perturb") ? box_part(*spec) : box_mesh(*spec);
         break;
       case kGmsh: mesh = load_gmsh(scene.file.parent_path() / r.string("file")); break;
       case kVoronoi: mesh = voronoi(r, scene.domain); break;

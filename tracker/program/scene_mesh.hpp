@@ -18,6 +18,7 @@
 #include "scene/reader.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 
+#include <functional>
 #include <optional>
 
 namespace cosim::tracker {
@@ -26,6 +27,9 @@ struct SceneMesh {
   Mesh mesh;
   std::optional<BoxSpec> box;  // the mesh is this box's (not perturbed)
 };
-SceneMesh read_mesh(const scene::Reader& mesh, const scene::Scene& scene);
+// `box_part`, if given: builds the mesh of a box (not perturbed) from its spec instead of
+// box_mesh (a rank's part of it).
+SceneMesh read_mesh(const scene::Reader& mesh, const scene::Scene& scene,
+                    const std::function<Mesh(const BoxSpec&)>& box_part = {});
 
 }  // namespace cosim::tracker

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "scene/error.hpp"
+#include "tracker/mesh/box_part.hpp"
 #include "tracker/program/scene_inflow.hpp"
 #include "tracker/program/scene_mesh.hpp"
 #include "tracker/program/scene_obstacles.hpp"
@@ -11,21 +12,51 @@
 
 namespace cosim::tracker {
 
-TrackerScene read_tracker(const scene::Scene& scene) {
+namespace {
+
+// On several ranks, this rank's brick of a box and the two layers of cells around it.
+std::function<Mesh(const BoxSpec&)> box_parts(const Ranks& ranks) {
+  if (ranks.size() == 1) return {};
+  return [ranks](const BoxSpec& spec) {
+    const Bricks bricks = box_bricks(spec, ranks.size());
+    const Bricks::Range& mine = bricks.brick(ranks.rank());
+    return box_part(spec, mine.lo, mine.hi, [&](Index c) { return bricks.owner(c); }, ranks.rank());
+  };
+}
+
+}  // namespace
+
+Bricks box_bricks(const BoxSpec& box, int ranks) {
+  std::array<int, 3> hexahedra{};
+  for (int a = 0; a < 3; ++a) hexahedra[a] = static_cast<int>(axis_nodes(box.axes[a]).size()) - 1;
+  Bricks bricks(hexahedra, box.tetrahedra ? 6 : 1, ranks, {});
+  for (int p = 0; p < ranks; ++p)
+    if (bricks.brick(p).hexahedra() == 0)
+      throw std::invalid_argument("a box of " + std::to_string(1LL * hexahedra[0] * hexahedra[1] * hexahedra[2]) +
+                                  " hexahedra over " + std::to_string(ranks) + " ranks leaves a rank none");
+  return bricks;
+}
+
+TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
   const scene::Participant* p = scene.participant("tracker");
   if (p == nullptr) throw scene::SceneError(scene.file.string(), 0, "participants", "", "the scene has no tracker");
   const scene::Reader options = scene::options_of(scene, *p);
 
   TrackerScene t;
   t.dt = p->dt;
-  SceneMesh mesh = read_mesh(options.map("mesh"), scene);
-  t.mesh = std::make_unique<const Mesh>(std::move(mesh.mesh));
-  t.box = std::move(mesh.box);
-  t.particles = read_seeding(options.map("particles"));
-  Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass);
-  t.inflows = read_inflows(options, *t.mesh, boundaries, t.particles.mass, t.particles.weight);
-  t.collisions = read_collisions(options, t.particles.mass);
   t.tracers = read_tracers(options, scene);
+  SceneMesh mesh = read_mesh(options.map("mesh"), scene, t.tracers ? nullptr : box_parts(ranks));
+  t.mesh = std::make_unique<Mesh>(std::move(mesh.mesh));
+  t.box = std::move(mesh.box);
+  const bool part = !t.mesh->global.empty();
+  t.particles = read_seeding(options.map("particles"));
+  Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass, ranks);
+  t.inflows = read_inflows(options, *t.mesh, boundaries, t.particles.mass, t.particles.weight);
+  // A part may hold none of an inflow's faces, but some rank must.
+  for (std::size_t i = 0; part && i < t.inflows.size(); ++i)
+    if (ranks.sum(t.inflows[i].rate() > 0.0 ? 1LL : 0LL) == 0)
+      options.fail("inflow", "inflow " + std::to_string(i) + ": its patches have no boundary faces");
+  t.collisions = read_collisions(options, t.particles.mass);
   if (t.tracers && (t.collisions || !t.inflows.empty()))
     options.fail("tracers", "tracers ride the fluid: a scene with tracers has no collisions and no inflow");
   try {
@@ -47,7 +78,8 @@ TrackerScene read_tracker(const scene::Scene& scene) {
     // An object whose surface meets no cell does nothing: most likely given in other units
     // or outside the domain.
     for (int i = 0; i < t.obstacles.count(); ++i)
-      if (t.obstacles.cells(i).stats().max_primitives == 0)
+      if (const long long meets = t.obstacles.cells(i).stats().max_primitives > 0 ? 1 : 0;
+          (part ? ranks.sum(meets) : meets) == 0)
         options.fail("obstacles", "obstacle '" + t.obstacles.object(i).name +
                                       "': its surface meets no cell of the mesh (outside the domain, or in other units?)");
   }

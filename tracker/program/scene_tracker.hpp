@@ -8,6 +8,8 @@
 
 #include "scene/scene.hpp"
 #include "tracker/mesh/box_mesh.hpp"
+#include "tracker/parallel/bricks.hpp"
+#include "tracker/parallel/ranks.hpp"
 #include "tracker/program/scene_balance.hpp"
 #include "tracker/program/scene_collisions.hpp"
 #include "tracker/program/scene_particle_output.hpp"
@@ -20,8 +22,9 @@
 namespace cosim::tracker {
 
 struct TrackerScene {
-  // On the heap: the domain and the obstacles refer to the mesh, and the whole moves.
-  std::unique_ptr<const Mesh> mesh;
+  // On the heap: the domain and the obstacles refer to the mesh, and the whole moves. The
+  // whole mesh, or (read on several ranks) this rank's part of a box.
+  std::unique_ptr<Mesh> mesh;
   std::optional<BoxSpec> box;     // the mesh is this box's
   std::unique_ptr<const Domain> domain;
   Obstacles obstacles;            // bound ones at their body's initial pose
@@ -35,7 +38,13 @@ struct TrackerScene {
   double dt = 0.0;
 };
 
-// Throws scene::SceneError naming file, line, key and value.
-TrackerScene read_tracker(const scene::Scene& scene);
+// Throws scene::SceneError naming file, line, key and value. On several `ranks` a box mesh
+// (not perturbed, not in tracer mode) is built as this rank's part (mesh/box_part.hpp, the
+// bricks of parallel/bricks.hpp), and the checks that need every cell are made over the
+// ranks (collective).
+TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks = {});
+// The bricks of a box over `ranks` ranks (parallel/bricks.hpp); std::invalid_argument if a
+// rank would have no cell.
+Bricks box_bricks(const BoxSpec& box, int ranks);
 
 }  // namespace cosim::tracker

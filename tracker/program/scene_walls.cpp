@@ -38,13 +38,17 @@ BoundaryCondition read_condition(const Reader& r, bool allow_periodic) {
   return c;
 }
 
-Boundaries read_boundaries(const Reader& options, const Mesh& mesh, double mass) {
+Boundaries read_boundaries(const Reader& options, const Mesh& mesh, double mass, const Ranks& ranks) {
   // Absent: as empty, so that a mesh without walls (periodic on every axis) needs none.
   const Reader r =
       options.has("boundaries") ? options.map("boundaries") : Reader(YAML::Node(YAML::NodeType::Map), "", "");
-  std::set<Index> with_faces;
+  std::vector<long long> faces(mesh.patches.size(), 0);
   for (const Face& f : mesh.faces)
-    if (f.neighbour < 0) with_faces.insert(patch_of(f.neighbour));
+    if (f.neighbour < 0 && f.neighbour != kBeyondPart) faces[static_cast<std::size_t>(patch_of(f.neighbour))] = 1;
+  if (!mesh.global.empty()) ranks.sum(faces);  // a part: a patch's faces may all be on other ranks
+  std::set<Index> with_faces;
+  for (std::size_t p = 0; p < faces.size(); ++p)
+    if (faces[p] > 0) with_faces.insert(static_cast<Index>(p));
 
   std::optional<BoundaryCondition> fallback;
   if (r.has("default")) fallback = read_condition(r.map("default"), false);

@@ -17,6 +17,7 @@
 
 #include "scene/reader.hpp"
 #include "tracker/mesh/mesh.hpp"
+#include "tracker/parallel/ranks.hpp"
 #include "tracker/tracking/boundaries.hpp"
 
 namespace cosim::tracker {
@@ -26,6 +27,8 @@ BoundaryCondition read_condition(const scene::Reader& r, bool allow_periodic);
 // The `boundaries` of the tracker's options: one condition per patch of `mesh`. Every patch
 // with boundary faces needs one (its own or the default); a patch without faces (linked
 // periodically by the mesh) gets `periodic`.
-Boundaries read_boundaries(const scene::Reader& options, const Mesh& mesh, double mass);
+// On a rank's part of a mesh (mesh/part.hpp), which patches have faces is asked of all
+// `ranks` (collective).
+Boundaries read_boundaries(const scene::Reader& options, const Mesh& mesh, double mass, const Ranks& ranks = {});
 
 }  // namespace cosim::tracker

@@ -1,8 +1,11 @@
 #include "tracker/program/simulation.hpp"
 
+#include "tracker/mesh/box_part.hpp"
 #include "tracker/program/seed_particles.hpp"
 
 #include <algorithm>
+#include <cstring>
+#include <map>
 #include <memory>
 #include <cmath>
 #include <numeric>
@@ -118,9 +121,27 @@ std::uint64_t collision_stream(std::uint64_t window, int rank) { return window +
 // Bricks for a box, METIS's parts of any other mesh.
 Decomposition decompose(const TrackerScene& setup, Ranks ranks) {
   if (!setup.box) return Decomposition(*setup.mesh, ranks);
-  std::array<int, 3> hexahedra{};
-  for (int a = 0; a < 3; ++a) hexahedra[a] = static_cast<int>(axis_nodes(setup.box->axes[a]).size()) - 1;
-  return Decomposition(hexahedra, setup.box->tetrahedra ? 6 : 1, ranks);
+  return Decomposition(box_bricks(*setup.box, ranks.size()), ranks);
+}
+
+// Per-cell numbers of a rank's cells (`width` a cell) as records: the cell in the whole
+// mesh, then its numbers; cells whose numbers are all 0 are left out.
+void put_cells(std::vector<double>& records, const Mesh& cells, Index c, std::span<const double> numbers) {
+  if (std::all_of(numbers.begin(), numbers.end(), [](double x) { return x == 0.0; })) return;
+  records.push_back(cells.global_cell(c));
+  records.insert(records.end(), numbers.begin(), numbers.end());
+}
+
+std::vector<std::byte> bytes_of(std::span<const double> values) {
+  std::vector<std::byte> bytes(values.size_bytes());
+  std::memcpy(bytes.data(), values.data(), bytes.size());
+  return bytes;
+}
+
+std::vector<double> doubles_of(std::span<const std::byte> bytes) {
+  std::vector<double> values(bytes.size() / sizeof(double));
+  std::memcpy(values.data(), bytes.data(), values.size() * sizeof(double));
+  return values;
 }
 
 TrackerScene placed(TrackerScene setup, const std::vector<Eigen::Isometry3d>& body_poses) {
@@ -138,7 +159,7 @@ TrackerScene placed(TrackerScene setup, const std::vector<Eigen::Isometry3d>& bo
 }  // namespace
 
 Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isometry3d>& body_poses, Ranks ranks)
-    : setup_(placed(read_tracker(scene), body_poses)),
+    : setup_(placed(read_tracker(scene, ranks), body_poses)),
       velocity_(setup_.tracers ? setup_.tracers->velocity : std::nullopt),
       seed_(setup_.particles.seed),
       decomposition_(decompose(setup_, ranks)),
@@ -148,13 +169,21 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
       tallies_(static_cast<std::size_t>(setup_.obstacles.count())),
       patch_tallies_(setup_.domain->boundaries.patches.size()),
       away_(setup_.obstacles.count()) {
+  const CellVolumes volumes = setup_.box ? volumes_of(*setup_.box) : volumes_of(*setup_.mesh);
+  whole_cells_ = volumes.cells;
   if (ranks.size() > 1 && !setup_.tracers) {
-    part_ = std::make_unique<Mesh>();
-    take_part();
+    if (setup_.box) {
+      // read_tracker built this rank's part; rank 0 also writes the whole.
+      part_ = std::move(setup_.mesh);
+      part_cells_ = std::make_unique<PartCells>(*part_);
+      if (ranks.lead()) setup_.mesh = std::make_unique<Mesh>(box_mesh(*setup_.box));
+    } else {
+      part_ = std::make_unique<Mesh>();
+      take_part();
+    }
     sampler_ = CellSampler(*part_);
   }
-  swarm_ = seed_particles(tracked(), setup_.obstacles, setup_.particles, decomposition_,
-                          setup_.box ? volumes_of(*setup_.box) : volumes_of(mesh()));
+  swarm_ = seed_particles(tracked(), setup_.obstacles, setup_.particles, decomposition_, volumes);
   seeded_ = swarm_.size();
   if (setup_.collisions) {
     // The first (sigma g)_max per cell: at the hottest temperature the scene gives.
@@ -229,13 +258,20 @@ void Simulation::balance() {
   ranks.sum(held);
   const double now = max_over_mean(held);
   if (!(now > setup_.balance.threshold && now > balance_floor_)) return;
-  const std::vector<double> count = counts();
-  Owners owners = decomposition_.proposal(mesh(), count);
+  const std::vector<double> count = counts();  // rank 0's
+  Owners owners = decomposition_.proposal(setup_.mesh.get(), count);
+  // The loads the proposal would give: each rank counts where its particles would go.
   std::vector<double> load(held.size(), 0.0);
-  for (std::size_t c = 0; c < count.size(); ++c) load[static_cast<std::size_t>(owners(static_cast<Index>(c)))] += count[c];
+  for (std::size_t i = 0; i < swarm_.size(); ++i)
+    load[static_cast<std::size_t>(owners(tracked().global_cell(swarm_.cell(i))))] += 1.0;
+  ranks.sum(load);
   // A partition that would not help (too few particles, or cells that cannot be split
-  // finer) is not taken, nor sought again until the loads drift 10 % further apart.
-  if (!(max_over_mean(load) < 0.9 * now)) {
+  // finer) is not taken, nor sought again until the loads drift 10 % further apart. Nor
+  // one that leaves a rank no cell.
+  bool empty = false;
+  if (const std::optional<Bricks>& b = owners.bricks())
+    for (int r = 0; r < b->parts(); ++r) empty = empty || b->brick(r).hexahedra() == 0;
+  if (!(max_over_mean(load) < 0.9 * now) || empty) {
     balance_floor_ = 1.1 * now;
     return;
   }
@@ -246,21 +282,23 @@ void Simulation::balance() {
     migrated_ += decomposition_.migrate(swarm_);
     return;
   }
-  // What is kept per cell, by the whole mesh's numbers: a cell's collision state is its old
-  // owner's, the sampler's sums add up over the ranks; the new owner takes them.
-  std::vector<double> sigma_g_max, remainder;
-  if (collider_) {
-    for (const dsmc::CellCollisionState& c : collider_->cells()) {
-      sigma_g_max.push_back(c.sigma_g_max);
-      remainder.push_back(c.remainder);
-    }
-    // Ghosts have no particles to collide: the owner's state is the cell's.
-    for (Index c = tracked().own_cells(); c < tracked().cell_count(); ++c) sigma_g_max[static_cast<std::size_t>(c)] = 0;
-    sigma_g_max = whole_sums(sigma_g_max, 1);
-    remainder = whole_sums(remainder, 1);
-  }
+  // What is kept per cell goes to the cell's new owner: its collision state (its old
+  // owner's), the sampler's sums (they add up over the ranks).
+  constexpr std::size_t kWidth = 2 + CellSampler::kSumsPerCell;
   const std::vector<double> samples = sampler_.sums();
-  const std::vector<double> sums = whole_sums(std::span(samples).subspan(1), CellSampler::kSumsPerCell);
+  std::map<int, std::vector<double>> records;
+  std::vector<double> cell(kWidth);
+  for (Index c = 0; c < tracked().cell_count(); ++c) {
+    const bool own = c < tracked().own_cells();
+    cell[0] = collider_ && own ? collider_->cells()[static_cast<std::size_t>(c)].sigma_g_max : 0.0;
+    cell[1] = collider_ && own ? collider_->cells()[static_cast<std::size_t>(c)].remainder : 0.0;
+    std::copy_n(samples.begin() + 1 + static_cast<std::ptrdiff_t>(c * CellSampler::kSumsPerCell),
+                CellSampler::kSumsPerCell, cell.begin() + 2);
+    put_cells(records[owners(tracked().global_cell(c))], tracked(), c, cell);
+  }
+  Messages out;
+  for (const auto& [rank, values] : records) out[rank] = bytes_of(values);
+  const Messages in = decomposition_.exchange(out);
   // The particles by the whole's cell numbers while the parts change.
   for (std::size_t i = 0; i < swarm_.size(); ++i) {
     Particle p = swarm_.particle(i);
@@ -275,23 +313,33 @@ void Simulation::balance() {
     p.cell = numbering().local(p.cell);
     swarm_.set(i, p);
   }
-  std::vector<double> own_sums{samples[0]};
-  std::vector<dsmc::CellCollisionState> cells;
-  for (Index c = 0; c < tracked().cell_count(); ++c) {
-    const auto g = static_cast<std::size_t>(tracked().global_cell(c));
-    const bool own = c < tracked().own_cells();
-    for (std::size_t k = 0; k < CellSampler::kSumsPerCell; ++k)
-      own_sums.push_back(own ? sums[g * CellSampler::kSumsPerCell + k] : 0.0);
-    if (collider_) cells.push_back({sigma_g_max[g], own ? remainder[g] : 0.0});
+  std::vector<double> sums(1 + static_cast<std::size_t>(tracked().cell_count()) * CellSampler::kSumsPerCell, 0.0);
+  sums[0] = samples[0];
+  std::vector<dsmc::CellCollisionState> states(static_cast<std::size_t>(tracked().cell_count()));
+  for (const auto& [rank, bytes] : in) {
+    const std::vector<double> values = doubles_of(bytes);
+    for (std::size_t at = 0; at < values.size(); at += 1 + kWidth) {
+      const auto c = static_cast<std::size_t>(numbering().local(static_cast<Index>(values[at])));
+      states[c].sigma_g_max = std::max(states[c].sigma_g_max, values[at + 1]);
+      states[c].remainder += values[at + 2];
+      for (std::size_t k = 0; k < CellSampler::kSumsPerCell; ++k)
+        sums[1 + c * CellSampler::kSumsPerCell + k] += values[at + 3 + k];
+    }
   }
   sampler_ = CellSampler(*part_);
-  sampler_.set_sums(own_sums);
-  if (collider_) collider_->set_cells(std::move(cells));
+  sampler_.set_sums(sums);
+  if (collider_) collider_->set_cells(std::move(states));
 }
 
 void Simulation::take_part() {
   const Ranks& ranks = decomposition_.ranks();
-  *part_ = extract_part(*setup_.mesh, [&](Index c) { return decomposition_.owner(c); }, ranks.rank());
+  const auto owner = [&](Index c) { return decomposition_.owner(c); };
+  if (setup_.box) {
+    const Bricks::Range& mine = decomposition_.owners().bricks()->brick(ranks.rank());
+    *part_ = box_part(*setup_.box, mine.lo, mine.hi, owner, ranks.rank());
+  } else {
+    *part_ = extract_part(*setup_.mesh, owner, ranks.rank());
+  }
   part_cells_ = std::make_unique<PartCells>(*part_);
   setup_.domain = std::make_unique<const Domain>(*part_, setup_.domain->boundaries);
   setup_.obstacles = setup_.obstacles.on(*part_);
@@ -300,13 +348,18 @@ void Simulation::take_part() {
   setup_.inflows = std::move(inflows);
 }
 
-std::vector<double> Simulation::whole_sums(std::span<const double> mine, std::size_t width) const {
-  std::vector<double> whole(width * static_cast<std::size_t>(mesh().cell_count()), 0.0);
-  for (Index c = 0; c < tracked().cell_count(); ++c) {
-    const auto from = static_cast<std::size_t>(c) * width, to = static_cast<std::size_t>(tracked().global_cell(c)) * width;
-    for (std::size_t k = 0; k < width; ++k) whole[to + k] += mine[from + k];
-  }
-  decomposition_.ranks().sum(whole);
+std::vector<double> Simulation::at_lead(std::span<const double> mine, std::size_t width) const {
+  const Ranks& ranks = decomposition_.ranks();
+  if (ranks.size() == 1) return {mine.begin(), mine.end()};
+  std::vector<double> records;
+  for (Index c = 0; c < tracked().cell_count(); ++c)
+    put_cells(records, tracked(), c, mine.subspan(static_cast<std::size_t>(c) * width, width));
+  records = ranks.gather(records);
+  if (!ranks.lead()) return {};
+  std::vector<double> whole(width * static_cast<std::size_t>(whole_cells_), 0.0);
+  for (std::size_t at = 0; at < records.size(); at += 1 + width)
+    for (std::size_t k = 0; k < width; ++k)
+      whole[static_cast<std::size_t>(records[at]) * width + k] += records[at + 1 + k];
   return whole;
 }
 
@@ -366,7 +419,7 @@ std::vector<SurfaceTally> Simulation::patch_tallies() const { return summed(patc
 std::vector<double> Simulation::counts() const {
   std::vector<double> count(static_cast<std::size_t>(tracked().cell_count()), 0.0);
   for (std::size_t i = 0; i < swarm_.size(); ++i) count[static_cast<std::size_t>(swarm_.cell(i))] += 1.0;
-  return whole_sums(count, 1);
+  return at_lead(count, 1);
 }
 
 std::vector<CellMoments> Simulation::take_moments() {
@@ -374,19 +427,21 @@ std::vector<CellMoments> Simulation::take_moments() {
   // add up. Every rank sampled at every step: the sample count (the first value) is each
   // rank's, not summed.
   std::vector<double> sums = sampler_.sums();
-  std::optional<CellSampler> whole;  // on a part: the sums by the whole mesh's cells
-  if (part_) {
-    std::vector<double> cells = whole_sums(std::span(sums).subspan(1), CellSampler::kSumsPerCell);
+  std::optional<CellSampler> whole;  // on several ranks, rank 0's sums by the whole's cells
+  if (decomposition_.ranks().size() > 1) {
+    std::vector<double> cells = at_lead(std::span(sums).subspan(1), CellSampler::kSumsPerCell);
+    if (!decomposition_.ranks().lead()) {
+      sampler_.reset();
+      return {};
+    }
     cells.insert(cells.begin(), sums[0]);
     sums = std::move(cells);
     whole.emplace(mesh());
-  } else {
-    decomposition_.ranks().sum(std::span(sums).subspan(1));
   }
   CellSampler& summed = whole ? *whole : sampler_;
   summed.set_sums(sums);
   std::vector<CellMoments> moments;
-  for (Index c = 0; c < mesh().cell_count(); ++c)
+  for (Index c = 0; c < whole_cells_; ++c)
     moments.push_back(summed.moments(c, setup_.particles.mass, setup_.particles.weight));
   sampler_.reset();
   return moments;
@@ -399,7 +454,7 @@ std::vector<double> Simulation::state() const {
   out.put(decomposition_.ranks().size());
   out.put(decomposition_.ranks().rank());
   out.put(objects);
-  out.put(static_cast<double>(mesh().cell_count()));
+  out.put(static_cast<double>(whole_cells_));
   out.put(static_cast<double>(steps_));
   out.put(static_cast<double>(seeded_));
   out.put(static_cast<double>(injected_));
@@ -447,7 +502,7 @@ void Simulation::restore(std::span<const double> state) {
   in.expect(decomposition_.ranks().size(), "ranks");
   in.expect(decomposition_.ranks().rank(), "rank");
   in.expect(objects, "obstacles");
-  in.expect(static_cast<double>(mesh().cell_count()), "cells");
+  in.expect(static_cast<double>(whole_cells_), "cells");
   const auto steps = in.get_count<std::uint64_t>();
   const auto seeded = in.get_count<std::size_t>();
   const auto injected = in.get_count<std::size_t>();
@@ -459,7 +514,7 @@ void Simulation::restore(std::span<const double> state) {
   const bool partitioned = decomposition_.ranks().size() > 1;
   if (partitioned && decomposition_.ranks().lead()) {
     const auto n = in.get_count<std::size_t>();
-    if (n > static_cast<std::size_t>(mesh().cell_count())) throw std::runtime_error("tracker state: owners too long");
+    if (n > static_cast<std::size_t>(whole_cells_)) throw std::runtime_error("tracker state: owners too long");
     for (std::size_t k = 0; k < n; ++k) owners.push_back(in.get_count<int>());
   }
   Swarm swarm(objects);
@@ -469,7 +524,7 @@ void Simulation::restore(std::span<const double> state) {
     for (int k = 0; k < 3; ++k) p.x[k] = in.get();
     for (int k = 0; k < 3; ++k) p.v[k] = in.get();
     p.cell = in.get_count<Index>();  // in the whole mesh
-    if (p.cell < 0 || p.cell >= mesh().cell_count()) throw std::runtime_error("tracker state: a particle in no cell");
+    if (p.cell < 0 || p.cell >= whole_cells_) throw std::runtime_error("tracker state: a particle in no cell");
     for (csg::State& s : states) s = in.get_bits();
     swarm.add(p, states);
   }
@@ -483,7 +538,7 @@ void Simulation::restore(std::span<const double> state) {
   MoveTally moves;
   for (const MoveCounter& c : kMoveCounters) moves.*c.count = in.get_count<long long>();
   const auto part_cells = in.get_count<std::size_t>();
-  if (part_cells > static_cast<std::size_t>(mesh().cell_count()))
+  if (part_cells > static_cast<std::size_t>(whole_cells_))
     throw std::runtime_error("tracker state: " + std::to_string(part_cells) + " cells on a rank");
   std::vector<dsmc::CellCollisionState> cells;
   if (collider_)
@@ -502,7 +557,7 @@ void Simulation::restore(std::span<const double> state) {
     if (owners != decomposition_.owners().saved()) {
       try {
         decomposition_.set_owners(
-            Owners::restored(owners, decomposition_.owners(), mesh().cell_count(), decomposition_.ranks().size()));
+            Owners::restored(owners, decomposition_.owners(), whole_cells_, decomposition_.ranks().size()));
       } catch (const std::invalid_argument& e) {
         throw std::runtime_error(std::string("tracker state: ") + e.what());
       }

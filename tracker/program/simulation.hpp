@@ -42,7 +42,8 @@ class Simulation {
                       Ranks ranks = {});
 
   const TrackerScene& setup() const { return setup_; }
-  // The whole mesh, as the output shows it.
+  // The whole mesh, as the output shows it: on rank 0 only when a box is split over ranks
+  // (the others never build it).
   const Mesh& mesh() const { return *setup_.mesh; }
   // This rank's cells (the swarm's cell numbers): the whole mesh, or its part on several
   // ranks (Mesh::global_cell gives a cell's number in the whole).
@@ -86,10 +87,10 @@ class Simulation {
   // Per boundary patch (Mesh::patches): what the particles gave the walls there.
   std::vector<SurfaceTally> patch_tallies() const;
 
-  // Particles per cell now (collective).
+  // Particles per cell of the whole mesh now (collective; on rank 0, empty on the others).
   std::vector<double> counts() const;
   // The per-cell moments averaged over the steps since the last call (or the start), then
-  // a new average begins (collective).
+  // a new average begins (collective; on rank 0, empty on the others).
   std::vector<CellMoments> take_moments();
 
   // Everything a later restore() needs to continue exactly from here (with the same
@@ -111,9 +112,9 @@ class Simulation {
   // obstacles and inflows on it.
   void take_part();
   Numbering numbering() const { return part_ ? Numbering{part_.get(), part_cells_.get()} : Numbering{}; }
-  // Per-cell sums of this rank's cells as per-cell sums of the whole mesh's (`width`
-  // values a cell), added up over the ranks (collective).
-  std::vector<double> whole_sums(std::span<const double> mine, std::size_t width) const;
+  // Per-cell numbers of this rank's cells (`width` a cell) added up by the whole mesh's
+  // cells on rank 0, empty elsewhere (collective): only rank 0 holds an array of every cell.
+  std::vector<double> at_lead(std::span<const double> mine, std::size_t width) const;
 
   TrackerScene setup_;
   std::optional<VelocityField> velocity_;  // tracer mode
@@ -136,6 +137,7 @@ class Simulation {
   // This rank's part of the mesh, at one address for good (the collider refers to it);
   // null on one rank and in tracer mode.
   std::unique_ptr<Mesh> part_;
+  Index whole_cells_ = 0;
   std::unique_ptr<PartCells> part_cells_;
   Handover away_;  // the moves of a step that entered ghosts, until they are done
 };
