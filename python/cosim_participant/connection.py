@@ -1,0 +1,61 @@
+"""The participant's end of the coupler's socket: one DEALER whose identity is its name."""
+
+import os
+
+import zmq
+
+from .wire import Array, Header, Message, ProtocolError, Tag, Type, check_name, decode, encode
+
+ENDPOINT_ENV = "COSIM_ENDPOINT"
+PARTICIPANT_ENV = "COSIM_PARTICIPANT"
+LINGER_MS = 1000  # long enough for a last Bye or Error to leave, short enough that exit never hangs
+
+
+class Aborted(Exception):
+    """The coupler sent Abort: the run failed elsewhere, exit now."""
+
+
+class Connection:
+    def __init__(self, endpoint, name):
+        check_name(name)
+        self.name = name
+        self._context = zmq.Context()
+        self._socket = self._context.socket(zmq.DEALER)
+        # The coupler checks that every header names the identity the message came from.
+        self._socket.setsockopt(zmq.ROUTING_ID, name.encode())
+        self._socket.setsockopt(zmq.LINGER, LINGER_MS)
+        self._socket.setsockopt(zmq.SNDHWM, 0)
+        self._socket.setsockopt(zmq.RCVHWM, 0)
+        self._socket.connect(endpoint)
+
+    @staticmethod
+    def from_environment():
+        """The connection `cosim run` set up for this process, or None if it did not start it."""
+        endpoint, name = os.environ.get(ENDPOINT_ENV), os.environ.get(PARTICIPANT_ENV)
+        if endpoint is None and name is None:
+            return None
+        if endpoint is None or name is None:
+            raise ProtocolError(f"{ENDPOINT_ENV} and {PARTICIPANT_ENV} must be set together")
+        return Connection(endpoint, name)
+
+    def send(self, kind, arrays=(), **fields):
+        self._socket.send_multipart(encode(Message(Header(kind, self.name, **fields), list(arrays))))
+
+    def receive(self, *kinds):
+        """The coupler's next message, which must be of one of `kinds`; Abort raises Aborted."""
+        m = decode(self._socket.recv_multipart())
+        if m.header.type in kinds:
+            return m
+        if m.header.type == Type.ABORT:
+            why = m.find(Tag.TEXT)
+            raise Aborted("the coupler aborted the run" + (": " + why.text.decode() if why else ""))
+        raise ProtocolError(f"expected {' or '.join(k.name for k in kinds)} from the coupler "
+                            f"and received {m.header.type.name}")
+
+    def error(self, text):
+        """Reports a failure; the coupler shows it to the user with this participant's name."""
+        self.send(Type.ERROR, [Array.of_text(text)])
+
+    def close(self):
+        self._socket.close()
+        self._context.term()
