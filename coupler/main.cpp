@@ -13,12 +13,14 @@
 #include "run/coupler.hpp"
 #include "scene/error.hpp"
 #include "scene/plan.hpp"
+#include "scene/unused_materials.hpp"
 
 namespace {
 
 int check(const std::string& file) {
   const auto scene = cosim::scene::load_scene(file);
   const auto plan = cosim::scene::plan_participants(scene);
+  for (const auto& w : cosim::scene::unused_materials(scene)) spdlog::warn("{}", w);
   const auto refused = cosim::launcher::refused_sections(scene, plan.start, cosim::launcher::own_directory());
   if (!refused.empty()) {
     std::cerr << "cosim: invalid scene: " << file << ": " << fmt::format("{}", fmt::join(refused, ", "))

@@ -15,6 +15,7 @@
 #include "run/failure.hpp"
 #include "run/progress.hpp"
 #include "scene/error.hpp"
+#include "scene/unused_materials.hpp"
 
 namespace cosim::run {
 namespace fs = std::filesystem;
@@ -125,6 +126,7 @@ void Session::announce() const {
   for (const auto& s : plan_.skipped) spdlog::info("not started: {}", s);
   spdlog::info("{} windows of {} s, {}", scene_.windows(), scene_.coupling.window,
                scene::to_string(scene_.coupling.scheme));
+  for (const auto& w : scene::unused_materials(scene_)) spdlog::warn("{}", w);
 }
 
 std::uint64_t Session::first_window() const { return resume_ ? resume_->next_window : 0; }

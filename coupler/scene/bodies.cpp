@@ -115,6 +115,7 @@ Body read_body(const Reader& r, const Domain& domain, const fs::path& dir) {
   b.fixed = r.boolean("fixed", b.fixed);
   b.shape = read_shape(r.map("shape"), b.fixed, dir);
   if (!b.fixed || r.has("material")) b.material = read_material(r.map("material"), b.fixed);
+  b.material_line = r.line("material");
   b.position = r.vec3("position");
   if (r.has("orientation")) b.orientation = read_orientation(r);
   b.velocity = r.vec3("velocity", b.velocity);

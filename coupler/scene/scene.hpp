@@ -98,6 +98,7 @@ struct Body {
   Quat orientation{1, 0, 0, 0};
   Vec3 velocity{};
   Vec3 angular_velocity{};
+  int material_line = 0;                   // 1-based line of `material` (of the entry if absent), for warnings
 };
 
 // One section per participant. The built-in programs are `rigidbody`, `fluid` and

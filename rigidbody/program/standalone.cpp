@@ -1,13 +1,19 @@
 #include "rigidbody/program/standalone.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include "participant/standalone.hpp"
 #include "rigidbody/program/adapter.hpp"
+#include "scene/unused_materials.hpp"
 
 namespace cosim::program {
 
 void run_standalone(const std::filesystem::path& scene_file, std::filesystem::path output) {
+  const scene::Scene scene = scene::load_scene(scene_file);
+  // Coupled, the coupler says this once for every program; alone, this program is the one that reports.
+  for (const auto& w : scene::unused_materials(scene)) spdlog::warn("{}", w);
   RigidSolver solver;
-  participant::run_standalone(scene::load_scene(scene_file), solver, "rigidbody", std::move(output));
+  participant::run_standalone(scene, solver, "rigidbody", std::move(output));
 }
 
 }  // namespace cosim::program

@@ -33,6 +33,8 @@ struct Row {
   double restitution = 0.0;
   double share = 1.0;  // Jacobi damping, see ImpulseOptions::relaxation
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
+  // Normal velocity the solve must add here: target minus the velocity before it, if positive.
+  double demand = 0.0;
 };
 
 class GroupSolver {
@@ -45,11 +47,19 @@ class GroupSolver {
     if (options_.restitution == Restitution::sequential) resolve_impacts();
     for (const Row& r : rows_) r.frame.apply_local(r.impulse, scene_.states, scene_.mobility);
 
+    // The group's velocity scale: the largest normal velocity change any of its points needs.
+    // A contact inside a resting stack needs none itself (its bodies fell alike) but carries
+    // the weight above it, so each point is measured against the group's scale, in velocity
+    // units, which are the same for a light body as for a heavy one (README.md).
+    double scale = 0.0;
+    for (const Row& r : rows_) scale = std::max(scale, r.demand);
     SolveReport report;
     report.converged = false;
     while (report.iterations < options_.max_iterations && !report.converged) {
       ++report.iterations;
-      report.residual = options_.schedule == Schedule::jacobi ? jacobi_sweep() : gauss_seidel_sweep();
+      const double change = options_.schedule == Schedule::jacobi ? jacobi_sweep() : gauss_seidel_sweep();
+      // Nothing to do (scale 0): only an unchanged sweep has converged.
+      report.residual = change == 0.0 ? 0.0 : change / scale;
       report.converged = report.residual <= options_.tolerance;
     }
     for (const Row& r : rows_)
@@ -80,6 +90,7 @@ class GroupSolver {
         const bool impact = approach < -options_.restitution_threshold && p.distance + dt * approach <= 0.0;
         if (options_.restitution == Restitution::simultaneous && impact)
           r.law.target_normal_velocity = std::max(r.law.target_normal_velocity, -r.restitution * approach);
+        r.demand = std::max(0.0, r.law.target_normal_velocity - approach);
         if (options_.warm_start) {
           const CachedContact& c = memory[k];
           r.impulse = {c.normal, r.frame.basis.row(1).dot(c.tangential), r.frame.basis.row(2).dot(c.tangential)};
@@ -117,19 +128,23 @@ class GroupSolver {
     }
   }
 
-  // Returns the sweep's residual: max |impulse change| relative to max |impulse|.
+  // The velocity a point's impulse change makes at the point itself (diagonal of W, per
+  // local axis): the change of its impulse relative to its own effective mass 1 / W_kk.
+  static double velocity_change(const Row& r, const Eigen::Vector3d& delta) {
+    return (r.law.response.diagonal().array() * delta.array().abs()).maxCoeff();
+  }
+
+  // Both sweeps return the largest velocity_change over the group's points.
   double gauss_seidel_sweep() {
     double change = 0.0;
-    double size = 0.0;
     for (Row& r : rows_) {
       const Eigen::Vector3d next = update_point(r.law, r.frame.local_velocity(scene_.states), r.impulse);
       const Eigen::Vector3d delta = next - r.impulse;
       r.frame.apply_local(delta, scene_.states, scene_.mobility);
       r.impulse = next;
-      change = std::max(change, delta.lpNorm<Eigen::Infinity>());
-      size = std::max(size, next.lpNorm<Eigen::Infinity>());
+      change = std::max(change, velocity_change(r, delta));
     }
-    return size > 0.0 ? change / size : 0.0;
+    return change;
   }
 
   double jacobi_sweep() {
@@ -137,17 +152,15 @@ class GroupSolver {
     for (std::size_t i = 0; i < rows_.size(); ++i)
       proposals_[i] = update_point(rows_[i].law, rows_[i].frame.local_velocity(scene_.states), rows_[i].impulse);
     double change = 0.0;
-    double size = 0.0;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
       Row& r = rows_[i];
       // A convex combination of two feasible impulses stays feasible: no re-projection.
       const Eigen::Vector3d delta = r.share * (proposals_[i] - r.impulse);
       r.frame.apply_local(delta, scene_.states, scene_.mobility);
       r.impulse += delta;
-      change = std::max(change, delta.lpNorm<Eigen::Infinity>());
-      size = std::max(size, r.impulse.lpNorm<Eigen::Infinity>());
+      change = std::max(change, velocity_change(r, delta));
     }
-    return size > 0.0 ? change / size : 0.0;
+    return change;
   }
 
   const ContactScene& scene_;

@@ -31,7 +31,10 @@ struct ImpulseOptions {
   // n times the needed velocity change and would overshoot.
   double relaxation = 1.0;
   int max_iterations = 50;
-  double tolerance = 1e-6;  // on max |impulse change| / max |impulse| in a sweep
+  // A group has converged when no point's impulse change in a sweep makes more than
+  // tolerance x V of velocity at the point (V: the group's largest normal velocity change
+  // needed at the start; README.md "Stopping test").
+  double tolerance = 1e-6;
   FrictionModel friction = FrictionModel::cone;
   // Baumgarte position correction: penetration beyond `slop` [m] is removed at a rate of
   // erp per step. Gaps (distance > 0) are allowed to close within the step.

@@ -27,7 +27,7 @@ struct ContactScene {
 };
 
 struct SolveReport {
-  int iterations = 0;     // largest over the contact groups
+  int iterations = 0;     // largest over the contact groups: the sweeps the slowest group needed
   double residual = 0.0;  // largest over the groups; meaning depends on the solver
   bool converged = true;  // every group met the tolerance
 };

@@ -18,7 +18,7 @@ enum class SolverKind {
 struct Settings {
   SolverKind solver = SolverKind::sequential_impulses;
   int iterations = 0;        // impulse solvers' max iterations; 0: the preset's
-  double tolerance = 1e-6;   // impulse solvers' relative residual
+  double tolerance = 1e-6;   // impulse solvers' stopping test, relative (solver/README.md)
   // Simultaneous (Catto) or sequential (Newton's cradle passes momentum through).
   solver::Restitution restitution = solver::Restitution::simultaneous;
   solver::DemOptions dem{};

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <utility>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -42,14 +41,16 @@ std::vector<TunnellingRisk> tunnelling_risks(std::span<const double> thinnest,
   return risks;
 }
 
+double excess(const TunnellingRisk& risk) { return risk.travel / std::min(risk.margin, 0.5 * risk.thinnest); }
+
 std::string describe(const TunnellingRisk& risk, const std::string& name, double dt) {
   const double half = 0.5 * risk.thinnest;
   std::string limits;
   if (risk.travel > risk.margin) limits = fmt::format("the contact margin {:.3g} m", risk.margin);
   if (risk.travel > half) limits += fmt::format("{}half its thinnest extent {:.3g} m", limits.empty() ? "" : " and ", half);
   // Travel is proportional to dt, so the dt that keeps it within both limits follows.
-  const double safe_dt = dt * std::min(risk.margin, half) / risk.travel;
-  std::string fix = fmt::format("lower the rigidbody dt to {:.3g} s", safe_dt);
+  const double factor = excess(risk);
+  std::string fix = fmt::format("lower the rigidbody dt by a factor {:.3g}, to {:.3g} s", factor, dt / factor);
   if (risk.travel <= half)
     fix += fmt::format(" or raise participants.rigidbody.options.contact_margin above {:.3g} m", risk.travel);
   return fmt::format("body {}{} may move {:.3g} m per substep (dt = {:.3g} s), more than {}: it can pass "
@@ -57,23 +58,30 @@ std::string describe(const TunnellingRisk& risk, const std::string& name, double
                      risk.body, name.empty() ? "" : " (" + name + ")", risk.travel, dt, limits, fix);
 }
 
+std::string summarise(std::span<const TunnellingRisk> risks, std::span<const std::string> names, double dt) {
+  const auto worst = std::max_element(risks.begin(), risks.end(), [](const TunnellingRisk& x, const TunnellingRisk& y) {
+    return excess(x) < excess(y);
+  });
+  const std::string message = describe(*worst, names[worst->body], dt);
+  if (risks.size() == 1) return message;
+  return fmt::format("{} bodies may move farther per substep than the contact margin or half their thinnest extent; "
+                     "the worst: {}",
+                     risks.size(), message);
+}
+
 void TunnellingWarnings::add(std::string name, const geometry::Shape& shape) {
   names_.push_back(std::move(name));
   thinnest_.push_back(thinnest_extent(shape));
-  warned_.push_back(0);
 }
 
 void TunnellingWarnings::warn(std::span<const TunnellingRisk> risks, double dt) {
-  std::vector<TunnellingRisk> fresh;
-  for (const TunnellingRisk& r : risks)
-    if (!std::exchange(warned_[r.body], 1)) fresh.push_back(r);
-  const auto named = std::min(fresh.size(), kNamedPerWindow);
-  std::partial_sort(fresh.begin(), fresh.begin() + static_cast<std::ptrdiff_t>(named), fresh.end(),
-                    [](const TunnellingRisk& x, const TunnellingRisk& y) { return x.travel > y.travel; });
-  for (std::size_t i = 0; i < named; ++i) spdlog::warn("{}", describe(fresh[i], names_[fresh[i].body], dt));
-  if (fresh.size() > named)
-    spdlog::warn("{} more bodies may move farther per substep than the contact margin or half their thinnest extent",
-                 fresh.size() - named);
+  if (risks.empty()) return;
+  double worst = 0.0;
+  for (const TunnellingRisk& r : risks) worst = std::max(worst, excess(r));
+  if (warned_count_ > 0 && risks.size() < 2 * warned_count_ && worst < 2 * warned_excess_) return;
+  spdlog::warn("{}", summarise(risks, names_, dt));
+  warned_count_ = risks.size();
+  warned_excess_ = worst;
 }
 
 }  // namespace cosim::world

@@ -34,18 +34,26 @@ std::vector<TunnellingRisk> tunnelling_risks(std::span<const double> thinnest,
                                              std::span<const dynamics::BodyInertia> inertias, double dt,
                                              double margin, double speed_gain);
 
+// How many times the body's travel exceeds the smaller of its two limits (the margin and
+// half its thinnest extent): the factor by which dt must shrink.
+double excess(const TunnellingRisk& risk);
+
 // "body 1 (plate) may move 0.0501 m per substep (dt = 0.001 s), more than the contact margin
 // 0.0141 m and half its thinnest extent 0.0025 m: it can pass through thin bodies or
-// planes; lower the rigidbody dt to 4.99e-05 s"
+// planes; lower the rigidbody dt by a factor 20, to 4.99e-05 s"
 std::string describe(const TunnellingRisk& risk, const std::string& name, double dt);
 
-// Logs describe() as a spdlog warning the first time each body is at risk, so a run that
-// keeps a body too fast says so once instead of every window; when many bodies are new at
-// once (a granular bed) it names the fastest few and counts the rest.
+// One message for all of a window's risks: describe() of the one with the largest excess,
+// whose safe dt is safe for all, preceded by the count when there are several ("12 bodies
+// may move farther per substep than ...; the worst: body 17 (grain) may move ...").
+std::string summarise(std::span<const TunnellingRisk> risks, std::span<const std::string> names, double dt);
+
+// Logs summarise() as one spdlog warning, not one per body: the first time any body is at
+// risk, and again only when the count or the worst excess has doubled since the last
+// warning (a granular bed gathering speed gives a handful of lines, not one per grain;
+// the count of every window is in StepReport::tunnelling_bodies).
 class TunnellingWarnings {
  public:
-  static constexpr std::size_t kNamedPerWindow = 3;
-
   void add(std::string name, const geometry::Shape& shape);  // one per body, in body order
   std::span<const double> thinnest() const { return thinnest_; }
   void warn(std::span<const TunnellingRisk> risks, double dt);
@@ -53,7 +61,8 @@ class TunnellingWarnings {
  private:
   std::vector<std::string> names_;
   std::vector<double> thinnest_;  // thinnest_extent per body, computed once
-  std::vector<char> warned_;
+  std::size_t warned_count_ = 0;  // at the last warning; 0: none yet
+  double warned_excess_ = 0.0;
 };
 
 }  // namespace cosim::world

@@ -6,9 +6,9 @@
 
 namespace cosim::testing {
 
-// Its exit code, or -1 if it did not exit normally. Output is discarded. ranks > 1: under
-// `mpirun -n ranks`, with the environment cosim's launcher gives it.
+// Its exit code, or -1 if it did not exit normally. Output (stdout and stderr) goes to `log`.
+// ranks > 1: under `mpirun -n ranks`, with the environment cosim's launcher gives it.
 int run_standalone(const std::string& program, const std::filesystem::path& scene, const std::filesystem::path& out,
-                   int ranks = 1);
+                   int ranks = 1, const std::filesystem::path& log = "/dev/null");
 
 }  // namespace cosim::testing

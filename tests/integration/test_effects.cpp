@@ -79,6 +79,22 @@ TEST(Effects, RarefiedGasAddsTheTracker) {
   EXPECT_THAT(f.output, Not(HasSubstr("started fluid")));
 }
 
+// Guards against: a scene with friction coefficients but no 'friction' effect running frictionless silently.
+TEST(Effects, FrictionNoEffectUsesIsWarnedAboutByCheckAndRun) {
+  const auto dir = scratch_dir("unused_friction");
+  std::string yaml = scene("[gravity, contact]");
+  yaml.replace(yaml.find("{density: 2000}"), 15, "{density: 2000, friction: 0.5}");
+  const std::string warning = (dir / "scene.yaml").string() +
+                              ":8: bodies[0].material.friction = 0.5: ignored for body 'ball': "
+                              "the scene's effects do not include 'friction'";
+  const Finished ran = run_scene_text(dir, yaml);
+  EXPECT_EQ(ran.exit_code, 0) << ran.output;
+  EXPECT_THAT(ran.output, HasSubstr("cosim: warning: " + warning));
+  const Finished checked = run_cosim({"check", (dir / "scene.yaml").string()});
+  EXPECT_EQ(checked.exit_code, 0) << checked.output;
+  EXPECT_THAT(checked.output, HasSubstr("cosim: warning: " + warning));
+}
+
 // `cosim check` on the same scene: each built-in program reads its own section, so an
 // option only that program knows is refused before a run, with file, line, key and value,
 // instead of a scene called valid failing at the start of `cosim run`.

@@ -51,5 +51,19 @@ TEST(RigidProgram, StandaloneReportsSceneErrorsWithExitCode2) {
   EXPECT_EQ(run_standalone("cosim-rigidbody", dir / "bad.yaml", dir / "bad.h5"), 2);
 }
 
+// Guards against: the standalone program running a scene frictionless without saying so.
+TEST(RigidProgram, StandaloneWarnsAboutFrictionNoEffectUses) {
+  const auto dir = scratch_dir("unused_friction");
+  auto scene = sphere_on_plane;
+  scene.replace(scene.find("{density: 2500}"), 15, "{density: 2500, friction: 0.4}");
+  write_file(dir / "scene.yaml", scene);
+  ASSERT_EQ(run_standalone("cosim-rigidbody", dir / "scene.yaml", dir / "alone.h5", 1, dir / "log"), 0);
+  EXPECT_NE(read_file(dir / "log").find("cosim-rigidbody: warning: " + (dir / "scene.yaml").string() +
+                                        ":8: bodies[1].material.friction = 0.4: ignored for body 'ball': "
+                                        "the scene's effects do not include 'friction'"),
+            std::string::npos)
+      << read_file(dir / "log");
+}
+
 }  // namespace
 }  // namespace cosim::testing

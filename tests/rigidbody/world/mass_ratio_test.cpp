@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <vector>
 
 #include "scenes.hpp"
 
@@ -54,6 +56,34 @@ void expect_stable(const Extremes& e) {
 // 1000 converge in the first steps, and the warm start then holds the stack.
 // Guards against: a 1000:1 heavy-on-light stack sagging and sliding apart (slow Gauss-Seidel).
 TEST(MassRatio, HeavyBoxOnALightOneStaysPut) { expect_stable(run_stack(10.0, 10000.0, 3000, 1000)); }
+
+// The iterations each step needed, as the step report gives them, on a 1:1000 sphere
+// stack (one point per contact, so every step can converge): the cold first step carries
+// the heavy sphere's weight through the light one slowly; warm started, the next need few.
+// Guards against: the step report losing the iteration count, or a converged step that is not.
+TEST(MassRatio, TheStepReportSaysHowManyIterationsEachStepNeeded) {
+  constexpr double r = 0.1;
+  World stack({.iterations = 100000});
+  add_ground(stack);
+  for (int i = 0; i < 2; ++i) {
+    BodyDesc sphere{.shape = geometry::Sphere(r), .density = i == 0 ? 10.0 : 10000.0};
+    sphere.state.position = {0.0, 0.0, r * (2 * i + 1)};
+    stack.add(sphere);
+  }
+  std::vector<int> iterations;
+  for (int step = 0; step < 100; ++step) {
+    const StepReport report = stack.advance(stack.settings().dt);
+    ASSERT_TRUE(report.converged) << "step " << step;
+    iterations.push_back(report.solver_iterations);
+  }
+  std::cout << "1:1000 sphere stack: " << iterations[0] << ", " << iterations[1] << ", " << iterations[2]
+            << " iterations in steps 0, 1, 2; at most " << *std::max_element(iterations.begin() + 10, iterations.end())
+            << " from step 10 on\n";
+  EXPECT_GT(iterations[0], 1000);
+  // Within the default 50: warm started, the stack needs only what the cold start cannot give.
+  EXPECT_LT(*std::max_element(iterations.begin() + 10, iterations.end()), 50);
+  for (int b : {1, 2}) EXPECT_LT(stack.states()[b].velocity.norm(), 1e-6) << b;
+}
 
 // Guards against: a 1:1000 light-on-heavy stack jittering or drifting.
 TEST(MassRatio, LightBoxOnAHeavyOneStaysPut) { expect_stable(run_stack(10000.0, 10.0, 3000, 0)); }

@@ -6,9 +6,9 @@
 
 namespace cosim::world::test {
 
-StackResult run_box_stack(int steps) {
+StackResult run_box_stack(int steps, int iterations) {
   constexpr double kHalf = 0.1;
-  World world;
+  World world({.iterations = iterations});
   add_ground(world);
   const std::vector<std::uint32_t> boxes = add_box_stack(world, kStackBoxes, kHalf);
   std::vector<Eigen::Vector3d> start;
@@ -17,7 +17,9 @@ StackResult run_box_stack(int steps) {
   for (int i = 0; i < steps; ++i) {
     const StepReport step = world.advance(world.settings().dt);
     r.converged = r.converged && step.converged;
+    r.converged_steps += step.converged ? 1 : 0;
     r.worst_iterations = std::max(r.worst_iterations, step.solver_iterations);
+    r.mean_iterations += static_cast<double>(step.solver_iterations) / steps;
     r.wall_seconds += step.wall_seconds;
     for (std::size_t k = 0; k < boxes.size(); ++k) {
       const auto& s = world.states()[boxes[k]];

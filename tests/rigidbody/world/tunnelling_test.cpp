@@ -4,6 +4,11 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <sstream>
+
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
 
 #include "rigidbody/geometry/convex_hull.hpp"
 #include "rigidbody/world/tunnelling.hpp"
@@ -58,7 +63,75 @@ TEST(Tunnelling, FlagsBodiesFasterThanTheMarginOrHalfTheirThickness) {
   EXPECT_NE(message.find("body 1 (plate) may move 0.005 m per substep"), std::string::npos) << message;
   EXPECT_NE(message.find("half its thinnest extent 0.0025 m"), std::string::npos) << message;
   EXPECT_EQ(message.find("contact margin"), std::string::npos) << message;
-  EXPECT_NE(message.find("lower the rigidbody dt to 0.0005 s"), std::string::npos) << message;
+  EXPECT_NE(message.find("lower the rigidbody dt by a factor 2, to 0.0005 s"), std::string::npos) << message;
+}
+
+// The warnings spdlog prints while it lives, one per line.
+class CapturedWarnings {
+ public:
+  CapturedWarnings() : previous_(spdlog::default_logger()) {
+    auto logger = std::make_shared<spdlog::logger>("captured", std::make_shared<spdlog::sinks::ostream_sink_st>(out_));
+    logger->set_pattern("%v");
+    spdlog::set_default_logger(logger);
+  }
+  ~CapturedWarnings() { spdlog::set_default_logger(previous_); }
+  CapturedWarnings(const CapturedWarnings&) = delete;
+  CapturedWarnings& operator=(const CapturedWarnings&) = delete;
+  std::vector<std::string> lines() const {
+    std::vector<std::string> out;
+    std::istringstream in(out_.str());
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+  }
+
+ private:
+  std::ostringstream out_;
+  std::shared_ptr<spdlog::logger> previous_;
+};
+
+// Guards against: a granular bed flooding the log with one tunnelling warning per body.
+TEST(Tunnelling, OneWarningForManyBodiesAndAnotherOnlyWhenTheCountOrTheExcessDoubles) {
+  const CapturedWarnings captured;
+  TunnellingWarnings warnings;
+  for (int i = 0; i < 40; ++i) warnings.add("grain" + std::to_string(i), geometry::Sphere(0.1));
+  const double dt = 1e-3, margin = 0.01;
+  const auto risks = [&](std::uint32_t count, double worst) {
+    std::vector<TunnellingRisk> out;
+    for (std::uint32_t i = 0; i < count; ++i) out.push_back({i, i == 3 ? worst : 0.02, 0.2, margin});
+    return out;
+  };
+  warnings.warn(risks(5, 0.05), dt);
+  ASSERT_EQ(captured.lines().size(), 1u);
+  EXPECT_EQ(captured.lines()[0],
+            "5 bodies may move farther per substep than the contact margin or half their thinnest extent; the worst: "
+            "body 3 (grain3) may move 0.05 m per substep (dt = 0.001 s), more than the contact margin 0.01 m: it can "
+            "pass through thin bodies or planes; lower the rigidbody dt by a factor 5, to 0.0002 s or raise "
+            "participants.rigidbody.options.contact_margin above 0.05 m");
+  warnings.warn(risks(5, 0.05), dt);
+  warnings.warn(risks(9, 0.09), dt);
+  EXPECT_EQ(captured.lines().size(), 1u);
+  warnings.warn(risks(10, 0.05), dt);  // twice the count
+  ASSERT_EQ(captured.lines().size(), 2u);
+  EXPECT_TRUE(captured.lines()[1].starts_with("10 bodies may move")) << captured.lines()[1];
+  warnings.warn(risks(10, 0.1), dt);  // twice the excess
+  ASSERT_EQ(captured.lines().size(), 3u);
+  EXPECT_NE(captured.lines()[2].find("lower the rigidbody dt by a factor 10, to 0.0001 s"), std::string::npos)
+      << captured.lines()[2];
+}
+
+// Guards against: the summary hiding how many bodies are at risk in each window.
+TEST(Tunnelling, TheStepReportCountsEveryWindowWhileTheLogSaysItOnce) {
+  const CapturedWarnings captured;
+  World world({.body_forces = {.gravity = false}});
+  add_ground(world);
+  constexpr int grains = 30;
+  for (int i = 0; i < grains; ++i) {
+    const auto b = add_sphere(world, 0.01, {0.05 * i, 0, 1.0});
+    world.states()[b].velocity = {0, 0, -3};  // 3 mm per substep, above the 1 mm margin
+  }
+  for (int window = 0; window < 20; ++window) EXPECT_EQ(world.advance(0.01).tunnelling_bodies, grains);
+  ASSERT_EQ(captured.lines().size(), 1u);
+  EXPECT_TRUE(captured.lines()[0].starts_with("30 bodies may move")) << captured.lines()[0];
 }
 
 // configs/rigid_thin_box.yaml: the plate moves 0.05 m per substep, ten times its thickness
