@@ -3,12 +3,12 @@
 
     bench/tracker_scaling/run.py [--tracker build/release/bin/cosim-tracker] [--cells 64] [--steps 20] [--ranks 1 2 4]
 
-Each rank runs under /usr/bin/time, which reports its peak resident memory (the ranks'
-peaks are printed in ascending order: /usr/bin/time does not say which rank is which);
-cosim-tracker prints rank 0's setup time (mesh, locator, obstacles, partition, seeding,
-the run file created; the scene was read before) and the run's wall time. The time per step is (wall - setup) / steps, the start and end writes
-included. On a machine with fewer cores than ranks, the ranks share cores (oversubscribed):
-then only setup and memory per rank mean anything.
+cosim-tracker prints each rank's setup time (mesh or its part, locator, obstacles,
+partition, seeding, on rank 0 the run file created; the scene was read before) and peak
+resident memory (getrusage), rank 0 first, and the run's wall time. The time per step is
+(wall - setup of rank 0) / steps, the start and end writes included. On a machine with
+fewer cores than ranks, the ranks share cores (oversubscribed): then only setup and memory
+per rank mean anything.
 """
 import argparse
 import os
@@ -39,15 +39,15 @@ def scene_text(cells, steps):
 def run(tracker, ranks, scene, out):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl="self,vader")
-    command = ["mpirun", "-n", str(ranks), "/usr/bin/time", "-f", "peak %M KB", tracker, "--standalone", scene,
-               "-o", out]
+    command = ["mpirun", "-n", str(ranks), tracker, "--standalone", scene, "-o", out]
     done = subprocess.run(command, env=env, capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"{' '.join(command)} failed:\n{done.stderr}")
-    peaks = [int(k) / 1024 for k in re.findall(r"peak (\d+) KB", done.stderr)]
+    by_rank = re.search(r"by rank: setup \[s\]([\d. ]+); peak memory \[MB\]([\d. ]+)", done.stderr)
+    setups, peaks = ([float(x) for x in group.split()] for group in by_rank.groups())
     wall, setup = map(float, re.search(r"([\d.]+) s \(setup ([\d.]+) s\)", done.stderr).groups())
     particles = int(re.search(r"(\d+) particles seeded", done.stderr).group(1))
-    return peaks, wall, setup, particles
+    return peaks, setups, wall, setup, particles
 
 
 def main():
@@ -61,11 +61,12 @@ def main():
         scene = Path(scratch) / "scene.yaml"
         scene.write_text(scene_text(args.cells, args.steps))
         print(f"{args.cells}^3 cells, {args.steps} steps")
-        print(f"{'ranks':>5} {'particles':>10} {'setup s':>8} {'s/step':>8} {'peak MB per rank, ascending':>30}")
+        print(f"{'ranks':>5} {'particles':>10} {'s/step':>8}  {'setup s by rank (0 first)':<28} peak MB by rank")
         for ranks in args.ranks:
-            peaks, wall, setup, particles = run(args.tracker, ranks, str(scene), str(Path(scratch) / "run.h5"))
+            peaks, setups, wall, setup, particles = run(args.tracker, ranks, str(scene), str(Path(scratch) / "run.h5"))
             per_step = (wall - setup) / args.steps
-            print(f"{ranks:>5} {particles:>10} {setup:>8.2f} {per_step:>8.3f} {' '.join(f'{p:.0f}' for p in sorted(peaks)):>30}")
+            print(f"{ranks:>5} {particles:>10} {per_step:>8.3f}  {' '.join(f'{t:.2f}' for t in setups):<28} "
+                  f"{' '.join(f'{p:.0f}' for p in peaks)}")
 
 
 if __name__ == "__main__":

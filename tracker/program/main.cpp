@@ -7,8 +7,13 @@
 #include <CLI/CLI.hpp>
 #include <mpi.h>
 
+#include <fmt/format.h>
+#include <sys/resource.h>
+
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "participant/mpi_team.hpp"
 #include "participant/program_args.hpp"
@@ -43,6 +48,12 @@ int standalone(const std::string& scene, const std::string& output) {
   const cosim::tracker::Ranks ranks(MPI_COMM_WORLD);
   const int code = cosim::scene::exit_code("cosim-tracker", [&] {
     const cosim::tracker::RunSummary s = cosim::tracker::run_tracker(cosim::scene::load_scene(scene), output, ranks);
+    // Each rank's setup time and peak memory, for the scaling of a run over ranks.
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const double mine[2] = {s.setup_seconds, static_cast<double>(usage.ru_maxrss) / 1024.0};
+    std::vector<double> all(2 * static_cast<std::size_t>(ranks.size()));
+    MPI_Gather(mine, 2, MPI_DOUBLE, all.data(), 2, MPI_DOUBLE, 0, MPI_COMM_WORLD);
     if (!ranks.lead()) return s.moves.lost > 0 ? 1 : 0;
     std::fprintf(stderr, "cosim-tracker: %llu steps, %zu particles seeded, %zu entered, %zu remain, %lld collisions, "
                          "%.2f s (setup %.2f s)\n  %s\n  steps%s: %s\n",
@@ -53,6 +64,12 @@ int standalone(const std::string& scene, const std::string& output) {
     if (ranks.size() > 1)
       std::fprintf(stderr, "cosim-tracker: %d ranks, %zu particles moved between them, %llu re-partitions\n",
                    ranks.size(), s.migrated, static_cast<unsigned long long>(s.rebalances));
+    std::string setup, peak;
+    for (int r = 0; r < ranks.size(); ++r) {
+      setup += fmt::format(" {:.2f}", all[2 * static_cast<std::size_t>(r)]);
+      peak += fmt::format(" {:.0f}", all[2 * static_cast<std::size_t>(r) + 1]);
+    }
+    std::fprintf(stderr, "cosim-tracker: by rank: setup [s]%s; peak memory [MB]%s\n", setup.c_str(), peak.c_str());
     if (s.moves.lost > 0) {
       std::fprintf(stderr, "cosim-tracker: %lld particles lost (outside their cells): a tracking bug\n", s.moves.lost);
       return 1;

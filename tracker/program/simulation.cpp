@@ -4,6 +4,7 @@
 #include "tracker/program/seed_particles.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -208,6 +209,8 @@ void Simulation::reseed(std::uint64_t stream) {
 }
 
 void Simulation::move_obstacle(int i, const Eigen::Isometry3d& pose, double dt) {
+  // Every rank moves every obstacle: all know that overrun particles may sit in ghosts now.
+  strays_ = true;
   setup_.obstacles.set_pose(i, pose, dt, *setup_.domain, swarm_, random_, tallies_[static_cast<std::size_t>(i)]);
 }
 
@@ -216,7 +219,8 @@ void Simulation::step(double dt) {
   // in tracer mode, the last step's moves crossed into other ranks' cells): they go to their
   // cells' owners before the collisions need them there.
   stages_.time(Stage::migrate, [&] {
-    migrated_ += decomposition_.migrate(swarm_, numbering());
+    if (!part_ || strays_) migrated_ += decomposition_.migrate(swarm_, numbering());
+    strays_ = false;
     if (const int every = setup_.balance.every; decomposition_.ranks().size() > 1 && every > 0 && steps_ % every == 0)
       balance();
   });
@@ -237,10 +241,18 @@ void Simulation::step(double dt) {
   // The moves that entered other ranks' cells go on there, in rounds until all are done.
   if (part_)
     stages_.time(Stage::migrate, [&] {
-      while (decomposition_.ranks().sum(static_cast<long long>(away_.size())) > 0) {
+      for (;;) {
+        std::array<long long, 2> left{static_cast<long long>(away_.size()), away_.strays()};
+        decomposition_.ranks().sum(left);
+        if (left[0] == 0) {
+          // Particles a recovery left in ghosts migrate at the start of the next step.
+          strays_ = left[1] > 0;
+          break;
+        }
         migrated_ += decomposition_.hand_over(away_, numbering());
         away_.resume_all(*setup_.domain, setup_.obstacles, random_, swarm_, moves_, tallies_, patch_tallies_);
       }
+      away_.forget_strays();
     });
   // Where they are: a rank's sums over cells it does not own add up with the owner's.
   stages_.time(Stage::sample, [&] { sampler_.sample(swarm_); });
@@ -581,6 +593,7 @@ void Simulation::restore(std::span<const double> state) {
   sampler_.set_sums(sums);
   if (collider_) collider_->set_cells(std::move(cells));
   swarm_ = std::move(swarm);
+  strays_ = true;  // the state does not say whether some are in ghosts: a migration finds out
   tallies_ = std::move(tallies);
   patch_tallies_ = std::move(patch_tallies);
   moves_ = moves;

@@ -140,6 +140,9 @@ class Simulation {
   Index whole_cells_ = 0;
   std::unique_ptr<PartCells> part_cells_;
   Handover away_;  // the moves of a step that entered ghosts, until they are done
+  // Some rank may hold particles in its ghosts (an obstacle moved, or a recovery put them
+  // there): the next step starts with a migration. The same on every rank.
+  bool strays_ = false;
 };
 
 }  // namespace cosim::tracker

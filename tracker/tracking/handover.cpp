@@ -27,15 +27,18 @@ void Handover::resume_all(const Domain& domain, const Obstacles& obstacles, Rand
                           MoveTally& moves, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) {
   detail::check_carried(domain, obstacles, static_cast<std::size_t>(objects_), tallies.size(), patches.size());
   Handover again(objects_);
+  again.strays_ = strays_;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     Particle& p = particles_[i];
     const std::span<csg::State> states(states_.data() + i * objects_, static_cast<std::size_t>(objects_));
     const MoveResult result = detail::resume_flight(domain, p, flights_[i], random, {&obstacles, states, tallies, patches});
     moves.add_rest(result);
-    if (result.handed_over)
+    if (result.handed_over) {
       again.add(p, states, result.rest);
-    else if (!result.removed)
+    } else if (!result.removed) {
+      if (p.cell >= domain.mesh.own_cells()) again.stray();
       swarm.add(p, states);
+    }
   }
   *this = std::move(again);
 }

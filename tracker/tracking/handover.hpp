@@ -24,6 +24,11 @@ class Handover {
   const Flight& flight(std::size_t i) const { return flights_[i]; }
   void add(const Particle& particle, std::span<const csg::State> states, const Flight& rest);
   void clear();
+  // Counts a particle whose move ended in a ghost without entering it (a recovery put it
+  // there): it stays in its swarm and migrates at the start of the next step.
+  void stray() { ++strays_; }
+  long long strays() const { return strays_; }
+  void forget_strays() { strays_ = 0; }
 
   // Goes on with every particle's move (each in one of this rank's cells): those that end
   // it here join `swarm`, those that enter a ghost again replace the handover's particles.
@@ -35,6 +40,7 @@ class Handover {
   std::vector<Particle> particles_;
   std::vector<csg::State> states_;
   std::vector<Flight> flights_;
+  long long strays_ = 0;
 };
 
 }  // namespace cosim::tracker

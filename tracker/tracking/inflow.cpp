@@ -110,10 +110,12 @@ long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt,
       const MoveResult result = move(domain, obstacles, p, states, uniform(random) * dt, random, tallies, patches);
       moves.add(result);
       ++entered;
-      if (result.handed_over)
+      if (result.handed_over) {
         away->add(p, states, result.rest);
-      else if (!result.removed)
+      } else if (!result.removed) {
+        if (p.cell >= domain.mesh.own_cells()) away->stray();
         swarm.add(p, states);
+      }
     }
   }
   return entered;
