@@ -1,5 +1,5 @@
 // The scene parser knows the keys every program shares; each built-in program owns its
-// own section (DESIGN.md). So that `cosim check` also finds a bad option there, or a mesh
+// own section (docs/architecture.md). So that `cosim check` also finds a bad option there, or a mesh
 // or species file that cannot be read, it asks each built-in it would start to read its
 // section as it does at start-up: `cosim-<name> --check scene.yaml`, one process, no ranks.
 #pragma once
