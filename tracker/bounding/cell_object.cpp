@@ -55,7 +55,7 @@ CellObject::CellObject(const Mesh& mesh, const csg::Tree& object, double margin)
   for (Index c = 0; c < mesh.cell_count(); ++c) {
     const std::vector<int> kept = with_ring(mesh, near, c);
     if (kept.size() > static_cast<std::size_t>(csg::max_primitives))
-      throw std::invalid_argument(mesh.source + ": cell " + std::to_string(c) + " needs " +
+      throw std::invalid_argument(mesh.source + ": cell " + std::to_string(mesh.global_cell(c)) + " needs " +
                                   std::to_string(kept.size()) + " primitives of a CSG object, a logical state holds " +
                                   std::to_string(csg::max_primitives) + ": refine the mesh there");
     // Left-out primitives are constant in the cell: their value at the centroid is theirs.

@@ -37,4 +37,18 @@ BoxSpec cube(int cells, bool tetrahedra = false);
 
 std::vector<double> axis_nodes(const AxisSpacing& axis);
 
+// A cell of box_mesh's numbering (`hexahedra` per axis, `per_hex` cells in each: 1, or 6
+// tetrahedra): its hexahedron's indices and its place in it, and back.
+struct BoxCell {
+  std::array<int, 3> hex;
+  int within = 0;
+};
+inline BoxCell box_cell(Index cell, const std::array<int, 3>& hexahedra, int per_hex) {
+  const Index h = cell / per_hex;
+  return {{h % hexahedra[0], h / hexahedra[0] % hexahedra[1], h / (hexahedra[0] * hexahedra[1])}, cell % per_hex};
+}
+inline Index box_cell_index(const BoxCell& c, const std::array<int, 3>& hexahedra, int per_hex) {
+  return ((c.hex[2] * hexahedra[1] + c.hex[1]) * hexahedra[0] + c.hex[0]) * per_hex + c.within;
+}
+
 }  // namespace cosim::tracker

@@ -43,9 +43,9 @@ Mesh box_part(const BoxSpec& spec, const std::array<int, 3>& lo, const std::arra
                              static_cast<int>(around.axes[2].nodes.size()) - 1};
   // A cell of the box around as the whole numbers it.
   const auto whole_cell = [&](Index c) {
-    const Index hex = c / per_hex;
-    const Index i = hex % m[0] + first[0], j = hex / m[0] % m[1] + first[1], k = hex / (m[0] * m[1]) + first[2];
-    return ((k * n[1] + j) * n[0] + i) * per_hex + c % per_hex;
+    BoxCell cell = box_cell(c, m, per_hex);
+    for (int a = 0; a < 3; ++a) cell.hex[a] += first[a];
+    return box_cell_index(cell, n, per_hex);
   };
   Mesh part = extract_part(box_mesh(around), [&](Index c) { return owner(whole_cell(c)); }, rank);
   for (Index& g : part.global) g = whole_cell(g);

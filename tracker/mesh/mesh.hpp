@@ -50,9 +50,10 @@ struct Mesh {
   std::vector<Vec3> shifts{Vec3::Zero()};  // periodic translations; 0 is "none"
   std::string source;                   // file or generator, for messages
 
-  // A rank's part of a larger mesh (part.hpp): its last `ghosts` cells surround the others
-  // and belong to other ranks, global[c] is cell c's index in the whole mesh, and faces
-  // beyond the part have the neighbour kBeyondPart. A whole mesh has none of these.
+  // A rank's part of a larger mesh (part.hpp, `partial`): its last `ghosts` cells surround
+  // the others and belong to other ranks, global[c] is cell c's index in the whole mesh, and
+  // faces beyond the part have the neighbour kBeyondPart. A whole mesh has none of these.
+  bool partial = false;
   std::vector<Index> global;
   Index ghosts = 0;
   double whole_diagonal = 0.0;  // the whole mesh's bounding-box diagonal (0: this one's)

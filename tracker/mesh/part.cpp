@@ -44,6 +44,7 @@ std::vector<Index> part_cells(const Mesh& whole, const std::function<int(Index)>
 Mesh extract_part(const Mesh& whole, const std::function<int(Index)>& owner, int rank, int layers) {
   std::vector<Index> local(static_cast<std::size_t>(whole.cell_count()), -1);
   Mesh part;
+  part.partial = true;
   part.global = part_cells(whole, owner, rank, layers, local);
   part.ghosts = static_cast<Index>(std::count_if(part.global.begin(), part.global.end(),
                                                  [&](Index c) { return owner(c) != rank; }));

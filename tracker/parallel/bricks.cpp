@@ -1,6 +1,8 @@
 #include "tracker/parallel/bricks.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -45,20 +47,25 @@ Bricks::Bricks(std::array<int, 3> hexahedra, int per_hex, int parts, std::span<c
           const std::array<int, 3> at{i, j, k};
           double w = per_hex;
           if (!weight.empty()) {
-            const long long hex = i + 1LL * hexahedra[0] * (j + 1LL * hexahedra[1] * k);
             w = 0.0;
-            for (int t = 0; t < per_hex; ++t) w += weight[static_cast<std::size_t>(hex * per_hex + t)];
+            for (int t = 0; t < per_hex; ++t)
+              w += weight[static_cast<std::size_t>(box_cell_index({at, t}, hexahedra, per_hex))];
           }
           slab[static_cast<std::size_t>(at[axis] - r.lo[axis])] += w;
         }
     const double total = std::accumulate(slab.begin(), slab.end(), 0.0);
     const double share = total * low_parts / count;
-    // Each side keeps at least one slab.
-    int best = r.lo[axis] + 1;
-    double below = slab[0], best_miss = std::abs(below - share);
-    for (int c = r.lo[axis] + 2; c < r.hi[axis]; ++c) {
+    // Each side keeps a hexahedron for each of its ranks where the brick has enough, and
+    // at least one slab.
+    const long long across = r.hexahedra() / (r.hi[axis] - r.lo[axis]);
+    const auto slabs_for = [&](long long parts) { return static_cast<int>(std::max(1LL, (parts + across - 1) / across)); };
+    int first = r.lo[axis] + slabs_for(low_parts), last = r.hi[axis] - slabs_for(count - low_parts);
+    if (first > last) first = last = std::clamp(first, r.lo[axis] + 1, r.hi[axis] - 1);
+    int best = first;
+    double below = 0.0, best_miss = std::numeric_limits<double>::infinity();
+    for (int c = r.lo[axis] + 1; c <= last; ++c) {
       below += slab[static_cast<std::size_t>(c - 1 - r.lo[axis])];
-      if (const double miss = std::abs(below - share); miss < best_miss) {
+      if (const double miss = std::abs(below - share); c >= first && miss < best_miss) {
         best_miss = miss;
         best = c;
       }
@@ -104,9 +111,7 @@ int Bricks::split(const Range& range, int first, int count, const CutOf& cut_of)
 }
 
 int Bricks::owner(Index cell) const {
-  const long long hex = cell / per_hex_;
-  const std::array<int, 3> at{static_cast<int>(hex % hexahedra_[0]), static_cast<int>(hex / hexahedra_[0] % hexahedra_[1]),
-                              static_cast<int>(hex / (1LL * hexahedra_[0] * hexahedra_[1]))};
+  const std::array<int, 3> at = box_cell(cell, hexahedra_, per_hex_).hex;
   int node = nodes_.empty() ? -1 : 0;
   while (node >= 0) {
     const Node& n = nodes_[static_cast<std::size_t>(node)];

@@ -11,7 +11,7 @@
 #include <span>
 #include <vector>
 
-#include "tracker/mesh/mesh.hpp"
+#include "tracker/mesh/box_mesh.hpp"
 
 namespace cosim::tracker {
 
@@ -36,7 +36,10 @@ class Bricks {
   const Range& brick(int part) const { return bricks_[static_cast<std::size_t>(part)]; }
   // The cut positions, in the order they were made.
   std::vector<int> cuts() const;
-  bool operator==(const Bricks& other) const { return cuts() == other.cuts() && per_hex_ == other.per_hex_; }
+  bool operator==(const Bricks& other) const {
+    return hexahedra_ == other.hexahedra_ && per_hex_ == other.per_hex_ && parts() == other.parts() &&
+           cuts() == other.cuts();
+  }
 
  private:
   Bricks(std::array<int, 3> hexahedra, int per_hex, int parts);

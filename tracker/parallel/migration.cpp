@@ -124,20 +124,16 @@ Index Numbering::local(Index global) const {
   return c;
 }
 
-std::size_t record_bytes(int objects) { return sizeof(Record) + static_cast<std::size_t>(objects) * sizeof(csg::State); }
+namespace {
 
-void pack(const Swarm& swarm, std::size_t i, std::span<std::byte> record, const Numbering& numbering) {
-  const Record r = record_of(swarm.particle(i), numbering);
-  std::memcpy(record.data(), &r, sizeof r);
-  const std::span<const csg::State> states = swarm.states(i);
-  std::memcpy(record.data() + sizeof r, states.data(), states.size_bytes());
-}
-
+// Adds the particle of every record (as migrate() sends them) to the swarm, bit for bit.
 void unpack(std::span<const std::byte> records, Swarm& swarm, const Numbering& numbering) {
   for_each_record<Record>(records, swarm.objects(), [&](const Record& r, std::span<const csg::State> states) {
     swarm.add({{r.x[0], r.x[1], r.x[2]}, {r.v[0], r.v[1], r.v[2]}, numbering.local(r.cell)}, states);
   });
 }
+
+}  // namespace
 
 std::size_t migrate(Swarm& swarm, const Owners& owner, const Ranks& ranks, std::uint64_t round,
                     const Numbering& numbering) {

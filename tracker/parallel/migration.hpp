@@ -36,14 +36,6 @@ using Messages = std::map<int, std::vector<std::byte>>;
 // `round`: as for migrate().
 Messages exchange(const Messages& out, const Ranks& ranks, std::uint64_t round);
 
-// Bytes of one particle's record with `objects` obstacles.
-std::size_t record_bytes(int objects);
-// Particle i of the swarm into `record` (record_bytes(swarm.objects()) long).
-void pack(const Swarm& swarm, std::size_t i, std::span<std::byte> record, const Numbering& numbering = {});
-// Adds the particle of every record in `records` (whole records, as pack() wrote them) to
-// the swarm, bit for bit as it was packed.
-void unpack(std::span<const std::byte> records, Swarm& swarm, const Numbering& numbering = {});
-
 // Collective: every particle whose cell (in the whole mesh) `owner` gives to another rank
 // leaves the swarm for that rank, and what the others send here is appended. Returns how
 // many left. Received particles are appended in the order of their senders' ranks. `round`

@@ -17,7 +17,6 @@ class Owners {
 
   int operator()(Index cell) const { return bricks_ ? bricks_->owner(cell) : table_[static_cast<std::size_t>(cell)]; }
   const std::optional<Bricks>& bricks() const { return bricks_; }
-  bool operator==(const Owners& other) const { return table_ == other.table_ && bricks_ == other.bricks_; }
 
   // As numbers (the table, or the bricks' cuts), for states, and back: `like` gives the
   // kind and the sizes. std::invalid_argument for numbers that are not such owners of

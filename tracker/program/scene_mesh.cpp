@@ -3,12 +3,16 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/gmsh_mesh.hpp"
 #include "tracker/mesh/perturb.hpp"
 #include "tracker/mesh/voronoi_mesh.hpp"
+#include "tracker/tracking/sampling.hpp"
 
 namespace cosim::tracker {
 namespace {
@@ -51,6 +55,16 @@ BoxSpec box(const Reader& r, const scene::Domain& domain) {
     spec.axes[a] = {.min = domain.min[a], .max = domain.max[a], .cells = n[a], .ratio = ratio[a]};
   spec.tetrahedra = r.boolean("tetrahedra", false);
   spec.periodic = periodic(r);
+  // Cells, faces and their vertices are numbered in 32 bits (Index), in the whole mesh that
+  // rank 0 writes too, and rank 0 gathers each cell's sampled sums (1 + 16 values).
+  const long long hexahedra = 1LL * n[0] * n[1] * n[2];
+  const long long vertex_entries = hexahedra * (spec.tetrahedra ? 72 : 24);
+  const long long gathered = hexahedra * (spec.tetrahedra ? 6 : 1) * (1 + CellSampler::kSumsPerCell);
+  if (std::max(vertex_entries, gathered) > std::numeric_limits<Index>::max())
+    r.fail("cells", std::to_string(hexahedra) + " hexahedra" + (spec.tetrahedra ? " split into tetrahedra" : "") +
+                        " are more than one mesh holds: at most " +
+                        std::to_string(std::numeric_limits<Index>::max() / (spec.tetrahedra ? 102 : 24)) +
+                        " (its face vertices and the cells' sums on rank 0 are counted in 32 bits)");
   return spec;
 }
 

@@ -1,6 +1,7 @@
 #include "tracker/program/scene_tracker.hpp"
 
 #include <stdexcept>
+#include <string>
 
 #include "scene/error.hpp"
 #include "tracker/mesh/box_part.hpp"
@@ -48,7 +49,7 @@ TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
   SceneMesh mesh = read_mesh(options.map("mesh"), scene, t.tracers ? nullptr : box_parts(ranks));
   t.mesh = std::make_unique<Mesh>(std::move(mesh.mesh));
   t.box = std::move(mesh.box);
-  const bool part = !t.mesh->global.empty();
+  const bool part = t.mesh->partial;
   t.particles = read_seeding(options.map("particles"));
   Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass, ranks);
   t.inflows = read_inflows(options, *t.mesh, boundaries, t.particles.mass, t.particles.weight);
@@ -67,14 +68,18 @@ TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
   SceneObstacles obstacles = read_obstacles(options, scene);
   t.obstacle_body = std::move(obstacles.body);
   if (!obstacles.objects.empty()) {
+    std::string failure;
     try {
       t.obstacles = Obstacles(*t.mesh, std::move(obstacles.objects));
       for (int i = 0; i < t.obstacles.count(); ++i)
         if (const int b = t.obstacle_body[static_cast<std::size_t>(i)]; b >= 0)
           t.obstacles.place(i, initial_pose(scene.bodies[static_cast<std::size_t>(b)]));
     } catch (const std::invalid_argument& e) {
-      options.fail("obstacles", e.what());
+      failure = e.what();
     }
+    // A part shows a rank only its cells' faults: every rank stops alike.
+    if (const long long failed = failure.empty() ? 0 : 1; (part ? ranks.sum(failed) : failed) > 0)
+      options.fail("obstacles", failure.empty() ? "on another rank's part of the mesh (its message names it)" : failure);
     // An object whose surface meets no cell does nothing: most likely given in other units
     // or outside the domain.
     for (int i = 0; i < t.obstacles.count(); ++i)

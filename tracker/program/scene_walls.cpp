@@ -45,7 +45,7 @@ Boundaries read_boundaries(const Reader& options, const Mesh& mesh, double mass,
   std::vector<long long> faces(mesh.patches.size(), 0);
   for (const Face& f : mesh.faces)
     if (f.neighbour < 0 && f.neighbour != kBeyondPart) faces[static_cast<std::size_t>(patch_of(f.neighbour))] = 1;
-  if (!mesh.global.empty()) ranks.sum(faces);  // a part: a patch's faces may all be on other ranks
+  if (mesh.partial) ranks.sum(faces);  // a part: a patch's faces may all be on other ranks
   std::set<Index> with_faces;
   for (std::size_t p = 0; p < faces.size(); ++p)
     if (faces[p] > 0) with_faces.insert(static_cast<Index>(p));

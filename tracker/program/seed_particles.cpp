@@ -135,10 +135,11 @@ CellVolumes volumes_of(const BoxSpec& box) {
   // then tetrahedra of the hexahedron.
   return {cells, [=](Index c) {
             if (c >= cells) return wx * wy * wz;
-            const Index hex = c / per_hex, i = hex % nx, j = hex / nx % ny, k = hex / (nx * ny);
+            const BoxCell at = box_cell(c, {nx, ny, nz}, per_hex);
+            const Index i = at.hex[0], j = at.hex[1], k = at.hex[2];
             return from_first(2, k) * wy * wx +
                    width(2, k) * (from_first(1, j) * wx +
-                                  width(1, j) * (from_first(0, i) + width(0, i) * static_cast<double>(c % per_hex) / per_hex));
+                                  width(1, j) * (from_first(0, i) + width(0, i) * static_cast<double>(at.within) / per_hex));
           }};
 }
 

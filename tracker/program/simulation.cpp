@@ -209,8 +209,9 @@ void Simulation::reseed(std::uint64_t stream) {
 }
 
 void Simulation::move_obstacle(int i, const Eigen::Isometry3d& pose, double dt) {
-  // Every rank moves every obstacle: all know that overrun particles may sit in ghosts now.
-  strays_ = true;
+  // Every rank moves every obstacle alike: all know that overrun particles may sit in
+  // ghosts now.
+  if (pose.matrix() != setup_.obstacles.pose(i).matrix()) strays_ = true;
   setup_.obstacles.set_pose(i, pose, dt, *setup_.domain, swarm_, random_, tallies_[static_cast<std::size_t>(i)]);
 }
 
@@ -219,7 +220,16 @@ void Simulation::step(double dt) {
   // in tracer mode, the last step's moves crossed into other ranks' cells): they go to their
   // cells' owners before the collisions need them there.
   stages_.time(Stage::migrate, [&] {
-    if (!part_ || strays_) migrated_ += decomposition_.migrate(swarm_, numbering());
+    if (!part_ || strays_) {
+      const std::size_t before = swarm_.size(), left = decomposition_.migrate(swarm_, numbering());
+      migrated_ += left;
+      // Strays may come from a second-layer ghost, whose registration with the obstacles is
+      // not the owner's: their states are evaluated anew here (a recovery or a moving wall
+      // puts them away from surfaces, where that is exact).
+      if (part_)
+        for (std::size_t i = before - left; i < swarm_.size(); ++i)
+          setup_.obstacles.classify(swarm_.cell(i), swarm_.particle(i).x, swarm_.states(i));
+    }
     strays_ = false;
     if (const int every = setup_.balance.every; decomposition_.ranks().size() > 1 && every > 0 && steps_ % every == 0)
       balance();
@@ -280,9 +290,12 @@ void Simulation::balance() {
   // A partition that would not help (too few particles, or cells that cannot be split
   // finer) is not taken, nor sought again until the loads drift 10 % further apart. Nor
   // one that leaves a rank no cell.
-  bool empty = false;
+  std::vector<long long> cells(held.size(), 0);
   if (const std::optional<Bricks>& b = owners.bricks())
-    for (int r = 0; r < b->parts(); ++r) empty = empty || b->brick(r).hexahedra() == 0;
+    for (int r = 0; r < b->parts(); ++r) cells[static_cast<std::size_t>(r)] = b->brick(r).hexahedra();
+  else
+    for (Index c = 0; c < whole_cells_; ++c) ++cells[static_cast<std::size_t>(owners(c))];
+  const bool empty = std::find(cells.begin(), cells.end(), 0LL) != cells.end();
   if (!(max_over_mean(load) < 0.9 * now) || empty) {
     balance_floor_ = 1.1 * now;
     return;
@@ -312,19 +325,11 @@ void Simulation::balance() {
   for (const auto& [rank, values] : records) out[rank] = bytes_of(values);
   const Messages in = decomposition_.exchange(out);
   // The particles by the whole's cell numbers while the parts change.
-  for (std::size_t i = 0; i < swarm_.size(); ++i) {
-    Particle p = swarm_.particle(i);
-    p.cell = tracked().global_cell(p.cell);
-    swarm_.set(i, p);
-  }
+  swarm_.renumber_cells([&](Index c) { return tracked().global_cell(c); });
   decomposition_.set_owners(std::move(owners));
   take_part();
   migrated_ += decomposition_.migrate(swarm_);
-  for (std::size_t i = 0; i < swarm_.size(); ++i) {
-    Particle p = swarm_.particle(i);
-    p.cell = numbering().local(p.cell);
-    swarm_.set(i, p);
-  }
+  swarm_.renumber_cells([&](Index c) { return numbering().local(c); });
   std::vector<double> sums(1 + static_cast<std::size_t>(tracked().cell_count()) * CellSampler::kSumsPerCell, 0.0);
   sums[0] = samples[0];
   std::vector<dsmc::CellCollisionState> states(static_cast<std::size_t>(tracked().cell_count()));
@@ -507,7 +512,8 @@ std::vector<double> Simulation::state() const {
 }
 
 void Simulation::restore(std::span<const double> state) {
-  // Read into copies first: a state that turns out bad changes nothing.
+  // Read into copies first: a state that turns out bad changes nothing (but for a partition
+  // other than the present one, which is taken before the particles are checked against it).
   StateIn in(state);
   const int objects = setup_.obstacles.count();
   in.expect(kStateVersion, "layout version");
@@ -583,11 +589,10 @@ void Simulation::restore(std::span<const double> state) {
     throw std::runtime_error("tracker state: " + std::to_string(part_cells) + " cells on rank " +
                              std::to_string(decomposition_.ranks().rank()) + ", its part has " +
                              std::to_string(tracked().cell_count()));
-  for (std::size_t i = 0; i < swarm.size(); ++i) {
-    Particle p = swarm.particle(i);
-    p.cell = tracked().global.empty() ? p.cell : part_cells_->local(p.cell);
-    if (p.cell < 0) throw std::runtime_error("tracker state: a particle in a cell of another rank's");
-    swarm.set(i, p);
+  if (part_) {
+    swarm.renumber_cells([&](Index c) { return part_cells_->local(c); });
+    for (std::size_t i = 0; i < swarm.size(); ++i)
+      if (swarm.cell(i) < 0) throw std::runtime_error("tracker state: a particle in a cell of another rank's");
   }
   for (int o = 0; o < objects; ++o) setup_.obstacles.place(o, poses[static_cast<std::size_t>(o)]);
   sampler_.set_sums(sums);

@@ -1,17 +1,18 @@
 // The gas of a scene as cosim-tracker advances it, the same standalone and coupled: the
 // particles, their collisions, inflow, walls and obstacles, and what is sampled of them.
-// One step (step()) is what DSMC codes do per time step: migrate (over several ranks; now
-// and then re-partition), sort by cell, collide, move, inject, sample.
+// One step (step()) is what DSMC codes do per time step: migrate (over several ranks, when
+// particles may sit in ghosts; now and then re-partition), sort by cell, collide, move,
+// inject, hand over the moves that entered other ranks' cells, sample.
 //
 // Over several ranks (tracker/parallel) a rank tracks on its part of the mesh (its cells and
 // two layers of ghosts, mesh/part.hpp) with the obstacles registered there, and holds the
 // particles in its cells: a move that enters a ghost goes on on the ghost's owner within
 // the step (tracking/handover.hpp), and a particle a moving wall put in a ghost migrates
-// at the start of the next. Tracer mode keeps the whole mesh on every rank (a tracer's step
-// is not handed over): its tracers migrate at the start of a step. The whole mesh is still
-// kept on every rank for the output and the re-partitions. The totals and per-cell results
-// below are sums over the ranks: those calls are collective, every rank must make them in
-// the same order.
+// at the start of the next. A box's part is built without the whole, which only rank 0
+// builds (to write it); other meshes are read whole on every rank. Tracer mode keeps the
+// whole mesh on every rank (a tracer's step is not handed over): its tracers migrate at the
+// start of a step. The totals and per-cell results below are sums over the ranks: those
+// calls are collective, every rank must make them in the same order.
 #pragma once
 
 #include <cstdint>

@@ -17,6 +17,17 @@ void Handover::add(const Particle& particle, std::span<const csg::State> states,
   flights_.push_back(rest);
 }
 
+bool Handover::keeps(const MoveResult& result, const Particle& particle, std::span<const csg::State> states,
+                     const Mesh& mesh) {
+  if (result.handed_over) {
+    add(particle, states, result.rest);
+    return false;
+  }
+  if (result.removed) return false;
+  strays_ += particle.cell >= mesh.own_cells();
+  return true;
+}
+
 void Handover::clear() {
   particles_.clear();
   states_.clear();
@@ -33,12 +44,7 @@ void Handover::resume_all(const Domain& domain, const Obstacles& obstacles, Rand
     const std::span<csg::State> states(states_.data() + i * objects_, static_cast<std::size_t>(objects_));
     const MoveResult result = detail::resume_flight(domain, p, flights_[i], random, {&obstacles, states, tallies, patches});
     moves.add_rest(result);
-    if (result.handed_over) {
-      again.add(p, states, result.rest);
-    } else if (!result.removed) {
-      if (p.cell >= domain.mesh.own_cells()) again.stray();
-      swarm.add(p, states);
-    }
+    if (again.keeps(result, p, states, domain.mesh)) swarm.add(p, states);
   }
   *this = std::move(again);
 }

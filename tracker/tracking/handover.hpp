@@ -24,9 +24,11 @@ class Handover {
   const Flight& flight(std::size_t i) const { return flights_[i]; }
   void add(const Particle& particle, std::span<const csg::State> states, const Flight& rest);
   void clear();
-  // Counts a particle whose move ended in a ghost without entering it (a recovery put it
-  // there): it stays in its swarm and migrates at the start of the next step.
-  void stray() { ++strays_; }
+  // After a move: true if the particle stays in its swarm, false if the move handed it
+  // over (it is added here) or removed it. One that stays in a ghost (a recovery put it
+  // there, not a crossing) is counted: it migrates at the start of the next step.
+  bool keeps(const MoveResult& result, const Particle& particle, std::span<const csg::State> states,
+             const Mesh& mesh);
   long long strays() const { return strays_; }
   void forget_strays() { strays_ = 0; }
 

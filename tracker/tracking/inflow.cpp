@@ -58,7 +58,7 @@ Inflow::Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream
       entries_.push_back({f, mesh.cell_of_face(f), rate, s, area, t1, mesh.faces[f].normal.cross(t1)});
       rate_ += rate;
     }
-    if (entries_.size() == before && mesh.global.empty())
+    if (entries_.size() == before && !mesh.partial)
       throw std::invalid_argument(mesh.source + ": inflow patch " + std::to_string(patch) + " has no boundary faces");
   }
 }
@@ -110,12 +110,7 @@ long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt,
       const MoveResult result = move(domain, obstacles, p, states, uniform(random) * dt, random, tallies, patches);
       moves.add(result);
       ++entered;
-      if (result.handed_over) {
-        away->add(p, states, result.rest);
-      } else if (!result.removed) {
-        if (p.cell >= domain.mesh.own_cells()) away->stray();
-        swarm.add(p, states);
-      }
+      if (away == nullptr ? !result.removed : away->keeps(result, p, states, domain.mesh)) swarm.add(p, states);
     }
   }
   return entered;

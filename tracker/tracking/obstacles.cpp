@@ -72,9 +72,15 @@ Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const 
 }
 
 Obstacles Obstacles::on(const Mesh& tracking) const {
-  Obstacles moved(tracking, objects_);  // the shapes as they are placed now
+  // The objects were checked when first registered: the shapes as they are placed now.
+  Obstacles moved;
+  moved.bounding_ = &tracking;
+  moved.objects_ = objects_;
   moved.poses_ = poses_;
   moved.motions_ = motions_;
+  moved.emits_ = emits_;
+  for (const Obstacle& object : objects_) moved.cells_.emplace_back(tracking, object.shape);
+  moved.find_active();
   return moved;
 }
 

@@ -49,12 +49,7 @@ void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt
     const MoveResult result =
         detail::follow_events(domain, p, dt, random, {&obstacles, states(kept), tallies, patches});
     moves.add(result);
-    if (result.handed_over) {
-      away->add(p, states(kept), result.rest);
-    } else if (!result.removed) {
-      if (p.cell >= domain.mesh.own_cells()) away->stray();
-      set(kept++, p);
-    }
+    if (away == nullptr ? !result.removed : away->keeps(result, p, states(kept), domain.mesh)) set(kept++, p);
   }
   moves.moves += inside;
   particles_.resize(kept);

@@ -44,6 +44,11 @@ class Swarm {
   }
 
   void add(const Particle& particle, std::span<const csg::State> states);
+  // Every particle's cell c becomes to(c) (another numbering of the same cells).
+  template <typename To>
+  void renumber_cells(const To& to) {
+    for (StoredParticle& p : particles_) p.cell = to(p.cell);
+  }
   // Drops the particles for whose index `removed` is true, keeping the others' order.
   template <typename Removed>
   void remove_if(const Removed& removed) {

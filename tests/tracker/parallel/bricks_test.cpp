@@ -12,10 +12,7 @@
 namespace cosim::tracker {
 namespace {
 
-std::array<int, 3> hex_of(Index cell, const std::array<int, 3>& n, int per_hex) {
-  const long long hex = cell / per_hex;
-  return {static_cast<int>(hex % n[0]), static_cast<int>(hex / n[0] % n[1]), static_cast<int>(hex / (1LL * n[0] * n[1]))};
-}
+std::array<int, 3> hex_of(Index cell, const std::array<int, 3>& n, int per_hex) { return box_cell(cell, n, per_hex).hex; }
 
 // Each cell's owner's brick holds it; the bricks' hexahedra add up to the box's.
 void expect_tiling(const Bricks& bricks, const std::array<int, 3>& n, int per_hex) {

@@ -95,30 +95,6 @@ TEST(Partition, OnePartWithoutMetisAndBadCountsRefused) {
   EXPECT_THROW(partition_cells(mesh, 28), std::invalid_argument);
 }
 
-TEST(Migration, RecordsCarryAParticleAndItsStatesBitForBit) {
-  Swarm swarm(3), back(3);
-  std::mt19937_64 random(5);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int i = 0; i < 50; ++i) {
-    const std::vector<csg::State> states{random(), random(), random()};
-    swarm.add({{u(random), u(random), u(random)}, {1e3 * u(random), 1e3 * u(random), 1e3 * u(random)}, i}, states);
-  }
-  const std::size_t size = record_bytes(3);
-  EXPECT_EQ(size, 40u + 3 * 8);
-  std::vector<std::byte> records(size * swarm.size());
-  for (std::size_t i = 0; i < swarm.size(); ++i) pack(swarm, i, std::span(records).subspan(i * size, size));
-  unpack(records, back);
-  ASSERT_EQ(back.size(), swarm.size());
-  for (std::size_t i = 0; i < swarm.size(); ++i) {
-    const Particle a = swarm.particle(i), b = back.particle(i);
-    EXPECT_EQ(a.x, b.x);
-    EXPECT_EQ(a.v, b.v);
-    EXPECT_EQ(a.cell, b.cell);
-    EXPECT_TRUE(std::ranges::equal(swarm.states(i), back.states(i)));
-  }
-  EXPECT_THROW(unpack(std::span(records).first(size + 1), back), std::invalid_argument);
-}
-
 TEST(Migration, OneRankKeepsEveryParticle) {
   Swarm swarm(0);
   for (int i = 0; i < 10; ++i) swarm.add({{0, 0, 0}, {1, 0, 0}, i}, {});

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "output/h5_handle.hpp"
+#include "scene/error.hpp"
 #include "output/h5_values.hpp"
 #include "output/series.hpp"
 #include "participant/mpi_team.hpp"
@@ -440,8 +441,34 @@ TEST(TwoRanks, EachRankTracksOnItsPartAndHandsMovesOver) {
     EXPECT_EQ(two.particles(), one.particles());
     EXPECT_GT(two.migrated(), 100u);
     const std::vector<double> counts = two.counts();  // rank 0's
-    if (rank() == 0) EXPECT_EQ(counts, one.counts());
-    else EXPECT_TRUE(counts.empty());
+    if (rank() == 0) {
+      EXPECT_EQ(counts, one.counts());
+    } else {
+      EXPECT_TRUE(counts.empty());
+    }
+  }
+}
+
+// A fault that only one rank's part shows (70 primitives near rank 0's first cell, more than
+// a logical state holds) stops both ranks with the scene error: none waits for the other.
+TEST(TwoRanks, AFaultOnOneRanksPartStopsEveryRank) {
+  const std::string balls = "{ball: {centre: [0.0200, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0215, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0230, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0245, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0260, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0275, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0290, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0305, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0320, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0335, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0350, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0365, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0380, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0395, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0410, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0425, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0440, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0455, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0470, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0485, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0500, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0515, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0530, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0545, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0560, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0575, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0590, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0605, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0620, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0635, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0650, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0665, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0680, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0695, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0710, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0725, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0740, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0755, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0770, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0785, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0800, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0815, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0830, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0845, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0860, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0875, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0890, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0905, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0920, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0935, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0950, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0965, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0980, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0995, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1010, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1025, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1040, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1055, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1070, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1085, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1100, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1115, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1130, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1145, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1160, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1175, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1190, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1205, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1220, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1235, 0.05, 0.05], radius: 0.01}}";
+  const scene::Scene scene = scene::load_scene_from_string(
+      "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
+      "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
+      "      mesh: {type: box, cells: [8, 4, 4]}\n      boundaries: {default: {kind: specular}}\n"
+      "      obstacles:\n        - {name: grains, shape: {union: [" + balls + "]}}\n"
+      "      particles: {per_cell: 1, temperature: 1, mass: 1.0e-26, seed: 1}\n",
+      "fault.yaml");
+  std::string message;
+  try {
+    Simulation gas(scene, {}, Ranks(MPI_COMM_WORLD));
+  } catch (const scene::SceneError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("obstacles"), std::string::npos) << "rank " << rank() << ": " << message;
+  if (rank() == 0) {
+    EXPECT_NE(message.find("primitives"), std::string::npos) << message;
   }
 }
 

@@ -53,6 +53,11 @@ TEST(SceneMesh, PeriodicBoxHasWallsOnlyWhereAsked) {
 TEST(SceneMesh, MistakesNameTheKey) {
   EXPECT_NE(error_of("{type: tetgen}").find("participants.tracker.options.mesh.type = tetgen"), std::string::npos);
   EXPECT_NE(error_of("{type: box, cells: [4, 2.5, 2]}").find("mesh.cells"), std::string::npos);
+  // 1e8 hexahedra: more face vertices than 32-bit numbers count (refused before any is built).
+  EXPECT_NE(error_of("{type: box, cells: [1000, 1000, 100]}").find("more than one mesh holds: at most 89478485"),
+            std::string::npos);
+  EXPECT_NE(error_of("{type: box, cells: [300, 300, 300], tetrahedra: true}").find("at most 21053761"),
+            std::string::npos);
   EXPECT_NE(error_of("{type: gmsh, file: none.msh}").find("mesh.file"), std::string::npos);
   EXPECT_NE(error_of("{type: voronoi, points: 10, periodic: [yes, no]}").find("three booleans"), std::string::npos);
   EXPECT_NE(error_of("{type: box, cells: [2, 2, 2], perturb: {fraction: 0.7}}").find("mesh.perturb.fraction"),

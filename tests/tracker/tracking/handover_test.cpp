@@ -113,8 +113,7 @@ TEST(Part, OfABoxIsBuiltWithoutTheWhole) {
                                                                    {{{5, 0, 0}, {6, 7, 9}}}}};
     for (const auto& [lo, hi] : bricks) {
       const auto owner = [&](Index c) {
-        const Index hex = c / 6;
-        const std::array<Index, 3> at{hex % 11, hex / 11 % 7, hex / 77};
+        const std::array<int, 3> at = box_cell(c, {11, 7, 9}, 6).hex;
         for (int a = 0; a < 3; ++a)
           if (at[a] < lo[a] || at[a] >= hi[a]) return 1;
         return 0;
