@@ -38,21 +38,28 @@ TEST(WarmStart, ReducesIterationsOnRestingBox) {
 
 // A 1000 kg sphere on a 1 kg sphere on the ground: Gauss-Seidel propagates the heavy
 // load slowly through the light body, so this needs many iterations (or warm starting).
-class MassRatioStack : public ::testing::TestWithParam<Preset> {};
-
-// Guards against: the heavy sphere of a 1000:1 stack sinking through the light one.
-TEST_P(MassRatioStack, StaysAtRest) {
-  constexpr double r = 0.5;
+// A light sphere of radius r on a plane under one a thousand times heavier, and their contacts.
+struct HeavyOnLight {
+  static constexpr double r = 0.5;
   World world;
-  const Plane plane{.body = world.add_fixed()};
-  const std::uint32_t light = world.add_sphere(1.0, r, {0.0, 0.0, r});
-  const std::uint32_t heavy = world.add_sphere(1000.0, r, {0.0, 0.0, 3.0 * r});
-  const Contacts contacts = [&](std::span<const dynamics::BodyState> s) {
+  Plane plane{.body = world.add_fixed()};
+  std::uint32_t light = world.add_sphere(1.0, r, {0.0, 0.0, r});
+  std::uint32_t heavy = world.add_sphere(1000.0, r, {0.0, 0.0, 3.0 * r});
+  Contacts contacts = [this](std::span<const dynamics::BodyState> s) {
     std::vector<contact::Manifold> out;
     keep(out, sphere_plane(plane, light, r, s, 0.01));
     keep(out, sphere_sphere(light, r, heavy, r, s, 0.01));
     return out;
   };
+};
+
+class MassRatioStack : public ::testing::TestWithParam<Preset> {};
+
+// Guards against: the heavy sphere of a 1000:1 stack sinking through the light one.
+TEST_P(MassRatioStack, StaysAtRest) {
+  constexpr double r = HeavyOnLight::r;
+  HeavyOnLight stack;
+  auto& [world, plane, light, heavy, contacts] = stack;
   ImpulseOptions options = GetParam().options;
   // Cold Gauss-Seidel converges like (1 - 1/1000)^k on this chain.
   options.max_iterations = 30000;
@@ -77,17 +84,9 @@ class MassRatioStopping : public ::testing::TestWithParam<Preset> {};
 
 // Guards against: the stopping test saying converged while the light body's contacts are not.
 TEST_P(MassRatioStopping, StopsOnlyWhenTheLightBodysContactsHold) {
-  constexpr double r = 0.5, dt = 1e-3;
-  World world;
-  const Plane plane{.body = world.add_fixed()};
-  const std::uint32_t light = world.add_sphere(1.0, r, {0.0, 0.0, r});
-  const std::uint32_t heavy = world.add_sphere(1000.0, r, {0.0, 0.0, 3.0 * r});
-  const Contacts contacts = [&](std::span<const dynamics::BodyState> s) {
-    std::vector<contact::Manifold> out;
-    keep(out, sphere_plane(plane, light, r, s, 0.01));
-    keep(out, sphere_sphere(light, r, heavy, r, s, 0.01));
-    return out;
-  };
+  constexpr double dt = 1e-3;
+  HeavyOnLight stack;
+  auto& [world, plane, light, heavy, contacts] = stack;
   ImpulseOptions options = GetParam().options;
   options.max_iterations = 100000;
   ASSERT_EQ(options.tolerance, 1e-6);
