@@ -1,7 +1,9 @@
 #include <ccd/ccd.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "rigidbody/narrowphase/feature.hpp"
 #include "rigidbody/narrowphase/gjk.hpp"
 #include "rigidbody/narrowphase/pairs.hpp"
 
@@ -24,6 +26,19 @@ void ccd_center(const void* object, ccd_vec3_t* out) {
   ccdVec3Set(out, p.x(), p.y(), p.z());
 }
 
+// The contact points along the unit normal n (a to b) of shapes whose deepest contact is
+// `on_a` at signed distance `distance`: where the features facing each other are flat
+// (faces, segments), the clipped points; the deepest contact itself where they do not reach
+// its depth (a point feature, a curved rim between polygon vertices).
+void add_manifold(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const Vec3& n, const Vec3& on_a,
+                  double distance, double tolerance, Candidates& out) {
+  const std::size_t before = out.points.size();
+  clip_features(supporting_feature(a, pa, n), supporting_feature(b, pb, -n), n, out);
+  double clipped = INFINITY;
+  for (std::size_t k = before; k < out.points.size(); ++k) clipped = std::min(clipped, out.points[k].distance);
+  if (!(clipped <= distance + tolerance)) out.add(on_a, n, distance, 0);
+}
+
 }  // namespace
 
 void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Candidates& out) {
@@ -31,7 +46,7 @@ void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
   const double tolerance = 1e-10 * scale;
   const GjkResult g = gjk_distance(a, pa, b, pb, tolerance);
   if (!g.overlap) {
-    out.add(g.on_a, (g.on_b - g.on_a) / g.distance, g.distance, 0);
+    add_manifold(a, pa, b, pb, (g.on_b - g.on_a) / g.distance, g.on_a, g.distance, 1e-6 * scale, out);
     return;
   }
   // Overlapping or touching: libccd's EPA and MPR each give a direction (a to b) to push b
@@ -99,9 +114,9 @@ void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
       }
     }
   }
-  // For faces in contact the supports are arbitrary corners; the middle of the two
-  // support points is still between the surfaces, on the segment the depth is measured on.
-  out.add(best.on_a, best.normal, -best.depth, 0);
+  // For faces in contact the supports are arbitrary corners, so faces get clipped points;
+  // the middle of the two support points is still between the surfaces.
+  add_manifold(a, pa, b, pb, best.normal, best.on_a, -best.depth, 1e-6 * scale, out);
 }
 
 }  // namespace cosim::narrowphase::detail
