@@ -1,0 +1,107 @@
+// Convex shapes resting on a face (issue 22, goal 3): a hull box, a cylinder on its cap
+// and a capsule lying down stay still on a plane and on a fixed box with the default
+// solver, because the narrow phase gives each the points of its contact area.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rigidbody/narrowphase/narrowphase.hpp"
+#include "scenes.hpp"
+
+namespace cosim::world::test {
+namespace {
+
+using Eigen::Vector3d;
+
+geometry::ConvexHull hull_box(const Vector3d& h) {
+  std::vector<Vector3d> corners;
+  for (int i = 0; i < 8; ++i)
+    corners.push_back(h.cwiseProduct(Vector3d(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1)));
+  return geometry::ConvexHull(corners);
+}
+
+enum class Ground { Plane, Box };
+
+// The floor z <= 0: a half-space, or a fixed box (a general convex pair with anything but
+// a box or a sphere).
+void add_floor(World& world, Ground ground) {
+  if (ground == Ground::Plane) {
+    add_ground(world);
+    return;
+  }
+  BodyDesc d{.shape = geometry::Box({1.0, 1.0, 0.1}), .fixed = true};
+  d.state.position = {0.0, 0.0, -0.1};
+  world.add(d);
+}
+
+struct Rest {
+  double rotation = 0.0;  // largest angle from the start [rad]
+  double drift = 0.0;     // largest displacement from the start [m]
+  int points = 0;         // the narrow phase's points with the floor at the start
+};
+
+// `shape` placed at `start` (touching the floor) and stepped `steps` times.
+Rest rest(Ground ground, const geometry::Shape& shape, const geometry::Pose& start, int steps = 2000) {
+  World world;
+  add_floor(world, ground);
+  BodyDesc d{.shape = shape};
+  d.state.position = start.position();
+  d.state.orientation = start.orientation();
+  const auto body = world.add(d);
+  Rest r;
+  contact::Manifold m;
+  const auto& floor = world.states()[0];
+  narrowphase::collide(world.shape(0), geometry::Pose(floor.position, floor.orientation), shape, start, 1e-3, m);
+  r.points = m.count;
+  for (int i = 0; i < steps; ++i) {
+    world.advance(world.settings().dt);
+    const auto& s = world.states()[body];
+    r.rotation = std::max(r.rotation, s.orientation.angularDistance(start.orientation()));
+    r.drift = std::max(r.drift, (s.position - start.position()).norm());
+  }
+  return r;
+}
+
+const char* name(Ground g) { return g == Ground::Plane ? "plane" : "box"; }
+
+// Guards against: a hull box rocking from corner to corner on one contact point a step.
+TEST(ConvexResting, HullBoxStandsStill) {
+  const Vector3d h(0.1, 0.07, 0.05);
+  for (const Ground g : {Ground::Plane, Ground::Box}) {
+    SCOPED_TRACE(name(g));
+    const Eigen::Quaterniond turned(Eigen::AngleAxisd(0.4, Vector3d::UnitZ()));
+    const Rest r = rest(g, hull_box(h), geometry::Pose({0.02, -0.03, h.z()}, turned));
+    EXPECT_EQ(r.points, 4);
+    EXPECT_LT(r.rotation, 1e-3);
+    EXPECT_LT(r.drift, 1e-2 * 2.0 * h.z());
+  }
+}
+
+// Guards against: a cylinder on its cap balancing on one rim point at a time.
+TEST(ConvexResting, CylinderOnItsCapStandsStill) {
+  const double radius = 0.08, height = 0.12;
+  for (const Ground g : {Ground::Plane, Ground::Box}) {
+    SCOPED_TRACE(name(g));
+    const geometry::Pose standing({0.0, 0.0, 0.5 * height}, Eigen::Quaterniond::Identity());
+    const Rest r = rest(g, geometry::Cylinder(radius, height), standing);
+    EXPECT_GE(r.points, 3);
+    EXPECT_LT(r.rotation, 1e-3);
+    EXPECT_LT(r.drift, 1e-2 * height);
+  }
+}
+
+// Guards against: a capsule lying down rolling or seesawing on one point.
+TEST(ConvexResting, CapsuleLyingDownDoesNotRoll) {
+  const double radius = 0.04, length = 0.2;
+  const Eigen::Quaterniond lying(Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitY()));
+  for (const Ground g : {Ground::Plane, Ground::Box}) {
+    SCOPED_TRACE(name(g));
+    const Rest r = rest(g, geometry::Capsule(radius, length), geometry::Pose({0.0, 0.0, radius}, lying));
+    EXPECT_EQ(r.points, 2);
+    EXPECT_LT(r.rotation, 1e-3);
+    EXPECT_LT(r.drift, 1e-2 * 2.0 * radius);
+  }
+}
+
+}  // namespace
+}  // namespace cosim::world::test
