@@ -87,11 +87,17 @@ void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
   ccd_vec3_t direction, position;
   consider(ccdGJKPenetration(&ca, &cb, &ccd, &depth, &direction, &position), direction);
   consider(ccdMPRPenetration(&ca, &cb, &ccd, &depth, &direction, &position), direction);
+  const Vec3 d = pb.position() - pa.position();
+  const Push centres = push(d.norm() > 0.0 ? d : Vec3::UnitZ());
   if (!std::isfinite(best.depth)) {
     // Neither sees an overlap: the shapes touch within the tolerance where GJK stopped.
-    const Vec3 d = pb.position() - pa.position();
-    best = push(d.norm() > 0.0 ? d : Vec3::UnitZ());
+    best = centres;
     best.depth = 0.0;
+  } else if (centres.depth < best.depth) {
+    // On shapes that just touch both can answer with a far face (a capsule lying on a thin
+    // box got the box's bottom face, 0.18 m deep): the direction between the centres is a
+    // third start.
+    best = centres;
   }
   for (int i = 0; i < 32; ++i) {
     const Vec3 w = best.on_a - best.on_b;

@@ -1,6 +1,6 @@
 // Convex shapes resting on a face (issue 22, goal 3): a hull box, a cylinder on its cap
-// and a capsule lying down stay still on a plane and on a fixed box with the default
-// solver, because the narrow phase gives each the points of its contact area.
+// and a capsule lying down stay still on a plane, a fixed box and a box on a plane with the
+// default solver, because the narrow phase gives each the points of its contact area.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,18 +20,20 @@ geometry::ConvexHull hull_box(const Vector3d& h) {
   return geometry::ConvexHull(corners);
 }
 
-enum class Ground { Plane, Box };
+enum class Ground { Plane, FixedBox, BoxOnPlane };
+constexpr Ground kGrounds[] = {Ground::Plane, Ground::FixedBox, Ground::BoxOnPlane};
 
-// The floor z <= 0: a half-space, or a fixed box (a general convex pair with anything but
-// a box or a sphere).
-void add_floor(World& world, Ground ground) {
-  if (ground == Ground::Plane) {
-    add_ground(world);
-    return;
+// A floor whose top is z = 0: a half-space, a fixed box, or a box resting on a plane (a box
+// is a general convex pair with anything but a box or a sphere). Returns the top body.
+std::uint32_t add_floor(World& world, Ground ground) {
+  if (ground == Ground::Plane) return add_ground(world);
+  if (ground == Ground::FixedBox) {
+    BodyDesc d{.shape = geometry::Box({1.0, 1.0, 0.1}), .fixed = true};
+    d.state.position = {0.0, 0.0, -0.1};
+    return world.add(d);
   }
-  BodyDesc d{.shape = geometry::Box({1.0, 1.0, 0.1}), .fixed = true};
-  d.state.position = {0.0, 0.0, -0.1};
-  world.add(d);
+  world.add({.shape = geometry::HalfSpace(Vector3d::UnitZ()), .state = {.position = {0.0, 0.0, -0.1}}, .fixed = true});
+  return add_box(world, {0.3, 0.3, 0.05}, {0.0, 0.0, -0.05});
 }
 
 struct Rest {
@@ -43,15 +45,15 @@ struct Rest {
 // `shape` placed at `start` (touching the floor) and stepped `steps` times.
 Rest rest(Ground ground, const geometry::Shape& shape, const geometry::Pose& start, int steps = 2000) {
   World world;
-  add_floor(world, ground);
+  const auto below = add_floor(world, ground);
   BodyDesc d{.shape = shape};
   d.state.position = start.position();
   d.state.orientation = start.orientation();
   const auto body = world.add(d);
   Rest r;
   contact::Manifold m;
-  const auto& floor = world.states()[0];
-  narrowphase::collide(world.shape(0), geometry::Pose(floor.position, floor.orientation), shape, start, 1e-3, m);
+  const auto& floor = world.states()[below];
+  narrowphase::collide(world.shape(below), geometry::Pose(floor.position, floor.orientation), shape, start, 1e-3, m);
   r.points = m.count;
   for (int i = 0; i < steps; ++i) {
     world.advance(world.settings().dt);
@@ -62,12 +64,14 @@ Rest rest(Ground ground, const geometry::Shape& shape, const geometry::Pose& sta
   return r;
 }
 
-const char* name(Ground g) { return g == Ground::Plane ? "plane" : "box"; }
+const char* name(Ground g) {
+  return g == Ground::Plane ? "plane" : g == Ground::FixedBox ? "fixed box" : "box on a plane";
+}
 
 // Guards against: a hull box rocking from corner to corner on one contact point a step.
 TEST(ConvexResting, HullBoxStandsStill) {
   const Vector3d h(0.1, 0.07, 0.05);
-  for (const Ground g : {Ground::Plane, Ground::Box}) {
+  for (const Ground g : kGrounds) {
     SCOPED_TRACE(name(g));
     const Eigen::Quaterniond turned(Eigen::AngleAxisd(0.4, Vector3d::UnitZ()));
     const Rest r = rest(g, hull_box(h), geometry::Pose({0.02, -0.03, h.z()}, turned));
@@ -80,7 +84,7 @@ TEST(ConvexResting, HullBoxStandsStill) {
 // Guards against: a cylinder on its cap balancing on one rim point at a time.
 TEST(ConvexResting, CylinderOnItsCapStandsStill) {
   const double radius = 0.08, height = 0.12;
-  for (const Ground g : {Ground::Plane, Ground::Box}) {
+  for (const Ground g : kGrounds) {
     SCOPED_TRACE(name(g));
     const geometry::Pose standing({0.0, 0.0, 0.5 * height}, Eigen::Quaterniond::Identity());
     const Rest r = rest(g, geometry::Cylinder(radius, height), standing);
@@ -94,7 +98,7 @@ TEST(ConvexResting, CylinderOnItsCapStandsStill) {
 TEST(ConvexResting, CapsuleLyingDownDoesNotRoll) {
   const double radius = 0.04, length = 0.2;
   const Eigen::Quaterniond lying(Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitY()));
-  for (const Ground g : {Ground::Plane, Ground::Box}) {
+  for (const Ground g : kGrounds) {
     SCOPED_TRACE(name(g));
     const Rest r = rest(g, geometry::Capsule(radius, length), geometry::Pose({0.0, 0.0, radius}, lying));
     EXPECT_EQ(r.points, 2);
