@@ -81,15 +81,15 @@ void clip_features(const Feature& a, const Feature& b, const Vec3& n, Candidates
   const double along = m.dot(n);
   if (!(std::abs(along) > 1e-6)) return;  // the reference is edge-on to n
   const Polygon clipped = clip_to_prism(a_is_reference ? fb : fa, reference, n);
-  // Ids: a tag bit, the reference side, both features' ids (10 bits each; more faces wrap,
-  // which costs a warm start at worst) and the clipped vertex.
+  // Ids: a tag bit, the reference side, both features' ids (10 bits each) and the clipped
+  // vertex (8 bits); larger numbers wrap, which costs a warm start at worst.
   const std::uint32_t ref = (a_is_reference ? a.id : b.id) & 0x3FFu, inc = (a_is_reference ? b.id : a.id) & 0x3FFu;
   const std::uint32_t feature = 0x80000000u | (a_is_reference ? 0u : 0x40000000u) | ref << 18 | inc << 8;
-  for (std::size_t k = 0; k < clipped.size() && k < 256; ++k) {
+  for (std::size_t k = 0; k < clipped.size(); ++k) {
     const Vec3& p = clipped[k];
     // The gap t along n from the reference plane to p (on b), or from p (on a) to the plane.
     const double t = (a_is_reference ? 1.0 : -1.0) * m.dot(p - reference[0]) / along;
-    out.add(a_is_reference ? Vec3(p - t * n) : p, n, t, feature | static_cast<std::uint32_t>(k));
+    out.add(a_is_reference ? Vec3(p - t * n) : p, n, t, feature | static_cast<std::uint32_t>(k & 0xFFu));
   }
 }
 
