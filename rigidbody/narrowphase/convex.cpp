@@ -45,28 +45,11 @@ void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
   const double scale = std::min(geometry::bounding_radius(a), geometry::bounding_radius(b));
   const double tolerance = 1e-10 * scale;
   const GjkResult g = gjk_distance(a, pa, b, pb, tolerance);
-  if (!g.overlap) {
-    add_manifold(a, pa, b, pb, (g.on_b - g.on_a) / g.distance, g.on_a, g.distance, 1e-6 * scale, out);
-    return;
-  }
-  // Overlapping or touching: libccd's EPA and MPR each give a direction (a to b) to push b
-  // out along. libccd 2.1's EPA has no iteration limit, compares its tolerance with squared
-  // distances, and sometimes stops at zero depth on a clear overlap, so its answer is only
-  // a start: along any unit n the depth is h(n) = max_A n.x - min_B n.x, an upper bound of
-  // the penetration depth, which is the minimum of h. Both directions are scored, then
+  if (!g.overlap && g.distance > out.margin) return;
+  // Along any unit n (a to b), h(n) = max_A n.x - min_B n.x bounds the penetration depth
+  // from above and minus the distance from below; its minimum is either. A start is
   // refined by the fixed point n <- S_A(n) - S_B(-n) (exact at the minimum; one step for
   // spheres) and a compass search; the smallest h seen wins.
-  const CcdShape ca{&a, &pa}, cb{&b, &pb};
-  ccd_t ccd;
-  CCD_INIT(&ccd);
-  ccd.support1 = ccd_support;
-  ccd.support2 = ccd_support;
-  ccd.center1 = ccd_center;
-  ccd.center2 = ccd_center;
-  ccd.max_iterations = 1000;
-  ccd.epa_tolerance = 1e-7 * scale;
-  ccd.mpr_tolerance = 1e-7 * scale;
-  ccd.dist_tolerance = tolerance;
   struct Push {
     Vec3 normal;
     double depth;
@@ -77,27 +60,45 @@ void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
     const Vec3 sa = geometry::support(a, pa, n), sb = geometry::support(b, pb, -n);
     return Push{n, n.dot(sa - sb), sa, sb};
   };
-  Push best{Vec3::UnitZ(), INFINITY, g.on_a, g.on_b};
-  const auto consider = [&](int status, const ccd_vec3_t& d) {
-    const Vec3 n(d.v[0], d.v[1], d.v[2]);
-    if (status != 0 || !(n.norm() > 0.0)) return;
-    if (const Push p = push(n); p.depth < best.depth) best = p;
-  };
-  ccd_real_t depth = 0.0;
-  ccd_vec3_t direction, position;
-  consider(ccdGJKPenetration(&ca, &cb, &ccd, &depth, &direction, &position), direction);
-  consider(ccdMPRPenetration(&ca, &cb, &ccd, &depth, &direction, &position), direction);
-  const Vec3 d = pb.position() - pa.position();
-  const Push centres = push(d.norm() > 0.0 ? d : Vec3::UnitZ());
-  if (!std::isfinite(best.depth)) {
-    // Neither sees an overlap: the shapes touch within the tolerance where GJK stopped.
-    best = centres;
-    best.depth = 0.0;
-  } else if (centres.depth < best.depth) {
-    // On shapes that just touch both can answer with a far face (a capsule lying on a thin
-    // box got the box's bottom face, 0.18 m deep): the direction between the centres is a
-    // third start.
-    best = centres;
+  // Apart, GJK's closest points give the start; when they nearly touch (1e-7 apart on
+  // 0.1 m faces) its direction is off by 1e-3 rad, enough to roll a capsule lying on a face.
+  Push best = g.overlap ? Push{Vec3::UnitZ(), INFINITY, g.on_a, g.on_b} : push(g.on_b - g.on_a);
+  if (g.overlap) {
+    // Overlapping or touching: libccd's EPA and MPR each give a start. libccd 2.1's EPA has
+    // no iteration limit, compares its tolerance with squared distances, and sometimes
+    // stops at zero depth on a clear overlap, so its answer is only a start.
+    const CcdShape ca{&a, &pa}, cb{&b, &pb};
+    ccd_t ccd;
+    CCD_INIT(&ccd);
+    ccd.support1 = ccd_support;
+    ccd.support2 = ccd_support;
+    ccd.center1 = ccd_center;
+    ccd.center2 = ccd_center;
+    ccd.max_iterations = 1000;
+    ccd.epa_tolerance = 1e-7 * scale;
+    ccd.mpr_tolerance = 1e-7 * scale;
+    ccd.dist_tolerance = tolerance;
+    const auto consider = [&](int status, const ccd_vec3_t& d) {
+      const Vec3 n(d.v[0], d.v[1], d.v[2]);
+      if (status != 0 || !(n.norm() > 0.0)) return;
+      if (const Push p = push(n); p.depth < best.depth) best = p;
+    };
+    ccd_real_t depth = 0.0;
+    ccd_vec3_t direction, position;
+    consider(ccdGJKPenetration(&ca, &cb, &ccd, &depth, &direction, &position), direction);
+    consider(ccdMPRPenetration(&ca, &cb, &ccd, &depth, &direction, &position), direction);
+    const Vec3 d = pb.position() - pa.position();
+    const Push centres = push(d.norm() > 0.0 ? d : Vec3::UnitZ());
+    if (!std::isfinite(best.depth)) {
+      // Neither sees an overlap: the shapes touch within the tolerance where GJK stopped.
+      best = centres;
+      best.depth = 0.0;
+    } else if (centres.depth < best.depth) {
+      // On shapes that just touch both can answer with a far face (a capsule lying on a
+      // thin box got the box's bottom face, 0.18 m deep): the direction between the
+      // centres is a third start.
+      best = centres;
+    }
   }
   for (int i = 0; i < 32; ++i) {
     const Vec3 w = best.on_a - best.on_b;
@@ -106,8 +107,8 @@ void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
     if (!(p.depth < best.depth)) break;
     best = p;
   }
-  // The fixed point stalls at corners (polyhedra) and libccd's direction can be off, so a
-  // compass search on the sphere finishes the descent to the nearest local minimum of h.
+  // The fixed point stalls at corners (polyhedra) and the starts can be off, so a compass
+  // search on the sphere finishes the descent to the nearest local minimum of h.
   for (double step = 0.25; step > 1e-9; step *= 0.5) {
     for (bool improved = true; improved;) {
       improved = false;
