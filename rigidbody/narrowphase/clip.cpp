@@ -5,17 +5,9 @@
 namespace cosim::narrowphase::detail {
 namespace {
 
-// Unit normal of a polygon's plane (Newell's sum, relative to the first vertex so that
-// far-off coordinates do not cost precision); its sign does not matter here.
-Vec3 plane_normal(const Polygon& p) {
-  Vec3 m = Vec3::Zero();
-  for (std::size_t i = 1; i + 1 < p.size(); ++i) m += (p[i] - p[0]).cross(p[i + 1] - p[0]);
-  return m.normalized();
-}
-
 // How nearly a feature's plane is normal to n: |cos| for a face, -1 for a segment (a
 // segment is the reference only against another segment).
-double facing(const Polygon& f, const Vec3& n) { return f.size() >= 3 ? std::abs(plane_normal(f).dot(n)) : -1.0; }
+double facing(const Polygon& f, const Vec3& n) { return f.size() >= 3 ? std::abs(face_normal(f).dot(n)) : -1.0; }
 
 // The incident feature clipped to the prism of the reference feature along n: the side
 // planes through the reference face's edges, or the two planes across a reference segment
@@ -39,6 +31,12 @@ Polygon clip_to_prism(Polygon incident, const Polygon& reference, const Vec3& n)
 }
 
 }  // namespace
+
+Vec3 face_normal(const Polygon& p) {
+  Vec3 m = Vec3::Zero();
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) m += (p[i] - p[0]).cross(p[i + 1] - p[0]);
+  return m.normalized();
+}
 
 Polygon clip(const Polygon& polygon, const Vec3& origin, const Vec3& direction, double limit) {
   Polygon kept;
@@ -73,7 +71,7 @@ void clip_features(const Feature& a, const Feature& b, const Vec3& n, Candidates
   const Polygon& reference = a_is_reference ? fa : fb;
   Vec3 m;  // the reference plane's normal; for a segment the plane through it most normal to n
   if (reference.size() >= 3) {
-    m = plane_normal(reference);
+    m = face_normal(reference);
   } else {
     const Vec3 e = reference[1] - reference[0];
     m = e.cross(n).cross(e).normalized();

@@ -12,6 +12,10 @@ namespace cosim::narrowphase::detail {
 // A convex polygon (vertices in order, either winding), a segment (2 points) or a point.
 using Polygon = std::vector<Vec3>;
 
+// Unit normal of a face's plane, either sign (Newell's sum, relative to the first vertex so
+// that far-off coordinates do not cost precision).
+Vec3 face_normal(const Polygon& face);
+
 // Sutherland-Hodgman against the half-space direction . (x - origin) <= limit.
 Polygon clip(const Polygon& polygon, const Vec3& origin, const Vec3& direction, double limit);
 

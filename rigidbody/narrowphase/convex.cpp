@@ -93,11 +93,18 @@ void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
       // Neither sees an overlap: the shapes touch within the tolerance where GJK stopped.
       best = centres;
       best.depth = 0.0;
-    } else if (centres.depth < best.depth) {
+    } else {
       // On shapes that just touch both can answer with a far face (a capsule lying on a
-      // thin box got the box's bottom face, 0.18 m deep): the direction between the
-      // centres is a third start.
-      best = centres;
+      // thin box got the box's bottom face, 0.18 m deep; a cylinder standing on a wide one,
+      // 0.32 m): the direction between the centres and the normals of the faces facing
+      // each other along it are further starts, as in a separating-axis test.
+      if (centres.depth < best.depth) best = centres;
+      for (const Feature& f : {supporting_feature(a, pa, centres.normal), supporting_feature(b, pb, -centres.normal)}) {
+        if (f.points.size() < 3) continue;
+        const Vec3 m = face_normal(f.points);
+        for (const Vec3& n : {m, Vec3(-m)})
+          if (const Push p = push(n); p.depth < best.depth) best = p;
+      }
     }
   }
   for (int i = 0; i < 32; ++i) {

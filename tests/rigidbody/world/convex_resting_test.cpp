@@ -107,5 +107,41 @@ TEST(ConvexResting, CapsuleLyingDownDoesNotRoll) {
   }
 }
 
+// Dropped 0.25 m onto a fixed box, tilted 0.5 rad, each lands on an edge or rim, falls onto
+// its flat side (the hull box onto its largest face) and comes to rest there.
+// Guards against: the general convex path pushing a body through the box or out along a
+// far face while it lands, bounces and settles.
+TEST(ConvexResting, TiltedDropsSettleOnAFlatSide) {
+  const Vector3d h(0.1, 0.07, 0.05);
+  struct Drop {
+    geometry::Shape shape;
+    double rest_height;  // of the centre
+    bool lying;          // body z axis horizontal at rest (else vertical)
+  };
+  const Drop drops[] = {{hull_box(h), h.z(), false},
+                        {geometry::Cylinder(0.08, 0.12), 0.06, false},
+                        {geometry::Capsule(0.04, 0.2), 0.04, true}};
+  for (const Drop& drop : drops) {
+    SCOPED_TRACE(geometry::name(geometry::kind(drop.shape)));
+    World world;
+    add_floor(world, Ground::FixedBox);
+    BodyDesc d{.shape = drop.shape};
+    d.state.position = {0.0, 0.0, 0.25};
+    d.state.orientation = Eigen::AngleAxisd(0.5, Vector3d(1, 2, 0).normalized());
+    const auto body = world.add(d);
+    double speed = 0.0;
+    for (int i = 0; i < 4000; ++i) {
+      world.advance(world.settings().dt);
+      const auto& s = world.states()[body];
+      if (i >= 3000) speed = std::max(speed, s.velocity.norm() + s.angular_velocity.norm());
+    }
+    const auto& s = world.states()[body];
+    EXPECT_LT(speed, 1e-6);
+    EXPECT_NEAR(s.position.z(), drop.rest_height, 1e-3 * drop.rest_height);
+    const double up = std::abs((s.orientation * Vector3d::UnitZ()).z());
+    EXPECT_NEAR(up, drop.lying ? 0.0 : 1.0, 1e-3);
+  }
+}
+
 }  // namespace
 }  // namespace cosim::world::test
