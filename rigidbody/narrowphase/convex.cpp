@@ -60,8 +60,9 @@ void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
     const Vec3 sa = geometry::support(a, pa, n), sb = geometry::support(b, pb, -n);
     return Push{n, n.dot(sa - sb), sa, sb};
   };
-  // Apart, GJK's closest points give the start; when they nearly touch (1e-7 apart on
-  // 0.1 m faces) its direction is off by 1e-3 rad, enough to roll a capsule lying on a face.
+  // Apart, GJK's closest points give the start: GJK stops on its distance, and when the
+  // shapes nearly touch its direction can be far off (2.1e-3 rad for a capsule lying
+  // 8.8e-8 m above a box, enough to roll it).
   Push best = g.overlap ? Push{Vec3::UnitZ(), INFINITY, g.on_a, g.on_b} : push(g.on_b - g.on_a);
   if (g.overlap) {
     // Overlapping or touching: libccd's EPA and MPR each give a start. libccd 2.1's EPA has
