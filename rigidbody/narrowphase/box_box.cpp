@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "rigidbody/narrowphase/clip.hpp"
 #include "rigidbody/narrowphase/pairs.hpp"
 
 namespace cosim::narrowphase::detail {
@@ -28,21 +29,6 @@ struct Axis {
   AxisKind kind = AxisKind::FaceA;
   int i = 0, j = 0;  // face axis of a / of b, or the edge pair
 };
-
-using Polygon = std::vector<Vec3>;
-
-// Sutherland-Hodgman against the half-space direction . (x - origin) <= limit.
-Polygon clip(const Polygon& polygon, const Vec3& origin, const Vec3& direction, double limit) {
-  Polygon kept;
-  for (std::size_t k = 0; k < polygon.size(); ++k) {
-    const Vec3& p = polygon[k];
-    const Vec3& q = polygon[(k + 1) % polygon.size()];
-    const double dp = direction.dot(p - origin) - limit, dq = direction.dot(q - origin) - limit;
-    if (dp <= 0.0) kept.push_back(p);
-    if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) kept.push_back(p + dp / (dp - dq) * (q - p));
-  }
-  return kept;
-}
 
 // The incident box's face most opposed to the reference normal, clipped to the reference
 // face; returns the clipped points (world) on the incident face.

@@ -37,8 +37,9 @@ class MeshMaps {
 // at pose pa and shape b at pose pb whose signed distance is at most `margin` (near
 // contacts included), and returns whether there are any. Each point is midway between the
 // surfaces, its normal points from a to b, and swapping a and b gives the same points
-// with flipped normals. Analytic pairs give a full manifold (up to 4 points); general
-// convex pairs (GJK / libccd EPA) give one point per call. Two half-spaces never collide.
+// with flipped normals. Every pair gives a full manifold (up to 4 points): general convex
+// pairs clip the features facing each other along the GJK / libccd EPA normal. Two
+// half-spaces never collide.
 bool collide(const geometry::Shape& a, const geometry::Pose& pa, const geometry::Shape& b,
              const geometry::Pose& pb, double margin, contact::Manifold& out, MeshMaps& maps);
 

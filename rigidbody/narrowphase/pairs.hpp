@@ -46,7 +46,8 @@ void pair(const HalfSpace& a, const Pose& pa, const Ellipsoid& b, const Pose& pb
 void pair(const HalfSpace& a, const Pose& pa, const ConvexHull& b, const Pose& pb, Candidates& out);
 void pair(const HalfSpace& a, const Pose& pa, const TriangleMesh& b, const Pose& pb, Candidates& out);
 
-// Any two bounded convex shapes: GJK distance, libccd EPA when they overlap; one point.
+// Any two bounded convex shapes: GJK distance, libccd EPA when they overlap, then the
+// features facing each other along that normal clipped (clip.hpp, feature.hpp).
 void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Candidates& out);
 
 // A mesh against any bounded shape (another mesh included), through distance maps.

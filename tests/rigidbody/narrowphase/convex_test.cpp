@@ -1,5 +1,6 @@
 // The general convex path (GJK distance, libccd EPA) against the analytic pairs, and the
 // support-based half-space pairs against closed forms.
+#include <algorithm>
 #include <random>
 
 #include "fixtures.hpp"
@@ -15,12 +16,14 @@ using geometry::testing::random_pose;
 using geometry::testing::random_rotation;
 using geometry::testing::random_unit;
 
+// The deepest point of the general path (faces give more, none deeper).
 contact::ContactPoint general(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb) {
   detail::Candidates c;
   c.margin = INFINITY;
   detail::convex_pair(a, pa, b, pb, c);
-  EXPECT_EQ(c.points.size(), 1u);
-  return c.points.at(0);
+  EXPECT_GE(c.points.size(), 1u);
+  return *std::min_element(c.points.begin(), c.points.end(),
+                           [](const auto& p, const auto& q) { return p.distance < q.distance; });
 }
 
 struct Agreement {
@@ -129,13 +132,12 @@ TEST(HalfSpacePairs, HullOfABoxMatchesTheBox) {
   for (int i = 0; i < 50; ++i) {
     const Pose pa = random_pose(rng), pb(pa.position() + random_in_ball(rng, 3.0), random_rotation(rng));
     const double exact = min_distance(contacts(box, pa, box, pb, INFINITY));
-    const auto g = contacts(hull, pa, box, pb, INFINITY);
-    ASSERT_EQ(g.count, 1);
+    const double g = min_distance(contacts(hull, pa, box, pb, INFINITY));
     if (exact > 0) {
-      EXPECT_NEAR(g.points[0].distance, exact, 1e-6);
+      EXPECT_NEAR(g, exact, 1e-6);
     } else {
-      EXPECT_GE(g.points[0].distance, exact - 0.05);
-      EXPECT_LE(g.points[0].distance, exact + 1e-9);
+      EXPECT_GE(g, exact - 0.05);
+      EXPECT_LE(g, exact + 1e-9);
     }
   }
 }
