@@ -7,6 +7,7 @@
 #include "fluid/program/body_surfaces.hpp"
 #include "fluid/program/cell_fields.hpp"
 #include "fluid/program/petsc_flags.hpp"
+#include "participant/body_rows.hpp"
 #include "participant/poses_at.hpp"
 #include "protocol/message.hpp"
 
@@ -15,8 +16,6 @@ namespace {
 
 constexpr std::size_t kPoseWidth = protocol::kPoseWidth;
 constexpr std::size_t kForceWidth = protocol::kForceWidth;
-
-Eigen::Vector3d vector_at(const double* v) { return {v[0], v[1], v[2]}; }
 
 void check_size(const std::vector<double>& values, std::size_t bodies, const char* what) {
   if (values.size() != kPoseWidth * bodies)
@@ -101,16 +100,14 @@ void FluidSolver::place(const std::vector<double>& poses) {
   check_size(poses, setup_.bodies.size(), "poses");
   poses_ = poses;
   for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
-    const double* v = poses.data() + kPoseWidth * b;
-    const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
-    flow_->bodies->move(b, geometry::Pose(vector_at(v), q), vector_at(v + 7), vector_at(v + 10));
+    const participant::PoseRow row = participant::pose_row(poses, b);
+    flow_->bodies->move(b, geometry::Pose(row.position, row.orientation), row.velocity, row.angular_velocity);
   }
 }
 
 std::vector<double> FluidSolver::forces() const {
   std::vector<double> out;
-  for (const fluid::HydrodynamicLoad& l : flow_->bodies->loads(flow_->flow))
-    out.insert(out.end(), {l.force.x(), l.force.y(), l.force.z(), l.torque.x(), l.torque.y(), l.torque.z()});
+  for (const fluid::HydrodynamicLoad& l : flow_->bodies->loads(flow_->flow)) participant::append(out, {l.force, l.torque});
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "participant/body_rows.hpp"
 #include "protocol/message.hpp"
 #include "scene/eigen.hpp"
 
@@ -66,7 +67,7 @@ std::vector<double> poses_at(const std::vector<Motion>& motions, double t) {
       q = turned(m.orientation, m.angular_amplitude, phase);
       w = m.angular_amplitude * rate;
     }
-    out.insert(out.end(), {x.x(), x.y(), x.z(), q.w(), q.x(), q.y(), q.z(), v.x(), v.y(), v.z(), w.x(), w.y(), w.z()});
+    participant::append(out, {x, q, v, w});
   }
   return out;
 }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "participant/body_rows.hpp"
 #include "protocol/message.hpp"
 #include "rigidbody/program/scene_world.hpp"
 
@@ -14,8 +15,8 @@ constexpr std::size_t kPoseWidth = protocol::kPoseWidth;
 constexpr std::size_t kForceWidth = protocol::kForceWidth;
 
 dynamics::Wrench wrench_at(const std::vector<double>& forces, std::size_t body) {
-  const double* f = forces.data() + kForceWidth * body;
-  return {{f[0], f[1], f[2]}, {f[3], f[4], f[5]}};
+  const participant::ForceRow f = participant::force_row(forces, body);
+  return {f.force, f.torque};
 }
 
 // The forces the fluid and the tracker send are the window's means (impulse over length),
@@ -34,20 +35,12 @@ std::vector<dynamics::WindowWrench> wrenches(const participant::Inputs& in, std:
   return out;
 }
 
-void write(const dynamics::BodyState& s, double* out) {
-  const auto& q = s.orientation;
-  const double values[kPoseWidth] = {s.position.x(), s.position.y(), s.position.z(), q.w(), q.x(), q.y(), q.z(),
-                                     s.velocity.x(), s.velocity.y(), s.velocity.z(), s.angular_velocity.x(),
-                                     s.angular_velocity.y(), s.angular_velocity.z()};
-  std::copy(std::begin(values), std::end(values), out);
-}
-
-dynamics::BodyState read(const double* v) {
+dynamics::BodyState state_of(const participant::PoseRow& row) {
   dynamics::BodyState s;
-  s.position = {v[0], v[1], v[2]};
-  s.orientation = Eigen::Quaterniond(v[3], v[4], v[5], v[6]);
-  s.velocity = {v[7], v[8], v[9]};
-  s.angular_velocity = {v[10], v[11], v[12]};
+  s.position = row.position;
+  s.orientation = row.orientation;
+  s.velocity = row.velocity;
+  s.angular_velocity = row.angular_velocity;
   return s;
 }
 
@@ -97,13 +90,17 @@ void RigidSolver::restore(const std::vector<double>& state) {
   }
   // The world itself is kept: everything else in it is rebuilt every substep.
   world_->set_time(state[0]);
-  for (std::size_t b = 0; b < bodies; ++b) world_->states()[b] = read(state.data() + 1 + kPoseWidth * b);
+  for (std::size_t b = 0; b < bodies; ++b)
+    world_->states()[b] = state_of(participant::pose_row(std::span(state).subspan(1), b));
 }
 
 std::vector<double> RigidSolver::poses() const {
   const std::size_t bodies = scene_.bodies.size();
-  std::vector<double> out(kPoseWidth * bodies);
-  for (std::size_t b = 0; b < bodies; ++b) write(world_->states()[b], out.data() + kPoseWidth * b);
+  std::vector<double> out;
+  for (std::size_t b = 0; b < bodies; ++b) {
+    const dynamics::BodyState& s = world_->states()[b];
+    participant::append(out, {s.position, s.orientation, s.velocity, s.angular_velocity});
+  }
   return out;
 }
 

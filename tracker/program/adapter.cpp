@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "participant/body_rows.hpp"
 #include "participant/poses_at.hpp"
 #include "tracker/program/cell_fields.hpp"
 #include "tracker/program/particle_dump.hpp"
@@ -17,10 +18,10 @@ constexpr std::size_t kPoseWidth = protocol::kPoseWidth;
 constexpr std::size_t kForceWidth = protocol::kForceWidth;
 
 Eigen::Isometry3d pose_of(const std::vector<double>& poses, std::size_t body) {
-  const double* v = poses.data() + kPoseWidth * body;
+  const participant::PoseRow row = participant::pose_row(poses, body);
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.translate(Eigen::Vector3d(v[0], v[1], v[2]));
-  pose.rotate(Eigen::Quaterniond(v[3], v[4], v[5], v[6]).normalized());
+  pose.translate(row.position);
+  pose.rotate(row.orientation.normalized());
   return pose;
 }
 
@@ -64,19 +65,16 @@ participant::Outputs TrackerSolver::advance(const participant::Window& w, const 
 
   // Per unit particle mass in the tallies; times mass and weight is momentum.
   const double scale = gas_->setup().particles.mass * gas_->setup().particles.weight / (w.t1 - w.t0);
-  std::vector<double> forces(kForceWidth * bodies_, 0.0);
+  std::vector<participant::ForceRow> on(bodies_);  // the obstacles bound to a body add up
   const std::vector<ObstacleTally> after = gas_->tallies();
   for (std::size_t i = 0; i < body_of.size(); ++i) {
     if (body_of[i] < 0) continue;
-    const ObstacleTally& now = after[i];
-    const Vec3 force = scale * (now.impulse - before[i].impulse);
-    const Vec3 torque = scale * (now.angular_impulse - before[i].angular_impulse);
-    double* f = forces.data() + kForceWidth * static_cast<std::size_t>(body_of[i]);
-    for (int k = 0; k < 3; ++k) {
-      f[k] += force[k];
-      f[3 + k] += torque[k];
-    }
+    participant::ForceRow& row = on[static_cast<std::size_t>(body_of[i])];
+    row.force += scale * (after[i].impulse - before[i].impulse);
+    row.torque += scale * (after[i].angular_impulse - before[i].angular_impulse);
   }
+  std::vector<double> forces;
+  for (const participant::ForceRow& row : on) participant::append(forces, row);
   return {{}, forces, static_cast<double>(steps)};
 }
 
