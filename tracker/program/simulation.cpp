@@ -250,7 +250,7 @@ void Simulation::step(double dt) {
   });
   // The moves that entered other ranks' cells go on there, in rounds until all are done.
   if (part_)
-    stages_.time(Stage::migrate, [&] {
+    stages_.time(Stage::hand_over, [&] {
       for (;;) {
         std::array<long long, 2> left{static_cast<long long>(away_.size()), away_.strays()};
         decomposition_.ranks().sum(left);

@@ -8,8 +8,8 @@
 
 namespace cosim::tracker {
 
-enum class Stage { migrate, sort, collide, move, inject, sample };
-inline constexpr std::array kStageNames{"migrate", "sort", "collide", "move", "inject", "sample"};
+enum class Stage { migrate, sort, collide, move, inject, hand_over, sample };
+inline constexpr std::array kStageNames{"migrate", "sort", "collide", "move", "inject", "hand-over", "sample"};
 
 class StageTimes {
  public:
