@@ -174,10 +174,10 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
   whole_cells_ = volumes.cells;
   if (ranks.size() > 1 && !setup_.tracers) {
     if (setup_.box) {
-      // read_tracker built this rank's part; rank 0 also writes the whole.
+      // read_tracker built this rank's part, and on rank 0 the whole it writes.
       part_ = std::move(setup_.mesh);
       part_cells_ = std::make_unique<PartCells>(*part_);
-      if (ranks.lead()) setup_.mesh = std::make_unique<Mesh>(box_mesh(*setup_.box));
+      setup_.mesh = std::move(setup_.whole);
     } else {
       part_ = std::make_unique<Mesh>();
       take_part();
