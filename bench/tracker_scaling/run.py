@@ -2,6 +2,7 @@
 """cosim-tracker on 1, 2 and 4 MPI ranks: setup time and peak memory per rank, and the time per step.
 
     bench/tracker_scaling/run.py [--tracker build/release/bin/cosim-tracker] [--cells 64] [--steps 20] [--ranks 1 2 4]
+                                 [--per-cell 10]
 
 cosim-tracker prints each rank's setup time (mesh or its part, locator, obstacles,
 partition, seeding, on rank 0 the run file created; the scene was read before) and peak
@@ -21,7 +22,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 
 
-def scene_text(cells, steps):
+def scene_text(cells, steps, per_cell):
     text = (HERE / "scene.yaml").read_text()
     side, end = cells * 1.0e-5, steps * 1.0e-8
     for old, new in [("cells: [64, 64, 64]", f"cells: [{cells}, {cells}, {cells}]"),
@@ -29,7 +30,8 @@ def scene_text(cells, steps):
                      ("centre: [3.2e-4, 3.2e-4, 3.2e-4], radius: 1.0e-4",
                       f"centre: [{side / 2:g}, {side / 2:g}, {side / 2:g}], radius: {side / 6.4:g}"),
                      ("time: {end: 2.0e-7}", f"time: {{end: {end:g}}}"),
-                     ("coupling: {window: 2.0e-7}", f"coupling: {{window: {end:g}}}")]:
+                     ("coupling: {window: 2.0e-7}", f"coupling: {{window: {end:g}}}"),
+                     ("per_cell: 10", f"per_cell: {per_cell}")]:
         if old not in text:
             sys.exit(f"bench/tracker_scaling/scene.yaml no longer has '{old}': update run.py")
         text = text.replace(old, new)
@@ -56,11 +58,12 @@ def main():
     parser.add_argument("--cells", type=int, default=64, help="cells per side")
     parser.add_argument("--steps", type=int, default=20)
     parser.add_argument("--ranks", type=int, nargs="+", default=[1, 2, 4])
+    parser.add_argument("--per-cell", type=int, default=10, help="simulators per cell at the start")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as scratch:
         scene = Path(scratch) / "scene.yaml"
-        scene.write_text(scene_text(args.cells, args.steps))
-        print(f"{args.cells}^3 cells, {args.steps} steps")
+        scene.write_text(scene_text(args.cells, args.steps, args.per_cell))
+        print(f"{args.cells}^3 cells, {args.per_cell} simulators per cell, {args.steps} steps")
         print(f"{'ranks':>5} {'particles':>10} {'s/step':>8}  {'setup s by rank (0 first)':<28} peak MB by rank")
         for ranks in args.ranks:
             peaks, setups, wall, setup, particles = run(args.tracker, ranks, str(scene), str(Path(scratch) / "run.h5"))

@@ -49,9 +49,11 @@ Series Series::open(hid_t group, const std::string& name) {
   const std::string where = "series " + child_path(group, name);
   Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
   Handle space(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
-  hsize_t dims[2] = {0, 1};
-  const int rank = H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  // The rank first: the dimensions of a dataset of more would not fit in dims.
+  const int rank = H5Sget_simple_extent_ndims(space.get());
   if (rank != 1 && rank != 2) throw ObjectError(where + " is not a 1-d or 2-d dataset");
+  hsize_t dims[2] = {0, 1};
+  H5Sget_simple_extent_dims(space.get(), dims, nullptr);
   std::string path = path_of(ds.get());
   return Series(std::move(ds), std::move(path), dims[0], rank == 2 ? dims[1] : 1, rank);
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -87,11 +88,19 @@ BoxSpec cube(int cells, bool tetrahedra) {
   return spec;
 }
 
-Mesh box_mesh(const BoxSpec& spec) {
+Polyhedra box_polyhedra(const BoxSpec& spec) {
   std::array<std::vector<double>, 3> nodes;
   for (int k = 0; k < 3; ++k) nodes[k] = axis_nodes(spec.axes[k]);
   const int nx = static_cast<int>(nodes[0].size()), ny = static_cast<int>(nodes[1].size()),
             nz = static_cast<int>(nodes[2].size());
+  // The faces' vertex lists are the longest array a mesh numbers (Index, 32 bits).
+  const long long hexahedra = 1LL * (nx - 1) * (ny - 1) * (nz - 1), per_hex = spec.tetrahedra ? 72 : 24;
+  if (hexahedra * per_hex > std::numeric_limits<Index>::max())
+    throw std::invalid_argument("box mesh: " + std::to_string(hexahedra) + " hexahedra" +
+                                (spec.tetrahedra ? " split into tetrahedra" : "") +
+                                " are more than one mesh numbers in 32 bits: at most " +
+                                std::to_string(std::numeric_limits<Index>::max() / per_hex) +
+                                " (on several ranks a rank's part, which more ranks make smaller)");
 
   Polyhedra poly;
   poly.source = "box mesh";
@@ -140,11 +149,18 @@ Mesh box_mesh(const BoxSpec& spec) {
           poly.end_cell();
         }
       }
-  Mesh mesh = assemble(std::move(poly));
+  return poly;
+}
+
+Mesh box_mesh(const BoxSpec& spec) {
+  Mesh mesh = assemble(box_polyhedra(spec));
   for (int a = 0; a < 3; ++a) {
     if (!spec.periodic[a]) continue;
-    const std::array<int, 3> n{nx, ny, nz};
-    link_periodic(mesh, a, nodes[a].back() - nodes[a].front(), [&](Index id) {
+    const std::vector<double> nodes = axis_nodes(spec.axes[a]);
+    std::array<int, 3> n{};  // nodes per axis
+    for (int b = 0; b < 3; ++b) n[b] = static_cast<int>(axis_nodes(spec.axes[b]).size());
+    const int nx = n[0], ny = n[1];
+    link_periodic(mesh, a, nodes.back() - nodes.front(), [&](Index id) {
       std::array<Index, 3> ijk{id % nx, id / nx % ny, id / (nx * ny)};
       if (ijk[a] == n[a] - 1) ijk[a] = 0;
       return ijk[0] + nx * (ijk[1] + ny * ijk[2]);

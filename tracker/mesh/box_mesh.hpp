@@ -1,6 +1,7 @@
 #pragma once
 // Structured hexahedral (or Kuhn-split tetrahedral) meshes of a box.
 
+#include "tracker/mesh/assemble.hpp"
 #include "tracker/mesh/mesh.hpp"
 
 #include <array>
@@ -32,6 +33,9 @@ struct BoxSpec {
 // Patches 0..5 are x_min, x_max, y_min, y_max, z_min, z_max. Cell order: x fastest, then
 // y, then z (times 6 tetrahedra when split). Throws std::invalid_argument on a bad spec.
 Mesh box_mesh(const BoxSpec& spec);
+// Its cells as face loops before assembly, in box_mesh's order: no face geometry, no
+// connectivity, no periodic links (what a picture of the cells needs).
+Polyhedra box_polyhedra(const BoxSpec& spec);
 // The unit cube in cells^3 equal hexahedra (or six tetrahedra each).
 BoxSpec cube(int cells, bool tetrahedra = false);
 

@@ -85,8 +85,8 @@ output::FieldFrame TrackerSolver::fields() const {
   std::optional<output::PointSet> particles;
   if (const std::optional<ParticleOutput>& dump = gas_->setup().particle_output; dump && dump->at(done_, windows_))
     particles = particle_set(*gas_, *dump);
-  if (!ranks_.lead()) return {};  // rank 0 answers the coupler, and only it has the whole mesh
-  output::FieldFrame frame = tracker_fields(gas_->mesh(), moments, count);
+  if (!ranks_.lead()) return {};  // rank 0 answers the coupler: only it has every cell's values
+  output::FieldFrame frame{gas_->grid().grid, cell_fields(moments, count)};
   if (particles) frame.point_sets.push_back(std::move(*particles));
   return frame;
 }

@@ -1,17 +1,6 @@
 #include "tracker/program/cell_fields.hpp"
 
-#include "tracker/program/mixed_topology.hpp"
-
 namespace cosim::tracker {
-
-output::PolyhedralGrid polyhedral_grid(const Mesh& mesh) {
-  output::PolyhedralGrid grid;
-  grid.vertices.reserve(3 * mesh.vertices.size());
-  for (const Vec3& v : mesh.vertices) grid.vertices.insert(grid.vertices.end(), {v.x(), v.y(), v.z()});
-  grid.topology = mixed_topology(mesh);
-  grid.cells = static_cast<std::size_t>(mesh.cell_count());
-  return grid;
-}
 
 std::vector<output::CellField> cell_fields(std::span<const CellMoments> moments, std::span<const double> count) {
   output::CellField mean_count{"mean_count", 1, {}}, density{"density", 1, {}}, velocity{"velocity", 3, {}},
@@ -25,11 +14,6 @@ std::vector<output::CellField> cell_fields(std::span<const CellMoments> moments,
   }
   return {{"count", 1, {count.begin(), count.end()}}, std::move(mean_count), std::move(density),
           std::move(velocity),  std::move(temperature),                       std::move(pressure)};
-}
-
-output::FieldFrame tracker_fields(const Mesh& mesh, std::span<const CellMoments> moments,
-                                  std::span<const double> count) {
-  return {polyhedral_grid(mesh), cell_fields(moments, count)};
 }
 
 }  // namespace cosim::tracker

@@ -4,14 +4,30 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
+#include "output/field_frame.hpp"
+#include "tracker/mesh/assemble.hpp"
 #include "tracker/mesh/mesh.hpp"
 
 namespace cosim::tracker {
 
-// The mesh's cells in the Mixed layout above.
-std::vector<std::int64_t> mixed_topology(const Mesh& mesh);
+// The cells of a Mesh or of Polyhedra (both list a cell's faces and a face's vertices
+// alike) in the Mixed layout above.
+template <class Cells>
+std::vector<std::int64_t> mixed_topology(const Cells& cells) {
+  std::vector<std::int64_t> out;
+  const auto count = static_cast<Index>(cells.cell_faces.size()) - 1;
+  for (Index c = 0; c < count; ++c) {
+    out.push_back(output::kXdmfPolyhedron);
+    out.push_back(cells.cell_faces[c + 1] - cells.cell_faces[c]);
+    for (Index f = cells.cell_faces[c]; f < cells.cell_faces[c + 1]; ++f) {
+      out.push_back(cells.face_vertex_begin[f + 1] - cells.face_vertex_begin[f]);
+      for (Index k = cells.face_vertex_begin[f]; k < cells.face_vertex_begin[f + 1]; ++k)
+        out.push_back(cells.face_vertex_index[k]);
+    }
+  }
+  return out;
+}
 
 }  // namespace cosim::tracker

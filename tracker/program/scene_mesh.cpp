@@ -55,16 +55,15 @@ BoxSpec box(const Reader& r, const scene::Domain& domain) {
     spec.axes[a] = {.min = domain.min[a], .max = domain.max[a], .cells = n[a], .ratio = ratio[a]};
   spec.tetrahedra = r.boolean("tetrahedra", false);
   spec.periodic = periodic(r);
-  // Cells, faces and their vertices are numbered in 32 bits (Index), in the whole mesh that
-  // rank 0 writes too, and rank 0 gathers each cell's sampled sums (1 + 16 values).
+  // Rank 0 gathers each cell's sampled sums (an index and 16 values) in one MPI message,
+  // whose counts are 32-bit. The mesh's own numbering is checked as it is built (box_mesh),
+  // on several ranks per part.
   const long long hexahedra = 1LL * n[0] * n[1] * n[2];
-  const long long vertex_entries = hexahedra * (spec.tetrahedra ? 72 : 24);
-  const long long gathered = hexahedra * (spec.tetrahedra ? 6 : 1) * (1 + CellSampler::kSumsPerCell);
-  if (std::max(vertex_entries, gathered) > std::numeric_limits<Index>::max())
+  const long long per_hex = spec.tetrahedra ? 6 : 1, per_cell = 1 + CellSampler::kSumsPerCell;
+  if (hexahedra * per_hex * per_cell > std::numeric_limits<int>::max())
     r.fail("cells", std::to_string(hexahedra) + " hexahedra" + (spec.tetrahedra ? " split into tetrahedra" : "") +
-                        " are more than one mesh holds: at most " +
-                        std::to_string(std::numeric_limits<Index>::max() / (spec.tetrahedra ? 102 : 24)) +
-                        " (its face vertices and the cells' sums on rank 0 are counted in 32 bits)");
+                        " are more cells than rank 0 gathers the results of: at most " +
+                        std::to_string(std::numeric_limits<int>::max() / (per_hex * per_cell)) + " hexahedra");
   return spec;
 }
 
@@ -87,7 +86,7 @@ Mesh voronoi(const Reader& r, const scene::Domain& domain) {
 SceneMesh read_mesh(const Reader& r, const scene::Scene& scene, const std::function<Mesh(const BoxSpec&)>& box_part) {
   const auto type = static_cast<Type>(r.choice("type", kTypes));
   // The key a failure of the mesh itself is blamed on.
-  const std::string blamed = type == kGmsh ? "file" : "type";
+  const std::string blamed = type == kGmsh ? "file" : type == kBox ? "cells" : "type";
   Mesh mesh;
   std::optional<BoxSpec> spec;
   try {

@@ -5,7 +5,6 @@
 
 #include "scene/error.hpp"
 #include "tracker/mesh/box_part.hpp"
-#include "tracker/mesh/part.hpp"
 #include "tracker/program/scene_inflow.hpp"
 #include "tracker/program/scene_mesh.hpp"
 #include "tracker/program/scene_obstacles.hpp"
@@ -16,19 +15,13 @@ namespace cosim::tracker {
 
 namespace {
 
-// On several ranks, this rank's brick of a box and the two layers of cells around it. Rank 0
-// builds the whole box anyway, to write it (into `whole`), and cuts its part from that.
-std::function<Mesh(const BoxSpec&)> box_parts(const Ranks& ranks, std::unique_ptr<Mesh>& whole) {
+// On several ranks, this rank's brick of a box and the two layers of cells around it.
+std::function<Mesh(const BoxSpec&)> box_parts(const Ranks& ranks) {
   if (ranks.size() == 1) return {};
-  return [ranks, &whole](const BoxSpec& spec) {
+  return [ranks](const BoxSpec& spec) {
     const Bricks bricks = box_bricks(spec, ranks.size());
-    const auto owner = [&](Index c) { return bricks.owner(c); };
-    if (ranks.lead()) {
-      whole = std::make_unique<Mesh>(box_mesh(spec));
-      return extract_part(*whole, owner, 0);
-    }
     const Bricks::Range& mine = bricks.brick(ranks.rank());
-    return box_part(spec, mine.lo, mine.hi, owner, ranks.rank());
+    return box_part(spec, mine.lo, mine.hi, [&](Index c) { return bricks.owner(c); }, ranks.rank());
   };
 }
 
@@ -53,7 +46,7 @@ TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
   TrackerScene t;
   t.dt = p->dt;
   t.tracers = read_tracers(options, scene);
-  SceneMesh mesh = read_mesh(options.map("mesh"), scene, t.tracers ? nullptr : box_parts(ranks, t.whole));
+  SceneMesh mesh = read_mesh(options.map("mesh"), scene, t.tracers ? nullptr : box_parts(ranks));
   t.mesh = std::make_unique<Mesh>(std::move(mesh.mesh));
   t.box = std::move(mesh.box);
   const bool part = t.mesh->partial;

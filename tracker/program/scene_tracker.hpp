@@ -26,7 +26,6 @@ struct TrackerScene {
   // whole mesh, or (read on several ranks) this rank's part of a box.
   std::unique_ptr<Mesh> mesh;
   std::optional<BoxSpec> box;     // the mesh is this box's
-  std::unique_ptr<Mesh> whole;    // rank 0's whole box when `mesh` is a part of it
   std::unique_ptr<const Domain> domain;
   Obstacles obstacles;            // bound ones at their body's initial pose
   std::vector<int> obstacle_body; // per obstacle: the scene body it moves with, or -1

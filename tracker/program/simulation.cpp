@@ -173,16 +173,15 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
   const CellVolumes volumes = setup_.box ? volumes_of(*setup_.box) : volumes_of(*setup_.mesh);
   whole_cells_ = volumes.cells;
   if (ranks.size() > 1 && !setup_.tracers) {
-    if (setup_.box) {
-      // read_tracker built this rank's part, and on rank 0 the whole it writes.
+    if (setup_.mesh->partial) {  // read_tracker built this rank's part of a box
       part_ = std::move(setup_.mesh);
       part_cells_ = std::make_unique<PartCells>(*part_);
-      setup_.mesh = std::move(setup_.whole);
     } else {
       part_ = std::make_unique<Mesh>();
       take_part();
     }
     sampler_ = CellSampler(*part_);
+    if (ranks.lead()) whole_volume_ = grid().volume;
   }
   swarm_ = seed_particles(tracked(), setup_.obstacles, setup_.particles, decomposition_, volumes);
   seeded_ = swarm_.size();
@@ -365,6 +364,11 @@ void Simulation::take_part() {
   setup_.inflows = std::move(inflows);
 }
 
+OutputGrid Simulation::grid() const {
+  if (!decomposition_.ranks().lead()) throw std::logic_error("the output grid is rank 0's");
+  return setup_.box ? output_grid(*setup_.box) : output_grid(*setup_.mesh);
+}
+
 std::vector<double> Simulation::at_lead(std::span<const double> mine, std::size_t width) const {
   const Ranks& ranks = decomposition_.ranks();
   if (ranks.size() == 1) return {mine.begin(), mine.end()};
@@ -453,7 +457,7 @@ std::vector<CellMoments> Simulation::take_moments() {
     }
     cells.insert(cells.begin(), sums[0]);
     sums = std::move(cells);
-    whole.emplace(mesh());
+    whole.emplace(whole_volume_);
   }
   CellSampler& summed = whole ? *whole : sampler_;
   summed.set_sums(sums);

@@ -8,8 +8,8 @@
 // two layers of ghosts, mesh/part.hpp) with the obstacles registered there, and holds the
 // particles in its cells: a move that enters a ghost goes on on the ghost's owner within
 // the step (tracking/handover.hpp), and a particle a moving wall put in a ghost migrates
-// at the start of the next. A box's part is built without the whole, which only rank 0
-// builds (to write it); other meshes are read whole on every rank. Tracer mode keeps the
+// at the start of the next. A box's part is built without the whole (no rank builds that);
+// other meshes are read whole on every rank. Tracer mode keeps the
 // whole mesh on every rank (a tracer's step is not handed over): its tracers migrate at the
 // start of a step. The totals and per-cell results below are sums over the ranks: those
 // calls are collective, every rank must make them in the same order.
@@ -24,6 +24,7 @@
 
 #include "scene/scene.hpp"
 #include "tracker/program/collide.hpp"
+#include "tracker/program/output_grid.hpp"
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/stage_times.hpp"
 #include "tracker/mesh/part.hpp"
@@ -43,9 +44,8 @@ class Simulation {
                       Ranks ranks = {});
 
   const TrackerScene& setup() const { return setup_; }
-  // The whole mesh, as the output shows it: on rank 0 only when a box is split over ranks
-  // (the others never build it).
-  const Mesh& mesh() const { return *setup_.mesh; }
+  // The mesh as the output shows it, built anew (rank 0 only: std::logic_error on others).
+  OutputGrid grid() const;
   // This rank's cells (the swarm's cell numbers): the whole mesh, or its part on several
   // ranks (Mesh::global_cell gives a cell's number in the whole).
   const Mesh& tracked() const { return part_ ? *part_ : *setup_.mesh; }
@@ -139,6 +139,7 @@ class Simulation {
   // null on one rank and in tracer mode.
   std::unique_ptr<Mesh> part_;
   Index whole_cells_ = 0;
+  std::vector<double> whole_volume_;  // on several ranks, rank 0's: the volume of every cell
   std::unique_ptr<PartCells> part_cells_;
   Handover away_;  // the moves of a step that entered ghosts, until they are done
   // Some rank may hold particles in its ghosts (an obstacle moved, or a recovery put them

@@ -26,7 +26,7 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
     if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
     std::vector<std::string> names;
     for (int i = 0; i < gas.setup().obstacles.count(); ++i) names.push_back(gas.setup().obstacles.object(i).name);
-    file.emplace(output, scene, gas.mesh(), names);
+    file.emplace(output, scene, gas.grid(), names);
   }
 
   RunSummary summary;

@@ -10,7 +10,6 @@
 #include "output/series.hpp"
 #include "output/in_file.hpp"
 #include "output/text.hpp"
-#include "tracker/mesh/geometry.hpp"
 #include "tracker/program/cell_fields.hpp"
 
 namespace cosim::tracker {
@@ -31,25 +30,16 @@ std::vector<std::uint64_t> columns_of(const MoveTally& t) {
   return values;
 }
 
-// The area of each boundary patch: the sum of its faces'.
-std::vector<double> patch_areas(const Mesh& mesh) {
-  std::vector<double> area(mesh.patches.size(), 0.0);
-  for (Index f = 0; f < mesh.face_count(); ++f)
-    if (const Index code = mesh.faces[static_cast<std::size_t>(f)].neighbour; code < 0)
-      area[static_cast<std::size_t>(patch_of(code))] += area_vector(mesh, f).norm();
-  return area;
-}
-
 }  // namespace
 
 struct TrackerFile::Impl {
-  Impl(const std::filesystem::path& p, const Mesh& mesh, std::size_t object_count)
+  Impl(const std::filesystem::path& p, const OutputGrid& grid, std::size_t object_count)
       : path(p),
         objects(object_count),
-        patches(mesh.patches.size()),
-        frame{polyhedral_grid(mesh), {}},
+        patches(grid.patches.size()),
+        frame{grid.grid, {}},
         fields(p),
-        volume(mesh.volume) {}
+        volume(grid.volume) {}
 
   std::filesystem::path path;
   Handle file;
@@ -63,9 +53,9 @@ struct TrackerFile::Impl {
   std::vector<double> volume;   // per cell: into the grid's group once the first step wrote it
 };
 
-TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& scene, const Mesh& mesh,
+TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& scene, const OutputGrid& grid,
                          const std::vector<std::string>& object_names)
-    : impl_(std::make_unique<Impl>(path, mesh, object_names.size())) {
+    : impl_(std::make_unique<Impl>(path, grid, object_names.size())) {
   Impl& m = *impl_;
   output::in_file(path, [&] {
     m.file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "create file");
@@ -101,10 +91,9 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
       m.tallies.push_back(Series::create_table(objects.get(), "energy", m.objects, H5T_NATIVE_DOUBLE));
     }
     Handle patches = output::create_group(series.get(), "patches");
-    output::write_attribute(patches.get(), "names", mesh.patches);
+    output::write_attribute(patches.get(), "names", grid.patches);
     if (m.patches > 0) {
-      const std::vector<double> area = patch_areas(mesh);
-      output::write_array(patches.get(), "area", {area.size()}, area.data());
+      output::write_array(patches.get(), "area", {grid.patch_area.size()}, grid.patch_area.data());
       for (const char* name : {"hits", "absorbed"})
         m.patch_tallies.push_back(Series::create_table(patches.get(), name, m.patches, H5T_NATIVE_UINT64));
       m.patch_tallies.push_back(Series::create_table(patches.get(), "impulse", 3 * m.patches, H5T_NATIVE_DOUBLE));

@@ -2,10 +2,12 @@
 // with the tracker's unstructured cells:
 //   /run                      attrs scene_file, git_hash, cosim_version, started, status,
 //                             wall_seconds, participant_names ["tracker"]; scene_text
-//   /fields/tracker/grid/     the run file's polyhedral grid (output/run_file.hpp, written
-//                             by its FieldWriter): vertices (v x 3), topology (int64, XDMF
-//                             Mixed polyhedra, see mixed_topology.hpp), attr cells; and
-//                             volume (cells, m^3)
+//   /fields/tracker/grid/     the run file's grid (output/run_file.hpp, written by its
+//                             FieldWriter; output_grid.hpp): of a box of hexahedra its
+//                             nodes x, y, z, the fields then (nz, ny, nx[, c]); of other
+//                             meshes vertices (v x 3), topology (int64, XDMF Mixed polyhedra,
+//                             see mixed_topology.hpp), attr cells, the fields (cells[, c]);
+//                             and volume (cells, m^3)
 //   /fields/tracker/<step>/   attr time; per cell (cell_fields.hpp): count (particles at
 //                             that step), and averaged over the steps since the previous
 //                             write (at step 0 the initial state): mean_count, density
@@ -49,6 +51,7 @@
 
 #include "output/field_frame.hpp"
 #include "scene/scene.hpp"
+#include "tracker/program/output_grid.hpp"
 #include "tracker/tracking/move.hpp"
 #include "tracker/tracking/sampling.hpp"
 
@@ -69,7 +72,7 @@ struct Sample {
 class TrackerFile {
  public:
   // Creates (truncates) path; errors are std::runtime_error naming the file.
-  TrackerFile(const std::filesystem::path& path, const scene::Scene& scene, const Mesh& mesh,
+  TrackerFile(const std::filesystem::path& path, const scene::Scene& scene, const OutputGrid& grid,
               const std::vector<std::string>& object_names);
   TrackerFile(TrackerFile&&) noexcept;
   ~TrackerFile();

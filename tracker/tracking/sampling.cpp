@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 #include <string>
 
 namespace cosim::tracker {
 
-CellSampler::CellSampler(const Mesh& mesh)
-    : volume_(mesh.volume),
+CellSampler::CellSampler(const Mesh& mesh) : CellSampler(mesh.volume) {}
+
+CellSampler::CellSampler(std::vector<double> volume)
+    : volume_(std::move(volume)),
       count_(volume_.size(), 0.0),
       sum_(volume_.size(), Vec3::Zero()),
       cubic_(volume_.size(), Vec3::Zero()),

@@ -26,6 +26,7 @@ struct CellMoments {
 class CellSampler {
  public:
   explicit CellSampler(const Mesh& mesh);
+  explicit CellSampler(std::vector<double> volume);  // per cell, m^3
 
   // In a DSMC step, sample after the move and again after the collisions for the stress and
   // heat flux: either alone is off by about dt / (2 mu / p) (README, "When to sample").

@@ -120,8 +120,9 @@ RunFile read_run(const std::filesystem::path& path) {
   std::vector<double> steps = series("/tracker/step");
   char last[24];
   std::snprintf(last, sizeof last, "%06llu", static_cast<unsigned long long>(steps.back()));
-  run.mean_count = series(std::string("/fields/tracker/") + last + "/mean_count");
-  run.temperature = series(std::string("/fields/tracker/") + last + "/temperature");
+  // A box's fields are (nz, ny, nx): read flat, x fastest.
+  run.mean_count = output::read_array(file.get(), std::string("/fields/tracker/") + last + "/mean_count");
+  run.temperature = output::read_array(file.get(), std::string("/fields/tracker/") + last + "/temperature");
   return run;
 }
 
@@ -426,7 +427,7 @@ TEST(TwoRanks, EachRankTracksOnItsPartAndHandsMovesOver) {
     Simulation two(scene, {}, Ranks(MPI_COMM_WORLD));
     Simulation one(scene, {}, Ranks());
     const Mesh& part = two.tracked();
-    const Index cells = one.mesh().cell_count();
+    const Index cells = one.tracked().cell_count();
     EXPECT_LT(part.cell_count(), cells);
     EXPECT_GT(part.ghosts, 0);
     EXPECT_EQ(two.decomposition().ranks().sum(static_cast<long long>(part.own_cells())), cells);

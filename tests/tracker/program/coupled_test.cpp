@@ -223,23 +223,15 @@ bodies:
 // values, and the names x, y, z and velocity.
 constexpr double kVelocityBytes = 8.0 * (17 + 9 + 2 + 128 * 3) + 11;
 
-// The x of each polyhedral cell's centre: the mean of its faces' vertices (exact for a box
-// cell, whose every vertex is on three faces), from the run file's Mixed topology.
+// The x of each cell's centre in the run file's rectilinear grid (the tracker's box of
+// hexahedra), cells x fastest.
 std::vector<double> cell_centres_x(const std::filesystem::path& file, const std::string& grid) {
-  const std::vector<double> vertices = testing::read_array(file, grid + "/vertices").values;
-  const std::vector<double> topology = testing::read_array(file, grid + "/topology").values;
+  const std::vector<double> x = testing::read_array(file, grid + "/x").values;
+  const std::size_t rows = (testing::read_array(file, grid + "/y").values.size() - 1) *
+                           (testing::read_array(file, grid + "/z").values.size() - 1);
   std::vector<double> out;
-  for (std::size_t at = 0; at < topology.size();) {
-    const auto faces = static_cast<std::size_t>(topology[at + 1]);
-    at += 2;
-    double sum = 0;
-    std::size_t n = 0;
-    for (std::size_t f = 0; f < faces; ++f) {
-      const auto count = static_cast<std::size_t>(topology[at++]);
-      for (std::size_t k = 0; k < count; ++k, ++n) sum += vertices[3 * static_cast<std::size_t>(topology[at++])];
-    }
-    out.push_back(sum / static_cast<double>(n));
-  }
+  for (std::size_t row = 0; row < rows; ++row)
+    for (std::size_t i = 0; i + 1 < x.size(); ++i) out.push_back(0.5 * (x[i] + x[i + 1]));
   return out;
 }
 

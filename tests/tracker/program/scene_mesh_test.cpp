@@ -53,8 +53,13 @@ TEST(SceneMesh, PeriodicBoxHasWallsOnlyWhereAsked) {
 TEST(SceneMesh, MistakesNameTheKey) {
   EXPECT_NE(error_of("{type: tetgen}").find("participants.tracker.options.mesh.type = tetgen"), std::string::npos);
   EXPECT_NE(error_of("{type: box, cells: [4, 2.5, 2]}").find("mesh.cells"), std::string::npos);
-  // 1e8 hexahedra: more face vertices than 32-bit numbers count (refused before any is built).
-  EXPECT_NE(error_of("{type: box, cells: [1000, 1000, 100]}").find("more than one mesh holds: at most 89478485"),
+  // 1e8 hexahedra in one mesh: more face vertices than 32-bit numbers count (refused before
+  // any is built; on several ranks each builds a part).
+  EXPECT_NE(error_of("{type: box, cells: [1000, 1000, 100]}").find("mesh.cells"), std::string::npos);
+  EXPECT_NE(error_of("{type: box, cells: [1000, 1000, 100]}").find("numbers in 32 bits: at most 89478485"),
+            std::string::npos);
+  // More cells than rank 0 gathers the sums of, on any number of ranks.
+  EXPECT_NE(error_of("{type: box, cells: [1000, 1000, 130]}").find("gathers the results of: at most 126322567"),
             std::string::npos);
   EXPECT_NE(error_of("{type: box, cells: [300, 300, 300], tetrahedra: true}").find("at most 21053761"),
             std::string::npos);

@@ -19,6 +19,7 @@
 #include "output/xdmf.hpp"
 #include "tracker/program/mixed_topology.hpp"
 #include "tracker/program/cell_fields.hpp"
+#include "tracker/program/output_grid.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/dsmc/collision.hpp"
 #include "tracker/dsmc/species.hpp"
@@ -63,9 +64,11 @@ RunFileView read_run(const std::filesystem::path& path, bool objects) {
   output::Handle fields = output::open_group(file.get(), "/fields/tracker");
   for (const std::string& step : output::link_names(fields.get())) {
     if (step == "grid") continue;
-    run.count.push_back(series("/fields/tracker/" + step + "/count"));
-    run.mean_count.push_back(series("/fields/tracker/" + step + "/mean_count"));
-    run.density.push_back(series("/fields/tracker/" + step + "/density"));
+    // A box's fields are (nz, ny, nx): read flat, x fastest.
+    const auto field = [&](const char* name) { return output::read_array(fields.get(), step + "/" + name); };
+    run.count.push_back(field("count"));
+    run.mean_count.push_back(field("mean_count"));
+    run.density.push_back(field("density"));
   }
   if (objects) {
     run.hits = series("/tracker/objects/hits");
@@ -258,7 +261,7 @@ TEST(TrackerConfigs, SphereClusterChannelFoamAndSphereStreamRun) {
   const auto last = [&](const char* name) {
     std::vector<std::string> steps = output::link_names(output::open_group(foam_file.get(), "/fields/tracker").get());
     std::erase(steps, "grid");
-    return output::Series::open(foam_file.get(), "/fields/tracker/" + steps.back() + "/" + name).read_all();
+    return output::read_array(foam_file.get(), "/fields/tracker/" + steps.back() + "/" + name);
   };
   const std::vector<double> temperature = last("temperature"), weight = last("mean_count");
   double mean = 0.0;
@@ -361,13 +364,9 @@ TEST(PolyhedraXdmf, MixedTopologyReadsBackAsTheCells) {
   EXPECT_NE(doc.find("<Time Value=\"0.5\"/>"), std::string::npos);
 }
 
-// What the tracker hands the run file (and the coupler): its cells as a polyhedral grid that
-// the writer's checks accept, with each sample's fields in cell order.
-TEST(TrackerFields, ThePolyhedralGridAndTheSamplesPerCell) {
-  BoxSpec spec;
-  spec.axes[0].cells = 2;
-  spec.tetrahedra = true;  // 12 cells
-  const Mesh mesh = box_mesh(spec);
+// What the tracker hands the run file (and the coupler): its cells as a grid that the
+// writer's checks accept, with each sample's fields in cell order.
+TEST(TrackerFields, TheSamplesPerCellInCellOrder) {
   std::vector<CellMoments> moments(12);
   std::vector<double> count(12);
   for (std::size_t c = 0; c < 12; ++c) {
@@ -375,24 +374,61 @@ TEST(TrackerFields, ThePolyhedralGridAndTheSamplesPerCell) {
     moments[c] = {.count = 0.5 * double(c), .number_density = 1e20, .velocity = Vec3(double(c), 0, -1),
                   .temperature = 300, .pressure = 0.4};
   }
-  const output::FieldFrame frame = tracker_fields(mesh, moments, count);
-  EXPECT_EQ(output::grid_problem(frame.grid), "");
-  const auto& grid = std::get<output::PolyhedralGrid>(frame.grid);
-  EXPECT_EQ(grid.cells, 12u);
-  EXPECT_EQ(grid.vertices.size(), 3 * mesh.vertices.size());
-  EXPECT_EQ(grid.vertices[3 * 5 + 1], mesh.vertices[5].y());
-  EXPECT_EQ(grid.topology, mixed_topology(mesh));
+  const std::vector<output::CellField> fields = cell_fields(moments, count);
   std::vector<std::string> names;
-  for (const output::CellField& f : frame.fields) {
+  for (const output::CellField& f : fields) {
     names.push_back(f.name);
     EXPECT_EQ(f.values.size(), 12u * static_cast<std::size_t>(f.components)) << f.name;
   }
   EXPECT_EQ(names, (std::vector<std::string>{"count", "mean_count", "density", "velocity", "temperature", "pressure"}));
-  EXPECT_EQ(frame.fields[0].values, count);
-  EXPECT_EQ(frame.fields[1].values[7], 3.5);
-  EXPECT_EQ(frame.fields[3].components, 3);
-  EXPECT_EQ(frame.fields[3].values[3 * 7], 7.0);
-  EXPECT_EQ(frame.fields[3].values[3 * 7 + 2], -1.0);
+  EXPECT_EQ(fields[0].values, count);
+  EXPECT_EQ(fields[1].values[7], 3.5);
+  EXPECT_EQ(fields[3].components, 3);
+  EXPECT_EQ(fields[3].values[3 * 7], 7.0);
+  EXPECT_EQ(fields[3].values[3 * 7 + 2], -1.0);
+}
+
+// The patch areas and cell volumes the mesh's own geometry gives (faces' areas, cells'
+// volumes), to compare with what a box's nodes give without the mesh.
+void expect_geometry_of(const OutputGrid& grid, const Mesh& mesh) {
+  const OutputGrid from_mesh = output_grid(mesh);
+  ASSERT_EQ(grid.volume.size(), from_mesh.volume.size());
+  for (std::size_t c = 0; c < grid.volume.size(); ++c)
+    EXPECT_NEAR(grid.volume[c], from_mesh.volume[c], 1e-14 * from_mesh.volume[c]) << "cell " << c;
+  EXPECT_EQ(grid.patches, from_mesh.patches);
+  ASSERT_EQ(grid.patch_area.size(), from_mesh.patch_area.size());
+  for (std::size_t p = 0; p < grid.patch_area.size(); ++p)
+    EXPECT_NEAR(grid.patch_area[p], from_mesh.patch_area[p], 1e-14) << grid.patches[p];
+}
+
+// Any mesh is shown as its polyhedra; a box of hexahedra as the rectilinear grid of its nodes
+// (graded axes too), a box of tetrahedra as the polyhedra box_mesh would give, both without
+// building the mesh.
+TEST(OutputGrid, ABoxIsShownWithoutItsMesh) {
+  BoxSpec spec;
+  spec.axes = {AxisSpacing{.min = -1, .max = 2, .cells = 3, .ratio = 2.5}, AxisSpacing{.cells = 2},
+               AxisSpacing{.nodes = {0.0, 0.1, 0.5}}};
+  spec.periodic = {false, true, false};
+  const Mesh hexahedra = box_mesh(spec);
+  const OutputGrid rectilinear = output_grid(spec);
+  const auto& nodes = std::get<output::RectilinearGrid>(rectilinear.grid);
+  EXPECT_EQ(output::grid_problem(rectilinear.grid), "");
+  EXPECT_EQ(nodes.nodes[0], axis_nodes(spec.axes[0]));
+  EXPECT_EQ(nodes.nodes[2], spec.axes[2].nodes);
+  expect_geometry_of(rectilinear, hexahedra);
+  EXPECT_EQ(rectilinear.patch_area[2], 0.0);  // the periodic y sides have no walls
+
+  spec.tetrahedra = true;
+  const Mesh tetrahedra = box_mesh(spec);
+  const OutputGrid polyhedra = output_grid(spec);
+  const auto& cells = std::get<output::PolyhedralGrid>(polyhedra.grid);
+  EXPECT_EQ(output::grid_problem(polyhedra.grid), "");
+  const OutputGrid from_mesh = output_grid(tetrahedra);
+  const auto& whole = std::get<output::PolyhedralGrid>(from_mesh.grid);
+  EXPECT_EQ(cells.cells, 72u);
+  EXPECT_EQ(cells.topology, whole.topology);
+  EXPECT_EQ(cells.vertices, whole.vertices);
+  expect_geometry_of(polyhedra, tetrahedra);
 }
 
 }  // namespace

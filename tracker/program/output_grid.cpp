@@ -1,0 +1,65 @@
+#include "tracker/program/output_grid.hpp"
+
+#include "tracker/mesh/geometry.hpp"
+#include "tracker/program/mixed_topology.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+std::vector<double> flat(const std::vector<Vec3>& points) {
+  std::vector<double> out;
+  out.reserve(3 * points.size());
+  for (const Vec3& v : points) out.insert(out.end(), {v.x(), v.y(), v.z()});
+  return out;
+}
+
+std::vector<double> patch_areas(const Mesh& mesh) {
+  std::vector<double> area(mesh.patches.size(), 0.0);
+  for (Index f = 0; f < mesh.face_count(); ++f)
+    if (const Index code = mesh.faces[static_cast<std::size_t>(f)].neighbour; code < 0)
+      area[static_cast<std::size_t>(patch_of(code))] += area_vector(mesh, f).norm();
+  return area;
+}
+
+}  // namespace
+
+OutputGrid output_grid(const BoxSpec& box) {
+  output::RectilinearGrid nodes;
+  std::array<double, 3> length{};
+  for (int a = 0; a < 3; ++a) {
+    nodes.nodes[a] = axis_nodes(box.axes[a]);
+    length[a] = nodes.nodes[a].back() - nodes.nodes[a].front();
+  }
+  OutputGrid out;
+  // Every Kuhn tetrahedron is a sixth of its hexahedron.
+  const int per_hex = box.tetrahedra ? 6 : 1;
+  const std::array<std::size_t, 3> n = nodes.cells();
+  out.volume.reserve(n[0] * n[1] * n[2] * static_cast<std::size_t>(per_hex));
+  for (std::size_t k = 0; k < n[2]; ++k)
+    for (std::size_t j = 0; j < n[1]; ++j)
+      for (std::size_t i = 0; i < n[0]; ++i) {
+        const double hexahedron = (nodes.nodes[0][i + 1] - nodes.nodes[0][i]) *
+                                  (nodes.nodes[1][j + 1] - nodes.nodes[1][j]) *
+                                  (nodes.nodes[2][k + 1] - nodes.nodes[2][k]);
+        out.volume.insert(out.volume.end(), static_cast<std::size_t>(per_hex), hexahedron / per_hex);
+      }
+  out.patches = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+  for (int a = 0; a < 3; ++a) {
+    const double side = box.periodic[a] ? 0.0 : length[(a + 1) % 3] * length[(a + 2) % 3];
+    out.patch_area.insert(out.patch_area.end(), {side, side});
+  }
+  if (!box.tetrahedra) {
+    out.grid = std::move(nodes);
+    return out;
+  }
+  const Polyhedra cells = box_polyhedra(box);
+  out.grid = output::PolyhedralGrid{flat(cells.vertices), mixed_topology(cells), out.volume.size()};
+  return out;
+}
+
+OutputGrid output_grid(const Mesh& whole) {
+  return {output::PolyhedralGrid{flat(whole.vertices), mixed_topology(whole), static_cast<std::size_t>(whole.cell_count())},
+          whole.volume, whole.patches, patch_areas(whole)};
+}
+
+}  // namespace cosim::tracker

@@ -1,0 +1,30 @@
+// The tracker's mesh as its output shows it (the run file, the Field messages to the
+// coupler): built once, on the rank that writes. A box of hexahedra is the rectilinear grid
+// of its nodes, so no rank ever holds the whole box's cells (ParaView reads it as XDMF's
+// 3DRectMesh; the cells in box_mesh's order, x fastest); a box of tetrahedra and every other
+// mesh are XDMF polyhedra (mixed_topology.hpp). With each cell's volume and each boundary
+// patch's area, which the moments and the walls' stresses are divided by.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "output/field_frame.hpp"
+#include "tracker/mesh/box_mesh.hpp"
+#include "tracker/mesh/mesh.hpp"
+
+namespace cosim::tracker {
+
+struct OutputGrid {
+  output::Grid grid;
+  std::vector<double> volume;        // per cell (m^3), in the grid's order
+  std::vector<std::string> patches;  // the boundary patches' names (Mesh::patches)
+  std::vector<double> patch_area;    // per patch (m^2): a periodic axis's patches have none
+};
+
+// From the box's nodes alone (its tetrahedra from box_polyhedra()).
+OutputGrid output_grid(const BoxSpec& box);
+// From the whole mesh.
+OutputGrid output_grid(const Mesh& whole);
+
+}  // namespace cosim::tracker
