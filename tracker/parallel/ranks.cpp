@@ -41,18 +41,29 @@ void Ranks::broadcast(std::span<int> values) const {
   if (size_ > 1) MPI_Bcast(values.data(), count(values.size()), MPI_INT, 0, comm_);
 }
 
-std::vector<double> Ranks::gather(std::span<const double> values) const {
-  if (size_ == 1) return {values.begin(), values.end()};
-  const int mine = count(values.size());
-  std::vector<int> counts(lead() ? static_cast<std::size_t>(size_) : 0), offsets;
-  MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
-  std::size_t total = 0;
-  for (const int n : counts) {
-    offsets.push_back(count(total));
-    total += static_cast<std::size_t>(n);
+void Ranks::gather_each(std::span<const double> values,
+                        const std::function<void(std::span<const double>)>& take) const {
+  if (lead()) take(values);
+  if (size_ == 1) return;
+  if (!lead()) {
+    MPI_Send(values.data(), count(values.size()), MPI_DOUBLE, 0, kGatherTag, comm_);
+    return;
   }
-  std::vector<double> all(total);
-  MPI_Gatherv(values.data(), mine, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, comm_);
+  std::vector<double> received;
+  for (int from = 1; from < size_; ++from) {
+    MPI_Status status;
+    MPI_Probe(from, kGatherTag, comm_, &status);
+    int n = 0;
+    MPI_Get_count(&status, MPI_DOUBLE, &n);
+    received.resize(static_cast<std::size_t>(n));
+    MPI_Recv(received.data(), n, MPI_DOUBLE, from, kGatherTag, comm_, MPI_STATUS_IGNORE);
+    take(received);
+  }
+}
+
+std::vector<double> Ranks::gather(std::span<const double> values) const {
+  std::vector<double> all;
+  gather_each(values, [&](std::span<const double> some) { all.insert(all.end(), some.begin(), some.end()); });
   return all;
 }
 

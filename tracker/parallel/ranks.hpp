@@ -4,6 +4,7 @@
 
 #include <mpi.h>
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -29,11 +30,15 @@ class Ranks {
   void broadcast(std::span<int> values) const;
   // Every rank's values, rank after rank, on rank 0; nothing on the others (collective).
   std::vector<double> gather(std::span<const double> values) const;
+  // On rank 0, take(values of rank r) for r = 0, 1, ... in turn: it holds one rank's values
+  // at a time, and no count over all ranks need fit MPI's 32 bits (collective).
+  void gather_each(std::span<const double> values, const std::function<void(std::span<const double>)>& take) const;
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0;
   int size_ = 1;
+  static constexpr int kGatherTag = 7301;  // apart from the migration's tags
 };
 
 }  // namespace cosim::tracker

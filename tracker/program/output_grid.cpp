@@ -23,6 +23,23 @@ std::vector<double> patch_areas(const Mesh& mesh) {
 
 }  // namespace
 
+std::vector<double> cell_volumes(const BoxSpec& box) {
+  std::array<std::vector<double>, 3> nodes;
+  for (int a = 0; a < 3; ++a) nodes[a] = axis_nodes(box.axes[a]);
+  // Every Kuhn tetrahedron is a sixth of its hexahedron.
+  const std::size_t per_hex = box.tetrahedra ? 6 : 1;
+  std::vector<double> volume;
+  volume.reserve((nodes[0].size() - 1) * (nodes[1].size() - 1) * (nodes[2].size() - 1) * per_hex);
+  for (std::size_t k = 0; k + 1 < nodes[2].size(); ++k)
+    for (std::size_t j = 0; j + 1 < nodes[1].size(); ++j)
+      for (std::size_t i = 0; i + 1 < nodes[0].size(); ++i) {
+        const double hexahedron =
+            (nodes[0][i + 1] - nodes[0][i]) * (nodes[1][j + 1] - nodes[1][j]) * (nodes[2][k + 1] - nodes[2][k]);
+        volume.insert(volume.end(), per_hex, hexahedron / static_cast<double>(per_hex));
+      }
+  return volume;
+}
+
 OutputGrid output_grid(const BoxSpec& box) {
   output::RectilinearGrid nodes;
   std::array<double, 3> length{};
@@ -31,18 +48,7 @@ OutputGrid output_grid(const BoxSpec& box) {
     length[a] = nodes.nodes[a].back() - nodes.nodes[a].front();
   }
   OutputGrid out;
-  // Every Kuhn tetrahedron is a sixth of its hexahedron.
-  const int per_hex = box.tetrahedra ? 6 : 1;
-  const std::array<std::size_t, 3> n = nodes.cells();
-  out.volume.reserve(n[0] * n[1] * n[2] * static_cast<std::size_t>(per_hex));
-  for (std::size_t k = 0; k < n[2]; ++k)
-    for (std::size_t j = 0; j < n[1]; ++j)
-      for (std::size_t i = 0; i < n[0]; ++i) {
-        const double hexahedron = (nodes.nodes[0][i + 1] - nodes.nodes[0][i]) *
-                                  (nodes.nodes[1][j + 1] - nodes.nodes[1][j]) *
-                                  (nodes.nodes[2][k + 1] - nodes.nodes[2][k]);
-        out.volume.insert(out.volume.end(), static_cast<std::size_t>(per_hex), hexahedron / per_hex);
-      }
+  out.volume = cell_volumes(box);
   out.patches = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
   for (int a = 0; a < 3; ++a) {
     const double side = box.periodic[a] ? 0.0 : length[(a + 1) % 3] * length[(a + 2) % 3];

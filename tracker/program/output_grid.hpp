@@ -24,6 +24,8 @@ struct OutputGrid {
 
 // From the box's nodes alone (its tetrahedra from box_polyhedra()).
 OutputGrid output_grid(const BoxSpec& box);
+// Its volume per cell (m^3), as output_grid(box) has it.
+std::vector<double> cell_volumes(const BoxSpec& box);
 // From the whole mesh.
 OutputGrid output_grid(const Mesh& whole);
 

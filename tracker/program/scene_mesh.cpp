@@ -12,7 +12,6 @@
 #include "tracker/mesh/gmsh_mesh.hpp"
 #include "tracker/mesh/perturb.hpp"
 #include "tracker/mesh/voronoi_mesh.hpp"
-#include "tracker/tracking/sampling.hpp"
 
 namespace cosim::tracker {
 namespace {
@@ -55,15 +54,14 @@ BoxSpec box(const Reader& r, const scene::Domain& domain) {
     spec.axes[a] = {.min = domain.min[a], .max = domain.max[a], .cells = n[a], .ratio = ratio[a]};
   spec.tetrahedra = r.boolean("tetrahedra", false);
   spec.periodic = periodic(r);
-  // Rank 0 gathers each cell's sampled sums (an index and 16 values) in one MPI message,
-  // whose counts are 32-bit. The mesh's own numbering is checked as it is built (box_mesh),
-  // on several ranks per part.
-  const long long hexahedra = 1LL * n[0] * n[1] * n[2];
-  const long long per_hex = spec.tetrahedra ? 6 : 1, per_cell = 1 + CellSampler::kSumsPerCell;
-  if (hexahedra * per_hex * per_cell > std::numeric_limits<int>::max())
+  // Cells are numbered in 32 bits (Index) across the whole box, which no rank builds: a
+  // mesh's own numbering of its faces is checked as it is built (box_mesh), on several
+  // ranks per part.
+  const long long hexahedra = 1LL * n[0] * n[1] * n[2], per_hex = spec.tetrahedra ? 6 : 1;
+  if (hexahedra * per_hex > std::numeric_limits<Index>::max())
     r.fail("cells", std::to_string(hexahedra) + " hexahedra" + (spec.tetrahedra ? " split into tetrahedra" : "") +
-                        " are more cells than rank 0 gathers the results of: at most " +
-                        std::to_string(std::numeric_limits<int>::max() / (per_hex * per_cell)) + " hexahedra");
+                        " are more cells than 32-bit numbers count: at most " +
+                        std::to_string(std::numeric_limits<Index>::max() / per_hex) + " hexahedra");
   return spec;
 }
 

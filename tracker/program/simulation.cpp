@@ -181,8 +181,8 @@ Simulation::Simulation(const scene::Scene& scene, const std::vector<Eigen::Isome
       take_part();
     }
     sampler_ = CellSampler(*part_);
-    if (ranks.lead()) whole_volume_ = grid().volume;
   }
+  if (ranks.size() > 1 && ranks.lead() && setup_.box) whole_volume_ = cell_volumes(*setup_.box);
   swarm_ = seed_particles(tracked(), setup_.obstacles, setup_.particles, decomposition_, volumes);
   seeded_ = swarm_.size();
   if (setup_.collisions) {
@@ -375,12 +375,12 @@ std::vector<double> Simulation::at_lead(std::span<const double> mine, std::size_
   std::vector<double> records;
   for (Index c = 0; c < tracked().cell_count(); ++c)
     put_cells(records, tracked(), c, mine.subspan(static_cast<std::size_t>(c) * width, width));
-  records = ranks.gather(records);
-  if (!ranks.lead()) return {};
-  std::vector<double> whole(width * static_cast<std::size_t>(whole_cells_), 0.0);
-  for (std::size_t at = 0; at < records.size(); at += 1 + width)
-    for (std::size_t k = 0; k < width; ++k)
-      whole[static_cast<std::size_t>(records[at]) * width + k] += records[at + 1 + k];
+  std::vector<double> whole(ranks.lead() ? width * static_cast<std::size_t>(whole_cells_) : 0, 0.0);
+  ranks.gather_each(records, [&](std::span<const double> some) {
+    for (std::size_t at = 0; at < some.size(); at += 1 + width)
+      for (std::size_t k = 0; k < width; ++k)
+        whole[static_cast<std::size_t>(some[at]) * width + k] += some[at + 1 + k];
+  });
   return whole;
 }
 
@@ -444,26 +444,22 @@ std::vector<double> Simulation::counts() const {
 }
 
 std::vector<CellMoments> Simulation::take_moments() {
-  // A cell's sums are spread over the ranks whose particles were in it when sampled; they
-  // add up. Every rank sampled at every step: the sample count (the first value) is each
-  // rank's, not summed.
-  std::vector<double> sums = sampler_.sums();
-  std::optional<CellSampler> whole;  // on several ranks, rank 0's sums by the whole's cells
-  if (decomposition_.ranks().size() > 1) {
-    std::vector<double> cells = at_lead(std::span(sums).subspan(1), CellSampler::kSumsPerCell);
-    if (!decomposition_.ranks().lead()) {
-      sampler_.reset();
-      return {};
-    }
-    cells.insert(cells.begin(), sums[0]);
-    sums = std::move(cells);
-    whole.emplace(whole_volume_);
-  }
-  CellSampler& summed = whole ? *whole : sampler_;
-  summed.set_sums(sums);
+  const double mass = setup_.particles.mass, weight = setup_.particles.weight;
   std::vector<CellMoments> moments;
-  for (Index c = 0; c < whole_cells_; ++c)
-    moments.push_back(summed.moments(c, setup_.particles.mass, setup_.particles.weight));
+  if (decomposition_.ranks().size() == 1) {
+    for (Index c = 0; c < whole_cells_; ++c) moments.push_back(sampler_.moments(c, mass, weight));
+  } else {
+    // A cell's sums are spread over the ranks whose particles were in it when sampled; they
+    // add up. Every rank sampled at every step: the sample count (the first value) is each
+    // rank's, not summed.
+    const std::vector<double> sums = sampler_.sums();
+    const std::vector<double> cells = at_lead(std::span(sums).subspan(1), CellSampler::kSumsPerCell);
+    const std::vector<double>& volume = setup_.box ? whole_volume_ : setup_.mesh->volume;
+    for (std::size_t c = 0; c < cells.size() / CellSampler::kSumsPerCell; ++c)
+      moments.push_back(CellSampler::moments(std::span(cells).subspan(c * CellSampler::kSumsPerCell,
+                                                                      CellSampler::kSumsPerCell),
+                                             sampler_.samples(), volume[c], mass, weight));
+  }
   sampler_.reset();
   return moments;
 }

@@ -139,7 +139,7 @@ class Simulation {
   // null on one rank and in tracer mode.
   std::unique_ptr<Mesh> part_;
   Index whole_cells_ = 0;
-  std::vector<double> whole_volume_;  // on several ranks, rank 0's: the volume of every cell
+  std::vector<double> whole_volume_;  // of a box over several ranks, rank 0's: every cell's volume
   std::unique_ptr<PartCells> part_cells_;
   Handover away_;  // the moves of a step that entered ghosts, until they are done
   // Some rank may hold particles in its ghosts (an obstacle moved, or a recovery put them

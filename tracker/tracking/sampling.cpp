@@ -2,15 +2,12 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <utility>
 #include <string>
 
 namespace cosim::tracker {
 
-CellSampler::CellSampler(const Mesh& mesh) : CellSampler(mesh.volume) {}
-
-CellSampler::CellSampler(std::vector<double> volume)
-    : volume_(std::move(volume)),
+CellSampler::CellSampler(const Mesh& mesh)
+    : volume_(mesh.volume),
       count_(volume_.size(), 0.0),
       sum_(volume_.size(), Vec3::Zero()),
       cubic_(volume_.size(), Vec3::Zero()),
@@ -28,21 +25,38 @@ void CellSampler::sample(const Swarm& swarm) {
   ++samples_;
 }
 
-CellMoments CellSampler::moments(Index cell, double mass, double weight) const {
-  const auto c = static_cast<std::size_t>(cell);
+namespace {
+
+CellMoments moments_of(double count, const Vec3& sum, const Eigen::Matrix3d& square, const Vec3& cubic, int samples,
+                       double volume, double mass, double weight) {
   CellMoments m;
-  if (samples_ == 0 || count_[c] == 0.0) return m;
-  m.count = count_[c] / samples_;
-  m.number_density = m.count * weight / volume_[c];
-  const Vec3& u = m.velocity = sum_[c] / count_[c];
-  const Eigen::Matrix3d second = square_[c] / count_[c];  // <v v^T>
+  if (samples == 0 || count == 0.0) return m;
+  m.count = count / samples;
+  m.number_density = m.count * weight / volume;
+  const Vec3& u = m.velocity = sum / count;
+  const Eigen::Matrix3d second = square / count;  // <v v^T>
   m.stress = m.number_density * mass * (second - u * u.transpose());
   m.temperature = std::max(0.0, m.stress.trace() / (3.0 * m.number_density * boltzmann));
   m.pressure = m.number_density * boltzmann * m.temperature;
   // <|c|^2 c> = <|v|^2 v> - <|v|^2> u - 2 <v v^T> u + 2 |u|^2 u.
-  const Vec3 peculiar = cubic_[c] / count_[c] - second.trace() * u - 2.0 * second * u + 2.0 * u.squaredNorm() * u;
+  const Vec3 peculiar = cubic / count - second.trace() * u - 2.0 * second * u + 2.0 * u.squaredNorm() * u;
   m.heat_flux = 0.5 * m.number_density * mass * peculiar;
   return m;
+}
+
+}  // namespace
+
+CellMoments CellSampler::moments(Index cell, double mass, double weight) const {
+  const auto c = static_cast<std::size_t>(cell);
+  return moments_of(count_[c], sum_[c], square_[c], cubic_[c], samples_, volume_[c], mass, weight);
+}
+
+CellMoments CellSampler::moments(std::span<const double> sums, int samples, double volume, double mass,
+                                 double weight) {
+  if (sums.size() != kSumsPerCell)
+    throw std::invalid_argument("CellSampler::moments: " + std::to_string(sums.size()) + " sums of a cell");
+  return moments_of(sums[0], Vec3(sums.data() + 1), Eigen::Matrix3d(sums.data() + 4), Vec3(sums.data() + 13), samples,
+                    volume, mass, weight);
 }
 
 void CellSampler::reset() {

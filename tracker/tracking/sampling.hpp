@@ -26,7 +26,6 @@ struct CellMoments {
 class CellSampler {
  public:
   explicit CellSampler(const Mesh& mesh);
-  explicit CellSampler(std::vector<double> volume);  // per cell, m^3
 
   // In a DSMC step, sample after the move and again after the collisions for the stress and
   // heat flux: either alone is off by about dt / (2 mu / p) (README, "When to sample").
@@ -34,6 +33,9 @@ class CellSampler {
   int samples() const { return samples_; }
   // `mass` of a molecule (kg) and `weight` (molecules per simulator).
   CellMoments moments(Index cell, double mass, double weight) const;
+  // The same from one cell's kSumsPerCell sums (as sums() lays them out) over `samples`
+  // samples, in a cell of `volume` (m^3): for sums added up elsewhere.
+  static CellMoments moments(std::span<const double> sums, int samples, double volume, double mass, double weight);
   // Starts a new average.
   void reset();
   static constexpr std::size_t kSumsPerCell = 1 + 3 + 9 + 3;

@@ -1,4 +1,4 @@
-// Migration on any number of ranks (ctest runs it on 4): rounds of particles in random
+// Migration on any number of ranks (ctest runs it on 4), and rank 0's gathering: rounds of particles in random
 // cells, with ranks that fall behind each other at random, every particle reaching its
 // cell's owner with its states, none lost, duplicated or early, and the arrivals in the
 // senders' rank order (a run repeats itself whatever order the messages come in).
@@ -79,6 +79,33 @@ TEST(Migration, RoundsAfterRoundsOnEveryRankCount) {
   for (std::size_t i = 0; i < swarm.size(); ++i) ids.push_back(swarm.states(i)[0]);
   std::sort(ids.begin(), ids.end());
   EXPECT_EQ(std::adjacent_find(ids.begin(), ids.end()), ids.end());
+}
+
+// Rank 0 takes each rank's values whole and in rank order, one rank at a time, whatever
+// their sizes (none too); gather() is their concatenation.
+TEST(Ranks, RankZeroTakesEachRanksValuesInTurn) {
+  const Ranks ranks(MPI_COMM_WORLD);
+  const int rank = ranks.rank();
+  std::vector<double> mine(static_cast<std::size_t>(rank == 2 ? 0 : 1000 * rank + 3));
+  for (std::size_t k = 0; k < mine.size(); ++k) mine[k] = rank + 1e-6 * static_cast<double>(k);
+  std::this_thread::sleep_for(std::chrono::milliseconds(10 * (ranks.size() - rank)));  // the last rank sends first
+  std::vector<std::vector<double>> taken;
+  ranks.gather_each(mine, [&](std::span<const double> some) { taken.emplace_back(some.begin(), some.end()); });
+  const std::vector<double> all = ranks.gather(mine);
+  if (rank != 0) {
+    EXPECT_TRUE(taken.empty());
+    EXPECT_TRUE(all.empty());
+    return;
+  }
+  ASSERT_EQ(taken.size(), static_cast<std::size_t>(ranks.size()));
+  std::vector<double> joined;
+  for (int r = 0; r < ranks.size(); ++r) {
+    const auto& from = taken[static_cast<std::size_t>(r)];
+    EXPECT_EQ(from.size(), r == 2 ? 0u : static_cast<std::size_t>(1000 * r + 3)) << "rank " << r;
+    for (std::size_t k = 0; k < from.size(); ++k) EXPECT_EQ(from[k], r + 1e-6 * static_cast<double>(k));
+    joined.insert(joined.end(), from.begin(), from.end());
+  }
+  EXPECT_EQ(all, joined);
 }
 
 }  // namespace

@@ -58,10 +58,10 @@ TEST(SceneMesh, MistakesNameTheKey) {
   EXPECT_NE(error_of("{type: box, cells: [1000, 1000, 100]}").find("mesh.cells"), std::string::npos);
   EXPECT_NE(error_of("{type: box, cells: [1000, 1000, 100]}").find("numbers in 32 bits: at most 89478485"),
             std::string::npos);
-  // More cells than rank 0 gathers the sums of, on any number of ranks.
-  EXPECT_NE(error_of("{type: box, cells: [1000, 1000, 130]}").find("gathers the results of: at most 126322567"),
+  // More cells than 32-bit numbers count, on any number of ranks.
+  EXPECT_NE(error_of("{type: box, cells: [2000, 1000, 1100]}").find("32-bit numbers count: at most 2147483647"),
             std::string::npos);
-  EXPECT_NE(error_of("{type: box, cells: [300, 300, 300], tetrahedra: true}").find("at most 21053761"),
+  EXPECT_NE(error_of("{type: box, cells: [800, 800, 800], tetrahedra: true}").find("at most 357913941"),
             std::string::npos);
   EXPECT_NE(error_of("{type: gmsh, file: none.msh}").find("mesh.file"), std::string::npos);
   EXPECT_NE(error_of("{type: voronoi, points: 10, periodic: [yes, no]}").find("three booleans"), std::string::npos);
