@@ -22,24 +22,13 @@ int longest(const Bricks::Range& r) {
   return axis;
 }
 
-}  // namespace
-
-Bricks::Bricks(std::array<int, 3> hexahedra, int per_hex, int parts)
-    : hexahedra_(hexahedra), per_hex_(per_hex), bricks_(static_cast<std::size_t>(std::max(parts, 0))) {
-  if (parts < 1 || per_hex < 1 || hexahedra[0] < 1 || hexahedra[1] < 1 || hexahedra[2] < 1)
-    throw std::invalid_argument("bricks: " + std::to_string(parts) + " parts of " + std::to_string(hexahedra[0]) +
-                                " x " + std::to_string(hexahedra[1]) + " x " + std::to_string(hexahedra[2]) +
-                                " hexahedra");
-}
-
-Bricks::Bricks(std::array<int, 3> hexahedra, int per_hex, int parts, std::span<const double> weight)
-    : Bricks(hexahedra, per_hex, parts) {
+// The slabs' weights from every cell's (empty: 1 each).
+Bricks::SlabWeights slabs_of(std::span<const double> weight, const std::array<int, 3>& hexahedra, int per_hex) {
   const long long cells = 1LL * hexahedra[0] * hexahedra[1] * hexahedra[2] * per_hex;
   if (!weight.empty() && static_cast<long long>(weight.size()) != cells)
     throw std::invalid_argument("bricks: " + std::to_string(weight.size()) + " weights for " + std::to_string(cells) +
                                 " cells");
-  split({{0, 0, 0}, hexahedra}, 0, parts, [&](const Range& r, int axis, int low_parts, int count) {
-    // The weight of each slab of hexahedra across the axis, then the cut nearest the share.
+  return [=](const Bricks::Range& r, int axis) {
     std::vector<double> slab(static_cast<std::size_t>(r.hi[axis] - r.lo[axis]), 0.0);
     for (int k = r.lo[2]; k < r.hi[2]; ++k)
       for (int j = r.lo[1]; j < r.hi[1]; ++j)
@@ -53,6 +42,31 @@ Bricks::Bricks(std::array<int, 3> hexahedra, int per_hex, int parts, std::span<c
           }
           slab[static_cast<std::size_t>(at[axis] - r.lo[axis])] += w;
         }
+    return slab;
+  };
+}
+
+}  // namespace
+
+Bricks::Bricks(std::array<int, 3> hexahedra, int per_hex, int parts)
+    : hexahedra_(hexahedra), per_hex_(per_hex), bricks_(static_cast<std::size_t>(std::max(parts, 0))) {
+  if (parts < 1 || per_hex < 1 || hexahedra[0] < 1 || hexahedra[1] < 1 || hexahedra[2] < 1)
+    throw std::invalid_argument("bricks: " + std::to_string(parts) + " parts of " + std::to_string(hexahedra[0]) +
+                                " x " + std::to_string(hexahedra[1]) + " x " + std::to_string(hexahedra[2]) +
+                                " hexahedra");
+}
+
+Bricks::Bricks(std::array<int, 3> hexahedra, int per_hex, int parts, std::span<const double> weight)
+    : Bricks(by_slabs(hexahedra, per_hex, parts, slabs_of(weight, hexahedra, per_hex))) {}
+
+Bricks Bricks::by_slabs(std::array<int, 3> hexahedra, int per_hex, int parts, const SlabWeights& slabs) {
+  Bricks bricks(hexahedra, per_hex, parts);
+  bricks.split({{0, 0, 0}, hexahedra}, 0, parts, [&](const Range& r, int axis, int low_parts, int count) {
+    // The weight of each slab of hexahedra across the axis, then the cut nearest the share.
+    const std::vector<double> slab = slabs(r, axis);
+    if (slab.size() != static_cast<std::size_t>(r.hi[axis] - r.lo[axis]))
+      throw std::invalid_argument("bricks: " + std::to_string(slab.size()) + " slab weights for " +
+                                  std::to_string(r.hi[axis] - r.lo[axis]) + " slabs");
     const double total = std::accumulate(slab.begin(), slab.end(), 0.0);
     const double share = total * low_parts / count;
     // Each side keeps a hexahedron for each of its ranks where the brick has enough, and
@@ -72,6 +86,7 @@ Bricks::Bricks(std::array<int, 3> hexahedra, int per_hex, int parts, std::span<c
     }
     return best;
   });
+  return bricks;
 }
 
 Bricks Bricks::from_cuts(std::array<int, 3> hexahedra, int per_hex, int parts, std::span<const int> cuts) {

@@ -8,6 +8,7 @@
 // when there are more ranks than hexahedra to give.
 
 #include <array>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -26,6 +27,11 @@ class Bricks {
   // box_mesh numbers them), over `parts` ranks; `weight`: per cell (empty: 1 each).
   // std::invalid_argument for a non-positive count or a weight array of the wrong size.
   Bricks(std::array<int, 3> hexahedra, int per_hex, int parts, std::span<const double> weight);
+  // The weight of each slab of hexahedra of `range` across `axis` (range.hi - range.lo of
+  // them, the lowest first): what the cuts need of the weights, so that the ranks can add
+  // up theirs without any holding every cell's.
+  using SlabWeights = std::function<std::vector<double>(const Range& range, int axis)>;
+  static Bricks by_slabs(std::array<int, 3> hexahedra, int per_hex, int parts, const SlabWeights& slabs);
   // The bricks whose cuts() these were (a saved partition).
   static Bricks from_cuts(std::array<int, 3> hexahedra, int per_hex, int parts, std::span<const int> cuts);
 

@@ -16,20 +16,45 @@ Decomposition::Decomposition(const Mesh& mesh, Ranks ranks)
   if (ranks_.size() > 1) owners_ = Owners(agreed([&] { return partition_cells(mesh, ranks_.size()); }));
 }
 
-Owners Decomposition::proposal(const Mesh* mesh, std::span<const double> particles) const {
+Owners Decomposition::proposal(std::span<const Index> particle_cells) const {
+  const std::optional<Bricks>& bricks = owners_.bricks();
+  if (!bricks) throw std::logic_error("Decomposition::proposal: the owners are not bricks");
   if (ranks_.size() == 1) return owners_;
-  if (const std::optional<Bricks>& bricks = owners_.bricks()) {
-    const std::vector<int> cuts = agreed([&] {
-      // Every cell 1 % of the mean besides its particles, so empty space still spreads.
-      const double floor = 0.01 * std::accumulate(particles.begin(), particles.end(), 0.0) /
-                           std::max<double>(1.0, static_cast<double>(particles.size()));
-      std::vector<double> weight;
-      weight.reserve(particles.size());
-      for (const double n : particles) weight.push_back(n + floor);
-      return Bricks(bricks->hexahedra(), bricks->per_hex(), ranks_.size(), weight).cuts();
-    });
-    return Owners(Bricks::from_cuts(bricks->hexahedra(), bricks->per_hex(), ranks_.size(), cuts));
+  const std::array<int, 3>& hexahedra = bricks->hexahedra();
+  const int per_hex = bricks->per_hex();
+  // This rank's particles per hexahedron, by the hexahedron's number.
+  std::vector<Index> hex;
+  hex.reserve(particle_cells.size());
+  for (const Index c : particle_cells) hex.push_back(c / per_hex);
+  std::sort(hex.begin(), hex.end());
+  std::vector<std::pair<std::array<int, 3>, long long>> held;
+  for (std::size_t i = 0; i < hex.size();) {
+    std::size_t j = i;
+    while (j < hex.size() && hex[j] == hex[i]) ++j;
+    held.emplace_back(box_cell(hex[i], hexahedra, 1).hex, static_cast<long long>(j - i));
+    i = j;
   }
+  // Every cell 1 % of the mean besides its particles, so empty space still spreads.
+  const double cells = 1.0 * hexahedra[0] * hexahedra[1] * hexahedra[2] * per_hex;
+  const double floor = 0.01 * static_cast<double>(ranks_.sum(static_cast<long long>(particle_cells.size()))) / cells;
+  // The slabs' particles are added up in integers: the same sums, so the same cuts, on
+  // every rank.
+  return Owners(Bricks::by_slabs(hexahedra, per_hex, ranks_.size(), [&](const Bricks::Range& r, int axis) {
+    std::vector<long long> count(static_cast<std::size_t>(r.hi[axis] - r.lo[axis]), 0);
+    for (const auto& [at, n] : held)
+      if (at[0] >= r.lo[0] && at[0] < r.hi[0] && at[1] >= r.lo[1] && at[1] < r.hi[1] && at[2] >= r.lo[2] &&
+          at[2] < r.hi[2])
+        count[static_cast<std::size_t>(at[axis] - r.lo[axis])] += n;
+    ranks_.sum(count);
+    const double per_slab = floor * static_cast<double>(r.hexahedra() / (r.hi[axis] - r.lo[axis]) * per_hex);
+    std::vector<double> slab;
+    for (const long long n : count) slab.push_back(static_cast<double>(n) + per_slab);
+    return slab;
+  }));
+}
+
+Owners Decomposition::proposal(const Mesh& mesh, std::span<const double> particles) const {
+  if (ranks_.size() == 1) return owners_;
   return Owners(agreed([&] {
     // The particles' weights add up to 100 per cell on average (fewer if that passes 1e9:
     // METIS adds them in 32-bit integers), every cell 1 more.
@@ -38,7 +63,7 @@ Owners Decomposition::proposal(const Mesh* mesh, std::span<const double> particl
     std::vector<int> weight;
     weight.reserve(particles.size());
     for (const double n : particles) weight.push_back(1 + static_cast<int>(std::lround(n * scale)));
-    std::vector<int> part = partition_cells(*mesh, ranks_.size(), weight);
+    std::vector<int> part = partition_cells(mesh, ranks_.size(), weight);
     // METIS numbers its parts as it likes: each part goes to the rank holding most of its
     // particles now (greedily, the largest overlaps first), so a small shift moves few.
     const auto ranks = static_cast<std::size_t>(ranks_.size());

@@ -37,13 +37,17 @@ class Decomposition {
   std::size_t hand_over(Handover& handover, const Numbering& numbering);
   // Collective: the sparse exchange of migrate(), for other records.
   Messages exchange(const Messages& out) { return tracker::exchange(out, ranks_, migrations_++); }
-  // Collective: owners balanced by `particles` (per cell of the whole mesh; read on rank 0
-  // only), computed on rank 0 and broadcast: bricks cut where the particles split in the
-  // ratio of the ranks, or METIS's parts of `mesh` (the whole, on rank 0; only for a table)
-  // with every cell weighted by its particles
-  // (and 1 % of the mean weight, so empty cells still spread), numbered after the ranks
-  // that hold most of their particles now. Changes nothing here.
-  Owners proposal(const Mesh* mesh, std::span<const double> particles) const;
+  // Collective: owners balanced by the particles. Bricks (the owners are bricks) cut where
+  // the particles split in the ratio of the ranks: each rank gives its own particles' cells
+  // (numbers in the whole mesh), added up over the ranks slab by slab as the cuts need them,
+  // so no rank holds every cell's count.
+  Owners proposal(std::span<const Index> particle_cells) const;
+  // METIS's parts of the whole `mesh` with every cell weighted by `particles` (per cell of
+  // the whole; read on rank 0 only), computed on rank 0 and broadcast, numbered after the
+  // ranks that hold most of their particles now.
+  // In both, every cell weighs 1 % of the mean besides its particles, so empty cells still
+  // spread. Nothing changes here.
+  Owners proposal(const Mesh& mesh, std::span<const double> particles) const;
   // New owners (a proposal, or those a state saved; the same on every rank). The particles
   // stay where they are until the next migrate().
   void set_owners(Owners owners) { owners_ = std::move(owners); }

@@ -279,8 +279,10 @@ void Simulation::balance() {
   ranks.sum(held);
   const double now = max_over_mean(held);
   if (!(now > setup_.balance.threshold && now > balance_floor_)) return;
-  const std::vector<double> count = counts();  // rank 0's
-  Owners owners = decomposition_.proposal(setup_.mesh.get(), count);
+  std::vector<Index> held_in;  // the cells of this rank's particles, in the whole mesh
+  for (std::size_t i = 0; i < swarm_.size(); ++i) held_in.push_back(tracked().global_cell(swarm_.cell(i)));
+  Owners owners = decomposition_.owners().bricks() ? decomposition_.proposal(held_in)
+                                                   : decomposition_.proposal(*setup_.mesh, counts());
   // The loads the proposal would give: each rank counts where its particles would go.
   std::vector<double> load(held.size(), 0.0);
   for (std::size_t i = 0; i < swarm_.size(); ++i)

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "tracker/mesh/box_mesh.hpp"
+#include "tracker/parallel/bricks.hpp"
 #include "tracker/parallel/decomposition.hpp"
 
 namespace cosim::tracker {
@@ -79,6 +80,38 @@ TEST(Migration, RoundsAfterRoundsOnEveryRankCount) {
   for (std::size_t i = 0; i < swarm.size(); ++i) ids.push_back(swarm.states(i)[0]);
   std::sort(ids.begin(), ids.end());
   EXPECT_EQ(std::adjacent_find(ids.begin(), ids.end()), ids.end());
+}
+
+// The bricks of a re-partition are the same on every rank, and the same as one process cuts
+// from every cell's particles, though each rank gives only its own particles' cells: most
+// of them in a corner of a box of tetrahedra that is another for each rank.
+TEST(Bricks, ARepartitionAddsUpTheRanksParticlesSlabBySlab) {
+  const std::array<int, 3> hexahedra{12, 10, 8};
+  const int per_hex = 6;
+  const Decomposition d(Bricks(hexahedra, per_hex, Ranks(MPI_COMM_WORLD).size(), {}), Ranks(MPI_COMM_WORLD));
+  const Ranks& ranks = d.ranks();
+  const Index cells = hexahedra[0] * hexahedra[1] * hexahedra[2] * per_hex;
+  std::mt19937_64 random(static_cast<std::uint64_t>(ranks.rank()) + 5);
+  std::uniform_int_distribution<Index> anywhere(0, cells - 1);
+  std::uniform_int_distribution<int> corner(0, 2);
+  const int x = 3 * (ranks.rank() % 4);
+  std::vector<Index> mine;
+  for (int i = 0; i < 3000 + 500 * ranks.rank(); ++i)
+    mine.push_back(i % 4 == 0 ? anywhere(random)
+                              : box_cell_index({{x + corner(random), corner(random), corner(random)}, corner(random)},
+                                               hexahedra, per_hex));
+  const std::vector<int> cuts = d.proposal(mine).bricks()->cuts();
+  std::vector<int> lead = cuts;
+  ranks.broadcast(lead);
+  EXPECT_EQ(cuts, lead) << "rank " << ranks.rank();
+
+  const std::vector<double> all = ranks.gather(std::vector<double>(mine.begin(), mine.end()));
+  if (!ranks.lead()) return;
+  std::vector<double> weight(static_cast<std::size_t>(cells), 0.01 * static_cast<double>(all.size()) / cells);
+  for (const double c : all) weight[static_cast<std::size_t>(c)] += 1.0;
+  const Bricks whole(hexahedra, per_hex, ranks.size(), weight);
+  EXPECT_EQ(cuts, whole.cuts());
+  EXPECT_NE(cuts, Bricks(hexahedra, per_hex, ranks.size(), {}).cuts());  // the particles moved the cuts
 }
 
 // Rank 0 takes each rank's values whole and in rank order, one rank at a time, whatever
