@@ -10,7 +10,10 @@
 #include <regex>
 
 #include "h5_read.hpp"
+#include "output/h5_handle.hpp"
+#include "output/h5_values.hpp"
 #include "output/run_file.hpp"
+#include "output/series.hpp"
 #include "sample_run.hpp"
 #include "temp_dir.hpp"
 
@@ -231,6 +234,20 @@ TEST_F(RunFileTest, WorksWithoutMpiInit) {
     run.append(sample_window(0, 0.1, kBodies.size(), kParticipants));
   }
   EXPECT_EQ(ReadFile(file("run.h5")).doubles("/coupling/time").size(), 1u);
+}
+
+// A series is a 1-d or 2-d dataset: a 3-d one (a box's cell field) is refused by name,
+// its dimensions never read into a series' two.
+TEST_F(RunFileTest, ASeriesIsNotAThreeDimensionalDataset) {
+  Handle h5(H5Fcreate(file("cube.h5").c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "create");
+  const std::vector<double> values(4 * 3 * 2 * 5, 1.0);
+  write_array(h5.get(), "cube", {4, 3, 2, 5}, values.data());
+  try {
+    Series::open(h5.get(), "cube");
+    FAIL() << "opened a 4-d dataset as a series";
+  } catch (const ObjectError& e) {
+    EXPECT_NE(std::string(e.what()).find("cube is not a 1-d or 2-d dataset"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -94,18 +94,25 @@ Polyhedra box_polyhedra(const BoxSpec& spec) {
   const int nx = static_cast<int>(nodes[0].size()), ny = static_cast<int>(nodes[1].size()),
             nz = static_cast<int>(nodes[2].size());
   // The faces' vertex lists are the longest array a mesh numbers (Index, 32 bits).
-  const long long hexahedra = 1LL * (nx - 1) * (ny - 1) * (nz - 1), per_hex = spec.tetrahedra ? 72 : 24;
-  if (hexahedra * per_hex > std::numeric_limits<Index>::max())
+  const long long hexahedra = 1LL * (nx - 1) * (ny - 1) * (nz - 1), entries_per_hex = spec.tetrahedra ? 72 : 24;
+  if (hexahedra * entries_per_hex > std::numeric_limits<Index>::max())
     throw std::invalid_argument("box mesh: " + std::to_string(hexahedra) + " hexahedra" +
                                 (spec.tetrahedra ? " split into tetrahedra" : "") +
                                 " are more than one mesh numbers in 32 bits: at most " +
-                                std::to_string(std::numeric_limits<Index>::max() / per_hex) +
+                                std::to_string(std::numeric_limits<Index>::max() / entries_per_hex) +
                                 " (on several ranks a rank's part, which more ranks make smaller)");
 
   Polyhedra poly;
   poly.source = "box mesh";
   poly.patches = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
   poly.vertices.reserve(std::size_t(nx) * ny * nz);
+  // The mesh keeps these arrays: sized once, without the slack of growing them.
+  const auto cells = static_cast<std::size_t>(hexahedra) * (spec.tetrahedra ? 6 : 1);
+  const std::size_t faces = 6 * static_cast<std::size_t>(hexahedra) * (spec.tetrahedra ? 4 : 1);
+  poly.cell_faces.reserve(cells + 1);
+  poly.face_vertex_begin.reserve(faces + 1);
+  poly.face_patch.reserve(faces);
+  poly.face_vertex_index.reserve(static_cast<std::size_t>(hexahedra * entries_per_hex));
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) poly.vertices.emplace_back(nodes[0][i], nodes[1][j], nodes[2][k]);

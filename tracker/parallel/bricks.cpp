@@ -29,17 +29,17 @@ Bricks::SlabWeights slabs_of(std::span<const double> weight, const std::array<in
     throw std::invalid_argument("bricks: " + std::to_string(weight.size()) + " weights for " + std::to_string(cells) +
                                 " cells");
   return [=](const Bricks::Range& r, int axis) {
-    std::vector<double> slab(static_cast<std::size_t>(r.hi[axis] - r.lo[axis]), 0.0);
+    const auto slabs = static_cast<std::size_t>(r.hi[axis] - r.lo[axis]);
+    if (weight.empty())  // the cells across: no loop over them, so every rank cuts in O(the slabs)
+      return std::vector<double>(slabs, static_cast<double>(r.hexahedra() / static_cast<long long>(slabs) * per_hex));
+    std::vector<double> slab(slabs, 0.0);
     for (int k = r.lo[2]; k < r.hi[2]; ++k)
       for (int j = r.lo[1]; j < r.hi[1]; ++j)
         for (int i = r.lo[0]; i < r.hi[0]; ++i) {
           const std::array<int, 3> at{i, j, k};
-          double w = per_hex;
-          if (!weight.empty()) {
-            w = 0.0;
-            for (int t = 0; t < per_hex; ++t)
-              w += weight[static_cast<std::size_t>(box_cell_index({at, t}, hexahedra, per_hex))];
-          }
+          double w = 0.0;
+          for (int t = 0; t < per_hex; ++t)
+            w += weight[static_cast<std::size_t>(box_cell_index({at, t}, hexahedra, per_hex))];
           slab[static_cast<std::size_t>(at[axis] - r.lo[axis])] += w;
         }
     return slab;

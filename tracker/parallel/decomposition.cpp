@@ -27,24 +27,40 @@ Owners Decomposition::proposal(std::span<const Index> particle_cells) const {
   hex.reserve(particle_cells.size());
   for (const Index c : particle_cells) hex.push_back(c / per_hex);
   std::sort(hex.begin(), hex.end());
-  std::vector<std::pair<std::array<int, 3>, long long>> held;
+  using Held = std::vector<std::pair<std::array<int, 3>, long long>>;
+  Held held;
   for (std::size_t i = 0; i < hex.size();) {
     std::size_t j = i;
     while (j < hex.size() && hex[j] == hex[i]) ++j;
     held.emplace_back(box_cell(hex[i], hexahedra, 1).hex, static_cast<long long>(j - i));
     i = j;
   }
+  const auto inside = [](const std::array<int, 3>& at, const Bricks::Range& r) {
+    for (int a = 0; a < 3; ++a)
+      if (at[a] < r.lo[a] || at[a] >= r.hi[a]) return false;
+    return true;
+  };
+  // The cuts are made depth first, each range within the last one not yet done with: the
+  // hexahedra in each open range, so that each is looked at once per level.
+  std::vector<std::pair<Bricks::Range, Held>> open{{Bricks::Range{{0, 0, 0}, hexahedra}, std::move(held)}};
   // Every cell 1 % of the mean besides its particles, so empty space still spreads.
   const double cells = 1.0 * hexahedra[0] * hexahedra[1] * hexahedra[2] * per_hex;
   const double floor = 0.01 * static_cast<double>(ranks_.sum(static_cast<long long>(particle_cells.size()))) / cells;
   // The slabs' particles are added up in integers: the same sums, so the same cuts, on
   // every rank.
   return Owners(Bricks::by_slabs(hexahedra, per_hex, ranks_.size(), [&](const Bricks::Range& r, int axis) {
+    const auto within = [&](const Bricks::Range& outer) {
+      for (int a = 0; a < 3; ++a)
+        if (r.lo[a] < outer.lo[a] || r.hi[a] > outer.hi[a]) return false;
+      return true;
+    };
+    while (!within(open.back().first)) open.pop_back();
+    Held here;
+    for (const auto& item : open.back().second)
+      if (inside(item.first, r)) here.push_back(item);
     std::vector<long long> count(static_cast<std::size_t>(r.hi[axis] - r.lo[axis]), 0);
-    for (const auto& [at, n] : held)
-      if (at[0] >= r.lo[0] && at[0] < r.hi[0] && at[1] >= r.lo[1] && at[1] < r.hi[1] && at[2] >= r.lo[2] &&
-          at[2] < r.hi[2])
-        count[static_cast<std::size_t>(at[axis] - r.lo[axis])] += n;
+    for (const auto& [at, n] : here) count[static_cast<std::size_t>(at[axis] - r.lo[axis])] += n;
+    open.emplace_back(r, std::move(here));
     ranks_.sum(count);
     const double per_slab = floor * static_cast<double>(r.hexahedra() / (r.hi[axis] - r.lo[axis]) * per_hex);
     std::vector<double> slab;

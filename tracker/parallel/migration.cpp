@@ -31,7 +31,6 @@ struct FlightRecord {
 static_assert(sizeof(FlightRecord) == 72);
 
 // Two tags, alternating with the round: ranks are at most one migration apart.
-constexpr int kMigrationTags[2] = {7301, 7302};
 
 int bytes_count(std::size_t n) {
   if (n > static_cast<std::size_t>(INT_MAX))

@@ -1,5 +1,6 @@
 #include "tracker/parallel/ranks.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <stdexcept>
 
@@ -45,18 +46,24 @@ void Ranks::gather_each(std::span<const double> values,
                         const std::function<void(std::span<const double>)>& take) const {
   if (lead()) take(values);
   if (size_ == 1) return;
+  // A rank's values in pieces of at most this many: their count is an int.
+  constexpr std::size_t kPiece = std::size_t{1} << 28;
   if (!lead()) {
-    MPI_Send(values.data(), count(values.size()), MPI_DOUBLE, 0, kGatherTag, comm_);
+    const auto n = static_cast<long long>(values.size());
+    MPI_Send(&n, 1, MPI_LONG_LONG, 0, kGatherTag, comm_);
+    for (std::size_t at = 0; at < values.size(); at += kPiece)
+      MPI_Send(values.data() + at, count(std::min(kPiece, values.size() - at)), MPI_DOUBLE, 0, kGatherTag, comm_);
     return;
   }
   std::vector<double> received;
   for (int from = 1; from < size_; ++from) {
-    MPI_Status status;
-    MPI_Probe(from, kGatherTag, comm_, &status);
-    int n = 0;
-    MPI_Get_count(&status, MPI_DOUBLE, &n);
+    // Messages from one rank with one tag arrive in the order sent.
+    long long n = 0;
+    MPI_Recv(&n, 1, MPI_LONG_LONG, from, kGatherTag, comm_, MPI_STATUS_IGNORE);
     received.resize(static_cast<std::size_t>(n));
-    MPI_Recv(received.data(), n, MPI_DOUBLE, from, kGatherTag, comm_, MPI_STATUS_IGNORE);
+    for (std::size_t at = 0; at < received.size(); at += kPiece)
+      MPI_Recv(received.data() + at, count(std::min(kPiece, received.size() - at)), MPI_DOUBLE, from, kGatherTag,
+               comm_, MPI_STATUS_IGNORE);
     take(received);
   }
 }

@@ -31,14 +31,18 @@ class Ranks {
   // Every rank's values, rank after rank, on rank 0; nothing on the others (collective).
   std::vector<double> gather(std::span<const double> values) const;
   // On rank 0, take(values of rank r) for r = 0, 1, ... in turn: it holds one rank's values
-  // at a time, and no count over all ranks need fit MPI's 32 bits (collective).
+  // at a time, sent in pieces that MPI's 32-bit counts hold (collective).
   void gather_each(std::span<const double> values, const std::function<void(std::span<const double>)>& take) const;
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0;
   int size_ = 1;
-  static constexpr int kGatherTag = 7301;  // apart from the migration's tags
 };
+
+// The tags of the tracker's point-to-point messages: apart, so that no receive (the
+// migration's probes take any source) takes another's message.
+inline constexpr int kMigrationTags[2] = {7301, 7302};  // alternate rounds (migration.cpp)
+inline constexpr int kGatherTag = 7303;                 // Ranks::gather_each
 
 }  // namespace cosim::tracker

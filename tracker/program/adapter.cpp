@@ -36,6 +36,7 @@ participant::Outputs TrackerSolver::initialise(const scene::Scene& scene, const 
   std::vector<Eigen::Isometry3d> placed;
   for (std::size_t b = 0; b < poses.size() / kPoseWidth; ++b) placed.push_back(pose_of(poses, b));
   gas_ = std::make_unique<Simulation>(scene, placed, ranks_);
+  if (ranks_.lead()) grid_ = gas_->grid().grid;
   if (!state.empty()) restore(state);
   return {{}, std::vector<double>(kForceWidth * bodies_, 0.0), 0};
 }
@@ -86,7 +87,7 @@ output::FieldFrame TrackerSolver::fields() const {
   if (const std::optional<ParticleOutput>& dump = gas_->setup().particle_output; dump && dump->at(done_, windows_))
     particles = particle_set(*gas_, *dump);
   if (!ranks_.lead()) return {};  // rank 0 answers the coupler: only it has every cell's values
-  output::FieldFrame frame{gas_->grid().grid, cell_fields(moments, count)};
+  output::FieldFrame frame{grid_, cell_fields(moments, count)};
   if (particles) frame.point_sets.push_back(std::move(*particles));
   return frame;
 }

@@ -46,6 +46,7 @@ class TrackerSolver final : public participant::Solver {
 
   Ranks ranks_;
   std::unique_ptr<Simulation> gas_;
+  output::Grid grid_;  // rank 0's: built once, sent with every frame
   std::size_t bodies_ = 0;
   std::uint64_t windows_ = 0;  // of the run
   std::uint64_t done_ = 0;     // windows advanced through: the last one's index + 1

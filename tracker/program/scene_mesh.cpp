@@ -54,14 +54,16 @@ BoxSpec box(const Reader& r, const scene::Domain& domain) {
     spec.axes[a] = {.min = domain.min[a], .max = domain.max[a], .cells = n[a], .ratio = ratio[a]};
   spec.tetrahedra = r.boolean("tetrahedra", false);
   spec.periodic = periodic(r);
-  // Cells are numbered in 32 bits (Index) across the whole box, which no rank builds: a
-  // mesh's own numbering of its faces is checked as it is built (box_mesh), on several
-  // ranks per part.
-  const long long hexahedra = 1LL * n[0] * n[1] * n[2], per_hex = spec.tetrahedra ? 6 : 1;
-  if (hexahedra * per_hex > std::numeric_limits<Index>::max())
-    r.fail("cells", std::to_string(hexahedra) + " hexahedra" + (spec.tetrahedra ? " split into tetrahedra" : "") +
-                        " are more cells than 32-bit numbers count: at most " +
-                        std::to_string(std::numeric_limits<Index>::max() / per_hex) + " hexahedra");
+  // Cells are numbered in 32 bits (Index) across the whole box, which no rank builds (a
+  // mesh's own numbering of its faces is checked as it is built, box_mesh, on several ranks
+  // per part); tetrahedra are written by their faces' vertices, numbered alike.
+  const long long hexahedra = 1LL * n[0] * n[1] * n[2];
+  const long long most = std::numeric_limits<Index>::max() / (spec.tetrahedra ? 72 : 1);
+  if (hexahedra > most)
+    r.fail("cells", std::to_string(hexahedra) + " hexahedra" +
+                        (spec.tetrahedra ? " split into tetrahedra are more than their output numbers"
+                                         : " are more cells than numbers count") +
+                        " in 32 bits: at most " + std::to_string(most) + " hexahedra");
   return spec;
 }
 

@@ -21,7 +21,19 @@ std::function<Mesh(const BoxSpec&)> box_parts(const Ranks& ranks) {
   return [ranks](const BoxSpec& spec) {
     const Bricks bricks = box_bricks(spec, ranks.size());
     const Bricks::Range& mine = bricks.brick(ranks.rank());
-    return box_part(spec, mine.lo, mine.hi, [&](Index c) { return bricks.owner(c); }, ranks.rank());
+    // Parts differ in size (ghosts on one side or two, a periodic axis whole): a part too
+    // large for its numbering fails every rank alike, not only its own.
+    Mesh part;
+    std::string failure;
+    try {
+      part = box_part(spec, mine.lo, mine.hi, [&](Index c) { return bricks.owner(c); }, ranks.rank());
+    } catch (const std::invalid_argument& e) {
+      failure = e.what();
+    }
+    if (ranks.sum(failure.empty() ? 0LL : 1LL) > 0)
+      throw std::invalid_argument(failure.empty() ? "another rank's part of the box failed (its message names it)"
+                                                  : failure);
+    return part;
   };
 }
 

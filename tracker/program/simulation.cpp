@@ -279,9 +279,12 @@ void Simulation::balance() {
   ranks.sum(held);
   const double now = max_over_mean(held);
   if (!(now > setup_.balance.threshold && now > balance_floor_)) return;
-  std::vector<Index> held_in;  // the cells of this rank's particles, in the whole mesh
-  for (std::size_t i = 0; i < swarm_.size(); ++i) held_in.push_back(tracked().global_cell(swarm_.cell(i)));
-  Owners owners = decomposition_.owners().bricks() ? decomposition_.proposal(held_in)
+  const auto held_in = [&] {  // the cells of this rank's particles, in the whole mesh
+    std::vector<Index> cells;
+    for (std::size_t i = 0; i < swarm_.size(); ++i) cells.push_back(tracked().global_cell(swarm_.cell(i)));
+    return cells;
+  };
+  Owners owners = decomposition_.owners().bricks() ? decomposition_.proposal(held_in())
                                                    : decomposition_.proposal(*setup_.mesh, counts());
   // The loads the proposal would give: each rank counts where its particles would go.
   std::vector<double> load(held.size(), 0.0);
@@ -448,6 +451,7 @@ std::vector<double> Simulation::counts() const {
 std::vector<CellMoments> Simulation::take_moments() {
   const double mass = setup_.particles.mass, weight = setup_.particles.weight;
   std::vector<CellMoments> moments;
+  moments.reserve(decomposition_.ranks().lead() ? static_cast<std::size_t>(whole_cells_) : 0);
   if (decomposition_.ranks().size() == 1) {
     for (Index c = 0; c < whole_cells_; ++c) moments.push_back(sampler_.moments(c, mass, weight));
   } else {

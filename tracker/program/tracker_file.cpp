@@ -39,7 +39,13 @@ struct TrackerFile::Impl {
         patches(grid.patches.size()),
         frame{grid.grid, {}},
         fields(p),
-        volume(grid.volume) {}
+        volume(grid.volume),
+        volume_dims{grid.volume.size()} {
+    if (const auto* box = std::get_if<output::RectilinearGrid>(&grid.grid)) {
+      const std::array<std::size_t, 3> n = box->cells();
+      volume_dims = {n[2], n[1], n[0]};  // as the fields: numpy's density * volume broadcasts
+    }
+  }
 
   std::filesystem::path path;
   Handle file;
@@ -51,6 +57,7 @@ struct TrackerFile::Impl {
   output::FieldFrame frame;     // the mesh, built once; the fields of the last write
   output::FieldWriter fields;
   std::vector<double> volume;   // per cell: into the grid's group once the first step wrote it
+  std::vector<hsize_t> volume_dims;
 };
 
 TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& scene, const OutputGrid& grid,
@@ -119,7 +126,7 @@ void TrackerFile::write(Sample s) {
     m.frame.point_sets.clear();  // the particles may be many: not kept until the next write
     if (!m.volume.empty()) {  // the first write has just made the grid's group
       Handle grid = output::open_group(file, "/fields/tracker/grid");
-      output::write_array(grid.get(), "volume", {m.volume.size()}, m.volume.data());
+      output::write_array(grid.get(), "volume", m.volume_dims, m.volume.data());
       m.volume = {};
     }
 

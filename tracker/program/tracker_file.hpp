@@ -1,5 +1,5 @@
 // The standalone tracker's HDF5 file, in the run file's spirit (coupler/output/run_file.hpp)
-// with the tracker's unstructured cells:
+// with the tracker's grid (output_grid.hpp):
 //   /run                      attrs scene_file, git_hash, cosim_version, started, status,
 //                             wall_seconds, participant_names ["tracker"]; scene_text
 //   /fields/tracker/grid/     the run file's grid (output/run_file.hpp, written by its
@@ -7,7 +7,7 @@
 //                             nodes x, y, z, the fields then (nz, ny, nx[, c]); of other
 //                             meshes vertices (v x 3), topology (int64, XDMF Mixed polyhedra,
 //                             see mixed_topology.hpp), attr cells, the fields (cells[, c]);
-//                             and volume (cells, m^3)
+//                             and volume (m^3, shaped as the fields' cells)
 //   /fields/tracker/<step>/   attr time; per cell (cell_fields.hpp): count (particles at
 //                             that step), and averaged over the steps since the previous
 //                             write (at step 0 the initial state): mean_count, density

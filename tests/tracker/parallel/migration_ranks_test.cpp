@@ -90,6 +90,7 @@ TEST(Bricks, ARepartitionAddsUpTheRanksParticlesSlabBySlab) {
   const int per_hex = 6;
   const Decomposition d(Bricks(hexahedra, per_hex, Ranks(MPI_COMM_WORLD).size(), {}), Ranks(MPI_COMM_WORLD));
   const Ranks& ranks = d.ranks();
+  if (ranks.size() == 1) GTEST_SKIP() << "one rank keeps its brick";
   const Index cells = hexahedra[0] * hexahedra[1] * hexahedra[2] * per_hex;
   std::mt19937_64 random(static_cast<std::uint64_t>(ranks.rank()) + 5);
   std::uniform_int_distribution<Index> anywhere(0, cells - 1);
