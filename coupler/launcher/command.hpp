@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,12 +14,18 @@ namespace cosim::launcher {
 
 // The scene's `command`, or `cosim-<name>` for a built-in. A bare program name is looked
 // up next to the cosim executable first (a build or install tree keeps its programs
-// together), then on PATH. With ranks > 1 the command runs under `mpirun -n ranks`.
+// together), then on PATH. With ranks > 1 the command runs under `mpirun -n ranks`; placed
+// on other hosts, under mpirun or srun as placed_command() says.
 // Throws scene::SceneError naming participants.<name>.command when it cannot be found,
 // so a wrong scene fails before any process starts.
 std::vector<std::string> participant_command(const scene::Scene& scene,
                                              const scene::Participant& p,
                                              const std::filesystem::path& programs_dir);
+
+// `program` as found next to cosim (programs_dir) or on PATH; a path with a '/' is taken as
+// is. nullopt when there is no such executable.
+std::optional<std::filesystem::path> find_program(const std::string& program,
+                                                  const std::filesystem::path& programs_dir);
 
 // Variables Open MPI needs to run as root and on one host, added to what the child
 // inherits (never overriding what the user set).
