@@ -61,7 +61,7 @@ std::vector<std::string> participant_command(const scene::Scene& scene,
   return command;
 }
 
-std::map<std::string, std::string> mpi_environment() {
+std::map<std::string, std::string> mpi_environment(bool across_hosts) {
   std::map<std::string, std::string> env;
   const auto add = [&env](const char* key, const char* value) {
     if (std::getenv(key) == nullptr) env[key] = value;
@@ -71,7 +71,7 @@ std::map<std::string, std::string> mpi_environment() {
     add("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1");
   }
   add("OMPI_MCA_rmaps_base_oversubscribe", "1");
-  add("OMPI_MCA_btl", "self,vader");
+  if (!across_hosts) add("OMPI_MCA_btl", "self,vader");
   return env;
 }
 

@@ -28,8 +28,9 @@ std::optional<std::filesystem::path> find_program(const std::string& program,
                                                   const std::filesystem::path& programs_dir);
 
 // Variables Open MPI needs to run as root and on one host, added to what the child
-// inherits (never overriding what the user set).
-std::map<std::string, std::string> mpi_environment();
+// inherits (never overriding what the user set). Across hosts the ranks must also be free
+// to talk over the network, so shared memory is not made the only transport.
+std::map<std::string, std::string> mpi_environment(bool across_hosts = false);
 
 // True for a variable by which Open MPI tells a process it is a rank (or singleton) of a
 // job: PMIX_*, OMPI_* but for the user's OMPI_MCA_* and OMPI_ALLOW_* settings, and the MCA

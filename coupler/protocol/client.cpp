@@ -29,9 +29,7 @@ Client::Client(const std::string& endpoint, const std::string& name, const std::
   socket_.set(zmq::sockopt::ipv6, true);  // a coupler bound to an IPv6 address; IPv4 works as before
   if (keys) {
     curve::require();
-    curve::set_key(socket_, ZMQ_CURVE_SERVERKEY, keys->server_key);
-    curve::set_key(socket_, ZMQ_CURVE_PUBLICKEY, keys->own.public_key);
-    curve::set_key(socket_, ZMQ_CURVE_SECRETKEY, keys->own.secret_key);
+    curve::use_keys(socket_, *keys);
   }
   try {
     socket_.connect(endpoint);

@@ -26,6 +26,12 @@ void set_key(zmq::socket_t& socket, int option, const std::string& z85) {
     throw ProtocolError(std::string("cannot set a CURVE key: ") + zmq_strerror(zmq_errno()));
 }
 
+void use_keys(zmq::socket_t& socket, const ClientKeys& keys) {
+  set_key(socket, ZMQ_CURVE_SERVERKEY, keys.server_key);
+  set_key(socket, ZMQ_CURVE_PUBLICKEY, keys.own.public_key);
+  set_key(socket, ZMQ_CURVE_SECRETKEY, keys.own.secret_key);
+}
+
 KeyPair make_keypair() {
   require();
   std::array<char, 41> pub{}, sec{};

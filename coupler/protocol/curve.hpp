@@ -38,6 +38,9 @@ struct ServerKeys {
 // which libzmq takes only with its terminating NUL.
 void set_key(zmq::socket_t& socket, int option, const std::string& z85);
 
+// Makes `socket` a CURVE client with these keys (before it connects).
+void use_keys(zmq::socket_t& socket, const ClientKeys& keys);
+
 // Throws ProtocolError when the libzmq in use was built without CURVE (libsodium).
 void require();
 KeyPair make_keypair();

@@ -46,12 +46,11 @@ std::optional<std::string> ZapHandler::answer() {
               ": its key is not one of this run's";
   }
   // The reply: version, request id, status code and text, user id, metadata.
-  std::array<zmq::const_buffer, 6> reply{zmq::str_buffer("1.0"), zmq::buffer(request.size() > kRequestId
-                                                                                 ? request[kRequestId].to_string_view()
-                                                                                 : std::string_view()),
-                                         refusal ? zmq::str_buffer("400") : zmq::str_buffer("200"),
-                                         refusal ? zmq::str_buffer("unknown key") : zmq::str_buffer("OK"),
-                                         zmq::buffer(name), zmq::const_buffer()};
+  const std::string request_id = request.size() > kRequestId ? request[kRequestId].to_string() : std::string();
+  const std::array<zmq::const_buffer, 6> reply{zmq::str_buffer("1.0"), zmq::buffer(request_id),
+                                               refusal ? zmq::str_buffer("400") : zmq::str_buffer("200"),
+                                               refusal ? zmq::str_buffer("unknown key") : zmq::str_buffer("OK"),
+                                               zmq::buffer(name), zmq::const_buffer()};
   zmq::send_multipart(socket_, reply);
   return refusal;
 }

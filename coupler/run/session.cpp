@@ -94,6 +94,7 @@ void Session::execute() {
   RunDirectory dir;
   auto listen = listening(scene_.coupling, roles_.all(), dir.path);
   const bool curve = listen.options.curve.has_value();
+  const auto heartbeat = listen.options.heartbeat;
   std::optional<protocol::Server> server;
   try {
     server.emplace(listen.endpoint, std::move(listen.options));
@@ -103,11 +104,10 @@ void Session::execute() {
                              e.what());
   }
   spdlog::info("listening on {}{}", server->endpoint(), curve ? " (CURVE, keys of this run)" : "");
-  Peers peers(*server, std::chrono::milliseconds(static_cast<long>(scene_.coupling.timeout * 1000.0)),
-              std::chrono::milliseconds(static_cast<long>(scene_.coupling.heartbeat * 1000.0)));
+  Peers peers(*server, std::chrono::milliseconds(static_cast<long>(scene_.coupling.timeout * 1000.0)), heartbeat);
   for (std::size_t i = 0; i < plan_.start.size(); ++i) {
     const auto& name = plan_.start[i].name;
-    auto env = launcher::mpi_environment();
+    auto env = launcher::mpi_environment(!plan_.start[i].placement.local());
     env[protocol::kEndpointEnv] = server->endpoint();
     env[protocol::kParticipantEnv] = name;
     env.merge(listen.environment[name]);

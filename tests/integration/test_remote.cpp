@@ -30,11 +30,9 @@ namespace curve = protocol::curve;
 const std::vector<std::string> kSeries{"/bodies/m1/time", "/bodies/m1/position", "/bodies/m1/force",
                                        "/coupling/iterations"};
 
+// 100 windows; checkpoints every 7 so that a resume replays windows past one.
 OscillatorScene oscillator() {
   OscillatorScene s;
-  s.end = 1.0;
-  s.window = 0.01;
-  s.dt_mass = s.dt_spring = 0.001;
   s.checkpoint_every = 7;
   return s;
 }
@@ -74,11 +72,7 @@ zmq::socket_t foreign(zmq::context_t& context, const std::string& name, const st
   zmq::socket_t s(context, zmq::socket_type::dealer);
   s.set(zmq::sockopt::routing_id, name);
   s.set(zmq::sockopt::linger, 0);
-  if (keys) {
-    curve::set_key(s, ZMQ_CURVE_SERVERKEY, keys->server_key);
-    curve::set_key(s, ZMQ_CURVE_PUBLICKEY, keys->own.public_key);
-    curve::set_key(s, ZMQ_CURVE_SECRETKEY, keys->own.secret_key);
-  }
+  if (keys) curve::use_keys(s, *keys);
   return s;
 }
 

@@ -72,11 +72,7 @@ zmq::socket_t dealer(zmq::context_t& context, const std::string& name, const std
   zmq::socket_t s(context, zmq::socket_type::dealer);
   s.set(zmq::sockopt::routing_id, name);
   s.set(zmq::sockopt::linger, 0);
-  if (keys) {
-    curve::set_key(s, ZMQ_CURVE_SERVERKEY, keys->server_key);
-    curve::set_key(s, ZMQ_CURVE_PUBLICKEY, keys->own.public_key);
-    curve::set_key(s, ZMQ_CURVE_SECRETKEY, keys->own.secret_key);
-  }
+  if (keys) curve::use_keys(s, *keys);
   return s;
 }
 
