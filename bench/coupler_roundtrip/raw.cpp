@@ -1,4 +1,5 @@
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -14,11 +15,13 @@ namespace {
 // Answers each pair of frames (the input at the window start and at its end) with one
 // frame of outputs computed into a buffer of its own and copied once into the frame, like
 // encode() does; an empty frame ends it.
-void peer(const std::string& endpoint, const std::string& name, std::size_t doubles) {
+void peer(const std::string& endpoint, const std::string& name, std::size_t doubles,
+          const std::optional<protocol::curve::ClientKeys>& keys) {
   zmq::context_t context;
   zmq::socket_t socket(context, zmq::socket_type::dealer);
   socket.set(zmq::sockopt::routing_id, name);
   socket.set(zmq::sockopt::linger, 1000);
+  if (keys) protocol::curve::use_keys(socket, *keys);
   socket.connect(endpoint);
   std::vector<double> outputs(doubles);
   socket.send(zmq::message_t(), zmq::send_flags::none);  // lets the router learn this name
@@ -34,15 +37,24 @@ void peer(const std::string& endpoint, const std::string& name, std::size_t doub
 }  // namespace
 
 void raw(benchmark::State& state, Case c) {
+  std::vector<std::string> names;
+  for (int i = 0; i < c.participants; ++i) names.push_back("peer" + std::to_string(i));
+  std::optional<Keys> keys;
+  if (c.transport == Transport::Curve) keys = make_keys(names);
   zmq::context_t context;
   zmq::socket_t router(context, zmq::socket_type::router);
   router.set(zmq::sockopt::linger, 0);
+  if (keys) {  // encryption alone: without a ZAP handler libzmq admits any client key
+    router.set(zmq::sockopt::curve_server, true);
+    protocol::curve::set_key(router, ZMQ_CURVE_SECRETKEY, keys->server.own.secret_key);
+  }
   router.bind(bind_address(c.transport));
   const std::string endpoint = router.get(zmq::sockopt::last_endpoint);
 
   std::vector<std::jthread> threads;
-  for (int i = 0; i < c.participants; ++i)
-    threads.emplace_back(peer, endpoint, "peer" + std::to_string(i), c.doubles);
+  for (const auto& name : names)
+    threads.emplace_back(peer, endpoint, name, c.doubles,
+                         keys ? std::optional(keys->peers.at(name)) : std::nullopt);
   std::vector<zmq::message_t> frames;
   std::vector<std::string> ids;
   for (int i = 0; i < c.participants; ++i) {

@@ -28,11 +28,39 @@ class SocketFolder {
 
 }  // namespace
 
-const char* to_string(Transport t) { return t == Transport::Ipc ? "ipc" : "tcp"; }
+const char* to_string(Transport t) {
+  switch (t) {
+    case Transport::Ipc:
+      return "ipc";
+    case Transport::Tcp:
+      return "tcp";
+    case Transport::Curve:
+      return "curve";
+  }
+  return "?";
+}
 
 std::string bind_address(Transport t) {
   static SocketFolder folder;
-  return t == Transport::Ipc ? "ipc://" + folder.next() : "tcp://127.0.0.1:0";
+  switch (t) {
+    case Transport::Ipc:
+      return "ipc://" + folder.next();
+    case Transport::Tcp:
+      return "tcp://127.0.0.1:0";
+    case Transport::Curve:
+      return "tcp://127.0.0.2:0";
+  }
+  return {};
+}
+
+Keys make_keys(const std::vector<std::string>& names) {
+  Keys keys{{protocol::curve::make_keypair(), {}}, {}};
+  for (const auto& name : names) {
+    const protocol::curve::ClientKeys peer{keys.server.own.public_key, protocol::curve::make_keypair()};
+    keys.server.participants.emplace(peer.own.public_key, name);
+    keys.peers.emplace(name, peer);
+  }
+  return keys;
 }
 
 }  // namespace cosim::bench

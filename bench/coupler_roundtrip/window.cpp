@@ -1,3 +1,4 @@
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -21,8 +22,9 @@ Message of_type(Type type) {
 
 // Answers every Advance as a solver would after its substeps: its outputs, computed into a
 // buffer of its own, and its Stats.
-void participant(const std::string& endpoint, const std::string& name) {
-  Client client(endpoint, name);
+void participant(const std::string& endpoint, const std::string& name,
+                 const std::optional<curve::ClientKeys>& keys) {
+  Client client(endpoint, name, keys);
   client.hello(0, 0);
   std::vector<double> outputs;
   for (;;) {
@@ -57,13 +59,15 @@ Message expect(Server& server, Type type) {
 }  // namespace
 
 void window(benchmark::State& state, Case c) {
-  Server server(bind_address(c.transport));
   std::vector<std::string> names;
+  for (int i = 0; i < c.participants; ++i) names.push_back("solver" + std::to_string(i));
+  std::optional<Keys> keys;
+  if (c.transport == Transport::Curve) keys = make_keys(names);
+  Server server(bind_address(c.transport), ServerOptions{keys ? std::optional(keys->server) : std::nullopt, {}});
   std::vector<std::jthread> threads;
-  for (int i = 0; i < c.participants; ++i) {
-    names.push_back("solver" + std::to_string(i));
-    threads.emplace_back(participant, server.endpoint(), names.back());
-  }
+  for (const auto& name : names)
+    threads.emplace_back(participant, server.endpoint(), name,
+                         keys ? std::optional(keys->peers.at(name)) : std::nullopt);
   for (int i = 0; i < c.participants; ++i) expect(server, Type::Hello);
   for (const auto& name : names) server.send(name, of_type(Type::Init));
 

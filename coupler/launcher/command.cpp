@@ -6,6 +6,9 @@
 #include <optional>
 #include <sstream>
 
+#include "launcher/placement.hpp"
+#include "protocol/client.hpp"
+#include "protocol/curve.hpp"
 #include "scene/error.hpp"
 #include "scene/plan.hpp"
 
@@ -17,6 +20,8 @@ bool executable(const fs::path& p) {
   return fs::is_regular_file(p) && access(p.c_str(), X_OK) == 0;
 }
 
+}  // namespace
+
 std::optional<fs::path> find_program(const std::string& program, const fs::path& programs_dir) {
   if (program.find('/') != std::string::npos)
     return executable(program) ? std::optional<fs::path>(program) : std::nullopt;
@@ -27,8 +32,6 @@ std::optional<fs::path> find_program(const std::string& program, const fs::path&
     if (!dir.empty() && executable(fs::path(dir) / program)) return fs::path(dir) / program;
   return std::nullopt;
 }
-
-}  // namespace
 
 std::vector<std::string> participant_command(const scene::Scene& scene,
                                              const scene::Participant& p,
@@ -44,6 +47,10 @@ std::vector<std::string> participant_command(const scene::Scene& scene,
                             "program not found next to cosim (" + programs_dir.string() +
                                 ") nor on PATH");
   command[0] = program->string();
+  if (!p.placement.local())
+    return placed_command(scene, p, std::move(command), programs_dir,
+                          {protocol::kEndpointEnv, protocol::kParticipantEnv, protocol::curve::kServerKeyEnv,
+                           protocol::curve::kPublicKeyEnv, protocol::curve::kSecretKeyEnv});
   if (p.ranks > 1) {
     const auto mpirun = find_program("mpirun", programs_dir);
     if (!mpirun)
@@ -54,7 +61,7 @@ std::vector<std::string> participant_command(const scene::Scene& scene,
   return command;
 }
 
-std::map<std::string, std::string> mpi_environment() {
+std::map<std::string, std::string> mpi_environment(bool across_hosts) {
   std::map<std::string, std::string> env;
   const auto add = [&env](const char* key, const char* value) {
     if (std::getenv(key) == nullptr) env[key] = value;
@@ -64,7 +71,7 @@ std::map<std::string, std::string> mpi_environment() {
     add("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1");
   }
   add("OMPI_MCA_rmaps_base_oversubscribe", "1");
-  add("OMPI_MCA_btl", "self,vader");
+  if (!across_hosts) add("OMPI_MCA_btl", "self,vader");
   return env;
 }
 

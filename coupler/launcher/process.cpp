@@ -98,6 +98,7 @@ void Process::stop(std::chrono::milliseconds grace) {
   if (pid_ <= 0) return;
   if (!wait_until(clock::now() + grace)) {
     kill(-pid_, SIGTERM);
+    kill(-pid_, SIGCONT);  // a stopped process acts on SIGTERM only once it runs again
     // mpirun needs a moment to pass SIGTERM on to its ranks and collect them.
     if (!wait_until(clock::now() + std::chrono::seconds(5))) {
       kill(-pid_, SIGKILL);

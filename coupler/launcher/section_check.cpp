@@ -15,7 +15,8 @@ std::vector<std::string> refused_sections(const scene::Scene& scene, const std::
   for (const scene::Participant& p : start) {
     if (!p.command.empty() || !scene::is_builtin(p.name)) continue;
     scene::Participant alone = p;
-    alone.ranks = 1;  // reading the section takes one process whatever the run's ranks
+    alone.ranks = 1;  // reading the section takes one process whatever the run's ranks, here
+    alone.placement = {};
     auto argv = participant_command(scene, alone, programs_dir);
     argv.insert(argv.end(), {"--check", scene.file.string()});
     Process program(p.name, argv, mpi_environment());

@@ -21,11 +21,16 @@ std::string one_of(std::initializer_list<Type> types) {
 
 }  // namespace
 
-Client::Client(const std::string& endpoint, const std::string& name)
+Client::Client(const std::string& endpoint, const std::string& name, const std::optional<curve::ClientKeys>& keys)
     : socket_(context_, zmq::socket_type::dealer), name_(name) {
   check_participant_name(name);
   socket_.set(zmq::sockopt::routing_id, name);
   socket::configure(socket_, kLinger);
+  socket_.set(zmq::sockopt::ipv6, true);  // a coupler bound to an IPv6 address; IPv4 works as before
+  if (keys) {
+    curve::require();
+    curve::use_keys(socket_, *keys);
+  }
   try {
     socket_.connect(endpoint);
   } catch (const zmq::error_t& e) {
@@ -42,7 +47,7 @@ std::optional<Client> Client::from_environment() {
     throw ProtocolError(std::string(endpoint ? kEndpointEnv : kParticipantEnv) +
                         " is set but " + (endpoint ? kParticipantEnv : kEndpointEnv) +
                         " is not");
-  return Client(endpoint, name);
+  return Client(endpoint, name, curve::from_environment());
 }
 
 Message Client::hello(std::uint32_t provides, std::uint32_t needs, std::uint32_t ranks) {

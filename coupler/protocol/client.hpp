@@ -9,6 +9,7 @@
 
 #include <zmq.hpp>
 
+#include "protocol/curve.hpp"
 #include "protocol/message.hpp"
 
 namespace cosim::protocol {
@@ -24,9 +25,12 @@ struct Aborted : std::runtime_error {
 
 class Client {
  public:
-  // A DEALER socket whose identity is the participant name, connected to endpoint.
-  Client(const std::string& endpoint, const std::string& name);
-  // Reads COSIM_ENDPOINT / COSIM_PARTICIPANT; nullopt when not started by the coupler.
+  // A DEALER socket whose identity is the participant name, connected to endpoint; with
+  // keys, over CURVE.
+  Client(const std::string& endpoint, const std::string& name,
+         const std::optional<curve::ClientKeys>& keys = std::nullopt);
+  // Reads COSIM_ENDPOINT / COSIM_PARTICIPANT and the CURVE keys if the coupler gave any;
+  // nullopt when not started by the coupler.
   static std::optional<Client> from_environment();
 
   const std::string& name() const { return name_; }

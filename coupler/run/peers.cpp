@@ -26,8 +26,8 @@ std::string in_window(std::uint64_t k, double t0, double t1) {
   return fmt::format("in window {} (t = {} .. {} s)", k, t0, t1);
 }
 
-Peers::Peers(protocol::Server& server, std::chrono::milliseconds timeout)
-    : server_(server), timeout_(timeout) {}
+Peers::Peers(protocol::Server& server, std::chrono::milliseconds timeout, std::chrono::milliseconds heartbeat)
+    : server_(server), timeout_(timeout), heartbeat_(heartbeat) {}
 
 Peers::~Peers() {
   for (auto& [name, p] : processes_) p.stop(std::chrono::milliseconds(0));
@@ -58,11 +58,29 @@ void Peers::fail(const std::string& name, const std::string& problem, const std:
   throw ParticipantFailure(name, problem, when);
 }
 
+void Peers::watch_connections() {
+  for (const auto& refusal : server_.refusals()) spdlog::warn("{}", refusal);
+  for (auto& name : server_.lost())
+    if (processes_.contains(name)) lost_.insert(std::move(name));
+}
+
+std::string Peers::lost_connection() const {
+  return fmt::format("lost its connection to the coupler (closed, or no answer to heartbeats for {} s: "
+                     "coupling.heartbeat)",
+                     heartbeat_.count() / 1000.0);
+}
+
+void Peers::check_connections(const std::string& when) {
+  for (const auto& name : lost_)
+    if (!said_bye_.contains(name)) fail(name, lost_connection(), when);
+}
+
 void Peers::send(const std::string& name, protocol::Message m, const std::string& when) {
   try {
     server_.send(name, m);
   } catch (const protocol::PeerError& e) {
-    fail(name, e.problem, when);
+    watch_connections();
+    fail(name, lost_.contains(name) ? lost_connection() : e.problem, when);
   }
 }
 
@@ -78,11 +96,18 @@ std::map<std::string, protocol::Message> Peers::gather(const std::vector<std::st
     try {
       m = server_.receive(kTick);
     } catch (const protocol::PeerError& e) {
-      fail(e.peer, e.problem, when);
+      if (processes_.contains(e.peer)) fail(e.peer, e.problem, when);
+      spdlog::warn("ignored a client calling itself '{}', which is not a participant of this run: it {}", e.peer,
+                   e.problem);
     }
+    watch_connections();
     if (m) {
       const auto& from = m->header.participant;
-      if (!processes_.contains(from)) fail(from, "is not part of this run", when);
+      if (!processes_.contains(from)) {
+        spdlog::warn("ignored {} from '{}', which is not a participant of this run",
+                     protocol::to_string(m->header.type), from);
+        continue;
+      }
       // What it reports is the cause; its exit right after is only the consequence.
       if (m->header.type == protocol::Type::Error)
         throw ParticipantFailure(from, "reported an error: " + text_of(*m), when);
@@ -100,6 +125,9 @@ std::map<std::string, protocol::Message> Peers::gather(const std::vector<std::st
     for (auto& [name, p] : processes_)
       if (auto ended = p.poll(); ended && !said_bye_.contains(name))
         throw ParticipantFailure(name, *ended, when);
+    // Only now, with no message waiting: what a participant sent before its connection
+    // ended has been read.
+    check_connections(when);
     if (clock::now() > deadline)
       throw ParticipantFailure(*pending.begin(),
                                fmt::format("did not answer {} within {} s (coupling.timeout)",

@@ -1,6 +1,7 @@
 // The participants as the coupler sees them: a process it started and a name on the
-// ROUTER socket. Every wait watches for the ways a participant fails (its process ends,
-// it stays silent past the timeout, it reports an error or sends garbage) and for Ctrl-C.
+// ROUTER socket. Every wait watches for the ways a participant fails (its process ends, its
+// connection is lost, it stays silent past the timeout, it reports an error or sends
+// garbage) and for Ctrl-C. What comes from anyone else is logged and ignored: the run goes on.
 // `when` in every call labels failures for the user ("in window 12 (t = ...)").
 #pragma once
 
@@ -18,7 +19,8 @@ namespace cosim::run {
 
 class Peers {
  public:
-  Peers(protocol::Server& server, std::chrono::milliseconds timeout);
+  // `heartbeat` is the server's, for the message naming a participant it lost.
+  Peers(protocol::Server& server, std::chrono::milliseconds timeout, std::chrono::milliseconds heartbeat);
   ~Peers();  // ends every process still running, and any process they left behind
 
   void start(const std::string& name, const std::vector<std::string>& command,
@@ -42,11 +44,18 @@ class Peers {
  private:
   [[noreturn]] void fail(const std::string& name, const std::string& problem,
                          const std::string& when);
+  // Logs what the server refused, notes whom it lost.
+  void watch_connections();
+  std::string lost_connection() const;  // the problem, for fail()
+  // Fails the first participant whose connection was lost, unless it had said Bye.
+  void check_connections(const std::string& when);
 
   protocol::Server& server_;
   std::chrono::milliseconds timeout_;
+  std::chrono::milliseconds heartbeat_;
   std::map<std::string, launcher::Process> processes_;
   std::set<std::string> said_bye_;  // may exit without that being a failure
+  std::set<std::string> lost_;      // connections ended; failed once their last messages are read
 };
 
 }  // namespace cosim::run

@@ -13,6 +13,7 @@
 #include "protocol/client.hpp"
 #include "protocol/field_message.hpp"
 #include "run/failure.hpp"
+#include "run/listening.hpp"
 #include "run/progress.hpp"
 #include "scene/error.hpp"
 #include "scene/unused_materials.hpp"
@@ -91,16 +92,26 @@ void Session::attach(output::RunFile file, std::optional<output::Checkpoint> res
 void Session::execute() {
   announce();
   RunDirectory dir;
-  protocol::Server server(scene_.coupling.transport == scene::Transport::Ipc
-                              ? "ipc://" + (dir.path / "coupler").string()
-                              : "tcp://127.0.0.1:*");
-  Peers peers(server, std::chrono::milliseconds(
-                          static_cast<long>(scene_.coupling.timeout * 1000.0)));
-  auto env = launcher::mpi_environment();
-  env[protocol::kEndpointEnv] = server.endpoint();
+  auto listen = listening(scene_.coupling, roles_.all(), dir.path);
+  const bool curve = listen.options.curve.has_value();
+  const auto heartbeat = listen.options.heartbeat;
+  std::optional<protocol::Server> server;
+  try {
+    server.emplace(listen.endpoint, std::move(listen.options));
+  } catch (const protocol::ProtocolError& e) {
+    if (scene_.coupling.interface.empty()) throw;
+    throw std::runtime_error(scene_.file.string() + ": coupling.interface = " + scene_.coupling.interface + ": " +
+                             e.what());
+  }
+  spdlog::info("listening on {}{}", server->endpoint(), curve ? " (CURVE, keys of this run)" : "");
+  Peers peers(*server, std::chrono::milliseconds(static_cast<long>(scene_.coupling.timeout * 1000.0)), heartbeat);
   for (std::size_t i = 0; i < plan_.start.size(); ++i) {
-    env[protocol::kParticipantEnv] = plan_.start[i].name;
-    peers.start(plan_.start[i].name, commands_[i], env);
+    const auto& name = plan_.start[i].name;
+    auto env = launcher::mpi_environment(!plan_.start[i].placement.local());
+    env[protocol::kEndpointEnv] = server->endpoint();
+    env[protocol::kParticipantEnv] = name;
+    env.merge(listen.environment[name]);
+    peers.start(name, commands_[i], env);
   }
   try {
     handshake(peers);

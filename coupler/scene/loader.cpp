@@ -29,6 +29,19 @@ Time read_time(const Reader& r) {
   return t;
 }
 
+// An interface name or an address of this host; every address at once would hand the
+// participants an endpoint (0.0.0.0) they cannot connect to.
+std::string read_interface(const Reader& r, Transport transport) {
+  const std::string value = r.string("interface");
+  if (transport != Transport::Tcp)
+    r.fail("interface", "needs coupling.transport: tcp (an ipc socket is reached from this host only)");
+  if (value.empty() || value.find_first_of(" \t/[]*") != std::string::npos || value.find("://") != std::string::npos)
+    r.fail("interface", "expected a network interface (ib0, eth0) or an address of this host (10.1.2.3)");
+  if (value == "0.0.0.0" || value == "::")
+    r.fail("interface", "listening on every address gives participants no address to connect to; name one");
+  return value;
+}
+
 Coupling read_coupling(const Reader& r, const Time& time) {
   Coupling c;
   c.window = r.number("window", Range::above(0));
@@ -42,7 +55,9 @@ Coupling read_coupling(const Reader& r, const Time& time) {
   c.tolerance = r.number("tolerance", c.tolerance, Range::open(0, 1));
   c.force_tolerance = r.number("force_tolerance", c.force_tolerance, Range::at_least(0));
   c.transport = pick(r, "transport", transport_names, c.transport);
+  if (r.has("interface")) c.interface = read_interface(r, c.transport);
   c.timeout = r.number("timeout", c.timeout, Range::above(0));
+  c.heartbeat = r.number("heartbeat", c.heartbeat, Range::at_least(0.1));
   r.finish();
   return c;
 }
@@ -99,7 +114,7 @@ Scene load_scene_from_string(const std::string& text, const fs::path& file) {
     s.effects = read_effects(r);
     s.effects_line = r.line("effects");
   }
-  if (r.has("participants")) s.participants = read_participants(r.map("participants"), s.coupling);
+  if (r.has("participants")) s.participants = read_participants(r.map("participants"), s.coupling, file.parent_path());
   r.finish();
   // A scene whose effects no set of participants can serve is as wrong as a negative
   // radius, and must be caught before anything starts.

@@ -44,7 +44,13 @@ struct Coupling {
   // feel forces that fade towards the fluid solver's round-off. 0: the relative test only.
   double force_tolerance = 0.0;
   Transport transport = Transport::Ipc;
+  // tcp: the network interface ("ib0") or local address the coupler listens on, so that
+  // participants on other hosts reach it; empty: 127.0.0.1.
+  std::string interface;
   double timeout = 60.0;                   // seconds a participant may take to answer
+  // Seconds without an answer to ZMTP heartbeats after which a participant's connection
+  // counts as lost: a host that died leaves no process to watch.
+  double heartbeat = 10.0;
 };
 
 struct Output {
@@ -101,6 +107,16 @@ struct Body {
   int material_line = 0;                   // 1-based line of `material` (of the entry if absent), for warnings
 };
 
+// Where a participant's ranks run. None given: on the coupler's host. Any of them starts
+// the ranks with mpirun or, inside a Slurm allocation, srun (launcher/placement.hpp).
+struct Placement {
+  std::vector<std::string> hosts;          // on these hosts
+  std::filesystem::path hostfile;          // on the hosts this file lists (resolved against the scene dir)
+  int het_group = -1;                      // in this component of a Slurm heterogeneous job
+  bool scheduler = false;                  // wherever the batch scheduler puts them (hosts: scheduler)
+  bool local() const { return hosts.empty() && hostfile.empty() && het_group < 0 && !scheduler; }
+};
+
 // One section per participant. The built-in programs are `rigidbody`, `fluid` and
 // `tracker`; any other name is an external program that speaks the protocol and must say
 // what it provides and needs. `options` is passed verbatim to the program, which validates
@@ -109,6 +125,7 @@ struct Participant {
   std::string name;
   std::vector<std::string> command;        // empty: the built-in program of that name
   int ranks = 1;                           // > 1: started under mpirun -n ranks
+  Placement placement;
   double dt = 0.0;                         // its own time step; subcycles to the window end
   DataSet provides = 0;
   DataSet needs = 0;

@@ -16,7 +16,8 @@ namespace cosim::scene {
 
 // `dir` is the scene's folder, against which mesh files are resolved.
 std::vector<Body> read_bodies(const std::vector<Reader>& items, const Domain& domain, const std::filesystem::path& dir);
-std::vector<Participant> read_participants(const Reader& r, const Coupling& coupling);
+// `dir` is the scene's folder, against which hostfiles are resolved.
+std::vector<Participant> read_participants(const Reader& r, const Coupling& coupling, const std::filesystem::path& dir);
 
 // Body and participant names end up in file names, HDF5 paths and ZeroMQ identities (the
 // protocol header holds 31 bytes of name).

@@ -8,6 +8,8 @@ from .wire import Array, Header, Message, ProtocolError, Tag, Type, check_name, 
 
 ENDPOINT_ENV = "COSIM_ENDPOINT"
 PARTICIPANT_ENV = "COSIM_PARTICIPANT"
+# Over tcp the coupler hands each participant CURVE keys made for the run (docs/security.md).
+CURVE_ENV = ("COSIM_CURVE_SERVER_KEY", "COSIM_CURVE_PUBLIC_KEY", "COSIM_CURVE_SECRET_KEY")
 LINGER_MS = 1000  # long enough for a last Bye or Error to leave, short enough that exit never hangs
 
 
@@ -16,7 +18,8 @@ class Aborted(Exception):
 
 
 class Connection:
-    def __init__(self, endpoint, name):
+    def __init__(self, endpoint, name, curve_keys=None):
+        """curve_keys: (the coupler's public key, own public key, own secret key), Z85 text."""
         check_name(name)
         self.name = name
         self._context = zmq.Context()
@@ -26,6 +29,12 @@ class Connection:
         self._socket.setsockopt(zmq.LINGER, LINGER_MS)
         self._socket.setsockopt(zmq.SNDHWM, 0)
         self._socket.setsockopt(zmq.RCVHWM, 0)
+        self._socket.setsockopt(zmq.IPV6, 1)
+        if curve_keys:
+            server, public, secret = (key.encode() for key in curve_keys)
+            self._socket.curve_serverkey = server
+            self._socket.curve_publickey = public
+            self._socket.curve_secretkey = secret
         self._socket.connect(endpoint)
 
     @staticmethod
@@ -36,7 +45,10 @@ class Connection:
             return None
         if endpoint is None or name is None:
             raise ProtocolError(f"{ENDPOINT_ENV} and {PARTICIPANT_ENV} must be set together")
-        return Connection(endpoint, name)
+        keys = [os.environ.get(k) for k in CURVE_ENV]
+        if any(keys) and not all(keys):
+            raise ProtocolError(f"{', '.join(CURVE_ENV)} must be set together")
+        return Connection(endpoint, name, keys if all(keys) else None)
 
     def send(self, kind, arrays=(), **fields):
         self._socket.send_multipart(encode(Message(Header(kind, self.name, **fields), list(arrays))))

@@ -87,6 +87,8 @@ CosimProcess::~CosimProcess() {
   fs::remove(log_);
 }
 
+std::string CosimProcess::output() const { return read_file(log_); }
+
 Finished CosimProcess::wait() {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   int status = 0;

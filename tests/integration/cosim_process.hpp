@@ -23,6 +23,7 @@ class CosimProcess {
   CosimProcess(const CosimProcess&) = delete;
   CosimProcess& operator=(const CosimProcess&) = delete;
   pid_t pid() const { return pid_; }
+  std::string output() const;  // what it printed so far
   Finished wait();  // fails the test (exception) after 60 s
 
  private:

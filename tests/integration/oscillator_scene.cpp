@@ -21,7 +21,9 @@ std::string OscillatorScene::yaml() const {
     << "  tolerance: " << tolerance << "\n"
     << "  force_tolerance: " << force_tolerance << "\n"
     << "  transport: " << transport << "\n"
+    << (interface.empty() ? "" : "  interface: " + interface + "\n")
     << "  timeout: " << timeout << "\n"
+    << "  heartbeat: " << heartbeat << "\n"
     << "output: {file: " << output << ", every: 1, checkpoint_every: " << checkpoint_every << "}\n"
     << "gravity: [0, 0, 0]\n"
     << "domain: {min: [-5, -1, -1], max: [5, 1, 1]}\n"
@@ -37,13 +39,15 @@ std::string OscillatorScene::yaml() const {
     << "    provides: [poses]\n"
     << "    needs: [forces]\n"
     << "    dt: " << dt_mass << "\n"
-    << "    options: {integrator: " << integrator << "}\n"
-    << "  spring:\n"
+    << "    options: {integrator: " << integrator << "}\n";
+  for (const auto& line : mass_keys) s << "    " << line << "\n";
+  s << "  spring:\n"
     << "    command: [cosim-test-oscillator-spring]\n"
     << "    provides: [forces]\n"
     << "    needs: [poses]\n"
-    << "    dt: " << dt_spring << "\n"
-    << "    options:\n"
+    << "    dt: " << dt_spring << "\n";
+  for (const auto& line : spring_keys) s << "    " << line << "\n";
+  s << "    options:\n"
     << "      integrator: " << integrator << "\n"
     << "      stiffness: " << physics.k << "\n"
     << "      wall_stiffness: " << physics.k2 << "\n"

@@ -22,8 +22,11 @@ struct OscillatorScene {
   double force_tolerance = 0;
   std::string integrator = "verlet";
   std::string transport = "ipc";
+  std::string interface;  // coupling.interface if set
   double timeout = 20;
+  double heartbeat = 10;
   int checkpoint_every = 10;
+  std::vector<std::string> mass_keys, spring_keys;  // more keys of a section, e.g. "hosts: [n1]"
   std::vector<std::string> spring_extra;  // more option lines for the spring, e.g. "kill_at: 0.5"
   std::string output = "run.h5";
 

@@ -28,7 +28,9 @@ TEST(LoadScene, ReadsEveryKeyOfAFullScene) {
   EXPECT_EQ(s.coupling.max_iterations, 30);
   EXPECT_EQ(s.coupling.tolerance, 1e-8);
   EXPECT_EQ(s.coupling.transport, Transport::Tcp);
+  EXPECT_EQ(s.coupling.interface, "ib0");
   EXPECT_EQ(s.coupling.timeout, 120.0);
+  EXPECT_EQ(s.coupling.heartbeat, 4.0);
   EXPECT_EQ(s.windows(), 200u);
   EXPECT_EQ(s.output.file, "out/run.h5");
   EXPECT_EQ(s.output.every, 2);
@@ -74,7 +76,7 @@ TEST(LoadScene, ReadsEveryKeyOfAFullScene) {
 
   EXPECT_EQ(s.effects, (std::vector<Effect>{Effect::Gravity, Effect::Buoyancy, Effect::Hydrodynamics, Effect::Contact,
                                             Effect::Friction}));
-  EXPECT_EQ(s.effects_line, 48);
+  EXPECT_EQ(s.effects_line, 50);
   EXPECT_TRUE(s.has_effect(Effect::Contact));
   EXPECT_FALSE(s.has_effect(Effect::Tracers));
 
@@ -84,7 +86,7 @@ TEST(LoadScene, ReadsEveryKeyOfAFullScene) {
   EXPECT_TRUE(rigid.command.empty());
   EXPECT_EQ(rigid.ranks, 1);
   EXPECT_EQ(rigid.dt, 1e-4);
-  EXPECT_EQ(rigid.line, 50);
+  EXPECT_EQ(rigid.line, 52);
   EXPECT_EQ(rigid.options["iterations"].as<int>(), 20);
   const Participant* fluid = s.participant("fluid");
   ASSERT_NE(fluid, nullptr);

@@ -25,7 +25,8 @@ TEST(Validation, UnknownNestedKey) {
   EXPECT_EQ(load_error("time: {end: 1}\ncoupling: {window: 0.01, windw: 0.02}\n"
                        "domain: {min: [0, 0, 0], max: [1, 1, 1]}\n"),
             "scene.yaml:2: coupling.windw = 0.02: unknown key; expected one of: "
-            "window, scheme, acceleration, relaxation, max_iterations, tolerance, force_tolerance, transport, timeout");
+            "window, scheme, acceleration, relaxation, max_iterations, tolerance, force_tolerance, transport, interface, "
+            "timeout, heartbeat");
   EXPECT_EQ(load_error(head + "bodies:\n" + ball(", colour: red")),
             "scene.yaml:5: bodies[0].colour = red: unknown key; expected one of: "
             "name, fixed, shape, material, position, orientation, velocity, angular_velocity");
@@ -198,6 +199,16 @@ TEST(Validation, CouplingBounds) {
   EXPECT_EQ(coupling("force_tolerance: -1"), "scene.yaml:2: coupling.force_tolerance = -1: must be >= 0");
   EXPECT_EQ(coupling("timeout: -5"), "scene.yaml:2: coupling.timeout = -5: must be > 0");
   EXPECT_EQ(coupling("transport: udp"), "scene.yaml:2: coupling.transport = udp: expected one of: ipc, tcp");
+  EXPECT_EQ(coupling("heartbeat: 0.05"), "scene.yaml:2: coupling.heartbeat = 0.05: must be >= 0.1");
+  EXPECT_EQ(coupling("interface: ib0"),
+            "scene.yaml:2: coupling.interface = ib0: needs coupling.transport: tcp (an ipc socket is reached from "
+            "this host only)");
+  EXPECT_EQ(coupling("transport: tcp, interface: 0.0.0.0"),
+            "scene.yaml:2: coupling.interface = 0.0.0.0: listening on every address gives participants no address "
+            "to connect to; name one");
+  EXPECT_EQ(coupling("transport: tcp, interface: 'tcp://ib0'"),
+            "scene.yaml:2: coupling.interface = \"tcp://ib0\": expected a network interface (ib0, eth0) or an address of "
+            "this host (10.1.2.3)");
   EXPECT_EQ(coupling("acceleration: anderson"),
             "scene.yaml:2: coupling.acceleration = anderson: expected one of: none, constant, aitken, iqn-ils");
 }
