@@ -2,11 +2,16 @@
 // errors are measured and how long it runs.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "rigidbody/world/world.hpp"
 
 namespace cosim::bench {
+
+struct Scene;
+using SceneBuilder = std::function<Scene(world::World&)>;
 
 struct Scene {
   std::string name;
@@ -21,5 +26,9 @@ Scene build_pyramid(world::World& world);
 
 // Ten 0.2 m boxes with friction 0.5 exactly touching on a fixed floor, for 2 s.
 Scene build_box_stack(world::World& world);
+
+// The hard resting cases of the stability suite (tests/rigidbody/world/hard_stack.hpp),
+// 10 s each, lengths in units of the smallest body's size.
+std::vector<SceneBuilder> hard_scenes();
 
 }  // namespace cosim::bench
