@@ -8,7 +8,7 @@ std::vector<SceneBuilder> hard_scenes() {
   for (const world::test::HardStack& stack : world::test::hard_stacks())
     scenes.push_back([&stack](world::World& world) {
       stack.build(world);
-      return Scene{.name = stack.id, .size = stack.smallest_size, .duration = 10.0, .at_rest = true};
+      return Scene{.name = stack.id, .size = stack.smallest_size, .duration = 10.0, .at_rest = true, .hard = true};
     });
   return scenes;
 }

@@ -18,6 +18,7 @@ struct Scene {
   double size = 0.0;      // sphere radius or box half size: the unit of every length error
   double duration = 0.0;  // simulated seconds
   bool at_rest = false;   // the exact answer is the start state (nothing should move)
+  bool hard = false;      // a hard case of the stability suite, which only the default solver must hold
 };
 
 // 91 spheres (square layers 6x6 ... 1) with friction 0.5 on a fixed 7x7 layer of spheres

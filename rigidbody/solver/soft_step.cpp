@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "rigidbody/solver/contact_groups.hpp"
 #include "rigidbody/solver/contact_block.hpp"
@@ -75,19 +76,7 @@ SolveReport SoftStep::solve(const ContactScene& scene, std::span<const CachedCon
     set_impulse(r, warm, scene.states);
   }
 
-  std::vector<double> target;
-  std::vector<double> compliance;
-  for (const Group& g : groups_) {
-    target.clear();
-    compliance.clear();
-    for (const Row& r : std::span(rows_).subspan(g.first, g.count)) {
-      // A gap may close within the step (speculative, rigid); a penetration is a spring.
-      const bool gap = r.separation > 0.0;
-      target.push_back(gap ? -r.separation / dt_ : std::min(-g.soft.bias_rate * r.separation, options_.push_speed));
-      compliance.push_back(gap ? 0.0 : g.soft.compliance * (g.per_point ? r.law.response(0, 0) : 1.0));
-    }
-    sweeps(g, scene.states, target, compliance, options_.iterations);
-  }
+  pass(scene.states, true, options_.iterations);
   // Where the positions will be after this step, to first order in dt: the relative
   // velocity at the point, not the motion of a point fixed on each body, which on a
   // rolling sphere would open a gap that is not there.
@@ -96,21 +85,35 @@ SolveReport SoftStep::solve(const ContactScene& scene, std::span<const CachedCon
 }
 
 void SoftStep::relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory) {
+  pass(states, false, options_.relax_iterations);
+  restitution(states);
+  for (const Row& r : rows_)
+    memory[r.point] = {.normal = r.impulse[0],
+                       .tangential = r.frame.basis.bottomRows<2>().transpose() * r.impulse.tail<2>()};
+}
+
+// What a sweep asks of a row's normal: the velocity to reach and the compliance.
+std::pair<double, double> SoftStep::normal_law(const Group& g, const Row& r, bool biased) const {
+  if (!biased) return {std::min(0.0, -r.separation / dt_), kRigidCompliance * r.law.response(0, 0)};
+  // A gap may close within the step (speculative, rigid); a penetration is a spring.
+  if (r.separation > 0.0) return {-r.separation / dt_, 0.0};
+  return {std::min(-g.soft.bias_rate * r.separation, options_.push_speed),
+          g.soft.compliance * (g.per_point ? r.law.response(0, 0) : 1.0)};
+}
+
+void SoftStep::pass(std::span<dynamics::BodyState> states, bool biased, int count) {
   std::vector<double> target;
   std::vector<double> compliance;
   for (const Group& g : groups_) {
     target.clear();
     compliance.clear();
     for (const Row& r : std::span(rows_).subspan(g.first, g.count)) {
-      target.push_back(std::min(0.0, -r.separation / dt_));
-      compliance.push_back(kRigidCompliance * r.law.response(0, 0));
+      const auto [velocity, give] = normal_law(g, r, biased);
+      target.push_back(velocity);
+      compliance.push_back(give);
     }
-    sweeps(g, states, target, compliance, options_.relax_iterations);
+    sweeps(g, states, target, compliance, count);
   }
-  restitution(states);
-  for (const Row& r : rows_)
-    memory[r.point] = {.normal = r.impulse[0],
-                       .tangential = r.frame.basis.bottomRows<2>().transpose() * r.impulse.tail<2>()};
 }
 
 // A group with a large mass ratio solves every row at once (friction sticking, sliding

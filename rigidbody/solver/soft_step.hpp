@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "rigidbody/solver/contact_memory.hpp"
@@ -68,6 +69,9 @@ class SoftStep {
   };
 
   void build_rows(const ContactScene& scene, std::span<const CachedContact> memory);
+  // Sweeps over every group: with bias and soft (solve) or rigid without bias (relax).
+  void pass(std::span<dynamics::BodyState> states, bool biased, int count);
+  std::pair<double, double> normal_law(const Group& g, const Row& r, bool biased) const;
   void sweeps(const Group& g, std::span<dynamics::BodyState> states, std::span<const double> target,
               std::span<const double> compliance, int count);
   void set_impulse(Row& r, const Eigen::Vector3d& impulse, std::span<dynamics::BodyState> states) const;
