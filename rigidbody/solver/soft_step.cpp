@@ -31,10 +31,10 @@ void SoftStep::build_rows(const ContactScene& scene, std::span<const CachedConta
       for (const std::uint32_t body : {m.a, m.b})
         if (!scene.inertias[body].is_fixed() && !counted[body]) {
           counted[body] = 1;
-          const double m = 1.0 / scene.inertias[body].inverse_mass;
-          mass += m;
-          lightest = std::min(lightest, m);
-          heaviest = std::max(heaviest, m);
+          const double body_mass = 1.0 / scene.inertias[body].inverse_mass;
+          mass += body_mass;
+          lightest = std::min(lightest, body_mass);
+          heaviest = std::max(heaviest, body_mass);
         }
       for (std::uint32_t k = m.first; k < m.first + m.count; ++k) {
         const contact::ContactPoint& p = scene.contacts.points[k];
@@ -59,7 +59,8 @@ void SoftStep::build_rows(const ContactScene& scene, std::span<const CachedConta
     // heavy. Gauss-Seidel converges in a few sweeps only if each point's compliance is of
     // the order of its own W_nn (Box2D's choice): a unit mass here, times W_nn per point.
     g.per_point = g.count > options_.block_points;
-    g.axes = g.per_point ? 0 : g.count <= options_.full_block_points && heaviest > options_.full_block_mass_ratio * lightest ? 3 : 1;
+    const bool mass_ratio = heaviest > options_.full_block_mass_ratio * lightest;
+    g.axes = g.per_point ? 0 : g.count <= options_.full_block_points && mass_ratio ? 3 : 1;
     g.soft = make_softness(std::min(options_.hertz, 0.25 / scene.dt), options_.damping_ratio, g.per_point ? 1.0 : mass,
                            scene.dt);
     groups_.push_back(g);
