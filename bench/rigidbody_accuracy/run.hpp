@@ -1,6 +1,7 @@
 // One run of a scene with one solver setting, and what it measured.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -8,8 +9,6 @@
 #include "scene.hpp"
 
 namespace cosim::bench {
-
-using SceneBuilder = Scene (*)(world::World&);
 
 struct RunSpec {
   SceneBuilder build;

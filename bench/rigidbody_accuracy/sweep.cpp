@@ -11,6 +11,10 @@ RunSpec impulse(SceneBuilder scene, SolverKind solver, int iterations, double dt
   return {scene, {.solver = solver, .iterations = iterations, .dt = dt}};
 }
 
+RunSpec soft(SceneBuilder scene, int iterations, double dt) {
+  return {scene, {.solver = SolverKind::soft, .iterations = iterations, .dt = dt}};
+}
+
 RunSpec dem(SceneBuilder scene, double stiffness, double dt) {
   RunSpec spec{scene, {.solver = SolverKind::dem, .dt = dt}};
   spec.settings.dem.normal_stiffness = stiffness;
@@ -21,6 +25,8 @@ RunSpec dem(SceneBuilder scene, double stiffness, double dt) {
 
 std::vector<RunSpec> full_sweep(SceneBuilder scene) {
   std::vector<RunSpec> runs;
+  for (int iterations : {1, 2, 4, 10})
+    for (double dt : {4e-3, 2e-3, 1e-3, 5e-4}) runs.push_back(soft(scene, iterations, dt));
   for (SolverKind solver : kImpulseSolvers)
     for (int iterations : {5, 10, 20, 50, 100})
       for (double dt : {4e-3, 2e-3, 1e-3, 5e-4}) runs.push_back(impulse(scene, solver, iterations, dt));
@@ -32,13 +38,18 @@ std::vector<RunSpec> full_sweep(SceneBuilder scene) {
 }
 
 std::vector<RunSpec> quick_sweep(SceneBuilder scene) {
-  std::vector<RunSpec> runs;
+  std::vector<RunSpec> runs{soft(scene, 0, 1e-3)};
   // SI at its default 50 iterations, which the sanity bounds are for; PGS and Jacobi use all
   // the iterations they get, so 20 keeps the smoke test short.
   for (SolverKind solver : kImpulseSolvers)
     runs.push_back(impulse(scene, solver, solver == SolverKind::sequential_impulses ? 50 : 20, 1e-3));
   runs.push_back(dem(scene, 1e5, 2.5e-4));
   return runs;
+}
+
+std::vector<RunSpec> hard_sweep(SceneBuilder scene) {
+  return {soft(scene, 0, 1e-3), impulse(scene, SolverKind::sequential_impulses, 50, 1e-3),
+          impulse(scene, SolverKind::pgs, 50, 1e-3), dem(scene, 1e5, 2.5e-4)};
 }
 
 RunSpec reference(SceneBuilder scene) {

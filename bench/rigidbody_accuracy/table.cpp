@@ -7,6 +7,7 @@
 namespace cosim::bench {
 std::string solver_label(const world::Settings& s) {
   switch (s.solver) {
+    case world::SolverKind::soft: return "soft";
     case world::SolverKind::pgs: return "pgs";
     case world::SolverKind::jacobi: return "jacobi";
     case world::SolverKind::sequential_impulses: return "si";
@@ -31,7 +32,11 @@ std::string cell(bool present, const char* format, double value) {
   return text;
 }
 
-std::string iterations(const Run& r) { return cell(!is_dem(r), "%.0f", static_cast<double>(r.spec.settings.impulse_options().max_iterations)); }
+std::string iterations(const Run& r) {
+  const world::Settings& s = r.spec.settings;
+  const int n = s.solver == world::SolverKind::soft ? s.soft_options().iterations : s.impulse_options().max_iterations;
+  return cell(!is_dem(r), "%.0f", static_cast<double>(n));
+}
 std::string error(const Run& r) { return cell(r.metrics.error.has_value(), "%.2e", r.metrics.error.value_or(0)); }
 std::string converged(const Run& r) { return cell(!is_dem(r), "%.2f", r.metrics.converged); }
 std::string mean_iterations(const Run& r) { return cell(!is_dem(r), "%.1f", r.metrics.mean_iterations); }
@@ -48,14 +53,14 @@ void print_header() {
       "energy above its running minimum; KE end: kinetic energy at the end; conv: fraction of\n"
       "steps that met the tolerance; wall: stepping only. DEM: fraction of steps with the\n"
       "solver's unstable-dt warning and its stable estimate.\n\n");
-  std::printf("%-8s %-10s %5s %8s %9s %9s %9s %9s %9s %5s %6s %8s %11s %6s %9s\n", "scene", "solver", "iters",
+  std::printf("%-13s %-10s %5s %8s %9s %9s %9s %9s %9s %5s %6s %8s %11s %6s %9s\n", "scene", "solver", "iters",
               "dt", "pen", "drift", "error", "E rise", "KE end", "conv", "iters", "wall s", "body-st/s",
               "warn", "stable dt");
 }
 
 void print_row(const Run& r) {
   const Metrics& m = r.metrics;
-  std::printf("%-8s %-10s %5s %8.1e %9.2e %9.2e %9s %9.2e %9.2e %5s %6s %8.3f %11.3e %6s %9s\n",
+  std::printf("%-13s %-10s %5s %8.1e %9.2e %9.2e %9s %9.2e %9.2e %5s %6s %8.3f %11.3e %6s %9s\n",
               r.scene.name.c_str(), solver_label(r.spec.settings).c_str(), iterations(r).c_str(), r.spec.settings.dt,
               m.penetration, m.drift, error(r).c_str(), m.energy_rise, m.kinetic_end, converged(r).c_str(),
               mean_iterations(r).c_str(), m.wall_seconds, m.body_steps_per_second,

@@ -8,7 +8,7 @@
 
 namespace cosim::bench {
 
-// "pgs", "si", "jacobi", "dem k=1e+05".
+// "soft", "pgs", "si", "jacobi", "dem k=1e+05".
 std::string solver_label(const world::Settings& settings);
 
 void print_header();

@@ -27,7 +27,8 @@ long substep_count(double span, double dt) { return std::max(1L, std::lround(spa
 
 void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia,
              std::span<const WindowWrench> external, double t0, double t1,
-             const IntegratorSettings& settings, const VelocityHook& hook) {
+             const IntegratorSettings& settings, const VelocityHook& hook,
+             const PositionHook& after_positions) {
   check(states, inertia, external, t0, t1, settings.dt);
   if (t1 == t0) return;
   const long n = substep_count(t1 - t0, settings.dt);
@@ -67,6 +68,7 @@ void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia,
       else
         semi_implicit_position(states[i], inertia[i], h);
     }
+    if (after_positions) after_positions(h, states);
   }
 }
 

@@ -24,6 +24,10 @@ struct IntegratorSettings {
 // with the substep length and all states. It may change velocities (the contact solver's
 // impulses); positions and orientations are then moved with what it leaves.
 using VelocityHook = std::function<void(double dt, std::span<BodyState> states)>;
+// Called once per substep after every position update, with the substep length and all
+// states; it may change velocities only (a soft contact solver's relax pass), which the
+// next substep starts from.
+using PositionHook = VelocityHook;
 
 // Moves `states` from t0 to t1. `inertia` is parallel to `states`; `external` is either
 // parallel to it (the coupler's wrench per body, see WindowWrench) or empty (none).
@@ -35,6 +39,7 @@ long substep_count(double span, double dt);
 
 void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia,
              std::span<const WindowWrench> external, double t0, double t1,
-             const IntegratorSettings& settings, const VelocityHook& hook = {});
+             const IntegratorSettings& settings, const VelocityHook& hook = {},
+             const PositionHook& after_positions = {});
 
 }  // namespace cosim::dynamics

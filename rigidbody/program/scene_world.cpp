@@ -96,8 +96,8 @@ ProgramOptions program_options(const scene::Scene& scene) {
   world::Settings& s = out.settings;
   s.dt = p.dt;
 
-  constexpr std::array solver_names{"sequential-impulses", "pgs", "jacobi", "dem"};
-  constexpr std::array solvers{world::SolverKind::sequential_impulses, world::SolverKind::pgs,
+  constexpr std::array solver_names{"soft", "sequential-impulses", "pgs", "jacobi", "dem"};
+  constexpr std::array solvers{world::SolverKind::soft, world::SolverKind::sequential_impulses, world::SolverKind::pgs,
                                world::SolverKind::jacobi, world::SolverKind::dem};
   s.solver = solvers[options.choice("solver", solver_names, 0)];
   s.iterations = options.integer("iterations", s.iterations, scene::Range::at_least(0));

@@ -27,4 +27,12 @@ struct PointLaw {
 // iterations than the pyramid to converge when the point sticks.
 Eigen::Vector3d update_point(const PointLaw& law, Eigen::Vector3d u, const Eigen::Vector3d& impulse);
 
+// The friction half of update_point: new tangent impulses (impulse[1], impulse[2]) for
+// the local velocity u, capped by mu times impulse[0]; the normal impulse is kept.
+Eigen::Vector3d update_friction(const PointLaw& law, const Eigen::Vector3d& u, const Eigen::Vector3d& impulse);
+
+// The impulse with its friction brought into the cone (radially) or the pyramid (per
+// tangent) of mu times its normal impulse.
+Eigen::Vector3d cap_friction(const PointLaw& law, Eigen::Vector3d impulse);
+
 }  // namespace cosim::solver

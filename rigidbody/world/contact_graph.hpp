@@ -31,6 +31,8 @@ class ContactGraph {
 
   // Last substep's values for this substep's points, for the solver to update in place.
   std::span<solver::CachedContact> recall();
+  // What the last recall() gave, as the solver left it.
+  std::span<solver::CachedContact> recalled() { return values_; }
   // Keeps the solved values for the next substep.
   void remember() { memory_.remember(contacts_, values_); }
   // All the graph carries from one substep to the next (edges and contacts are rebuilt).

@@ -5,23 +5,26 @@
 #include "rigidbody/solver/dem_solver.hpp"
 #include "rigidbody/solver/impulse_solver.hpp"
 #include "rigidbody/solver/lubrication.hpp"
+#include "rigidbody/solver/soft_step.hpp"
 
 namespace cosim::world {
 
 enum class SolverKind {
+  soft,                 // the soft step (settings in `soft`): the default, holds mass and size ratios
   pgs,                  // projected Gauss-Seidel, cold start
   jacobi,               // projected Jacobi
-  sequential_impulses,  // warm-started Gauss-Seidel: the default for resting stacks
+  sequential_impulses,  // warm-started Gauss-Seidel
   dem,                  // soft spring-dashpot contacts (settings in `dem`)
 };
 
 struct Settings {
-  SolverKind solver = SolverKind::sequential_impulses;
-  int iterations = 0;        // impulse solvers' max iterations; 0: the preset's
+  SolverKind solver = SolverKind::soft;
+  int iterations = 0;        // impulse solvers' max iterations, the soft step's biased sweeps; 0: the default
   double tolerance = 1e-6;   // impulse solvers' stopping test, relative (solver/README.md)
   // Simultaneous (Catto) or sequential (Newton's cradle passes momentum through).
   solver::Restitution restitution = solver::Restitution::simultaneous;
   solver::DemOptions dem{};
+  solver::SoftOptions soft{};
   // The liquid film below the fluid grid's resolution, with either solver (off by default).
   solver::LubricationOptions lubrication{};
   // Pairs whose bounding spheres are this close become graph edges, and points with a gap
@@ -35,6 +38,7 @@ struct Settings {
   bool contact = true;
 
   solver::ImpulseOptions impulse_options() const;
+  solver::SoftOptions soft_options() const;
 };
 
 }  // namespace cosim::world

@@ -1,4 +1,5 @@
-// The contact part of a substep: broad phase -> contact graph -> narrow phase -> solver.
+// The contact part of a substep: broad phase -> contact graph -> narrow phase -> solver,
+// and, for the soft step, its relax after the positions moved.
 #include <algorithm>
 
 #include "rigidbody/world/world.hpp"
@@ -22,6 +23,14 @@ broadphase::Object object_of(std::uint32_t id, const geometry::Shape& shape, con
 }
 
 }  // namespace
+
+solver::SolveReport World::solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory) {
+  switch (settings_.solver) {
+    case SolverKind::soft: return soft_.solve(scene, memory);
+    case SolverKind::dem: return solver::solve_dem(scene, memory, settings_.dem);
+    default: return solver::solve_impulses(scene, memory, settings_.impulse_options());
+  }
+}
 
 void World::resolve_contacts(double dt, std::span<dynamics::BodyState> states, StepReport& report) {
   ++report.substeps;
@@ -57,13 +66,17 @@ void World::resolve_contacts(double dt, std::span<dynamics::BodyState> states, S
   // Before the contacts, so the solver sees the velocities the film has left.
   solver::apply_lubrication(scene, radii_, settings_.lubrication);
   const std::span<solver::CachedContact> memory = graph_.recall();
-  const solver::SolveReport solved = settings_.solver == SolverKind::dem
-                                         ? solver::solve_dem(scene, memory, settings_.dem)
-                                         : solver::solve_impulses(scene, memory, settings_.impulse_options());
-  graph_.remember();
+  const solver::SolveReport solved = solve(scene, memory);
+  // The soft step remembers after its relax, once the positions moved.
+  if (settings_.solver != SolverKind::soft) graph_.remember();
   report.solver_iterations = std::max(report.solver_iterations, solved.iterations);
   report.residual = std::max(report.residual, solved.residual);
   report.converged = report.converged && solved.converged;
+}
+
+void World::relax_contacts(std::span<dynamics::BodyState> states) {
+  soft_.relax(states, graph_.recalled());
+  graph_.remember();
 }
 
 }  // namespace cosim::world

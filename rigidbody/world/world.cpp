@@ -22,8 +22,14 @@ solver::ImpulseOptions Settings::impulse_options() const {
   return o;
 }
 
+solver::SoftOptions Settings::soft_options() const {
+  solver::SoftOptions o = soft;
+  if (iterations > 0) o.iterations = iterations;
+  return o;
+}
+
 World::World(const Settings& settings)
-    : settings_(settings), smallest_radius_(std::numeric_limits<double>::infinity()) {
+    : settings_(settings), soft_(settings.soft_options()), smallest_radius_(std::numeric_limits<double>::infinity()) {
   if (!(settings.dt > 0.0)) throw std::invalid_argument("world: dt must be positive");
   if (!(settings.contact_margin >= 0.0)) throw std::invalid_argument("world: contact margin must be >= 0");
   const solver::LubricationOptions& l = settings.lubrication;
@@ -72,6 +78,7 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
   // "Only what the scene needs": without contacts (or with nothing to collide with) the
   // integrator runs without a hook, so no broad or narrow phase is ever called.
   dynamics::VelocityHook hook;
+  dynamics::PositionHook relax;
   if (settings_.contact && size() > 1) {
     const double span = (time_ + window) - time_;  // as the integrator sees the window
     const double substep = span / static_cast<double>(dynamics::substep_count(span, settings_.dt));
@@ -80,10 +87,12 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
     report.tunnelling_bodies = risks.size();
     tunnelling_.warn(risks, substep);
     hook = [&](double h, std::span<dynamics::BodyState> states) { resolve_contacts(h, states, report); };
+    if (settings_.solver == SolverKind::soft)
+      relax = [&](double, std::span<dynamics::BodyState> states) { relax_contacts(states); };
   } else {
     hook = [&](double, std::span<dynamics::BodyState>) { ++report.substeps; };
   }
-  dynamics::advance(states_, inertias_, external, time_, time_ + window, integrator, hook);
+  dynamics::advance(states_, inertias_, external, time_, time_ + window, integrator, hook, relax);
   time_ += window;
   report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;

@@ -62,9 +62,13 @@ class World {
   // The contact part of one substep (step.cpp), run between the velocity and the position
   // update of dynamics::advance.
   void resolve_contacts(double dt, std::span<dynamics::BodyState> states, StepReport& report);
+  solver::SolveReport solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory);
+  // The soft step's second half (step.cpp), after the positions moved.
+  void relax_contacts(std::span<dynamics::BodyState> states);
   double margin() const;
 
   Settings settings_;
+  solver::SoftStep soft_;
   double time_ = 0.0;
   std::vector<geometry::Shape> shapes_;
   std::vector<double> radii_;  // of curvature, for the lubrication force (infinite: a plane)

@@ -320,8 +320,8 @@ double floor_layer_fastest(const std::string& name, double virtual_mass, double 
       "effects: [gravity, buoyancy, hydrodynamics, contact, friction]\n"
       "bodies:\n" + bodies +
       "participants:\n"
-      "  rigidbody: {dt: 1.0e-3, options: {fluid_density: 1.0, virtual_mass: " + std::to_string(virtual_mass) +
-      ", walls: [x_min, x_max, y_min, y_max, z_min, z_max]}}\n"
+      "  rigidbody: {dt: 1.0e-3, options: {solver: sequential-impulses, fluid_density: 1.0, virtual_mass: " +
+      std::to_string(virtual_mass) + ", walls: [x_min, x_max, y_min, y_max, z_min, z_max]}}\n"
       "  fluid:\n"
       "    dt: 0.02\n"
       "    options: {density: 1.0, viscosity: {model: newtonian, mu: 1.0e-3}, grid: {cells: [12, 12, 8]}, "
@@ -343,6 +343,8 @@ double floor_layer_fastest(const std::string& name, double virtual_mass, double 
 // the force a window late, the sedimenting bed's spheres rocked sideways with a growing
 // amplitude once they landed (1 m/s within 0.4 s). A virtual mass of 4 rho_f V
 // (cosim-rigidbody's virtual_mass) keeps the layer at rest, as it keeps the whole bed.
+// Measured with sequential impulses, named here: under the soft step the unstabilized run
+// did not end within the 60 s the test allows (not yet measured why).
 TEST(Settling, SpheresRestingOnTheFloorStayAtRestWithAVirtualMass) {
   const double plain = floor_layer_fastest("settling_floor_plain", 0, 0.8);
   const double stabilized = floor_layer_fastest("settling_floor_virtual_mass", 4, 1.0);

@@ -8,7 +8,7 @@ namespace cosim::world::test {
 
 StackResult run_box_stack(int steps, int iterations) {
   constexpr double kHalf = 0.1;
-  World world({.iterations = iterations});
+  World world({.solver = SolverKind::sequential_impulses, .iterations = iterations});
   add_ground(world);
   const std::vector<std::uint32_t> boxes = add_box_stack(world, kStackBoxes, kHalf);
   std::vector<Eigen::Vector3d> start;

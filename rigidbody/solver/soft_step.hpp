@@ -1,0 +1,87 @@
+// The soft step (Catto 2024, Box2D v3): soft contacts solved with bias before the positions
+// move, then, after they moved, a rigid pass without bias (the relax) and restitution.
+// Penetration is pushed out by a damped spring, not by real velocity, so the relax takes
+// the push back out of the velocity the next step starts with. Small groups solve their
+// impulses directly (contact_block.hpp), which makes the mass ratio irrelevant;
+// see README.md "Soft step" for the choices.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "rigidbody/solver/contact_memory.hpp"
+#include "rigidbody/solver/point_update.hpp"
+#include "rigidbody/solver/problem.hpp"
+#include "rigidbody/solver/softness.hpp"
+
+namespace cosim::solver {
+
+struct SoftOptions {
+  // Contact spring: natural frequency around the group's whole dynamic mass, so that at
+  // rest no point sinks more than g / (2 pi hertz)^2 (17 um at 120 Hz) under any load.
+  // At most a quarter of the step rate 1 / dt (Box2D's bound: the spring must be resolved).
+  double hertz = 120.0;
+  double damping_ratio = 10.0;  // overdamped: penetration recedes without a bounce
+  double push_speed = 3.0;      // [m/s] the fastest a penetration is pushed out
+  int iterations = 4;           // sweeps with bias, before the positions move
+  int relax_iterations = 2;     // rigid sweeps after they moved
+  // Groups with at most block_points points solve their normal impulses at once (cost ~n^3
+  // per step). Friction passes a load through a light body as slowly as Gauss-Seidel
+  // normals do, so groups with at most full_block_points points whose heaviest body is
+  // more than full_block_mass_ratio times the lightest solve friction at once too (~(3n)^3).
+  std::size_t block_points = 128;
+  std::size_t full_block_points = 32;
+  double full_block_mass_ratio = 10.0;
+  double restitution_threshold = 0.1;  // [m/s]: slower impacts are inelastic (resting)
+  FrictionModel friction = FrictionModel::cone;
+};
+
+class SoftStep {
+ public:
+  explicit SoftStep(const SoftOptions& options = {}) : options_(options) {}
+
+  // Before the positions move: warm start from `memory` (one per point), then the soft
+  // sweeps with bias. Keeps the rows for relax().
+  SolveReport solve(const ContactScene& scene, std::span<const CachedContact> memory);
+  // After the positions moved with solve()'s velocities: rigid sweeps without bias on the
+  // separations those velocities left (no new narrow phase), restitution; writes the
+  // impulses to `memory` for the next step's warm start.
+  void relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory);
+
+ private:
+  struct Row {
+    std::uint32_t point = 0;
+    ContactFrame frame;
+    PointLaw law;
+    Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
+    double separation = 0.0;  // at the narrow phase; after solve(), at the step's end
+    double approach = 0.0;    // normal velocity before the solve, for restitution
+    double restitution = 0.0;
+  };
+  struct Group {
+    std::size_t first = 0;  // rows
+    std::size_t count = 0;
+    Softness soft;
+    bool per_point = false;  // compliance relative to each point's W_nn, not the group's mass
+    int axes = 1;            // rows per point solved at once: 3, 1 (normals) or 0 (Gauss-Seidel)
+  };
+
+  void build_rows(const ContactScene& scene, std::span<const CachedContact> memory);
+  // Sweeps over every group: with bias and soft (solve) or rigid without bias (relax).
+  void pass(std::span<dynamics::BodyState> states, bool biased, int count);
+  std::pair<double, double> normal_law(const Group& g, const Row& r, bool biased) const;
+  void sweeps(const Group& g, std::span<dynamics::BodyState> states, std::span<const double> target,
+              std::span<const double> compliance, int count);
+  void set_impulse(Row& r, const Eigen::Vector3d& impulse, std::span<dynamics::BodyState> states) const;
+  void restitution(std::span<dynamics::BodyState> states);
+
+  SoftOptions options_;
+  double dt_ = 0.0;
+  std::span<const Mobility> mobility_;
+  std::vector<Row> rows_;
+  std::vector<Group> groups_;
+};
+
+}  // namespace cosim::solver
