@@ -10,6 +10,7 @@
 
 #include "fluid/fbm_indicator.hpp"
 #include "fluid/rigid_body.hpp"
+#include "fluid/step_bodies.hpp"
 
 namespace cosim::fluid {
 
@@ -31,8 +32,8 @@ class BodyTreatment {
   virtual const RigidBody& body(std::size_t i) const = 0;
   virtual std::size_t size() const = 0;
 
-  // Hooks the bodies into the flow's steps; once, before the first step.
-  virtual void attach(NavierStokes& flow) = 0;
+  // What every step of the flow takes from the bodies: NavierStokes::step(dt, for_step()).
+  virtual StepBodies for_step() = 0;
   // Force and torque on every body from the flow's last step. Collective.
   virtual std::vector<HydrodynamicLoad> loads(const NavierStokes& flow) const = 0;
   // Body i's volume fraction at this rank's owned cell centres (zero outside its patch).

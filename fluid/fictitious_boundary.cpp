@@ -66,8 +66,6 @@ std::vector<HydrodynamicLoad> FictitiousBoundary::loads(const NavierStokes& flow
   return out;
 }
 
-void FictitiousBoundary::attach(NavierStokes& flow) { flow.impose(&imposed_); }
-
 double FictitiousBoundary::grid_volume(std::size_t i) const {
   const IndicatorPatch& alpha = bodies_.at(i).patches[kCellPatch];
   double volume = 0;

@@ -8,8 +8,7 @@
 //
 //   FictitiousBoundary fbm(grid, {.subsamples = 4});
 //   const std::size_t sphere = fbm.add({geometry::Sphere(0.1), pose});
-//   flow.impose(&fbm.imposed_faces());
-//   flow.step();  fbm.loads(flow)[sphere].force;  fbm.move(sphere, pose, velocity, omega);
+//   flow.step(fbm.for_step());  fbm.loads(flow)[sphere].force;  fbm.move(sphere, pose, velocity, omega);
 #include <vector>
 
 #include "fluid/body_treatment.hpp"
@@ -36,9 +35,8 @@ class FictitiousBoundary final : public BodyTreatment {
   const RigidBody& body(std::size_t i) const override { return bodies_.at(i).body; }
   std::size_t size() const override { return bodies_.size(); }
 
-  // flow.impose(&imposed_faces()).
-  void attach(NavierStokes& flow) override;
-  // The faces inside bodies with their rigid velocities (for NavierStokes::impose).
+  StepBodies for_step() override { return {.imposed = &imposed_}; }
+  // The faces inside bodies with their rigid velocities, which every step imposes.
   const ImposedFaces& imposed_faces() const { return imposed_; }
   // From the flow's current state: the load of the imposed faces (fbm_load.hpp).
   std::vector<HydrodynamicLoad> loads(const NavierStokes& flow) const override;

@@ -16,12 +16,12 @@
 #include <span>
 #include <vector>
 
-#include "fluid/body_forcing.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/grid.hpp"
-#include "fluid/imposed_faces.hpp"
 #include "fluid/local_velocity.hpp"
 #include "fluid/pressure_solver.hpp"
+#include "fluid/step_bodies.hpp"
+#include "fluid/step_stages.hpp"
 #include "fluid/time_step_controller.hpp"
 #include "fluid/viscosity_field.hpp"
 #include "fluid/viscosity_model.hpp"
@@ -29,6 +29,8 @@
 #include "fluid/viscous_stencil.hpp"
 
 namespace cosim::fluid {
+
+class StepArrays;
 
 struct FluidProperties {
   double density = 1;                                       // kg/m^3
@@ -42,6 +44,7 @@ struct StepReport {
   double max_divergence = 0;  // after the projection, 1/s
   int pressure_iterations = 0;
   std::array<int, 3> viscous_iterations{};
+  StageSeconds seconds;  // wall time of each stage of the step
 };
 
 class NavierStokes {
@@ -58,24 +61,18 @@ class NavierStokes {
   // seen from a frame moving at -v (Galilean invariance). The convection history restarts.
   // Throws std::logic_error on a grid with walls, whose velocity the shift would change.
   void shift_frame(const Point& v);
-  // Faces whose velocity every following step prescribes (Dirichlet rows of the implicit
-  // viscous solve, walls for the projection): the fictitious-boundary bodies. `faces` must
-  // outlive the solver or be replaced; its owner may change the contents between steps.
-  // nullptr for none.
-  void impose(const ImposedFaces* faces);
-  // A body force found inside each step (the immersed boundary's direct forcing): the
-  // operators stay those of the fluid alone. Not together with impose(). `forcing` must
-  // outlive the solver or be replaced; nullptr for none.
-  void force(BodyForcing* forcing);
-
-  double stable_dt();          // from the CFL target and the controller's limits
-  StepReport step();           // one step of stable_dt()
-  StepReport step(double dt);  // one step of a given size
+  double stable_dt();  // from the CFL target and the controller's limits
+  // One step of stable_dt() / of a given size, with the bodies' faces or forcing
+  // (BodyTreatment::for_step()). Its stages, in order: the right-hand side, the body
+  // forcing, the viscous solve, the projection, and the forcing's loads at the end.
+  StepReport step(const StepBodies& bodies = {});
+  StepReport step(double dt, const StepBodies& bodies = {});
   // Steps to exactly t_end, shortening the last two steps rather than leaving a sliver.
   // before_step(t) runs before each step with the step's end time t: where moving bodies
   // must be placed (FictitiousBoundary::move); after_step(report) after it, where the
   // step's result (a body's load) can be read.
-  std::vector<StepReport> advance_to(double t_end, const std::function<void(double)>& before_step = {},
+  std::vector<StepReport> advance_to(double t_end, const StepBodies& bodies = {},
+                                     const std::function<void(double)>& before_step = {},
                                      const std::function<void(const StepReport&)>& after_step = {});
   // Everything a step carries to the next, this rank's part: time, previous dt, u, p and
   // the convection history. restore() into a solver on the same grid repeats the following
@@ -86,7 +83,7 @@ class NavierStokes {
   double time() const { return time_; }
   const Grid& grid() const { return grid_; }
   // Global vectors of the component DMs / the pressure DM, for reading (the FBM reads sigma
-  // from them; it imposes rigid velocities through impose(), inside the step).
+  // from them; it imposes rigid velocities through StepBodies, inside the step).
   Vec velocity(int c) const { return u_[static_cast<std::size_t>(c)]; }
   Vec pressure() const { return p_; }
   // The current velocity with ghosts and the viscosity of the last step, for the stress.
@@ -97,8 +94,10 @@ class NavierStokes {
   int pressure_assemblies() const { return pressure_solver_.assemblies(); }
 
  private:
-  void predict(double dt);
-  void project(double dt);
+  // The stages of step(), in navier_stokes_stages.cpp.
+  void right_hand_side(double dt, const ImposedFaces* imposed, const StepArrays& arrays);
+  std::array<int, 3> viscous_solve(double dt, const ImposedFaces* imposed);
+  int project(double dt, const ImposedFaces* imposed);
   void update_pressure();
   double boundary_value(int c, const Index& p, double t) const;
 
@@ -116,9 +115,6 @@ class NavierStokes {
   Vec p_ = nullptr, phi_ = nullptr, p_local_ = nullptr;
   double time_ = 0;
   double previous_dt_ = 0;  // 0: no convection history yet
-  StepReport report_;
-  const ImposedFaces* imposed_ = nullptr;
-  BodyForcing* forcing_ = nullptr;
 };
 
 }  // namespace cosim::fluid

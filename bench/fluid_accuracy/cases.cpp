@@ -35,14 +35,15 @@ Axis along_channel(double h) {
 Point parabola(const Point& x) { return Point{4 * Umax * x[1] * (H - x[1]) / (H * H), 0, 0}; }
 }  // namespace dfg
 
-// Advances `flow` by `interval` at a time (at most to t_max) until measure() moves by less
-// than `tolerance` of itself over one interval; the steps taken.
+// Advances `flow` with `bodies` by `interval` at a time (at most to t_max) until measure()
+// moves by less than `tolerance` of itself over one interval; the steps taken.
 template <typename Measure>
-int run_to_steady(NavierStokes& flow, double interval, double t_max, double tolerance, Measure measure) {
+int run_to_steady(NavierStokes& flow, const StepBodies& bodies, double interval, double t_max, double tolerance,
+                  Measure measure) {
   int steps = 0;
   double value = 0;
   for (double t = interval; t <= t_max; t += interval) {
-    steps += static_cast<int>(flow.advance_to(t).size());
+    steps += static_cast<int>(flow.advance_to(t, bodies).size());
     const double before = value;
     value = measure();
     if (std::abs(value - before) < tolerance * std::abs(value)) break;
@@ -74,13 +75,12 @@ FluidRun dfg_cylinder(int cells_per_diameter, const BodyOptions& method, const E
   const auto body = bodies->add({geometry::Cylinder(D / 2, 3 * T),
                                  geometry::Pose({0.2 + shift.x() * h, 0.2 + shift.y() * h, T / 2},
                                                 Eigen::Quaterniond::Identity())});
-  bodies->attach(flow);
   flow.set_velocity(parabola);
   const double to_coefficient = 2 / (D * T * Umean * Umean);
   FluidRun run{"DFG 2D-1 C_D", "D/h=" + std::to_string(cells_per_diameter), label(method)};
   // Steady: C_D moves by less than 1e-4 of itself over half a time unit (at most t = 12).
   double cd = 0;
-  run.steps = run_to_steady(flow, 0.5, 12, 1e-4,
+  run.steps = run_to_steady(flow, bodies->for_step(), 0.5, 12, 1e-4,
                             [&] { return cd = to_coefficient * bodies->loads(flow)[body].force[0]; });
   run.check = to_coefficient * bodies->loads(flow)[body].force[1];
   const auto n = grid.cells();
@@ -103,7 +103,7 @@ void tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start
   for (int k = 1;; ++k) {
     const Eigen::Vector3d at = start + k * dt * velocity;
     bodies.move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero());
-    flow.step(dt);
+    flow.step(dt, bodies.for_step());
     if (!after(k, at)) return;
   }
 }
@@ -128,7 +128,6 @@ class StokesArray {
               {.cfl = 0.5, .dt_max = dt_, .dt_initial = dt_, .theta = stepping.theta}),
         bodies_(make_bodies(grid_, method)) {
     bodies_->add({geometry::Sphere(kRadius), geometry::Pose(centre, Eigen::Quaterniond::Identity())});
-    bodies_->attach(flow_);
     flow_.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   }
 
@@ -139,7 +138,7 @@ class StokesArray {
     int steps = 0;
     bool steady = false;
     for (double before = 0; !steady && steps < max_steps;) {
-      for (int k = 0; k < 500; ++k) flow_.step(dt_);
+      for (int k = 0; k < 500; ++k) flow_.step(dt_, bodies_->for_step());
       steps += 500;
       velocity_ = mean_u(flow_, double(n_) * n_ * n_);
       steady = std::abs(velocity_ - before) < 2e-5 * std::abs(velocity_);
@@ -234,7 +233,6 @@ Smoothness sphere_through_a_cell(const BodyOptions& method, int steps_per_cell) 
   const Eigen::Vector3d start = end - (warm + measured) * dt * velocity;
   const auto bodies = make_bodies(grid, method);
   bodies->add({geometry::Sphere(a), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
-  bodies->attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   std::vector<double> time, drag;
   tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d&) {
@@ -284,7 +282,6 @@ Towed towed_sphere(const BodyOptions& method, double cells_per_step, double reyn
   // Off the cells' centres and faces by a generic amount.
   const Eigen::Vector3d start(0.5 + 0.31 * h, 0.5 + 0.17 * h, z_start);
   bodies->add({geometry::Sphere(d / 2), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
-  bodies->attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   double last_z = z_start, last_drag = 0;
   tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
@@ -323,12 +320,12 @@ DuctDrag sphere_in_sliding_duct(const BodyOptions& method, int cells_per_diamete
   const Eigen::Vector3d centre =
       Eigen::Vector3d(width / 2, width / 2, upstream) + Eigen::Vector3d(0.31, 0.17, 0.42) * h;
   bodies->add({geometry::Sphere(d / 2), geometry::Pose(centre, Eigen::Quaterniond::Identity())});
-  bodies->attach(flow);
   flow.set_velocity([stream](const Point&) { return stream; });
   DuctDrag out;
   // Steady: the drag moves by less than 1e-5 of itself over one d / U (at most 200).
   double drag = 0;
-  out.steps = run_to_steady(flow, 1, 200, 1e-5, [&] { return drag = bodies->loads(flow)[0].force.z(); });
+  out.steps = run_to_steady(flow, bodies->for_step(), 1, 200, 1e-5,
+                            [&] { return drag = bodies->loads(flow)[0].force.z(); });
   out.factor = drag / (3 * std::numbers::pi * nu * U * d);
   out.cells = static_cast<long>(across) * across * along;
   out.seconds = MPI_Wtime() - start_time;

@@ -23,7 +23,6 @@ OscillatingRun oscillating_cylinder(int cells_per_diameter, double periods, cons
   const auto body = bodies->add({geometry::Cylinder(D / 2, 3 * T),
                              geometry::Pose({x0, y0, T / 2}, Eigen::Quaterniond::Identity()),
                              {kOscillationAmplitude * omega, 0, 0}});
-  bodies->attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
 
   OscillatingRun run;
@@ -36,7 +35,7 @@ OscillatingRun oscillating_cylinder(int cells_per_diameter, double periods, cons
   };
   // Before each step: the force of the step just finished, then the body where it is at the
   // next step's end.
-  const auto steps = flow.advance_to(periods / kOscillationFrequency, [&](double t) {
+  const auto steps = flow.advance_to(periods / kOscillationFrequency, bodies->for_step(), [&](double t) {
     if (flow.time() > 0) record();
     bodies->move(body, geometry::Pose({x0 + kOscillationAmplitude * std::sin(omega * t), y0, T / 2},
                                   Eigen::Quaterniond::Identity()),

@@ -82,7 +82,6 @@ ThroughputRun run_cavity(const Cavity& cavity) {
   bc.set(2, Side::upper, Boundary::moving_wall({Cavity::kLidVelocity, 0, 0}));
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(cavity.viscosity()), {0, 0, 0}}, {});
   const std::unique_ptr<BodyTreatment> bodies = sphere(grid, cavity.body);
-  if (bodies) bodies->attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   // The sphere where it is at the end of each step, and its load read after it, as a
   // coupled run does.
@@ -92,7 +91,7 @@ ThroughputRun run_cavity(const Cavity& cavity) {
       bodies->move(0, geometry::Pose(b.pose.position() + cavity.dt() * b.velocity, b.pose.orientation()), b.velocity,
                    b.angular_velocity);
     }
-    const StepReport r = flow.step(cavity.dt());
+    const StepReport r = flow.step(cavity.dt(), bodies ? bodies->for_step() : StepBodies{});
     if (bodies) bodies->loads(flow);
     return r;
   };

@@ -194,8 +194,6 @@ void ImmersedBoundary::move(std::size_t i, const geometry::Pose& pose, const Eig
   b.angular_velocity = angular_velocity;
 }
 
-void ImmersedBoundary::attach(NavierStokes& flow) { flow.force(this); }
-
 std::vector<HydrodynamicLoad> ImmersedBoundary::loads(const NavierStokes&) const {
   std::vector<HydrodynamicLoad> out;
   for (const Entry& e : bodies_) out.push_back(e.load);

@@ -85,7 +85,7 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   const RigidBody& body(std::size_t i) const override { return bodies_.at(i).body; }
   std::size_t size() const override { return bodies_.size(); }
 
-  void attach(NavierStokes& flow) override;
+  StepBodies for_step() override { return {.forcing = this}; }
   // Measured in the last step (zero before the first).
   std::vector<HydrodynamicLoad> loads(const NavierStokes& flow) const override;
   IndicatorPatch cell_fraction(std::size_t i) const override;

@@ -62,7 +62,6 @@ participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const st
   flow_ = std::make_unique<Flow>(setup_);
   for (const fluid::RigidBody& b : setup_.bodies) flow_->bodies->add(b);
   flow_->surfaces = std::make_unique<BodySurfaces>(flow_->grid, *flow_->bodies, setup_.body_names);
-  flow_->bodies->attach(flow_->flow);
   const fluid::Point u0 = setup_.initial_velocity;
   flow_->flow.set_velocity([&](const fluid::Point&) { return u0; });
   // The coupler's poses (the rigid-body program's centres of mass) win over the scene's.
@@ -79,13 +78,15 @@ participant::Outputs FluidSolver::advance(const participant::Window& w, const pa
   std::vector<double> mean(kForceWidth * setup_.bodies.size(), 0.0);
   const double length = w.t1 - w.t0;
   const auto steps = flow_->flow.advance_to(
-      w.t1, [&](double t) { place(poses_at(w, in, t)); },
+      w.t1, flow_->bodies->for_step(), [&](double t) { place(poses_at(w, in, t)); },
       [&](const fluid::StepReport& r) {
         if (!std::isfinite(r.max_divergence))
           throw std::runtime_error("fluid diverged at t = " + std::to_string(r.time) + " (non-finite velocity)");
         const std::vector<double> f = forces();
         for (std::size_t i = 0; i < f.size(); ++i) mean[i] += f[i] * r.dt / length;
       });
+  steps_ += steps.size();
+  for (const fluid::StepReport& r : steps) stage_seconds_ += r.seconds;
   return {prescribed_ ? poses_ : std::vector<double>{}, mean, static_cast<double>(steps.size())};
 }
 

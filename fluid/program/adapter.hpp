@@ -30,6 +30,9 @@ class FluidSolver final : public participant::Solver {
   output::FieldFrame fields() const override;
 
   const fluid::NavierStokes& flow() const;
+  // The steps taken on this rank so far, and the seconds of each stage of them summed.
+  std::size_t steps() const { return steps_; }
+  const fluid::StageSeconds& stage_seconds() const { return stage_seconds_; }
 
  private:
   struct Flow;
@@ -41,6 +44,8 @@ class FluidSolver final : public participant::Solver {
   FluidSetup setup_;
   std::unique_ptr<Flow> flow_;
   std::vector<double> poses_;  // where the bodies are now, b x 13
+  std::size_t steps_ = 0;
+  fluid::StageSeconds stage_seconds_;
 };
 
 }  // namespace cosim::program

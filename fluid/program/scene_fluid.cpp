@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "rigidbody/geometry/scene_shape.hpp"
+#include "rigidbody/program/scene_shape.hpp"
 #include "scene/eigen.hpp"
 #include "scene/error.hpp"
 #include "scene/reader.hpp"
@@ -160,9 +160,9 @@ void read_bodies(const scene::Scene& scene, const scene::Participant& p, FluidSe
     if (body.shape.type == scene::ShapeType::Plane)
       throw scene::SceneError(scene.file.string(), p.line, key, "plane",
                               "cosim-fluid cannot hold a plane body: make it a wall boundary (participants.fluid)");
-    fluid::RigidBody r{.shape = geometry::shape_of(body.shape), .pose = {}};
+    fluid::RigidBody r{.shape = shape_of(body.shape), .pose = {}};
     const Eigen::Quaterniond q = scene::to_eigen(body.orientation);
-    const Eigen::Vector3d x = scene::to_eigen(body.position) + q * geometry::com_shift(r.shape);
+    const Eigen::Vector3d x = scene::to_eigen(body.position) + q * com_shift(r.shape);
     r.pose = geometry::Pose(x, q);
     s.bodies.push_back(std::move(r));
     s.body_names.push_back(body.name);

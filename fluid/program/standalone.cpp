@@ -2,8 +2,11 @@
 
 #include <petscsys.h>
 
+#include <cstdio>
+
 #include "fluid/program/adapter.hpp"
 #include "participant/mpi_team.hpp"
+#include "participant/stage_summary.hpp"
 #include "participant/standalone.hpp"
 
 namespace cosim::program {
@@ -12,6 +15,8 @@ int run_fluid_standalone(const std::filesystem::path& scene_file, std::filesyste
   FluidSolver solver(true);
   return participant::run_on_ranks(solver, PETSC_COMM_WORLD, [&](participant::Solver& lead) {
     participant::run_standalone(scene::load_scene(scene_file), lead, "fluid", std::move(output));
+    std::fprintf(stderr, "cosim-fluid: %zu steps: %s\n", solver.steps(),
+                 participant::stage_summary(fluid::kStageNames, solver.stage_seconds().all()).c_str());
     return 0;
   });
 }

@@ -6,16 +6,13 @@
 
 #include <spdlog/spdlog.h>
 
-#include "rigidbody/geometry/scene_shape.hpp"
+#include "rigidbody/program/scene_shape.hpp"
 #include "scene/eigen.hpp"
 #include "scene/error.hpp"
 #include "scene/reader.hpp"
 
 namespace cosim::program {
 namespace {
-
-using geometry::com_shift;
-using geometry::shape_of;
 
 using Eigen::Vector3d;
 

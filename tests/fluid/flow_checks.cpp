@@ -86,12 +86,13 @@ double max_difference(const GatheredVelocity& a, const GatheredVelocity& b) {
   return worst;
 }
 
-double run_to_steady_state(NavierStokes& flow, double tolerance, double t_max, double max_divergence) {
+double run_to_steady_state(NavierStokes& flow, double tolerance, double t_max, double max_divergence,
+                           const StepBodies& bodies) {
   std::array<Vec, 3> before{};
   for (int c = 0; c < 3; ++c) VecDuplicate(flow.velocity(c), &before[c]);
   while (flow.time() < t_max) {
     for (int c = 0; c < 3; ++c) VecCopy(flow.velocity(c), before[c]);
-    const StepReport r = flow.step();
+    const StepReport r = flow.step(bodies);
     EXPECT_LT(r.max_divergence, max_divergence) << "at t = " << r.time;
     double change = 0;
     for (int c = 0; c < 3; ++c) {

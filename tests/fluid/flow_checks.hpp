@@ -31,6 +31,7 @@ double max_difference(const GatheredVelocity& a, const GatheredVelocity& b);
 
 // Runs until the velocity changes by less than tolerance * dt per step (steady state) or
 // t_max is reached; returns the time reached. Checks the divergence after every step.
-double run_to_steady_state(NavierStokes& flow, double tolerance, double t_max, double max_divergence);
+double run_to_steady_state(NavierStokes& flow, double tolerance, double t_max, double max_divergence,
+                           const StepBodies& bodies = {});
 
 }  // namespace cosim::fluid::testing

@@ -58,7 +58,6 @@ Drag move_through_fluid_at_rest(double cfl) {
   };
   FictitiousBoundary fbm(grid);
   const std::size_t b = fbm.add({geometry::Ellipsoid({0.15, 0.1, 0.12}), pose(0), velocity, spin});
-  flow.impose(&fbm.imposed_faces());
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   int steps = 0;
   double worst_mismatch = 0, worst_divergence = 0, worst_speed = 0;
@@ -67,7 +66,7 @@ Drag move_through_fluid_at_rest(double cfl) {
     const double dt = std::min(flow.stable_dt(), 1.0 - flow.time());
     // The step imposes the body's velocity where the body is at its end.
     fbm.move(b, pose(flow.time() + dt), velocity, spin);
-    const StepReport r = flow.step(dt);
+    const StepReport r = flow.step(dt, fbm.for_step());
     ++steps;
     worst_divergence = std::max(worst_divergence, r.max_divergence);
     worst_mismatch = std::max(worst_mismatch, imposed_mismatch(flow, fbm.imposed_faces()));
@@ -124,14 +123,13 @@ TEST(FbmMovingBody, LandingOnTheFloorClosesCellsAgainstTheWall) {
   };
   FictitiousBoundary fbm(grid);
   const std::size_t b = fbm.add({geometry::Sphere(r), pose(0), velocity, Eigen::Vector3d::Zero()});
-  flow.impose(&fbm.imposed_faces());
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   double worst_divergence = 0;
   const double end = 0.8 * h / 0.1;
   while (flow.time() < end - 1e-12) {
     const double dt = std::min(flow.stable_dt(), end - flow.time());
     fbm.move(b, pose(flow.time() + dt), velocity, {0, 0, 0});
-    worst_divergence = std::max(worst_divergence, flow.step(dt).max_divergence);
+    worst_divergence = std::max(worst_divergence, flow.step(dt, fbm.for_step()).max_divergence);
   }
   PetscPrintf(PETSC_COMM_WORLD, "sphere landing on the floor (8^3): max divergence %.1e, drag %.4f N\n",
               worst_divergence, fbm.loads(flow)[b].force[2]);
@@ -233,9 +231,8 @@ void press_a_lid_into_a_pocket(bool outflow) {
 
   expect_region_means_removed(grid, cells);
 
-  flow.impose(&fbm.imposed_faces());
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
-  for (int step = 0; step < 5; ++step) flow.step(0.01);
+  for (int step = 0; step < 5; ++step) flow.step(0.01, fbm.for_step());
   LocalVelocity u(grid);
   u.update({flow.velocity(0), flow.velocity(1), flow.velocity(2)}, bc, flow.time());
   const double squeeze = -0.1 * 16 / (64 * h);

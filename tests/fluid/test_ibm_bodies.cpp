@@ -86,14 +86,13 @@ TEST(IbmInnerFluid, ABodyAcceleratingWithItsFluidFeelsRhoGV) {
   ImmersedBoundary ibm(grid);
   const Eigen::Vector3d start(0.41, 0.52, 0.47);
   ibm.add({geometry::Sphere(r), geometry::Pose(start, Eigen::Quaterniond::Identity())});
-  ibm.attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   double worst = 0;
   for (int k = 1; k <= 10; ++k) {
     const double t = k * dt;
     ibm.move(0, geometry::Pose(start + Eigen::Vector3d(g * t * t / 2, 0, 0), Eigen::Quaterniond::Identity()),
              {g * t, 0, 0}, Eigen::Vector3d::Zero());
-    flow.step(dt);
+    flow.step(dt, ibm.for_step());
     const double expected = rho * g * grid_volume(grid, ibm, 0);
     const HydrodynamicLoad load = ibm.loads(flow)[0];
     worst = std::max(worst, std::abs(load.force.x() - expected) / expected);
@@ -122,7 +121,6 @@ MovingRun move_through_fluid_at_rest(const BodyOptions& method) {
   };
   const auto bodies = make_bodies(grid, method);
   bodies->add({geometry::Ellipsoid({0.15, 0.1, 0.12}), pose(0), velocity, spin});
-  bodies->attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   MovingRun run;
   std::vector<double> drag;
@@ -131,7 +129,7 @@ MovingRun move_through_fluid_at_rest(const BodyOptions& method) {
   while (flow.time() < 1.0) {
     const double dt = flow.stable_dt();
     bodies->move(0, pose(flow.time() + dt), velocity, spin);
-    run.worst_divergence = std::max(run.worst_divergence, flow.step(dt).max_divergence);
+    run.worst_divergence = std::max(run.worst_divergence, flow.step(dt, bodies->for_step()).max_divergence);
     if (const auto* ibm = dynamic_cast<const ImmersedBoundary*>(bodies.get()))
       run.worst_slip = std::max(run.worst_slip, ibm->slip());
     if (flow.time() > 0.5) drag.push_back(-bodies->loads(flow)[0].force.dot(velocity.normalized()));
@@ -189,7 +187,6 @@ TEST(IbmNearContact, TwoSpheresHalfACellApartApproachingTheFloor) {
   const auto at = [&](double x, double t) -> Eigen::Vector3d { return Eigen::Vector3d(x, 0.5 + 0.21 * h, z0) + t * velocity; };
   ibm.add({geometry::Sphere(r), geometry::Pose(at(x0, 0), Eigen::Quaterniond::Identity()), velocity});
   ibm.add({geometry::Sphere(r), geometry::Pose(at(x0 + 2 * r + gap, 0), Eigen::Quaterniond::Identity()), velocity});
-  ibm.attach(flow);
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   const double end = 2.0 * h / 0.1;
   double worst_divergence = 0, worst_slip = 0, worst_mirror = 0;
@@ -198,7 +195,7 @@ TEST(IbmNearContact, TwoSpheresHalfACellApartApproachingTheFloor) {
     ibm.move(0, geometry::Pose(at(x0, t), Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero());
     ibm.move(1, geometry::Pose(at(x0 + 2 * r + gap, t), Eigen::Quaterniond::Identity()), velocity,
              Eigen::Vector3d::Zero());
-    worst_divergence = std::max(worst_divergence, flow.step(dt).max_divergence);
+    worst_divergence = std::max(worst_divergence, flow.step(dt, ibm.for_step()).max_divergence);
     worst_slip = std::max(worst_slip, ibm.slip());
     const auto loads = ibm.loads(flow);
     const double scale = loads[0].force.norm();

@@ -1,18 +1,9 @@
 #include "tracker/program/stage_times.hpp"
 
-#include <cstdio>
+#include "participant/stage_summary.hpp"
 
 namespace cosim::tracker {
 
-std::string StageTimes::summary() const {
-  std::string out;
-  for (std::size_t s = 0; s < kStageNames.size(); ++s) {
-    if (seconds_[s] == 0.0) continue;
-    char text[64];
-    std::snprintf(text, sizeof text, "%s%s %.2f s", out.empty() ? "" : ", ", kStageNames[s], seconds_[s]);
-    out += text;
-  }
-  return out;
-}
+std::string StageTimes::summary() const { return participant::stage_summary(kStageNames, seconds_); }
 
 }  // namespace cosim::tracker

@@ -1,0 +1,36 @@
+#include "fluid/step_stages.hpp"
+
+namespace cosim::fluid {
+namespace {
+
+struct LogEvents {
+  std::array<PetscLogEvent, kStageNames.size()> stages{};
+  PetscLogEvent pressure_solve{};
+};
+
+const LogEvents& log_events() {
+  static const LogEvents events = [] {
+    PetscClassId id;
+    LogEvents e;
+    COSIM_PETSC(PetscClassIdRegister("cosim fluid", &id));
+    const std::array<const char*, kStageNames.size()> names{"FluidMomentumRHS", "FluidBodyForcing",
+                                                            "FluidViscousSolve", "FluidProjection"};
+    for (std::size_t s = 0; s < names.size(); ++s) COSIM_PETSC(PetscLogEventRegister(names[s], id, &e.stages[s]));
+    COSIM_PETSC(PetscLogEventRegister("FluidPressureSolve", id, &e.pressure_solve));
+    return e;
+  }();
+  return events;
+}
+
+}  // namespace
+
+StageSeconds& StageSeconds::operator+=(const StageSeconds& other) {
+  for (std::size_t s = 0; s < seconds_.size(); ++s) seconds_[s] += other.seconds_[s];
+  return *this;
+}
+
+PetscLogEvent log_event(Stage stage) { return log_events().stages[static_cast<std::size_t>(stage)]; }
+
+PetscLogEvent pressure_solve_event() { return log_events().pressure_solve; }
+
+}  // namespace cosim::fluid
