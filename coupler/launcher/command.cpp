@@ -51,13 +51,10 @@ std::vector<std::string> participant_command(const scene::Scene& scene,
     return placed_command(scene, p, std::move(command), programs_dir,
                           {protocol::kEndpointEnv, protocol::kParticipantEnv, protocol::curve::kServerKeyEnv,
                            protocol::curve::kPublicKeyEnv, protocol::curve::kSecretKeyEnv});
-  if (p.ranks > 1) {
-    const auto mpirun = find_program("mpirun", programs_dir);
-    if (!mpirun)
-      throw scene::SceneError(scene.file.string(), p.line, "participants." + p.name + ".ranks",
-                              std::to_string(p.ranks), "mpirun not found on PATH");
-    command.insert(command.begin(), {mpirun->string(), "-n", std::to_string(p.ranks)});
-  }
+  if (p.ranks > 1)
+    command.insert(command.begin(), {launcher_path(scene, p, "mpirun", programs_dir, "participants." + p.name + ".ranks",
+                                                   std::to_string(p.ranks)),
+                                     "-n", std::to_string(p.ranks)});
   return command;
 }
 

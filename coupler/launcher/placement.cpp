@@ -27,16 +27,14 @@ std::string placement_value(const scene::Participant& p) {
   return pl.scheduler ? "scheduler" : "[" + joined(pl.hosts) + "]";
 }
 
+}  // namespace
+
 std::string launcher_path(const scene::Scene& scene, const scene::Participant& p, const std::string& launcher,
-                          const std::filesystem::path& programs_dir) {
+                          const std::filesystem::path& programs_dir, const std::string& key, const std::string& value) {
   const auto found = find_program(launcher, programs_dir);
-  if (!found)
-    throw scene::SceneError(scene.file.string(), p.line, placement_key(p), placement_value(p),
-                            launcher + " not found on PATH");
+  if (!found) throw scene::SceneError(scene.file.string(), p.line, key, value, launcher + " not found on PATH");
   return found->string();
 }
-
-}  // namespace
 
 bool inside_slurm() { return std::getenv("SLURM_JOB_ID") != nullptr; }
 
@@ -49,7 +47,7 @@ std::vector<std::string> placed_command(const scene::Scene& scene, const scene::
   if (inside_slurm()) {
     // --exact: each participant's step gets only what it asks for, so that the steps of
     // one allocation run side by side instead of waiting for each other.
-    command = {launcher_path(scene, p, "srun", programs_dir)};
+    command = {launcher_path(scene, p, "srun", programs_dir, placement_key(p), placement_value(p))};
     if (!pl.hosts.empty())
       command.insert(command.end(), {"--nodelist=" + joined(pl.hosts),
                                      "--nodes=" + std::to_string(pl.hosts.size()), tasks, "--exact"});
@@ -64,7 +62,8 @@ std::vector<std::string> placed_command(const scene::Scene& scene, const scene::
       throw scene::SceneError(scene.file.string(), p.line, placement_key(p), placement_value(p),
                               "needs a Slurm allocation (SLURM_JOB_ID is not set): run cosim inside the job "
                               "script given to sbatch");
-    command = {launcher_path(scene, p, "mpirun", programs_dir), "-n", std::to_string(p.ranks)};
+    command = {launcher_path(scene, p, "mpirun", programs_dir, placement_key(p), placement_value(p)), "-n",
+               std::to_string(p.ranks)};
     if (!pl.hosts.empty())
       command.insert(command.end(), {"--host", joined(pl.hosts)});
     else

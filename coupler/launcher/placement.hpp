@@ -11,6 +11,11 @@
 
 namespace cosim::launcher {
 
+// The launcher (mpirun, srun) next to cosim or on PATH; scene::SceneError naming `key`
+// and `value` (what asked for it) if there is none.
+std::string launcher_path(const scene::Scene& scene, const scene::Participant& p, const std::string& launcher,
+                          const std::filesystem::path& programs_dir, const std::string& key, const std::string& value);
+
 // Inside a Slurm allocation: SLURM_JOB_ID is set (sbatch, salloc).
 bool inside_slurm();
 

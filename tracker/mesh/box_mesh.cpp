@@ -161,13 +161,16 @@ Polyhedra box_polyhedra(const BoxSpec& spec) {
 
 Mesh box_mesh(const BoxSpec& spec) {
   Mesh mesh = assemble(box_polyhedra(spec));
+  std::array<std::vector<double>, 3> nodes;
+  std::array<int, 3> n{};  // nodes per axis
+  for (int a = 0; a < 3; ++a) {
+    nodes[a] = axis_nodes(spec.axes[a]);
+    n[a] = static_cast<int>(nodes[a].size());
+  }
+  const int nx = n[0], ny = n[1];
   for (int a = 0; a < 3; ++a) {
     if (!spec.periodic[a]) continue;
-    const std::vector<double> nodes = axis_nodes(spec.axes[a]);
-    std::array<int, 3> n{};  // nodes per axis
-    for (int b = 0; b < 3; ++b) n[b] = static_cast<int>(axis_nodes(spec.axes[b]).size());
-    const int nx = n[0], ny = n[1];
-    link_periodic(mesh, a, nodes.back() - nodes.front(), [&](Index id) {
+    link_periodic(mesh, a, nodes[a].back() - nodes[a].front(), [&](Index id) {
       std::array<Index, 3> ijk{id % nx, id / nx % ny, id / (nx * ny)};
       if (ijk[a] == n[a] - 1) ijk[a] = 0;
       return ijk[0] + nx * (ijk[1] + ny * ijk[2]);

@@ -21,6 +21,16 @@ class Bricks {
   struct Range {
     std::array<int, 3> lo, hi;  // hexahedra [lo, hi) per axis
     long long hexahedra() const { return 1LL * (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]); }
+    bool holds(const std::array<int, 3>& at) const {
+      for (int a = 0; a < 3; ++a)
+        if (at[a] < lo[a] || at[a] >= hi[a]) return false;
+      return true;
+    }
+    bool holds(const Range& r) const {
+      for (int a = 0; a < 3; ++a)
+        if (r.lo[a] < lo[a] || r.hi[a] > hi[a]) return false;
+      return true;
+    }
   };
 
   // `hexahedra` per axis, `per_hex` cells each (1, or 6 Kuhn tetrahedra, numbered as

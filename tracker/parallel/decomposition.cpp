@@ -35,11 +35,6 @@ Owners Decomposition::proposal(std::span<const Index> particle_cells) const {
     held.emplace_back(box_cell(hex[i], hexahedra, 1).hex, static_cast<long long>(j - i));
     i = j;
   }
-  const auto inside = [](const std::array<int, 3>& at, const Bricks::Range& r) {
-    for (int a = 0; a < 3; ++a)
-      if (at[a] < r.lo[a] || at[a] >= r.hi[a]) return false;
-    return true;
-  };
   // The cuts are made depth first, each range within the last one not yet done with: the
   // hexahedra in each open range, so that each is looked at once per level.
   std::vector<std::pair<Bricks::Range, Held>> open{{Bricks::Range{{0, 0, 0}, hexahedra}, std::move(held)}};
@@ -49,15 +44,10 @@ Owners Decomposition::proposal(std::span<const Index> particle_cells) const {
   // The slabs' particles are added up in integers: the same sums, so the same cuts, on
   // every rank.
   return Owners(Bricks::by_slabs(hexahedra, per_hex, ranks_.size(), [&](const Bricks::Range& r, int axis) {
-    const auto within = [&](const Bricks::Range& outer) {
-      for (int a = 0; a < 3; ++a)
-        if (r.lo[a] < outer.lo[a] || r.hi[a] > outer.hi[a]) return false;
-      return true;
-    };
-    while (!within(open.back().first)) open.pop_back();
+    while (!open.back().first.holds(r)) open.pop_back();
     Held here;
     for (const auto& item : open.back().second)
-      if (inside(item.first, r)) here.push_back(item);
+      if (r.holds(item.first)) here.push_back(item);
     std::vector<long long> count(static_cast<std::size_t>(r.hi[axis] - r.lo[axis]), 0);
     for (const auto& [at, n] : here) count[static_cast<std::size_t>(at[axis] - r.lo[axis])] += n;
     open.emplace_back(r, std::move(here));
