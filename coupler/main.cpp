@@ -8,12 +8,12 @@
 
 #include <iostream>
 
-#include "launcher/command.hpp"
-#include "launcher/section_check.hpp"
-#include "run/coupler.hpp"
-#include "scene/error.hpp"
-#include "scene/plan.hpp"
-#include "scene/unused_materials.hpp"
+#include "coupler/launcher/command.hpp"
+#include "coupler/launcher/section_check.hpp"
+#include "coupler/run/coupler.hpp"
+#include "coupler/scene/error.hpp"
+#include "coupler/scene/plan.hpp"
+#include "coupler/scene/unused_materials.hpp"
 
 namespace {
 

@@ -7,8 +7,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "protocol/message.hpp"
-#include "transport.hpp"
+#include "coupler/protocol/message.hpp"
+#include "bench/coupler_roundtrip/transport.hpp"
 
 namespace cosim::bench {
 

@@ -1,4 +1,4 @@
-#include "cases.hpp"
+#include "bench/coupler_roundtrip/cases.hpp"
 
 namespace cosim::bench {
 namespace {

@@ -4,8 +4,8 @@
 // of the overhead. Extra arguments go to Google Benchmark (--benchmark_filter=...).
 #include <benchmark/benchmark.h>
 
-#include "cases.hpp"
-#include "summary.hpp"
+#include "bench/coupler_roundtrip/cases.hpp"
+#include "bench/coupler_roundtrip/summary.hpp"
 
 using namespace cosim::bench;
 

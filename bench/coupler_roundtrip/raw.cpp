@@ -7,7 +7,7 @@
 
 #include <zmq_addon.hpp>
 
-#include "cases.hpp"
+#include "bench/coupler_roundtrip/cases.hpp"
 
 namespace cosim::bench {
 namespace {

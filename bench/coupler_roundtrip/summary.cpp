@@ -1,4 +1,4 @@
-#include "summary.hpp"
+#include "bench/coupler_roundtrip/summary.hpp"
 
 #include <cstdio>
 

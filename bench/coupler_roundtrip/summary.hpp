@@ -8,7 +8,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "cases.hpp"
+#include "bench/coupler_roundtrip/cases.hpp"
 
 namespace cosim::bench {
 

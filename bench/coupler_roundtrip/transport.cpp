@@ -1,4 +1,4 @@
-#include "transport.hpp"
+#include "bench/coupler_roundtrip/transport.hpp"
 
 #include <unistd.h>
 

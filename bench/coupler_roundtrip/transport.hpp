@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "protocol/curve.hpp"
+#include "coupler/protocol/curve.hpp"
 
 namespace cosim::bench {
 

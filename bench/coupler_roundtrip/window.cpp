@@ -4,9 +4,9 @@
 #include <thread>
 #include <vector>
 
-#include "cases.hpp"
-#include "protocol/client.hpp"
-#include "protocol/server.hpp"
+#include "bench/coupler_roundtrip/cases.hpp"
+#include "coupler/protocol/client.hpp"
+#include "coupler/protocol/server.hpp"
 
 namespace cosim::bench {
 namespace {

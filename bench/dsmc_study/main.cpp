@@ -6,7 +6,7 @@
 // three short runs (the reference, dx = lambda, dt = tau), for ctest; fails if a particle is
 // lost or a viscosity is off its prediction by more than 4 sigma + 5 %. --sweep ppc|cell|dt:
 // only that sweep of the full study (with --quick: its runs, with the short batches).
-#include "channel.hpp"
+#include "tests/tracker/transport/channel.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -1,4 +1,4 @@
-#include "cases.hpp"
+#include "bench/fluid_accuracy/cases.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <numbers>
 #include <vector>
 
-#include "channel.hpp"
+#include "bench/fluid_accuracy/channel.hpp"
 
 namespace cosim::bench {
 namespace {

@@ -1,4 +1,4 @@
-#include "force_history.hpp"
+#include "bench/fluid_accuracy/force_history.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "oscillating.hpp"
+#include "bench/fluid_accuracy/oscillating.hpp"
 
 namespace cosim::bench {
 

@@ -16,8 +16,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cases.hpp"
-#include "oscillating.hpp"
+#include "bench/fluid_accuracy/cases.hpp"
+#include "bench/fluid_accuracy/oscillating.hpp"
 
 using namespace cosim::bench;
 

@@ -1,9 +1,9 @@
-#include "oscillating.hpp"
+#include "bench/fluid_accuracy/oscillating.hpp"
 
 #include <cmath>
 #include <numbers>
 
-#include "channel.hpp"
+#include "bench/fluid_accuracy/channel.hpp"
 
 namespace cosim::bench {
 

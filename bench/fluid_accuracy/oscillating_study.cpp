@@ -3,8 +3,8 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "force_history.hpp"
-#include "oscillating.hpp"
+#include "bench/fluid_accuracy/force_history.hpp"
+#include "bench/fluid_accuracy/oscillating.hpp"
 
 namespace cosim::bench {
 namespace {

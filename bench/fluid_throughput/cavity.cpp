@@ -1,4 +1,4 @@
-#include "cavity.hpp"
+#include "bench/fluid_throughput/cavity.hpp"
 
 #include <algorithm>
 #include <ctime>

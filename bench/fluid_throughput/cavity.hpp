@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "memory.hpp"
+#include "bench/fluid_throughput/memory.hpp"
 
 namespace cosim::bench {
 

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "cavity.hpp"
-#include "openfoam_case.hpp"
-#include "table.hpp"
+#include "bench/fluid_throughput/cavity.hpp"
+#include "bench/fluid_throughput/openfoam_case.hpp"
+#include "bench/fluid_throughput/table.hpp"
 
 using namespace cosim::bench;
 

@@ -1,4 +1,4 @@
-#include "memory.hpp"
+#include "bench/fluid_throughput/memory.hpp"
 
 #include <malloc.h>
 #include <sys/resource.h>

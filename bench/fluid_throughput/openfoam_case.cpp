@@ -1,4 +1,4 @@
-#include "openfoam_case.hpp"
+#include "bench/fluid_throughput/openfoam_case.hpp"
 
 #include <chrono>
 #include <cstdio>

@@ -4,7 +4,7 @@
 // Not collective: call these on one rank.
 #pragma once
 
-#include "cavity.hpp"
+#include "bench/fluid_throughput/cavity.hpp"
 
 namespace cosim::bench {
 

@@ -1,4 +1,4 @@
-#include "table.hpp"
+#include "bench/fluid_throughput/table.hpp"
 
 #include <petscsys.h>
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "cavity.hpp"
+#include "bench/fluid_throughput/cavity.hpp"
 
 namespace cosim::bench {
 

@@ -1,4 +1,4 @@
-#include "scene.hpp"
+#include "bench/rigidbody_accuracy/scene.hpp"
 
 namespace cosim::bench {
 

@@ -1,4 +1,4 @@
-#include "energy.hpp"
+#include "bench/rigidbody_accuracy/energy.hpp"
 
 #include "rigidbody/dynamics/invariants.hpp"
 

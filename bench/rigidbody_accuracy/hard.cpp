@@ -1,5 +1,5 @@
-#include "../../tests/rigidbody/world/hard_stack.hpp"
-#include "scene.hpp"
+#include "tests/rigidbody/world/hard_stack.hpp"
+#include "bench/rigidbody_accuracy/scene.hpp"
 
 namespace cosim::bench {
 

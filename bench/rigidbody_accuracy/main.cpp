@@ -7,9 +7,9 @@
 #include <cstdio>
 #include <exception>
 
-#include "sanity.hpp"
-#include "sweep.hpp"
-#include "table.hpp"
+#include "bench/rigidbody_accuracy/sanity.hpp"
+#include "bench/rigidbody_accuracy/sweep.hpp"
+#include "bench/rigidbody_accuracy/table.hpp"
 
 using namespace cosim::bench;
 

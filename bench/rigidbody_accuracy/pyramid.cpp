@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include "scene.hpp"
+#include "bench/rigidbody_accuracy/scene.hpp"
 
 namespace cosim::bench {
 

@@ -1,4 +1,4 @@
-#include "run.hpp"
+#include "bench/rigidbody_accuracy/run.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "energy.hpp"
+#include "bench/rigidbody_accuracy/energy.hpp"
 
 namespace cosim::bench {
 namespace {

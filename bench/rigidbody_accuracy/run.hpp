@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "rigidbody/world/settings.hpp"
-#include "scene.hpp"
+#include "bench/rigidbody_accuracy/scene.hpp"
 
 namespace cosim::bench {
 

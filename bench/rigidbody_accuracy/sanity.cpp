@@ -1,10 +1,10 @@
-#include "sanity.hpp"
+#include "bench/rigidbody_accuracy/sanity.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "table.hpp"
+#include "bench/rigidbody_accuracy/table.hpp"
 
 namespace cosim::bench {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "run.hpp"
+#include "bench/rigidbody_accuracy/run.hpp"
 
 namespace cosim::bench {
 

@@ -1,4 +1,4 @@
-#include "sweep.hpp"
+#include "bench/rigidbody_accuracy/sweep.hpp"
 
 namespace cosim::bench {
 namespace {

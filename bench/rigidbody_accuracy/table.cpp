@@ -1,4 +1,4 @@
-#include "table.hpp"
+#include "bench/rigidbody_accuracy/table.hpp"
 
 #include <cstdio>
 #include <fstream>

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "run.hpp"
+#include "bench/rigidbody_accuracy/run.hpp"
 
 namespace cosim::bench {
 

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "engines.hpp"
+#include "bench/rigidbody_granular/engines.hpp"
 
 namespace cosim::bench {
 

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <memory>
 
-#include "engines.hpp"
+#include "bench/rigidbody_granular/engines.hpp"
 #include "rigidbody/world/world.hpp"
 
 namespace cosim::bench {

@@ -1,8 +1,8 @@
 // The engines the benchmark runs on the same scene.
 #pragma once
 
-#include "pour.hpp"
-#include "result.hpp"
+#include "bench/rigidbody_granular/pour.hpp"
+#include "bench/rigidbody_granular/result.hpp"
 
 namespace cosim::bench {
 

@@ -9,7 +9,7 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
-#include "engines.hpp"
+#include "bench/rigidbody_granular/engines.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "result.hpp"
+#include "bench/rigidbody_granular/result.hpp"
 #include "rigidbody/broadphase/hash_grid.hpp"
 
 namespace cosim::bench {

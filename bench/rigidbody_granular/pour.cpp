@@ -1,4 +1,4 @@
-#include "pour.hpp"
+#include "bench/rigidbody_granular/pour.hpp"
 
 #include <cmath>
 #include <random>

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "flights.hpp"
-#include "parts.hpp"
+#include "bench/tracker_study/flights.hpp"
+#include "bench/tracker_study/parts.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/perturb.hpp"
 #include "tracker/mesh/voronoi_mesh.hpp"

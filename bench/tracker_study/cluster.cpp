@@ -1,4 +1,4 @@
-#include "cluster.hpp"
+#include "bench/tracker_study/cluster.hpp"
 
 #include <algorithm>
 #include <cmath>

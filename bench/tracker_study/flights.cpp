@@ -1,4 +1,4 @@
-#include "flights.hpp"
+#include "bench/tracker_study/flights.hpp"
 
 namespace cosim::bench {
 

@@ -2,7 +2,7 @@
 // The flights of the algorithms part: the robustness test's adversarial moves
 // (tests/tracker/tracking/hard_moves.hpp), and straight traversals for timing.
 
-#include "hard_moves.hpp"  // tests/tracker/tracking (cosim_tracking_hard_moves)
+#include "tests/tracker/tracking/hard_moves.hpp"  // tests/tracker/tracking (cosim_tracking_hard_moves)
 #include "tracker/tracking/move.hpp"
 
 #include <vector>

@@ -2,7 +2,7 @@
 // one part per source file; --part selects them.
 #include <CLI/CLI.hpp>
 
-#include "parts.hpp"
+#include "bench/tracker_study/parts.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Tracking studies against the references"};

@@ -1,5 +1,5 @@
-#include "cluster.hpp"
-#include "parts.hpp"
+#include "bench/tracker_study/cluster.hpp"
+#include "bench/tracker_study/parts.hpp"
 #include "tracker/csg/shapes.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/tracking/swarm.hpp"

@@ -1,6 +1,6 @@
-#include "free_deck.hpp"
+#include "bench/tracker_throughput/free_deck.hpp"
 
-#include "cluster.hpp"
+#include "bench/tracker_study/cluster.hpp"
 #include "tracker/csg/shapes.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 

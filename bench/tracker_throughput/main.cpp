@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "run.hpp"
-#include "sphere_deck.hpp"
+#include "bench/tracker_throughput/run.hpp"
+#include "bench/tracker_throughput/sphere_deck.hpp"
 #include "tracker/tracking/swarm.hpp"
 
 using namespace cosim::bench;

@@ -1,4 +1,4 @@
-#include "run.hpp"
+#include "bench/tracker_throughput/run.hpp"
 
 #include "tracker/dsmc/species.hpp"
 #include "tracker/program/collide.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // One timed run of the free deck with one algorithm and one particle storage.
 
-#include "free_deck.hpp"
+#include "bench/tracker_throughput/free_deck.hpp"
 #include "tracker/tracking/swarm.hpp"
 
 #include <string>

@@ -1,6 +1,6 @@
-#include "sphere_deck.hpp"
+#include "bench/tracker_throughput/sphere_deck.hpp"
 
-#include "run.hpp"
+#include "bench/tracker_throughput/run.hpp"
 #include "tracker/csg/shapes.hpp"
 #include "tracker/dsmc/free_molecular.hpp"
 #include "tracker/dsmc/species.hpp"

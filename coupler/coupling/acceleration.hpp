@@ -8,7 +8,7 @@
 
 #include <Eigen/Dense>
 
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::coupling {
 

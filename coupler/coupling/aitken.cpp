@@ -6,7 +6,7 @@
 #include <cmath>
 #include <optional>
 
-#include "coupling/acceleration.hpp"
+#include "coupler/coupling/acceleration.hpp"
 
 namespace cosim::coupling {
 namespace {

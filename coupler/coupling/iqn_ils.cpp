@@ -11,8 +11,8 @@
 // than the uninterrupted one; without it a restart is exact.
 #include <vector>
 
-#include "coupling/acceleration.hpp"
-#include "coupling/least_squares.hpp"
+#include "coupler/coupling/acceleration.hpp"
+#include "coupler/coupling/least_squares.hpp"
 
 namespace cosim::coupling {
 namespace {

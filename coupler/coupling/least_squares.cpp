@@ -1,4 +1,4 @@
-#include "coupling/least_squares.hpp"
+#include "coupler/coupling/least_squares.hpp"
 
 #include <vector>
 

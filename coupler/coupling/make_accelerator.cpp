@@ -1,7 +1,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "coupling/acceleration.hpp"
+#include "coupler/coupling/acceleration.hpp"
 
 namespace cosim::coupling {
 

@@ -1,5 +1,5 @@
 // The two static schemes: neither keeps state, so new_window has nothing to forget.
-#include "coupling/acceleration.hpp"
+#include "coupler/coupling/acceleration.hpp"
 
 namespace cosim::coupling {
 namespace {

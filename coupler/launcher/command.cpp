@@ -1,4 +1,4 @@
-#include "launcher/command.hpp"
+#include "coupler/launcher/command.hpp"
 
 #include <unistd.h>
 
@@ -6,11 +6,11 @@
 #include <optional>
 #include <sstream>
 
-#include "launcher/placement.hpp"
-#include "protocol/client.hpp"
-#include "protocol/curve.hpp"
-#include "scene/error.hpp"
-#include "scene/plan.hpp"
+#include "coupler/launcher/placement.hpp"
+#include "coupler/protocol/client.hpp"
+#include "coupler/protocol/curve.hpp"
+#include "coupler/scene/error.hpp"
+#include "coupler/scene/plan.hpp"
 
 namespace cosim::launcher {
 namespace fs = std::filesystem;

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::launcher {
 

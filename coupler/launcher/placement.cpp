@@ -1,9 +1,9 @@
-#include "launcher/placement.hpp"
+#include "coupler/launcher/placement.hpp"
 
 #include <cstdlib>
 
-#include "launcher/command.hpp"
-#include "scene/error.hpp"
+#include "coupler/launcher/command.hpp"
+#include "coupler/scene/error.hpp"
 
 namespace cosim::launcher {
 namespace {

@@ -1,4 +1,4 @@
-#include "launcher/process.hpp"
+#include "coupler/launcher/process.hpp"
 
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "launcher/command.hpp"
+#include "coupler/launcher/command.hpp"
 
 namespace cosim::launcher {
 namespace {

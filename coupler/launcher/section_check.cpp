@@ -1,11 +1,11 @@
-#include "launcher/section_check.hpp"
+#include "coupler/launcher/section_check.hpp"
 
 #include <chrono>
 #include <iostream>
 
-#include "launcher/command.hpp"
-#include "launcher/process.hpp"
-#include "scene/plan.hpp"
+#include "coupler/launcher/command.hpp"
+#include "coupler/launcher/process.hpp"
+#include "coupler/scene/plan.hpp"
 
 namespace cosim::launcher {
 

@@ -1,13 +1,13 @@
-#include "output/checkpoint_group.hpp"
+#include "coupler/output/checkpoint_group.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 
-#include "output/h5_groups.hpp"
-#include "output/h5_values.hpp"
-#include "output/record_shape.hpp"
-#include "output/series.hpp"
+#include "coupler/output/h5_groups.hpp"
+#include "coupler/output/h5_values.hpp"
+#include "coupler/output/record_shape.hpp"
+#include "coupler/output/series.hpp"
 
 namespace cosim::output {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "output/run_file.hpp"
+#include "coupler/output/run_file.hpp"
 
 namespace cosim::output {
 

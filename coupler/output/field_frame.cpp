@@ -1,4 +1,4 @@
-#include "output/field_frame.hpp"
+#include "coupler/output/field_frame.hpp"
 
 #include <algorithm>
 #include <cmath>

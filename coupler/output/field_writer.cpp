@@ -1,4 +1,4 @@
-#include "output/field_writer.hpp"
+#include "coupler/output/field_writer.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,9 +6,9 @@
 #include <utility>
 #include <variant>
 
-#include "output/h5_groups.hpp"
-#include "output/h5_handle.hpp"
-#include "output/h5_values.hpp"
+#include "coupler/output/h5_groups.hpp"
+#include "coupler/output/h5_handle.hpp"
+#include "coupler/output/h5_values.hpp"
 
 namespace cosim::output {
 namespace {

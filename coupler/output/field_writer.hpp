@@ -9,8 +9,8 @@
 #include <map>
 #include <string>
 
-#include "output/field_frame.hpp"
-#include "output/xdmf.hpp"
+#include "coupler/output/field_frame.hpp"
+#include "coupler/output/xdmf.hpp"
 
 namespace cosim::output {
 

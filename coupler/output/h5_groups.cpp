@@ -1,4 +1,4 @@
-#include "output/h5_groups.hpp"
+#include "coupler/output/h5_groups.hpp"
 
 namespace cosim::output {
 Handle create_group(hid_t parent, const std::string& name) {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "output/h5_handle.hpp"
+#include "coupler/output/h5_handle.hpp"
 
 namespace cosim::output {
 

@@ -1,4 +1,4 @@
-#include "output/h5_handle.hpp"
+#include "coupler/output/h5_handle.hpp"
 
 #include <vector>
 

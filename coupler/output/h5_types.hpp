@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "output/h5_handle.hpp"
+#include "coupler/output/h5_handle.hpp"
 
 namespace cosim::output {
 

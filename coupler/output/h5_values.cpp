@@ -1,12 +1,12 @@
-#include "output/h5_values.hpp"
+#include "coupler/output/h5_values.hpp"
 
 #include <cstdint>
 #include <type_traits>
 
-#include "output/h5_groups.hpp"
-#include "output/h5_handle.hpp"
-#include "output/h5_types.hpp"
-#include "output/series.hpp"
+#include "coupler/output/h5_groups.hpp"
+#include "coupler/output/h5_handle.hpp"
+#include "coupler/output/h5_types.hpp"
+#include "coupler/output/series.hpp"
 
 namespace cosim::output {
 namespace {

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "output/h5_handle.hpp"
+#include "coupler/output/h5_handle.hpp"
 
 namespace cosim::output {
 

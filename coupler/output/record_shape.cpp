@@ -1,8 +1,8 @@
-#include "output/record_shape.hpp"
+#include "coupler/output/record_shape.hpp"
 
 #include <algorithm>
 
-#include "output/h5_handle.hpp"
+#include "coupler/output/h5_handle.hpp"
 
 namespace cosim::output {
 

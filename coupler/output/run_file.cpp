@@ -1,4 +1,4 @@
-#include "output/run_file.hpp"
+#include "coupler/output/run_file.hpp"
 
 #include <fcntl.h>
 
@@ -9,14 +9,14 @@
 #include <stdexcept>
 #include <utility>
 
-#include "output/checkpoint_group.hpp"
-#include "output/field_writer.hpp"
-#include "output/h5_groups.hpp"
-#include "output/h5_handle.hpp"
-#include "output/h5_values.hpp"
-#include "output/run_series.hpp"
-#include "output/in_file.hpp"
-#include "output/text.hpp"
+#include "coupler/output/checkpoint_group.hpp"
+#include "coupler/output/field_writer.hpp"
+#include "coupler/output/h5_groups.hpp"
+#include "coupler/output/h5_handle.hpp"
+#include "coupler/output/h5_values.hpp"
+#include "coupler/output/run_series.hpp"
+#include "coupler/output/in_file.hpp"
+#include "coupler/output/text.hpp"
 
 namespace cosim::output {
 namespace {

@@ -76,7 +76,7 @@
 #include <string>
 #include <vector>
 
-#include "output/field_frame.hpp"
+#include "coupler/output/field_frame.hpp"
 
 namespace cosim::output {
 

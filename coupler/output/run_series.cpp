@@ -1,13 +1,13 @@
-#include "output/run_series.hpp"
+#include "coupler/output/run_series.hpp"
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
 
-#include "output/h5_groups.hpp"
-#include "output/h5_handle.hpp"
-#include "output/record_shape.hpp"
+#include "coupler/output/h5_groups.hpp"
+#include "coupler/output/h5_handle.hpp"
+#include "coupler/output/record_shape.hpp"
 
 namespace cosim::output {
 namespace {

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "output/run_file.hpp"
-#include "output/series.hpp"
+#include "coupler/output/run_file.hpp"
+#include "coupler/output/series.hpp"
 
 namespace cosim::output {
 

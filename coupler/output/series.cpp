@@ -1,4 +1,4 @@
-#include "output/series.hpp"
+#include "coupler/output/series.hpp"
 
 #include <utility>
 

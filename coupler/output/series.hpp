@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "output/h5_handle.hpp"
-#include "output/h5_types.hpp"
+#include "coupler/output/h5_handle.hpp"
+#include "coupler/output/h5_types.hpp"
 
 namespace cosim::output {
 

@@ -1,4 +1,4 @@
-#include "output/text.hpp"
+#include "coupler/output/text.hpp"
 
 #include <charconv>
 #include <chrono>

@@ -1,6 +1,6 @@
-#include "output/xdmf.hpp"
+#include "coupler/output/xdmf.hpp"
 
-#include "output/text.hpp"
+#include "coupler/output/text.hpp"
 
 #include <algorithm>
 #include <fstream>

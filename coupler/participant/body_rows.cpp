@@ -1,6 +1,6 @@
-#include "participant/body_rows.hpp"
+#include "coupler/participant/body_rows.hpp"
 
-#include "protocol/message.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::participant {
 

@@ -1,4 +1,4 @@
-#include "participant/mpi_team.hpp"
+#include "coupler/participant/mpi_team.hpp"
 
 #include <array>
 #include <climits>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "protocol/field_message.hpp"
+#include "coupler/protocol/field_message.hpp"
 
 namespace cosim::participant {
 namespace {

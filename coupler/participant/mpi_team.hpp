@@ -12,7 +12,7 @@
 
 #include <functional>
 
-#include "participant/solver.hpp"
+#include "coupler/participant/solver.hpp"
 
 namespace cosim::participant {
 

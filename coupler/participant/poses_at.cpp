@@ -1,8 +1,8 @@
-#include "participant/poses_at.hpp"
+#include "coupler/participant/poses_at.hpp"
 
 #include <cmath>
 
-#include "protocol/message.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::participant {
 

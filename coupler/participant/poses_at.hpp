@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "participant/solver.hpp"
+#include "coupler/participant/solver.hpp"
 
 namespace cosim::participant {
 

@@ -1,10 +1,10 @@
-#include "participant/run_participant.hpp"
+#include "coupler/participant/run_participant.hpp"
 
 #include <chrono>
 #include <iostream>
 
-#include "participant/seconds_since.hpp"
-#include "protocol/field_message.hpp"
+#include "coupler/participant/seconds_since.hpp"
+#include "coupler/protocol/field_message.hpp"
 
 namespace cosim::participant {
 namespace {

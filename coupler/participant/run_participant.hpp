@@ -3,8 +3,8 @@
 // window start and restored when the window is repeated), so solvers need not know.
 #pragma once
 
-#include "participant/solver.hpp"
-#include "protocol/client.hpp"
+#include "coupler/participant/solver.hpp"
+#include "coupler/protocol/client.hpp"
 
 namespace cosim::participant {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "output/field_frame.hpp"
-#include "scene/scene.hpp"
+#include "coupler/output/field_frame.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::participant {
 

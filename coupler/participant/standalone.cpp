@@ -1,11 +1,11 @@
-#include "participant/standalone.hpp"
+#include "coupler/participant/standalone.hpp"
 
 #include <chrono>
 
 #include "cosim_git_hash.hpp"
-#include "output/run_file.hpp"
-#include "participant/seconds_since.hpp"
-#include "protocol/message.hpp"
+#include "coupler/output/run_file.hpp"
+#include "coupler/participant/seconds_since.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::participant {
 namespace {

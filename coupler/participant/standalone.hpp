@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "participant/solver.hpp"
+#include "coupler/participant/solver.hpp"
 
 namespace cosim::participant {
 

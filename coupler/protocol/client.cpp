@@ -1,11 +1,11 @@
-#include "protocol/client.hpp"
+#include "coupler/protocol/client.hpp"
 
 #include <algorithm>
 #include <cstdlib>
 
 #include <zmq_addon.hpp>
 
-#include "protocol/socket.hpp"
+#include "coupler/protocol/socket.hpp"
 
 namespace cosim::protocol {
 namespace {

@@ -9,8 +9,8 @@
 
 #include <zmq.hpp>
 
-#include "protocol/curve.hpp"
-#include "protocol/message.hpp"
+#include "coupler/protocol/curve.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::protocol {
 

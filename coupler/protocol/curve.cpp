@@ -1,4 +1,4 @@
-#include "protocol/curve.hpp"
+#include "coupler/protocol/curve.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 
 #include <zmq.h>
 
-#include "protocol/message.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::protocol::curve {
 

@@ -2,8 +2,8 @@
 #include <cstdint>
 #include <cstring>
 
-#include "protocol/layout.hpp"
-#include "protocol/rules.hpp"
+#include "coupler/protocol/layout.hpp"
+#include "coupler/protocol/rules.hpp"
 
 namespace cosim::protocol {
 namespace {

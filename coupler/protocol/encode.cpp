@@ -1,7 +1,7 @@
 #include <cstring>
 
-#include "protocol/layout.hpp"
-#include "protocol/rules.hpp"
+#include "coupler/protocol/layout.hpp"
+#include "coupler/protocol/rules.hpp"
 
 namespace cosim::protocol {
 namespace {

@@ -1,4 +1,4 @@
-#include "protocol/field_message.hpp"
+#include "coupler/protocol/field_message.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <utility>
 #include <variant>
 
-#include "protocol/point_set_arrays.hpp"
+#include "coupler/protocol/point_set_arrays.hpp"
 
 namespace cosim::protocol {
 namespace {

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "output/field_frame.hpp"
-#include "protocol/message.hpp"
+#include "coupler/output/field_frame.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::protocol {
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "protocol/message.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::protocol::layout {
 

@@ -1,9 +1,9 @@
-#include "protocol/message.hpp"
+#include "coupler/protocol/message.hpp"
 
 #include <algorithm>
 #include <cstdint>
 
-#include "protocol/rules.hpp"
+#include "coupler/protocol/rules.hpp"
 
 namespace cosim::protocol {
 namespace {

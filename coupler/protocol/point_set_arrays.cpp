@@ -1,4 +1,4 @@
-#include "protocol/point_set_arrays.hpp"
+#include "coupler/protocol/point_set_arrays.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <iterator>
 
-#include "protocol/rules.hpp"
+#include "coupler/protocol/rules.hpp"
 
 namespace cosim::protocol {
 namespace {

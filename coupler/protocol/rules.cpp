@@ -1,4 +1,4 @@
-#include "protocol/rules.hpp"
+#include "coupler/protocol/rules.hpp"
 
 #include <algorithm>
 #include <charconv>

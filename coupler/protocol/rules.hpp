@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "protocol/message.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::protocol::rules {
 

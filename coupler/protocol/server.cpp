@@ -1,4 +1,4 @@
-#include "protocol/server.hpp"
+#include "coupler/protocol/server.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -6,8 +6,8 @@
 
 #include <zmq_addon.hpp>
 
-#include "protocol/rules.hpp"
-#include "protocol/socket.hpp"
+#include "coupler/protocol/rules.hpp"
+#include "coupler/protocol/socket.hpp"
 
 namespace cosim::protocol {
 namespace {

@@ -10,10 +10,10 @@
 
 #include <zmq.hpp>
 
-#include "protocol/curve.hpp"
-#include "protocol/message.hpp"
-#include "protocol/socket_events.hpp"
-#include "protocol/zap_handler.hpp"
+#include "coupler/protocol/curve.hpp"
+#include "coupler/protocol/message.hpp"
+#include "coupler/protocol/socket_events.hpp"
+#include "coupler/protocol/zap_handler.hpp"
 
 namespace cosim::protocol {
 

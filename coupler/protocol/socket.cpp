@@ -1,4 +1,4 @@
-#include "protocol/socket.hpp"
+#include "coupler/protocol/socket.hpp"
 
 #include <cerrno>
 #include <iterator>

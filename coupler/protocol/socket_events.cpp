@@ -1,4 +1,4 @@
-#include "protocol/socket_events.hpp"
+#include "coupler/protocol/socket_events.hpp"
 
 #include <cstdint>
 #include <cstdio>

@@ -1,11 +1,11 @@
-#include "protocol/zap_handler.hpp"
+#include "coupler/protocol/zap_handler.hpp"
 
 #include <array>
 #include <vector>
 
 #include <zmq_addon.hpp>
 
-#include "protocol/rules.hpp"
+#include "coupler/protocol/rules.hpp"
 
 namespace cosim::protocol {
 namespace {

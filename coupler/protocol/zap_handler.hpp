@@ -9,7 +9,7 @@
 
 #include <zmq.hpp>
 
-#include "protocol/curve.hpp"
+#include "coupler/protocol/curve.hpp"
 
 namespace cosim::protocol {
 

@@ -1,15 +1,15 @@
-#include "run/coupler.hpp"
+#include "coupler/run/coupler.hpp"
 
 #include <spdlog/spdlog.h>
 
 #include <chrono>
 
 #include "cosim_git_hash.hpp"
-#include "launcher/process.hpp"
-#include "output/run_file.hpp"
-#include "run/failure.hpp"
-#include "run/interrupt.hpp"
-#include "run/session.hpp"
+#include "coupler/launcher/process.hpp"
+#include "coupler/output/run_file.hpp"
+#include "coupler/run/failure.hpp"
+#include "coupler/run/interrupt.hpp"
+#include "coupler/run/session.hpp"
 
 namespace cosim::run {
 namespace fs = std::filesystem;

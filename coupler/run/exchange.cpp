@@ -1,8 +1,8 @@
-#include "run/exchange.hpp"
+#include "coupler/run/exchange.hpp"
 
 #include <fmt/format.h>
 
-#include "run/failure.hpp"
+#include "coupler/run/failure.hpp"
 
 namespace cosim::run {
 

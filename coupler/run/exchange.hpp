@@ -8,8 +8,8 @@
 
 #include <Eigen/Dense>
 
-#include "protocol/message.hpp"
-#include "scene/scene.hpp"
+#include "coupler/protocol/message.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::run {
 

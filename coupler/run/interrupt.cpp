@@ -1,4 +1,4 @@
-#include "run/interrupt.hpp"
+#include "coupler/run/interrupt.hpp"
 
 #include <csignal>
 

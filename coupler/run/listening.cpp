@@ -1,4 +1,4 @@
-#include "run/listening.hpp"
+#include "coupler/run/listening.hpp"
 
 #include <cmath>
 

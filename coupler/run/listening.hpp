@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "protocol/server.hpp"
-#include "scene/scene.hpp"
+#include "coupler/protocol/server.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::run {
 

@@ -1,4 +1,4 @@
-#include "run/peers.hpp"
+#include "coupler/run/peers.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -6,8 +6,8 @@
 
 #include <thread>
 
-#include "run/failure.hpp"
-#include "run/interrupt.hpp"
+#include "coupler/run/failure.hpp"
+#include "coupler/run/interrupt.hpp"
 
 namespace cosim::run {
 namespace {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "launcher/process.hpp"
-#include "protocol/message.hpp"
-#include "protocol/server.hpp"
+#include "coupler/launcher/process.hpp"
+#include "coupler/protocol/message.hpp"
+#include "coupler/protocol/server.hpp"
 
 namespace cosim::run {
 

@@ -1,4 +1,4 @@
-#include "run/progress.hpp"
+#include "coupler/run/progress.hpp"
 
 #include <unistd.h>
 

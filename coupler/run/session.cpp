@@ -1,4 +1,4 @@
-#include "run/session.hpp"
+#include "coupler/run/session.hpp"
 
 #include <spdlog/spdlog.h>
 #include <stdlib.h>
@@ -9,14 +9,14 @@
 #include <map>
 #include <set>
 
-#include "launcher/command.hpp"
-#include "protocol/client.hpp"
-#include "protocol/field_message.hpp"
-#include "run/failure.hpp"
-#include "run/listening.hpp"
-#include "run/progress.hpp"
-#include "scene/error.hpp"
-#include "scene/unused_materials.hpp"
+#include "coupler/launcher/command.hpp"
+#include "coupler/protocol/client.hpp"
+#include "coupler/protocol/field_message.hpp"
+#include "coupler/run/failure.hpp"
+#include "coupler/run/listening.hpp"
+#include "coupler/run/progress.hpp"
+#include "coupler/scene/error.hpp"
+#include "coupler/scene/unused_materials.hpp"
 
 namespace cosim::run {
 namespace fs = std::filesystem;

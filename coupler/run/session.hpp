@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "output/run_file.hpp"
-#include "run/exchange.hpp"
-#include "run/peers.hpp"
-#include "run/window.hpp"
-#include "scene/plan.hpp"
-#include "scene/scene.hpp"
+#include "coupler/output/run_file.hpp"
+#include "coupler/run/exchange.hpp"
+#include "coupler/run/peers.hpp"
+#include "coupler/run/window.hpp"
+#include "coupler/scene/plan.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::run {
 

@@ -1,9 +1,9 @@
-#include "run/window.hpp"
+#include "coupler/run/window.hpp"
 
 #include <algorithm>
 
-#include "protocol/field_message.hpp"
-#include "run/failure.hpp"
+#include "coupler/protocol/field_message.hpp"
+#include "coupler/run/failure.hpp"
 
 namespace cosim::run {
 namespace {

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "coupling/acceleration.hpp"
-#include "run/exchange.hpp"
-#include "run/peers.hpp"
+#include "coupler/coupling/acceleration.hpp"
+#include "coupler/run/exchange.hpp"
+#include "coupler/run/peers.hpp"
 
 namespace cosim::run {
 

@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "scene/extent.hpp"
-#include "scene/names.hpp"
-#include "scene/sections.hpp"
+#include "coupler/scene/extent.hpp"
+#include "coupler/scene/names.hpp"
+#include "coupler/scene/sections.hpp"
 
 namespace cosim::scene {
 namespace {

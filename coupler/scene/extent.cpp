@@ -1,4 +1,4 @@
-#include "scene/extent.hpp"
+#include "coupler/scene/extent.hpp"
 
 #include <Eigen/Geometry>
 

@@ -1,7 +1,7 @@
 // How far a shape reaches from its body's position along each world axis.
 #pragma once
 
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::scene {
 

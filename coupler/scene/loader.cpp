@@ -5,10 +5,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "scene/error.hpp"
-#include "scene/names.hpp"
-#include "scene/plan.hpp"
-#include "scene/sections.hpp"
+#include "coupler/scene/error.hpp"
+#include "coupler/scene/names.hpp"
+#include "coupler/scene/plan.hpp"
+#include "coupler/scene/sections.hpp"
 
 namespace cosim::scene {
 namespace {

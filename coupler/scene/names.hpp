@@ -5,8 +5,8 @@
 #include <array>
 #include <string>
 
-#include "scene/reader.hpp"
-#include "scene/scene.hpp"
+#include "coupler/scene/reader.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::scene {
 

@@ -4,9 +4,9 @@
 #include <cctype>
 #include <filesystem>
 
-#include "scene/names.hpp"
-#include "scene/plan.hpp"
-#include "scene/sections.hpp"
+#include "coupler/scene/names.hpp"
+#include "coupler/scene/plan.hpp"
+#include "coupler/scene/sections.hpp"
 
 namespace cosim::scene {
 namespace {

@@ -1,4 +1,4 @@
-#include "scene/plan.hpp"
+#include "coupler/scene/plan.hpp"
 
 #include <fmt/format.h>
 
@@ -6,8 +6,8 @@
 #include <array>
 #include <optional>
 
-#include "scene/error.hpp"
-#include "scene/names.hpp"
+#include "coupler/scene/error.hpp"
+#include "coupler/scene/names.hpp"
 
 namespace cosim::scene {
 namespace {

@@ -1,4 +1,4 @@
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <optional>
 
-#include "scene/error.hpp"
+#include "coupler/scene/error.hpp"
 
 namespace cosim::scene {
 namespace {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::scene {
 

@@ -1,9 +1,9 @@
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "scene/names.hpp"
+#include "coupler/scene/names.hpp"
 
 namespace cosim::scene {
 

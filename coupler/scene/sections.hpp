@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/reader.hpp"
-#include "scene/scene.hpp"
+#include "coupler/scene/reader.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::scene {
 

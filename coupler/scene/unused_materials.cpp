@@ -1,4 +1,4 @@
-#include "scene/unused_materials.hpp"
+#include "coupler/scene/unused_materials.hpp"
 
 #include <fmt/format.h>
 

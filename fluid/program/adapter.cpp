@@ -7,9 +7,9 @@
 #include "fluid/program/body_surfaces.hpp"
 #include "fluid/program/cell_fields.hpp"
 #include "fluid/program/petsc_flags.hpp"
-#include "participant/body_rows.hpp"
-#include "participant/poses_at.hpp"
-#include "protocol/message.hpp"
+#include "coupler/participant/body_rows.hpp"
+#include "coupler/participant/poses_at.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::program {
 namespace {

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "fluid/program/scene_fluid.hpp"
-#include "participant/solver.hpp"
+#include "coupler/participant/solver.hpp"
 
 namespace cosim::program {
 

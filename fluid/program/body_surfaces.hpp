@@ -9,7 +9,7 @@
 
 #include "fluid/body_treatment.hpp"
 #include "fluid/grid.hpp"
-#include "output/field_frame.hpp"
+#include "coupler/output/field_frame.hpp"
 
 namespace cosim::program {
 

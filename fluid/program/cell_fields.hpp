@@ -5,7 +5,7 @@
 
 #include "fluid/body_treatment.hpp"
 #include "fluid/navier_stokes.hpp"
-#include "output/field_frame.hpp"
+#include "coupler/output/field_frame.hpp"
 
 namespace cosim::program {
 

@@ -15,10 +15,10 @@
 #include "fluid/program/adapter.hpp"
 #include "fluid/program/scene_fluid.hpp"
 #include "fluid/program/standalone.hpp"
-#include "participant/mpi_team.hpp"
-#include "participant/program_args.hpp"
-#include "participant/run_participant.hpp"
-#include "scene/error.hpp"
+#include "coupler/participant/mpi_team.hpp"
+#include "coupler/participant/program_args.hpp"
+#include "coupler/participant/run_participant.hpp"
+#include "coupler/scene/error.hpp"
 
 namespace {
 

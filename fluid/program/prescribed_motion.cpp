@@ -5,9 +5,9 @@
 #include <numbers>
 #include <string>
 
-#include "participant/body_rows.hpp"
-#include "protocol/message.hpp"
-#include "scene/eigen.hpp"
+#include "coupler/participant/body_rows.hpp"
+#include "coupler/protocol/message.hpp"
+#include "coupler/scene/eigen.hpp"
 
 namespace cosim::program {
 namespace {

@@ -6,7 +6,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 
 namespace cosim::program {
 

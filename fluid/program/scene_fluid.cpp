@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "rigidbody/program/scene_shape.hpp"
-#include "scene/eigen.hpp"
-#include "scene/error.hpp"
-#include "scene/reader.hpp"
+#include "coupler/scene/eigen.hpp"
+#include "coupler/scene/error.hpp"
+#include "coupler/scene/reader.hpp"
 
 namespace cosim::program {
 namespace {

@@ -12,7 +12,7 @@
 #include "fluid/navier_stokes.hpp"
 #include "fluid/program/petsc_flags.hpp"
 #include "fluid/program/prescribed_motion.hpp"
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::program {
 

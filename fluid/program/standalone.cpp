@@ -5,9 +5,9 @@
 #include <cstdio>
 
 #include "fluid/program/adapter.hpp"
-#include "participant/mpi_team.hpp"
-#include "participant/stage_summary.hpp"
-#include "participant/standalone.hpp"
+#include "coupler/participant/mpi_team.hpp"
+#include "coupler/participant/stage_summary.hpp"
+#include "coupler/participant/standalone.hpp"
 
 namespace cosim::program {
 

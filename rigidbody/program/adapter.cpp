@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "participant/body_rows.hpp"
-#include "protocol/message.hpp"
+#include "coupler/participant/body_rows.hpp"
+#include "coupler/protocol/message.hpp"
 #include "rigidbody/program/scene_world.hpp"
 
 namespace cosim::program {

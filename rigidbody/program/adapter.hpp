@@ -5,7 +5,7 @@
 
 #include <memory>
 
-#include "participant/solver.hpp"
+#include "coupler/participant/solver.hpp"
 #include "rigidbody/program/virtual_mass.hpp"
 #include "rigidbody/world/world.hpp"
 

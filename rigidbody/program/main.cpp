@@ -6,12 +6,12 @@
 
 #include <spdlog/spdlog.h>
 
-#include "participant/program_args.hpp"
-#include "participant/run_participant.hpp"
+#include "coupler/participant/program_args.hpp"
+#include "coupler/participant/run_participant.hpp"
 #include "rigidbody/program/adapter.hpp"
 #include "rigidbody/program/scene_world.hpp"
 #include "rigidbody/program/standalone.hpp"
-#include "scene/error.hpp"
+#include "coupler/scene/error.hpp"
 
 int main(int argc, char** argv) {
   // The coupler prints participants' output among its own: say whose a warning is.

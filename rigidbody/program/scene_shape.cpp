@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "scene/eigen.hpp"
+#include "coupler/scene/eigen.hpp"
 
 namespace cosim::program {
 

@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 
 #include "rigidbody/geometry/shape.hpp"
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::program {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "rigidbody/world/world.hpp"
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 
 namespace cosim::program {
 

@@ -2,9 +2,9 @@
 
 #include <spdlog/spdlog.h>
 
-#include "participant/standalone.hpp"
+#include "coupler/participant/standalone.hpp"
 #include "rigidbody/program/adapter.hpp"
-#include "scene/unused_materials.hpp"
+#include "coupler/scene/unused_materials.hpp"
 
 namespace cosim::program {
 

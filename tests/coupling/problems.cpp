@@ -1,4 +1,4 @@
-#include "problems.hpp"
+#include "tests/coupling/problems.hpp"
 
 #include <iomanip>
 #include <iostream>

@@ -9,7 +9,7 @@
 
 #include <Eigen/Dense>
 
-#include "coupling/acceleration.hpp"
+#include "coupler/coupling/acceleration.hpp"
 
 namespace cosim::coupling::test {
 

@@ -1,7 +1,7 @@
 // Aitken's properties that the multi-dimensional comparisons cannot show.
 #include <gtest/gtest.h>
 
-#include "problems.hpp"
+#include "tests/coupling/problems.hpp"
 
 namespace cosim::coupling::test {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "problems.hpp"
+#include "tests/coupling/problems.hpp"
 
 namespace cosim::coupling::test {
 namespace {

@@ -1,8 +1,8 @@
 // The QR filter: dependent columns must be dropped, not divided by.
 #include <gtest/gtest.h>
 
-#include "coupling/least_squares.hpp"
-#include "problems.hpp"
+#include "coupler/coupling/least_squares.hpp"
+#include "tests/coupling/problems.hpp"
 
 namespace cosim::coupling::test {
 namespace {

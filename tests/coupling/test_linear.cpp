@@ -2,7 +2,7 @@
 // exact finite-termination property to check.
 #include <gtest/gtest.h>
 
-#include "problems.hpp"
+#include "tests/coupling/problems.hpp"
 
 namespace cosim::coupling::test {
 namespace {

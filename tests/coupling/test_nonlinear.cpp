@@ -1,7 +1,7 @@
 // A nonlinear problem, H(x) = b - c tanh(x), unstable for plain iteration near 0.
 #include <gtest/gtest.h>
 
-#include "problems.hpp"
+#include "tests/coupling/problems.hpp"
 
 namespace cosim::coupling::test {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "problems.hpp"
+#include "tests/coupling/problems.hpp"
 
 namespace cosim::coupling::test {
 namespace {

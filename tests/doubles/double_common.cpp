@@ -1,11 +1,11 @@
-#include "double_common.hpp"
+#include "tests/doubles/double_common.hpp"
 
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
-#include "participant/run_participant.hpp"
+#include "coupler/participant/run_participant.hpp"
 #include <thread>
 
 namespace cosim::doubles {

@@ -4,9 +4,9 @@
 
 #include <limits>
 
-#include "participant/solver.hpp"
-#include "protocol/message.hpp"
-#include "scene/reader.hpp"
+#include "coupler/participant/solver.hpp"
+#include "coupler/protocol/message.hpp"
+#include "coupler/scene/reader.hpp"
 
 namespace cosim::doubles {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "double_common.hpp"
+#include "tests/doubles/double_common.hpp"
 
 namespace cosim::doubles {
 namespace {

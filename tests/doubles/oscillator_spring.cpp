@@ -2,7 +2,7 @@
 // spring force on the first dynamic body. See README.md.
 #include <cmath>
 
-#include "double_common.hpp"
+#include "tests/doubles/double_common.hpp"
 
 namespace cosim::doubles {
 namespace {

@@ -1,4 +1,4 @@
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 
 #include <gtest/gtest.h>
 

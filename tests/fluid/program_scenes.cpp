@@ -1,4 +1,4 @@
-#include "program_scenes.hpp"
+#include "tests/fluid/program_scenes.hpp"
 
 #include <fmt/format.h>
 

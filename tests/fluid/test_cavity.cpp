@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 
 namespace cosim::fluid {
 namespace {

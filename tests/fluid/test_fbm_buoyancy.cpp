@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 #include "fluid/fictitious_boundary.hpp"
 
 namespace cosim::fluid {

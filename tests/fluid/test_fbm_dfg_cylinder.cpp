@@ -10,7 +10,7 @@
 #include <cmath>
 #include <vector>
 
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 #include "fluid/fictitious_boundary.hpp"
 
 namespace cosim::fluid {

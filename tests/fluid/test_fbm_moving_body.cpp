@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 #include "fluid/connected_cells.hpp"
 #include "fluid/fictitious_boundary.hpp"
 #include "fluid/local_velocity.hpp"

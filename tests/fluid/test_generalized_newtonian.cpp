@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 #include "fluid/local_velocity.hpp"
 #include "fluid/viscous_cross_terms.hpp"
 #include "fluid/viscous_stencil.hpp"

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cases.hpp"
+#include "bench/fluid_accuracy/cases.hpp"
 
 namespace cosim::fluid {
 namespace {

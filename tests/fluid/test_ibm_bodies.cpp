@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 #include "fluid/body_methods.hpp"
 #include "fluid/ibm/volume_fraction.hpp"
 

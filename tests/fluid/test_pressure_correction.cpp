@@ -10,7 +10,7 @@
 #include <array>
 #include <cmath>
 
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 #include "fluid/fictitious_boundary.hpp"
 
 namespace cosim::fluid {

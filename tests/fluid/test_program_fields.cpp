@@ -4,11 +4,11 @@
 #include <cmath>
 #include <filesystem>
 
-#include "cosim_process.hpp"
-#include "h5_read.hpp"
-#include "program_scenes.hpp"
-#include "standalone_run.hpp"
-#include "xdmf_check.hpp"
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
+#include "tests/fluid/program_scenes.hpp"
+#include "tests/integration/standalone_run.hpp"
+#include "tests/integration/xdmf_check.hpp"
 
 namespace cosim::testing {
 namespace {

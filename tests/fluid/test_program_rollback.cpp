@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "fluid/program/adapter.hpp"
-#include "program_scenes.hpp"
+#include "tests/fluid/program_scenes.hpp"
 
 namespace cosim::program {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "fluid/program/scene_fluid.hpp"
-#include "program_scenes.hpp"
-#include "scene/error.hpp"
+#include "tests/fluid/program_scenes.hpp"
+#include "coupler/scene/error.hpp"
 
 namespace cosim::program {
 namespace {

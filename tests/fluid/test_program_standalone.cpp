@@ -10,10 +10,10 @@
 #include <numbers>
 #include <utility>
 
-#include "cosim_process.hpp"
-#include "h5_read.hpp"
-#include "program_scenes.hpp"
-#include "standalone_run.hpp"
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
+#include "tests/fluid/program_scenes.hpp"
+#include "tests/integration/standalone_run.hpp"
 
 namespace cosim::testing {
 namespace {

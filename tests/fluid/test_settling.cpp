@@ -16,8 +16,8 @@
 #include <sstream>
 #include <string>
 
-#include "cosim_process.hpp"
-#include "h5_read.hpp"
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -5,7 +5,7 @@
 // Cate's tank seen from the sphere"). The case is in bench/fluid_accuracy/cases.hpp.
 #include <gtest/gtest.h>
 
-#include "cases.hpp"
+#include "bench/fluid_accuracy/cases.hpp"
 
 namespace cosim::fluid {
 namespace {

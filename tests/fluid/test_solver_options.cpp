@@ -6,7 +6,7 @@
 
 #include <stdexcept>
 
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 
 namespace cosim::fluid {
 namespace {

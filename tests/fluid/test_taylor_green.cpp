@@ -8,7 +8,7 @@
 #include <numbers>
 #include <vector>
 
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 
 namespace cosim::fluid {
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "flow_checks.hpp"
+#include "tests/fluid/flow_checks.hpp"
 #include "fluid/body_methods.hpp"
 
 namespace cosim::fluid {

@@ -1,4 +1,4 @@
-#include "cosim_process.hpp"
+#include "tests/integration/cosim_process.hpp"
 
 #include <fcntl.h>
 #include <sys/wait.h>

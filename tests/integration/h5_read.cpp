@@ -1,4 +1,4 @@
-#include "h5_read.hpp"
+#include "tests/integration/h5_read.hpp"
 
 #include <hdf5.h>
 

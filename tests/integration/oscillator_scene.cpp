@@ -1,4 +1,4 @@
-#include "oscillator_scene.hpp"
+#include "tests/integration/oscillator_scene.hpp"
 
 #include <cmath>
 #include <numbers>

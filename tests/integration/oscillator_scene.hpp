@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "oscillator_exact.hpp"
+#include "tests/doubles/oscillator_exact.hpp"
 
 namespace cosim::testing {
 

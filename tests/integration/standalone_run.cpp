@@ -1,4 +1,4 @@
-#include "standalone_run.hpp"
+#include "tests/integration/standalone_run.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "launcher/command.hpp"
+#include "coupler/launcher/command.hpp"
 
 namespace cosim::testing {
 

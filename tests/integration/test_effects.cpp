@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "cosim_process.hpp"
-#include "h5_read.hpp"
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -12,11 +12,11 @@
 #include <regex>
 #include <thread>
 
-#include "cosim_process.hpp"
-#include "h5_read.hpp"
-#include "launcher/command.hpp"
-#include "launcher/process.hpp"
-#include "oscillator_scene.hpp"
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
+#include "coupler/launcher/command.hpp"
+#include "coupler/launcher/process.hpp"
+#include "tests/integration/oscillator_scene.hpp"
 
 namespace cosim::testing {
 namespace {

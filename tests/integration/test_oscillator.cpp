@@ -7,9 +7,9 @@
 #include <cmath>
 #include <iostream>
 
-#include "cosim_process.hpp"
-#include "h5_read.hpp"
-#include "oscillator_scene.hpp"
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
+#include "tests/integration/oscillator_scene.hpp"
 
 namespace cosim::testing {
 namespace {

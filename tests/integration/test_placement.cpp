@@ -6,9 +6,9 @@
 
 #include <filesystem>
 
-#include "cosim_process.hpp"
-#include "h5_read.hpp"
-#include "oscillator_scene.hpp"
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
+#include "tests/integration/oscillator_scene.hpp"
 
 namespace cosim::testing {
 namespace {

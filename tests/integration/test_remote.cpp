@@ -13,11 +13,11 @@
 
 #include <zmq_addon.hpp>
 
-#include "cosim_process.hpp"
-#include "h5_read.hpp"
-#include "oscillator_scene.hpp"
-#include "protocol/curve.hpp"
-#include "protocol/message.hpp"
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
+#include "tests/integration/oscillator_scene.hpp"
+#include "coupler/protocol/curve.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::testing {
 namespace {

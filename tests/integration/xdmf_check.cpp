@@ -1,4 +1,4 @@
-#include "xdmf_check.hpp"
+#include "tests/integration/xdmf_check.hpp"
 
 #include <iterator>
 #include <regex>

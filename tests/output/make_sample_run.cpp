@@ -6,7 +6,7 @@
 #include <exception>
 #include <string>
 
-#include "output/run_file.hpp"
+#include "coupler/output/run_file.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "output/field_frame.hpp"
+#include "coupler/output/field_frame.hpp"
 
 namespace cosim::output::test {
 

@@ -9,11 +9,11 @@
 #include <functional>
 #include <iterator>
 
-#include "h5_read.hpp"
-#include "output/run_file.hpp"
-#include "polyhedral_frame.hpp"
-#include "temp_dir.hpp"
-#include "xdmf_check.hpp"
+#include "tests/output/h5_read.hpp"
+#include "coupler/output/run_file.hpp"
+#include "tests/output/polyhedral_frame.hpp"
+#include "tests/output/temp_dir.hpp"
+#include "tests/integration/xdmf_check.hpp"
 
 namespace cosim::output::test {
 namespace {

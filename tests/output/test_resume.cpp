@@ -8,11 +8,11 @@
 #include <random>
 #include <utility>
 
-#include "h5_read.hpp"
-#include "output/run_file.hpp"
-#include "polyhedral_frame.hpp"
-#include "sample_run.hpp"
-#include "temp_dir.hpp"
+#include "tests/output/h5_read.hpp"
+#include "coupler/output/run_file.hpp"
+#include "tests/output/polyhedral_frame.hpp"
+#include "tests/output/sample_run.hpp"
+#include "tests/output/temp_dir.hpp"
 
 namespace cosim::output::test {
 namespace {

@@ -9,13 +9,13 @@
 #include <cstdio>
 #include <regex>
 
-#include "h5_read.hpp"
-#include "output/h5_handle.hpp"
-#include "output/h5_values.hpp"
-#include "output/run_file.hpp"
-#include "output/series.hpp"
-#include "sample_run.hpp"
-#include "temp_dir.hpp"
+#include "tests/output/h5_read.hpp"
+#include "coupler/output/h5_handle.hpp"
+#include "coupler/output/h5_values.hpp"
+#include "coupler/output/run_file.hpp"
+#include "coupler/output/series.hpp"
+#include "tests/output/sample_run.hpp"
+#include "tests/output/temp_dir.hpp"
 
 namespace cosim::output::test {
 namespace {

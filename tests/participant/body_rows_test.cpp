@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "participant/body_rows.hpp"
-#include "protocol/message.hpp"
+#include "coupler/participant/body_rows.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::participant {
 namespace {

@@ -2,8 +2,8 @@
 // and forces at the window's start and end, and a forwarded field frame after them.
 #include <gtest/gtest.h>
 
-#include "participant/run_participant.hpp"
-#include "protocol/field_message.hpp"
+#include "coupler/participant/run_participant.hpp"
+#include "coupler/protocol/field_message.hpp"
 
 namespace cosim::participant {
 namespace {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
-#include "participant/mpi_team.hpp"
+#include "coupler/participant/mpi_team.hpp"
 
 namespace cosim::participant {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "protocol/field_message.hpp"
-#include "wire.hpp"
+#include "coupler/protocol/field_message.hpp"
+#include "tests/protocol/wire.hpp"
 
 namespace cosim::protocol {
 namespace {

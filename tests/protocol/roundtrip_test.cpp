@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "wire.hpp"
+#include "tests/protocol/wire.hpp"
 
 namespace cosim::protocol {
 namespace {

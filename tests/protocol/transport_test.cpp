@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <zmq_addon.hpp>
 
-#include "protocol/client.hpp"
-#include "protocol/server.hpp"
+#include "coupler/protocol/client.hpp"
+#include "coupler/protocol/server.hpp"
 
 namespace cosim::protocol {
 namespace {

@@ -5,8 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "protocol/layout.hpp"
-#include "wire.hpp"
+#include "coupler/protocol/layout.hpp"
+#include "tests/protocol/wire.hpp"
 
 namespace cosim::protocol {
 namespace {

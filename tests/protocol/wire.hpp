@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "protocol/message.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::protocol::testing {
 

@@ -1,4 +1,4 @@
-#include "scene/error.hpp"
+#include "coupler/scene/error.hpp"
 
 #include <gtest/gtest.h>
 

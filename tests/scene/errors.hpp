@@ -3,8 +3,8 @@
 #include <functional>
 #include <string>
 
-#include "scene/error.hpp"
-#include "scene/scene.hpp"
+#include "coupler/scene/error.hpp"
+#include "coupler/scene/scene.hpp"
 
 // The message of the SceneError `f` throws, or "" if it throws none.
 inline std::string thrown(const std::function<void()>& f) {

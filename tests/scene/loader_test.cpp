@@ -3,9 +3,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "errors.hpp"
-#include "scene/plan.hpp"
-#include "scene/reader.hpp"
+#include "tests/scene/errors.hpp"
+#include "coupler/scene/plan.hpp"
+#include "coupler/scene/reader.hpp"
 
 namespace cosim::scene {
 namespace {

@@ -1,8 +1,8 @@
-#include "scene/plan.hpp"
+#include "coupler/scene/plan.hpp"
 
 #include <gtest/gtest.h>
 
-#include "errors.hpp"
+#include "tests/scene/errors.hpp"
 
 namespace cosim::scene {
 namespace {

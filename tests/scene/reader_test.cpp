@@ -1,11 +1,11 @@
 // Reader is also the API every program validates its own options with.
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 
 #include <gtest/gtest.h>
 
 #include <array>
 
-#include "errors.hpp"
+#include "tests/scene/errors.hpp"
 
 namespace cosim::scene {
 namespace {

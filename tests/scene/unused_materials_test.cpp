@@ -2,8 +2,8 @@
 // key with file and line, and the missing effect.
 #include <gtest/gtest.h>
 
-#include "errors.hpp"
-#include "scene/unused_materials.hpp"
+#include "tests/scene/errors.hpp"
+#include "coupler/scene/unused_materials.hpp"
 
 namespace {
 

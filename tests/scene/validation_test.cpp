@@ -1,7 +1,7 @@
 // Every way a scene can be wrong, with the exact message the user sees. `head` is lines 1-3.
 #include <gtest/gtest.h>
 
-#include "errors.hpp"
+#include "tests/scene/errors.hpp"
 
 namespace {
 

@@ -4,12 +4,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "participant/body_rows.hpp"
-#include "participant/poses_at.hpp"
+#include "coupler/participant/body_rows.hpp"
+#include "coupler/participant/poses_at.hpp"
 #include "tracker/program/cell_fields.hpp"
 #include "tracker/program/particle_dump.hpp"
 #include "tracker/program/velocity_input.hpp"
-#include "protocol/message.hpp"
+#include "coupler/protocol/message.hpp"
 
 namespace cosim::tracker {
 namespace {

@@ -10,7 +10,7 @@
 
 #include <memory>
 
-#include "participant/solver.hpp"
+#include "coupler/participant/solver.hpp"
 #include "tracker/program/simulation.hpp"
 
 namespace cosim::tracker {

@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "output/field_frame.hpp"
+#include "coupler/output/field_frame.hpp"
 #include "tracker/tracking/sampling.hpp"
 
 namespace cosim::tracker {

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "scene/eigen.hpp"
-#include "scene/error.hpp"
+#include "coupler/scene/eigen.hpp"
+#include "coupler/scene/error.hpp"
 #include "tracker/csg/shapes.hpp"
 
 namespace cosim::tracker {

@@ -16,7 +16,7 @@
 // Errors name the file, line and key (scene::SceneError), for a balls file its line too.
 #pragma once
 
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 #include "tracker/csg/expression.hpp"
 
 namespace cosim::tracker {

@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "participant/mpi_team.hpp"
-#include "participant/program_args.hpp"
-#include "participant/run_participant.hpp"
-#include "protocol/client.hpp"
-#include "scene/error.hpp"
+#include "coupler/participant/mpi_team.hpp"
+#include "coupler/participant/program_args.hpp"
+#include "coupler/participant/run_participant.hpp"
+#include "coupler/protocol/client.hpp"
+#include "coupler/scene/error.hpp"
 #include "tracker/program/adapter.hpp"
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/standalone.hpp"

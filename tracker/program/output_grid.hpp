@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "output/field_frame.hpp"
+#include "coupler/output/field_frame.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/mesh.hpp"
 

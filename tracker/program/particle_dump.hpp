@@ -18,7 +18,7 @@
 // particle cannot be followed from one write to the next.
 #pragma once
 
-#include "output/field_frame.hpp"
+#include "coupler/output/field_frame.hpp"
 #include "tracker/program/simulation.hpp"
 
 namespace cosim::tracker {

@@ -10,7 +10,7 @@
 // (Simulation::step, tracker/parallel/README.md).
 #pragma once
 
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 
 namespace cosim::tracker {
 

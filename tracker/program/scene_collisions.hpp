@@ -11,7 +11,7 @@
 
 #include <optional>
 
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 #include "tracker/dsmc/collision.hpp"
 
 namespace cosim::tracker {

@@ -10,7 +10,7 @@
 // particles.weight). Errors are scene::SceneError naming file, line, key and value.
 #pragma once
 
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 #include "tracker/tracking/inflow.hpp"
 
 namespace cosim::tracker {

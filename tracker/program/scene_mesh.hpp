@@ -15,7 +15,7 @@
 // scene::SceneError naming the key, with the mesh's own report.
 #pragma once
 
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 
 #include <functional>

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "scene/eigen.hpp"
+#include "coupler/scene/eigen.hpp"
 #include "tracker/csg/shapes.hpp"
 #include "tracker/program/csg_shape.hpp"
 #include "tracker/program/scene_walls.hpp"

@@ -17,8 +17,8 @@
 
 #include <vector>
 
-#include "scene/reader.hpp"
-#include "scene/scene.hpp"
+#include "coupler/scene/reader.hpp"
+#include "coupler/scene/scene.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
 namespace cosim::tracker {

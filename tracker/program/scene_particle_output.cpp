@@ -1,6 +1,6 @@
 #include "tracker/program/scene_particle_output.hpp"
 
-#include "output/field_frame.hpp"
+#include "coupler/output/field_frame.hpp"
 
 namespace cosim::tracker {
 

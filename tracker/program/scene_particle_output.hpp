@@ -19,7 +19,7 @@
 #include <optional>
 #include <string>
 
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
 namespace cosim::tracker {

@@ -15,8 +15,8 @@
 
 #include <optional>
 
-#include "scene/reader.hpp"
-#include "scene/scene.hpp"
+#include "coupler/scene/reader.hpp"
+#include "coupler/scene/scene.hpp"
 #include "tracker/tracers/advance.hpp"
 
 namespace cosim::tracker {

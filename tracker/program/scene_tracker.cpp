@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "scene/error.hpp"
+#include "coupler/scene/error.hpp"
 #include "tracker/mesh/box_part.hpp"
 #include "tracker/program/scene_inflow.hpp"
 #include "tracker/program/scene_mesh.hpp"

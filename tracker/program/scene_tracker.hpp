@@ -6,7 +6,7 @@
 
 #include <memory>
 
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/parallel/bricks.hpp"
 #include "tracker/parallel/ranks.hpp"

@@ -15,7 +15,7 @@
 // Errors are scene::SceneError naming file, line, key and value.
 #pragma once
 
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 #include "tracker/mesh/mesh.hpp"
 #include "tracker/parallel/ranks.hpp"
 #include "tracker/tracking/boundaries.hpp"

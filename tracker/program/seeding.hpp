@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene/reader.hpp"
+#include "coupler/scene/reader.hpp"
 #include "tracker/tracking/particle.hpp"
 
 namespace cosim::tracker {

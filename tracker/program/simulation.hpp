@@ -22,7 +22,7 @@
 #include <span>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 #include "tracker/program/collide.hpp"
 #include "tracker/program/output_grid.hpp"
 #include "tracker/program/scene_tracker.hpp"

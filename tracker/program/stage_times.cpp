@@ -1,6 +1,6 @@
 #include "tracker/program/stage_times.hpp"
 
-#include "participant/stage_summary.hpp"
+#include "coupler/participant/stage_summary.hpp"
 
 namespace cosim::tracker {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <optional>
 
-#include "participant/seconds_since.hpp"
+#include "coupler/participant/seconds_since.hpp"
 #include "tracker/program/particle_dump.hpp"
 #include "tracker/program/progress.hpp"
 #include "tracker/program/simulation.hpp"

@@ -8,7 +8,7 @@
 
 #include <filesystem>
 
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 #include "tracker/parallel/ranks.hpp"
 #include "tracker/program/stage_times.hpp"
 #include "tracker/tracking/move.hpp"

@@ -3,13 +3,13 @@
 #include <hdf5.h>
 
 #include "cosim_git_hash.hpp"
-#include "output/field_writer.hpp"
-#include "output/h5_groups.hpp"
-#include "output/h5_handle.hpp"
-#include "output/h5_values.hpp"
-#include "output/series.hpp"
-#include "output/in_file.hpp"
-#include "output/text.hpp"
+#include "coupler/output/field_writer.hpp"
+#include "coupler/output/h5_groups.hpp"
+#include "coupler/output/h5_handle.hpp"
+#include "coupler/output/h5_values.hpp"
+#include "coupler/output/series.hpp"
+#include "coupler/output/in_file.hpp"
+#include "coupler/output/text.hpp"
 #include "tracker/program/cell_fields.hpp"
 
 namespace cosim::tracker {

@@ -49,8 +49,8 @@
 #include <string>
 #include <vector>
 
-#include "output/field_frame.hpp"
-#include "scene/scene.hpp"
+#include "coupler/output/field_frame.hpp"
+#include "coupler/scene/scene.hpp"
 #include "tracker/program/output_grid.hpp"
 #include "tracker/tracking/move.hpp"
 #include "tracker/tracking/sampling.hpp"

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "output/h5_groups.hpp"
-#include "output/h5_values.hpp"
+#include "coupler/output/h5_groups.hpp"
+#include "coupler/output/h5_values.hpp"
 
 namespace cosim::tracker {
 

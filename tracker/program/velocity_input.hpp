@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "output/field_frame.hpp"
+#include "coupler/output/field_frame.hpp"
 #include "tracker/tracers/velocity_field.hpp"
 
 namespace cosim::tracker {

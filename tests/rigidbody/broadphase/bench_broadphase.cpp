@@ -5,7 +5,7 @@
 
 #include "rigidbody/broadphase/brute_force.hpp"
 #include "rigidbody/broadphase/hash_grid.hpp"
-#include "scenes.hpp"
+#include "tests/rigidbody/broadphase/scenes.hpp"
 
 namespace cosim::broadphase {
 namespace {

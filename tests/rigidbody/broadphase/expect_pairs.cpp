@@ -1,4 +1,4 @@
-#include "expect_pairs.hpp"
+#include "tests/rigidbody/broadphase/expect_pairs.hpp"
 
 #include <algorithm>
 #include <iterator>

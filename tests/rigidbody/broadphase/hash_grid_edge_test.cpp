@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "expect_pairs.hpp"
+#include "tests/rigidbody/broadphase/expect_pairs.hpp"
 #include "rigidbody/broadphase/brute_force.hpp"
-#include "scenes.hpp"
+#include "tests/rigidbody/broadphase/scenes.hpp"
 
 namespace cosim::broadphase {
 namespace {

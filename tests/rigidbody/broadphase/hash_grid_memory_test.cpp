@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "rigidbody/broadphase/hash_grid.hpp"
-#include "scenes.hpp"
+#include "tests/rigidbody/broadphase/scenes.hpp"
 
 namespace cosim::broadphase {
 namespace {

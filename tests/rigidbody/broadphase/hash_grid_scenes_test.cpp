@@ -1,8 +1,8 @@
 // Random scenes, many seeds: the grid finds exactly the brute-force pairs.
 #include <gtest/gtest.h>
 
-#include "expect_pairs.hpp"
-#include "scenes.hpp"
+#include "tests/rigidbody/broadphase/expect_pairs.hpp"
+#include "tests/rigidbody/broadphase/scenes.hpp"
 
 namespace cosim::broadphase {
 namespace {

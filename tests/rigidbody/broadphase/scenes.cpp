@@ -1,4 +1,4 @@
-#include "scenes.hpp"
+#include "tests/rigidbody/broadphase/scenes.hpp"
 
 #include <algorithm>
 #include <cmath>

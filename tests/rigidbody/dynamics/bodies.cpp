@@ -1,4 +1,4 @@
-#include "bodies.hpp"
+#include "tests/rigidbody/dynamics/bodies.hpp"
 
 #include "rigidbody/geometry/box.hpp"
 #include "rigidbody/geometry/mass_properties.hpp"

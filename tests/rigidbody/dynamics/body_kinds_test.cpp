@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bodies.hpp"
+#include "tests/rigidbody/dynamics/bodies.hpp"
 
 namespace cosim::dynamics::test {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "bodies.hpp"
+#include "tests/rigidbody/dynamics/bodies.hpp"
 
 namespace cosim::dynamics::test {
 namespace {

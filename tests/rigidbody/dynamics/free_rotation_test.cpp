@@ -7,7 +7,7 @@
 
 #include <Eigen/LU>
 
-#include "bodies.hpp"
+#include "tests/rigidbody/dynamics/bodies.hpp"
 #include "rigidbody/dynamics/invariants.hpp"
 
 namespace cosim::dynamics::test {

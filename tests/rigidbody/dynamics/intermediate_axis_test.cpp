@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "bodies.hpp"
+#include "tests/rigidbody/dynamics/bodies.hpp"
 
 namespace cosim::dynamics::test {
 namespace {

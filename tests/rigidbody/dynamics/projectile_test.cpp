@@ -1,7 +1,7 @@
 // A thrown body under gravity against x0 + v0 t + g t^2 / 2.
 #include <gtest/gtest.h>
 
-#include "bodies.hpp"
+#include "tests/rigidbody/dynamics/bodies.hpp"
 
 namespace cosim::dynamics::test {
 namespace {

@@ -1,7 +1,7 @@
 // The coupler's wrench, interpolated over the window.
 #include <gtest/gtest.h>
 
-#include "bodies.hpp"
+#include "tests/rigidbody/dynamics/bodies.hpp"
 #include "rigidbody/dynamics/invariants.hpp"
 
 namespace cosim::dynamics::test {

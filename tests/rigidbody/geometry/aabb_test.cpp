@@ -1,7 +1,7 @@
 // World AABBs contain the shape for random poses and touch it on all six sides.
 #include <gtest/gtest.h>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 
 namespace cosim::geometry {
 namespace {

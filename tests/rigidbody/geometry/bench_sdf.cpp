@@ -2,7 +2,7 @@
 // batches as the fluid's FBM indicator issues them. Not a test: run bench_geometry.
 #include <benchmark/benchmark.h>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 #include "rigidbody/geometry/distance_map.hpp"
 #include "rigidbody/geometry/queries.hpp"
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 #include "rigidbody/geometry/queries.hpp"
 
 namespace cosim::geometry {

@@ -3,7 +3,7 @@
 
 #include <numbers>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 
 namespace cosim::geometry {
 namespace {

@@ -1,4 +1,4 @@
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 
 #include <Eigen/Geometry>
 #include <cstdint>

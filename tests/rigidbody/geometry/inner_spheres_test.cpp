@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 #include "rigidbody/geometry/inner_spheres.hpp"
 #include "rigidbody/geometry/queries.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <numbers>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 #include "rigidbody/geometry/detail/closest_on_triangle.hpp"
 #include "rigidbody/geometry/queries.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <functional>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 
 namespace cosim::geometry {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 #include "rigidbody/geometry/mass_properties.hpp"
 
 namespace cosim::geometry {

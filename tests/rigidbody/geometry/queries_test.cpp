@@ -1,7 +1,7 @@
 // World-frame and batch queries answer what the body-frame single queries do.
 #include <gtest/gtest.h>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 #include "rigidbody/geometry/queries.hpp"
 
 namespace cosim::geometry {

@@ -2,7 +2,7 @@
 // their faces, edges and vertices.
 #include <gtest/gtest.h>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 #include "rigidbody/geometry/queries.hpp"
 
 namespace cosim::geometry {

@@ -1,7 +1,7 @@
 // The support point maximises d . x over the shape and lies on its surface.
 #include <gtest/gtest.h>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 #include "rigidbody/geometry/queries.hpp"
 
 namespace cosim::geometry {

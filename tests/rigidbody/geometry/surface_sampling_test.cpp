@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 #include "rigidbody/geometry/queries.hpp"
 
 namespace cosim::geometry {

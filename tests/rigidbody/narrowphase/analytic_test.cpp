@@ -1,5 +1,5 @@
 // Known answers for the analytic pairs: distance, normal (from a to b) and points midway.
-#include "support.hpp"
+#include "tests/rigidbody/narrowphase/support.hpp"
 
 namespace cosim::narrowphase::testing {
 namespace {

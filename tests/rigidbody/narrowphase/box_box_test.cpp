@@ -1,5 +1,5 @@
 // Box-box: separating axes, reference-face clipping, edge-edge points, near contacts.
-#include "support.hpp"
+#include "tests/rigidbody/narrowphase/support.hpp"
 
 namespace cosim::narrowphase::testing {
 namespace {

@@ -1,6 +1,6 @@
 // The clipping step of the general convex path against hand-worked answers.
 #include "rigidbody/narrowphase/clip.hpp"
-#include "support.hpp"
+#include "tests/rigidbody/narrowphase/support.hpp"
 
 namespace cosim::narrowphase::testing {
 namespace {

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <random>
 
-#include "fixtures.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
 #include "rigidbody/narrowphase/pairs.hpp"
-#include "support.hpp"
+#include "tests/rigidbody/narrowphase/support.hpp"
 
 namespace cosim::narrowphase::testing {
 namespace {

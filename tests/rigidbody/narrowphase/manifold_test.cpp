@@ -1,7 +1,7 @@
 // Manifolds of the general convex path: faces, cylinder caps and sides and capsules lying
 // on a face give the points of their contact area, not one point a call.
 #include "rigidbody/narrowphase/pairs.hpp"
-#include "support.hpp"
+#include "tests/rigidbody/narrowphase/support.hpp"
 
 namespace cosim::narrowphase::testing {
 namespace {

@@ -2,8 +2,8 @@
 // error bound (plus the faceting of the icosphere).
 #include <random>
 
-#include "fixtures.hpp"
-#include "support.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
+#include "tests/rigidbody/narrowphase/support.hpp"
 
 namespace cosim::narrowphase::testing {
 namespace {

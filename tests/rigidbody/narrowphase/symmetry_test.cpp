@@ -2,8 +2,8 @@
 // nothing is ever NaN.
 #include <random>
 
-#include "fixtures.hpp"
-#include "support.hpp"
+#include "tests/rigidbody/geometry/fixtures.hpp"
+#include "tests/rigidbody/narrowphase/support.hpp"
 
 namespace cosim::narrowphase::testing {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "protocol/message.hpp"
+#include "coupler/protocol/message.hpp"
 #include "rigidbody/program/adapter.hpp"
 
 namespace cosim::program {

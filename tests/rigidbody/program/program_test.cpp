@@ -3,9 +3,9 @@
 
 #include <filesystem>
 
-#include "cosim_process.hpp"
-#include "h5_read.hpp"
-#include "standalone_run.hpp"
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
+#include "tests/integration/standalone_run.hpp"
 
 namespace cosim::testing {
 namespace {

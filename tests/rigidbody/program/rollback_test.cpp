@@ -2,7 +2,7 @@
 // warm-started contact impulses included.
 #include <gtest/gtest.h>
 
-#include "protocol/message.hpp"
+#include "coupler/protocol/message.hpp"
 #include "rigidbody/program/adapter.hpp"
 
 namespace cosim::program {

@@ -5,9 +5,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "cosim_process.hpp"
+#include "tests/integration/cosim_process.hpp"
 #include "rigidbody/program/scene_world.hpp"
-#include "scene/error.hpp"
+#include "coupler/scene/error.hpp"
 
 namespace cosim::program {
 namespace {

@@ -1,7 +1,7 @@
 // Impacts: two spheres head-on with restitution e, and Newton's cradle.
 #include <gtest/gtest.h>
 
-#include "world.hpp"
+#include "tests/rigidbody/solver/world.hpp"
 
 namespace cosim::solver::test {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "world.hpp"
+#include "tests/rigidbody/solver/world.hpp"
 
 namespace cosim::solver::test {
 namespace {

@@ -6,7 +6,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "world.hpp"
+#include "tests/rigidbody/solver/world.hpp"
 
 namespace cosim::solver::test {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <iostream>
 
-#include "world.hpp"
+#include "tests/rigidbody/solver/world.hpp"
 
 namespace cosim::solver::test {
 namespace {

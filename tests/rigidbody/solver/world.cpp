@@ -1,4 +1,4 @@
-#include "world.hpp"
+#include "tests/rigidbody/solver/world.hpp"
 
 #include <algorithm>
 #include <array>

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "stack_check.hpp"
+#include "tests/rigidbody/world/stack_check.hpp"
 
 int main(int argc, char** argv) {
   using namespace cosim::world::test;

@@ -1,7 +1,7 @@
 // Issue case 5: with contact off there is no broad or narrow phase; bodies pass through.
 #include <gtest/gtest.h>
 
-#include "scenes.hpp"
+#include "tests/rigidbody/world/scenes.hpp"
 
 namespace cosim::world::test {
 namespace {

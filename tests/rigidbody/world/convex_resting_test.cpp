@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "rigidbody/narrowphase/narrowphase.hpp"
-#include "scenes.hpp"
+#include "tests/rigidbody/world/scenes.hpp"
 
 namespace cosim::world::test {
 namespace {

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "rigidbody/dynamics/invariants.hpp"
-#include "scenes.hpp"
+#include "tests/rigidbody/world/scenes.hpp"
 
 namespace cosim::world::test {
 namespace {

@@ -5,7 +5,7 @@
 #include "rigidbody/world/materials.hpp"
 #include <initializer_list>
 
-#include "scenes.hpp"
+#include "tests/rigidbody/world/scenes.hpp"
 
 namespace cosim::world::test {
 namespace {

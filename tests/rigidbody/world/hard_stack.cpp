@@ -1,4 +1,4 @@
-#include "hard_stack.hpp"
+#include "tests/rigidbody/world/hard_stack.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include <iostream>
 
-#include "hard_stack.hpp"
+#include "tests/rigidbody/world/hard_stack.hpp"
 
 namespace cosim::world::test {
 namespace {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "scenes.hpp"
+#include "tests/rigidbody/world/scenes.hpp"
 
 namespace cosim::world::test {
 namespace {

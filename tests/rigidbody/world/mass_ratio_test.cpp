@@ -9,7 +9,7 @@
 #include <iostream>
 #include <vector>
 
-#include "scenes.hpp"
+#include "tests/rigidbody/world/scenes.hpp"
 
 namespace cosim::world::test {
 namespace {

@@ -1,4 +1,4 @@
-#include "scenes.hpp"
+#include "tests/rigidbody/world/scenes.hpp"
 
 #include "rigidbody/dynamics/invariants.hpp"
 

@@ -1,8 +1,8 @@
-#include "stack_check.hpp"
+#include "tests/rigidbody/world/stack_check.hpp"
 
 #include <algorithm>
 
-#include "scenes.hpp"
+#include "tests/rigidbody/world/scenes.hpp"
 
 namespace cosim::world::test {
 

@@ -2,7 +2,7 @@
 // (about 1.3 s in Release; bench_box_stack prints the figures).
 #include <gtest/gtest.h>
 
-#include "stack_check.hpp"
+#include "tests/rigidbody/world/stack_check.hpp"
 
 namespace cosim::world::test {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "rigidbody/geometry/convex_hull.hpp"
 #include "rigidbody/world/tunnelling.hpp"
-#include "scenes.hpp"
+#include "tests/rigidbody/world/scenes.hpp"
 
 namespace cosim::world::test {
 namespace {

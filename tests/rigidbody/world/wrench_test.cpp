@@ -1,7 +1,7 @@
 // The coupler's wrench reaches the integrator.
 #include <gtest/gtest.h>
 
-#include "scenes.hpp"
+#include "tests/rigidbody/world/scenes.hpp"
 
 namespace cosim::world::test {
 namespace {

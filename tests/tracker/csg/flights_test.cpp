@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "flight.hpp"
+#include "tests/tracker/csg/flight.hpp"
 #include "tracker/csg/shapes.hpp"
 
 namespace cosim::csg {

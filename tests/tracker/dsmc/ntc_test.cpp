@@ -1,5 +1,5 @@
 // The no-time-counter scheme: the equilibrium collision rate against kinetic theory.
-#include "gas.hpp"
+#include "tests/tracker/dsmc/gas.hpp"
 
 #include <gtest/gtest.h>
 

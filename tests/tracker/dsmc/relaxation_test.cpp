@@ -1,6 +1,6 @@
 // Relaxation of non-equilibrium velocity distributions in one cell to a Maxwellian, with
 // momentum and energy conserved to round-off at every step.
-#include "gas.hpp"
+#include "tests/tracker/dsmc/gas.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "checks.hpp"
+#include "tests/tracker/mesh/checks.hpp"
 
 #include "tracker/mesh/geometry.hpp"
 #include "tracker/mesh/locate.hpp"

@@ -16,11 +16,11 @@
 #include <regex>
 #include <sstream>
 
-#include "output/h5_handle.hpp"
-#include "scene/error.hpp"
-#include "output/h5_values.hpp"
-#include "output/series.hpp"
-#include "participant/mpi_team.hpp"
+#include "coupler/output/h5_handle.hpp"
+#include "coupler/scene/error.hpp"
+#include "coupler/output/h5_values.hpp"
+#include "coupler/output/series.hpp"
+#include "coupler/participant/mpi_team.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/parallel/decomposition.hpp"
 #include "tracker/parallel/partition.hpp"

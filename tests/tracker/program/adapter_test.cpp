@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "protocol/message.hpp"
-#include "scene/scene.hpp"
+#include "coupler/protocol/message.hpp"
+#include "coupler/scene/scene.hpp"
 #include "tracker/constants.hpp"
 #include "tracker/dsmc/free_molecular.hpp"
 #include "tracker/program/adapter.hpp"

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "cosim_process.hpp"
-#include "h5_read.hpp"
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
 #include "tracker/dsmc/free_molecular.hpp"
 
 namespace cosim::tracker {

@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/error.hpp"
+#include "coupler/scene/error.hpp"
 #include "tracker/csg/tree.hpp"
 #include "tracker/program/csg_shape.hpp"
 
-#include "scene_error.hpp"
+#include "tests/tracker/program/scene_error.hpp"
 
 namespace cosim::tracker {
 namespace {

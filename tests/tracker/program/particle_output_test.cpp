@@ -12,13 +12,13 @@
 #include <iterator>
 #include <set>
 
-#include "output/h5_groups.hpp"
-#include "output/h5_handle.hpp"
-#include "output/h5_values.hpp"
-#include "output/series.hpp"
+#include "coupler/output/h5_groups.hpp"
+#include "coupler/output/h5_handle.hpp"
+#include "coupler/output/h5_values.hpp"
+#include "coupler/output/series.hpp"
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/standalone.hpp"
-#include "xdmf_check.hpp"
+#include "tests/integration/xdmf_check.hpp"
 
 namespace cosim::tracker {
 namespace {

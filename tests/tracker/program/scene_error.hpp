@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "scene/error.hpp"
+#include "coupler/scene/error.hpp"
 
 namespace cosim::tracker::testing {
 

@@ -1,11 +1,11 @@
 // The tracker's mesh from the scene: each source, perturbation, and errors naming the key.
 #include <gtest/gtest.h>
 
-#include "checks.hpp"
-#include "scene/error.hpp"
+#include "tests/tracker/mesh/checks.hpp"
+#include "coupler/scene/error.hpp"
 #include "tracker/program/scene_mesh.hpp"
 
-#include "scene_error.hpp"
+#include "tests/tracker/program/scene_error.hpp"
 
 namespace cosim::tracker {
 namespace {

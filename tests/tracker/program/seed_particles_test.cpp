@@ -3,7 +3,7 @@
 // (That two ranks seed what one rank does is tested under mpirun in tests/tracker/parallel.)
 #include <gtest/gtest.h>
 
-#include "scene/scene.hpp"
+#include "coupler/scene/scene.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/geometry.hpp"
 #include "tracker/program/scene_tracker.hpp"

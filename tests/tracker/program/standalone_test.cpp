@@ -10,13 +10,13 @@
 #include <sstream>
 #include <numeric>
 
-#include "output/h5_groups.hpp"
-#include "output/h5_handle.hpp"
-#include "output/h5_values.hpp"
-#include "output/series.hpp"
-#include "scene/scene.hpp"
+#include "coupler/output/h5_groups.hpp"
+#include "coupler/output/h5_handle.hpp"
+#include "coupler/output/h5_values.hpp"
+#include "coupler/output/series.hpp"
+#include "coupler/scene/scene.hpp"
 #include "tracker/mesh/voronoi_mesh.hpp"
-#include "output/xdmf.hpp"
+#include "coupler/output/xdmf.hpp"
 #include "tracker/program/mixed_topology.hpp"
 #include "tracker/program/cell_fields.hpp"
 #include "tracker/program/output_grid.hpp"

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <numbers>
 
-#include "output/run_file.hpp"
-#include "scene_error.hpp"
+#include "coupler/output/run_file.hpp"
+#include "tests/tracker/program/scene_error.hpp"
 #include "tracker/program/simulation.hpp"
 
 namespace cosim::tracker {

@@ -6,10 +6,10 @@
 #include <optional>
 #include <utility>
 
-#include "scene/error.hpp"
+#include "coupler/scene/error.hpp"
 #include "tracker/program/scene_tracker.hpp"
 
-#include "scene_error.hpp"
+#include "tests/tracker/program/scene_error.hpp"
 
 namespace cosim::tracker {
 namespace {

@@ -1,4 +1,4 @@
-#include "hard_moves.hpp"
+#include "tests/tracker/tracking/hard_moves.hpp"
 
 #include "tracker/mesh/geometry.hpp"
 

@@ -3,7 +3,7 @@
 // where the full algorithm puts them (the full algorithm is what a Domain whose boxes are
 // all empty runs).
 
-#include "hard_moves.hpp"
+#include "tests/tracker/tracking/hard_moves.hpp"
 #include "tracker/csg/shapes.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/perturb.hpp"

@@ -9,7 +9,7 @@
 #include "tracker/mesh/voronoi_mesh.hpp"
 #include "tracker/tracking/move.hpp"
 
-#include "hard_moves.hpp"
+#include "tests/tracker/tracking/hard_moves.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "channel.hpp"
+#include "tests/tracker/transport/channel.hpp"
 
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/program/collide.hpp"

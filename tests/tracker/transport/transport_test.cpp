@@ -4,7 +4,7 @@
 // stress and heat flux; every comparison allows a few standard errors of the batch means
 // (20 batches) on top of the stated systematic part.
 
-#include "channel.hpp"
+#include "tests/tracker/transport/channel.hpp"
 
 #include <gtest/gtest.h>
 
