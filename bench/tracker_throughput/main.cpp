@@ -78,6 +78,13 @@ void write_csv(const std::string& path, const FreeDeck& deck, const std::vector<
         << r.outside << ',' << r.energy_drift << '\n';
 }
 
+// The Swarm rows by name, for --storage: the sorted one alone, the cluster's, the collide deck's.
+std::string swarm_row(const RunOptions& options) {
+  if (options.storage != Storage::swarm || options.sort_every == 0) return "unsorted";
+  if (options.cluster) return "cluster";
+  return options.collide ? "collisions" : "sorted";
+}
+
 bool run_free_deck(const FreeDeck& deck, int steps, int sort_every, const std::string& only, const std::string& storage,
                    const std::string& csv) {
   const FreeBox box(deck);
@@ -104,7 +111,9 @@ bool run_free_deck(const FreeDeck& deck, int steps, int sort_every, const std::s
   bool ok = true;
   for (const RunOptions& options : plan) {
     if (!only.empty() && only != name(options.algorithm)) continue;
-    if (!storage.empty() && storage != (options.storage == Storage::swarm ? "swarm" : "particle")) continue;
+    if (!storage.empty() && storage != (options.storage == Storage::swarm ? "swarm" : "particle") &&
+        storage != swarm_row(options))
+      continue;
     runs.push_back(run(box, particles, options));
     print(runs.back());
     ok = ok && check(runs.back());
@@ -138,7 +147,10 @@ int main(int argc, char** argv) {
   app.add_flag("--quick", quick, "free deck 24^3 cells and 5 steps, sphere deck 20 + 20 steps: the ctest");
   app.add_option("--deck", decks, "run only this deck (free, sphere)")->check(CLI::IsMember({"free", "sphere"}));
   app.add_option("--algorithm", only, "free deck: run only this algorithm's rows (event-driven, stollmeier, haselbacher)");
-  app.add_option("--storage", storage, "free deck: run only this storage's rows (particle, swarm)");
+  app.add_option("--storage", storage,
+                 "free deck: run only this storage's rows (particle, swarm), or one Swarm row (unsorted, sorted, cluster, "
+                 "collisions)")
+      ->check(CLI::IsMember({"particle", "swarm", "unsorted", "sorted", "cluster", "collisions"}));
   app.add_option("--csv", csv, "also write the free deck's rows to this file");
   CLI11_PARSE(app, argc, argv);
   if (quick) {

@@ -18,8 +18,8 @@ import tempfile
 
 DECKS = {
     # deck: (SPARTA input, cells per side, tracker_throughput arguments, its row)
-    "free": ("in.free", 46, ["--deck", "free", "--storage", "swarm"], "Swarm"),
-    "collide": ("in.collide", 46, ["--deck", "free", "--storage", "swarm"], "Swarm + collisions"),
+    "free": ("in.free", 46, ["--deck", "free", "--storage", "sorted"], "Swarm"),
+    "collide": ("in.collide", 46, ["--deck", "free", "--storage", "collisions"], "Swarm + collisions"),
     "sphere": ("in.sphere", 22, ["--deck", "sphere"], None),
 }
 SPARTA_FILES = ["in.free", "in.collide", "in.sphere", "ar.species", "ar.vss", "data.sphere"]

@@ -4,6 +4,7 @@
 
 #include "tracker/mesh/locate.hpp"
 #include "tracker/tracking/boundaries.hpp"
+#include "tracker/tracking/lattice.hpp"
 
 #include <vector>
 
@@ -43,6 +44,7 @@ struct Domain {
   PointLocator locator;
   double tolerance;  // 1e-10 of the (whole) mesh's bounding-box diagonal
   std::vector<InnerBox> inner_boxes;  // per cell, inside by the tolerance
+  std::vector<LatticeFaces> lattice;  // per cell, or empty if no cell is an axis-aligned hexahedron
 };
 
 // How far x is outside the cell's planes (the largest -n.(x - point), <= 0 inside) and

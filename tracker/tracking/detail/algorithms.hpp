@@ -29,6 +29,17 @@ struct FaceEvent {
 // they lose particles.
 // Faces the particle cannot reach within `horizon` (the rest of its move) are not events.
 FaceEvent first_exit(const Mesh& mesh, const Particle& particle, Index skip, bool clamp_behind, double horizon);
+// The same for an axis-aligned hexahedral cell from its planes' coordinates (lattice.hpp):
+// equal times, face and `behind` (a zero's sign aside).
+FaceEvent lattice_exit(const Mesh& mesh, LatticeFaces cell, const Particle& particle, Index skip, bool clamp_behind,
+                       double horizon);
+// The one of the two the particle's cell takes.
+inline FaceEvent exit_face(const Domain& domain, const Particle& particle, Index skip, double horizon) {
+  if (!domain.lattice.empty())
+    if (const LatticeFaces cell = domain.lattice[static_cast<std::size_t>(particle.cell)]; cell.holds())
+      return lattice_exit(domain.mesh, cell, particle, skip, true, horizon);
+  return first_exit(domain.mesh, particle, skip, true, horizon);
+}
 
 // The particle is on `face` of its cell: it enters the neighbour (periodic shift applied),
 // or the wall changes its velocity, or it leaves through an open patch; a wall hit is added

@@ -5,30 +5,52 @@
 
 namespace cosim::tracker::detail {
 
+namespace {
+
+// One face of the scan: rate = n.v, depth = n.(x - point). Ties go to the lower face index,
+// as a scan in face order keeps the first, so the order faces are offered in does not matter.
+inline void offer(FaceEvent& first, Index face, double rate, double depth, bool clamp_behind, double horizon) {
+  if (rate >= 0.0) {
+    first.behind = std::min(first.behind, depth);
+    return;
+  }
+  // Still inside the plane at the horizon: no event, and no division (most moves end in
+  // their cell).
+  if (depth + rate * horizon >= 0.0) return;
+  double dt = depth / -rate;
+  if (dt < 0.0) {
+    if (!clamp_behind) return;
+    dt = 0.0;
+  }
+  if (dt < first.dt || (dt == first.dt && face < first.face)) {
+    first.dt = dt;
+    first.face = face;
+  }
+}
+
+}  // namespace
+
 FaceEvent first_exit(const Mesh& mesh, const Particle& p, Index skip, bool clamp_behind, double horizon) {
   constexpr double none = std::numeric_limits<double>::infinity();
   FaceEvent first{none, -1, none};
   for (Index f = mesh.cell_faces[p.cell]; f < mesh.cell_faces[p.cell + 1]; ++f) {
     if (f == skip) continue;
     const Face& face = mesh.faces[f];
-    const double rate = face.normal.dot(p.v);
-    const double depth = face.normal.dot(p.x - face.point);
-    if (rate >= 0.0) {
-      first.behind = std::min(first.behind, depth);
-      continue;
-    }
-    // Still inside the plane at the horizon: no event, and no division (most moves end in
-    // their cell).
-    if (depth + rate * horizon >= 0.0) continue;
-    double dt = depth / -rate;
-    if (dt < 0.0) {
-      if (!clamp_behind) continue;
-      dt = 0.0;
-    }
-    if (dt < first.dt) {
-      first.dt = dt;
-      first.face = f;
-    }
+    offer(first, f, face.normal.dot(p.v), face.normal.dot(p.x - face.point), clamp_behind, horizon);
+  }
+  return first;
+}
+
+FaceEvent lattice_exit(const Mesh& mesh, LatticeFaces cell, const Particle& p, Index skip, bool clamp_behind,
+                       double horizon) {
+  constexpr double none = std::numeric_limits<double>::infinity();
+  FaceEvent first{none, -1, none};
+  const Index base = mesh.cell_faces[p.cell];
+  for (int a = 0; a < 3; ++a) {
+    // n = +e_a on the low face, -e_a on the high one: the scan's n.v and n.(x - point).
+    const Index low = base + cell.low[a], high = base + cell.high[a];
+    if (low != skip) offer(first, low, p.v[a], p.x[a] - mesh.faces[low].point[a], clamp_behind, horizon);
+    if (high != skip) offer(first, high, -p.v[a], mesh.faces[high].point[a] - p.x[a], clamp_behind, horizon);
   }
   return first;
 }

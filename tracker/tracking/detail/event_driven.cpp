@@ -121,7 +121,7 @@ MoveResult follow_events(const Domain& domain, Particle& p, const Flight& flight
     // Bannerman, Strobl & Poeschel: the earliest dt >= 0 with f <= 0 and f' < 0; a particle
     // slightly outside a face it moves out through gets dt = 0, never a negative time. The
     // face just entered is skipped: the two sides' normals are opposite only to round-off.
-    const FaceEvent face = first_exit(domain.mesh, p, skip, true, remaining);
+    const FaceEvent face = exit_face(domain, p, skip, remaining);
     // The objects' events in the cell, merged in time; on a tie the object goes first, so a
     // wall on a face reflects before the particle could leave through it.
     const ObjectEvent object = carried.any() ? next_object_event(carried, p, result) : ObjectEvent{};
