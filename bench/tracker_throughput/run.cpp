@@ -1,7 +1,7 @@
 #include "bench/tracker_throughput/run.hpp"
 
 #include "tracker/dsmc/species.hpp"
-#include "tracker/program/collide.hpp"
+#include "tracker/step/collide.hpp"
 #include "tracker/tracking/swarm.hpp"
 
 #include <optional>

@@ -5,8 +5,8 @@
 #include "tracker/dsmc/free_molecular.hpp"
 #include "tracker/dsmc/species.hpp"
 #include "tracker/mesh/box_mesh.hpp"
-#include "tracker/program/collide.hpp"
-#include "tracker/program/seed_particles.hpp"
+#include "tracker/step/collide.hpp"
+#include "tracker/step/seed_particles.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -5,7 +5,7 @@
 // at the centre re-emitting diffusely at 300 K, dt 1e-5 s. The step is cosim-tracker's
 // (tracker/program/standalone.cpp): sort by cell, collide, move, inject.
 
-#include "tracker/program/scene_collisions.hpp"
+#include "tracker/step/collide.hpp"
 #include "tracker/tracking/inflow.hpp"
 
 #include <memory>

@@ -1,5 +1,5 @@
 // The seconds of a program's step stages as one line, for the summary a program prints at
-// the end of a standalone run (cosim-fluid, cosim-tracker).
+// the end of a standalone run (cosim-fluid, cosim-rigidbody, cosim-tracker).
 #pragma once
 
 #include <array>

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <vector>
 
 #include "rigidbody/dynamics/leapfrog.hpp"
 #include "rigidbody/dynamics/semi_implicit_euler.hpp"
@@ -21,54 +20,62 @@ void check(std::span<BodyState> states, std::span<const BodyInertia> inertia,
   if (!(dt > 0.0)) throw std::invalid_argument("advance: dt must be positive");
 }
 
-}  // namespace
-
 long substep_count(double span, double dt) { return std::max(1L, std::lround(span / dt)); }
 
-void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia,
-             std::span<const WindowWrench> external, double t0, double t1,
-             const IntegratorSettings& settings, const VelocityHook& hook,
-             const PositionHook& after_positions) {
+}  // namespace
+
+Substeps::Substeps(std::span<BodyState> states, std::span<const BodyInertia> inertia,
+                   std::span<const WindowWrench> external, double t0, double t1, const IntegratorSettings& settings)
+    : states_(states), inertia_(inertia), external_(external), t0_(t0), t1_(t1), scheme_(settings.scheme) {
   check(states, inertia, external, t0, t1, settings.dt);
-  if (t1 == t0) return;
   const long n = substep_count(t1 - t0, settings.dt);
-  const double h = (t1 - t0) / static_cast<double>(n);
-  const bool leapfrog = settings.scheme == Scheme::leapfrog;
-
-  std::vector<Eigen::Vector3d> acceleration(states.size());
+  count_ = t1 == t0 ? 0 : n;
+  length_ = (t1 - t0) / static_cast<double>(n);
+  acceleration_.resize(states.size());
   for (std::size_t i = 0; i < states.size(); ++i)
-    if (!inertia[i].is_fixed()) acceleration[i] = settings.body_forces.acceleration(inertia[i]);
-  std::vector<BodyState> start;
+    if (!inertia[i].is_fixed()) acceleration_[i] = settings.body_forces.acceleration(inertia[i]);
+}
 
-  for (long k = 0; k < n; ++k) {
-    const double t = t0 + static_cast<double>(k) * h;
-    // Semi-implicit Euler takes the wrench at the start of the substep, leapfrog at its midpoint.
-    const double s = leapfrog ? t + 0.5 * h : t;
-    start.assign(states.begin(), states.end());
-    for (std::size_t i = 0; i < states.size(); ++i) {
-      if (inertia[i].is_fixed()) continue;
-      const Wrench w = external.empty() ? Wrench{} : external[i].at(t0, t1, s);
-      if (leapfrog)
-        leapfrog_velocity(states[i], inertia[i], w, acceleration[i], h);
-      else
-        semi_implicit_velocity(states[i], inertia[i], w, acceleration[i], h);
+void Substeps::integrate_velocities(long k) {
+  const double h = length_;
+  const bool leapfrog = scheme_ == Scheme::leapfrog;
+  const double t = t0_ + static_cast<double>(k) * h;
+  // Semi-implicit Euler takes the wrench at the start of the substep, leapfrog at its midpoint.
+  const double s = leapfrog ? t + 0.5 * h : t;
+  start_.assign(states_.begin(), states_.end());
+  for (std::size_t i = 0; i < states_.size(); ++i) {
+    if (inertia_[i].is_fixed()) continue;
+    const Wrench w = external_.empty() ? Wrench{} : external_[i].at(t0_, t1_, s);
+    if (leapfrog)
+      leapfrog_velocity(states_[i], inertia_[i], w, acceleration_[i], h);
+    else
+      semi_implicit_velocity(states_[i], inertia_[i], w, acceleration_[i], h);
+  }
+}
+
+void Substeps::integrate_positions() {
+  for (std::size_t i = 0; i < states_.size(); ++i) {
+    if (inertia_[i].is_fixed()) {
+      states_[i] = start_[i];
+      continue;
     }
-    if (hook) hook(h, states);
-    for (std::size_t i = 0; i < states.size(); ++i) {
-      if (inertia[i].is_fixed()) {
-        states[i] = start[i];
-        continue;
-      }
-      if (!inertia[i].rotates) {
-        states[i].orientation = start[i].orientation;
-        states[i].angular_velocity = start[i].angular_velocity;
-      }
-      if (leapfrog)
-        leapfrog_position(states[i], start[i], inertia[i], h);
-      else
-        semi_implicit_position(states[i], inertia[i], h);
+    if (!inertia_[i].rotates) {
+      states_[i].orientation = start_[i].orientation;
+      states_[i].angular_velocity = start_[i].angular_velocity;
     }
-    if (after_positions) after_positions(h, states);
+    if (scheme_ == Scheme::leapfrog)
+      leapfrog_position(states_[i], start_[i], inertia_[i], length_);
+    else
+      semi_implicit_position(states_[i], inertia_[i], length_);
+  }
+}
+
+void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia,
+             std::span<const WindowWrench> external, double t0, double t1, const IntegratorSettings& settings) {
+  Substeps substeps(states, inertia, external, t0, t1, settings);
+  for (long k = 0; k < substeps.count(); ++k) {
+    substeps.integrate_velocities(k);
+    substeps.integrate_positions();
   }
 }
 

@@ -1,8 +1,8 @@
-// Advancing a set of rigid bodies over one coupling window.
+// Advancing a set of rigid bodies over one coupling window, substep by substep.
 #pragma once
 
-#include <functional>
 #include <span>
+#include <vector>
 
 #include "rigidbody/dynamics/body.hpp"
 #include "rigidbody/dynamics/body_forces.hpp"
@@ -20,26 +20,43 @@ struct IntegratorSettings {
   BodyForces body_forces;
 };
 
-// Called once per substep after every body's velocity update and before any position update,
-// with the substep length and all states. It may change velocities (the contact solver's
-// impulses); positions and orientations are then moved with what it leaves.
-using VelocityHook = std::function<void(double dt, std::span<BodyState> states)>;
-// Called once per substep after every position update, with the substep length and all
-// states; it may change velocities only (a soft contact solver's relax pass), which the
-// next substep starts from.
-using PositionHook = VelocityHook;
-
-// Moves `states` from t0 to t1. `inertia` is parallel to `states`; `external` is either
+// A window [t0, t1] split into equal substeps, each integrated in two halves: every body's
+// velocity, then every body's position with the velocities the states then hold. Between
+// the halves a caller may change velocities (the world's contact solver does), after them
+// too (the soft step's relax). `inertia` is parallel to `states`; `external` is either
 // parallel to it (the coupler's wrench per body, see WindowWrench) or empty (none).
-// Fixed bodies (inverse_mass == 0) are not touched, not even by the hook's velocities;
-// translation-only bodies (rotates == false) keep their orientation and angular velocity.
-// Throws std::invalid_argument for mismatched spans, t1 < t0 or dt <= 0.
-// How many equal substeps advance() splits a span into: round(span / dt), at least one.
-long substep_count(double span, double dt);
+// Fixed bodies (inverse_mass == 0) are not touched, not even by velocities set between the
+// halves; translation-only bodies (rotates == false) keep their orientation and angular
+// velocity.
+class Substeps {
+ public:
+  // Throws std::invalid_argument for mismatched spans, t1 < t0 or dt <= 0.
+  Substeps(std::span<BodyState> states, std::span<const BodyInertia> inertia, std::span<const WindowWrench> external,
+           double t0, double t1, const IntegratorSettings& settings);
 
+  long count() const { return count_; }  // 0 for an empty window
+  double length() const { return length_; }
+  // Substep k's first half: gravity, buoyancy and the wrench at the substep's start
+  // (leapfrog: its midpoint).
+  void integrate_velocities(long k);
+  // The second half of the substep whose velocities were integrated last.
+  void integrate_positions();
+
+ private:
+  std::span<BodyState> states_;
+  std::span<const BodyInertia> inertia_;
+  std::span<const WindowWrench> external_;
+  double t0_, t1_;
+  Scheme scheme_;
+  long count_;
+  double length_;
+  std::vector<Eigen::Vector3d> acceleration_;  // body forces' per body
+  std::vector<BodyState> start_;               // the states before the velocity half
+};
+
+// Moves `states` from t0 to t1 with nothing between the halves: free flight under the
+// body forces and `external`. Throws as Substeps does.
 void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia,
-             std::span<const WindowWrench> external, double t0, double t1,
-             const IntegratorSettings& settings, const VelocityHook& hook = {},
-             const PositionHook& after_positions = {});
+             std::span<const WindowWrench> external, double t0, double t1, const IntegratorSettings& settings);
 
 }  // namespace cosim::dynamics

@@ -23,7 +23,7 @@ void leapfrog_velocity(BodyState& state, const BodyInertia& body, const Wrench& 
 void leapfrog_position(BodyState& state, const BodyState& start, const BodyInertia& body, double h) {
   state.position += 0.5 * h * (start.velocity + state.velocity);
   if (!body.rotates || (start.angular_velocity.isZero(0.0) && state.angular_velocity.isZero(0.0))) return;
-  // Momenta at the start orientation: the velocity phase (and the contact hook) changed
+  // Momenta at the start orientation: the velocity phase (and a contact solve) changed
   // omega at fixed orientation.
   const Eigen::Vector3d l_end = world_angular_momentum(state, body);
   const Eigen::Vector3d l_mean = 0.5 * (world_angular_momentum(start, body) + l_end);

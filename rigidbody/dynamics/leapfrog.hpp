@@ -5,7 +5,7 @@
 // The two half kicks are merged into one full kick with the wrench at the step's midpoint
 // (midpoint rule: exact for the linearly interpolated coupler wrench), and the drift uses the
 // mean of the start and end momenta, which is the half-kicked momentum of the Strang
-// splitting. So a step reads like semi-implicit Euler (velocity phase, contact hook,
+// splitting. So a step reads like semi-implicit Euler (velocity phase, contact solve,
 // position phase), but is second order: exact positions for a constant force, exact
 // velocities for a linear ramp, world angular momentum conserved to rounding when there is
 // no torque, bounded O(h^2) energy error.

@@ -63,7 +63,9 @@ participant::Outputs RigidSolver::advance(const participant::Window& w, const pa
   if (virtual_mass_.active() && !external.empty())
     external = virtual_mass_.blend(world_->inertias(), world_->settings().body_forces, external);
   world_->set_time(w.t0);
-  const auto report = world_->advance(w.t1 - w.t0, external);
+  const world::StepReport report = world_->advance(w.t1 - w.t0, external);
+  substeps_ += report.substeps;
+  stage_seconds_ += report.seconds;
   return {poses(), {}, static_cast<double>(report.substeps)};
 }
 

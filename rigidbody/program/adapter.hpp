@@ -24,6 +24,9 @@ class RigidSolver final : public participant::Solver {
   void restore(const std::vector<double>& state) override;
 
   const world::World& world() const { return *world_; }
+  // Since initialise(), over every window advanced (a repeated one counts again).
+  long substeps() const { return substeps_; }
+  const world::StageSeconds& stage_seconds() const { return stage_seconds_; }
 
  private:
   std::vector<double> poses() const;
@@ -31,6 +34,8 @@ class RigidSolver final : public participant::Solver {
   scene::Scene scene_;
   std::unique_ptr<world::World> world_;
   VirtualMass virtual_mass_{0, 0};
+  long substeps_ = 0;
+  world::StageSeconds stage_seconds_;
 };
 
 }  // namespace cosim::program

@@ -2,6 +2,9 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cstdio>
+
+#include "coupler/participant/stage_summary.hpp"
 #include "coupler/participant/standalone.hpp"
 #include "rigidbody/program/adapter.hpp"
 #include "coupler/scene/unused_materials.hpp"
@@ -14,6 +17,8 @@ void run_standalone(const std::filesystem::path& scene_file, std::filesystem::pa
   for (const auto& w : scene::unused_materials(scene)) spdlog::warn("{}", w);
   RigidSolver solver;
   participant::run_standalone(scene, solver, "rigidbody", std::move(output));
+  std::fprintf(stderr, "cosim-rigidbody: %ld substeps: %s\n", solver.substeps(),
+               participant::stage_summary(world::kStageNames, solver.stage_seconds().all()).c_str());
 }
 
 }  // namespace cosim::program

@@ -3,6 +3,8 @@
 
 #include <cstddef>
 
+#include "rigidbody/world/stages.hpp"
+
 namespace cosim::world {
 
 struct StepReport {
@@ -15,6 +17,7 @@ struct StepReport {
   bool converged = true;               // every substep and group met the tolerance
   std::size_t tunnelling_bodies = 0;   // bodies at risk at the window's start (tunnelling.hpp)
   double wall_seconds = 0.0;
+  StageSeconds seconds;                // per stage, summed over the substeps
 };
 
 }  // namespace cosim::world

@@ -1,7 +1,10 @@
-// The contact part of a substep: broad phase -> contact graph -> narrow phase -> solver,
-// and, for the soft step, its relax after the positions moved.
+// A World's step, per substep: integrate velocities -> broad phase -> narrow phase -> solve
+// contacts -> integrate positions (-> relax contacts, the soft step), each stage timed into
+// the StepReport.
 #include <algorithm>
+#include <chrono>
 
+#include "rigidbody/dynamics/integrator.hpp"
 #include "rigidbody/world/world.hpp"
 
 namespace cosim::world {
@@ -24,32 +27,60 @@ broadphase::Object object_of(std::uint32_t id, const geometry::Shape& shape, con
 
 }  // namespace
 
-solver::SolveReport World::solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory) {
-  switch (settings_.solver) {
-    case SolverKind::soft: return soft_.solve(scene, memory);
-    case SolverKind::dem: return solver::solve_dem(scene, memory, settings_.dem);
-    default: return solver::solve_impulses(scene, memory, settings_.impulse_options());
+StepReport World::advance(double window, std::span<const dynamics::WindowWrench> external) {
+  const auto start = std::chrono::steady_clock::now();
+  StepReport report;
+  dynamics::Substeps substeps(states_, inertias_, external, time_, time_ + window,
+                              {dynamics::Scheme::semi_implicit_euler, settings_.dt, settings_.body_forces});
+  // "Only what the scene needs": without contacts (or with nothing to collide with) no
+  // broad or narrow phase is ever called.
+  const bool contacts = settings_.contact && size() > 1;
+  const bool relax = contacts && settings_.solver == SolverKind::soft;
+  if (contacts) report.tunnelling_bodies = check_tunnelling(window, substeps.length());
+  StageClock clock(report.seconds);
+  for (long k = 0; k < substeps.count(); ++k) {
+    ++report.substeps;
+    substeps.integrate_velocities(k);
+    clock.lap(Stage::integrate_velocities);
+    if (contacts) {
+      broad_phase(report);
+      clock.lap(Stage::broad_phase);
+      narrow_phase(report);
+      clock.lap(Stage::narrow_phase);
+      solve_contacts(substeps.length(), report);
+      clock.lap(Stage::solve_contacts);
+    }
+    // With the velocities the solver left: what semi-implicit Euler gives the solvers.
+    substeps.integrate_positions();
+    clock.lap(Stage::integrate_positions);
+    if (relax) {
+      relax_contacts();
+      clock.lap(Stage::relax_contacts);
+    }
   }
+  time_ += window;
+  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
 }
 
-void World::resolve_contacts(double dt, std::span<dynamics::BodyState> states, StepReport& report) {
-  ++report.substeps;
-  const double margin = this->margin();
-
+void World::broad_phase(StepReport& report) {
   objects_.clear();
-  for (std::uint32_t i = 0; i < states.size(); ++i)
-    objects_.push_back(object_of(i, shapes_[i], states[i], inertias_[i].is_fixed()));
+  for (std::uint32_t i = 0; i < states_.size(); ++i)
+    objects_.push_back(object_of(i, shapes_[i], states_[i], inertias_[i].is_fixed()));
   grid_.update(objects_);
   grid_.find_pairs(pairs_);
   ++report.broadphase_updates;
-
   graph_.update(pairs_);
+}
+
+void World::narrow_phase(StepReport& report) {
+  const double margin = this->margin();
   contact::ContactSet& contacts = graph_.contacts();
   contacts.clear();
   for (const auto& [a, b] : graph_.edges()) {
     contact::Manifold m{.a = a, .b = b};
-    const geometry::Pose pa(states[a].position, states[a].orientation);
-    const geometry::Pose pb(states[b].position, states[b].orientation);
+    const geometry::Pose pa(states_[a].position, states_[a].orientation);
+    const geometry::Pose pb(states_[b].position, states_[b].orientation);
     narrowphase::collide(shapes_[a], pa, shapes_[b], pb, margin, m, mesh_maps_);
     contacts.add(m);
   }
@@ -58,11 +89,21 @@ void World::resolve_contacts(double dt, std::span<dynamics::BodyState> states, S
 
   pair_materials_.clear();
   for (const contact::PairContacts& p : contacts.pairs) pair_materials_.push_back(combine(materials_[p.a], materials_[p.b]));
+}
 
+solver::SolveReport World::solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory) {
+  switch (settings_.solver) {
+    case SolverKind::soft: return soft_.solve(scene, memory);
+    case SolverKind::dem: return solver::solve_dem(scene, memory, settings_.dem);
+    default: return solver::solve_impulses(scene, memory, settings_.impulse_options());
+  }
+}
+
+void World::solve_contacts(double dt, StepReport& report) {
   // The solvers split the pairs into contact groups themselves (solver::contact_groups:
   // components linked through dynamic bodies only) and report the worst group.
-  mobility_ = solver::mobilities(states, inertias_);
-  const solver::ContactScene scene{states, inertias_, mobility_, contacts, pair_materials_, dt};
+  mobility_ = solver::mobilities(states_, inertias_);
+  const solver::ContactScene scene{states_, inertias_, mobility_, graph_.contacts(), pair_materials_, dt};
   // Before the contacts, so the solver sees the velocities the film has left.
   solver::apply_lubrication(scene, radii_, settings_.lubrication);
   const std::span<solver::CachedContact> memory = graph_.recall();
@@ -74,8 +115,8 @@ void World::resolve_contacts(double dt, std::span<dynamics::BodyState> states, S
   report.converged = report.converged && solved.converged;
 }
 
-void World::relax_contacts(std::span<dynamics::BodyState> states) {
-  soft_.relax(states, graph_.recalled());
+void World::relax_contacts() {
+  soft_.relax(states_, graph_.recalled());
   graph_.remember();
 }
 

@@ -1,13 +1,11 @@
 #include "rigidbody/world/world.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
-#include "rigidbody/dynamics/integrator.hpp"
 #include "rigidbody/geometry/mass_properties.hpp"
 
 namespace cosim::world {
@@ -70,32 +68,11 @@ double World::margin() const {
   return std::max(0.1 * smallest_radius_, film);
 }
 
-StepReport World::advance(double window, std::span<const dynamics::WindowWrench> external) {
-  const auto start = std::chrono::steady_clock::now();
-  StepReport report;
-  const dynamics::IntegratorSettings integrator{dynamics::Scheme::semi_implicit_euler, settings_.dt,
-                                                settings_.body_forces};
-  // "Only what the scene needs": without contacts (or with nothing to collide with) the
-  // integrator runs without a hook, so no broad or narrow phase is ever called.
-  dynamics::VelocityHook hook;
-  dynamics::PositionHook relax;
-  if (settings_.contact && size() > 1) {
-    const double span = (time_ + window) - time_;  // as the integrator sees the window
-    const double substep = span / static_cast<double>(dynamics::substep_count(span, settings_.dt));
-    const double gain = settings_.body_forces.gravity ? settings_.body_forces.g.norm() * window : 0.0;
-    const auto risks = tunnelling_risks(tunnelling_.thinnest(), states_, inertias_, substep, margin(), gain);
-    report.tunnelling_bodies = risks.size();
-    tunnelling_.warn(risks, substep);
-    hook = [&](double h, std::span<dynamics::BodyState> states) { resolve_contacts(h, states, report); };
-    if (settings_.solver == SolverKind::soft)
-      relax = [&](double, std::span<dynamics::BodyState> states) { relax_contacts(states); };
-  } else {
-    hook = [&](double, std::span<dynamics::BodyState>) { ++report.substeps; };
-  }
-  dynamics::advance(states_, inertias_, external, time_, time_ + window, integrator, hook, relax);
-  time_ += window;
-  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return report;
+std::size_t World::check_tunnelling(double window, double substep) {
+  const double gain = settings_.body_forces.gravity ? settings_.body_forces.g.norm() * window : 0.0;
+  const auto risks = tunnelling_risks(tunnelling_.thinnest(), states_, inertias_, substep, margin(), gain);
+  tunnelling_.warn(risks, substep);
+  return risks.size();
 }
 
 }  // namespace cosim::world

@@ -59,12 +59,17 @@ class World {
   solver::ContactMemory& contact_memory() { return graph_.memory(); }
 
  private:
-  // The contact part of one substep (step.cpp), run between the velocity and the position
-  // update of dynamics::advance.
-  void resolve_contacts(double dt, std::span<dynamics::BodyState> states, StepReport& report);
+  // The stages of a substep with contacts (step.cpp), between the velocity and the position
+  // half of the integration: the graph's edges from the broad phase, the contact set from
+  // the narrow phase, the velocities from the solver.
+  void broad_phase(StepReport& report);
+  void narrow_phase(StepReport& report);
+  void solve_contacts(double dt, StepReport& report);
   solver::SolveReport solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory);
-  // The soft step's second half (step.cpp), after the positions moved.
-  void relax_contacts(std::span<dynamics::BodyState> states);
+  // The soft step's second half, after the positions moved.
+  void relax_contacts();
+  // Counts and logs the bodies that may tunnel in this window's substeps (tunnelling.hpp).
+  std::size_t check_tunnelling(double window, double substep);
   double margin() const;
 
   Settings settings_;

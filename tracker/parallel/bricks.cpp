@@ -141,4 +141,15 @@ std::vector<int> Bricks::cuts() const {
   return out;
 }
 
+Bricks box_bricks(const BoxSpec& box, int ranks) {
+  std::array<int, 3> hexahedra{};
+  for (int a = 0; a < 3; ++a) hexahedra[a] = static_cast<int>(axis_nodes(box.axes[a]).size()) - 1;
+  Bricks bricks(hexahedra, box.tetrahedra ? 6 : 1, ranks, {});
+  for (int p = 0; p < ranks; ++p)
+    if (bricks.brick(p).hexahedra() == 0)
+      throw std::invalid_argument("a box of " + std::to_string(1LL * hexahedra[0] * hexahedra[1] * hexahedra[2]) +
+                                  " hexahedra over " + std::to_string(ranks) + " ranks leaves a rank none");
+  return bricks;
+}
+
 }  // namespace cosim::tracker

@@ -75,4 +75,7 @@ class Bricks {
   std::vector<Range> bricks_;
 };
 
+// The bricks of a box over `ranks` ranks; std::invalid_argument if a rank would have no cell.
+Bricks box_bricks(const BoxSpec& box, int ranks);
+
 }  // namespace cosim::tracker

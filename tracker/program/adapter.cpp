@@ -7,7 +7,9 @@
 #include "coupler/participant/body_rows.hpp"
 #include "coupler/participant/poses_at.hpp"
 #include "tracker/program/cell_fields.hpp"
+#include "tracker/program/output_grid.hpp"
 #include "tracker/program/particle_dump.hpp"
+#include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/velocity_input.hpp"
 #include "coupler/protocol/message.hpp"
 
@@ -35,8 +37,12 @@ participant::Outputs TrackerSolver::initialise(const scene::Scene& scene, const 
   // The coupler's poses (the rigid-body program's) win over the scene's.
   std::vector<Eigen::Isometry3d> placed;
   for (std::size_t b = 0; b < poses.size() / kPoseWidth; ++b) placed.push_back(pose_of(poses, b));
-  gas_ = std::make_unique<Simulation>(scene, placed, ranks_);
-  if (ranks_.lead()) grid_ = gas_->grid().grid;
+  TrackerScene setup = read_tracker(scene, ranks_);
+  place_bound_obstacles(setup, placed);
+  obstacle_body_ = setup.obstacle_body;
+  particle_output_ = setup.particle_output;
+  gas_ = std::make_unique<Simulation>(std::move(setup), ranks_);
+  if (ranks_.lead()) grid_ = output_grid(*gas_).grid;
   if (!state.empty()) restore(state);
   return {{}, std::vector<double>(kForceWidth * bodies_, 0.0), 0};
 }
@@ -52,7 +58,7 @@ participant::Outputs TrackerSolver::advance(const participant::Window& w, const 
   done_ = w.index + 1;
   if (in.fields) gas_->set_velocity(velocity_of(*in.fields));
   const std::vector<ObstacleTally> before = gas_->tallies();
-  const std::vector<int>& body_of = gas_->setup().obstacle_body;
+  const std::vector<int>& body_of = obstacle_body_;
   const int steps = gas_->advance(w.t0, w.t1, [&](double t, double h) {
     if (in.poses_start.empty()) return;
     const std::vector<double> poses = participant::poses_at(in, w, t);
@@ -84,8 +90,7 @@ output::FieldFrame TrackerSolver::fields() const {
   const std::vector<double> count = gas_->counts();
   const std::vector<CellMoments> moments = gas_->take_moments();
   std::optional<output::PointSet> particles;
-  if (const std::optional<ParticleOutput>& dump = gas_->setup().particle_output; dump && dump->at(done_, windows_))
-    particles = particle_set(*gas_, *dump);
+  if (particle_output_ && particle_output_->at(done_, windows_)) particles = particle_set(*gas_, *particle_output_);
   if (!ranks_.lead()) return {};  // rank 0 answers the coupler: only it has every cell's values
   output::FieldFrame frame{grid_, cell_fields(moments, count)};
   if (particles) frame.point_sets.push_back(std::move(*particles));

@@ -11,7 +11,8 @@
 #include <memory>
 
 #include "coupler/participant/solver.hpp"
-#include "tracker/program/simulation.hpp"
+#include "tracker/program/scene_particle_output.hpp"
+#include "tracker/step/simulation.hpp"
 
 namespace cosim::tracker {
 
@@ -46,6 +47,8 @@ class TrackerSolver final : public participant::Solver {
 
   Ranks ranks_;
   std::unique_ptr<Simulation> gas_;
+  std::vector<int> obstacle_body_;                 // TrackerScene's
+  std::optional<ParticleOutput> particle_output_;  // TrackerScene's
   output::Grid grid_;  // rank 0's: built once, sent with every frame
   std::size_t bodies_ = 0;
   std::uint64_t windows_ = 0;  // of the run

@@ -18,6 +18,7 @@
 #include "coupler/participant/mpi_team.hpp"
 #include "coupler/participant/program_args.hpp"
 #include "coupler/participant/run_participant.hpp"
+#include "coupler/participant/stage_summary.hpp"
 #include "coupler/protocol/client.hpp"
 #include "coupler/scene/error.hpp"
 #include "tracker/program/adapter.hpp"
@@ -60,7 +61,7 @@ int standalone(const std::string& scene, const std::string& output) {
                  static_cast<unsigned long long>(s.steps), s.seeded, s.injected, s.remaining,
                  static_cast<long long>(s.collisions), s.wall_seconds, s.setup_seconds,
                  cosim::tracker::summary(s.moves).c_str(), ranks.size() > 1 ? " on rank 0" : "",
-                 s.stages.summary().c_str());
+                 cosim::participant::stage_summary(cosim::tracker::kStageNames, s.stages.all()).c_str());
     if (ranks.size() > 1)
       std::fprintf(stderr, "cosim-tracker: %d ranks, %zu particles moved between them, %llu re-partitions\n",
                    ranks.size(), s.migrated, static_cast<unsigned long long>(s.rebalances));

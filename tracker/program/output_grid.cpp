@@ -23,23 +23,6 @@ std::vector<double> patch_areas(const Mesh& mesh) {
 
 }  // namespace
 
-std::vector<double> cell_volumes(const BoxSpec& box) {
-  std::array<std::vector<double>, 3> nodes;
-  for (int a = 0; a < 3; ++a) nodes[a] = axis_nodes(box.axes[a]);
-  // Every Kuhn tetrahedron is a sixth of its hexahedron.
-  const std::size_t per_hex = box.tetrahedra ? 6 : 1;
-  std::vector<double> volume;
-  volume.reserve((nodes[0].size() - 1) * (nodes[1].size() - 1) * (nodes[2].size() - 1) * per_hex);
-  for (std::size_t k = 0; k + 1 < nodes[2].size(); ++k)
-    for (std::size_t j = 0; j + 1 < nodes[1].size(); ++j)
-      for (std::size_t i = 0; i + 1 < nodes[0].size(); ++i) {
-        const double hexahedron =
-            (nodes[0][i + 1] - nodes[0][i]) * (nodes[1][j + 1] - nodes[1][j]) * (nodes[2][k + 1] - nodes[2][k]);
-        volume.insert(volume.end(), per_hex, hexahedron / static_cast<double>(per_hex));
-      }
-  return volume;
-}
-
 OutputGrid output_grid(const BoxSpec& box) {
   output::RectilinearGrid nodes;
   std::array<double, 3> length{};
@@ -66,6 +49,11 @@ OutputGrid output_grid(const BoxSpec& box) {
 OutputGrid output_grid(const Mesh& whole) {
   return {output::PolyhedralGrid{flat(whole.vertices), mixed_topology(whole), static_cast<std::size_t>(whole.cell_count())},
           whole.volume, whole.patches, patch_areas(whole)};
+}
+
+OutputGrid output_grid(const Simulation& gas) {
+  if (!gas.decomposition().ranks().lead()) throw std::logic_error("the output grid is rank 0's");
+  return gas.setup().box ? output_grid(*gas.setup().box) : output_grid(*gas.setup().mesh);
 }
 
 }  // namespace cosim::tracker

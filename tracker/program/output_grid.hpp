@@ -12,6 +12,8 @@
 #include "coupler/output/field_frame.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/mesh.hpp"
+#include "tracker/step/cell_volumes.hpp"
+#include "tracker/step/simulation.hpp"
 
 namespace cosim::tracker {
 
@@ -24,9 +26,9 @@ struct OutputGrid {
 
 // From the box's nodes alone (its tetrahedra from box_polyhedra()).
 OutputGrid output_grid(const BoxSpec& box);
-// Its volume per cell (m^3), as output_grid(box) has it.
-std::vector<double> cell_volumes(const BoxSpec& box);
 // From the whole mesh.
 OutputGrid output_grid(const Mesh& whole);
+// The gas's: of its box, or of its whole mesh. Rank 0 only (std::logic_error on others).
+OutputGrid output_grid(const Simulation& gas);
 
 }  // namespace cosim::tracker

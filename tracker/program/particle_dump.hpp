@@ -19,7 +19,8 @@
 #pragma once
 
 #include "coupler/output/field_frame.hpp"
-#include "tracker/program/simulation.hpp"
+#include "tracker/program/scene_particle_output.hpp"
+#include "tracker/step/simulation.hpp"
 
 namespace cosim::tracker {
 

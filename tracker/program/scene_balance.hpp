@@ -11,13 +11,9 @@
 #pragma once
 
 #include "coupler/scene/reader.hpp"
+#include "tracker/step/gas_setup.hpp"
 
 namespace cosim::tracker {
-
-struct Balance {
-  int every = 10;
-  double threshold = 1.2;
-};
 
 Balance read_balance(const scene::Reader& options);
 

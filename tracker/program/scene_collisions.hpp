@@ -12,14 +12,9 @@
 #include <optional>
 
 #include "coupler/scene/reader.hpp"
-#include "tracker/dsmc/collision.hpp"
+#include "tracker/step/collide.hpp"
 
 namespace cosim::tracker {
-
-struct Collisions {
-  dsmc::CollisionModel model;
-  bool nearest = false;
-};
 
 std::optional<Collisions> read_collisions(const scene::Reader& options, double mass);
 

@@ -17,14 +17,9 @@
 
 #include "coupler/scene/reader.hpp"
 #include "coupler/scene/scene.hpp"
-#include "tracker/tracers/advance.hpp"
+#include "tracker/step/gas_setup.hpp"
 
 namespace cosim::tracker {
-
-struct Tracers {
-  TracerModel model;
-  std::optional<VelocityField> velocity;  // read from velocity.file; none: coupled runs
-};
 
 std::optional<Tracers> read_tracers(const scene::Reader& options, const scene::Scene& scene);
 

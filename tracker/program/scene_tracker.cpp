@@ -5,11 +5,15 @@
 
 #include "coupler/scene/error.hpp"
 #include "tracker/mesh/box_part.hpp"
+#include "tracker/parallel/bricks.hpp"
+#include "tracker/program/scene_balance.hpp"
+#include "tracker/program/scene_collisions.hpp"
 #include "tracker/program/scene_inflow.hpp"
 #include "tracker/program/scene_mesh.hpp"
 #include "tracker/program/scene_obstacles.hpp"
 #include "tracker/program/scene_tracers.hpp"
 #include "tracker/program/scene_walls.hpp"
+#include "tracker/program/seeding.hpp"
 
 namespace cosim::tracker {
 
@@ -38,17 +42,6 @@ std::function<Mesh(const BoxSpec&)> box_parts(const Ranks& ranks) {
 }
 
 }  // namespace
-
-Bricks box_bricks(const BoxSpec& box, int ranks) {
-  std::array<int, 3> hexahedra{};
-  for (int a = 0; a < 3; ++a) hexahedra[a] = static_cast<int>(axis_nodes(box.axes[a]).size()) - 1;
-  Bricks bricks(hexahedra, box.tetrahedra ? 6 : 1, ranks, {});
-  for (int p = 0; p < ranks; ++p)
-    if (bricks.brick(p).hexahedra() == 0)
-      throw std::invalid_argument("a box of " + std::to_string(1LL * hexahedra[0] * hexahedra[1] * hexahedra[2]) +
-                                  " hexahedra over " + std::to_string(ranks) + " ranks leaves a rank none");
-  return bricks;
-}
 
 TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
   const scene::Participant* p = scene.participant("tracker");
@@ -104,6 +97,17 @@ TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
   t.balance = read_balance(options);
   options.finish();
   return t;
+}
+
+void place_bound_obstacles(TrackerScene& setup, const std::vector<Eigen::Isometry3d>& body_poses) {
+  if (body_poses.empty()) return;
+  for (int i = 0; i < setup.obstacles.count(); ++i)
+    if (const int b = setup.obstacle_body[static_cast<std::size_t>(i)]; b >= 0) {
+      if (static_cast<std::size_t>(b) >= body_poses.size())
+        throw std::runtime_error("poses for " + std::to_string(body_poses.size()) + " bodies, obstacle '" +
+                                 setup.obstacles.object(i).name + "' is bound to body " + std::to_string(b));
+      setup.obstacles.place(i, body_poses[static_cast<std::size_t>(b)]);
+    }
 }
 
 }  // namespace cosim::tracker

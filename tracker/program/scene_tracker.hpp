@@ -4,38 +4,21 @@
 // (scene_balance.hpp) and the participant's dt; checked together, so a key nobody reads is an error.
 #pragma once
 
-#include <memory>
+#include <optional>
+#include <vector>
 
 #include "coupler/scene/scene.hpp"
-#include "tracker/mesh/box_mesh.hpp"
-#include "tracker/parallel/bricks.hpp"
 #include "tracker/parallel/ranks.hpp"
-#include "tracker/program/scene_balance.hpp"
-#include "tracker/program/scene_collisions.hpp"
 #include "tracker/program/scene_particle_output.hpp"
-#include "tracker/program/scene_tracers.hpp"
-#include "tracker/program/seeding.hpp"
-#include "tracker/tracking/inflow.hpp"
-#include "tracker/tracking/domain.hpp"
-#include "tracker/tracking/obstacles.hpp"
+#include "tracker/step/gas_setup.hpp"
 
 namespace cosim::tracker {
 
-struct TrackerScene {
-  // On the heap: the domain and the obstacles refer to the mesh, and the whole moves. The
-  // whole mesh, or (read on several ranks) this rank's part of a box.
-  std::unique_ptr<Mesh> mesh;
-  std::optional<BoxSpec> box;     // the mesh is this box's
-  std::unique_ptr<const Domain> domain;
-  Obstacles obstacles;            // bound ones at their body's initial pose
-  std::vector<int> obstacle_body; // per obstacle: the scene body it moves with, or -1
-  Seeding particles;
-  std::vector<Inflow> inflows;
-  std::optional<Collisions> collisions;
-  std::optional<Tracers> tracers;  // tracer mode: no collisions, no inflow
+// The gas a Simulation is made from (obstacles bound to a body at the body's initial pose),
+// and what only the program needs besides.
+struct TrackerScene : GasSetup {
+  std::vector<int> obstacle_body;                 // per obstacle: the scene body it moves with, or -1
   std::optional<ParticleOutput> particle_output;  // particles written with the fields
-  Balance balance;                                 // over several ranks
-  double dt = 0.0;
 };
 
 // Throws scene::SceneError naming file, line, key and value. On several `ranks` a box mesh
@@ -43,8 +26,8 @@ struct TrackerScene {
 // bricks of parallel/bricks.hpp), and the checks that need every cell are made over the
 // ranks (collective).
 TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks = {});
-// The bricks of a box over `ranks` ranks (parallel/bricks.hpp); std::invalid_argument if a
-// rank would have no cell.
-Bricks box_bricks(const BoxSpec& box, int ranks);
+// Places the obstacles bound to bodies at `body_poses` (one per scene body, world from body
+// frame; none: they stay where the scene puts the bodies); std::runtime_error for too few.
+void place_bound_obstacles(TrackerScene& setup, const std::vector<Eigen::Isometry3d>& body_poses);
 
 }  // namespace cosim::tracker

@@ -9,26 +9,13 @@
 //     weight: 1e10           # optional: real molecules per simulator (fnum), default 1
 //     seed: 1                # optional: of every random draw of the run
 //
-// How the particles are drawn from these: seed_particles.hpp.
+// Read into Seeding; how the particles are drawn from it: tracker/step/seed_particles.hpp.
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
 #include "coupler/scene/reader.hpp"
-#include "tracker/tracking/particle.hpp"
+#include "tracker/step/seed_particles.hpp"
 
 namespace cosim::tracker {
-
-struct Seeding {
-  int per_cell = 0;
-  int total = 0;
-  double temperature = 0.0;
-  Vec3 drift = Vec3::Zero();
-  double mass = 0.0;
-  double weight = 1.0;  // real molecules per simulator (fnum)
-  std::uint64_t seed = 1;
-};
 
 Seeding read_seeding(const scene::Reader& particles);
 

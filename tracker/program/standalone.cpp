@@ -5,16 +5,20 @@
 #include <optional>
 
 #include "coupler/participant/seconds_since.hpp"
+#include "tracker/program/output_grid.hpp"
 #include "tracker/program/particle_dump.hpp"
 #include "tracker/program/progress.hpp"
-#include "tracker/program/simulation.hpp"
+#include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/tracker_file.hpp"
+#include "tracker/step/simulation.hpp"
 
 namespace cosim::tracker {
 
 RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, Ranks ranks) {
   const auto started = std::chrono::steady_clock::now();
-  Simulation gas(scene, {}, ranks);
+  TrackerScene setup = read_tracker(scene, ranks);
+  const std::optional<ParticleOutput> particle_output = setup.particle_output;
+  Simulation gas(std::move(setup), ranks);
   if (!scene.bodies.empty() && ranks.lead())
     std::fprintf(stderr, "cosim-tracker: note: --standalone keeps the scene's %zu bodies (and the obstacles bound to "
                          "them) where the scene puts them; in coupled runs the rigid-body program moves them\n",
@@ -26,13 +30,12 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
     if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
     std::vector<std::string> names;
     for (int i = 0; i < gas.setup().obstacles.count(); ++i) names.push_back(gas.setup().obstacles.object(i).name);
-    file.emplace(output, scene, gas.grid(), names);
+    file.emplace(output, scene, output_grid(gas), names);
   }
 
   RunSummary summary;
   summary.setup_seconds = participant::seconds_since(started);
   const std::uint64_t windows = scene.windows();
-  const std::optional<ParticleOutput>& particle_output = gas.setup().particle_output;
   // Every rank gathers (the sums and the particles are collective), rank 0 writes.
   const auto write = [&](std::uint64_t done, double time) {
     std::vector<output::PointSet> point_sets;

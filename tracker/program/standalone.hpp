@@ -10,7 +10,7 @@
 
 #include "coupler/scene/scene.hpp"
 #include "tracker/parallel/ranks.hpp"
-#include "tracker/program/stage_times.hpp"
+#include "tracker/step/stage_times.hpp"
 #include "tracker/tracking/move.hpp"
 
 namespace cosim::tracker {

@@ -1,4 +1,4 @@
-// Fixed and translation-only bodies, buoyancy, and the velocity hook.
+// Fixed and translation-only bodies, buoyancy, and the two halves of a substep.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -20,8 +20,8 @@ BodyState moving() {
 
 const WindowWrench kPush{{{1.0, 2.0, 3.0}, {0.5, -0.5, 0.2}}, {{3.0, 2.0, 1.0}, {0.1, 0.2, 0.3}}};
 
-// The hook tries to change every velocity; it must not get through to the frozen parts.
-void meddle(double, std::span<BodyState> states) {
+// Tries to change every velocity between the halves; it must not get through to the frozen parts.
+void meddle(std::span<BodyState> states) {
   for (BodyState& s : states) {
     s.velocity += Eigen::Vector3d::Constant(1.0);
     s.angular_velocity += Eigen::Vector3d::Constant(1.0);
@@ -33,7 +33,12 @@ TEST(BodyKinds, FixedAndTranslationOnlyBodies) {
     const std::vector<BodyInertia> inertia{BodyInertia::fixed(), box_body({0.1, 0.2, 0.3}, false)};
     std::vector<BodyState> states{moving(), moving()};
     const std::vector<WindowWrench> push{kPush, kPush};
-    advance(states, inertia, push, 0.0, 1.0, {scheme, 0.01, {.gravity = true}}, meddle);
+    Substeps substeps(states, inertia, push, 0.0, 1.0, {scheme, 0.01, {.gravity = true}});
+    for (long k = 0; k < substeps.count(); ++k) {
+      substeps.integrate_velocities(k);
+      meddle(states);
+      substeps.integrate_positions();
+    }
     EXPECT_EQ(states[0].position, moving().position);
     EXPECT_EQ(states[0].velocity, moving().velocity);
     EXPECT_EQ(states[0].orientation.coeffs(), moving().orientation.coeffs());
@@ -61,30 +66,27 @@ TEST(BodyKinds, BuoyancyIsMinusFluidDensityTimesVolumeTimesG) {
   EXPECT_THROW((void)forces.acceleration(body), std::invalid_argument);
 }
 
-TEST(BodyKinds, HookRunsOncePerSubstepBetweenVelocityAndPosition) {
+TEST(BodyKinds, PositionsMoveWithTheVelocitiesSetBetweenTheHalves) {
   const BodyInertia body = box_body({0.1, 0.2, 0.3});
   BodyState state = moving();
-  int calls = 0;
-  const auto stop = [&](double dt, std::span<BodyState> states) {
-    EXPECT_DOUBLE_EQ(dt, 0.1);
-    ++calls;
-    states[0].velocity.setZero();  // a perfectly sticky contact
-  };
-  advance({&state, 1}, {&body, 1}, {}, 0.0, 1.0, {Scheme::semi_implicit_euler, 0.1, {.gravity = true}}, stop);
-  EXPECT_EQ(calls, 10);
-  EXPECT_EQ(state.position, moving().position);  // positions moved with the hook's velocities
+  Substeps substeps({&state, 1}, {&body, 1}, {}, 0.0, 1.0, {Scheme::semi_implicit_euler, 0.1, {.gravity = true}});
+  for (long k = 0; k < substeps.count(); ++k) {
+    substeps.integrate_velocities(k);
+    state.velocity.setZero();  // a perfectly sticky contact
+    substeps.integrate_positions();
+  }
+  EXPECT_EQ(substeps.count(), 10);
+  EXPECT_DOUBLE_EQ(substeps.length(), 0.1);
+  EXPECT_EQ(state.position, moving().position);
 }
 
 TEST(BodyKinds, SubstepCountIsTheRoundedRatio) {
   const BodyInertia body = box_body({0.1, 0.2, 0.3});
   BodyState state;
-  int calls = 0;
-  advance({&state, 1}, {&body, 1}, {}, 0.0, 1.0, {Scheme::leapfrog, 0.3, {}},
-          [&](double dt, std::span<BodyState>) {
-            ++calls;
-            EXPECT_DOUBLE_EQ(dt, 1.0 / 3.0);
-          });
-  EXPECT_EQ(calls, 3);
+  const Substeps thirds({&state, 1}, {&body, 1}, {}, 0.0, 1.0, {Scheme::leapfrog, 0.3, {}});
+  EXPECT_EQ(thirds.count(), 3);
+  EXPECT_DOUBLE_EQ(thirds.length(), 1.0 / 3.0);
+  EXPECT_EQ(Substeps({&state, 1}, {&body, 1}, {}, 1.0, 1.0, {}).count(), 0);
   EXPECT_THROW(advance({&state, 1}, {}, {}, 0.0, 1.0, {}), std::invalid_argument);
 }
 

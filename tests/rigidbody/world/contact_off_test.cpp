@@ -19,6 +19,11 @@ TEST(ContactOff, NoBroadPhaseAndBodiesFallThrough) {
   EXPECT_EQ(report.pairs_tested, 0u);
   EXPECT_EQ(report.contacts, 0u);
   EXPECT_TRUE(world.graph().edges().empty());
+  // Only the two integration stages ran, and took time.
+  for (const Stage contact : {Stage::broad_phase, Stage::narrow_phase, Stage::solve_contacts, Stage::relax_contacts})
+    EXPECT_EQ(report.seconds[contact], 0.0);
+  EXPECT_GT(report.seconds[Stage::integrate_velocities], 0.0);
+  EXPECT_GT(report.seconds[Stage::integrate_positions], 0.0);
   // Free fall under semi-implicit Euler: z0 - g t^2 / 2 - g t h / 2.
   const double drop = 0.5 * 9.81 * (1.0 + s.dt);
   EXPECT_NEAR(world.states()[a].position.z(), 0.1 - drop, 1e-9);

@@ -26,9 +26,9 @@
 #include "tracker/parallel/partition.hpp"
 #include "tracker/program/adapter.hpp"
 #include "tracker/program/scene_tracker.hpp"
-#include "tracker/program/seed_particles.hpp"
-#include "tracker/program/simulation.hpp"
 #include "tracker/program/standalone.hpp"
+#include "tracker/step/seed_particles.hpp"
+#include "tracker/step/simulation.hpp"
 
 namespace cosim::tracker {
 namespace {
@@ -340,7 +340,7 @@ TEST(TwoRanks, ParticleWeightedBalanceEvensTheLoads) {
       "      particles: {per_cell: 20, temperature: 273.15, mass: 6.63e-26, weight: 3.5e6, seed: 3}\n"
       "      balance: {every: 5, threshold: 1.2}\n",
       "balance.yaml");
-  Simulation gas(scene, {}, Ranks(MPI_COMM_WORLD));
+  Simulation gas(read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
   const auto imbalance = [&] {
     std::vector<long long> held(2, 0);
     held[static_cast<std::size_t>(rank())] = static_cast<long long>(gas.swarm().size());
@@ -369,7 +369,8 @@ TEST(TwoRanks, ParticleWeightedBalanceEvensTheLoads) {
   // One particle: max/mean is 2 whatever the partition, so none is taken.
   std::string alone = scene.text;
   alone.replace(alone.find("per_cell: 20"), 12, "total: 1");
-  Simulation one(scene::load_scene_from_string(alone, "alone.yaml"), {}, Ranks(MPI_COMM_WORLD));
+  Simulation one(read_tracker(scene::load_scene_from_string(alone, "alone.yaml"), Ranks(MPI_COMM_WORLD)),
+                 Ranks(MPI_COMM_WORLD));
   for (int k = 0; k < 30; ++k) one.step(7.0e-9);
   EXPECT_EQ(one.rebalances(), 0u);
   EXPECT_EQ(one.particles(), 1u);
@@ -424,8 +425,8 @@ TEST(TwoRanks, EachRankTracksOnItsPartAndHandsMovesOver) {
     const scene::Scene scene =
         deterministic_gas("0.1", box ? "{type: box, cells: [6, 6, 6]}"
                                      : "{type: box, cells: [6, 6, 6], perturb: {fraction: 0.05, seed: 2}}");
-    Simulation two(scene, {}, Ranks(MPI_COMM_WORLD));
-    Simulation one(scene, {}, Ranks());
+    Simulation two(read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
+    Simulation one(read_tracker(scene));
     const Mesh& part = two.tracked();
     const Index cells = one.tracked().cell_count();
     EXPECT_LT(part.cell_count(), cells);
@@ -463,7 +464,7 @@ TEST(TwoRanks, AFaultOnOneRanksPartStopsEveryRank) {
       "fault.yaml");
   std::string message;
   try {
-    Simulation gas(scene, {}, Ranks(MPI_COMM_WORLD));
+    Simulation gas(read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
   } catch (const scene::SceneError& e) {
     message = e.what();
   }

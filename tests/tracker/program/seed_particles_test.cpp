@@ -7,7 +7,7 @@
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/geometry.hpp"
 #include "tracker/program/scene_tracker.hpp"
-#include "tracker/program/seed_particles.hpp"
+#include "tracker/step/seed_particles.hpp"
 
 namespace cosim::tracker {
 namespace {

@@ -10,7 +10,8 @@
 
 #include "coupler/output/run_file.hpp"
 #include "tests/tracker/program/scene_error.hpp"
-#include "tracker/program/simulation.hpp"
+#include "tracker/program/scene_tracker.hpp"
+#include "tracker/step/simulation.hpp"
 
 namespace cosim::tracker {
 namespace {
@@ -85,7 +86,7 @@ std::vector<std::array<double, 3>> positions(const Swarm& swarm) {
 TEST(TrackerTracers, SolidBodyRotationFromAFluidRunFileReturnsEveryTracer) {
   const auto dir = scratch("tracers_rotation");
   rotation_run_file(dir);
-  Simulation gas(tracer_scene(dir, "{velocity: {file: fluid.h5}, substeps: 2}"));
+  Simulation gas(read_tracker(tracer_scene(dir, "{velocity: {file: fluid.h5}, substeps: 2}")));
   const auto start = positions(gas.swarm());
   ASSERT_EQ(start.size(), 300u);
   for (int k = 0; k < 4; ++k) gas.advance(0.25 * k, 0.25 * (k + 1));
@@ -106,7 +107,7 @@ TEST(TrackerTracers, BadSectionsAreRefusedWithTheKeyNamed) {
   const auto dir = scratch("tracers_errors");
   rotation_run_file(dir);
   const auto error = [&](const std::string& tracers, const std::string& extra = "") {
-    return testing::scene_error_of([&] { Simulation gas(tracer_scene(dir, tracers, extra)); });
+    return testing::scene_error_of([&] { read_tracker(tracer_scene(dir, tracers, extra)); });
   };
   EXPECT_NE(error("{velocity: {file: nothing.h5}}").find("tracers.velocity.file"), std::string::npos);
   EXPECT_NE(error("{velocity: {file: nothing.h5}}").find("nothing.h5"), std::string::npos);
@@ -117,7 +118,7 @@ TEST(TrackerTracers, BadSectionsAreRefusedWithTheKeyNamed) {
 
 TEST(TrackerTracers, WithoutAVelocityFieldTheStepSaysWhatIsMissing) {
   const auto dir = scratch("tracers_no_field");
-  Simulation gas(tracer_scene(dir, "{response_time: 0.1}"));
+  Simulation gas(read_tracker(tracer_scene(dir, "{response_time: 0.1}")));
   try {
     gas.step(0.01);
     FAIL() << "stepped without a velocity field";

@@ -1,7 +1,7 @@
 #include "tests/tracker/transport/channel.hpp"
 
 #include "tracker/mesh/box_mesh.hpp"
-#include "tracker/program/collide.hpp"
+#include "tracker/step/collide.hpp"
 #include "tracker/tracking/sampling.hpp"
 
 #include <algorithm>

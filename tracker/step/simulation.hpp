@@ -1,8 +1,9 @@
-// The gas of a scene as cosim-tracker advances it, the same standalone and coupled: the
-// particles, their collisions, inflow, walls and obstacles, and what is sampled of them.
-// One step (step()) is what DSMC codes do per time step: migrate (over several ranks, when
-// particles may sit in ghosts; now and then re-partition), sort by cell, collide, move,
-// inject, hand over the moves that entered other ranks' cells, sample.
+// The gas as cosim-tracker advances it, the same standalone and coupled: the particles,
+// their collisions, inflow, walls and obstacles, and what is sampled of them. One step
+// (step()) is what DSMC codes do per time step, as named stages, each timed (StageTimes):
+// migrate (over several ranks, when particles may sit in ghosts; now and then
+// re-partition), sort by cell, collide, move, inject, hand over the moves that entered other
+// ranks' cells, sample.
 //
 // Over several ranks (tracker/parallel) a rank tracks on its part of the mesh (its cells and
 // two layers of ghosts, mesh/part.hpp) with the obstacles registered there, and holds the
@@ -22,30 +23,23 @@
 #include <span>
 #include <vector>
 
-#include "coupler/scene/scene.hpp"
-#include "tracker/program/collide.hpp"
-#include "tracker/program/output_grid.hpp"
-#include "tracker/program/scene_tracker.hpp"
-#include "tracker/program/stage_times.hpp"
 #include "tracker/mesh/part.hpp"
 #include "tracker/parallel/decomposition.hpp"
+#include "tracker/step/collide.hpp"
+#include "tracker/step/gas_setup.hpp"
+#include "tracker/step/stage_times.hpp"
 #include "tracker/tracking/sampling.hpp"
 
 namespace cosim::tracker {
 
 class Simulation {
  public:
-  // Reads the scene's tracker section (scene::SceneError if it is bad) and seeds the
-  // particles with the scene's seed, around the obstacles bound to bodies at `body_poses`
-  // (one per scene body, world from body frame) or, if none are given, where the scene
-  // puts the bodies. Collective over `ranks`: each rank seeds the cells it owns, with the
-  // particles a one-rank run has there (seed_particles.hpp).
-  explicit Simulation(const scene::Scene& scene, const std::vector<Eigen::Isometry3d>& body_poses = {},
-                      Ranks ranks = {});
+  // Seeds the particles with the setup's seed around its obstacles. Collective over
+  // `ranks`: each rank seeds the cells it owns, with the particles a one-rank run has there
+  // (seed_particles.hpp). A setup read on several ranks may hold this rank's part of a box.
+  explicit Simulation(GasSetup setup, Ranks ranks = {});
 
-  const TrackerScene& setup() const { return setup_; }
-  // The mesh as the output shows it, built anew (rank 0 only: std::logic_error on others).
-  OutputGrid grid() const;
+  const GasSetup& setup() const { return setup_; }
   // This rank's cells (the swarm's cell numbers): the whole mesh, or its part on several
   // ranks (Mesh::global_cell gives a cell's number in the whole).
   const Mesh& tracked() const { return part_ ? *part_ : *setup_.mesh; }
@@ -54,7 +48,7 @@ class Simulation {
   // a moving wall or a recovery put in a ghost (they migrate at the start of the next step).
   const Swarm& swarm() const { return swarm_; }
 
-  // Every random draw from here on comes from `stream` of the scene's seed (one stream per
+  // Every random draw from here on comes from `stream` of the setup's seed (one stream per
   // rank): a coupled run reseeds at each window, so a repeated window draws the same
   // numbers and a run resumed from a checkpoint continues as it would have.
   void reseed(std::uint64_t stream);
@@ -66,7 +60,7 @@ class Simulation {
   void step(double dt);
   // Tracer mode: the fluid's velocity from here on (coupled runs: every window).
   void set_velocity(VelocityField velocity) { velocity_ = std::move(velocity); }
-  // From t0 to exactly t1 in equal steps of at most the scene's dt, calling before(t, h)
+  // From t0 to exactly t1 in equal steps of at most the setup's dt, calling before(t, h)
   // before each step of length h that ends at t (to move obstacles there). Returns the
   // number of steps. Standalone and coupled runs step a window alike.
   int advance(double t0, double t1, const std::function<void(double t, double h)>& before = {});
@@ -79,7 +73,7 @@ class Simulation {
   std::size_t migrated() const;  // sent to another rank, counted once per move between ranks
   std::int64_t collisions() const;
   // Re-partitions (the same on every rank): the particle loads drifted apart past the
-  // scene's balance threshold (scene_balance.hpp).
+  // setup's balance threshold (Balance).
   std::uint64_t rebalances() const { return rebalances_; }
   // This rank's wall time per stage of step() since the start (not restored by restore()).
   const StageTimes& stages() const { return stages_; }
@@ -97,14 +91,20 @@ class Simulation {
   // Everything a later restore() needs to continue exactly from here (with the same
   // reseed() calls): this rank's particles and states, obstacle poses, collision state per
   // cell, the sampler's sums and the rank's totals. Random generators are not in it (see
-  // reseed()). A state restores on the rank, and the rank count, that wrote it.
+  // reseed()). A state restores on the rank, and the rank count, that wrote it
+  // (simulation_state.cpp).
   std::vector<double> state() const;
-  // std::runtime_error for a state that is not one of this scene's. Collective over the
+  // std::runtime_error for a state that is not one of this setup's. Collective over the
   // ranks (rank 0's state holds the cells' owners for all).
   void restore(std::span<const double> state);
 
  private:
-  void carry_tracers(double dt);
+  // The stages of step() but sort, collide and sample (simulation_stages.cpp).
+  void migrate();
+  void move(double dt);
+  void carry_tracers(double dt);  // tracer mode's move
+  void inject(double dt);
+  void hand_over();  // over several ranks, without tracers
   // Collective, every setup_.balance.every steps on several ranks: a new partition
   // weighted by the particles if the most a rank holds exceeds the mean by the threshold;
   // the particles, the inflow faces and the cells' collision state follow their cells.
@@ -117,7 +117,7 @@ class Simulation {
   // cells on rank 0, empty elsewhere (collective): only rank 0 holds an array of every cell.
   std::vector<double> at_lead(std::span<const double> mine, std::size_t width) const;
 
-  TrackerScene setup_;
+  GasSetup setup_;
   std::optional<VelocityField> velocity_;  // tracer mode
   std::uint64_t seed_;
   Decomposition decomposition_;

@@ -1,4 +1,4 @@
-#include "tracker/program/collide.hpp"
+#include "tracker/step/collide.hpp"
 
 namespace cosim::tracker {
 

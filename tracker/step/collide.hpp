@@ -7,12 +7,17 @@
 #include <span>
 #include <vector>
 
+#include "tracker/dsmc/collision.hpp"
 #include "tracker/dsmc/ntc.hpp"
 #include "tracker/dsmc/random.hpp"
-#include "tracker/program/scene_collisions.hpp"
 #include "tracker/tracking/swarm.hpp"
 
 namespace cosim::tracker {
+
+struct Collisions {
+  dsmc::CollisionModel model;
+  bool nearest = false;  // nearest neighbour in the cell, not Bird's uniform selection
+};
 
 class CellCollider {
  public:

@@ -1,4 +1,4 @@
-// The initial gas of a scene (Seeding, seeding.hpp), the same for any number of ranks: each
+// The initial gas (Seeding), the same for any number of ranks: each
 // random number comes from a pcg64 stream keyed by what it decides (one cell's positions and
 // velocities; one range of cells' share of a count), not from one sequence that every rank
 // would have to run through in full. A rank draws only its own cells' particles, and 1 and
@@ -14,14 +14,24 @@
 // the result is exact in distribution; every rank takes part in every round (collective).
 #pragma once
 
+#include <cstdint>
 #include <functional>
 
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/parallel/decomposition.hpp"
-#include "tracker/program/seeding.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
 namespace cosim::tracker {
+
+struct Seeding {
+  int per_cell = 0;  // particles per cell, or
+  int total = 0;     // in all, cells drawn by volume (exactly one of the two is used)
+  double temperature = 0.0;  // K: Maxwellian velocities about the drift (0: all at the drift)
+  Vec3 drift = Vec3::Zero();
+  double mass = 0.0;    // kg, also what diffuse walls re-emit with
+  double weight = 1.0;  // real molecules per simulator (fnum)
+  std::uint64_t seed = 1;  // of every random draw of the run
+};
 
 // The whole mesh's cells by volume, for `total`'s split: `below(c)` is the volume of the cells
 // numbered below c (0 <= c <= cells), without holding every cell's.

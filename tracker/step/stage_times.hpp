@@ -4,7 +4,7 @@
 
 #include <array>
 #include <chrono>
-#include <string>
+#include <cstddef>
 
 namespace cosim::tracker {
 
@@ -22,8 +22,7 @@ class StageTimes {
     seconds_[static_cast<std::size_t>(stage)] += took.count();
   }
   double seconds(Stage stage) const { return seconds_[static_cast<std::size_t>(stage)]; }
-  // "migrate 0.12 s, sort 0.80 s, ...": the stages that took any time.
-  std::string summary() const;
+  const std::array<double, kStageNames.size()>& all() const { return seconds_; }  // in kStageNames' order
 
  private:
   std::array<double, kStageNames.size()> seconds_{};

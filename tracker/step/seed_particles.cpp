@@ -1,4 +1,4 @@
-#include "tracker/program/seed_particles.hpp"
+#include "tracker/step/seed_particles.hpp"
 
 #include <algorithm>
 #include <array>
