@@ -22,6 +22,13 @@ broadphase::Object object_of(std::uint32_t id, const geometry::Shape& shape, con
   return o;
 }
 
+// The step reports the worst substep.
+void merge(StepReport& report, const solver::SolveReport& solved) {
+  report.solver_iterations = std::max(report.solver_iterations, solved.iterations);
+  report.residual = std::max(report.residual, solved.residual);
+  report.converged = report.converged && solved.converged;
+}
+
 }  // namespace
 
 solver::SolveReport World::solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory) {
@@ -66,16 +73,13 @@ void World::resolve_contacts(double dt, std::span<dynamics::BodyState> states, S
   // Before the contacts, so the solver sees the velocities the film has left.
   solver::apply_lubrication(scene, radii_, settings_.lubrication);
   const std::span<solver::CachedContact> memory = graph_.recall();
-  const solver::SolveReport solved = solve(scene, memory);
+  merge(report, solve(scene, memory));
   // The soft step remembers after its relax, once the positions moved.
   if (settings_.solver != SolverKind::soft) graph_.remember();
-  report.solver_iterations = std::max(report.solver_iterations, solved.iterations);
-  report.residual = std::max(report.residual, solved.residual);
-  report.converged = report.converged && solved.converged;
 }
 
-void World::relax_contacts(std::span<dynamics::BodyState> states) {
-  soft_.relax(states, graph_.recalled());
+void World::relax_contacts(std::span<dynamics::BodyState> states, StepReport& report) {
+  merge(report, soft_.relax(states, graph_.recalled()));
   graph_.remember();
 }
 

@@ -25,6 +25,7 @@ solver::ImpulseOptions Settings::impulse_options() const {
 solver::SoftOptions Settings::soft_options() const {
   solver::SoftOptions o = soft;
   if (iterations > 0) o.iterations = iterations;
+  o.tolerance = tolerance;
   return o;
 }
 
@@ -63,6 +64,16 @@ std::uint32_t World::add(const BodyDesc& body) {
   return static_cast<std::uint32_t>(states_.size() - 1);
 }
 
+void World::reserve(std::size_t bodies) {
+  shapes_.reserve(bodies);
+  radii_.reserve(bodies);
+  states_.reserve(bodies);
+  inertias_.reserve(bodies);
+  materials_.reserve(bodies);
+  tunnelling_.reserve(bodies);
+  objects_.reserve(bodies);
+}
+
 // Pairs within the lubrication range must reach the narrow phase whatever the margin.
 double World::margin() const {
   const double film = settings_.lubrication.active() ? settings_.lubrication.range : 0.0;
@@ -88,7 +99,7 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
     tunnelling_.warn(risks, substep);
     hook = [&](double h, std::span<dynamics::BodyState> states) { resolve_contacts(h, states, report); };
     if (settings_.solver == SolverKind::soft)
-      relax = [&](double, std::span<dynamics::BodyState> states) { relax_contacts(states); };
+      relax = [&](double, std::span<dynamics::BodyState> states) { relax_contacts(states, report); };
   } else {
     hook = [&](double, std::span<dynamics::BodyState>) { ++report.substeps; };
   }

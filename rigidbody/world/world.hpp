@@ -38,6 +38,9 @@ class World {
   // Returns the body's index. Throws std::invalid_argument for an unbounded shape that is
   // not fixed or a dynamic body without positive density.
   std::uint32_t add(const BodyDesc& body);
+  // Room for this many bodies in every per-body array: added one by one, the arrays would
+  // otherwise grow by doubling and hold up to twice the bytes they need.
+  void reserve(std::size_t bodies);
 
   // Advances all bodies by `window` in substeps of about settings().dt. `external` is
   // empty or one wrench per body (the coupler's forces over this window).
@@ -64,7 +67,7 @@ class World {
   void resolve_contacts(double dt, std::span<dynamics::BodyState> states, StepReport& report);
   solver::SolveReport solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory);
   // The soft step's second half (step.cpp), after the positions moved.
-  void relax_contacts(std::span<dynamics::BodyState> states);
+  void relax_contacts(std::span<dynamics::BodyState> states, StepReport& report);
   double margin() const;
 
   Settings settings_;
