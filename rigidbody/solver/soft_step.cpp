@@ -89,7 +89,7 @@ SolveReport SoftStep::solve(const ContactScene& scene, std::span<const CachedCon
 
 SolveReport SoftStep::relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory) {
   SolveReport report = pass(states, false, options_.relax_iterations);
-  report.iterations += options_.iterations;
+  if (!groups_.empty()) report.iterations += options_.iterations;
   restitution(states);
   for (const Row& r : rows_)
     memory[r.point] = {.normal = r.impulse[0],

@@ -27,6 +27,16 @@ TEST(SoftReport, ARestingSphereTakesTheFixedSweepsAndSettles) {
   }
 }
 
+// Guards against: sweeps reported for a substep without contacts.
+TEST(SoftReport, NoContactsNoSweeps) {
+  World world;
+  add_ground(world);
+  add_sphere(world, kRadius, {0.0, 0.0, 10 * kRadius});
+  const StepReport r = world.advance(world.settings().dt);
+  EXPECT_EQ(r.solver_iterations, 0);
+  EXPECT_TRUE(r.converged);
+}
+
 // Residual of the last step of a 6 x 6 x 4 simple cubic pile of touching spheres (about
 // 300 points: one Gauss-Seidel group) after `steps`, with these sweep counts.
 StepReport pile(int iterations, int relax_iterations, int steps) {
