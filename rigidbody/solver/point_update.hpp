@@ -1,7 +1,7 @@
 // The projected Gauss-Seidel step for one contact point, in its local frame. Gauss-Seidel,
 // Jacobi and sequential impulses differ only in when its result reaches the bodies, so
-// this is the one place the contact law lives. Inline: the sweeps run it for every point
-// many times a step, and a call costs about as much as the arithmetic.
+// this is the one place the contact law lives. Inline, as ContactFrame's velocity and
+// apply: the sweeps run it for every point many times a step.
 #pragma once
 
 #include <algorithm>
