@@ -79,11 +79,13 @@ RunResult run_bullet(const PourScene& scene) {
   }
 
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = cpu_time();
   for (int step = 0; step < scene.steps; ++step) {
     w->world.stepSimulation(static_cast<btScalar>(scene.dt), 0);
     r.pairs_tested += w->dispatcher.getNumManifolds();
   }
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.cpu_seconds = cpu_time() - cpu_start;
   r.heap_bytes = heap_in_use() - heap_before;
   r.peak_rss_bytes = peak_rss();
 

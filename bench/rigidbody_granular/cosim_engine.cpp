@@ -1,5 +1,5 @@
-// The scene in cosim's rigid-body world: sequential impulses with Coulomb friction, the
-// box as five fixed half-spaces.
+// The scene in cosim's rigid-body world with Coulomb friction, the box as five fixed
+// half-spaces.
 #include <chrono>
 #include <memory>
 
@@ -22,11 +22,13 @@ void add_walls(world::World& w, double half_width) {
 
 }  // namespace
 
-RunResult run_cosim(const PourScene& scene) {
-  RunResult r{.engine = "cosim", .bodies = scene.positions.size(), .steps = scene.steps};
+RunResult run_cosim(const PourScene& scene, world::SolverKind solver) {
+  const bool soft = solver == world::SolverKind::soft;
+  RunResult r{.engine = soft ? "soft" : "SI", .bodies = scene.positions.size(), .steps = scene.steps};
   const double heap_before = heap_in_use();
   auto w = std::make_unique<world::World>(world::Settings{
-      .solver = world::SolverKind::sequential_impulses, .iterations = scene.iterations, .contact_margin = scene.margin, .dt = scene.dt});
+      .solver = solver, .iterations = soft ? 0 : scene.iterations, .contact_margin = scene.margin, .dt = scene.dt});
+  w->reserve(5 + scene.positions.size());
   add_walls(*w, scene.half_width);
   const std::uint32_t first = static_cast<std::uint32_t>(w->size());
   for (std::size_t i = 0; i < scene.positions.size(); ++i) {
@@ -38,8 +40,10 @@ RunResult run_cosim(const PourScene& scene) {
   }
 
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = cpu_time();
   for (int step = 0; step < scene.steps; ++step) r.pairs_tested += static_cast<double>(w->advance(scene.dt).pairs_tested);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.cpu_seconds = cpu_time() - cpu_start;
   r.heap_bytes = heap_in_use() - heap_before;
   r.peak_rss_bytes = peak_rss();
 

@@ -1,8 +1,9 @@
 // Granular throughput: N equal spheres poured into a box (pour.hpp), run by cosim's
 // rigid-body world and, when built with -DCOSIM_BENCH_BULLET=ON, by Bullet on the same
-// scene. Prints body-steps and pair tests per second, how they scale with N, the heap held
-// per body and the deepest overlap at the end.
+// scene. Prints body-steps and pair tests per second of processor time, how they scale
+// with N, the heap held per body and the deepest overlap at the end.
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -15,15 +16,16 @@ namespace {
 
 using cosim::bench::RunResult;
 
+double rate(const RunResult& r) { return static_cast<double>(r.bodies) * r.steps / r.cpu_seconds; }
+
 void print_header() {
-  std::printf("%-7s %8s %6s %9s %13s %13s %11s %11s %12s %11s\n", "engine", "N", "steps", "wall[s]",
+  std::printf("%-7s %8s %6s %9s %9s %13s %13s %11s %11s %12s %11s\n", "engine", "N", "steps", "wall[s]", "cpu[s]",
               "body-steps/s", "pairs/s", "heap B/body", "rss B/body", "max pen./r", "mean z/r");
 }
 
 void print(const RunResult& r, double radius) {
-  const double body_steps = static_cast<double>(r.bodies) * r.steps;
-  std::printf("%-7s %8zu %6d %9.2f %13.3e %13.3e %11.0f %11.0f %12.2e %11.2f\n", r.engine.c_str(), r.bodies,
-              r.steps, r.wall_seconds, body_steps / r.wall_seconds, r.pairs_tested / r.wall_seconds,
+  std::printf("%-7s %8zu %6d %9.2f %9.2f %13.3e %13.3e %11.0f %11.0f %12.2e %11.2f\n", r.engine.c_str(), r.bodies,
+              r.steps, r.wall_seconds, r.cpu_seconds, rate(r), r.pairs_tested / r.cpu_seconds,
               r.heap_bytes / static_cast<double>(r.bodies), r.peak_rss_bytes / static_cast<double>(r.bodies),
               r.max_penetration / radius, r.mean_height / radius);
   std::fflush(stdout);
@@ -36,9 +38,21 @@ void print_scaling(const std::vector<RunResult>& runs) {
     for (const RunResult& b : runs)
       if (b.engine == r.engine && (base == nullptr || b.bodies < base->bodies)) base = &b;
     if (base == &r) continue;
-    const auto rate = [](const RunResult& x) { return static_cast<double>(x.bodies) * x.steps / x.wall_seconds; };
     std::printf("%s: body-steps/s at N = %zu is %.2f of that at N = %zu\n", r.engine.c_str(), r.bodies,
                 rate(r) / rate(*base), base->bodies);
+  }
+}
+
+// Each cosim run against Bullet's run of the same N: the goal is at least twice its rate at
+// no larger overlap.
+void print_ratios(const std::vector<RunResult>& runs) {
+  for (const RunResult& bullet : runs) {
+    if (bullet.engine != "bullet") continue;
+    for (const RunResult& r : runs)
+      if (r.engine != "bullet" && r.bodies == bullet.bodies)
+        std::printf("%s / bullet at N = %zu: body-steps/s %.2fx, max overlap %.2fx, heap %.3fx\n", r.engine.c_str(),
+                    r.bodies, rate(r) / rate(bullet), r.max_penetration / bullet.max_penetration,
+                    r.heap_bytes / bullet.heap_bytes);
   }
 }
 
@@ -49,10 +63,15 @@ int main(int argc, char** argv) {
   std::vector<std::size_t> sizes{1000, 10000, 100000};
   int steps = 500;
   int iterations = 10;
+  std::vector<std::string> solvers{"soft"};
   [[maybe_unused]] bool bullet = false;  // only with COSIM_BENCH_BULLET
   app.add_option("-n,--bodies", sizes, "numbers of spheres")->capture_default_str();
   app.add_option("--steps", steps, "steps of 1 ms")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--iterations", iterations, "contact-solver iterations per step")->capture_default_str();
+  app.add_option("--iterations", iterations, "SI's and Bullet's contact-solver iterations per step")
+      ->capture_default_str();
+  app.add_option("--solver", solvers, "cosim's solvers: soft (the default, its own sweeps) and/or si")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"soft", "si"}));
 #ifdef COSIM_BENCH_BULLET
   app.add_flag("--bullet", bullet, "run Bullet on each scene too");
 #endif
@@ -66,8 +85,11 @@ int main(int argc, char** argv) {
     cosim::bench::PourScene scene = cosim::bench::pour(n);
     scene.steps = steps;
     scene.iterations = iterations;
-    runs.push_back(cosim::bench::run_cosim(scene));
-    print(runs.back(), scene.radius);
+    for (const std::string& solver : solvers) {
+      runs.push_back(cosim::bench::run_cosim(
+          scene, solver == "soft" ? cosim::world::SolverKind::soft : cosim::world::SolverKind::sequential_impulses));
+      print(runs.back(), scene.radius);
+    }
 #ifdef COSIM_BENCH_BULLET
     if (bullet) {
       runs.push_back(cosim::bench::run_bullet(scene));
@@ -76,5 +98,6 @@ int main(int argc, char** argv) {
 #endif
   }
   print_scaling(runs);
+  print_ratios(runs);
   return 0;
 }

@@ -35,19 +35,6 @@ std::vector<Mobility> mobilities(std::span<const dynamics::BodyState> states,
   return out;
 }
 
-Eigen::Vector3d ContactFrame::relative_velocity(std::span<const dynamics::BodyState> s) const {
-  return s[b].velocity + s[b].angular_velocity.cross(rb) - s[a].velocity -
-         s[a].angular_velocity.cross(ra);
-}
-
-void ContactFrame::apply(const Eigen::Vector3d& impulse, std::span<dynamics::BodyState> s,
-                         std::span<const Mobility> m) const {
-  s[a].velocity -= m[a].inverse_mass * impulse;
-  s[a].angular_velocity -= m[a].inverse_inertia * ra.cross(impulse);
-  s[b].velocity += m[b].inverse_mass * impulse;
-  s[b].angular_velocity += m[b].inverse_inertia * rb.cross(impulse);
-}
-
 Eigen::Matrix3d ContactFrame::local_response(std::span<const Mobility> m) const {
   return basis * (point_response(m[a], ra) + point_response(m[b], rb)) * basis.transpose();
 }

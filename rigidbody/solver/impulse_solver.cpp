@@ -128,12 +128,6 @@ class GroupSolver {
     }
   }
 
-  // The velocity a point's impulse change makes at the point itself (diagonal of W, per
-  // local axis): the change of its impulse relative to its own effective mass 1 / W_kk.
-  static double velocity_change(const Row& r, const Eigen::Vector3d& delta) {
-    return (r.law.response.diagonal().array() * delta.array().abs()).maxCoeff();
-  }
-
   // Both sweeps return the largest velocity_change over the group's points.
   double gauss_seidel_sweep() {
     double change = 0.0;
@@ -142,7 +136,7 @@ class GroupSolver {
       const Eigen::Vector3d delta = next - r.impulse;
       r.frame.apply_local(delta, scene_.states, scene_.mobility);
       r.impulse = next;
-      change = std::max(change, velocity_change(r, delta));
+      change = std::max(change, velocity_change(r.law, delta));
     }
     return change;
   }
@@ -158,7 +152,7 @@ class GroupSolver {
       const Eigen::Vector3d delta = r.share * (proposals_[i] - r.impulse);
       r.frame.apply_local(delta, scene_.states, scene_.mobility);
       r.impulse += delta;
-      change = std::max(change, velocity_change(r, delta));
+      change = std::max(change, velocity_change(r.law, delta));
     }
     return change;
   }

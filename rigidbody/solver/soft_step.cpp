@@ -63,6 +63,8 @@ void SoftStep::build_rows(const ContactScene& scene, std::span<const CachedConta
     g.axes = g.per_point ? 0 : g.count <= options_.full_block_points && mass_ratio ? 3 : 1;
     g.soft = make_softness(std::min(options_.hertz, 0.25 / scene.dt), options_.damping_ratio, g.per_point ? 1.0 : mass,
                            scene.dt);
+    for (const Row& r : std::span(rows_).subspan(g.first))
+      g.scale = std::max(g.scale, normal_law(g, r, true).first - r.approach);
     groups_.push_back(g);
   }
 }
@@ -77,20 +79,22 @@ SolveReport SoftStep::solve(const ContactScene& scene, std::span<const CachedCon
     set_impulse(r, warm, scene.states);
   }
 
-  pass(scene.states, true, options_.iterations);
+  const SolveReport report = pass(scene.states, true, options_.iterations);
   // Where the positions will be after this step, to first order in dt: the relative
   // velocity at the point, not the motion of a point fixed on each body, which on a
   // rolling sphere would open a gap that is not there.
   for (Row& r : rows_) r.separation += scene.dt * r.frame.local_velocity(scene.states)[0];
-  return {.iterations = options_.iterations + options_.relax_iterations, .residual = 0.0, .converged = true};
+  return report;
 }
 
-void SoftStep::relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory) {
-  pass(states, false, options_.relax_iterations);
+SolveReport SoftStep::relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory) {
+  SolveReport report = pass(states, false, options_.relax_iterations);
+  if (!groups_.empty()) report.iterations += options_.iterations;
   restitution(states);
   for (const Row& r : rows_)
     memory[r.point] = {.normal = r.impulse[0],
                        .tangential = r.frame.basis.bottomRows<2>().transpose() * r.impulse.tail<2>()};
+  return report;
 }
 
 // What a sweep asks of a row's normal: the velocity to reach and the compliance.
@@ -102,7 +106,8 @@ std::pair<double, double> SoftStep::normal_law(const Group& g, const Row& r, boo
           g.soft.compliance * (g.per_point ? r.law.response(0, 0) : 1.0)};
 }
 
-void SoftStep::pass(std::span<dynamics::BodyState> states, bool biased, int count) {
+SolveReport SoftStep::pass(std::span<dynamics::BodyState> states, bool biased, int count) {
+  SolveReport report{.iterations = groups_.empty() ? 0 : count};
   std::vector<double> target;
   std::vector<double> compliance;
   for (const Group& g : groups_) {
@@ -113,15 +118,19 @@ void SoftStep::pass(std::span<dynamics::BodyState> states, bool biased, int coun
       target.push_back(velocity);
       compliance.push_back(give);
     }
-    sweeps(g, states, target, compliance, count);
+    const double change = sweeps(g, states, target, compliance, count);
+    // As the impulse solvers: with nothing to do (scale 0) only an unchanged sweep settled.
+    report.residual = std::max(report.residual, change == 0.0 ? 0.0 : change / g.scale);
   }
+  report.converged = report.residual <= options_.tolerance;
+  return report;
 }
 
 // A group with a large mass ratio solves every row at once (friction sticking, sliding
 // points point by point); a small or middle-sized group solves friction point by point, then
 // the normals at once; a large one all point by point (Gauss-Seidel).
-void SoftStep::sweeps(const Group& g, std::span<dynamics::BodyState> states, std::span<const double> target,
-                      std::span<const double> compliance, int count) {
+double SoftStep::sweeps(const Group& g, std::span<dynamics::BodyState> states, std::span<const double> target,
+                        std::span<const double> compliance, int count) {
   const std::span<Row> rows = std::span(rows_).subspan(g.first, g.count);
   const int axes = g.axes;
   std::optional<ContactBlock> block;
@@ -151,7 +160,10 @@ void SoftStep::sweeps(const Group& g, std::span<dynamics::BodyState> states, std
     }
     block->solve(u, row_target, lambda);
   };
+  std::vector<Eigen::Vector3d> last;  // the impulses before the last sweep
   for (int sweep = 0; sweep < count; ++sweep) {
+    if (sweep == count - 1)
+      for (const Row& r : rows) last.push_back(r.impulse);
     if (!block) {
       for (std::size_t i = 0; i < rows.size(); ++i) {
         Row& r = rows[i];
@@ -182,6 +194,10 @@ void SoftStep::sweeps(const Group& g, std::span<dynamics::BodyState> states, std
     for (const std::size_t i : sliding)
       set_impulse(rows[i], update_friction(rows[i].law, rows[i].frame.local_velocity(states), rows[i].impulse), states);
   }
+  double change = 0.0;
+  for (std::size_t i = 0; i < last.size(); ++i)
+    change = std::max(change, velocity_change(rows[i].law, rows[i].impulse - last[i]));
+  return change;
 }
 
 void SoftStep::set_impulse(Row& r, const Eigen::Vector3d& impulse, std::span<dynamics::BodyState> states) const {

@@ -36,6 +36,9 @@ struct SoftOptions {
   double full_block_mass_ratio = 10.0;
   double restitution_threshold = 0.1;  // [m/s]: slower impacts are inelastic (resting)
   FrictionModel friction = FrictionModel::cone;
+  // Only for the report: the sweep counts are fixed (as Box2D's), and a pass's last sweep
+  // is measured against this with the impulse solvers' test (README.md "Soft step").
+  double tolerance = 1e-6;
 };
 
 class SoftStep {
@@ -43,12 +46,14 @@ class SoftStep {
   explicit SoftStep(const SoftOptions& options = {}) : options_(options) {}
 
   // Before the positions move: warm start from `memory` (one per point), then the soft
-  // sweeps with bias. Keeps the rows for relax().
+  // sweeps with bias. Keeps the rows for relax(). Reports the biased sweeps and how much
+  // the last one still changed.
   SolveReport solve(const ContactScene& scene, std::span<const CachedContact> memory);
   // After the positions moved with solve()'s velocities: rigid sweeps without bias on the
   // separations those velocities left (no new narrow phase), restitution; writes the
-  // impulses to `memory` for the next step's warm start.
-  void relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory);
+  // impulses to `memory` for the next step's warm start. Reports all sweeps of the
+  // substep (solve's and these) and how much the last relax sweep still changed.
+  SolveReport relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory);
 
  private:
   struct Row {
@@ -66,14 +71,19 @@ class SoftStep {
     Softness soft;
     bool per_point = false;  // compliance relative to each point's W_nn, not the group's mass
     int axes = 1;            // rows per point solved at once: 3, 1 (normals) or 0 (Gauss-Seidel)
+    // The largest normal velocity change a point needs at the start, max(0, target - u_n)
+    // with the biased target: what the report's residual is relative to.
+    double scale = 0.0;
   };
 
   void build_rows(const ContactScene& scene, std::span<const CachedContact> memory);
   // Sweeps over every group: with bias and soft (solve) or rigid without bias (relax).
-  void pass(std::span<dynamics::BodyState> states, bool biased, int count);
+  // Residual: the last sweep's largest velocity_change at a point over its group's scale.
+  SolveReport pass(std::span<dynamics::BodyState> states, bool biased, int count);
   std::pair<double, double> normal_law(const Group& g, const Row& r, bool biased) const;
-  void sweeps(const Group& g, std::span<dynamics::BodyState> states, std::span<const double> target,
-              std::span<const double> compliance, int count);
+  // Returns the last sweep's largest velocity_change at a point.
+  double sweeps(const Group& g, std::span<dynamics::BodyState> states, std::span<const double> target,
+                std::span<const double> compliance, int count);
   void set_impulse(Row& r, const Eigen::Vector3d& impulse, std::span<dynamics::BodyState> states) const;
   void restitution(std::span<dynamics::BodyState> states);
 

@@ -25,6 +25,13 @@ broadphase::Object object_of(std::uint32_t id, const geometry::Shape& shape, con
   return o;
 }
 
+// The step reports the worst substep.
+void merge(StepReport& report, const solver::SolveReport& solved) {
+  report.solver_iterations = std::max(report.solver_iterations, solved.iterations);
+  report.residual = std::max(report.residual, solved.residual);
+  report.converged = report.converged && solved.converged;
+}
+
 }  // namespace
 
 StepReport World::advance(double window, std::span<const dynamics::WindowWrench> external) {
@@ -54,7 +61,7 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
     substeps.integrate_positions();
     clock.lap(Stage::integrate_positions);
     if (relax) {
-      relax_contacts();
+      relax_contacts(report);
       clock.lap(Stage::relax_contacts);
     }
   }
@@ -107,16 +114,13 @@ void World::solve_contacts(double dt, StepReport& report) {
   // Before the contacts, so the solver sees the velocities the film has left.
   solver::apply_lubrication(scene, radii_, settings_.lubrication);
   const std::span<solver::CachedContact> memory = graph_.recall();
-  const solver::SolveReport solved = solve(scene, memory);
+  merge(report, solve(scene, memory));
   // The soft step remembers after its relax, once the positions moved.
   if (settings_.solver != SolverKind::soft) graph_.remember();
-  report.solver_iterations = std::max(report.solver_iterations, solved.iterations);
-  report.residual = std::max(report.residual, solved.residual);
-  report.converged = report.converged && solved.converged;
 }
 
-void World::relax_contacts() {
-  soft_.relax(states_, graph_.recalled());
+void World::relax_contacts(StepReport& report) {
+  merge(report, soft_.relax(states_, graph_.recalled()));
   graph_.remember();
 }
 

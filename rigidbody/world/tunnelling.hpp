@@ -55,6 +55,10 @@ std::string summarise(std::span<const TunnellingRisk> risks, std::span<const std
 class TunnellingWarnings {
  public:
   void add(std::string name, const geometry::Shape& shape);  // one per body, in body order
+  void reserve(std::size_t bodies) {
+    names_.reserve(bodies);
+    thinnest_.reserve(bodies);
+  }
   std::span<const double> thinnest() const { return thinnest_; }
   void warn(std::span<const TunnellingRisk> risks, double dt);
 

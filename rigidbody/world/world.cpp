@@ -23,6 +23,7 @@ solver::ImpulseOptions Settings::impulse_options() const {
 solver::SoftOptions Settings::soft_options() const {
   solver::SoftOptions o = soft;
   if (iterations > 0) o.iterations = iterations;
+  o.tolerance = tolerance;
   return o;
 }
 
@@ -59,6 +60,16 @@ std::uint32_t World::add(const BodyDesc& body) {
   // The grid's margin is fixed at construction and the default margin depends on the bodies.
   grid_ = broadphase::HashGrid({.margin = margin()});
   return static_cast<std::uint32_t>(states_.size() - 1);
+}
+
+void World::reserve(std::size_t bodies) {
+  shapes_.reserve(bodies);
+  radii_.reserve(bodies);
+  states_.reserve(bodies);
+  inertias_.reserve(bodies);
+  materials_.reserve(bodies);
+  tunnelling_.reserve(bodies);
+  objects_.reserve(bodies);
 }
 
 // Pairs within the lubrication range must reach the narrow phase whatever the margin.

@@ -38,6 +38,9 @@ class World {
   // Returns the body's index. Throws std::invalid_argument for an unbounded shape that is
   // not fixed or a dynamic body without positive density.
   std::uint32_t add(const BodyDesc& body);
+  // Room for this many bodies in every per-body array: added one by one, the arrays would
+  // otherwise grow by doubling and hold up to twice the bytes they need.
+  void reserve(std::size_t bodies);
 
   // Advances all bodies by `window` in substeps of about settings().dt. `external` is
   // empty or one wrench per body (the coupler's forces over this window).
@@ -67,7 +70,7 @@ class World {
   void solve_contacts(double dt, StepReport& report);
   solver::SolveReport solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory);
   // The soft step's second half, after the positions moved.
-  void relax_contacts();
+  void relax_contacts(StepReport& report);
   // Counts and logs the bodies that may tunnel in this window's substeps (tunnelling.hpp).
   std::size_t check_tunnelling(double window, double substep);
   double margin() const;
