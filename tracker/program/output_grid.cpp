@@ -41,7 +41,7 @@ std::vector<double> cell_volumes(const BoxSpec& box) {
 }
 
 OutputGrid output_grid(const BoxSpec& box) {
-  output::RectilinearGrid nodes;
+  field::RectilinearGrid nodes;
   std::array<double, 3> length{};
   for (int a = 0; a < 3; ++a) {
     nodes.nodes[a] = axis_nodes(box.axes[a]);
@@ -59,13 +59,14 @@ OutputGrid output_grid(const BoxSpec& box) {
     return out;
   }
   const Polyhedra cells = box_polyhedra(box);
-  out.grid = output::PolyhedralGrid{flat(cells.vertices), mixed_topology(cells), out.volume.size()};
+  out.grid = field::PolyhedralGrid{flat(cells.vertices), mixed_topology(cells), out.volume.size()};
   return out;
 }
 
 OutputGrid output_grid(const Mesh& whole) {
-  return {output::PolyhedralGrid{flat(whole.vertices), mixed_topology(whole), static_cast<std::size_t>(whole.cell_count())},
-          whole.volume, whole.patches, patch_areas(whole)};
+  return {
+      field::PolyhedralGrid{flat(whole.vertices), mixed_topology(whole), static_cast<std::size_t>(whole.cell_count())},
+      whole.volume, whole.patches, patch_areas(whole)};
 }
 
 }  // namespace cosim::tracker
