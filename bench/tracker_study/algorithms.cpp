@@ -24,7 +24,6 @@ using namespace cosim::tracker;
 namespace {
 
 constexpr Algorithm kAlgorithms[] = {Algorithm::event_driven, Algorithm::stollmeier, Algorithm::haselbacher};
-constexpr int kRepeats = 9;  // the fastest repeat is kept: the machine is shared
 
 struct Row {
   std::string mesh;
@@ -65,8 +64,9 @@ Mesh bcc_voronoi(int n, std::uint64_t seed) {
 
 double faces_per_cell(const Mesh& mesh) { return static_cast<double>(mesh.face_count()) / mesh.cell_count(); }
 
-// Every algorithm moves its own copy of the same flights, kRepeats times.
-std::vector<Row> race(const std::string& label, const Mesh& mesh, const std::vector<Flight>& flights) {
+// Every algorithm moves its own copy of the same flights, `repeats` times; the fastest repeat
+// is kept, since the machine is shared.
+std::vector<Row> race(const std::string& label, const Mesh& mesh, const std::vector<Flight>& flights, int repeats) {
   const Domain domain(mesh, {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 0.0});
   std::vector<Row> rows;
   for (Algorithm algorithm : kAlgorithms) {
@@ -76,7 +76,7 @@ std::vector<Row> race(const std::string& label, const Mesh& mesh, const std::vec
     row.cells = mesh.cell_count();
     row.faces_per_cell = faces_per_cell(mesh);
     row.seconds = INFINITY;
-    for (int repeat = 0; repeat < kRepeats; ++repeat) {
+    for (int repeat = 0; repeat < repeats; ++repeat) {
       Random random(1);
       MoveTally tally;
       const auto start = std::chrono::steady_clock::now();
@@ -103,8 +103,8 @@ const Row& find(const std::vector<Row>& rows, const std::string& mesh, Algorithm
   return *std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.mesh == mesh && r.algorithm == algorithm; });
 }
 
-void print_speed(const std::vector<Row>& rows, const std::vector<std::string>& meshes) {
-  std::printf("\nSpeed on unperturbed meshes (straight traversals, same flights for all; fastest of %d)\n", kRepeats);
+void print_speed(const std::vector<Row>& rows, const std::vector<std::string>& meshes, int repeats) {
+  std::printf("\nSpeed on unperturbed meshes (straight traversals, same flights for all; fastest of %d)\n", repeats);
   std::printf("%-22s %6s %6s %8s %11s %11s %11s %6s %14s %20s\n", "mesh", "cells", "faces", "cross/mv", "ours M cr/s", "stoll M cr/s",
               "hasel M cr/s", "lost", "hasel/stoll-1", "published (S&G)");
   for (const std::string& mesh : meshes) {
@@ -130,25 +130,27 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
 }  // namespace
 
 int algorithms_part(const StudyOptions& options) {
-  const int hard = options.quick ? 10000 : 100000;
+  const int hard = sized(options.size, 100000, 10000, 1000);
+  const int repeats = sized(options.size, 9, 9, 1);
   Random random(99);
   std::vector<Row> losses;
   const auto lose = [&](const std::string& label, const Mesh& mesh) {
-    for (Row& row : race(label, mesh, hard_moves(mesh, hard, random))) losses.push_back(row);
+    for (Row& row : race(label, mesh, hard_moves(mesh, hard, random), repeats)) losses.push_back(row);
   };
   lose("hexahedra 6^3, 0.2", perturbed(box_mesh(cube(6, false)), {.fraction = 0.2, .seed = 3}));
   lose("tetrahedra 4^3x6, 0.2", perturbed(box_mesh(cube(4, true)), {.fraction = 0.2, .seed = 4}));
   lose("Voronoi 200, 0.05", perturbed(voronoi(200, 5), {.fraction = 0.05, .seed = 5}));
   print_losses(losses);
 
-  // About 20,000 cells as in the reference (a tenth in --quick); flights of half the box.
-  const int scale = options.quick ? 10 : 1;
-  const int flights = options.quick ? 1000 : 20000;
+  // About 20,000 cells as in the reference (a tenth in --quick, a hundredth in --tiny);
+  // flights of half the box.
+  const int scale = sized(options.size, 1, 10, 100);
+  const int flights = sized(options.size, 20000, 1000, 100);
   std::vector<Row> speed;
   std::vector<std::string> meshes;
   const auto time = [&](const std::string& label, const Mesh& mesh) {
     const Domain domain(mesh, {std::vector<BoundaryCondition>(mesh.patches.size()), 0.0});
-    for (Row& row : race(label, mesh, traversals(domain, flights, 0.5, random))) speed.push_back(row);
+    for (Row& row : race(label, mesh, traversals(domain, flights, 0.5, random), repeats)) speed.push_back(row);
     meshes.push_back(label);
   };
   const int hex = static_cast<int>(std::lround(std::cbrt(20000.0 / scale)));
@@ -157,7 +159,7 @@ int algorithms_part(const StudyOptions& options) {
   time("hexahedra " + std::to_string(hex) + "^3", box_mesh(cube(hex, false)));
   const int bcc = static_cast<int>(std::lround(std::cbrt(20000.0 / 2 / scale)));
   time("Voronoi bcc 2x" + std::to_string(bcc) + "^3", bcc_voronoi(bcc, 7));
-  print_speed(speed, meshes);
+  print_speed(speed, meshes, repeats);
 
   if (!options.csv.empty()) {
     std::vector<Row> all = losses;

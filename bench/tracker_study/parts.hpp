@@ -5,9 +5,20 @@
 
 namespace cosim::bench {
 
+// How big a run is: the references' sizes; small meshes and counts (--quick, the ctest);
+// smaller still and timed once (--tiny, the ctest of the sanitizer build, whose checks
+// make --quick time out), every path still taken.
+enum class Size { full, quick, tiny };
+
+// The value for a run of `size`.
+template <class T>
+T sized(Size size, T full, T quick, T tiny) {
+  return size == Size::full ? full : size == Size::quick ? quick : tiny;
+}
+
 struct StudyOptions {
-  bool quick = false;  // small meshes and counts: the ctest
-  std::string csv;     // a part writes its rows to <csv>_<part>.csv if not empty
+  Size size = Size::full;
+  std::string csv;  // a part writes its rows to <csv>_<part>.csv if not empty
 };
 
 // The three tracking algorithms on the same particles: lost particles on perturbed meshes

@@ -159,11 +159,9 @@ int run_pruning(const PruningOptions& o) {
 
 int pruning_part(const StudyOptions& options) {
   PruningOptions o;
-  if (options.quick) {
-    o.cells = 16;
-    o.particles = 20000;
-    o.steps = 5;
-  }
+  o.cells = sized(options.size, o.cells, 16, 8);
+  o.particles = sized(options.size, o.particles, 20000L, 2000L);
+  o.steps = sized(options.size, o.steps, 5, 2);
   if (!options.csv.empty()) o.csv = options.csv + "_pruning.csv";
   return run_pruning(o);
 }

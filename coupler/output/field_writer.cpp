@@ -20,16 +20,16 @@ std::string step_name(std::uint64_t window) {
   return text;
 }
 
-bool has_attributes(const FieldFrame& frame) {
+bool has_attributes(const field::FieldFrame& frame) {
   return std::any_of(frame.point_sets.begin(), frame.point_sets.end(),
-                     [](const PointSet& p) { return !p.attributes.empty(); });
+                     [](const field::PointSet& p) { return !p.attributes.empty(); });
 }
 
-void check_frame(const FieldFrame& frame, const std::string& participant) {
-  for (const std::string& problem : {grid_problem(frame.grid), point_sets_problem(frame.point_sets)})
+void check_frame(const field::FieldFrame& frame, const std::string& participant) {
+  for (const std::string& problem : {field::grid_problem(frame.grid), field::point_sets_problem(frame.point_sets)})
     if (!problem.empty()) throw ObjectError("fields of " + participant + ": " + problem);
-  const std::size_t n = cell_count(frame.grid);
-  for (const CellField& f : frame.fields) {
+  const std::size_t n = field::cell_count(frame.grid);
+  for (const field::CellField& f : frame.fields) {
     if (f.components < 1 || f.values.size() != n * static_cast<std::size_t>(f.components))
       throw ObjectError("field " + f.name + " of " + participant + ": " + std::to_string(f.values.size()) +
                         " values do not fit the grid");
@@ -44,12 +44,12 @@ void check_frame(const FieldFrame& frame, const std::string& participant) {
 
 // A series without steps on the participant's grid: its shape is what a later frame's grid
 // is compared with, as the grid is written once.
-XdmfSeries series_of(const std::string& participant, const Grid& grid) {
+XdmfSeries series_of(const std::string& participant, const field::Grid& grid) {
   XdmfSeries s{participant, "/fields/" + participant + "/grid", {}, {}};
-  if (const auto* p = std::get_if<PolyhedralGrid>(&grid))
+  if (const auto* p = std::get_if<field::PolyhedralGrid>(&grid))
     s.polyhedra = {p->cells, p->vertices.size() / 3, p->topology.size()};
   else
-    s.cells = std::get<RectilinearGrid>(grid).cells();
+    s.cells = std::get<field::RectilinearGrid>(grid).cells();
   return s;
 }
 
@@ -61,30 +61,30 @@ std::vector<hsize_t> cell_dims(const XdmfSeries& s) {
   return {s.cells[2], s.cells[1], s.cells[0]};
 }
 
-void write_grid(hid_t participant_group, const Grid& grid) {
+void write_grid(hid_t participant_group, const field::Grid& grid) {
   Handle group = create_group(participant_group, "grid");
-  if (const auto* p = std::get_if<PolyhedralGrid>(&grid)) {
+  if (const auto* p = std::get_if<field::PolyhedralGrid>(&grid)) {
     write_array(group.get(), "vertices", {p->vertices.size() / 3, 3}, p->vertices.data());
     write_array(group.get(), "topology", {p->topology.size()}, p->topology.data());
     // Readers (and resume()) then need not walk the topology to size the fields.
     write_attribute(group.get(), "cells", std::uint64_t{p->cells});
     return;
   }
-  const auto& nodes = std::get<RectilinearGrid>(grid).nodes;
+  const auto& nodes = std::get<field::RectilinearGrid>(grid).nodes;
   for (std::size_t a = 0; a < 3; ++a)
     write_array(group.get(), std::string(1, "xyz"[a]), {nodes[a].size()}, nodes[a].data());
 }
 
 // The set's attributes beside its points: (n) for one component, (n, c) for c, int64 if integer.
-void write_point_attributes(hid_t group, const PointSet& p, XdmfPointSet& entry) {
+void write_point_attributes(hid_t group, const field::PointSet& p, XdmfPointSet& entry) {
   if (p.attributes.empty()) return;
   Handle set = create_group(group, p.name);
   const hsize_t n = p.points.size() / 3;
-  for (const PointAttribute& a : p.attributes) {
+  for (const field::PointAttribute& a : p.attributes) {
     std::vector<hsize_t> dims{n};
     if (a.components > 1) dims.push_back(static_cast<hsize_t>(a.components));
     if (a.integer) {
-      // Exact: point_sets_problem() has bounded them by 2^53.
+      // Exact: field::point_sets_problem() has bounded them by 2^53.
       const std::vector<std::int64_t> whole(a.values.begin(), a.values.end());
       write_array(set.get(), a.name, dims, whole.data());
     } else {
@@ -133,7 +133,7 @@ XdmfSeries stored_series(hid_t participant_group, const std::string& participant
 FieldWriter::FieldWriter(std::filesystem::path h5_path) : h5_path_(std::move(h5_path)) {}
 
 void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_t window, double time,
-                        const FieldFrame& frame) {
+                        const field::FieldFrame& frame) {
   check_frame(frame, participant);
   Handle fields = open_or_create_group(file, "fields");
   Handle group = open_or_create_group(fields.get(), participant);
@@ -148,7 +148,7 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
   Handle step = create_group(group.get(), name);
   write_attribute(step.get(), "time", time);
   XdmfStep entry{"/fields/" + participant + "/" + name, time, {}};
-  for (const CellField& f : frame.fields) {
+  for (const field::CellField& f : frame.fields) {
     std::vector<hsize_t> dims = cell_dims(series);
     if (f.components > 1) dims.push_back(static_cast<hsize_t>(f.components));
     write_array(step.get(), f.name, dims, f.values.data());
@@ -157,7 +157,7 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
   if (!frame.point_sets.empty()) {
     Handle points = create_group(step.get(), kPointSetGroup);
     Handle attributes = has_attributes(frame) ? create_group(step.get(), kPointAttributeGroup) : Handle();
-    for (const PointSet& p : frame.point_sets) {
+    for (const field::PointSet& p : frame.point_sets) {
       write_array(points.get(), p.name, {p.points.size() / 3, 3}, p.points.data());
       entry.point_sets.push_back({p.name, p.points.size() / 3});
       write_point_attributes(attributes.get(), p, entry.point_sets.back());

@@ -9,7 +9,7 @@
 #include <map>
 #include <string>
 
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 #include "coupler/output/xdmf.hpp"
 
 namespace cosim::output {
@@ -23,11 +23,11 @@ class FieldWriter {
   // run_file.hpp) and the step group /fields/<participant>/<window, 6+ digits>/<field> with
   // attr time, points/<set> for each point set and point_attributes/<set>/<attribute> for
   // each of its attributes. Throws ObjectError for a frame whose sizes do not add up
-  // (grid_problem()), whose point sets are not (point_sets_problem()), that has point sets
-  // beside a cell field named "points" (attributes beside one named "point_attributes"), or
-  // whose grid is not the first one's kind and size.
+  // (field::grid_problem()), whose point sets are not (field::point_sets_problem()), that
+  // has point sets beside a cell field named "points" (attributes beside one named
+  // "point_attributes"), or whose grid is not the first one's kind and size.
   void write(hid_t file, const std::string& participant, std::uint64_t window, double time,
-             const FieldFrame& frame);
+             const field::FieldFrame& frame);
   // For --resume from window `next_window`: unlinks the steps after it (their point sets
   // and attributes with them), which the resumed run writes again, and takes those up to it
   // into the sidecar.

@@ -200,7 +200,7 @@ void RunFile::append(const WindowRecord& w) {
 }
 
 void RunFile::write_fields(const std::string& participant, std::uint64_t window, double time,
-                           const FieldFrame& frame) {
+                           const field::FieldFrame& frame) {
   in_file(impl_->path, [&] {
     if (!impl_->fields) impl_->fields.emplace(impl_->path);
     impl_->fields->write(impl_->file.get(), participant, window, time, frame);

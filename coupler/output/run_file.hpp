@@ -18,7 +18,7 @@
 //                        payload bytes of the grid fields the coupler forwarded to it in
 //                        the window, over all iterations; 0 for a participant that needs
 //                        none); NaN where a window's record had no value for that participant
-//   /fields/<participant>/grid/  written with the first fields (field_frame.hpp), either
+//   /fields/<participant>/grid/  written with the first fields (coupler/field), either
 //                        rectilinear: x, y, z, node coordinates per axis (so stretched
 //                        axes are exact); or polyhedral: vertices (v x 3), topology
 //                        (int64, XDMF Mixed of Polyhedron cells), attr cells (uint64)
@@ -30,7 +30,7 @@
 //                        rectilinear grid; cosim-tracker count, mean_count, density,
 //                        velocity (3), temperature and pressure on its polyhedra
 //   /fields/<participant>/<window>/points/<set>  (n x 3) the x, y, z of each of the
-//                        frame's point sets (field_frame.hpp), e.g. an immersed body's
+//                        frame's point sets (coupler/field), e.g. an immersed body's
 //                        surface markers or the tracker's particles; (0 x 3) for a set
 //                        without points; no group for a frame without sets
 //   /fields/<participant>/<window>/point_attributes/<set>/<attribute>  (n) for one
@@ -76,7 +76,7 @@
 #include <string>
 #include <vector>
 
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 
 namespace cosim::output {
 
@@ -149,7 +149,7 @@ class RunFile {
   // Writes the frame as window `window`'s fields of `participant` at `time`, flushes and
   // rewrites the sidecar.
   void write_fields(const std::string& participant, std::uint64_t window, double time,
-                    const FieldFrame& frame);
+                    const field::FieldFrame& frame);
   // Replaces the checkpoint: writes the other slot, flushes, switches `current`, flushes.
   void write_checkpoint(const Checkpoint& c);
   // wall_seconds: this session's; the file stores it added to the earlier sessions' total.

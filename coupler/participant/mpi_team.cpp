@@ -54,7 +54,7 @@ void receive(MPI_Comm comm, Values& values) {
 }
 
 // Forwarded fields cross as the arrays of the wire (field_message.hpp): none, no arrays.
-void send(MPI_Comm comm, const std::optional<output::FieldFrame>& fields) {
+void send(MPI_Comm comm, const std::optional<field::FieldFrame>& fields) {
   const std::vector<protocol::Array> arrays = fields ? protocol::field_arrays(*fields) : std::vector<protocol::Array>{};
   unsigned long long n = arrays.size();
   share(comm, n);
@@ -66,7 +66,7 @@ void send(MPI_Comm comm, const std::optional<output::FieldFrame>& fields) {
   }
 }
 
-std::optional<output::FieldFrame> receive_fields(MPI_Comm comm) {
+std::optional<field::FieldFrame> receive_fields(MPI_Comm comm) {
   unsigned long long n = 0;
   share(comm, n);
   if (n == 0) return std::nullopt;
@@ -208,7 +208,7 @@ void LeadSolver::restore(const std::vector<double>& state) {
 
 std::vector<std::string> LeadSolver::wanted_fields() const { return local_.wanted_fields(); }
 
-output::FieldFrame LeadSolver::fields() const {
+field::FieldFrame LeadSolver::fields() const {
   announce(kFields);
   return local_.fields();
 }

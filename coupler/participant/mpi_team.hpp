@@ -29,7 +29,7 @@ class LeadSolver final : public Solver {
   // Each rank's share gathered by the solver's own fields() (rank 0 gets the whole frame):
   // rank 0's frame alone is returned, so rank 0 alone fills the point sets, with every
   // rank's points. A frame forwarded in an Advance reaches every rank whole, point sets too.
-  output::FieldFrame fields() const override;
+  field::FieldFrame fields() const override;
   std::vector<std::string> wanted_fields() const override;  // rank 0's: every rank runs the same solver
 
   // Lets the followers return `exit_code` from follow().

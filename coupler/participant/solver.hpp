@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 #include "coupler/scene/scene.hpp"
 
 namespace cosim::participant {
@@ -32,7 +32,7 @@ struct Window {
 struct Inputs {
   std::vector<double> poses_start, poses_end;
   std::vector<double> forces_start, forces_end;
-  std::optional<output::FieldFrame> fields;  // none unless the participant needs fields
+  std::optional<field::FieldFrame> fields;  // none unless the participant needs fields
 };
 
 // The value at s in [w.t0, w.t1] of an input that goes linearly from start to end.
@@ -59,7 +59,7 @@ class Solver {
   virtual std::vector<double> state() const = 0;
   virtual void restore(const std::vector<double>& state) = 0;
   // The grid fields to write at output times now; no fields: nothing is written.
-  virtual output::FieldFrame fields() const { return {}; }
+  virtual field::FieldFrame fields() const { return {}; }
   // A participant that needs fields names those it uses, so that only they cross the
   // wire; none named: the whole frame.
   virtual std::vector<std::string> wanted_fields() const { return {}; }

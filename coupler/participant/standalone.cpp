@@ -44,7 +44,7 @@ void run_standalone(const scene::Scene& scene, Solver& solver, const std::string
   const std::uint64_t n = scene.windows();
   const auto write_fields = [&](std::uint64_t done, double time) {
     if (!scene.output.fields_at(done, n)) return;
-    if (const output::FieldFrame fields = solver.fields(); !fields.fields.empty())
+    if (const field::FieldFrame fields = solver.fields(); !fields.fields.empty())
       file.write_fields(name, done, time, fields);
   };
 

@@ -29,7 +29,7 @@ std::vector<std::int64_t> topology_entries(const std::vector<double>& values, co
   return out;
 }
 
-void push_grid(std::vector<Array>& arrays, output::RectilinearGrid& grid) {
+void push_grid(std::vector<Array>& arrays, field::RectilinearGrid& grid) {
   for (std::size_t a = 0; a < 3; ++a) {
     auto& nodes = grid.nodes[a];
     const std::uint32_t count = rows_of(nodes.size());  // before the values move out
@@ -38,7 +38,7 @@ void push_grid(std::vector<Array>& arrays, output::RectilinearGrid& grid) {
   }
 }
 
-void push_grid(std::vector<Array>& arrays, output::PolyhedralGrid& grid) {
+void push_grid(std::vector<Array>& arrays, field::PolyhedralGrid& grid) {
   const std::uint32_t vertices = rows_of(grid.vertices.size() / 3);  // before the values move out
   arrays.push_back(Array::text("vertices"));
   arrays.push_back(Array::of(Tag::Field, vertices, 3, std::move(grid.vertices)));
@@ -51,11 +51,11 @@ void push_grid(std::vector<Array>& arrays, output::PolyhedralGrid& grid) {
 }
 
 // Moves the grid out of the leading arrays into frame; returns the index of the first field's name.
-std::size_t take_grid(std::vector<Array>& a, output::FieldFrame& frame, const std::string& who) {
+std::size_t take_grid(std::vector<Array>& a, field::FieldFrame& frame, const std::string& who) {
   if (a[0].bytes == "vertices") {
     if (a.size() < 6 || a[1].cols != 3 || a[2].bytes != "topology" || a[3].rows != 1)
       throw ProtocolError(who + ": vertices (v x 3) must be followed by the topology (1 x n) and a field");
-    output::PolyhedralGrid grid;
+    field::PolyhedralGrid grid;
     grid.vertices = std::move(a[1].values);
     grid.topology = topology_entries(a[3].values, who);
     grid.cells = a[5].rows;  // every field has a row per cell
@@ -65,7 +65,7 @@ std::size_t take_grid(std::vector<Array>& a, output::FieldFrame& frame, const st
   if (a.size() < 6)
     throw ProtocolError(who + " has " + std::to_string(a.size()) +
                         " arrays: expected name and values for x, y, z and each field");
-  output::RectilinearGrid grid;
+  field::RectilinearGrid grid;
   for (std::size_t i = 0; i < 6; i += 2) {
     if (a[i].bytes != kAxes[i / 2] || a[i + 1].rows != 1 || a[i + 1].cols < 2)
       throw ProtocolError(who + ": grid axis " + kAxes[i / 2] + " missing or without nodes (array " +
@@ -78,13 +78,13 @@ std::size_t take_grid(std::vector<Array>& a, output::FieldFrame& frame, const st
 
 }  // namespace
 
-std::vector<Array> field_arrays(output::FieldFrame frame) {
+std::vector<Array> field_arrays(field::FieldFrame frame) {
   std::vector<Array> arrays;
   if (frame.fields.empty()) return arrays;
-  for (const std::string& problem : {output::grid_problem(frame.grid), output::point_sets_problem(frame.point_sets)})
+  for (const std::string& problem : {field::grid_problem(frame.grid), field::point_sets_problem(frame.point_sets)})
     if (!problem.empty()) throw ProtocolError("Field arrays: " + problem);
   std::visit([&](auto& grid) { push_grid(arrays, grid); }, frame.grid);
-  for (output::CellField& f : frame.fields) {
+  for (field::CellField& f : frame.fields) {
     const auto components = static_cast<std::uint32_t>(f.components);
     const std::uint32_t rows = rows_of(f.values.size() / components);  // before the values move out
     arrays.push_back(Array::text(f.name));
@@ -94,12 +94,12 @@ std::vector<Array> field_arrays(output::FieldFrame frame) {
   return arrays;
 }
 
-output::FieldFrame field_frame(Message m) {
+field::FieldFrame field_frame(Message m) {
   return field_frame(std::move(m.arrays), "Field message of '" + m.header.participant + "'");
 }
 
-output::FieldFrame field_frame(std::vector<Array> arrays, const std::string& who) {
-  output::FieldFrame frame;
+field::FieldFrame field_frame(std::vector<Array> arrays, const std::string& who) {
+  field::FieldFrame frame;
   if (arrays.empty()) return frame;
   frame.point_sets = take_point_sets(arrays, who);
   if (arrays.empty()) throw ProtocolError(who + ": point sets without a grid and cell fields");
@@ -109,9 +109,9 @@ output::FieldFrame field_frame(std::vector<Array> arrays, const std::string& who
     if (arrays[i].tag != Tag::Text || arrays[i + 1].tag != Tag::Field)
       throw ProtocolError(who + ": array " + std::to_string(i) + " must be a name (Text) followed by a Field array");
   const std::size_t first_field = take_grid(arrays, frame, who);
-  if (const std::string problem = output::grid_problem(frame.grid); !problem.empty())
+  if (const std::string problem = field::grid_problem(frame.grid); !problem.empty())
     throw ProtocolError(who + ": " + problem);
-  const std::size_t cells = output::cell_count(frame.grid);
+  const std::size_t cells = field::cell_count(frame.grid);
   for (std::size_t i = first_field; i < arrays.size(); i += 2) {
     const Array& name = arrays[i];
     Array& values = arrays[i + 1];

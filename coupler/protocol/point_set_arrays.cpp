@@ -31,11 +31,11 @@ std::vector<double> slice(const std::vector<double>& values, std::size_t at, std
   return {values.begin() + static_cast<std::ptrdiff_t>(at), values.begin() + static_cast<std::ptrdiff_t>(end)};
 }
 
-void push_attributes(std::vector<Array>& arrays, const std::vector<output::PointSet>& sets) {
+void push_attributes(std::vector<Array>& arrays, const std::vector<field::PointSet>& sets) {
   std::string names;
   std::vector<double> set, components, integer, values;
   for (std::size_t i = 0; i < sets.size(); ++i)
-    for (const output::PointAttribute& a : sets[i].attributes) {
+    for (const field::PointAttribute& a : sets[i].attributes) {
       names += a.name;
       names += '\0';
       set.push_back(static_cast<double>(i));
@@ -66,7 +66,7 @@ std::vector<Array> take_attribute_arrays(std::vector<Array>& arrays, const std::
 }
 
 // Gives each set the attributes the three arrays (names, shapes, values) describe.
-void add_attributes(std::vector<output::PointSet>& sets, const std::vector<Array>& a, const std::string& who) {
+void add_attributes(std::vector<field::PointSet>& sets, const std::vector<Array>& a, const std::string& who) {
   if (a.empty()) return;
   const std::vector<std::string> names = split_names(a[0].bytes, who, "point attribute");
   const std::vector<double>& shape = a[1].values;
@@ -88,7 +88,7 @@ void add_attributes(std::vector<output::PointSet>& sets, const std::vector<Array
       throw ProtocolError(who + ": " + attribute + " has " + std::to_string(components) + " components");
     if (integer != 0.0 && integer != 1.0)
       throw ProtocolError(who + ": " + attribute + " is marked integer " + std::to_string(integer) + ", not 0 or 1");
-    output::PointSet& s = sets[static_cast<std::size_t>(set)];
+    field::PointSet& s = sets[static_cast<std::size_t>(set)];
     const std::size_t points = s.points.size() / 3, left = values.size() - at;
     // Divided, not multiplied: no product can overflow.
     if (points > 0 && left / points < static_cast<std::size_t>(components))
@@ -107,11 +107,11 @@ void add_attributes(std::vector<output::PointSet>& sets, const std::vector<Array
 
 }  // namespace
 
-void push_point_sets(std::vector<Array>& arrays, const std::vector<output::PointSet>& sets) {
+void push_point_sets(std::vector<Array>& arrays, const std::vector<field::PointSet>& sets) {
   if (sets.empty()) return;
   std::string names;
   std::vector<double> counts, points;
-  for (const output::PointSet& s : sets) {
+  for (const field::PointSet& s : sets) {
     names += s.name;
     names += '\0';
     counts.push_back(static_cast<double>(s.points.size() / 3));
@@ -125,7 +125,7 @@ void push_point_sets(std::vector<Array>& arrays, const std::vector<output::Point
   push_attributes(arrays, sets);
 }
 
-std::vector<output::PointSet> take_point_sets(std::vector<Array>& arrays, const std::string& who) {
+std::vector<field::PointSet> take_point_sets(std::vector<Array>& arrays, const std::string& who) {
   const std::vector<Array> attributes = take_attribute_arrays(arrays, who);
   if (arrays.empty() || arrays.back().tag != Tag::Points) {
     if (!attributes.empty()) throw ProtocolError(who + ": point attributes without the point sets (n x 3) before them");
@@ -141,7 +141,7 @@ std::vector<output::PointSet> take_point_sets(std::vector<Array>& arrays, const 
   if (names.size() != counts.size())
     throw ProtocolError(who + ": " + std::to_string(names.size()) + " point set names for " +
                         std::to_string(counts.size()) + " point counts");
-  std::vector<output::PointSet> sets;
+  std::vector<field::PointSet> sets;
   std::size_t at = 0;  // in points, 3 per point
   for (std::size_t i = 0; i < names.size(); ++i) {
     const double n = counts[i];
@@ -157,7 +157,7 @@ std::vector<output::PointSet> take_point_sets(std::vector<Array>& arrays, const 
     throw ProtocolError(who + ": the point counts add up to " + std::to_string(at / 3) + " points, " +
                         std::to_string(points.size() / 3) + " were sent");
   add_attributes(sets, attributes, who);
-  if (const std::string problem = output::point_sets_problem(sets); !problem.empty())
+  if (const std::string problem = field::point_sets_problem(sets); !problem.empty())
     throw ProtocolError(who + ": " + problem);
   arrays.resize(first);
   return sets;

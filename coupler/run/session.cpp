@@ -59,10 +59,10 @@ std::string field_source(const scene::Scene& scene, const scene::Plan& plan, con
 
 // The frame with only the `wanted` fields, in that order (all if none are named, and only
 // then its point sets: a consumer that names fields uses those), copied out of the source's.
-output::FieldFrame pick(const output::FieldFrame& frame, const std::vector<std::string>& wanted,
+field::FieldFrame pick(const field::FieldFrame& frame, const std::vector<std::string>& wanted,
                         const std::string& source, const std::string& consumer, const std::string& when) {
   if (wanted.empty()) return frame;
-  output::FieldFrame out{frame.grid, {}};
+  field::FieldFrame out{frame.grid, {}};
   for (const auto& name : wanted) {
     const auto f = std::find_if(frame.fields.begin(), frame.fields.end(),
                                 [&](const auto& field) { return field.name == name; });
@@ -261,7 +261,7 @@ void Session::record(std::uint64_t window, double time, const WindowResult& r, d
   file_->append(rec);
 }
 
-std::map<std::string, output::FieldFrame> Session::request_fields(Peers& peers,
+std::map<std::string, field::FieldFrame> Session::request_fields(Peers& peers,
                                                                   const std::set<std::string>& providers,
                                                                   std::uint64_t window, const std::string& when) {
   std::map<std::string, protocol::Message> requests;
@@ -272,7 +272,7 @@ std::map<std::string, output::FieldFrame> Session::request_fields(Peers& peers,
     m.header.t0 = m.header.t1 = window_start(window);
     requests.emplace(name, std::move(m));
   }
-  std::map<std::string, output::FieldFrame> frames;
+  std::map<std::string, field::FieldFrame> frames;
   for (auto& [name, m] : peers.exchange(std::move(requests), protocol::Type::Field, when)) {
     try {
       frames.emplace(name, protocol::field_frame(std::move(m)));

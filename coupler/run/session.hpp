@@ -44,7 +44,7 @@ class Session {
   void windows(Peers& peers);
   void record(std::uint64_t window, double time, const WindowResult& r, double wall);
   // The fields of `providers` at the start of `window` (their committed state).
-  std::map<std::string, output::FieldFrame> request_fields(Peers& peers, const std::set<std::string>& providers,
+  std::map<std::string, field::FieldFrame> request_fields(Peers& peers, const std::set<std::string>& providers,
                                                            std::uint64_t window, const std::string& when);
   // At the scene's fields times, every participant that provides fields sends them.
   void write_fields(Peers& peers, std::uint64_t windows_done);
@@ -62,7 +62,7 @@ class Session {
   // The frames write_fields took last, kept for forwarding at the same instant.
   struct WrittenFields {
     std::uint64_t window = std::numeric_limits<std::uint64_t>::max();
-    std::map<std::string, output::FieldFrame> frames;
+    std::map<std::string, field::FieldFrame> frames;
   } written_fields_;
   double forwarded_bytes_ = 0;  // of fields, over the windows of this session
   std::optional<output::RunFile> file_;

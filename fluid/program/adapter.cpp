@@ -112,9 +112,9 @@ std::vector<double> FluidSolver::forces() const {
   return out;
 }
 
-// Rank 0 alone fills the point sets (output/field_frame.hpp).
-output::FieldFrame FluidSolver::fields() const {
-  output::FieldFrame frame = cell_fields(flow_->flow, *flow_->bodies);
+// Rank 0 alone fills the point sets (coupler/field/field_frame.hpp).
+field::FieldFrame FluidSolver::fields() const {
+  field::FieldFrame frame = cell_fields(flow_->flow, *flow_->bodies);
   PetscMPIInt rank = 0;
   MPI_Comm_rank(flow_->grid.comm(), &rank);
   if (rank == 0) frame.point_sets = flow_->surfaces->where(*flow_->bodies);

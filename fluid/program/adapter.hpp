@@ -27,7 +27,7 @@ class FluidSolver final : public participant::Solver {
   std::vector<double> state() const override;
   void restore(const std::vector<double>& state) override;
   // Cell-centred velocity, pressure and alpha (cell_fields.hpp), whole on rank 0; collective.
-  output::FieldFrame fields() const override;
+  field::FieldFrame fields() const override;
 
   const fluid::NavierStokes& flow() const;
   // The steps taken on this rank so far, and the seconds of each stage of them summed.

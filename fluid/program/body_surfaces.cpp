@@ -24,10 +24,10 @@ BodySurfaces::BodySurfaces(const fluid::Grid& grid, const fluid::BodyTreatment& 
   }
 }
 
-std::vector<output::PointSet> BodySurfaces::where(const fluid::BodyTreatment& bodies) const {
-  std::vector<output::PointSet> out;
+std::vector<field::PointSet> BodySurfaces::where(const fluid::BodyTreatment& bodies) const {
+  std::vector<field::PointSet> out;
   for (std::size_t b = 0; b < points_.size(); ++b) {
-    output::PointSet set{names_.at(b), {}};
+    field::PointSet set{names_.at(b), {}};
     for (const Eigen::Vector3d& p : points_[b]) {
       const Eigen::Vector3d x = bodies.body(b).pose.to_world(p);
       set.points.insert(set.points.end(), {x[0], x[1], x[2]});

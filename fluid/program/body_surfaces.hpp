@@ -9,7 +9,7 @@
 
 #include "fluid/body_treatment.hpp"
 #include "fluid/grid.hpp"
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 
 namespace cosim::program {
 
@@ -18,7 +18,7 @@ class BodySurfaces {
   // `bodies` where they start, named as in the scene.
   BodySurfaces(const fluid::Grid& grid, const fluid::BodyTreatment& bodies, std::vector<std::string> names);
   // One set per body, named after it, where `bodies` places it now.
-  std::vector<output::PointSet> where(const fluid::BodyTreatment& bodies) const;
+  std::vector<field::PointSet> where(const fluid::BodyTreatment& bodies) const;
 
  private:
   std::vector<std::string> names_;

@@ -79,11 +79,11 @@ std::vector<double> centred_velocity(const fluid::Grid& grid, Vec u, int c) {
 
 }  // namespace
 
-output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::BodyTreatment& bodies) {
+field::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::BodyTreatment& bodies) {
   const fluid::Grid& grid = flow.grid();
-  output::RectilinearGrid axes;
+  field::RectilinearGrid axes;
   for (int a = 0; a < 3; ++a) axes.nodes[static_cast<std::size_t>(a)] = nodes(grid.axis(a));
-  output::FieldFrame frame{std::move(axes), {}};
+  field::FieldFrame frame{std::move(axes), {}};
 
   std::array<std::vector<double>, 3> u;
   for (int c = 0; c < 3; ++c) u[static_cast<std::size_t>(c)] = centred_velocity(grid, flow.velocity(c), c);
@@ -100,7 +100,7 @@ output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::Bod
   });
   if (pressure.empty()) return frame;  // not rank 0
 
-  output::CellField velocity{"velocity", 3, std::vector<double>(3 * pressure.size())};
+  field::CellField velocity{"velocity", 3, std::vector<double>(3 * pressure.size())};
   for (std::size_t i = 0; i < pressure.size(); ++i)
     for (std::size_t c = 0; c < 3; ++c) velocity.values[3 * i + c] = u[c][i];
   frame.fields = {std::move(velocity), {"pressure", 1, std::move(pressure)}, {"alpha", 1, std::move(alpha)}};

@@ -5,12 +5,12 @@
 
 #include "fluid/body_treatment.hpp"
 #include "fluid/navier_stokes.hpp"
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 
 namespace cosim::program {
 
 // Collective: every rank computes its own cells and rank 0 receives the whole grid in the
 // frame's order (other ranks get the grid's nodes and no fields).
-output::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::BodyTreatment& bodies);
+field::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::BodyTreatment& bodies);
 
 }  // namespace cosim::program

@@ -30,16 +30,16 @@ std::string text_of(const std::filesystem::path& path) {
 }
 
 // 2 x 1 x 1 cells with a pressure and a vector.
-FieldFrame cells_of(std::uint64_t window) {
+field::FieldFrame cells_of(std::uint64_t window) {
   const double w = double(window);
-  return {RectilinearGrid{{{{0.0, 0.5, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}},
+  return {field::RectilinearGrid{{{{0.0, 0.5, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}},
           {{"p", 1, {w, w}}, {"u", 3, std::vector<double>(6, 1.0)}}};
 }
 
 // A body with window + 1 markers, and one entirely outside the grid.
-FieldFrame frame_with_bodies(std::uint64_t window) {
-  FieldFrame frame = cells_of(window);
-  PointSet ball{"ball", {}};
+field::FieldFrame frame_with_bodies(std::uint64_t window) {
+  field::FieldFrame frame = cells_of(window);
+  field::PointSet ball{"ball", {}};
   for (std::uint64_t i = 0; i <= window; ++i)
     ball.points.insert(ball.points.end(), {0.1 * double(i), 0.5, double(window)});
   frame.point_sets = {std::move(ball), {"outside", {}}};
@@ -124,7 +124,7 @@ TEST_F(PointSetsTest, EveryStepOfTheSeriesIsASpatialCollection) {
 TEST_F(PointSetsTest, BesidePolyhedralCells) {
   {
     RunFile run = new_run(file("run.h5"));
-    FieldFrame frame = polyhedral_frame(1.0);
+    field::FieldFrame frame = polyhedral_frame(1.0);
     frame.point_sets = {{"dust", {0.5, 0.5, 0.5, 1.5, 0.5, 0.5}}};
     run.write_fields("tracker", 0, 0.0, frame);
   }
@@ -174,8 +174,8 @@ TEST_F(PointSetsTest, FramesWithoutPointSetsKeepTheirSidecar) {
 
 // Two particles with a velocity, a cell index and a 64-bit state as two 32-bit halves;
 // and a set with attributes but no points.
-FieldFrame frame_with_particles(std::uint64_t window) {
-  FieldFrame frame = cells_of(window);
+field::FieldFrame frame_with_particles(std::uint64_t window) {
+  field::FieldFrame frame = cells_of(window);
   const double w = double(window);
   frame.point_sets = {{"particles",
                        {0.25, 0.5, 0.5, 0.75, 0.5, 0.5},
@@ -230,7 +230,7 @@ TEST_F(PointSetsTest, AttributesBesideThePointsAndNodeCentredOnTheirGrid) {
             std::string::npos);
 }
 
-std::string write_error(RunFile& run, const FieldFrame& frame) {
+std::string write_error(RunFile& run, const field::FieldFrame& frame) {
   try {
     run.write_fields("fluid", 1, 0.1, frame);
   } catch (const std::runtime_error& e) {
@@ -244,7 +244,7 @@ std::string write_error(RunFile& run, const FieldFrame& frame) {
 TEST_F(PointSetsTest, RefusesANameThatIsNoDatasetNameOrComesTwice) {
   RunFile run = new_run(file("run.h5"));
   const auto renamed = [](const std::string& name) {
-    FieldFrame frame = frame_with_bodies(1);
+    field::FieldFrame frame = frame_with_bodies(1);
     frame.point_sets[1].name = name;
     return frame;
   };
@@ -254,10 +254,10 @@ TEST_F(PointSetsTest, RefusesANameThatIsNoDatasetNameOrComesTwice) {
   EXPECT_EQ(write_error(run, renamed("")), in + "point set name '' cannot name an HDF5 dataset");
   EXPECT_EQ(write_error(run, renamed(std::string("a\0b", 3))), in + "point set name 'a?b' cannot name an HDF5 dataset");
   EXPECT_EQ(write_error(run, renamed("ball")), in + "point set name 'ball' appears twice");
-  FieldFrame ragged = frame_with_bodies(1);
+  field::FieldFrame ragged = frame_with_bodies(1);
   ragged.point_sets[0].points.push_back(1.0);
   EXPECT_EQ(write_error(run, ragged), in + "point set 'ball' has 7 coordinates, not x y z triples");
-  FieldFrame clash = frame_with_bodies(1);
+  field::FieldFrame clash = frame_with_bodies(1);
   clash.fields[0].name = "points";
   EXPECT_EQ(write_error(run, clash), file("run.h5").string() +
                                          ": field points of fluid: the step's group of that name holds the point sets");
@@ -269,34 +269,36 @@ TEST_F(PointSetsTest, RefusesANameThatIsNoDatasetNameOrComesTwice) {
 
 TEST_F(PointSetsTest, RefusesAttributesThatDoNotFitTheirSet) {
   RunFile run = new_run(file("run.h5"));
-  const auto changed = [](const std::function<void(PointAttribute&)>& change) {
-    FieldFrame frame = frame_with_particles(1);
+  const auto changed = [](const std::function<void(field::PointAttribute&)>& change) {
+    field::FieldFrame frame = frame_with_particles(1);
     change(frame.point_sets[0].attributes[1]);  // cell
     return frame;
   };
   const std::string in = file("run.h5").string() + ": fields of fluid: ";
-  EXPECT_EQ(write_error(run, changed([](PointAttribute& a) { a.name = "a/b"; })),
+  EXPECT_EQ(write_error(run, changed([](field::PointAttribute& a) { a.name = "a/b"; })),
             in + "attribute name 'a/b' of point set 'particles' cannot name an HDF5 dataset");
-  EXPECT_EQ(write_error(run, changed([](PointAttribute& a) { a.name = "velocity"; })),
+  EXPECT_EQ(write_error(run, changed([](field::PointAttribute& a) { a.name = "velocity"; })),
             in + "attribute name 'velocity' appears twice in point set 'particles'");
-  EXPECT_EQ(write_error(run, changed([](PointAttribute& a) { a.values.pop_back(); })),
+  EXPECT_EQ(write_error(run, changed([](field::PointAttribute& a) { a.values.pop_back(); })),
             in + "attribute 'cell' of point set 'particles' has 1 values for 2 points of 1 components");
-  EXPECT_EQ(write_error(run, changed([](PointAttribute& a) { a.components = 0; })),
+  EXPECT_EQ(write_error(run, changed([](field::PointAttribute& a) { a.components = 0; })),
             in + "attribute 'cell' of point set 'particles' has 0 components");
-  EXPECT_EQ(write_error(run, changed([](PointAttribute& a) { a.values[1] = 0.5; })),
+  EXPECT_EQ(write_error(run, changed([](field::PointAttribute& a) { a.values[1] = 0.5; })),
             in + "attribute 'cell' of point set 'particles' holds 0.500000, not a whole number within +-2^53");
   // Beyond 2^53 a float64 stands for several integers.
-  EXPECT_NE(write_error(run, changed([](PointAttribute& a) { a.values[1] = 0x1p53 + 2; })).find("holds 9007199254740994"),
+  EXPECT_NE(write_error(run, changed([](field::PointAttribute& a) { a.values[1] = 0x1p53 + 2; }))
+                .find("holds 9007199254740994"),
             std::string::npos);
-  EXPECT_NE(write_error(run, changed([](PointAttribute& a) { a.values[1] = std::nan(""); })).find("holds nan"),
+  EXPECT_NE(write_error(run, changed([](field::PointAttribute& a) { a.values[1] = std::nan(""); })).find("holds nan"),
             std::string::npos);
-  FieldFrame clash = frame_with_particles(1);
+  field::FieldFrame clash = frame_with_particles(1);
   clash.fields[0].name = "point_attributes";
   EXPECT_EQ(write_error(run, clash),
             file("run.h5").string() +
                 ": field point_attributes of fluid: the step's group of that name holds the point sets' attributes");
   EXPECT_FALSE(ReadFile(file("run.h5")).has("/fields"));
-  run.write_fields("fluid", 1, 0.1, changed([](PointAttribute& a) { a.values[1] = 0x1p53; }));  // the last exact one
+  // The last exact one.
+  run.write_fields("fluid", 1, 0.1, changed([](field::PointAttribute& a) { a.values[1] = 0x1p53; }));
   EXPECT_EQ(ReadFile(file("run.h5")).values<std::int64_t>("/fields/fluid/000001/point_attributes/particles/cell",
                                                          H5T_NATIVE_INT64),
             (std::vector<std::int64_t>{0, std::int64_t{1} << 53}));

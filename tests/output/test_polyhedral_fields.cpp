@@ -33,13 +33,13 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 }
 
 TEST_F(PolyhedralFieldsTest, WritesTheGridOnceAndEveryStep) {
-  const FieldFrame first = polyhedral_frame(1.0);
+  const field::FieldFrame first = polyhedral_frame(1.0);
   {
     RunFile run = new_run(file("run.h5"));
     run.write_fields("tracker", 0, 0.0, first);
     run.write_fields("tracker", 10, 0.5, polyhedral_frame(2.0));
   }
-  const auto& grid = std::get<PolyhedralGrid>(first.grid);
+  const auto& grid = std::get<field::PolyhedralGrid>(first.grid);
   ReadFile f(file("run.h5"));
   EXPECT_EQ(f.dims("/fields/tracker/grid/vertices"), (std::vector<hsize_t>{13, 3}));
   EXPECT_EQ(f.doubles("/fields/tracker/grid/vertices"), grid.vertices);
@@ -67,7 +67,8 @@ TEST_F(PolyhedralFieldsTest, BothKindsOfGridInOneFile) {
   {
     RunFile run = new_run(file("run.h5"));
     run.write_fields("tracker", 0, 0.0, polyhedral_frame(1.0));
-    run.write_fields("fluid", 0, 0.0, {RectilinearGrid{{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 2.0}}}}, {{"p", 1, {7.0}}}});
+    run.write_fields("fluid", 0, 0.0,
+                     {field::RectilinearGrid{{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 2.0}}}}, {{"p", 1, {7.0}}}});
   }
   ReadFile f(file("run.h5"));
   EXPECT_EQ(f.doubles("/fields/fluid/000000/p"), (std::vector<double>{7.0}));
@@ -77,7 +78,7 @@ TEST_F(PolyhedralFieldsTest, BothKindsOfGridInOneFile) {
   EXPECT_EQ(occurrences(sidecar, "TopologyType=\"3DRectMesh\""), 1u);
 }
 
-std::string write_error(RunFile& run, std::uint64_t window, const FieldFrame& frame) {
+std::string write_error(RunFile& run, std::uint64_t window, const field::FieldFrame& frame) {
   try {
     run.write_fields("tracker", window, 0.1 * double(window), frame);
   } catch (const std::runtime_error& e) {
@@ -89,23 +90,24 @@ std::string write_error(RunFile& run, std::uint64_t window, const FieldFrame& fr
 
 TEST_F(PolyhedralFieldsTest, RefusesAnotherGridOrABrokenOne) {
   RunFile run = new_run(file("run.h5"));
-  FieldFrame broken = polyhedral_frame(1.0);
-  std::get<PolyhedralGrid>(broken.grid).topology.back() = 13;
+  field::FieldFrame broken = polyhedral_frame(1.0);
+  std::get<field::PolyhedralGrid>(broken.grid).topology.back() = 13;
   EXPECT_NE(write_error(run, 0, broken).find("fields of tracker: cell 2 of the topology names vertex 13 of 13"),
             std::string::npos);
-  FieldFrame short_field = polyhedral_frame(1.0);
+  field::FieldFrame short_field = polyhedral_frame(1.0);
   short_field.fields[0].values.pop_back();
   EXPECT_NE(write_error(run, 0, short_field).find("field density of tracker: 2 values do not fit the grid"),
             std::string::npos);
 
   run.write_fields("tracker", 0, 0.0, polyhedral_frame(1.0));
-  FieldFrame fewer = polyhedral_frame(1.0);  // the hexahedra without the tetrahedron
-  auto& grid = std::get<PolyhedralGrid>(fewer.grid);
+  field::FieldFrame fewer = polyhedral_frame(1.0);  // the hexahedra without the tetrahedron
+  auto& grid = std::get<field::PolyhedralGrid>(fewer.grid);
   grid.topology.resize(grid.topology.size() - 18);
   grid.cells = 2;
-  for (CellField& f : fewer.fields) f.values.resize(2 * static_cast<std::size_t>(f.components));
+  for (field::CellField& f : fewer.fields) f.values.resize(2 * static_cast<std::size_t>(f.components));
   EXPECT_NE(write_error(run, 1, fewer).find("fields of tracker: the grid changed"), std::string::npos);
-  const FieldFrame rectilinear{RectilinearGrid{{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0, 2.0, 3.0}}}}, {{"p", 1, {1, 2, 3}}}};
+  const field::FieldFrame rectilinear{field::RectilinearGrid{{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0, 2.0, 3.0}}}},
+                                      {{"p", 1, {1, 2, 3}}}};
   EXPECT_NE(write_error(run, 1, rectilinear).find("fields of tracker: the grid changed"), std::string::npos);
 }
 

@@ -80,8 +80,9 @@ TEST_F(ResumeTest, CutsSeriesToTheCheckpointAndContinues) {
 
 // A 2 x 1 x 1 grid with one scalar whose value is the window, and the tracer's polyhedra,
 // written at windows 0..4 around a checkpoint after window 2, as a run killed after window 4.
-FieldFrame frame_of(std::uint64_t window) {
-  return {RectilinearGrid{{{{0.0, 0.5, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}}, {{"p", 1, {double(window), double(window)}}}};
+field::FieldFrame frame_of(std::uint64_t window) {
+  return {field::RectilinearGrid{{{{0.0, 0.5, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}},
+          {{"p", 1, {double(window), double(window)}}}};
 }
 
 void write_interrupted_run_with_fields(const std::filesystem::path& path) {
@@ -127,8 +128,8 @@ TEST_F(ResumeTest, KeepsAPolyhedralGrid) {
   RunFile run = RunFile::resume(path, "d1e2f3");
   EXPECT_FALSE(ReadFile(path).has("/fields/tracer/000004"));
   run.write_fields("tracer", 4, 0.4, polyhedral_frame(40.0));
-  FieldFrame moved = polyhedral_frame(50.0);
-  std::get<PolyhedralGrid>(moved.grid).vertices.resize(12 * 3);  // the apex gone
+  field::FieldFrame moved = polyhedral_frame(50.0);
+  std::get<field::PolyhedralGrid>(moved.grid).vertices.resize(12 * 3);  // the apex gone
   EXPECT_THROW(run.write_fields("tracer", 5, 0.5, moved), std::runtime_error);
   ReadFile f(path);
   EXPECT_EQ(f.doubles("/fields/tracer/000004/density"), (std::vector<double>{40.0, 41.0, 42.0}));
@@ -144,8 +145,8 @@ TEST_F(ResumeTest, KeepsAPolyhedralGrid) {
 
 // A body's two markers at x = window in every frame, with an index and a speed each (in
 // name order, as resume() reads them back), and a body outside the grid.
-FieldFrame frame_with_bodies(std::uint64_t window) {
-  FieldFrame frame = frame_of(window);
+field::FieldFrame frame_with_bodies(std::uint64_t window) {
+  field::FieldFrame frame = frame_of(window);
   const double w = double(window);
   frame.point_sets = {{"ball", {w, 0.5, 0.5, w, 0.25, 0.5}, {{"index", 1, {0, 1}, true}, {"speed", 1, {w, 2 * w}}}},
                       {"cube", {}}};
@@ -186,7 +187,7 @@ TEST_F(ResumeTest, CutsPointSetsWithTheirFrames) {
     }
     EXPECT_FALSE(f.has("/fields/fluid/000004"));
     EXPECT_EQ(file_bytes(file("run.xmf")), file_bytes(file("stopped") / "run.xmf"));
-    FieldFrame again = frame_with_bodies(4);
+    field::FieldFrame again = frame_with_bodies(4);
     again.point_sets[0].points = {9.0, 9.0, 9.0};
     again.point_sets[0].attributes = {{"index", 1, {7}, true}};
     run.write_fields("fluid", 4, 0.4, again);
@@ -208,7 +209,7 @@ TEST_F(ResumeTest, KeepsACellFieldNamedPoints) {
   const auto path = file("run.h5");
   {
     RunFile run = RunFile::create(path, RunInfo{}, kBodies, kParticipants);
-    FieldFrame frame = frame_of(0);
+    field::FieldFrame frame = frame_of(0);
     frame.fields[0].name = "points";
     run.write_fields("fluid", 0, 0.0, frame);
     run.write_checkpoint(checkpoint_after(0));

@@ -12,8 +12,8 @@ using protocol::Array;
 using protocol::Tag;
 
 // 2 x 1 x 1 cells, the fluid's velocity and pressure.
-output::FieldFrame fluid_frame() {
-  output::RectilinearGrid grid;
+field::FieldFrame fluid_frame() {
+  field::RectilinearGrid grid;
   grid.nodes = {std::vector<double>{0.0, 0.5, 1.0}, {0.0, 1.0}, {0.0, 0.1}};
   return {std::move(grid), {{"velocity", 3, {0.1, 0, 0, 0.2, 0, 0}}, {"pressure", 1, {3, 4}}}};
 }
@@ -41,9 +41,9 @@ TEST(ParticipantInputs, AnAdvanceWithFieldsGivesThePosesAndTheFrame) {
   EXPECT_EQ(in.poses_end[0], 0.5);
   EXPECT_TRUE(in.forces_start.empty());
   ASSERT_TRUE(in.fields.has_value());
-  const output::FieldFrame sent = fluid_frame();
-  EXPECT_EQ(std::get<output::RectilinearGrid>(in.fields->grid).nodes,
-            std::get<output::RectilinearGrid>(sent.grid).nodes);
+  const field::FieldFrame sent = fluid_frame();
+  EXPECT_EQ(std::get<field::RectilinearGrid>(in.fields->grid).nodes,
+            std::get<field::RectilinearGrid>(sent.grid).nodes);
   ASSERT_EQ(in.fields->fields.size(), 2u);
   EXPECT_EQ(in.fields->fields[0].name, "velocity");
   EXPECT_EQ(in.fields->fields[0].components, 3);

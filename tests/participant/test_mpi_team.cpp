@@ -88,7 +88,7 @@ class PointSetSolver final : public Solver {
     return {};
   }
   Outputs advance(const Window&, const Inputs& in) override {
-    const output::PointSet* set = in.fields ? &in.fields->point_sets.at(0) : nullptr;
+    const field::PointSet* set = in.fields ? &in.fields->point_sets.at(0) : nullptr;
     double local = set ? set->points.at(2) + set->attributes.at(0).values.at(0) : -100.0, sum = 0;
     MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
     return {{}, {sum}, 1};
@@ -104,7 +104,7 @@ TEST(MpiTeam, AForwardedFrameReachesEveryRankWithItsPointSets) {
   run_on_ranks(local, MPI_COMM_WORLD, [](Solver& lead) {
     lead.initialise(tiny_scene(), "spring", {}, {});
     Inputs in;
-    in.fields = output::FieldFrame{output::RectilinearGrid{{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}},
+    in.fields = field::FieldFrame{field::RectilinearGrid{{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}},
                                    {{"p", 1, {1.0}}},
                                    {{"ball", {0.5, 0.5, 2.5}, {{"id", 1, {4.0}, true}}}}};
     EXPECT_EQ(lead.advance({0, 1, 0.0, 0.5}, in).forces, (std::vector<double>{13.0}));  // 2 x (2.5 + 4)

@@ -12,8 +12,8 @@ namespace {
 using testing::field_message;
 
 // 2 x 3 x 1 cells on a stretched x axis, a vector and a scalar.
-output::FieldFrame sample_frame() {
-  output::RectilinearGrid grid;
+field::FieldFrame sample_frame() {
+  field::RectilinearGrid grid;
   grid.nodes = {std::vector<double>{0.0, 0.1, 0.3}, {0.0, 1.0, 2.0, 3.0}, {0.0, 0.5}};
   std::vector<double> u(18), p(6);
   for (std::size_t i = 0; i < u.size(); ++i) u[i] = 0.5 * static_cast<double>(i);
@@ -23,8 +23,8 @@ output::FieldFrame sample_frame() {
 
 // Two tetrahedra on the faces of a triangular bipyramid (vertices 0, 1, 2 the shared face,
 // 3 above, 4 below), a vector and a scalar.
-output::FieldFrame polyhedral_frame() {
-  output::PolyhedralGrid grid;
+field::FieldFrame polyhedral_frame() {
+  field::PolyhedralGrid grid;
   grid.vertices = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.3, 0.3, 1, 0.3, 0.3, -1};
   grid.topology = {16, 4, 3, 0, 2, 1, 3, 0, 1, 3, 3, 1, 2, 3, 3, 2, 0, 3,
                    16, 4, 3, 0, 1, 2, 3, 0, 4, 1, 3, 1, 4, 2, 3, 2, 4, 0};
@@ -43,7 +43,7 @@ std::string refusal(std::vector<Array> arrays) {
   return {};
 }
 
-void expect_same_fields(const output::FieldFrame& got, const output::FieldFrame& sent) {
+void expect_same_fields(const field::FieldFrame& got, const field::FieldFrame& sent) {
   ASSERT_EQ(got.fields.size(), sent.fields.size());
   for (std::size_t i = 0; i < sent.fields.size(); ++i) {
     EXPECT_EQ(got.fields[i].name, sent.fields[i].name);
@@ -53,21 +53,21 @@ void expect_same_fields(const output::FieldFrame& got, const output::FieldFrame&
 }
 
 TEST(FieldMessage, RoundTripsThroughTheWire) {
-  const output::FieldFrame sent = sample_frame();
-  const output::FieldFrame got = field_frame(field_message(field_arrays(sent)));
-  ASSERT_TRUE(std::holds_alternative<output::RectilinearGrid>(got.grid));
-  EXPECT_EQ(std::get<output::RectilinearGrid>(got.grid).nodes, std::get<output::RectilinearGrid>(sent.grid).nodes);
+  const field::FieldFrame sent = sample_frame();
+  const field::FieldFrame got = field_frame(field_message(field_arrays(sent)));
+  ASSERT_TRUE(std::holds_alternative<field::RectilinearGrid>(got.grid));
+  EXPECT_EQ(std::get<field::RectilinearGrid>(got.grid).nodes, std::get<field::RectilinearGrid>(sent.grid).nodes);
   expect_same_fields(got, sent);
 }
 
 TEST(FieldMessage, RoundTripsAPolyhedralGrid) {
-  output::FieldFrame sent = polyhedral_frame();
+  field::FieldFrame sent = polyhedral_frame();
   const auto arrays = field_arrays(sent);
   ASSERT_EQ(arrays.size(), 8u);  // vertices, topology, two fields
-  const output::FieldFrame got = field_frame(field_message(arrays));
-  ASSERT_TRUE(std::holds_alternative<output::PolyhedralGrid>(got.grid));
-  const auto& grid = std::get<output::PolyhedralGrid>(got.grid);
-  const auto& expected = std::get<output::PolyhedralGrid>(sent.grid);
+  const field::FieldFrame got = field_frame(field_message(arrays));
+  ASSERT_TRUE(std::holds_alternative<field::PolyhedralGrid>(got.grid));
+  const auto& grid = std::get<field::PolyhedralGrid>(got.grid);
+  const auto& expected = std::get<field::PolyhedralGrid>(sent.grid);
   EXPECT_EQ(grid.vertices, expected.vertices);
   EXPECT_EQ(grid.topology, expected.topology);
   EXPECT_EQ(grid.cells, 2u);
@@ -132,8 +132,8 @@ TEST(FieldMessage, RefusesVerticesWithoutTheTopology) {
 }
 
 TEST(FieldMessage, ASenderCannotSendABrokenGrid) {
-  output::FieldFrame frame = polyhedral_frame();
-  std::get<output::PolyhedralGrid>(frame.grid).topology[0] = 12;  // a hexahedron's code, not a polyhedron's
+  field::FieldFrame frame = polyhedral_frame();
+  std::get<field::PolyhedralGrid>(frame.grid).topology[0] = 12;  // a hexahedron's code, not a polyhedron's
   EXPECT_THROW(field_arrays(frame), ProtocolError);
 }
 
@@ -153,9 +153,9 @@ TEST(FieldMessage, AnAdvanceCarriesTheFieldsAfterItsInputs) {
   std::vector<Array> taken = take_field_arrays(got.arrays);
   ASSERT_EQ(got.arrays.size(), 2u);
   EXPECT_EQ(got.arrays[1].values, pose);
-  const output::FieldFrame frame = field_frame(std::move(taken), "Advance");
-  EXPECT_EQ(std::get<output::RectilinearGrid>(frame.grid).nodes,
-            std::get<output::RectilinearGrid>(sample_frame().grid).nodes);
+  const field::FieldFrame frame = field_frame(std::move(taken), "Advance");
+  EXPECT_EQ(std::get<field::RectilinearGrid>(frame.grid).nodes,
+            std::get<field::RectilinearGrid>(sample_frame().grid).nodes);
   expect_same_fields(frame, sample_frame());
 
   Message inputs_only = decode(encode(Message{m.header, {m.arrays[0]}}));

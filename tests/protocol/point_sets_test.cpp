@@ -14,8 +14,8 @@ namespace {
 using testing::field_message;
 
 // One cell with a pressure, a body of three markers and one entirely outside.
-output::FieldFrame frame_with_bodies() {
-  output::RectilinearGrid grid;
+field::FieldFrame frame_with_bodies() {
+  field::RectilinearGrid grid;
   grid.nodes = {std::vector<double>{0.0, 1.0}, {0.0, 2.0}, {0.0, 3.0}};
   return {std::move(grid),
           {{"pressure", 1, {4.5}}},
@@ -38,10 +38,10 @@ std::string decode_refusal(std::vector<Array> arrays) {
   return refusal([&] { field_frame(field_message(std::move(arrays))); });
 }
 
-void expect_same_point_sets(const output::FieldFrame& got, const output::FieldFrame& sent) {
+void expect_same_point_sets(const field::FieldFrame& got, const field::FieldFrame& sent) {
   ASSERT_EQ(got.point_sets.size(), sent.point_sets.size());
   for (std::size_t i = 0; i < sent.point_sets.size(); ++i) {
-    const output::PointSet &g = got.point_sets[i], &s = sent.point_sets[i];
+    const field::PointSet &g = got.point_sets[i], &s = sent.point_sets[i];
     EXPECT_EQ(g.name, s.name);
     EXPECT_EQ(g.points, s.points);
     ASSERT_EQ(g.attributes.size(), s.attributes.size()) << s.name;
@@ -56,8 +56,8 @@ void expect_same_point_sets(const output::FieldFrame& got, const output::FieldFr
 
 // The bodies' frame with attributes: two on the ball, none on the body outside, one on a
 // third set of one point.
-output::FieldFrame frame_with_attributes() {
-  output::FieldFrame frame = frame_with_bodies();
+field::FieldFrame frame_with_attributes() {
+  field::FieldFrame frame = frame_with_bodies();
   frame.point_sets[0].attributes = {{"velocity", 3, {1, 2, 3, 4, 5, 6, 7, 8, 9.5}},
                                     {"state", 2, {4294967295.0, 0, 1, 2, 0x1p53, -7}, true}};
   frame.point_sets.push_back({"dust", {1, 1, 1}, {{"cell", 1, {12}, true}}});
@@ -65,7 +65,7 @@ output::FieldFrame frame_with_attributes() {
 }
 
 TEST(PointSets, TwoSetsRoundTripThroughTheWire) {
-  const output::FieldFrame sent = frame_with_bodies();
+  const field::FieldFrame sent = frame_with_bodies();
   const std::vector<Array> arrays = field_arrays(sent);
   ASSERT_EQ(arrays.size(), 6u + 2u + 3u);  // x, y, z, pressure, then names, counts, points
   EXPECT_EQ(arrays[8].bytes, std::string("ball\0outside\0", 13));
@@ -73,18 +73,18 @@ TEST(PointSets, TwoSetsRoundTripThroughTheWire) {
   EXPECT_EQ(arrays[10].tag, Tag::Points);
   EXPECT_EQ(arrays[10].rows, 3u);
 
-  const output::FieldFrame got = field_frame(field_message(arrays));
+  const field::FieldFrame got = field_frame(field_message(arrays));
   ASSERT_EQ(got.fields.size(), 1u);
   EXPECT_EQ(got.fields[0].values, sent.fields[0].values);
   expect_same_point_sets(got, sent);
 }
 
 TEST(PointSets, OnAPolyhedralGridAndInAnAdvance) {
-  output::PolyhedralGrid grid;  // one tetrahedron
+  field::PolyhedralGrid grid;  // one tetrahedron
   grid.vertices = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   grid.topology = {16, 4, 3, 0, 2, 1, 3, 0, 1, 3, 3, 1, 2, 3, 3, 2, 0, 3};
   grid.cells = 1;
-  const output::FieldFrame sent{std::move(grid), {{"density", 1, {2.0}}}, {{"dust", {0.1, 0.1, 0.1}}}};
+  const field::FieldFrame sent{std::move(grid), {{"density", 1, {2.0}}}, {{"dust", {0.1, 0.1, 0.1}}}};
 
   Message advance;
   advance.header.type = Type::Advance;
@@ -94,13 +94,13 @@ TEST(PointSets, OnAPolyhedralGridAndInAnAdvance) {
   Message got = decode(encode(advance));
   std::vector<Array> fields = take_field_arrays(got.arrays);
   ASSERT_EQ(got.arrays.size(), 1u);
-  const output::FieldFrame frame = field_frame(std::move(fields), "Advance");
-  EXPECT_EQ(std::get<output::PolyhedralGrid>(frame.grid).cells, 1u);
+  const field::FieldFrame frame = field_frame(std::move(fields), "Advance");
+  EXPECT_EQ(std::get<field::PolyhedralGrid>(frame.grid).cells, 1u);
   expect_same_point_sets(frame, sent);
 }
 
 TEST(PointSets, AttributesRoundTripThroughTheWire) {
-  const output::FieldFrame sent = frame_with_attributes();
+  const field::FieldFrame sent = frame_with_attributes();
   const std::vector<Array> arrays = field_arrays(sent);
   ASSERT_EQ(arrays.size(), 6u + 2u + 3u + 3u);  // ..., names, shapes, values of the attributes
   EXPECT_EQ(arrays[10].tag, Tag::Points);
@@ -114,7 +114,7 @@ TEST(PointSets, AttributesRoundTripThroughTheWire) {
 
 // The tracker's particles when none are left (or none is in the sample): no values at all.
 TEST(PointSets, AnEmptySetKeepsItsAttributes) {
-  output::FieldFrame sent = frame_with_bodies();
+  field::FieldFrame sent = frame_with_bodies();
   sent.point_sets = {{"particles", {}, {{"velocity", 3, {}}, {"cell", 1, {}, true}}}};
   const std::vector<Array> arrays = field_arrays(sent);
   ASSERT_EQ(arrays.back().tag, Tag::PointAttributes);
@@ -165,14 +165,14 @@ TEST(PointSets, TheReceiverRefusesAttributesThatDoNotAddUp) {
 
 // The sender learns of an attribute that does not fit its set before anything leaves.
 TEST(PointSets, ASenderCannotSendABadAttribute) {
-  output::FieldFrame frame = frame_with_attributes();
+  field::FieldFrame frame = frame_with_attributes();
   frame.point_sets[2].attributes[0].values = {12, 13};
   EXPECT_EQ(refusal([&] { field_arrays(frame); }),
             "Field arrays: attribute 'cell' of point set 'dust' has 2 values for 1 points of 1 components");
 }
 
 TEST(PointSets, AFrameWithoutThemKeepsItsArrays) {
-  output::FieldFrame frame = frame_with_bodies();
+  field::FieldFrame frame = frame_with_bodies();
   frame.point_sets.clear();
   const std::vector<Array> arrays = field_arrays(frame);
   ASSERT_EQ(arrays.size(), 8u);
@@ -187,14 +187,14 @@ TEST(PointSets, ASenderCannotSendABadName) {
                                       std::pair{".", "point set name '.' cannot name an HDF5 dataset"},
                                       std::pair{"", "point set name '' cannot name an HDF5 dataset"},
                                       std::pair{"x\ny", "point set name 'x?y' cannot name an HDF5 dataset"}}) {
-    output::FieldFrame frame = frame_with_bodies();
+    field::FieldFrame frame = frame_with_bodies();
     frame.point_sets[1].name = name;
     EXPECT_EQ(refusal([&] { field_arrays(frame); }), std::string("Field arrays: ") + message);
   }
-  output::FieldFrame twice = frame_with_bodies();
+  field::FieldFrame twice = frame_with_bodies();
   twice.point_sets[1].name = "ball";
   EXPECT_EQ(refusal([&] { field_arrays(twice); }), "Field arrays: point set name 'ball' appears twice");
-  output::FieldFrame ragged = frame_with_bodies();
+  field::FieldFrame ragged = frame_with_bodies();
   ragged.point_sets[0].points.pop_back();
   EXPECT_EQ(refusal([&] { field_arrays(ragged); }),
             "Field arrays: point set 'ball' has 8 coordinates, not x y z triples");

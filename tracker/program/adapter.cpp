@@ -85,14 +85,14 @@ participant::Outputs TrackerSolver::advance(const participant::Window& w, const 
   return {{}, forces, static_cast<double>(steps)};
 }
 
-output::FieldFrame TrackerSolver::fields() const {
+field::FieldFrame TrackerSolver::fields() const {
   // Taking the moments starts a new average: the next frame averages the windows since.
   const std::vector<double> count = gas_->counts();
   const std::vector<CellMoments> moments = gas_->take_moments();
-  std::optional<output::PointSet> particles;
+  std::optional<field::PointSet> particles;
   if (particle_output_ && particle_output_->at(done_, windows_)) particles = particle_set(*gas_, *particle_output_);
   if (!ranks_.lead()) return {};  // rank 0 answers the coupler: only it has every cell's values
-  output::FieldFrame frame{grid_, cell_fields(moments, count)};
+  field::FieldFrame frame{grid_, cell_fields(moments, count)};
   if (particles) frame.point_sets.push_back(std::move(*particles));
   return frame;
 }

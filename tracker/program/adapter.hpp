@@ -36,7 +36,7 @@ class TrackerSolver final : public participant::Solver {
   // polyhedral mesh (cell_fields.hpp); collective, the whole frame on every rank. After the
   // windows particle_output names (counted from the last advance()) the particles too, on
   // rank 0 (particle_dump.hpp).
-  output::FieldFrame fields() const override;
+  field::FieldFrame fields() const override;
   // Tracers need only the fluid's velocity of its frame.
   std::vector<std::string> wanted_fields() const override;
 
@@ -49,7 +49,7 @@ class TrackerSolver final : public participant::Solver {
   std::unique_ptr<Simulation> gas_;
   std::vector<int> obstacle_body_;                 // TrackerScene's
   std::optional<ParticleOutput> particle_output_;  // TrackerScene's
-  output::Grid grid_;  // rank 0's: built once, sent with every frame
+  field::Grid grid_;  // rank 0's: built once, sent with every frame
   std::size_t bodies_ = 0;
   std::uint64_t windows_ = 0;  // of the run
   std::uint64_t done_ = 0;     // windows advanced through: the last one's index + 1

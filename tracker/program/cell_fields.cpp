@@ -2,11 +2,11 @@
 
 namespace cosim::tracker {
 
-std::vector<output::CellField> cell_fields(std::span<const CellMoments> moments, std::span<const double> count) {
-  output::CellField mean_count{"mean_count", 1, {}}, density{"density", 1, {}}, velocity{"velocity", 3, {}},
+std::vector<field::CellField> cell_fields(std::span<const CellMoments> moments, std::span<const double> count) {
+  field::CellField mean_count{"mean_count", 1, {}}, density{"density", 1, {}}, velocity{"velocity", 3, {}},
       temperature{"temperature", 1, {}}, pressure{"pressure", 1, {}};
   // Sized once: a write of many cells holds these beside the moments.
-  for (output::CellField* f : {&mean_count, &density, &velocity, &temperature, &pressure})
+  for (field::CellField* f : {&mean_count, &density, &velocity, &temperature, &pressure})
     f->values.reserve(moments.size() * static_cast<std::size_t>(f->components));
   for (const CellMoments& c : moments) {
     mean_count.values.push_back(c.count);

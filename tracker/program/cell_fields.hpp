@@ -1,11 +1,11 @@
-// The tracker's per-cell samples as grid fields (output::CellField), for the run file and
+// The tracker's per-cell samples as grid fields (field::CellField), for the run file and
 // the Field message alike, on its output grid (output_grid.hpp).
 #pragma once
 
 #include <span>
 #include <vector>
 
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 #include "tracker/tracking/sampling.hpp"
 
 namespace cosim::tracker {
@@ -13,6 +13,6 @@ namespace cosim::tracker {
 // Per cell: count (the particles now, `count`), then the moments averaged since the last
 // sample was taken: mean_count, density (1/m^3), velocity (3, m/s), temperature (K),
 // pressure (Pa).
-std::vector<output::CellField> cell_fields(std::span<const CellMoments> moments, std::span<const double> count);
+std::vector<field::CellField> cell_fields(std::span<const CellMoments> moments, std::span<const double> count);
 
 }  // namespace cosim::tracker

@@ -1,12 +1,12 @@
 // The tracker's meshes as an XDMF "Mixed" topology of Polyhedron cells (type 16, then the
 // face count, then per face its vertex count and vertices, counter-clockwise from
-// outside): the topology of output::PolyhedralGrid.
+// outside): the topology of field::PolyhedralGrid.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 #include "tracker/mesh/assemble.hpp"
 #include "tracker/mesh/mesh.hpp"
 
@@ -19,7 +19,7 @@ std::vector<std::int64_t> mixed_topology(const Cells& cells) {
   std::vector<std::int64_t> out;
   const auto count = static_cast<Index>(cells.cell_faces.size()) - 1;
   for (Index c = 0; c < count; ++c) {
-    out.push_back(output::kXdmfPolyhedron);
+    out.push_back(field::kXdmfPolyhedron);
     out.push_back(cells.cell_faces[c + 1] - cells.cell_faces[c]);
     for (Index f = cells.cell_faces[c]; f < cells.cell_faces[c + 1]; ++f) {
       out.push_back(cells.face_vertex_begin[f + 1] - cells.face_vertex_begin[f]);

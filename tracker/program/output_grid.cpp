@@ -24,7 +24,7 @@ std::vector<double> patch_areas(const Mesh& mesh) {
 }  // namespace
 
 OutputGrid output_grid(const BoxSpec& box) {
-  output::RectilinearGrid nodes;
+  field::RectilinearGrid nodes;
   std::array<double, 3> length{};
   for (int a = 0; a < 3; ++a) {
     nodes.nodes[a] = axis_nodes(box.axes[a]);
@@ -42,13 +42,14 @@ OutputGrid output_grid(const BoxSpec& box) {
     return out;
   }
   const Polyhedra cells = box_polyhedra(box);
-  out.grid = output::PolyhedralGrid{flat(cells.vertices), mixed_topology(cells), out.volume.size()};
+  out.grid = field::PolyhedralGrid{flat(cells.vertices), mixed_topology(cells), out.volume.size()};
   return out;
 }
 
 OutputGrid output_grid(const Mesh& whole) {
-  return {output::PolyhedralGrid{flat(whole.vertices), mixed_topology(whole), static_cast<std::size_t>(whole.cell_count())},
-          whole.volume, whole.patches, patch_areas(whole)};
+  return {
+      field::PolyhedralGrid{flat(whole.vertices), mixed_topology(whole), static_cast<std::size_t>(whole.cell_count())},
+      whole.volume, whole.patches, patch_areas(whole)};
 }
 
 OutputGrid output_grid(const Simulation& gas) {

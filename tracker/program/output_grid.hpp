@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/mesh.hpp"
 #include "tracker/step/cell_volumes.hpp"
@@ -18,7 +18,7 @@
 namespace cosim::tracker {
 
 struct OutputGrid {
-  output::Grid grid;
+  field::Grid grid;
   std::vector<double> volume;        // per cell (m^3), in the grid's order
   std::vector<std::string> patches;  // the boundary patches' names (Mesh::patches)
   std::vector<double> patch_area;    // per patch (m^2): a periodic axis's patches have none

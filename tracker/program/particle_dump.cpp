@@ -53,7 +53,7 @@ void add_record(std::vector<double>& records, const Obstacles& obstacles, const 
 
 }  // namespace
 
-output::PointSet particle_set(const Simulation& gas, const ParticleOutput& output) {
+field::PointSet particle_set(const Simulation& gas, const ParticleOutput& output) {
   const Swarm& swarm = gas.swarm();
   const Obstacles& obstacles = gas.setup().obstacles;
   const auto objects = static_cast<std::size_t>(obstacles.count());
@@ -71,14 +71,14 @@ output::PointSet particle_set(const Simulation& gas, const ParticleOutput& outpu
     return std::lexicographical_compare(record(a), record(a + 1), record(b), record(b + 1));
   });
 
-  output::PointSet set{kParticleSet, {}, {{"velocity", 3, {}}, {"cell", 1, {}, true}}};
+  field::PointSet set{kParticleSet, {}, {{"velocity", 3, {}}, {"cell", 1, {}, true}}};
   for (int o = 0; o < obstacles.count(); ++o) {
     const std::string& name = obstacles.object(o).name;
     set.attributes.push_back({state_attribute(name), 2, {}, true});
     set.attributes.push_back({inside_attribute(name), 1, {}, true});
   }
   set.points.reserve(3 * n);
-  for (output::PointAttribute& a : set.attributes) a.values.reserve(static_cast<std::size_t>(a.components) * n);
+  for (field::PointAttribute& a : set.attributes) a.values.reserve(static_cast<std::size_t>(a.components) * n);
   for (const std::size_t i : order) {
     const auto r = record(i);
     const auto append = [&](std::vector<double>& to, std::size_t from, std::size_t count) {

@@ -18,7 +18,7 @@
 // particle cannot be followed from one write to the next.
 #pragma once
 
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 #include "tracker/program/scene_particle_output.hpp"
 #include "tracker/step/simulation.hpp"
 
@@ -29,6 +29,6 @@ inline constexpr char kParticleSet[] = "particles";
 // Collective over the gas's ranks: rank 0 gets the chosen particles of every rank, in cell
 // order and within a cell by position (the same set in the same order on any rank count),
 // the other ranks a set without points.
-output::PointSet particle_set(const Simulation& gas, const ParticleOutput& output);
+field::PointSet particle_set(const Simulation& gas, const ParticleOutput& output);
 
 }  // namespace cosim::tracker

@@ -1,6 +1,6 @@
 #include "tracker/program/scene_particle_output.hpp"
 
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 
 namespace cosim::tracker {
 
@@ -21,7 +21,7 @@ std::optional<ParticleOutput> read_particle_output(const scene::Reader& options,
   o.seed = static_cast<std::uint64_t>(r.integer("seed", 0, scene::Range::at_least(0)));
   r.finish();
   for (int i = 0; i < obstacles.count(); ++i)
-    if (const std::string& name = obstacles.object(i).name; !output::dataset_name(state_attribute(name)))
+    if (const std::string& name = obstacles.object(i).name; !field::dataset_name(state_attribute(name)))
       options.fail("particle_output", "obstacle '" + name + "' cannot name the particles' attribute " +
                                           state_attribute(name) + " (no '/' or control characters)");
   return o;

@@ -38,7 +38,7 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
   const std::uint64_t windows = scene.windows();
   // Every rank gathers (the sums and the particles are collective), rank 0 writes.
   const auto write = [&](std::uint64_t done, double time) {
-    std::vector<output::PointSet> point_sets;
+    std::vector<field::PointSet> point_sets;
     if (particle_output && particle_output->at(done, windows)) point_sets.push_back(particle_set(gas, *particle_output));
     const std::vector<double> count = gas.counts();
     const std::vector<CellMoments> moments = gas.take_moments();

@@ -41,7 +41,7 @@ struct TrackerFile::Impl {
         fields(p),
         volume(grid.volume),
         volume_dims{grid.volume.size()} {
-    if (const auto* box = std::get_if<output::RectilinearGrid>(&grid.grid)) {
+    if (const auto* box = std::get_if<field::RectilinearGrid>(&grid.grid)) {
       const std::array<std::size_t, 3> n = box->cells();
       volume_dims = {n[2], n[1], n[0]};  // as the fields: numpy's density * volume broadcasts
     }
@@ -54,7 +54,7 @@ struct TrackerFile::Impl {
   std::vector<Series> tallies;  // hits, absorbed, entered, left, released, impulse, angular_impulse, energy
   std::size_t patches = 0;
   std::vector<Series> patch_tallies;  // hits, absorbed, impulse, energy
-  output::FieldFrame frame;     // the mesh, built once; the fields of the last write
+  field::FieldFrame frame;     // the mesh, built once; the fields of the last write
   output::FieldWriter fields;
   std::vector<double> volume;   // per cell: into the grid's group once the first step wrote it
   std::vector<hsize_t> volume_dims;

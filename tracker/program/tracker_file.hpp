@@ -49,7 +49,7 @@
 #include <string>
 #include <vector>
 
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 #include "coupler/scene/scene.hpp"
 #include "tracker/program/output_grid.hpp"
 #include "tracker/tracking/move.hpp"
@@ -66,7 +66,7 @@ struct Sample {
   std::span<const ObstacleTally> objects;
   std::span<const SurfaceTally> patches;  // per boundary patch, by Mesh::patches index
   MoveTally moves;
-  std::vector<output::PointSet> point_sets;  // with the fields, e.g. the particles (particle_dump.hpp)
+  std::vector<field::PointSet> point_sets;  // with the fields, e.g. the particles (particle_dump.hpp)
 };
 
 class TrackerFile {

@@ -8,12 +8,12 @@
 
 namespace cosim::tracker {
 
-VelocityField velocity_of(const output::FieldFrame& frame) {
+VelocityField velocity_of(const field::FieldFrame& frame) {
   const auto field = std::find_if(frame.fields.begin(), frame.fields.end(),
-                                  [](const output::CellField& f) { return f.name == "velocity"; });
+                                  [](const field::CellField& f) { return f.name == "velocity"; });
   if (field == frame.fields.end() || field->components != 3)
     throw std::runtime_error("the fields have no 3-component velocity");
-  const auto* grid = std::get_if<output::RectilinearGrid>(&frame.grid);
+  const auto* grid = std::get_if<field::RectilinearGrid>(&frame.grid);
   if (grid == nullptr) throw std::runtime_error("the fields are not on a rectilinear grid");
   std::array<std::vector<double>, 3> centres;
   std::size_t cells = 1;
@@ -43,10 +43,10 @@ VelocityField read_velocity(const std::filesystem::path& file, const std::string
     const std::string last = *std::max_element(steps.begin(), steps.end(), [](const std::string& a, const std::string& b) {
       return a.size() != b.size() ? a.size() < b.size() : a < b;
     });
-    output::RectilinearGrid grid;
+    field::RectilinearGrid grid;
     for (std::size_t a = 0; a < 3; ++a)
       grid.nodes[a] = output::read_array(h5.get(), base + "/grid/" + std::string(1, "xyz"[a]));
-    output::FieldFrame frame{grid, {}};
+    field::FieldFrame frame{grid, {}};
     if (!output::has_link(output::open_group(h5.get(), base + "/" + last).get(), "velocity"))
       throw std::runtime_error("no velocity in " + base + "/" + last);
     frame.fields.push_back({"velocity", 3, output::read_array(h5.get(), base + "/" + last + "/velocity")});

@@ -5,14 +5,14 @@
 #include <filesystem>
 #include <string>
 
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 #include "tracker/tracers/velocity_field.hpp"
 
 namespace cosim::tracker {
 
 // The frame's cell-centred `velocity` (3 components) at the centres of its rectilinear
 // grid. Throws std::runtime_error if the frame has no such field or its size is wrong.
-VelocityField velocity_of(const output::FieldFrame& frame);
+VelocityField velocity_of(const field::FieldFrame& frame);
 
 // The last velocity field `participant` wrote to the run file `file`
 // (/fields/<participant>/grid and the highest /fields/<participant>/<window>/velocity).

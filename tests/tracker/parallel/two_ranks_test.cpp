@@ -482,7 +482,7 @@ TEST(TwoRanks, TheCoupledFrameCarriesEveryRanksParticles) {
     lead.initialise(scene, "tracker", {}, {});
     for (std::uint64_t k = 0; k <= 2; ++k) {
       if (k > 0) lead.advance({k - 1, 1, 0.1 * double(k - 1), 0.1 * double(k)}, {});
-      const output::FieldFrame frame = lead.fields();
+      const field::FieldFrame frame = lead.fields();
       if (k == 1) {
         EXPECT_TRUE(frame.point_sets.empty());  // not a multiple of every: 2
         continue;

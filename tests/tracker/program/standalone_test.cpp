@@ -376,9 +376,9 @@ TEST(TrackerFields, TheSamplesPerCellInCellOrder) {
     moments[c] = {.count = 0.5 * double(c), .number_density = 1e20, .velocity = Vec3(double(c), 0, -1),
                   .temperature = 300, .pressure = 0.4};
   }
-  const std::vector<output::CellField> fields = cell_fields(moments, count);
+  const std::vector<field::CellField> fields = cell_fields(moments, count);
   std::vector<std::string> names;
-  for (const output::CellField& f : fields) {
+  for (const field::CellField& f : fields) {
     names.push_back(f.name);
     EXPECT_EQ(f.values.size(), 12u * static_cast<std::size_t>(f.components)) << f.name;
   }
@@ -413,8 +413,8 @@ TEST(OutputGrid, ABoxIsShownWithoutItsMesh) {
   spec.periodic = {false, true, false};
   const Mesh hexahedra = box_mesh(spec);
   const OutputGrid rectilinear = output_grid(spec);
-  const auto& nodes = std::get<output::RectilinearGrid>(rectilinear.grid);
-  EXPECT_EQ(output::grid_problem(rectilinear.grid), "");
+  const auto& nodes = std::get<field::RectilinearGrid>(rectilinear.grid);
+  EXPECT_EQ(field::grid_problem(rectilinear.grid), "");
   EXPECT_EQ(nodes.nodes[0], axis_nodes(spec.axes[0]));
   EXPECT_EQ(nodes.nodes[2], spec.axes[2].nodes);
   expect_geometry_of(rectilinear, hexahedra);
@@ -423,10 +423,10 @@ TEST(OutputGrid, ABoxIsShownWithoutItsMesh) {
   spec.tetrahedra = true;
   const Mesh tetrahedra = box_mesh(spec);
   const OutputGrid polyhedra = output_grid(spec);
-  const auto& cells = std::get<output::PolyhedralGrid>(polyhedra.grid);
-  EXPECT_EQ(output::grid_problem(polyhedra.grid), "");
+  const auto& cells = std::get<field::PolyhedralGrid>(polyhedra.grid);
+  EXPECT_EQ(field::grid_problem(polyhedra.grid), "");
   const OutputGrid from_mesh = output_grid(tetrahedra);
-  const auto& whole = std::get<output::PolyhedralGrid>(from_mesh.grid);
+  const auto& whole = std::get<field::PolyhedralGrid>(from_mesh.grid);
   EXPECT_EQ(cells.cells, 72u);
   EXPECT_EQ(cells.topology, whole.topology);
   EXPECT_EQ(cells.vertices, whole.vertices);

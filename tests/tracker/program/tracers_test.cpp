@@ -23,14 +23,14 @@ namespace {
 std::filesystem::path rotation_run_file(const std::filesystem::path& dir) {
   const std::filesystem::path path = dir / "fluid.h5";
   auto file = output::RunFile::create(path, {"", "fluid.yaml", "test", "0", 1}, {}, {"fluid"});
-  output::FieldFrame frame;
+  field::FieldFrame frame;
   const auto nodes = [](int n) {
     std::vector<double> x;
     for (int i = 0; i <= n; ++i) x.push_back(static_cast<double>(i) / n);
     return x;
   };
-  frame.grid = output::RectilinearGrid{{nodes(10), nodes(10), nodes(2)}};
-  output::CellField velocity{"velocity", 3, {}};
+  frame.grid = field::RectilinearGrid{{nodes(10), nodes(10), nodes(2)}};
+  field::CellField velocity{"velocity", 3, {}};
   const double omega = 2 * std::numbers::pi;
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 10; ++j)

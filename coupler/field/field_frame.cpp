@@ -1,10 +1,10 @@
-#include "coupler/output/field_frame.hpp"
+#include "coupler/field/field_frame.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <set>
 
-namespace cosim::output {
+namespace cosim::field {
 namespace {
 
 bool control(char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }
@@ -104,4 +104,4 @@ std::string point_sets_problem(const std::vector<PointSet>& sets) {
   return {};
 }
 
-}  // namespace cosim::output
+}  // namespace cosim::field

@@ -1,5 +1,6 @@
-// Grid fields of one participant at one instant, as a program hands them to the run file
-// (no HDF5 here: participants include this without linking the writer).
+// Grid fields of one participant at one instant, as a program hands them over: on the wire
+// (protocol/field_message.hpp) and into the run file (output/field_writer.hpp). No HDF5
+// or ZeroMQ here: each side includes this without linking the other.
 #pragma once
 
 #include <array>
@@ -9,7 +10,7 @@
 #include <variant>
 #include <vector>
 
-namespace cosim::output {
+namespace cosim::field {
 
 // A rectilinear grid by its node coordinates per axis, so stretched axes are exact.
 struct RectilinearGrid {
@@ -89,4 +90,4 @@ bool dataset_name(const std::string& name);
 // with a value that is not a whole number within +-2^53), or empty if they are.
 std::string point_sets_problem(const std::vector<PointSet>& sets);
 
-}  // namespace cosim::output
+}  // namespace cosim::field
