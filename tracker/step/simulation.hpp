@@ -39,6 +39,7 @@ class Simulation {
   // (seed_particles.hpp). A setup read on several ranks may hold this rank's part of a box.
   explicit Simulation(GasSetup setup, Ranks ranks = {});
 
+  // Its mesh is null on several ranks (moved into this rank's part): use tracked().
   const GasSetup& setup() const { return setup_; }
   // This rank's cells (the swarm's cell numbers): the whole mesh, or its part on several
   // ranks (Mesh::global_cell gives a cell's number in the whole).

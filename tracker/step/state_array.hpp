@@ -4,12 +4,15 @@
 // 32-bit halves.
 #pragma once
 
+#include <cmath>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "tracker/mesh/mesh.hpp"
@@ -41,9 +44,17 @@ class StateReader {
   void get(T&... x) {
     (get_one(x), ...);
   }
+  // std::runtime_error unless the value is one a T holds (a whole number in range for an
+  // integral T): a damaged checkpoint is refused, not cast.
   template <StateNumber T>
   T get() {
-    return static_cast<T>(next());
+    const double x = next();
+    if constexpr (std::is_integral_v<T>) {
+      if (!(x == std::floor(x) && x >= static_cast<double>(std::numeric_limits<T>::lowest()) &&
+            x < std::ldexp(1.0, std::numeric_limits<T>::digits)))
+        throw std::runtime_error("tracker state: " + std::to_string(x) + " where a whole number was expected");
+    }
+    return static_cast<T>(x);
   }
   std::uint64_t get_bits() {
     const auto high = get<std::uint64_t>();

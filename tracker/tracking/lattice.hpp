@@ -3,7 +3,8 @@
 // x_a = const, and fit_geometry gives it an inward normal of exactly +e_a or -e_a (two
 // components 0, the third +-1: the area vector of a face whose vertices share x_a has zero
 // components elsewhere, and c / sqrt(c^2) is +-1). Then n.v is +-v_a and n.(x - point)
-// is +-(x_a - point_a) to the bit (a zero's sign aside), so the face a path leaves through
+// is +-(x_a - point_a) to the bit (a zero's sign aside; for finite x and v: the general
+// scan's 0 * inf is NaN), so the face a path leaves through
 // is found from three coordinates instead of six dot products, with the same times, face
 // and `behind` as the general scan (detail::first_exit).
 

@@ -12,6 +12,7 @@
 #include "tracker/constants.hpp"
 #include "tracker/dsmc/free_molecular.hpp"
 #include "tracker/program/adapter.hpp"
+#include "tracker/step/state_array.hpp"
 
 namespace cosim::tracker {
 namespace {
@@ -124,6 +125,23 @@ TEST(TrackerAdapter, StateOfAnotherSceneIsRefused) {
   state.push_back(0.0);
   state[0] = 99;  // layout version
   EXPECT_THROW(solver.restore(state), std::runtime_error);
+}
+
+// Guards against: a damaged checkpoint's count or cell (negative, fractional, NaN, out of
+// range) cast to an integer instead of refused.
+TEST(TrackerState, ANumberThatNoIntegerHoldsIsRefused) {
+  const auto read = [](double x) {
+    const std::vector<double> values{x};
+    StateReader reader(values);
+    return reader.get<std::int32_t>();
+  };
+  EXPECT_EQ(read(-7.0), -7);
+  EXPECT_EQ(read(2147483647.0), 2147483647);
+  for (const double bad : {0.5, 2147483648.0, -2147483649.0, std::nan(""), 1e300})
+    EXPECT_THROW(read(bad), std::runtime_error) << bad;
+  const std::vector<double> negative{-1.0};
+  StateReader reader(negative);
+  EXPECT_THROW(reader.get<std::size_t>(), std::runtime_error);
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ struct FaceEvent {
 // Faces the particle cannot reach within `horizon` (the rest of its move) are not events.
 FaceEvent first_exit(const Mesh& mesh, const Particle& particle, Index skip, bool clamp_behind, double horizon);
 // The same for an axis-aligned hexahedral cell from its planes' coordinates (lattice.hpp):
-// equal times, face and `behind` (a zero's sign aside).
+// equal times, face and `behind` for finite x and v (a zero's sign aside).
 FaceEvent lattice_exit(const Mesh& mesh, LatticeFaces cell, const Particle& particle, Index skip, bool clamp_behind,
                        double horizon);
 // The one of the two the particle's cell takes.
