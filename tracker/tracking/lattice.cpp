@@ -1,7 +1,5 @@
 #include "tracker/tracking/lattice.hpp"
 
-#include <algorithm>
-
 namespace cosim::tracker {
 
 namespace {
