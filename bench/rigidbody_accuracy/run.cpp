@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include <spdlog/spdlog.h>
+
 #include "bench/rigidbody_accuracy/energy.hpp"
 
 namespace cosim::bench {
@@ -58,6 +60,7 @@ Run run(const RunSpec& spec, const std::vector<Eigen::Vector3d>& reference) {
     const auto t0 = std::chrono::steady_clock::now();
     const world::StepReport report = world.advance(settings.dt);
     stepping += std::chrono::steady_clock::now() - t0;
+    for (const std::string& warning : report.warnings) spdlog::warn("{}", warning);
     converged += report.converged ? 1 : 0;
     iterations += report.solver_iterations;
 

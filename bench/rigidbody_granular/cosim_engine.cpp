@@ -2,6 +2,9 @@
 // half-spaces.
 #include <chrono>
 #include <memory>
+#include <string>
+
+#include <spdlog/spdlog.h>
 
 #include "bench/rigidbody_granular/engines.hpp"
 #include "rigidbody/world/world.hpp"
@@ -41,7 +44,11 @@ RunResult run_cosim(const PourScene& scene, world::SolverKind solver) {
 
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = cpu_time();
-  for (int step = 0; step < scene.steps; ++step) r.pairs_tested += static_cast<double>(w->advance(scene.dt).pairs_tested);
+  for (int step = 0; step < scene.steps; ++step) {
+    const world::StepReport report = w->advance(scene.dt);
+    r.pairs_tested += static_cast<double>(report.pairs_tested);
+    for (const std::string& warning : report.warnings) spdlog::warn("{}", warning);
+  }
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.cpu_seconds = cpu_time() - cpu_start;
   r.heap_bytes = heap_in_use() - heap_before;

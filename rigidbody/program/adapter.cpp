@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <spdlog/spdlog.h>
+
 #include "coupler/participant/body_rows.hpp"
 #include "coupler/protocol/message.hpp"
 #include "rigidbody/program/scene_world.hpp"
@@ -64,6 +66,7 @@ participant::Outputs RigidSolver::advance(const participant::Window& w, const pa
     external = virtual_mass_.blend(world_->inertias(), world_->settings().body_forces, external);
   world_->set_time(w.t0);
   const world::StepReport report = world_->advance(w.t1 - w.t0, external);
+  for (const std::string& warning : report.warnings) spdlog::warn("{}", warning);
   substeps_ += report.substeps;
   stage_seconds_ += report.seconds;
   return {poses(), {}, static_cast<double>(report.substeps)};

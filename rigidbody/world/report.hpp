@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
+#include <vector>
 
 #include "rigidbody/world/stages.hpp"
 
@@ -18,6 +20,7 @@ struct StepReport {
   double residual = 0.0;               // worst substep's worst contact group
   bool converged = true;               // every substep and group met the tolerance
   std::size_t tunnelling_bodies = 0;   // bodies at risk at the window's start (tunnelling.hpp)
+  std::vector<std::string> warnings;   // for the caller to pass on: the world logs nothing
   double wall_seconds = 0.0;
   StageSeconds seconds;                // per stage, summed over the substeps
 };

@@ -43,7 +43,7 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
   // broad or narrow phase is ever called.
   const bool contacts = settings_.contact && size() > 1;
   const bool relax = contacts && settings_.solver == SolverKind::soft;
-  if (contacts) report.tunnelling_bodies = check_tunnelling(window, substeps.length());
+  if (contacts) check_tunnelling(window, substeps.length(), report);
   StageClock clock(report.seconds);
   for (long k = 0; k < substeps.count(); ++k) {
     ++report.substeps;

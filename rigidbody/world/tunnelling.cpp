@@ -4,7 +4,6 @@
 #include <limits>
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "rigidbody/geometry/convex_hull.hpp"
 
@@ -74,14 +73,14 @@ void TunnellingWarnings::add(std::string name, const geometry::Shape& shape) {
   thinnest_.push_back(thinnest_extent(shape));
 }
 
-void TunnellingWarnings::warn(std::span<const TunnellingRisk> risks, double dt) {
-  if (risks.empty()) return;
+std::optional<std::string> TunnellingWarnings::warning(std::span<const TunnellingRisk> risks, double dt) {
+  if (risks.empty()) return std::nullopt;
   double worst = 0.0;
   for (const TunnellingRisk& r : risks) worst = std::max(worst, excess(r));
-  if (warned_count_ > 0 && risks.size() < 2 * warned_count_ && worst < 2 * warned_excess_) return;
-  spdlog::warn("{}", summarise(risks, names_, dt));
+  if (warned_count_ > 0 && risks.size() < 2 * warned_count_ && worst < 2 * warned_excess_) return std::nullopt;
   warned_count_ = risks.size();
   warned_excess_ = worst;
+  return summarise(risks, names_, dt);
 }
 
 }  // namespace cosim::world

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -48,10 +49,10 @@ std::string describe(const TunnellingRisk& risk, const std::string& name, double
 // may move farther per substep than ...; the worst: body 17 (grain) may move ...").
 std::string summarise(std::span<const TunnellingRisk> risks, std::span<const std::string> names, double dt);
 
-// Logs summarise() as one spdlog warning, not one per body: the first time any body is at
-// risk, and again only when the count or the worst excess has doubled since the last
-// warning (a granular bed gathering speed gives a handful of lines, not one per grain;
-// the count of every window is in StepReport::tunnelling_bodies).
+// Decides when summarise() is worth saying: one warning, not one per body, the first time
+// any body is at risk, and again only when the count or the worst excess has doubled since
+// the last warning (a granular bed gathering speed gives a handful of lines, not one per
+// grain; the count of every window is in StepReport::tunnelling_bodies).
 class TunnellingWarnings {
  public:
   void add(std::string name, const geometry::Shape& shape);  // one per body, in body order
@@ -60,7 +61,8 @@ class TunnellingWarnings {
     thinnest_.reserve(bodies);
   }
   std::span<const double> thinnest() const { return thinnest_; }
-  void warn(std::span<const TunnellingRisk> risks, double dt);
+  // summarise() when it is to be said now; nothing otherwise.
+  std::optional<std::string> warning(std::span<const TunnellingRisk> risks, double dt);
 
  private:
   std::vector<std::string> names_;

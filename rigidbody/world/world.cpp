@@ -79,11 +79,11 @@ double World::margin() const {
   return std::max(0.1 * smallest_radius_, film);
 }
 
-std::size_t World::check_tunnelling(double window, double substep) {
+void World::check_tunnelling(double window, double substep, StepReport& report) {
   const double gain = settings_.body_forces.gravity ? settings_.body_forces.g.norm() * window : 0.0;
   const auto risks = tunnelling_risks(tunnelling_.thinnest(), states_, inertias_, substep, margin(), gain);
-  tunnelling_.warn(risks, substep);
-  return risks.size();
+  report.tunnelling_bodies = risks.size();
+  if (auto warning = tunnelling_.warning(risks, substep)) report.warnings.push_back(std::move(*warning));
 }
 
 }  // namespace cosim::world

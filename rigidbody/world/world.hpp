@@ -71,8 +71,9 @@ class World {
   solver::SolveReport solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory);
   // The soft step's second half, after the positions moved.
   void relax_contacts(StepReport& report);
-  // Counts and logs the bodies that may tunnel in this window's substeps (tunnelling.hpp).
-  std::size_t check_tunnelling(double window, double substep);
+  // Counts the bodies that may tunnel in this window's substeps and adds the warning, when
+  // one is due, to the report (tunnelling.hpp).
+  void check_tunnelling(double window, double substep, StepReport& report);
   double margin() const;
 
   Settings settings_;

@@ -4,11 +4,9 @@
 
 #include <cmath>
 #include <limits>
-#include <memory>
-#include <sstream>
-
-#include <spdlog/sinks/ostream_sink.h>
-#include <spdlog/spdlog.h>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "rigidbody/geometry/convex_hull.hpp"
 #include "rigidbody/world/tunnelling.hpp"
@@ -66,32 +64,8 @@ TEST(Tunnelling, FlagsBodiesFasterThanTheMarginOrHalfTheirThickness) {
   EXPECT_NE(message.find("lower the rigidbody dt by a factor 2, to 0.0005 s"), std::string::npos) << message;
 }
 
-// The warnings spdlog prints while it lives, one per line.
-class CapturedWarnings {
- public:
-  CapturedWarnings() : previous_(spdlog::default_logger()) {
-    auto logger = std::make_shared<spdlog::logger>("captured", std::make_shared<spdlog::sinks::ostream_sink_st>(out_));
-    logger->set_pattern("%v");
-    spdlog::set_default_logger(logger);
-  }
-  ~CapturedWarnings() { spdlog::set_default_logger(previous_); }
-  CapturedWarnings(const CapturedWarnings&) = delete;
-  CapturedWarnings& operator=(const CapturedWarnings&) = delete;
-  std::vector<std::string> lines() const {
-    std::vector<std::string> out;
-    std::istringstream in(out_.str());
-    for (std::string line; std::getline(in, line);) out.push_back(line);
-    return out;
-  }
-
- private:
-  std::ostringstream out_;
-  std::shared_ptr<spdlog::logger> previous_;
-};
-
 // Guards against: a granular bed flooding the log with one tunnelling warning per body.
 TEST(Tunnelling, OneWarningForManyBodiesAndAnotherOnlyWhenTheCountOrTheExcessDoubles) {
-  const CapturedWarnings captured;
   TunnellingWarnings warnings;
   for (int i = 0; i < 40; ++i) warnings.add("grain" + std::to_string(i), geometry::Sphere(0.1));
   const double dt = 1e-3, margin = 0.01;
@@ -100,28 +74,26 @@ TEST(Tunnelling, OneWarningForManyBodiesAndAnotherOnlyWhenTheCountOrTheExcessDou
     for (std::uint32_t i = 0; i < count; ++i) out.push_back({i, i == 3 ? worst : 0.02, 0.2, margin});
     return out;
   };
-  warnings.warn(risks(5, 0.05), dt);
-  ASSERT_EQ(captured.lines().size(), 1u);
-  EXPECT_EQ(captured.lines()[0],
+  EXPECT_EQ(warnings.warning(risks(5, 0.05), dt),
             "5 bodies may move farther per substep than the contact margin or half their thinnest extent; the worst: "
             "body 3 (grain3) may move 0.05 m per substep (dt = 0.001 s), more than the contact margin 0.01 m: it can "
             "pass through thin bodies or planes; lower the rigidbody dt by a factor 5, to 0.0002 s or raise "
             "participants.rigidbody.options.contact_margin above 0.05 m");
-  warnings.warn(risks(5, 0.05), dt);
-  warnings.warn(risks(9, 0.09), dt);
-  EXPECT_EQ(captured.lines().size(), 1u);
-  warnings.warn(risks(10, 0.05), dt);  // twice the count
-  ASSERT_EQ(captured.lines().size(), 2u);
-  EXPECT_TRUE(captured.lines()[1].starts_with("10 bodies may move")) << captured.lines()[1];
-  warnings.warn(risks(10, 0.1), dt);  // twice the excess
-  ASSERT_EQ(captured.lines().size(), 3u);
-  EXPECT_NE(captured.lines()[2].find("lower the rigidbody dt by a factor 10, to 0.0001 s"), std::string::npos)
-      << captured.lines()[2];
+  EXPECT_EQ(warnings.warning(risks(5, 0.05), dt), std::nullopt);
+  EXPECT_EQ(warnings.warning(risks(9, 0.09), dt), std::nullopt);
+  const std::optional<std::string> twice_the_count = warnings.warning(risks(10, 0.05), dt);
+  ASSERT_TRUE(twice_the_count);
+  EXPECT_TRUE(twice_the_count->starts_with("10 bodies may move")) << *twice_the_count;
+  const std::optional<std::string> twice_the_excess = warnings.warning(risks(10, 0.1), dt);
+  ASSERT_TRUE(twice_the_excess);
+  EXPECT_NE(twice_the_excess->find("lower the rigidbody dt by a factor 10, to 0.0001 s"), std::string::npos)
+      << *twice_the_excess;
+  EXPECT_EQ(warnings.warning({}, dt), std::nullopt);
 }
 
-// Guards against: the summary hiding how many bodies are at risk in each window.
-TEST(Tunnelling, TheStepReportCountsEveryWindowWhileTheLogSaysItOnce) {
-  const CapturedWarnings captured;
+// Guards against: the summary hiding how many bodies are at risk in each window, or the
+// world logging by itself.
+TEST(Tunnelling, TheStepReportCountsEveryWindowAndCarriesTheWarningOnce) {
   World world({.body_forces = {.gravity = false}});
   add_ground(world);
   constexpr int grains = 30;
@@ -129,9 +101,14 @@ TEST(Tunnelling, TheStepReportCountsEveryWindowWhileTheLogSaysItOnce) {
     const auto b = add_sphere(world, 0.01, {0.05 * i, 0, 1.0});
     world.states()[b].velocity = {0, 0, -3};  // 3 mm per substep, above the 1 mm margin
   }
-  for (int window = 0; window < 20; ++window) EXPECT_EQ(world.advance(0.01).tunnelling_bodies, grains);
-  ASSERT_EQ(captured.lines().size(), 1u);
-  EXPECT_TRUE(captured.lines()[0].starts_with("30 bodies may move")) << captured.lines()[0];
+  std::vector<std::string> warnings;
+  for (int window = 0; window < 20; ++window) {
+    const StepReport report = world.advance(0.01);
+    EXPECT_EQ(report.tunnelling_bodies, grains);
+    warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
+  }
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_TRUE(warnings[0].starts_with("30 bodies may move")) << warnings[0];
 }
 
 // configs/rigid_thin_box.yaml: the plate moves 0.05 m per substep, ten times its thickness
