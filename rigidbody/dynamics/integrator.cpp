@@ -32,8 +32,11 @@ Substeps::Substeps(std::span<BodyState> states, std::span<const BodyInertia> ine
   count_ = t1 == t0 ? 0 : n;
   length_ = (t1 - t0) / static_cast<double>(n);
   acceleration_.resize(states.size());
-  for (std::size_t i = 0; i < states.size(); ++i)
+  start_.resize(states.size());
+  for (std::size_t i = 0; i < states.size(); ++i) {
     if (!inertia[i].is_fixed()) acceleration_[i] = settings.body_forces.acceleration(inertia[i]);
+    if (inertia[i].is_fixed() || !inertia[i].rotates) held_.push_back(i);
+  }
 }
 
 void Substeps::integrate_velocities(long k) {
@@ -42,7 +45,11 @@ void Substeps::integrate_velocities(long k) {
   const double t = t0_ + static_cast<double>(k) * h;
   // Semi-implicit Euler takes the wrench at the start of the substep, leapfrog at its midpoint.
   const double s = leapfrog ? t + 0.5 * h : t;
-  start_.assign(states_.begin(), states_.end());
+  // integrate_positions() restores what the solvers may have changed of the held bodies.
+  if (leapfrog)
+    std::copy(states_.begin(), states_.end(), start_.begin());
+  else
+    for (const std::size_t i : held_) start_[i] = states_[i];
   for (std::size_t i = 0; i < states_.size(); ++i) {
     if (inertia_[i].is_fixed()) continue;
     const Wrench w = external_.empty() ? Wrench{} : external_[i].at(t0_, t1_, s);

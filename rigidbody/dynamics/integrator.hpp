@@ -51,7 +51,9 @@ class Substeps {
   long count_;
   double length_;
   std::vector<Eigen::Vector3d> acceleration_;  // body forces' per body
-  std::vector<BodyState> start_;               // the states before the velocity half
+  std::vector<BodyState> start_;               // the states before the velocity half: of every
+                                               // body for leapfrog, else of the held ones
+  std::vector<std::size_t> held_;              // fixed or translation-only bodies
 };
 
 // Moves `states` from t0 to t1 with nothing between the halves: free flight under the
