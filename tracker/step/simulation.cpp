@@ -21,20 +21,19 @@ namespace {
 
 template <typename Tally>
 std::vector<Tally> summed(std::vector<Tally> tallies, const Ranks& ranks) {
-  using detail::counters, detail::values;
   std::vector<long long> counts;
   std::vector<double> numbers;
-  for (Tally& t : tallies) {
-    for (long long* n : counters(t)) counts.push_back(*n);
-    for (double* x : values(t)) numbers.push_back(*x);
+  for (const Tally& t : tallies) {
+    detail::each_count(t, [&](long long n) { counts.push_back(n); });
+    detail::each_value(t, [&](double x) { numbers.push_back(x); });
   }
   ranks.sum(counts);
   ranks.sum(numbers);
   const long long* n = counts.data();
   const double* x = numbers.data();
   for (Tally& t : tallies) {
-    for (long long* count : counters(t)) *count = *n++;
-    for (double* value : values(t)) *value = *x++;
+    detail::each_count(t, [&](long long& count) { count = *n++; });
+    detail::each_value(t, [&](double& value) { value = *x++; });
   }
   return tallies;
 }

@@ -15,18 +15,18 @@ namespace {
 constexpr double kStateVersion = 7;
 
 template <typename Tally>
-void put_tallies(StateWriter& out, std::vector<Tally> tallies) {
-  for (Tally& t : tallies) {
-    for (long long* n : detail::counters(t)) out.put(*n);
-    for (double* x : detail::values(t)) out.put(*x);
+void put_tallies(StateWriter& out, const std::vector<Tally>& tallies) {
+  for (const Tally& t : tallies) {
+    detail::each_count(t, [&](long long n) { out.put(n); });
+    detail::each_value(t, [&](double x) { out.put(x); });
   }
 }
 
 template <typename Tally>
 void get_tallies(StateReader& in, std::vector<Tally>& tallies) {
   for (Tally& t : tallies) {
-    for (long long* n : detail::counters(t)) in.get(*n);
-    for (double* x : detail::values(t)) in.get(*x);
+    detail::each_count(t, [&](long long& n) { in.get(n); });
+    detail::each_value(t, [&](double& x) { in.get(x); });
   }
 }
 

@@ -1,26 +1,35 @@
 // A tally's numbers in one fixed order, for the state arrays (simulation_state.cpp) and the
-// sums over the ranks (simulation.cpp).
+// sums over the ranks (simulation.cpp): each_count(t, f) calls f on every counter, then
+// each_value(t, f) on every real number; `Tally` may be const.
 #pragma once
 
-#include <vector>
+#include <type_traits>
 
 #include "tracker/tracking/obstacles.hpp"
 
 namespace cosim::tracker::detail {
 
-inline std::vector<long long*> counters(SurfaceTally& t) { return {&t.hits, &t.absorbed}; }
-inline std::vector<double*> values(SurfaceTally& t) {
-  return {&t.impulse[0], &t.impulse[1], &t.impulse[2], &t.energy};
+template <typename Tally>
+constexpr bool kIsObstacleTally = std::is_same_v<std::remove_const_t<Tally>, ObstacleTally>;
+
+template <typename Tally, typename F>
+void each_count(Tally& t, F&& f) {
+  f(t.hits);
+  f(t.absorbed);
+  if constexpr (kIsObstacleTally<Tally>) {
+    f(t.entered);
+    f(t.left);
+    f(t.released);
+    f(t.overrun);
+  }
 }
-inline std::vector<long long*> counters(ObstacleTally& t) {
-  std::vector<long long*> out = counters(static_cast<SurfaceTally&>(t));
-  out.insert(out.end(), {&t.entered, &t.left, &t.released, &t.overrun});
-  return out;
-}
-inline std::vector<double*> values(ObstacleTally& t) {
-  std::vector<double*> out = values(static_cast<SurfaceTally&>(t));
-  out.insert(out.end(), {&t.angular_impulse[0], &t.angular_impulse[1], &t.angular_impulse[2]});
-  return out;
+
+template <typename Tally, typename F>
+void each_value(Tally& t, F&& f) {
+  for (int i = 0; i < 3; ++i) f(t.impulse[i]);
+  f(t.energy);
+  if constexpr (kIsObstacleTally<Tally>)
+    for (int i = 0; i < 3; ++i) f(t.angular_impulse[i]);
 }
 
 }  // namespace cosim::tracker::detail
