@@ -100,7 +100,8 @@ Row run_grid(const tracker::Mesh& mesh, const std::vector<tracker::Obstacle>& wa
   const auto t1 = clock::now();
   for (int step = 0; step < o.steps; ++step) {
     swarm.sort_by_cell(mesh.cell_count());
-    swarm.move_all(domain, obstacles, dt, random, row.tally, tallies);
+    swarm.move_all({.domain = domain, .obstacles = obstacles, .random = random, .moves = row.tally, .tallies = tallies},
+                   dt);
   }
   row.run_s = std::chrono::duration<double>(clock::now() - t1).count();
   return row;

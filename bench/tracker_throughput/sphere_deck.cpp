@@ -68,6 +68,8 @@ SphereResult run_sphere(const SphereBox& box, const SphereDeck& deck) {
   SphereResult result;
   result.seeded = static_cast<long long>(swarm.size());
   std::vector<ObstacleTally> tallies(1);
+  const MoveContext moving{
+      .domain = *box.domain, .obstacles = box.sphere, .random = random, .moves = result.tally, .tallies = tallies};
   long long lost_in_warm_up = 0;
   std::clock_t cpu_start = 0;
   auto start = std::chrono::steady_clock::now();
@@ -77,14 +79,14 @@ SphereResult run_sphere(const SphereBox& box, const SphereDeck& deck) {
       result.timed_from = static_cast<long long>(swarm.size());
       result.tally = {};
       result.collisions = 0;
-      tallies.assign(1, {});
+      tallies[0] = {};
       cpu_start = std::clock();
       start = std::chrono::steady_clock::now();
     }
     swarm.sort_by_cell(box.mesh.cell_count());
     result.collisions += collider.collide(swarm, SphereDeck::kDt);
-    swarm.move_all(*box.domain, box.sphere, SphereDeck::kDt, random, result.tally, tallies);
-    box.inflow->inject(*box.domain, box.sphere, SphereDeck::kDt, random, swarm, result.tally, tallies);
+    swarm.move_all(moving, SphereDeck::kDt);
+    box.inflow->inject(moving, SphereDeck::kDt, swarm);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;

@@ -105,6 +105,11 @@ class Simulation {
   void move(double dt);
   void carry_tracers(double dt);  // tracer mode's move
   void inject(double dt);
+  // The gas's moves: into this rank's tallies, handing over to the other ranks.
+  MoveContext move_context() {
+    return {.domain = *setup_.domain, .obstacles = setup_.obstacles, .random = random_, .moves = moves_,
+            .tallies = tallies_, .patches = patch_tallies_, .away = &away_};
+  }
   void hand_over();  // over several ranks, without tracers
   // Collective, every setup_.balance.every steps on several ranks: a new partition
   // weighted by the particles if the most a rank holds exceeds the mean by the threshold;

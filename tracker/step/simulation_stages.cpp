@@ -43,18 +43,21 @@ void Simulation::move(double dt) {
   if (setup_.tracers)
     carry_tracers(dt);
   else
-    swarm_.move_all(*setup_.domain, setup_.obstacles, dt, random_, moves_, tallies_, patch_tallies_, &away_);
+    swarm_.move_all(move_context(), dt);
 }
 
 void Simulation::carry_tracers(double dt) {
   if (!velocity_)
     throw std::runtime_error("tracer mode without a velocity field: give tracers.velocity.file, or run coupled with "
                              "the fluid");
+  // Tracers move through the whole mesh on every rank (no handover); their wall hits are not
+  // tallied per patch.
+  const MoveContext step{.domain = *setup_.domain, .obstacles = setup_.obstacles, .random = random_, .moves = moves_,
+                         .tallies = tallies_};
   std::vector<bool> gone(swarm_.size(), false);
   for (std::size_t i = 0; i < swarm_.size(); ++i) {
     Particle p = swarm_.particle(i);
-    gone[i] = !advance_tracer(*setup_.domain, setup_.obstacles, *velocity_, setup_.tracers->model, p, swarm_.states(i),
-                              dt, random_, moves_, tallies_);
+    gone[i] = !advance_tracer(step, *velocity_, setup_.tracers->model, p, swarm_.states(i), dt);
     swarm_.set(i, p);
   }
   swarm_.remove_if([&](std::size_t i) { return gone[i]; });
@@ -62,8 +65,7 @@ void Simulation::carry_tracers(double dt) {
 
 void Simulation::inject(double dt) {
   for (const Inflow& inflow : setup_.inflows)
-    injected_ += static_cast<std::size_t>(inflow.inject(*setup_.domain, setup_.obstacles, dt, random_, swarm_, moves_,
-                                                        tallies_, patch_tallies_, &away_));
+    injected_ += static_cast<std::size_t>(inflow.inject(move_context(), dt, swarm_));
 }
 
 // The moves that entered other ranks' cells go on there, in rounds until all are done.

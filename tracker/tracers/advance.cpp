@@ -31,21 +31,19 @@ Step inertial(const VelocityField& u, const Vec3& x, const Vec3& v, double h, do
 
 }  // namespace
 
-bool advance_tracer(const Domain& domain, const Obstacles& obstacles, const VelocityField& u, const TracerModel& model,
-                    Particle& tracer, std::span<csg::State> states, double dt, Random& random, MoveTally& moves,
-                    std::span<ObstacleTally> tallies) {
+bool advance_tracer(const MoveContext& step, const VelocityField& u, const TracerModel& model, Particle& tracer,
+                    std::span<csg::State> states, double dt) {
   const int substeps = std::max(1, model.substeps);
   const double h = dt / substeps;
   for (int s = 0; s < substeps; ++s) {
-    const Step step = model.response_time > 0.0 ? inertial(u, tracer.x, tracer.v, h, model.response_time)
-                                                 : massless(u, tracer.x, h);
-    const Vec3 segment = step.displacement / h;
+    const Step planned = model.response_time > 0.0 ? inertial(u, tracer.x, tracer.v, h, model.response_time)
+                                                    : massless(u, tracer.x, h);
+    const Vec3 segment = planned.displacement / h;
     tracer.v = segment;
-    const MoveResult result = move(domain, obstacles, tracer, states, h, random, tallies);
-    moves.add(result);
+    const MoveResult result = move(step, tracer, states, h);
     if (result.removed) return false;
     // Not reflected: the segment ran as planned and the tracer has the step's velocity.
-    if (tracer.v == segment) tracer.v = step.velocity;
+    if (tracer.v == segment) tracer.v = planned.velocity;
   }
   return true;
 }

@@ -21,10 +21,10 @@ struct TracerModel {
 // segment's midpoint estimate, v' = u + (v - u) e^(-h / tau) and the exact displacement for
 // that u, h u + tau (v - u) (1 - e^(-h / tau)). A wall met on the way reflects the segment
 // (its condition); the tracer then keeps the reflected velocity. On return particle.v is
-// the tracer's velocity (the fluid's, for a massless one). Adds every segment to `moves`;
-// false if the tracer left through an open patch or wall.
-bool advance_tracer(const Domain& domain, const Obstacles& obstacles, const VelocityField& u, const TracerModel& model,
-                    Particle& tracer, std::span<csg::State> states, double dt, Random& random, MoveTally& moves,
-                    std::span<ObstacleTally> tallies);
+// the tracer's velocity (the fluid's, for a massless one). Every segment is a move() in
+// `step` (a tracer is never handed over: step.away is not used); false if the tracer left
+// through an open patch or wall.
+bool advance_tracer(const MoveContext& step, const VelocityField& u, const TracerModel& model, Particle& tracer,
+                    std::span<csg::State> states, double dt);
 
 }  // namespace cosim::tracker

@@ -92,10 +92,10 @@ Vec3 Inflow::velocity(const Entry& entry, Random& random) const {
   return normal * n + (stream_.velocity.dot(t1) + gauss(random)) * t1 + (stream_.velocity.dot(t2) + gauss(random)) * t2;
 }
 
-long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, Swarm& swarm,
-                    MoveTally& moves, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches,
-                    Handover* away) const {
-  if (domain.mesh.ghosts > 0 && away == nullptr)
+long Inflow::inject(const MoveContext& step, double dt, Swarm& swarm) const {
+  const Obstacles& obstacles = step.obstacles;
+  Random& random = step.random;
+  if (step.domain.mesh.ghosts > 0 && step.away == nullptr)
     throw std::invalid_argument("Inflow::inject: a part of a mesh needs a handover for the moves that leave it");
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<csg::State> states(static_cast<std::size_t>(obstacles.count()));
@@ -107,10 +107,10 @@ long Inflow::inject(const Domain& domain, const Obstacles& obstacles, double dt,
       Particle p{point_on(entry, random), velocity(entry, random), cell};
       obstacles.classify(cell, p.x, states);
       if (obstacles.inside_wall(cell, states)) continue;  // the face is covered by a wall there
-      const MoveResult result = move(domain, obstacles, p, states, uniform(random) * dt, random, tallies, patches);
-      moves.add(result);
+      const MoveResult result = move(step, p, states, uniform(random) * dt);
       ++entered;
-      if (away == nullptr ? !result.removed : away->keeps(result, p, states, domain.mesh)) swarm.add(p, states);
+      if (step.away == nullptr ? !result.removed : step.away->keeps(result, p, states, step.domain.mesh))
+        swarm.add(p, states);
     }
   }
   return entered;

@@ -38,12 +38,10 @@ class Inflow {
   // the face), each moved by the event-driven tracking for a uniform random part of dt.
   // The count per face is the expected one rounded up or down at random (unbiased).
   // Returns how many entered, those that left again within dt included (they count in
-  // moves.removed), so particles = seeded + entered - removed. Wall hits on the way are
-  // added to `tallies` and `patches` as in move(). On a part of a mesh, a particle whose
-  // move enters a ghost goes to `away` with the rest of its move (Swarm::move_all).
-  long inject(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, Swarm& swarm,
-              MoveTally& moves, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches = {},
-              Handover* away = nullptr) const;
+  // step.moves.removed), so particles = seeded + entered - removed. The moves add to the
+  // step's tallies as move() does. On a part of a mesh, a particle whose move enters a
+  // ghost goes to step.away with the rest of its move (Swarm::move_all).
+  long inject(const MoveContext& step, double dt, Swarm& swarm) const;
 
  private:
   // A face's constants, fixed at construction.

@@ -44,10 +44,12 @@ void check_carried(const Domain& domain, const Obstacles& obstacles, std::size_t
 
 }  // namespace detail
 
-MoveResult move(const Domain& domain, const Obstacles& obstacles, Particle& particle, std::span<csg::State> states,
-                double dt, Random& random, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) {
-  detail::check_carried(domain, obstacles, states.size(), tallies.size(), patches.size());
-  return detail::move_event_driven(domain, particle, dt, random, {&obstacles, states, tallies, patches});
+MoveResult move(const MoveContext& step, Particle& particle, std::span<csg::State> states, double dt) {
+  detail::check_carried(step.domain, step.obstacles, states.size(), step.tallies.size(), step.patches.size());
+  const MoveResult result =
+      detail::move_event_driven(step.domain, particle, dt, step.random, {&step.obstacles, states, step.tallies, step.patches});
+  step.moves.add(result);
+  return result;
 }
 
 void MoveTally::add(const MoveResult& result) {

@@ -6,6 +6,7 @@
 #include "tracker/tracking/obstacles.hpp"
 
 #include <array>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -22,15 +23,6 @@ std::string_view name(Algorithm algorithm);
 // Moves the particle ballistically for dt through the mesh, crossing faces (periodic
 // shifts applied) and handling walls; a removed particle stays where it left.
 MoveResult move(Algorithm algorithm, const Domain& domain, Particle& particle, double dt, Random& random);
-
-// The event-driven move among CSG obstacles: `states` holds the particle's logical state
-// per object (kept up to date), `tallies` one entry per object (added to). The face and
-// object events of the cell are merged in time order; a wall's boundary event reflects or
-// absorbs the particle (`removed`), a zone's is crossed and counted. `patches`, if not
-// empty, holds one tally per boundary condition of the domain (Boundaries::patches), added
-// to at every hit of a boundary face of that patch.
-MoveResult move(const Domain& domain, const Obstacles& obstacles, Particle& particle, std::span<csg::State> states,
-                double dt, Random& random, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches = {});
 
 // Sums of MoveResults over many moves, for studies and tests.
 struct MoveTally {
@@ -57,5 +49,31 @@ inline constexpr std::array<MoveCounter, 11> kMoveCounters{{{"moves", &MoveTally
                                                              {"lost", &MoveTally::lost},
                                                              {"object_events", &MoveTally::object_events},
                                                              {"primitive_tests", &MoveTally::primitive_tests}}};
+
+class Handover;
+
+// What the moves of a step share: where particles move (the mesh with its walls, the CSG
+// obstacles), the step's random stream, and what the moves add to: the move tally, one
+// tally per obstacle, one per boundary condition of the domain (Boundaries::patches; none:
+// not counted) and, on a part of a mesh (Mesh::ghosts), the handover that takes the moves
+// that leave it for a ghost (handover.hpp).
+struct MoveContext {
+  const Domain& domain;
+  const Obstacles& obstacles;
+  Random& random;
+  MoveTally& moves;
+  std::span<ObstacleTally> tallies = {};
+  std::span<SurfaceTally> patches = {};
+  Handover* away = nullptr;
+};
+
+// The event-driven move among CSG obstacles: `states` holds the particle's logical state
+// per object (kept up to date). The face and object events of the cell are merged in time
+// order; a wall's boundary event reflects or absorbs the particle (`removed`), a zone's is
+// crossed and counted. Adds the result to step.moves and the hits to step.tallies and
+// step.patches; leaves step.away to the caller. Throws std::invalid_argument unless there
+// are a state and a tally per obstacle and the patches' tallies are none or one per
+// boundary condition.
+MoveResult move(const MoveContext& step, Particle& particle, std::span<csg::State> states, double dt);
 
 }  // namespace cosim::tracker

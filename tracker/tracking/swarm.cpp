@@ -24,8 +24,12 @@ void Swarm::keep(std::size_t from, std::size_t to) {
   copy_states(states_.data() + from * objects_, states_.data() + to * objects_);
 }
 
-void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, MoveTally& moves,
-                     std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches, Handover* away) {
+void Swarm::move_all(const MoveContext& step, double dt) {
+  const Domain& domain = step.domain;
+  const Obstacles& obstacles = step.obstacles;
+  const std::span<ObstacleTally> tallies = step.tallies;
+  const std::span<SurfaceTally> patches = step.patches;
+  Handover* const away = step.away;
   detail::check_carried(domain, obstacles, static_cast<std::size_t>(objects_), tallies.size(), patches.size());
   if (domain.mesh.ghosts > 0 && away == nullptr)
     throw std::invalid_argument("Swarm::move_all: a part of a mesh needs a handover for the moves that leave it");
@@ -47,11 +51,11 @@ void Swarm::move_all(const Domain& domain, const Obstacles& obstacles, double dt
     }
     Particle p = particle(i);
     const MoveResult result =
-        detail::follow_events(domain, p, dt, random, {&obstacles, states(kept), tallies, patches});
-    moves.add(result);
+        detail::follow_events(domain, p, dt, step.random, {&obstacles, states(kept), tallies, patches});
+    step.moves.add(result);
     if (away == nullptr ? !result.removed : away->keeps(result, p, states(kept), domain.mesh)) set(kept++, p);
   }
-  moves.moves += inside;
+  step.moves.moves += inside;
   particles_.resize(kept);
   states_.resize(kept * objects_);
 }

@@ -13,8 +13,6 @@
 
 namespace cosim::tracker {
 
-class Handover;
-
 struct StoredParticle {
   double x[3];
   float v[3];
@@ -59,12 +57,11 @@ class Swarm {
     states_.resize(kept * objects_);
   }
   // Moves every particle by dt with the event-driven algorithm, drops the removed ones and
-  // adds what happened to `moves`, `tallies` (one per obstacle) and `patches` (one per
-  // boundary condition, or none: see move()). On a part of a mesh (Mesh::ghosts) a move
-  // that enters a ghost stops there: the particle leaves the swarm for `away` with the rest
-  // of its move (std::invalid_argument if the mesh has ghosts and there is no `away`).
-  void move_all(const Domain& domain, const Obstacles& obstacles, double dt, Random& random, MoveTally& moves,
-                std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches = {}, Handover* away = nullptr);
+  // adds what happened to the step's tallies (move()). On a part of a mesh (Mesh::ghosts) a
+  // move that enters a ghost stops there: the particle leaves the swarm for step.away with
+  // the rest of its move (std::invalid_argument if the mesh has ghosts and there is no
+  // handover).
+  void move_all(const MoveContext& step, double dt);
   // Counting sort by cell (stable), as DSMC codes keep their particles: the particles of a
   // cell, and the cell's faces, are then together in memory.
   void sort_by_cell(Index cells);

@@ -56,7 +56,8 @@ TEST(Tracers, SolidBodyRotationReturnsAfterOnePeriod) {
     const Vec3 start = centre + Vec3(r * std::cos(a), r * std::sin(a), height(random) - 0.5);
     Particle tracer{start, Vec3::Zero(), domain.locator.locate(start)};
     for (int step = 0; step < 10; ++step)
-      ASSERT_TRUE(advance_tracer(domain, none, u, {.substeps = 20}, tracer, {}, 0.1, random, moves, {}));
+      ASSERT_TRUE(advance_tracer({.domain = domain, .obstacles = none, .random = random, .moves = moves}, u, {.substeps = 20},
+                                 tracer, {}, 0.1));
     worst = std::max(worst, (tracer.x - start).norm());
     EXPECT_FALSE(is_lost(domain, tracer));
   }
@@ -80,7 +81,8 @@ TEST(Tracers, StokesDragRelaxesToTheStreamExactly) {
   Random random(3);
   MoveTally moves;
   const Obstacles none;
-  ASSERT_TRUE(advance_tracer(domain, none, u, {.response_time = tau, .substeps = 3}, tracer, {}, t, random, moves, {}));
+  ASSERT_TRUE(advance_tracer({.domain = domain, .obstacles = none, .random = random, .moves = moves}, u,
+                             {.response_time = tau, .substeps = 3}, tracer, {}, t));
   const double decay = std::exp(-t / tau);
   EXPECT_LT((tracer.v - stream * (1 - decay)).norm(), 1e-14);
   EXPECT_LT((tracer.x - (Vec3(0.1, 0.2, 0.5) + stream * (t - tau * (1 - decay)))).norm(), 1e-14);
@@ -107,7 +109,8 @@ TEST(Tracers, ObstaclesAndWallsHoldTracers) {
     csg::State state;
     post.classify(tracer.cell, tracer.x, {&state, 1});
     for (int step = 0; step < 10; ++step)
-      ASSERT_TRUE(advance_tracer(domain, post, u, {.substeps = 5}, tracer, {&state, 1}, 0.1, random, moves, tally));
+      ASSERT_TRUE(advance_tracer({.domain = domain, .obstacles = post, .random = random, .moves = moves, .tallies = tally}, u,
+                                 {.substeps = 5}, tracer, {&state, 1}, 0.1));
     inside += (tracer.x - Vec3(0.5, 0.75, tracer.x.z())).norm() < 0.08 - 1e-9;
   }
   std::printf("tracers around a post: %lld hits; %s\n", tally[0].hits, summary(moves).c_str());

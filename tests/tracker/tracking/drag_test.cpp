@@ -43,8 +43,9 @@ Exchange ball_in_stream(const Vec3& velocity, double wall_temperature, int measu
   const int warm_up = 60;
   for (int step = 0; step < warm_up + measured; ++step) {
     if (step == warm_up) tally.assign(1, {});
-    swarm.move_all(domain, ball, kDt, random, moves, tally);
-    inflow.inject(domain, ball, kDt, random, swarm, moves, tally);
+    const MoveContext context{.domain = domain, .obstacles = ball, .random = random, .moves = moves, .tallies = tally};
+    swarm.move_all(context, kDt);
+    inflow.inject(context, kDt, swarm);
   }
   return {tally[0], measured * kDt, moves.lost};
 }

@@ -211,8 +211,16 @@ TEST(Handover, MovesThroughThreePartsEndWhereTheWholeMeshPutsThem) {
   std::vector<ObstacleTally> whole_tallies(2);
   long long handed = 0;
   for (int step = 0; step < 5; ++step) {
-    all.move_all(domain, obstacles, 0.4, unused, whole_moves, whole_tallies);
-    for (Rank& rank : ranks) rank.swarm.move_all(*rank.domain, *rank.obstacles, 0.4, unused, part_moves, rank.tallies, {}, &rank.away);
+    all.move_all({.domain = domain, .obstacles = obstacles, .random = unused, .moves = whole_moves, .tallies = whole_tallies},
+                 0.4);
+    for (Rank& rank : ranks)
+      rank.swarm.move_all({.domain = *rank.domain,
+                           .obstacles = *rank.obstacles,
+                           .random = unused,
+                           .moves = part_moves,
+                           .tallies = rank.tallies,
+                           .away = &rank.away},
+                          0.4);
     // Hand over until every move is done: each particle to the owner of its ghost.
     for (bool moving = true; moving;) {
       std::vector<Handover> incoming(kRanks, Handover(2));
@@ -269,7 +277,9 @@ TEST(Handover, APartWithoutAHandoverIsRefused) {
   Swarm swarm(0);
   MoveTally moves;
   Random random(1);
-  EXPECT_THROW(swarm.move_all(domain, Obstacles(), 0.1, random, moves, {}), std::invalid_argument);
+  const Obstacles none;
+  EXPECT_THROW(swarm.move_all({.domain = domain, .obstacles = none, .random = random, .moves = moves}, 0.1),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -73,7 +73,8 @@ TEST(Inflow, CountMatchesBirdsFlux) {
   long added = 0;
   const int steps = 2000;
   const double dt = 0.01;
-  for (int i = 0; i < steps; ++i) added += inflow.inject(domain, none, dt, random, swarm, moves, {});
+  const MoveContext step{.domain = domain, .obstacles = none, .random = random, .moves = moves};
+  for (int i = 0; i < steps; ++i) added += inflow.inject(step, dt, swarm);
   const double expected = inflow.rate() * dt * steps;
   // Random rounding per face and step: variance at most 1/4 each, 9 faces.
   std::printf("inflow: %ld entered, expected %.1f\n", added, expected);
@@ -94,8 +95,9 @@ TEST(Inflow, OpenBoxFillsToTheStreamsDensityAndTemperature) {
   double count = 0.0, energy = 0.0;
   int samples = 0;
   for (int step = 0; step < 300; ++step) {
-    swarm.move_all(domain, none, dt, random, moves, {});
-    inflow.inject(domain, none, dt, random, swarm, moves, {});
+    const MoveContext context{.domain = domain, .obstacles = none, .random = random, .moves = moves};
+    swarm.move_all(context, dt);
+    inflow.inject(context, dt, swarm);
     if (step < 100) continue;  // filling: a few transit times
     count += static_cast<double>(swarm.size());
     for (std::size_t i = 0; i < swarm.size(); ++i) energy += swarm.particle(i).v.squaredNorm();
@@ -122,8 +124,9 @@ TEST(Sampling, OpenBoxCellsHaveTheStreamsMoments) {
   MoveTally moves;
   CellSampler sampler(mesh);
   for (int step = 0; step < 400; ++step) {
-    swarm.move_all(domain, none, 0.05, random, moves, {});
-    inflow.inject(domain, none, 0.05, random, swarm, moves, {});
+    const MoveContext context{.domain = domain, .obstacles = none, .random = random, .moves = moves};
+    swarm.move_all(context, 0.05);
+    inflow.inject(context, 0.05, swarm);
     if (step == 100) sampler.reset();
     sampler.sample(swarm);
   }

@@ -150,8 +150,8 @@ TEST(FastPath, SwarmEndsWhereTheFullAlgorithmPutsIt) {
                    obstacles.active(obstacles.bounding_cell(p.cell)).empty();
     }
     moves += static_cast<long long>(a.size());
-    a.move_all(fast, obstacles, dt, random_a, moves_a, tallies_a);
-    b.move_all(full, obstacles, dt, random_b, moves_b, tallies_b);
+    a.move_all({.domain = fast, .obstacles = obstacles, .random = random_a, .moves = moves_a, .tallies = tallies_a}, dt);
+    b.move_all({.domain = full, .obstacles = obstacles, .random = random_b, .moves = moves_b, .tallies = tallies_b}, dt);
     a.sort_by_cell(mesh.cell_count());
     b.sort_by_cell(mesh.cell_count());
   }

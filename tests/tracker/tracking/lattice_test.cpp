@@ -138,8 +138,8 @@ TEST(Lattice, MovesThroughAMixedMeshEndWhereTheGeneralScanPutsThem) {
   MoveTally moves_a, moves_b;
   Random random_a(7), random_b(7);
   for (int step = 0; step < 20; ++step) {
-    a.move_all(lattice, none, 0.05, random_a, moves_a, {});
-    b.move_all(general, none, 0.05, random_b, moves_b, {});
+    a.move_all({.domain = lattice, .obstacles = none, .random = random_a, .moves = moves_a}, 0.05);
+    b.move_all({.domain = general, .obstacles = none, .random = random_b, .moves = moves_b}, 0.05);
   }
   EXPECT_GT(moves_a.faces_crossed, 20000);
   EXPECT_EQ(moves_a.faces_crossed, moves_b.faces_crossed);

@@ -52,7 +52,7 @@ struct Flights {
   }
 
   void step(const Domain& domain, const Obstacles& obstacles, double dt, Random& random) {
-    swarm.move_all(domain, obstacles, dt, random, moves, tallies);
+    swarm.move_all({.domain = domain, .obstacles = obstacles, .random = random, .moves = moves, .tallies = tallies}, dt);
   }
   // States repaired at a wall: 0 unless a state went wrong.
   long long released() const {
@@ -192,13 +192,16 @@ TEST(Obstacles, ImpulseOnAWallIsTwiceTheMomentumOfHeadOnHits) {
   Random random(3);
   std::uniform_real_distribution<double> uniform(0.25, 0.75);
   std::vector<ObstacleTally> tally(1);
+  MoveTally moves;
   const int count = 1000;
   for (int i = 0; i < count; ++i) {
     Particle p{{0.1, uniform(random), uniform(random)}, {2.0, 0.0, 0.0}, 0};
     p.cell = domain.locator.locate(p.x);
     csg::State state;
     obstacles.classify(p.cell, p.x, {&state, 1});
-    const MoveResult r = move(domain, obstacles, p, {&state, 1}, 0.3, random, tally);
+    const MoveResult r =
+        move({.domain = domain, .obstacles = obstacles, .random = random, .moves = moves, .tallies = tally}, p,
+             {&state, 1}, 0.3);
     EXPECT_EQ(r.object_events, 1);
     EXPECT_NEAR(p.x.x(), 0.5 - (0.6 - 0.4), 1e-12);
     EXPECT_EQ(p.v, Vec3(-2.0, 0.0, 0.0));
@@ -371,7 +374,10 @@ TEST(Obstacles, AWrongInsideStateIsReleasedAtTheSurface) {
   csg::State state = obstacles.cells(0).tree(p.cell).primitives().empty() ? 0 : 1;  // wrong: outside
   ASSERT_EQ(state, 1u);
   std::vector<ObstacleTally> tally(1);
-  move(domain, obstacles, p, {&state, 1}, 0.1, random_for_test(), tally);
+  Random random = random_for_test();
+  MoveTally moves;
+  move({.domain = domain, .obstacles = obstacles, .random = random, .moves = moves, .tallies = tally}, p, {&state, 1},
+       0.1);
   EXPECT_EQ(tally[0].released, 1);
   EXPECT_EQ(tally[0].hits, 0);
   EXPECT_EQ(state, 0u);

@@ -111,6 +111,7 @@ TEST(Walls, PatchTalliesBalanceTheParticlesMomentumAndEnergy) {
   std::normal_distribution<double> gauss(0.0, 300.0);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<SurfaceTally> patches(6);
+  MoveTally moves;
   Vec3 lost_momentum = Vec3::Zero();
   double lost_energy = 0.0;
   long long removed = 0;
@@ -118,7 +119,8 @@ TEST(Walls, PatchTalliesBalanceTheParticlesMomentumAndEnergy) {
     const Vec3 x(uniform(random), uniform(random), uniform(random));
     Particle p{x, Vec3(gauss(random), gauss(random), gauss(random)), domain.locator.locate(x)};
     const Vec3 before = p.v;
-    const MoveResult result = move(domain, none, p, {}, 0.05, random, {}, patches);
+    const MoveResult result =
+        move({.domain = domain, .obstacles = none, .random = random, .moves = moves, .patches = patches}, p, {}, 0.05);
     const Vec3 after = result.removed ? Vec3::Zero() : p.v;
     removed += result.removed;
     lost_momentum += before - after;
@@ -135,7 +137,8 @@ TEST(Walls, PatchTalliesBalanceTheParticlesMomentumAndEnergy) {
   // Wrong sizes are refused.
   std::vector<SurfaceTally> five(5);
   Particle p{Vec3::Constant(0.5), Vec3::UnitX(), domain.locator.locate(Vec3::Constant(0.5))};
-  EXPECT_THROW(move(domain, none, p, {}, 0.05, random, {}, five), std::invalid_argument);
+  EXPECT_THROW(move({.domain = domain, .obstacles = none, .random = random, .moves = moves, .patches = five}, p, {}, 0.05),
+               std::invalid_argument);
 }
 
 TEST(Walls, OpenPatchRemovesAndOthersReflect) {

@@ -137,7 +137,7 @@ ChannelResult run_channel(const ChannelSpec& spec) {
   // heat flux that the collisions relax at once, so either sample alone is off by about
   // dt / (2 tau_viscous), 10 % at dt = tau / 4; their mean is the flights' time average.
   const auto step = [&](bool sample) {
-    swarm.move_all(domain, none, r.dt, random, moves, {}, plates);
+    swarm.move_all({.domain = domain, .obstacles = none, .random = random, .moves = moves, .patches = plates}, r.dt);
     swarm.sort_by_cell(mesh.cell_count());
     if (sample) sampler.sample(swarm);
     collider.collide(swarm, r.dt);
