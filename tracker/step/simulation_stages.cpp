@@ -79,7 +79,7 @@ void Simulation::hand_over() {
       break;
     }
     migrated_ += decomposition_.hand_over(away_, numbering());
-    away_.resume_all(*setup_.domain, setup_.obstacles, random_, swarm_, moves_, tallies_, patch_tallies_);
+    away_.resume_all(move_context(), swarm_);
   }
   away_.forget_strays();
 }

@@ -34,16 +34,18 @@ void Handover::clear() {
   flights_.clear();
 }
 
-void Handover::resume_all(const Domain& domain, const Obstacles& obstacles, Random& random, Swarm& swarm,
-                          MoveTally& moves, std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches) {
-  detail::check_carried(domain, obstacles, static_cast<std::size_t>(objects_), tallies.size(), patches.size());
+void Handover::resume_all(const MoveContext& step, Swarm& swarm) {
+  const Domain& domain = step.domain;
+  detail::check_carried(domain, step.obstacles, static_cast<std::size_t>(objects_), step.tallies.size(),
+                        step.patches.size());
   Handover again(objects_);
   again.strays_ = strays_;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     Particle& p = particles_[i];
     const std::span<csg::State> states(states_.data() + i * objects_, static_cast<std::size_t>(objects_));
-    const MoveResult result = detail::resume_flight(domain, p, flights_[i], random, {&obstacles, states, tallies, patches});
-    moves.add_rest(result);
+    const MoveResult result = detail::resume_flight(domain, p, flights_[i], step.random,
+                                                    {&step.obstacles, states, step.tallies, step.patches});
+    step.moves.add_rest(result);
     if (again.keeps(result, p, states, domain.mesh)) swarm.add(p, states);
   }
   *this = std::move(again);

@@ -32,10 +32,10 @@ class Handover {
   long long strays() const { return strays_; }
   void forget_strays() { strays_ = 0; }
 
-  // Goes on with every particle's move (each in one of this rank's cells): those that end
-  // it here join `swarm`, those that enter a ghost again replace the handover's particles.
-  void resume_all(const Domain& domain, const Obstacles& obstacles, Random& random, Swarm& swarm, MoveTally& moves,
-                  std::span<ObstacleTally> tallies, std::span<SurfaceTally> patches);
+  // Goes on with every particle's move (each in one of this rank's cells) in `step`: those
+  // that end it here join `swarm`, those that enter a ghost again replace the handover's
+  // particles (step.away is not used).
+  void resume_all(const MoveContext& step, Swarm& swarm);
 
  private:
   int objects_;

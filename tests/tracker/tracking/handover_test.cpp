@@ -240,7 +240,10 @@ TEST(Handover, MovesThroughThreePartsEndWhereTheWholeMeshPutsThem) {
       }
       for (int r = 0; r < kRanks; ++r) {
         Rank& rank = ranks[static_cast<std::size_t>(r)];
-        incoming[r].resume_all(*rank.domain, *rank.obstacles, unused, rank.swarm, part_moves, rank.tallies, {});
+        incoming[r].resume_all(
+            {.domain = *rank.domain, .obstacles = *rank.obstacles, .random = unused, .moves = part_moves,
+             .tallies = rank.tallies},
+            rank.swarm);
         rank.away = std::move(incoming[r]);
       }
     }
