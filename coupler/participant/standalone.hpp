@@ -37,9 +37,10 @@ using MakeRecorder = std::function<std::unique_ptr<Recorder>(const std::filesyst
 // then every output.every-th window and the last, with 1 iteration; poses and forces as
 // the solver reports them, zeros where it reports none; and the solver's fields(), if it
 // has any, at the scene's fields times (output.fields_every, run_file.hpp).
-// On several ranks whose solvers are collective every rank runs it, and its recorder
-// writes on one.
-// Throws SceneError for a bad scene, std::runtime_error otherwise.
+// Over several ranks rank 0 runs it with a LeadSolver (mpi_team.hpp; cosim-fluid), or every
+// rank runs it with collective solver calls and the recorder writes on one (cosim-tracker).
+// Throws SceneError for a bad scene, std::runtime_error otherwise; what a window throws,
+// after the recorder's set_status("failed: ...").
 void run_standalone(const scene::Scene& scene, Solver& solver, const std::string& name,
                     std::filesystem::path output, const MakeRecorder& make = {});
 

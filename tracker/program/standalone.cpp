@@ -13,7 +13,8 @@ namespace cosim::tracker {
 namespace {
 
 // The tracker's run file at the start, every output.fields_every windows and the last:
-// every rank gathers (the sums and the particles are collective), rank 0 writes.
+// every rank gathers (the sums and the particles are collective), rank 0 writes, once it
+// has said that the scene's bodies stay put.
 class TrackerRecorder final : public participant::Recorder {
  public:
   TrackerRecorder(const std::filesystem::path& path, const scene::Scene& scene, const TrackerSolver& solver,
