@@ -3,7 +3,7 @@
 // triangles: a box [-5,5]^3 m of 22^3 cells, open on every side, argon streaming at 2500 m/s
 // and 300 K (n = 7.03e18 m^-3) entering through every face, VSS collisions, a unit sphere
 // at the centre re-emitting diffusely at 300 K, dt 1e-5 s. The step is cosim-tracker's
-// (tracker/program/standalone.cpp): sort by cell, collide, move, inject.
+// (Simulation::step, tracker/step): sort by cell, collide, move, inject.
 
 #include "tracker/step/collide.hpp"
 #include "tracker/tracking/inflow.hpp"

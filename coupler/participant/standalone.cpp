@@ -4,6 +4,7 @@
 
 #include "cosim_git_hash.hpp"
 #include "coupler/output/run_file.hpp"
+#include "coupler/participant/progress.hpp"
 #include "coupler/participant/seconds_since.hpp"
 #include "coupler/protocol/message.hpp"
 
@@ -16,56 +17,84 @@ std::vector<double> or_zeros(const std::vector<double>& values, std::size_t size
   return values.empty() ? std::vector<double>(size, 0.0) : values;
 }
 
+std::vector<std::string> body_names(const scene::Scene& scene) {
+  std::vector<std::string> names;
+  for (const auto& b : scene.bodies) names.push_back(b.name);
+  return names;
+}
+
+// The coupler's run file (output::RunFile), as run_standalone() says.
+class RunFileRecorder final : public Recorder {
+ public:
+  RunFileRecorder(const std::filesystem::path& path, const scene::Scene& scene, const Solver& solver,
+                  const std::string& name)
+      : scene_(scene),
+        solver_(solver),
+        name_(name),
+        file_(output::RunFile::create(
+            path, {scene.text, scene.file.string(), COSIM_GIT_HASH, COSIM_VERSION, protocol::kVersion},
+            body_names(scene), {name})) {}
+
+  void record(std::uint64_t done, double time, const Outputs& out, double seconds) override {
+    const std::uint64_t n = scene_.windows();
+    const std::size_t bodies = scene_.bodies.size();
+    if (scene_.output.row_at(done, n))
+      file_.append({.window = done,
+                    .time = time,
+                    .iterations = done > 0 ? 1 : 0,
+                    .residual = 0.0,
+                    .wall_seconds = seconds,
+                    .poses = or_zeros(out.poses, protocol::kPoseWidth * bodies),
+                    .forces = or_zeros(out.forces, protocol::kForceWidth * bodies),
+                    .participant_wall_seconds = {{name_, seconds}},
+                    .participant_substeps = {{name_, out.substeps}},
+                    .participant_field_bytes = {{name_, 0.0}}});  // nobody forwards fields to a program alone
+    if (!scene_.output.fields_at(done, n)) return;
+    if (const field::FieldFrame fields = solver_.fields(); !fields.fields.empty())
+      file_.write_fields(name_, done, time, fields);
+  }
+
+  void set_status(const std::string& status, double seconds) override { file_.set_status(status, seconds); }
+
+ private:
+  const scene::Scene& scene_;
+  const Solver& solver_;
+  std::string name_;
+  output::RunFile file_;
+};
+
 }  // namespace
 
 void run_standalone(const scene::Scene& scene, Solver& solver, const std::string& name,
-                    std::filesystem::path output) {
+                    std::filesystem::path output, const MakeRecorder& make) {
   const auto started = clock::now();
   const Outputs initial = solver.initialise(scene, name, {}, {});
 
   if (output.empty()) output = scene.output.file;
   if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
-  std::vector<std::string> bodies;
-  for (const auto& b : scene.bodies) bodies.push_back(b.name);
-  auto file = output::RunFile::create(
-      output, {scene.text, scene.file.string(), COSIM_GIT_HASH, COSIM_VERSION, protocol::kVersion}, bodies, {name});
-  const auto record = [&](std::uint64_t window, double time, const Outputs& out, int iterations, double wall) {
-    file.append({.window = window,
-                 .time = time,
-                 .iterations = iterations,
-                 .residual = 0.0,
-                 .wall_seconds = wall,
-                 .poses = or_zeros(out.poses, protocol::kPoseWidth * bodies.size()),
-                 .forces = or_zeros(out.forces, protocol::kForceWidth * bodies.size()),
-                 .participant_wall_seconds = {{name, wall}},
-                 .participant_substeps = {{name, out.substeps}},
-                 .participant_field_bytes = {{name, 0.0}}});  // nobody forwards fields to a program alone
-  };
+  const std::unique_ptr<Recorder> recorder =
+      make ? make(output) : std::make_unique<RunFileRecorder>(output, scene, solver, name);
   const std::uint64_t n = scene.windows();
-  const auto write_fields = [&](std::uint64_t done, double time) {
-    if (!scene.output.fields_at(done, n)) return;
-    if (const field::FieldFrame fields = solver.fields(); !fields.fields.empty())
-      file.write_fields(name, done, time, fields);
-  };
-
+  // Shown only on a terminal, and no rank's stderr is one under mpirun.
+  Progress progress(n, scene.time.end);
   try {
-    record(0, 0.0, initial, 0, 0.0);
-    write_fields(0, 0.0);
+    recorder->record(0, 0.0, initial, 0.0);
     for (std::uint64_t k = 0; k < n; ++k) {
       const auto window_started = clock::now();
       // Window bounds computed as the coupler does, so both runs take identical steps.
       const Window w{k, 1, static_cast<double>(k) * scene.coupling.window,
                      static_cast<double>(k + 1) * scene.coupling.window};
       const Outputs out = solver.advance(w, {});
-      if (scene.output.row_at(k + 1, n))
-        record(k + 1, w.t1, out, 1, seconds_since(window_started));
-      write_fields(k + 1, w.t1);
+      recorder->record(k + 1, w.t1, out, seconds_since(window_started));
+      progress.update(k + 1, w.t1, recorder->progress());
     }
   } catch (const std::exception& e) {
-    file.set_status(std::string("failed: ") + e.what(), seconds_since(started));
+    progress.finish();
+    recorder->set_status(std::string("failed: ") + e.what(), seconds_since(started));
     throw;
   }
-  file.set_status("finished", seconds_since(started));
+  progress.finish();
+  recorder->set_status("finished", seconds_since(started));
 }
 
 }  // namespace cosim::participant

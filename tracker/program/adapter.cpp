@@ -7,7 +7,6 @@
 #include "coupler/participant/body_rows.hpp"
 #include "coupler/participant/poses_at.hpp"
 #include "tracker/program/cell_fields.hpp"
-#include "tracker/program/output_grid.hpp"
 #include "tracker/program/particle_dump.hpp"
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/velocity_input.hpp"
@@ -42,7 +41,7 @@ participant::Outputs TrackerSolver::initialise(const scene::Scene& scene, const 
   obstacle_body_ = setup.obstacle_body;
   particle_output_ = setup.particle_output;
   gas_ = std::make_unique<Simulation>(std::move(setup), ranks_);
-  if (ranks_.lead()) grid_ = output_grid(*gas_).grid;
+  if (ranks_.lead()) grid_ = output_grid(*gas_);
   if (!state.empty()) restore(state);
   return {{}, std::vector<double>(kForceWidth * bodies_, 0.0), 0};
 }
@@ -54,7 +53,7 @@ void TrackerSolver::check_size(const std::vector<double>& poses) const {
 }
 
 participant::Outputs TrackerSolver::advance(const participant::Window& w, const participant::Inputs& in) {
-  gas_->reseed(w.index);
+  if (draws_ == Draws::per_window) gas_->reseed(w.index);
   done_ = w.index + 1;
   if (in.fields) gas_->set_velocity(velocity_of(*in.fields));
   const std::vector<ObstacleTally> before = gas_->tallies();
@@ -92,7 +91,7 @@ field::FieldFrame TrackerSolver::fields() const {
   std::optional<field::PointSet> particles;
   if (particle_output_ && particle_output_->at(done_, windows_)) particles = particle_set(*gas_, *particle_output_);
   if (!ranks_.lead()) return {};  // rank 0 answers the coupler: only it has every cell's values
-  field::FieldFrame frame{grid_, cell_fields(moments, count)};
+  field::FieldFrame frame{grid_.grid, cell_fields(moments, count)};
   if (particles) frame.point_sets.push_back(std::move(*particles));
   return frame;
 }

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "coupler/participant/solver.hpp"
+#include "tracker/program/output_grid.hpp"
 #include "tracker/program/scene_particle_output.hpp"
 #include "tracker/step/simulation.hpp"
 
@@ -18,17 +19,21 @@ namespace cosim::tracker {
 
 class TrackerSolver final : public participant::Solver {
  public:
-  explicit TrackerSolver(Ranks ranks = {}) : ranks_(ranks) {}
+  // Where a window's random draws come from: coupled, from the window's own stream
+  // (Simulation::reseed), so a repeated window with the same inputs gives the same forces;
+  // standalone, where no window is repeated, on from the stream the gas started with.
+  enum class Draws { per_window, one_stream };
+
+  explicit TrackerSolver(Ranks ranks = {}, Draws draws = Draws::per_window) : ranks_(ranks), draws_(draws) {}
 
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
                                   const std::vector<double>& poses, const std::vector<double>& state) override;
   // Subcycles to exactly w.t1 in equal steps of at most the participant's dt; before each
   // step the bound obstacles move to their body's pose at the step's end (inputs
   // interpolated in the window); forwarded fields replace the tracers' velocity field
-  // first. Random draws come from the window's own stream
-  // (Simulation::reseed), so a repeated window with the same inputs gives the same
-  // forces. The forces are the momentum and its moment the hits gave each body in the
-  // window, over the window's length: the window's mean.
+  // first; random draws as Draws says. Lost particles (a tracking bug) throw
+  // std::runtime_error. The forces are the momentum and its moment the hits gave each body
+  // in the window, over the window's length: the window's mean.
   participant::Outputs advance(const participant::Window& w, const participant::Inputs& in) override;
   std::vector<double> state() const override;
   void restore(const std::vector<double>& state) override;
@@ -40,16 +45,19 @@ class TrackerSolver final : public participant::Solver {
   // Tracers need only the fluid's velocity of its frame.
   std::vector<std::string> wanted_fields() const override;
 
+  // For a standalone run's file and summary.
   const Simulation& gas() const { return *gas_; }
+  const OutputGrid& grid() const { return grid_; }  // rank 0's; empty on the others
 
  private:
   void check_size(const std::vector<double>& poses) const;
 
   Ranks ranks_;
+  Draws draws_;
   std::unique_ptr<Simulation> gas_;
   std::vector<int> obstacle_body_;                 // TrackerScene's
   std::optional<ParticleOutput> particle_output_;  // TrackerScene's
-  field::Grid grid_;  // rank 0's: built once, sent with every frame
+  OutputGrid grid_;  // rank 0's: built once, its grid sent with every frame
   std::size_t bodies_ = 0;
   std::uint64_t windows_ = 0;  // of the run
   std::uint64_t done_ = 0;     // windows advanced through: the last one's index + 1

@@ -5,88 +5,82 @@
 #include <optional>
 
 #include "coupler/participant/seconds_since.hpp"
-#include "tracker/program/output_grid.hpp"
-#include "tracker/program/particle_dump.hpp"
-#include "tracker/program/progress.hpp"
-#include "tracker/program/scene_tracker.hpp"
+#include "coupler/participant/standalone.hpp"
+#include "tracker/program/adapter.hpp"
 #include "tracker/program/tracker_file.hpp"
-#include "tracker/step/simulation.hpp"
 
 namespace cosim::tracker {
+namespace {
+
+// The tracker's run file at the start, every output.fields_every windows and the last:
+// every rank gathers (the sums and the particles are collective), rank 0 writes, once it
+// has said that the scene's bodies stay put.
+class TrackerRecorder final : public participant::Recorder {
+ public:
+  TrackerRecorder(const std::filesystem::path& path, const scene::Scene& scene, const TrackerSolver& solver,
+                  const Ranks& ranks)
+      : scene_(scene), solver_(solver) {
+    if (!ranks.lead()) return;
+    if (!scene.bodies.empty())
+      std::fprintf(stderr, "cosim-tracker: note: --standalone keeps the scene's %zu bodies (and the obstacles bound to "
+                           "them) where the scene puts them; in coupled runs the rigid-body program moves them\n",
+                   scene.bodies.size());
+    const Obstacles& obstacles = solver.gas().setup().obstacles;
+    std::vector<std::string> names;
+    for (int i = 0; i < obstacles.count(); ++i) names.push_back(obstacles.object(i).name);
+    file_.emplace(path, scene, solver.grid(), names);
+  }
+
+  void record(std::uint64_t done, double time, const participant::Outputs&, double) override {
+    const std::uint64_t windows = scene_.windows();
+    // The start and the end always: the file is the run's only record.
+    if (done != 0 && done != windows && !scene_.output.fields_at(done, windows)) return;
+    const Simulation& gas = solver_.gas();
+    Sample sample{.step = gas.steps(),
+                  .time = time,
+                  .particles = gas.particles(),
+                  .fields = solver_.fields(),
+                  .objects = gas.tallies(),
+                  .patches = gas.patch_tallies(),
+                  .moves = gas.moves()};
+    if (file_) file_->write(sample);
+  }
+
+  void set_status(const std::string& status, double seconds) override {
+    if (file_) file_->set_status(status, seconds);
+  }
+
+  std::string progress() const override { return std::to_string(solver_.gas().swarm().size()) + " particles"; }
+
+ private:
+  const scene::Scene& scene_;
+  const TrackerSolver& solver_;
+  std::optional<TrackerFile> file_;
+};
+
+}  // namespace
 
 RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, Ranks ranks) {
   const auto started = std::chrono::steady_clock::now();
-  TrackerScene setup = read_tracker(scene, ranks);
-  const std::optional<ParticleOutput> particle_output = setup.particle_output;
-  Simulation gas(std::move(setup), ranks);
-  if (!scene.bodies.empty() && ranks.lead())
-    std::fprintf(stderr, "cosim-tracker: note: --standalone keeps the scene's %zu bodies (and the obstacles bound to "
-                         "them) where the scene puts them; in coupled runs the rigid-body program moves them\n",
-                 scene.bodies.size());
-
-  if (output.empty()) output = scene.output.file;
-  std::optional<TrackerFile> file;
-  if (ranks.lead()) {
-    if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
-    std::vector<std::string> names;
-    for (int i = 0; i < gas.setup().obstacles.count(); ++i) names.push_back(gas.setup().obstacles.object(i).name);
-    file.emplace(output, scene, output_grid(gas), names);
-  }
-
-  RunSummary summary;
-  summary.setup_seconds = participant::seconds_since(started);
-  const std::uint64_t windows = scene.windows();
-  // Every rank gathers (the sums and the particles are collective), rank 0 writes.
-  const auto write = [&](std::uint64_t done, double time) {
-    std::vector<field::PointSet> point_sets;
-    if (particle_output && particle_output->at(done, windows)) point_sets.push_back(particle_set(gas, *particle_output));
-    const std::vector<double> count = gas.counts();
-    const std::vector<CellMoments> moments = gas.take_moments();
-    const std::vector<ObstacleTally> tallies = gas.tallies();
-    const std::vector<SurfaceTally> patches = gas.patch_tallies();
-    const MoveTally moves = gas.moves();
-    const std::size_t particles = gas.particles();
-    if (file)
-      file->write({.step = gas.steps(),
-                   .time = time,
-                   .particles = particles,
-                   .count = count,
-                   .moments = moments,
-                   .objects = tallies,
-                   .patches = patches,
-                   .moves = moves,
-                   .point_sets = std::move(point_sets)});
-  };
-  // Shown only on a terminal, and no rank's stderr is one under mpirun: its count is the run's.
-  Progress progress(windows, scene.time.end);
-  try {
-    write(0, 0.0);
-    for (std::uint64_t k = 0; k < windows; ++k) {
-      // Window bounds computed as the coupler does, so both runs take identical steps.
-      const double t1 = static_cast<double>(k + 1) * scene.coupling.window;
-      gas.advance(static_cast<double>(k) * scene.coupling.window, t1);
-      // The start and the end always: the file is the run's only record.
-      if (scene.output.fields_at(k + 1, windows) || k + 1 == windows) write(k + 1, t1);
-      progress.update(k + 1, t1, gas.swarm().size());
-    }
-  } catch (const std::exception& e) {
-    progress.finish();
-    if (file) file->set_status(std::string("failed: ") + e.what(), participant::seconds_since(started));
-    throw;
-  }
-  progress.finish();
-  summary.steps = gas.steps();
-  summary.seeded = gas.seeded();
-  summary.injected = gas.injected();
-  summary.remaining = gas.particles();
-  summary.migrated = gas.migrated();
-  summary.rebalances = gas.rebalances();
-  summary.stages = gas.stages();
-  summary.collisions = gas.collisions();
-  summary.moves = gas.moves();
-  summary.wall_seconds = participant::seconds_since(started);
-  if (file) file->set_status("finished", summary.wall_seconds);
-  return summary;
+  TrackerSolver solver(ranks, TrackerSolver::Draws::one_stream);
+  double setup_seconds = 0.0;
+  participant::run_standalone(scene, solver, "tracker", std::move(output), [&](const std::filesystem::path& file) {
+    auto recorder = std::make_unique<TrackerRecorder>(file, scene, solver, ranks);
+    setup_seconds = participant::seconds_since(started);
+    return recorder;
+  });
+  const Simulation& gas = solver.gas();
+  return {.steps = gas.steps(),
+          .seeded = gas.seeded(),
+          .remaining = gas.particles(),
+          .injected = gas.injected(),
+          .collisions = gas.collisions(),
+          .migrated = gas.migrated(),
+          .rebalances = gas.rebalances(),
+          .moves = gas.moves(),
+          .wall_seconds = participant::seconds_since(started),
+          .setup_seconds = setup_seconds,
+          .stages = gas.stages()};
 }
 
 }  // namespace cosim::tracker

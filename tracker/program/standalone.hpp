@@ -1,7 +1,8 @@
-// cosim-tracker --standalone: the scene's gas without a coupler, window by window as
-// `cosim run` steps it (Simulation::advance), written to the tracker's run file
-// (tracker_file.hpp) at the start, every output.fields_every windows and the last, with the
-// particles where particle_output asks for them (scene_particle_output.hpp).
+// cosim-tracker --standalone: the scene's gas without a coupler, window by window through
+// its participant (adapter.hpp) as `cosim run` steps it (participant::run_standalone),
+// written to the tracker's run file (tracker_file.hpp) at the start, every
+// output.fields_every windows and the last, with the particles where particle_output asks
+// for them (scene_particle_output.hpp).
 // Over several ranks (`mpirun -n N cosim-tracker --standalone`) every rank runs it on its
 // cells' particles and rank 0 alone writes the file, of the sums over the ranks.
 #pragma once
@@ -30,8 +31,9 @@ struct RunSummary {
 };
 
 // Writes `output` (empty: the scene's output.file). Throws scene::SceneError for a bad
-// scene, std::runtime_error otherwise (the file then says "failed: ..." in /run status).
-// Collective over `ranks`; the summary is the totals over them, on every rank.
+// scene, std::runtime_error otherwise (the file then says "failed: ..." in /run status),
+// lost particles included (a tracking bug). Collective over `ranks`; the summary is the
+// totals over them, on every rank.
 RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, Ranks ranks = {});
 
 }  // namespace cosim::tracker

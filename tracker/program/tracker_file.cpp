@@ -10,7 +10,6 @@
 #include "coupler/output/series.hpp"
 #include "coupler/output/in_file.hpp"
 #include "coupler/output/text.hpp"
-#include "tracker/program/cell_fields.hpp"
 
 namespace cosim::tracker {
 namespace {
@@ -37,7 +36,6 @@ struct TrackerFile::Impl {
       : path(p),
         objects(object_count),
         patches(grid.patches.size()),
-        frame{grid.grid, {}},
         fields(p),
         volume(grid.volume),
         volume_dims{grid.volume.size()} {
@@ -54,7 +52,6 @@ struct TrackerFile::Impl {
   std::vector<Series> tallies;  // hits, absorbed, entered, left, released, impulse, angular_impulse, energy
   std::size_t patches = 0;
   std::vector<Series> patch_tallies;  // hits, absorbed, impulse, energy
-  field::FieldFrame frame;     // the mesh, built once; the fields of the last write
   output::FieldWriter fields;
   std::vector<double> volume;   // per cell: into the grid's group once the first step wrote it
   std::vector<hsize_t> volume_dims;
@@ -113,17 +110,14 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
 TrackerFile::TrackerFile(TrackerFile&&) noexcept = default;
 TrackerFile::~TrackerFile() = default;
 
-void TrackerFile::write(Sample s) {
+void TrackerFile::write(const Sample& s) {
   Impl& m = *impl_;
   output::in_file(m.path, [&] {
     const hid_t file = m.file.get();
     if (s.objects.size() != m.objects)
       throw output::ObjectError("step " + std::to_string(s.step) + ": " + std::to_string(s.objects.size()) +
                                 " object tallies for " + std::to_string(m.objects) + " objects");
-    m.frame.fields = cell_fields(s.moments, s.count);
-    m.frame.point_sets = std::move(s.point_sets);
-    m.fields.write(file, "tracker", s.step, s.time, m.frame);
-    m.frame.point_sets.clear();  // the particles may be many: not kept until the next write
+    m.fields.write(file, "tracker", s.step, s.time, s.fields);
     if (!m.volume.empty()) {  // the first write has just made the grid's group
       Handle grid = output::open_group(file, "/fields/tracker/grid");
       output::write_array(grid.get(), "volume", m.volume_dims, m.volume.data());

@@ -45,7 +45,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -53,7 +52,6 @@
 #include "coupler/scene/scene.hpp"
 #include "tracker/program/output_grid.hpp"
 #include "tracker/tracking/move.hpp"
-#include "tracker/tracking/sampling.hpp"
 
 namespace cosim::tracker {
 
@@ -61,12 +59,12 @@ struct Sample {
   std::uint64_t step = 0;
   double time = 0.0;
   std::uint64_t particles = 0;
-  std::span<const double> count;         // per cell, at this step
-  std::span<const CellMoments> moments;  // per cell, averaged since the previous write
-  std::span<const ObstacleTally> objects;
-  std::span<const SurfaceTally> patches;  // per boundary patch, by Mesh::patches index
+  // On the grid the file was made with: the cell fields (cell_fields.hpp) and the point
+  // sets, e.g. the particles (particle_dump.hpp), as TrackerSolver::fields() gives them.
+  field::FieldFrame fields;
+  std::vector<ObstacleTally> objects;
+  std::vector<SurfaceTally> patches;  // per boundary patch, by Mesh::patches index
   MoveTally moves;
-  std::vector<field::PointSet> point_sets;  // with the fields, e.g. the particles (particle_dump.hpp)
 };
 
 class TrackerFile {
@@ -77,7 +75,7 @@ class TrackerFile {
   TrackerFile(TrackerFile&&) noexcept;
   ~TrackerFile();
 
-  void write(Sample sample);  // flushes, then rewrites the sidecar
+  void write(const Sample& sample);  // flushes, then rewrites the sidecar
   void set_status(const std::string& status, double wall_seconds);
 
  private:
