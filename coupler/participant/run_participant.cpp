@@ -16,22 +16,36 @@ using protocol::Tag;
 using protocol::Type;
 namespace messages = protocol::messages;
 
-std::vector<double> values_or_empty(const Message& m, Tag tag, std::size_t which = 0) {
+// The values of m's `which`-th array with this tag, in rows of `width`; none if m has fewer
+// such arrays.
+std::span<const double> row_values(const Message& m, Tag tag, std::size_t which, std::uint32_t width) {
   const auto arrays = m.all(tag);
-  return which < arrays.size() ? arrays[which]->values : std::vector<double>{};
+  if (which >= arrays.size()) return {};
+  const Array& a = *arrays[which];
+  if (a.cols != width)
+    throw protocol::ProtocolError(std::string(protocol::to_string(m.header.type)) + " carries a " +
+                                  protocol::to_string(tag) + " array of " + std::to_string(a.cols) +
+                                  " columns, expected " + std::to_string(width));
+  return a.values;
+}
+
+std::vector<PoseRow> poses_of(const Message& m, std::size_t which) {
+  return pose_rows(row_values(m, Tag::Poses, which, protocol::kPoseWidth));
+}
+
+std::vector<ForceRow> forces_of(const Message& m, std::size_t which) {
+  return force_rows(row_values(m, Tag::Forces, which, protocol::kForceWidth));
 }
 
 // The arrays of what the solver provides, then Stats.
 std::vector<Array> output_arrays(const Outputs& out, std::uint32_t provides, double wall) {
   std::vector<Array> arrays;
-  const auto rows = [](const std::vector<double>& v, std::size_t cols) {
-    return static_cast<std::uint32_t>(v.size() / cols);
-  };
   if (scene::has(provides, scene::Data::Poses))
-    arrays.push_back(Array::of(Tag::Poses, rows(out.poses, protocol::kPoseWidth), protocol::kPoseWidth, out.poses));
+    arrays.push_back(Array::of(Tag::Poses, static_cast<std::uint32_t>(out.poses.size()), protocol::kPoseWidth,
+                               values_of(out.poses)));
   if (scene::has(provides, scene::Data::Forces))
-    arrays.push_back(
-        Array::of(Tag::Forces, rows(out.forces, protocol::kForceWidth), protocol::kForceWidth, out.forces));
+    arrays.push_back(Array::of(Tag::Forces, static_cast<std::uint32_t>(out.forces.size()), protocol::kForceWidth,
+                               values_of(out.forces)));
   arrays.push_back(Array::of(Tag::Stats, 1, protocol::kStatsWidth, {out.substeps, wall}));
   return arrays;
 }
@@ -46,8 +60,9 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
                         scene.coupling.scheme == scene::Scheme::ParallelImplicit;
 
   auto start = std::chrono::steady_clock::now();
-  const Outputs initial = solver.initialise(scene, client.name(), values_or_empty(init, Tag::Poses),
-                                            values_or_empty(init, Tag::State));
+  const Array* state = init.find(Tag::State);
+  const Outputs initial =
+      solver.initialise(scene, client.name(), poses_of(init, 0), state ? state->values : std::vector<double>{});
   std::vector<Array> ready = output_arrays(initial, provides, seconds_since(start));
   if (scene::has(needs, scene::Data::Fields))
     for (const std::string& field : solver.wanted_fields()) ready.push_back(Array::text(field));
@@ -87,8 +102,7 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
 
 Inputs inputs_of(Message m) {
   std::vector<Array> fields = protocol::take_field_arrays(m.arrays);
-  Inputs in{values_or_empty(m, Tag::Poses, 0), values_or_empty(m, Tag::Poses, 1),
-            values_or_empty(m, Tag::Forces, 0), values_or_empty(m, Tag::Forces, 1), std::nullopt};
+  Inputs in{poses_of(m, 0), poses_of(m, 1), forces_of(m, 0), forces_of(m, 1), std::nullopt};
   if (!fields.empty()) in.fields = protocol::field_frame(std::move(fields), "the fields in Advance");
   return in;
 }

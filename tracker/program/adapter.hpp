@@ -21,7 +21,8 @@ class TrackerSolver final : public participant::Solver {
   explicit TrackerSolver(Ranks ranks = {}) : ranks_(ranks) {}
 
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
-                                  const std::vector<double>& poses, const std::vector<double>& state) override;
+                                  const std::vector<participant::PoseRow>& poses,
+                                  const std::vector<double>& state) override;
   // Subcycles to exactly w.t1 in equal steps of at most the participant's dt; before each
   // step the bound obstacles move to their body's pose at the step's end (inputs
   // interpolated in the window); forwarded fields replace the tracers' velocity field
@@ -43,7 +44,7 @@ class TrackerSolver final : public participant::Solver {
   const Simulation& gas() const { return *gas_; }
 
  private:
-  void check_size(const std::vector<double>& poses) const;
+  void check_size(const std::vector<participant::PoseRow>& poses) const;
 
   Ranks ranks_;
   std::unique_ptr<Simulation> gas_;
