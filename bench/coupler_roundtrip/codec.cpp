@@ -1,13 +1,12 @@
 #include "bench/coupler_roundtrip/cases.hpp"
+#include "coupler/protocol/messages.hpp"
 
 namespace cosim::bench {
 namespace {
 
 protocol::Message result(std::size_t doubles) {
-  protocol::Message m;
-  m.header.type = protocol::Type::Result;
-  m.header.participant = "solver0";
-  m.arrays.push_back(payload(doubles));
+  protocol::Message m = protocol::messages::result(0, 1, {payload(doubles)});
+  m.header.participant = "solver0";  // as the participant's Client sends it
   return m;
 }
 

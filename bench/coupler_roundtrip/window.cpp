@@ -6,6 +6,7 @@
 
 #include "bench/coupler_roundtrip/cases.hpp"
 #include "coupler/protocol/client.hpp"
+#include "coupler/protocol/messages.hpp"
 #include "coupler/protocol/server.hpp"
 
 namespace cosim::bench {
@@ -13,12 +14,6 @@ namespace {
 
 using namespace protocol;
 constexpr std::chrono::seconds kTimeout(30);
-
-Message of_type(Type type) {
-  Message m;
-  m.header.type = type;
-  return m;
-}
 
 // Answers every Advance as a solver would after its substeps: its outputs, computed into a
 // buffer of its own, and its Stats.
@@ -35,16 +30,12 @@ void participant(const std::string& endpoint, const std::string& name,
     const Array& start = in.arrays[0];
     outputs.resize(start.values.size());
     answer(start.values.data(), in.arrays[1].values.data(), outputs);
-    Message out = of_type(Type::Result);
-    out.header.window = in.header.window;
-    out.header.t0 = in.header.t0;
-    out.header.t1 = in.header.t1;
     // Copies the outputs into the message, as run_participant does with a solver's.
-    out.arrays.push_back(Array::of(start.tag, start.rows, start.cols, outputs));
-    out.arrays.push_back(Array::of(Tag::Stats, 1, 2, {1.0, 0.0}));
-    client.reply(std::move(out));
+    client.reply(messages::result(in.header.window, in.header.iteration,
+                                  {Array::of(start.tag, start.rows, start.cols, outputs),
+                                   Array::of(Tag::Stats, 1, kStatsWidth, {1.0, 0.0})}));
   }
-  client.reply(of_type(Type::Bye));
+  client.reply(messages::bye());
 }
 
 Message expect(Server& server, Type type) {
@@ -69,12 +60,13 @@ void window(benchmark::State& state, Case c) {
     threads.emplace_back(participant, server.endpoint(), name,
                          keys ? std::optional(keys->peers.at(name)) : std::nullopt);
   for (int i = 0; i < c.participants; ++i) expect(server, Type::Hello);
-  for (const auto& name : names) server.send(name, of_type(Type::Init));
+  // An Init without a scene: these participants read none.
+  Message init;
+  init.header.type = Type::Init;
+  for (const auto& name : names) server.send(name, init);
 
   // The coupler sends each input twice, at the window start and at its end.
-  Message advance = of_type(Type::Advance);
-  advance.arrays.push_back(payload(c.doubles));
-  advance.arrays.push_back(payload(c.doubles));
+  Message advance = messages::advance(0, 1, 0.0, 0.0, {payload(c.doubles), payload(c.doubles)});
   for (double& v : advance.arrays.back().values) v += 0.5;
   for (auto _ : state) {
     for (const auto& name : names) server.send(name, advance);
@@ -89,7 +81,7 @@ void window(benchmark::State& state, Case c) {
     advance.header.t1 += 0.01;
   }
 
-  for (const auto& name : names) server.send(name, of_type(Type::Stop));
+  for (const auto& name : names) server.send(name, messages::stop());
   for (int i = 0; i < c.participants; ++i) expect(server, Type::Bye);
   state.SetItemsProcessed(state.iterations());
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * window_bytes(c)));

@@ -3,16 +3,13 @@
 #include "coupler/protocol/message.hpp"
 
 namespace cosim::participant {
+namespace {
 
-PoseRow pose_row(std::span<const double> poses, std::size_t body) {
-  const double* v = poses.data() + protocol::kPoseWidth * body;
+PoseRow pose_at(const double* v) {
   return {{v[0], v[1], v[2]}, Eigen::Quaterniond(v[3], v[4], v[5], v[6]), {v[7], v[8], v[9]}, {v[10], v[11], v[12]}};
 }
 
-ForceRow force_row(std::span<const double> forces, std::size_t body) {
-  const double* f = forces.data() + protocol::kForceWidth * body;
-  return {{f[0], f[1], f[2]}, {f[3], f[4], f[5]}};
-}
+ForceRow force_at(const double* f) { return {{f[0], f[1], f[2]}, {f[3], f[4], f[5]}}; }
 
 void append(std::vector<double>& poses, const PoseRow& r) {
   const Eigen::Quaterniond& q = r.orientation;
@@ -24,5 +21,35 @@ void append(std::vector<double>& poses, const PoseRow& r) {
 void append(std::vector<double>& forces, const ForceRow& r) {
   forces.insert(forces.end(), {r.force.x(), r.force.y(), r.force.z(), r.torque.x(), r.torque.y(), r.torque.z()});
 }
+
+template <class Row>
+std::vector<Row> decoded(std::span<const double> values, std::size_t width, Row (*row_at)(const double*)) {
+  std::vector<Row> out;
+  out.reserve(values.size() / width);
+  for (std::size_t at = 0; at + width <= values.size(); at += width) out.push_back(row_at(values.data() + at));
+  return out;
+}
+
+template <class Row>
+std::vector<double> encoded(std::span<const Row> rows, std::size_t width) {
+  std::vector<double> out;
+  out.reserve(width * rows.size());
+  for (const Row& row : rows) append(out, row);
+  return out;
+}
+
+}  // namespace
+
+std::vector<PoseRow> pose_rows(std::span<const double> values) {
+  return decoded(values, protocol::kPoseWidth, pose_at);
+}
+
+std::vector<ForceRow> force_rows(std::span<const double> values) {
+  return decoded(values, protocol::kForceWidth, force_at);
+}
+
+std::vector<double> values_of(std::span<const PoseRow> rows) { return encoded(rows, protocol::kPoseWidth); }
+
+std::vector<double> values_of(std::span<const ForceRow> rows) { return encoded(rows, protocol::kForceWidth); }
 
 }  // namespace cosim::participant

@@ -1,11 +1,11 @@
 #pragma once
 // A body's row of the Poses and Forces arrays (protocol/message.hpp: kPoseWidth and
-// kForceWidth values a body, in the scene's body order), typed: participants read and
-// write the rows through these, never by index.
+// kForceWidth values a body, in the scene's body order), typed: solvers get and give rows
+// (solver.hpp), and the flat values appear only where rows are stored: in messages, run
+// files and restart states.
 
 #include <Eigen/Geometry>
 
-#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -23,11 +23,11 @@ struct ForceRow {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
 };
 
-// Row `body` of a Poses or Forces array (the caller checked the array's size).
-PoseRow pose_row(std::span<const double> poses, std::size_t body);
-ForceRow force_row(std::span<const double> forces, std::size_t body);
-// Appends a row.
-void append(std::vector<double>& poses, const PoseRow& row);
-void append(std::vector<double>& forces, const ForceRow& row);
+// The rows of a Poses or Forces array's values, which the caller checked to be whole rows.
+std::vector<PoseRow> pose_rows(std::span<const double> values);
+std::vector<ForceRow> force_rows(std::span<const double> values);
+// The array's values of these rows, row-major.
+std::vector<double> values_of(std::span<const PoseRow> rows);
+std::vector<double> values_of(std::span<const ForceRow> rows);
 
 }  // namespace cosim::participant

@@ -143,13 +143,25 @@ std::vector<double> gathered(MPI_Comm comm, const std::vector<double>& part) {
   return whole;
 }
 
+// Rows cross as their wire values.
+template <class Row>
+void send_rows(MPI_Comm comm, const std::vector<Row>& rows) {
+  send(comm, values_of(rows));
+}
+
+template <class Row>
+std::vector<Row> receive_rows(MPI_Comm comm, std::vector<Row> (*rows_of)(std::span<const double>)) {
+  std::vector<double> values;
+  receive(comm, values);
+  return rows_of(values);
+}
+
 void initialise_follower(Solver& local, MPI_Comm comm) {
   std::string text, file, name;
-  std::vector<double> poses;
   receive(comm, text);
   receive(comm, file);
   receive(comm, name);
-  receive(comm, poses);
+  const std::vector<PoseRow> poses = receive_rows(comm, pose_rows);
   const std::vector<double> state = scattered(comm, {}, {});
   local.initialise(scene::load_scene_from_string(text, file), name, poses, state);
 }
@@ -158,7 +170,10 @@ void advance_follower(Solver& local, MPI_Comm comm) {
   Window w;
   Inputs in;
   share(comm, w);
-  for (std::vector<double>* v : {&in.poses_start, &in.poses_end, &in.forces_start, &in.forces_end}) receive(comm, *v);
+  in.poses_start = receive_rows(comm, pose_rows);
+  in.poses_end = receive_rows(comm, pose_rows);
+  in.forces_start = receive_rows(comm, force_rows);
+  in.forces_end = receive_rows(comm, force_rows);
   in.fields = receive_fields(comm);
   local.advance(w, in);
 }
@@ -175,14 +190,14 @@ void LeadSolver::announce(int call) const {
   MPI_Bcast(&call, 1, MPI_INT, 0, comm_);
 }
 
-Outputs LeadSolver::initialise(const scene::Scene& scene, const std::string& name, const std::vector<double>& poses,
+Outputs LeadSolver::initialise(const scene::Scene& scene, const std::string& name, const std::vector<PoseRow>& poses,
                                const std::vector<double>& state) {
   const std::vector<int> sizes = state_sizes(state, size_of(comm_));
   announce(kInitialise);
   send(comm_, scene.text);
   send(comm_, scene.file.string());
   send(comm_, name);
-  send(comm_, poses);
+  send_rows(comm_, poses);
   return local_.initialise(scene, name, poses, scattered(comm_, state, sizes));
 }
 
@@ -190,7 +205,10 @@ Outputs LeadSolver::advance(const Window& w, const Inputs& in) {
   announce(kAdvance);
   Window shared = w;
   share(comm_, shared);
-  for (const std::vector<double>* v : {&in.poses_start, &in.poses_end, &in.forces_start, &in.forces_end}) send(comm_, *v);
+  send_rows(comm_, in.poses_start);
+  send_rows(comm_, in.poses_end);
+  send_rows(comm_, in.forces_start);
+  send_rows(comm_, in.forces_end);
   send(comm_, in.fields);
   return local_.advance(w, in);
 }

@@ -21,7 +21,7 @@ class LeadSolver final : public Solver {
   LeadSolver(Solver& local, MPI_Comm comm);
   ~LeadSolver() override;  // releases the followers if finish() was not called
 
-  Outputs initialise(const scene::Scene& scene, const std::string& name, const std::vector<double>& poses,
+  Outputs initialise(const scene::Scene& scene, const std::string& name, const std::vector<PoseRow>& poses,
                      const std::vector<double>& state) override;
   Outputs advance(const Window& w, const Inputs& in) override;
   std::vector<double> state() const override;

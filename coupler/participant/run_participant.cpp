@@ -5,6 +5,7 @@
 
 #include "coupler/participant/seconds_since.hpp"
 #include "coupler/protocol/field_message.hpp"
+#include "coupler/protocol/messages.hpp"
 
 namespace cosim::participant {
 namespace {
@@ -13,25 +14,40 @@ using protocol::Array;
 using protocol::Message;
 using protocol::Tag;
 using protocol::Type;
+namespace messages = protocol::messages;
 
-std::vector<double> values_or_empty(const Message& m, Tag tag, std::size_t which = 0) {
+// The values of m's `which`-th array with this tag, in rows of `width`; none if m has fewer
+// such arrays.
+std::span<const double> row_values(const Message& m, Tag tag, std::size_t which, std::uint32_t width) {
   const auto arrays = m.all(tag);
-  return which < arrays.size() ? arrays[which]->values : std::vector<double>{};
+  if (which >= arrays.size()) return {};
+  const Array& a = *arrays[which];
+  if (a.cols != width)
+    throw protocol::ProtocolError(std::string(protocol::to_string(m.header.type)) + " carries a " +
+                                  protocol::to_string(tag) + " array of " + std::to_string(a.cols) +
+                                  " columns, expected " + std::to_string(width));
+  return a.values;
 }
 
-Message outputs_message(Type type, const Outputs& out, std::uint32_t provides, double wall) {
-  Message m;
-  m.header.type = type;
-  const auto rows = [](const std::vector<double>& v, std::size_t cols) {
-    return static_cast<std::uint32_t>(v.size() / cols);
-  };
+std::vector<PoseRow> poses_of(const Message& m, std::size_t which) {
+  return pose_rows(row_values(m, Tag::Poses, which, protocol::kPoseWidth));
+}
+
+std::vector<ForceRow> forces_of(const Message& m, std::size_t which) {
+  return force_rows(row_values(m, Tag::Forces, which, protocol::kForceWidth));
+}
+
+// The arrays of what the solver provides, then Stats.
+std::vector<Array> output_arrays(const Outputs& out, std::uint32_t provides, double wall) {
+  std::vector<Array> arrays;
   if (scene::has(provides, scene::Data::Poses))
-    m.arrays.push_back(Array::of(Tag::Poses, rows(out.poses, protocol::kPoseWidth), protocol::kPoseWidth, out.poses));
+    arrays.push_back(Array::of(Tag::Poses, static_cast<std::uint32_t>(out.poses.size()), protocol::kPoseWidth,
+                               values_of(out.poses)));
   if (scene::has(provides, scene::Data::Forces))
-    m.arrays.push_back(
-        Array::of(Tag::Forces, rows(out.forces, protocol::kForceWidth), protocol::kForceWidth, out.forces));
-  m.arrays.push_back(Array::of(Tag::Stats, 1, 2, {out.substeps, wall}));
-  return m;
+    arrays.push_back(Array::of(Tag::Forces, static_cast<std::uint32_t>(out.forces.size()), protocol::kForceWidth,
+                               values_of(out.forces)));
+  arrays.push_back(Array::of(Tag::Stats, 1, protocol::kStatsWidth, {out.substeps, wall}));
+  return arrays;
 }
 
 int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std::uint32_t needs,
@@ -44,12 +60,13 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
                         scene.coupling.scheme == scene::Scheme::ParallelImplicit;
 
   auto start = std::chrono::steady_clock::now();
-  const Outputs initial = solver.initialise(scene, client.name(), values_or_empty(init, Tag::Poses),
-                                            values_or_empty(init, Tag::State));
-  Message ready = outputs_message(Type::Ready, initial, provides, seconds_since(start));
+  const Array* state = init.find(Tag::State);
+  const Outputs initial =
+      solver.initialise(scene, client.name(), poses_of(init, 0), state ? state->values : std::vector<double>{});
+  std::vector<Array> ready = output_arrays(initial, provides, seconds_since(start));
   if (scene::has(needs, scene::Data::Fields))
-    for (const std::string& field : solver.wanted_fields()) ready.arrays.push_back(Array::text(field));
-  client.reply(std::move(ready));
+    for (const std::string& field : solver.wanted_fields()) ready.push_back(Array::text(field));
+  client.reply(messages::ready(std::move(ready)));
 
   std::vector<double> window_start;
   for (;;) {
@@ -63,37 +80,20 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
           window_start = solver.state();
         start = std::chrono::steady_clock::now();
         const Outputs out = solver.advance(w, inputs_of(std::move(m)));
-        Message result = outputs_message(Type::Result, out, provides, seconds_since(start));
-        result.header.window = w.index;
-        result.header.iteration = w.iteration;
-        client.reply(std::move(result));
+        client.reply(messages::result(w.index, w.iteration, output_arrays(out, provides, seconds_since(start))));
         break;
       }
-      case Type::Checkpoint: {
-        Message state;
-        state.header.type = Type::State;
-        auto s = solver.state();
-        const auto n = static_cast<std::uint32_t>(s.size());
-        state.arrays.push_back(Array::of(Tag::State, 1, n, std::move(s)));
-        client.reply(std::move(state));
+      case Type::Checkpoint:
+        client.reply(messages::state(solver.state()));
         break;
-      }
-      case Type::Field: {  // the coupler's writer asks for the fields at the committed time
-        Message fields;
-        fields.header.type = Type::Field;
-        fields.header.window = m.header.window;
-        fields.arrays = protocol::field_arrays(solver.fields());
-        client.reply(std::move(fields));
+      case Type::Field:  // the coupler's writer asks for the fields at the committed time
+        client.reply(messages::fields(m.header.window, protocol::field_arrays(solver.fields())));
         break;
-      }
       case Type::Commit:
         break;
-      default: {  // Stop
-        Message bye;
-        bye.header.type = Type::Bye;
-        client.reply(std::move(bye));
+      default:  // Stop
+        client.reply(messages::bye());
         return 0;
-      }
     }
   }
 }
@@ -102,8 +102,7 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
 
 Inputs inputs_of(Message m) {
   std::vector<Array> fields = protocol::take_field_arrays(m.arrays);
-  Inputs in{values_or_empty(m, Tag::Poses, 0), values_or_empty(m, Tag::Poses, 1),
-            values_or_empty(m, Tag::Forces, 0), values_or_empty(m, Tag::Forces, 1), std::nullopt};
+  Inputs in{poses_of(m, 0), poses_of(m, 1), forces_of(m, 0), forces_of(m, 1), std::nullopt};
   if (!fields.empty()) in.fields = protocol::field_frame(std::move(fields), "the fields in Advance");
   return in;
 }

@@ -17,8 +17,10 @@ namespace cosim::participant {
 int run_participant(protocol::Client& client, Solver& solver, std::uint32_t provides,
                     std::uint32_t needs, std::uint32_t ranks = 1);
 
-// An Advance's inputs: the values of each tag in order (start, then end), and the field
-// frame after them (field_message.hpp). ProtocolError for fields that are not a frame.
+// An Advance's inputs: the rows of each tag in order (start, then end), and the field
+// frame after them (field_message.hpp). ProtocolError for Poses or Forces arrays whose
+// rows are not a body's (protocol::kPoseWidth, kForceWidth) and for fields that are not a
+// frame.
 Inputs inputs_of(protocol::Message advance);
 
 }  // namespace cosim::participant

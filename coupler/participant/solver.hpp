@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "coupler/field/field_frame.hpp"
+#include "coupler/participant/body_rows.hpp"
 #include "coupler/scene/scene.hpp"
 
 namespace cosim::participant {
@@ -19,8 +20,8 @@ struct Window {
   double t1 = 0.0;
 };
 
-// The coupler's values at the window's start and end, bodies in scene order (poses
-// b x 13, forces b x 6, row-major). Poses are instants: a solver evaluates them at s in
+// The coupler's values at the window's start and end, a row per body in scene order.
+// Poses are instants: a solver evaluates them at s in
 // [t0, t1] by linear interpolation (lerp(), below). The forces of cosim-fluid and
 // cosim-tracker are the window's means (impulse over length), which cosim-rigidbody holds
 // constant over the window; the oscillator doubles send instants and interpolate them.
@@ -30,8 +31,8 @@ struct Window {
 // A participant that needs fields gets another's (the fluid's) as committed at t0, the
 // same in every iteration of the window: held constant over it, explicit, first order.
 struct Inputs {
-  std::vector<double> poses_start, poses_end;
-  std::vector<double> forces_start, forces_end;
+  std::vector<PoseRow> poses_start, poses_end;
+  std::vector<ForceRow> forces_start, forces_end;
   std::optional<field::FieldFrame> fields;  // none unless the participant needs fields
 };
 
@@ -41,8 +42,8 @@ inline double lerp(double start, double end, const Window& w, double s) {
 }
 
 struct Outputs {
-  std::vector<double> poses;   // if the solver provides poses
-  std::vector<double> forces;  // if the solver provides forces
+  std::vector<PoseRow> poses;    // if the solver provides poses
+  std::vector<ForceRow> forces;  // if the solver provides forces
   double substeps = 0;
 };
 
@@ -52,7 +53,7 @@ class Solver {
   // Set up from the scene (its own section: scene.participant(name)); `state` is
   // non-empty when resuming a run. Returns the outputs at the start time.
   virtual Outputs initialise(const scene::Scene& scene, const std::string& name,
-                             const std::vector<double>& poses, const std::vector<double>& state) = 0;
+                             const std::vector<PoseRow>& poses, const std::vector<double>& state) = 0;
   // From the state at w.t0, subcycle to exactly w.t1.
   virtual Outputs advance(const Window& w, const Inputs& in) = 0;
   // Everything needed to continue from here: used for rollback and checkpoints.

@@ -13,8 +13,10 @@ namespace {
 
 using clock = std::chrono::steady_clock;
 
-std::vector<double> or_zeros(const std::vector<double>& values, std::size_t size) {
-  return values.empty() ? std::vector<double>(size, 0.0) : values;
+// The run file's row of values: the rows', or zeros where the solver gives none.
+template <class Row>
+std::vector<double> or_zeros(const std::vector<Row>& rows, std::size_t size) {
+  return rows.empty() ? std::vector<double>(size, 0.0) : values_of(rows);
 }
 
 std::vector<std::string> body_names(const scene::Scene& scene) {

@@ -5,6 +5,7 @@
 
 #include <zmq_addon.hpp>
 
+#include "coupler/protocol/messages.hpp"
 #include "coupler/protocol/socket.hpp"
 
 namespace cosim::protocol {
@@ -51,12 +52,7 @@ std::optional<Client> Client::from_environment() {
 }
 
 Message Client::hello(std::uint32_t provides, std::uint32_t needs, std::uint32_t ranks) {
-  Message m;
-  m.header.type = Type::Hello;
-  m.header.provides = provides;
-  m.header.needs = needs;
-  m.header.ranks = ranks;
-  reply(std::move(m));
+  reply(messages::hello(provides, needs, ranks));
   return wait_for({Type::Init});
 }
 
@@ -86,11 +82,6 @@ void Client::reply(Message m) {
   zmq::send_multipart(socket_, encode(m));
 }
 
-void Client::error(const std::string& text) {
-  Message m;
-  m.header.type = Type::Error;
-  m.arrays.push_back(Array::text(text));
-  reply(std::move(m));
-}
+void Client::error(const std::string& text) { reply(messages::error(text)); }
 
 }  // namespace cosim::protocol

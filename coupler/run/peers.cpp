@@ -6,6 +6,7 @@
 
 #include <thread>
 
+#include "coupler/protocol/messages.hpp"
 #include "coupler/run/failure.hpp"
 #include "coupler/run/interrupt.hpp"
 
@@ -149,17 +150,14 @@ std::map<std::string, protocol::Message> Peers::exchange(
 }
 
 void Peers::stop_all() {
-  protocol::Message stop;
-  stop.header.type = protocol::Type::Stop;
+  const protocol::Message stop = protocol::messages::stop();
   for (const auto& name : names()) send(name, stop, "while stopping");
   gather(names(), protocol::Type::Bye, "while stopping");
   for (auto& [name, p] : processes_) p.stop(std::chrono::seconds(10));
 }
 
 void Peers::abort_all(const std::string& reason) {
-  protocol::Message abort;
-  abort.header.type = protocol::Type::Abort;
-  abort.arrays.push_back(protocol::Array::text(reason));
+  const protocol::Message abort = protocol::messages::abort(reason);
   for (auto& [name, p] : processes_) {
     if (p.poll()) continue;
     try {

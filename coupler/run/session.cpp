@@ -7,11 +7,13 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "coupler/launcher/command.hpp"
 #include "coupler/protocol/client.hpp"
 #include "coupler/protocol/field_message.hpp"
+#include "coupler/protocol/messages.hpp"
 #include "coupler/run/failure.hpp"
 #include "coupler/run/listening.hpp"
 #include "coupler/run/progress.hpp"
@@ -179,20 +181,9 @@ void Session::handshake(Peers& peers) {
                      : Exchange{initial_poses(scene_), Eigen::VectorXd::Zero(b * kForceSize)};
   std::map<std::string, protocol::Message> inits;
   for (const auto& name : roles_.all()) {
-    protocol::Message m;
-    m.header.type = protocol::Type::Init;
-    m.header.window = w;
-    m.header.t0 = window_start(w);
-    m.header.t1 = scene_.time.end;
-    m.arrays.push_back(protocol::Array::text(scene_.file.string()));
-    m.arrays.push_back(protocol::Array::text(scene_.text));
-    m.arrays.push_back(poses_array(current_.poses));
-    if (resume_) {
-      auto state = resume_->states.at(name);
-      const auto n = static_cast<std::uint32_t>(state.size());
-      m.arrays.push_back(protocol::Array::of(protocol::Tag::State, 1, n, std::move(state)));
-    }
-    inits.emplace(name, std::move(m));
+    inits.emplace(name, protocol::messages::init(w, window_start(w), scene_.time.end, scene_.file.string(), scene_.text,
+                                                 poses_array(current_.poses),
+                                                 resume_ ? std::optional(resume_->states.at(name)) : std::nullopt));
   }
   const auto ready = peers.exchange(std::move(inits), protocol::Type::Ready, when);
   for (const auto& [name, source] : field_source_)
@@ -224,9 +215,7 @@ void Session::windows(Peers& peers) {
     if (!r.converged)
       spdlog::warn("window {} (t = {} s): not converged after {} iterations, residual {:.3g}",
                    k, t1, r.iterations, r.residual);
-    protocol::Message commit;
-    commit.header.type = protocol::Type::Commit;
-    commit.header.window = k;
+    const protocol::Message commit = protocol::messages::commit(k);
     for (const auto& name : roles_.all()) peers.send(name, commit, in_window(k, window_start(k), t1));
     current_ = r.end;
     committed_ = k + 1;
@@ -265,13 +254,8 @@ std::map<std::string, field::FieldFrame> Session::request_fields(Peers& peers,
                                                                   const std::set<std::string>& providers,
                                                                   std::uint64_t window, const std::string& when) {
   std::map<std::string, protocol::Message> requests;
-  for (const auto& name : providers) {
-    protocol::Message m;
-    m.header.type = protocol::Type::Field;
-    m.header.window = window;
-    m.header.t0 = m.header.t1 = window_start(window);
-    requests.emplace(name, std::move(m));
-  }
+  for (const auto& name : providers)
+    requests.emplace(name, protocol::messages::field_request(window, window_start(window)));
   std::map<std::string, field::FieldFrame> frames;
   for (auto& [name, m] : peers.exchange(std::move(requests), protocol::Type::Field, when)) {
     try {
@@ -314,12 +298,7 @@ FieldArrays Session::forwarded_fields(Peers& peers, std::uint64_t window) {
 
 void Session::checkpoint(Peers& peers, std::uint64_t next_window) {
   std::map<std::string, protocol::Message> requests;
-  for (const auto& name : roles_.all()) {
-    protocol::Message m;
-    m.header.type = protocol::Type::Checkpoint;
-    m.header.window = next_window;
-    requests.emplace(name, std::move(m));
-  }
+  for (const auto& name : roles_.all()) requests.emplace(name, protocol::messages::checkpoint(next_window));
   output::Checkpoint c;
   c.next_window = next_window;
   c.time = window_start(next_window);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "coupler/protocol/field_message.hpp"
+#include "coupler/protocol/messages.hpp"
 #include "coupler/run/failure.hpp"
 
 namespace cosim::run {
@@ -73,25 +74,21 @@ Exchange WindowRunner::call(const std::vector<std::string>& names, const Span& s
                             const Exchange& start, const Exchange& end, WindowResult& r) {
   std::map<std::string, protocol::Message> requests;
   for (const auto& name : names) {
-    protocol::Message m;
-    m.header.type = protocol::Type::Advance;
-    m.header.window = s.window;
-    m.header.iteration = static_cast<std::uint32_t>(iteration);
-    m.header.t0 = s.t0;
-    m.header.t1 = s.t1;
+    std::vector<protocol::Array> inputs;
     if (scene::has(roles_.needs.at(name), scene::Data::Poses)) {
-      m.arrays.push_back(poses_array(start.poses));
-      m.arrays.push_back(poses_array(end.poses));
+      inputs.push_back(poses_array(start.poses));
+      inputs.push_back(poses_array(end.poses));
     }
     if (scene::has(roles_.needs.at(name), scene::Data::Forces)) {
-      m.arrays.push_back(forces_array(start.forces));
-      m.arrays.push_back(forces_array(end.forces));
+      inputs.push_back(forces_array(start.forces));
+      inputs.push_back(forces_array(end.forces));
     }
     if (const auto f = s.fields.find(name); f != s.fields.end()) {
-      m.arrays.insert(m.arrays.end(), f->second.begin(), f->second.end());
+      inputs.insert(inputs.end(), f->second.begin(), f->second.end());
       r.field_bytes[name] += static_cast<double>(protocol::payload_bytes(f->second));
     }
-    requests.emplace(name, std::move(m));
+    requests.emplace(name, protocol::messages::advance(s.window, static_cast<std::uint32_t>(iteration), s.t0, s.t1,
+                                                       std::move(inputs)));
   }
   const auto replies = peers_.exchange(std::move(requests), protocol::Type::Result, s.when);
 

@@ -7,20 +7,15 @@
 #include "fluid/program/body_surfaces.hpp"
 #include "fluid/program/cell_fields.hpp"
 #include "fluid/program/petsc_flags.hpp"
-#include "coupler/participant/body_rows.hpp"
 #include "coupler/participant/poses_at.hpp"
-#include "coupler/protocol/message.hpp"
 
 namespace cosim::program {
 namespace {
 
-constexpr std::size_t kPoseWidth = protocol::kPoseWidth;
-constexpr std::size_t kForceWidth = protocol::kForceWidth;
-
-void check_size(const std::vector<double>& values, std::size_t bodies, const char* what) {
-  if (values.size() != kPoseWidth * bodies)
-    throw std::runtime_error(std::string(what) + " for " + std::to_string(values.size() / kPoseWidth) +
-                             " bodies, the scene has " + std::to_string(bodies));
+void check_size(const std::vector<participant::PoseRow>& poses, std::size_t bodies) {
+  if (poses.size() != bodies)
+    throw std::runtime_error("poses for " + std::to_string(poses.size()) + " bodies, the scene has " +
+                             std::to_string(bodies));
 }
 
 // Periodic axes have their faces from the grid already.
@@ -55,7 +50,8 @@ FluidSolver::~FluidSolver() = default;
 const fluid::NavierStokes& FluidSolver::flow() const { return flow_->flow; }
 
 participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const std::string&,
-                                             const std::vector<double>& poses, const std::vector<double>& state) {
+                                             const std::vector<participant::PoseRow>& poses,
+                                             const std::vector<double>& state) {
   setup_ = fluid_setup(scene);
   // Before the solvers exist: they read the flags when they are created.
   insert_petsc_flags(setup_.petsc);
@@ -67,48 +63,51 @@ participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const st
   // The coupler's poses (the rigid-body program's centres of mass) win over the scene's.
   place(prescribed_ || poses.empty() ? program::poses_at(setup_.motions, 0) : poses);
   if (!state.empty()) restore(state);
-  return {prescribed_ ? poses_ : std::vector<double>{}, forces(), 0};
+  return {prescribed_ ? poses_ : std::vector<participant::PoseRow>{}, forces(), 0};
 }
 
 participant::Outputs FluidSolver::advance(const participant::Window& w, const participant::Inputs& in) {
-  if (!in.poses_start.empty()) check_size(in.poses_start, setup_.bodies.size(), "poses");
+  if (!in.poses_start.empty()) check_size(in.poses_start, setup_.bodies.size());
   // The window's mean load, the impulse over the window's length: a face switching between
   // fluid and solid gives the staircase FBM's load a one-step spike, which as the window-end
   // value would act on the body for the whole window.
-  std::vector<double> mean(kForceWidth * setup_.bodies.size(), 0.0);
+  std::vector<participant::ForceRow> mean(setup_.bodies.size());
   const double length = w.t1 - w.t0;
   const auto steps = flow_->flow.advance_to(
       w.t1, flow_->bodies->for_step(), [&](double t) { place(poses_at(w, in, t)); },
       [&](const fluid::StepReport& r) {
         if (!std::isfinite(r.max_divergence))
           throw std::runtime_error("fluid diverged at t = " + std::to_string(r.time) + " (non-finite velocity)");
-        const std::vector<double> f = forces();
-        for (std::size_t i = 0; i < f.size(); ++i) mean[i] += f[i] * r.dt / length;
+        const std::vector<participant::ForceRow> f = forces();
+        for (std::size_t b = 0; b < f.size(); ++b) {
+          mean[b].force += f[b].force * r.dt / length;
+          mean[b].torque += f[b].torque * r.dt / length;
+        }
       });
   steps_ += steps.size();
   for (const fluid::StepReport& r : steps) stage_seconds_ += r.seconds;
-  return {prescribed_ ? poses_ : std::vector<double>{}, mean, static_cast<double>(steps.size())};
+  return {prescribed_ ? poses_ : std::vector<participant::PoseRow>{}, mean, static_cast<double>(steps.size())};
 }
 
-std::vector<double> FluidSolver::poses_at(const participant::Window& w, const participant::Inputs& in,
-                                          double t) const {
+std::vector<participant::PoseRow> FluidSolver::poses_at(const participant::Window& w,
+                                                        const participant::Inputs& in, double t) const {
   if (prescribed_) return program::poses_at(setup_.motions, t);
   if (in.poses_start.empty()) return poses_;
   return participant::poses_at(in, w, t);
 }
 
-void FluidSolver::place(const std::vector<double>& poses) {
-  check_size(poses, setup_.bodies.size(), "poses");
+void FluidSolver::place(const std::vector<participant::PoseRow>& poses) {
+  check_size(poses, setup_.bodies.size());
   poses_ = poses;
-  for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
-    const participant::PoseRow row = participant::pose_row(poses, b);
+  for (std::size_t b = 0; b < poses.size(); ++b) {
+    const participant::PoseRow& row = poses[b];
     flow_->bodies->move(b, geometry::Pose(row.position, row.orientation), row.velocity, row.angular_velocity);
   }
 }
 
-std::vector<double> FluidSolver::forces() const {
-  std::vector<double> out;
-  for (const fluid::HydrodynamicLoad& l : flow_->bodies->loads(flow_->flow)) participant::append(out, {l.force, l.torque});
+std::vector<participant::ForceRow> FluidSolver::forces() const {
+  std::vector<participant::ForceRow> out;
+  for (const fluid::HydrodynamicLoad& l : flow_->bodies->loads(flow_->flow)) out.push_back({l.force, l.torque});
   return out;
 }
 

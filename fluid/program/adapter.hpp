@@ -18,7 +18,8 @@ class FluidSolver final : public participant::Solver {
   ~FluidSolver() override;
 
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
-                                  const std::vector<double>& poses, const std::vector<double>& state) override;
+                                  const std::vector<participant::PoseRow>& poses,
+                                  const std::vector<double>& state) override;
   // Subcycles with the flow's adaptive dt to exactly w.t1; before each step the bodies are
   // placed where they are at the step's end (inputs interpolated linearly in the window,
   // or held where no inputs come).
@@ -36,14 +37,15 @@ class FluidSolver final : public participant::Solver {
 
  private:
   struct Flow;
-  std::vector<double> poses_at(const participant::Window& w, const participant::Inputs& in, double t) const;
-  void place(const std::vector<double>& poses);
-  std::vector<double> forces() const;  // 6 per body: the loads of the flow as it is
+  std::vector<participant::PoseRow> poses_at(const participant::Window& w, const participant::Inputs& in,
+                                             double t) const;
+  void place(const std::vector<participant::PoseRow>& poses);
+  std::vector<participant::ForceRow> forces() const;  // per body: the loads of the flow as it is
 
   bool prescribed_;
   FluidSetup setup_;
   std::unique_ptr<Flow> flow_;
-  std::vector<double> poses_;  // where the bodies are now, b x 13
+  std::vector<participant::PoseRow> poses_;  // where the bodies are now
   std::size_t steps_ = 0;
   fluid::StageSeconds stage_seconds_;
 };

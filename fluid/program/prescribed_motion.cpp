@@ -6,7 +6,6 @@
 #include <string>
 
 #include "coupler/participant/body_rows.hpp"
-#include "coupler/protocol/message.hpp"
 #include "coupler/scene/eigen.hpp"
 
 namespace cosim::program {
@@ -53,9 +52,9 @@ std::vector<Motion> read_motions(const scene::Scene& scene, const scene::Reader&
   return start;
 }
 
-std::vector<double> poses_at(const std::vector<Motion>& motions, double t) {
-  std::vector<double> out;
-  out.reserve(protocol::kPoseWidth * motions.size());
+std::vector<participant::PoseRow> poses_at(const std::vector<Motion>& motions, double t) {
+  std::vector<participant::PoseRow> out;
+  out.reserve(motions.size());
   for (const Motion& m : motions) {
     Eigen::Vector3d x = m.position + m.velocity * t, v = m.velocity, w = m.angular_velocity;
     Eigen::Quaterniond q = turned(m.orientation, m.angular_velocity, t);
@@ -67,7 +66,7 @@ std::vector<double> poses_at(const std::vector<Motion>& motions, double t) {
       q = turned(m.orientation, m.angular_amplitude, phase);
       w = m.angular_amplitude * rate;
     }
-    participant::append(out, {x, q, v, w});
+    out.push_back({x, q, v, w});
   }
   return out;
 }

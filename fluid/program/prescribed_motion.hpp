@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "coupler/participant/body_rows.hpp"
 #include "coupler/scene/reader.hpp"
 
 namespace cosim::program {
@@ -31,8 +32,7 @@ struct Motion {
 // holds each body's motion with position and orientation at t = 0 already set.
 std::vector<Motion> read_motions(const scene::Scene& scene, const scene::Reader& options, std::vector<Motion> start);
 
-// b x 13 values at time t (protocol::kPoseWidth per body: position, quaternion w x y z,
-// velocity, angular velocity).
-std::vector<double> poses_at(const std::vector<Motion>& motions, double t);
+// The bodies' poses at time t.
+std::vector<participant::PoseRow> poses_at(const std::vector<Motion>& motions, double t);
 
 }  // namespace cosim::program

@@ -13,14 +13,6 @@
 namespace cosim::program {
 namespace {
 
-constexpr std::size_t kPoseWidth = protocol::kPoseWidth;
-constexpr std::size_t kForceWidth = protocol::kForceWidth;
-
-dynamics::Wrench wrench_at(const std::vector<double>& forces, std::size_t body) {
-  const participant::ForceRow f = participant::force_row(forces, body);
-  return {f.force, f.torque};
-}
-
 // The forces the fluid and the tracker send are the window's means (impulse over length),
 // so each acts constant over its window: the newest one the scheme has, the end value.
 // Empty forces: nobody sends any in this run, so the bodies feel only their own effects.
@@ -28,11 +20,11 @@ dynamics::Wrench wrench_at(const std::vector<double>& forces, std::size_t body) 
 std::vector<dynamics::WindowWrench> wrenches(const participant::Inputs& in, std::size_t bodies, std::size_t world_size) {
   const auto& mean = in.forces_end.empty() ? in.forces_start : in.forces_end;
   if (mean.empty()) return {};
-  if (mean.size() != kForceWidth * bodies)
-    throw std::runtime_error("forces for " + std::to_string(mean.size() / kForceWidth) + " bodies, the scene has " +
+  if (mean.size() != bodies)
+    throw std::runtime_error("forces for " + std::to_string(mean.size()) + " bodies, the scene has " +
                              std::to_string(bodies));
   std::vector<dynamics::WindowWrench> out;
-  for (std::size_t b = 0; b < bodies; ++b) out.push_back({wrench_at(mean, b), wrench_at(mean, b)});
+  for (const participant::ForceRow& f : mean) out.push_back({{f.force, f.torque}, {f.force, f.torque}});
   out.resize(world_size);
   return out;
 }
@@ -49,7 +41,8 @@ dynamics::BodyState state_of(const participant::PoseRow& row) {
 }  // namespace
 
 participant::Outputs RigidSolver::initialise(const scene::Scene& scene, const std::string&,
-                                             const std::vector<double>&, const std::vector<double>& state) {
+                                             const std::vector<participant::PoseRow>&,
+                                             const std::vector<double>& state) {
   // The scene gives the initial poses (with each mesh's centre-of-mass shift), so the
   // coupler's are not needed; a resumed run brings its own state.
   scene_ = scene;
@@ -74,7 +67,7 @@ participant::Outputs RigidSolver::advance(const participant::Window& w, const pa
 
 std::vector<double> RigidSolver::state() const {
   std::vector<double> s{world_->time()};
-  const auto p = poses();
+  const std::vector<double> p = participant::values_of(poses());
   s.insert(s.end(), p.begin(), p.end());
   if (virtual_mass_.active()) virtual_mass_.save(s, world_->size());
   world_->contact_memory().save(s);
@@ -83,7 +76,7 @@ std::vector<double> RigidSolver::state() const {
 
 void RigidSolver::restore(const std::vector<double>& state) {
   const std::size_t bodies = scene_.bodies.size();
-  std::size_t fixed_part = 1 + kPoseWidth * bodies;
+  std::size_t fixed_part = 1 + protocol::kPoseWidth * bodies;
   if (state.size() < fixed_part)
     throw std::runtime_error("restart state has " + std::to_string(state.size()) + " values, expected at least " +
                              std::to_string(fixed_part));
@@ -95,16 +88,17 @@ void RigidSolver::restore(const std::vector<double>& state) {
   }
   // The world itself is kept: everything else in it is rebuilt every substep.
   world_->set_time(state[0]);
-  for (std::size_t b = 0; b < bodies; ++b)
-    world_->states()[b] = state_of(participant::pose_row(std::span(state).subspan(1), b));
+  const std::vector<participant::PoseRow> poses =
+      participant::pose_rows(std::span(state).subspan(1, protocol::kPoseWidth * bodies));
+  for (std::size_t b = 0; b < bodies; ++b) world_->states()[b] = state_of(poses[b]);
 }
 
-std::vector<double> RigidSolver::poses() const {
+std::vector<participant::PoseRow> RigidSolver::poses() const {
   const std::size_t bodies = scene_.bodies.size();
-  std::vector<double> out;
+  std::vector<participant::PoseRow> out;
   for (std::size_t b = 0; b < bodies; ++b) {
     const dynamics::BodyState& s = world_->states()[b];
-    participant::append(out, {s.position, s.orientation, s.velocity, s.angular_velocity});
+    out.push_back({s.position, s.orientation, s.velocity, s.angular_velocity});
   }
   return out;
 }

@@ -14,7 +14,8 @@ namespace cosim::program {
 class RigidSolver final : public participant::Solver {
  public:
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
-                                  const std::vector<double>& poses, const std::vector<double>& state) override;
+                                  const std::vector<participant::PoseRow>& poses,
+                                  const std::vector<double>& state) override;
   participant::Outputs advance(const participant::Window& w, const participant::Inputs& in) override;
   // [time, per body its 13 pose values (protocol::kPoseWidth), with a virtual mass the
   // previous window's applied wrenches (VirtualMass::save), then the contact memory
@@ -29,7 +30,7 @@ class RigidSolver final : public participant::Solver {
   const world::StageSeconds& stage_seconds() const { return stage_seconds_; }
 
  private:
-  std::vector<double> poses() const;
+  std::vector<participant::PoseRow> poses() const;
 
   scene::Scene scene_;
   std::unique_ptr<world::World> world_;

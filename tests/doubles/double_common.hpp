@@ -12,9 +12,6 @@ namespace cosim::doubles {
 
 enum class Integrator { Verlet, Euler };
 
-inline constexpr auto kPose = protocol::kPoseWidth;
-inline constexpr auto kLoad = protocol::kForceWidth;
-
 struct Common {
   Integrator integrator = Integrator::Verlet;
   double dt = 0.0;

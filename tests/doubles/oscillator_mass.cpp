@@ -11,7 +11,7 @@ namespace {
 class MassSolver final : public participant::Solver {
  public:
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
-                                  const std::vector<double>& poses,
+                                  const std::vector<participant::PoseRow>& poses,
                                   const std::vector<double>& state) override {
     const auto& p = section(scene, name);
     const auto options = scene::options_of(scene, p);
@@ -36,11 +36,10 @@ class MassSolver final : public participant::Solver {
     for (std::size_t b = 0; b < mass_.size(); ++b) {
       if (mass_[b] == 0.0) continue;
       for (int axis = 0; axis < 3; ++axis) {
-        double& x = poses_[kPose * b + axis];
-        double& v = poses_[kPose * b + 7 + axis];
+        double& x = poses_[b].position[axis];
+        double& v = poses_[b].velocity[axis];
         const auto force = [&](double, double s) {
-          const auto i = kLoad * b + axis;
-          return participant::lerp(in.forces_start[i], in.forces_end[i], w, s) / mass_[b];
+          return participant::lerp(in.forces_start[b].force[axis], in.forces_end[b].force[axis], w, s) / mass_[b];
         };
         for (int i = 0; i < n; ++i) step(common_.integrator, x, v, w.t0 + i * h, h, force);
       }
@@ -48,16 +47,17 @@ class MassSolver final : public participant::Solver {
     return {poses_, {}, static_cast<double>(n)};
   }
 
-  std::vector<double> state() const override { return poses_; }
+  std::vector<double> state() const override { return participant::values_of(poses_); }
   void restore(const std::vector<double>& state) override {
-    if (state.size() != poses_.size()) throw std::runtime_error("restart state has the wrong size");
-    poses_ = state;
+    if (state.size() != protocol::kPoseWidth * poses_.size())
+      throw std::runtime_error("restart state has the wrong size");
+    poses_ = participant::pose_rows(state);
   }
 
  private:
   Common common_;
   std::vector<double> mass_;   // 0 for fixed bodies
-  std::vector<double> poses_;  // bodies x 13
+  std::vector<participant::PoseRow> poses_;
 };
 
 }  // namespace

@@ -10,7 +10,7 @@ namespace {
 class SpringSolver final : public participant::Solver {
  public:
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
-                                  const std::vector<double>& poses,
+                                  const std::vector<participant::PoseRow>& poses,
                                   const std::vector<double>& state) override {
     const auto& p = section(scene, name);
     const auto options = scene::options_of(scene, p);
@@ -31,7 +31,7 @@ class SpringSolver final : public participant::Solver {
     }
     if (body_ == bodies_) throw std::runtime_error("the spring needs a dynamic body to pull");
     if (!state.empty()) restore(state);
-    return {{}, force_on_body(poses[kPose * body_]), 0};
+    return {{}, force_on_body(poses[body_].position.x()), 0};
   }
 
   participant::Outputs advance(const participant::Window& w,
@@ -39,7 +39,7 @@ class SpringSolver final : public participant::Solver {
     common_.on_window(w);
     const auto n = static_cast<int>(std::lround((w.t1 - w.t0) / common_.dt));
     const double h = (w.t1 - w.t0) / n;
-    const double x1_start = in.poses_start[kPose * body_], x1_end = in.poses_end[kPose * body_];
+    const double x1_start = in.poses_start[body_].position.x(), x1_end = in.poses_end[body_].position.x();
     const auto x1 = [&](double s) { return participant::lerp(x1_start, x1_end, w, s); };
     const auto accel = [&](double x2, double s) {
       return (-k_ * (x2 - x1(s) - rest_) - k2_ * (x2 - anchor_)) / m2_;
@@ -56,9 +56,9 @@ class SpringSolver final : public participant::Solver {
   }
 
  private:
-  std::vector<double> force_on_body(double x1) const {
-    std::vector<double> forces(kLoad * (bodies_ + static_cast<std::size_t>(extra_rows_)), 0.0);
-    forces[kLoad * body_] = k_ * (x2_ - x1 - rest_);
+  std::vector<participant::ForceRow> force_on_body(double x1) const {
+    std::vector<participant::ForceRow> forces(bodies_ + static_cast<std::size_t>(extra_rows_));
+    forces[body_].force.x() = k_ * (x2_ - x1 - rest_);
     return forces;
   }
 

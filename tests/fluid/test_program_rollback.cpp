@@ -11,12 +11,12 @@ namespace {
 
 constexpr double kWindow = 0.05;
 
-// The forces of the last window.
+// The forces of the last window, as their wire values.
 std::vector<double> run_windows(FluidSolver& solver, std::uint64_t from, std::uint64_t to) {
-  std::vector<double> forces;
+  std::vector<participant::ForceRow> forces;
   for (std::uint64_t k = from; k < to; ++k)
     forces = solver.advance({k, 1, static_cast<double>(k) * kWindow, static_cast<double>(k + 1) * kWindow}, {}).forces;
-  return forces;
+  return participant::values_of(forces);
 }
 
 scene::Scene oscillating() { return scene::load_scene_from_string(testing::oscillating_cylinder_scene("", 0.5, kWindow)); }

@@ -86,7 +86,7 @@ TEST(FluidScene, BodyMethodAndItsOptions) {
 TEST(FluidScene, PrescribedMotionIsFixedConstantOrSinusoidal) {
   const FluidSetup s = setup_of(oscillating_cylinder_scene());
   const double t = 0.1, omega = 2 * std::numbers::pi * 2;
-  const std::vector<double> p = poses_at(s.motions, t);
+  const std::vector<double> p = participant::values_of(poses_at(s.motions, t));
   ASSERT_EQ(p.size(), 13u);
   EXPECT_DOUBLE_EQ(p[0], 0.2 + 0.05 * std::sin(omega * t));
   EXPECT_DOUBLE_EQ(p[7], 0.05 * omega * std::cos(omega * t));
@@ -97,14 +97,14 @@ TEST(FluidScene, PrescribedMotionIsFixedConstantOrSinusoidal) {
                               "material: {density: 1000}, velocity: [0.1, 0, 0], angular_velocity: [0, 0, 3.0],");
   free = replaced(free, "      motion: {cyl: {type: sinusoidal, amplitude: [0.05, 0, 0], frequency: 2}}\n", "");
   free += "  rigidbody: {dt: 0.01}\n";
-  const std::vector<double> c = poses_at(setup_of(free).motions, 0.5);
+  const std::vector<double> c = participant::values_of(poses_at(setup_of(free).motions, 0.5));
   EXPECT_DOUBLE_EQ(c[0], 0.25);
   EXPECT_NEAR(c[3], std::cos(0.75), 1e-15);  // 1.5 rad about z: w = cos(0.75)
   EXPECT_NEAR(c[6], std::sin(0.75), 1e-15);
   EXPECT_EQ(c[12], 3.0);
   const std::string fixed = replaced(free, "participants:\n  fluid:\n    dt: 0.01\n    options:\n",
                                      "participants:\n  fluid:\n    dt: 0.01\n    options:\n      motion: {cyl: {type: fixed}}\n");
-  const std::vector<double> f = poses_at(setup_of(fixed).motions, 0.5);
+  const std::vector<double> f = participant::values_of(poses_at(setup_of(fixed).motions, 0.5));
   EXPECT_EQ(f[0], 0.2);
   EXPECT_EQ(f[7], 0.0);
 }
@@ -120,7 +120,7 @@ TEST(FluidScene, SinusoidalRotationTurnsAboutAFixedAxis) {
   const FluidSetup s = setup_of(text);
   const double omega = 2 * std::numbers::pi * 2, r2 = std::sqrt(0.5);
   for (const double t : {0.0, 0.03, 0.1, 0.2, 0.37}) {
-    const std::vector<double> p = poses_at(s.motions, t);
+    const std::vector<double> p = participant::values_of(poses_at(s.motions, t));
     const double theta = 0.5 * std::sin(omega * t), c = std::cos(theta / 2), si = std::sin(theta / 2);
     EXPECT_NEAR(p[0], 0.2 + 0.05 * std::sin(omega * t), 1e-15) << t;
     const double expected_q[] = {c * r2, si * r2, -si * r2, c * r2};
@@ -132,7 +132,7 @@ TEST(FluidScene, SinusoidalRotationTurnsAboutAFixedAxis) {
   }
   // Rotation alone: no translation.
   const std::string turning = replaced(text, "amplitude: [0.05, 0, 0], ", "");
-  const std::vector<double> r = poses_at(setup_of(turning).motions, 0.1);
+  const std::vector<double> r = participant::values_of(poses_at(setup_of(turning).motions, 0.1));
   EXPECT_EQ(r[0], 0.2);
   EXPECT_EQ(r[7], 0.0);
   EXPECT_NEAR(r[10], 0.5 * omega * std::cos(omega * 0.1), 1e-14);

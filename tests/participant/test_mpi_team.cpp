@@ -20,16 +20,16 @@ int rank() {
 // ranks, so a rank that missed the call or its inputs shows in the result.
 class RankSolver final : public Solver {
  public:
-  Outputs initialise(const scene::Scene&, const std::string&, const std::vector<double>&,
+  Outputs initialise(const scene::Scene&, const std::string&, const std::vector<PoseRow>&,
                      const std::vector<double>& state) override {
     values_ = state.empty() ? std::vector<double>(static_cast<std::size_t>(rank() + 1), 10.0 * rank()) : state;
     return {};
   }
   Outputs advance(const Window& w, const Inputs& in) override {
-    double local = w.t1 + in.poses_start.at(0), sum = 0;
+    double local = w.t1 + in.poses_start.at(0).position.x(), sum = 0;
     MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
     for (double& v : values_) v += 1;
-    return {{}, {sum}, 1};
+    return {{}, {ForceRow{{sum, 0, 0}, Eigen::Vector3d::Zero()}}, 1};
   }
   std::vector<double> state() const override { return values_; }
   void restore(const std::vector<double>& state) override { values_ = state; }
@@ -51,8 +51,8 @@ TEST(MpiTeam, CallsReachEveryRankAndTheStateRoundTrips) {
     lead.initialise(tiny_scene(), "spring", {}, {});
     EXPECT_EQ(lead.state(), (std::vector<double>{2, 1, 2, 0, 10, 10}));  // ranks, sizes, values
     Inputs in;
-    in.poses_start = {0.25};
-    EXPECT_EQ(lead.advance({0, 1, 0.0, 0.5}, in).forces, (std::vector<double>{1.5}));  // 2 x (0.5 + 0.25)
+    in.poses_start.emplace_back().position.x() = 0.25;
+    EXPECT_EQ(lead.advance({0, 1, 0.0, 0.5}, in).forces.at(0).force.x(), 1.5);  // 2 x (0.5 + 0.25)
     const std::vector<double> saved = lead.state();
     EXPECT_EQ(saved, (std::vector<double>{2, 1, 2, 1, 11, 11}));
     lead.advance({1, 1, 0.5, 1.0}, in);
@@ -83,7 +83,7 @@ TEST(MpiTeam, AStateOfAnotherRankCountIsRefusedAndTheTeamGoesOn) {
 // that point's first attribute value.
 class PointSetSolver final : public Solver {
  public:
-  Outputs initialise(const scene::Scene&, const std::string&, const std::vector<double>&,
+  Outputs initialise(const scene::Scene&, const std::string&, const std::vector<PoseRow>&,
                      const std::vector<double>&) override {
     return {};
   }
@@ -91,7 +91,7 @@ class PointSetSolver final : public Solver {
     const field::PointSet* set = in.fields ? &in.fields->point_sets.at(0) : nullptr;
     double local = set ? set->points.at(2) + set->attributes.at(0).values.at(0) : -100.0, sum = 0;
     MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-    return {{}, {sum}, 1};
+    return {{}, {ForceRow{{sum, 0, 0}, Eigen::Vector3d::Zero()}}, 1};
   }
   std::vector<double> state() const override { return {}; }
   void restore(const std::vector<double>&) override {}
@@ -107,7 +107,7 @@ TEST(MpiTeam, AForwardedFrameReachesEveryRankWithItsPointSets) {
     in.fields = field::FieldFrame{field::RectilinearGrid{{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}},
                                    {{"p", 1, {1.0}}},
                                    {{"ball", {0.5, 0.5, 2.5}, {{"id", 1, {4.0}, true}}}}};
-    EXPECT_EQ(lead.advance({0, 1, 0.0, 0.5}, in).forces, (std::vector<double>{13.0}));  // 2 x (2.5 + 4)
+    EXPECT_EQ(lead.advance({0, 1, 0.0, 0.5}, in).forces.at(0).force.x(), 13.0);  // 2 x (2.5 + 4)
     return 0;
   });
 }

@@ -4,22 +4,16 @@
 #include <stdexcept>
 #include <string>
 
-#include "coupler/participant/body_rows.hpp"
 #include "coupler/participant/poses_at.hpp"
 #include "tracker/program/cell_fields.hpp"
 #include "tracker/program/particle_dump.hpp"
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/velocity_input.hpp"
-#include "coupler/protocol/message.hpp"
 
 namespace cosim::tracker {
 namespace {
 
-constexpr std::size_t kPoseWidth = protocol::kPoseWidth;
-constexpr std::size_t kForceWidth = protocol::kForceWidth;
-
-Eigen::Isometry3d pose_of(const std::vector<double>& poses, std::size_t body) {
-  const participant::PoseRow row = participant::pose_row(poses, body);
+Eigen::Isometry3d pose_of(const participant::PoseRow& row) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.translate(row.position);
   pose.rotate(row.orientation.normalized());
@@ -29,13 +23,14 @@ Eigen::Isometry3d pose_of(const std::vector<double>& poses, std::size_t body) {
 }  // namespace
 
 participant::Outputs TrackerSolver::initialise(const scene::Scene& scene, const std::string&,
-                                               const std::vector<double>& poses, const std::vector<double>& state) {
+                                               const std::vector<participant::PoseRow>& poses,
+                                               const std::vector<double>& state) {
   bodies_ = scene.bodies.size();
   windows_ = scene.windows();
   check_size(poses);
   // The coupler's poses (the rigid-body program's) win over the scene's.
   std::vector<Eigen::Isometry3d> placed;
-  for (std::size_t b = 0; b < poses.size() / kPoseWidth; ++b) placed.push_back(pose_of(poses, b));
+  for (const participant::PoseRow& row : poses) placed.push_back(pose_of(row));
   TrackerScene setup = read_tracker(scene, ranks_);
   place_bound_obstacles(setup, placed);
   obstacle_body_ = setup.obstacle_body;
@@ -43,12 +38,12 @@ participant::Outputs TrackerSolver::initialise(const scene::Scene& scene, const 
   gas_ = std::make_unique<Simulation>(std::move(setup), ranks_);
   if (ranks_.lead()) grid_ = output_grid(*gas_);
   if (!state.empty()) restore(state);
-  return {{}, std::vector<double>(kForceWidth * bodies_, 0.0), 0};
+  return {{}, std::vector<participant::ForceRow>(bodies_), 0};
 }
 
-void TrackerSolver::check_size(const std::vector<double>& poses) const {
-  if (!poses.empty() && poses.size() != kPoseWidth * bodies_)
-    throw std::runtime_error("poses for " + std::to_string(poses.size() / kPoseWidth) + " bodies, the scene has " +
+void TrackerSolver::check_size(const std::vector<participant::PoseRow>& poses) const {
+  if (!poses.empty() && poses.size() != bodies_)
+    throw std::runtime_error("poses for " + std::to_string(poses.size()) + " bodies, the scene has " +
                              std::to_string(bodies_));
 }
 
@@ -60,10 +55,11 @@ participant::Outputs TrackerSolver::advance(const participant::Window& w, const 
   const std::vector<int>& body_of = obstacle_body_;
   const int steps = gas_->advance(w.t0, w.t1, [&](double t, double h) {
     if (in.poses_start.empty()) return;
-    const std::vector<double> poses = participant::poses_at(in, w, t);
+    const std::vector<participant::PoseRow> poses = participant::poses_at(in, w, t);
     check_size(poses);
     for (std::size_t i = 0; i < body_of.size(); ++i)
-      if (body_of[i] >= 0) gas_->move_obstacle(static_cast<int>(i), pose_of(poses, static_cast<std::size_t>(body_of[i])), h);
+      if (body_of[i] >= 0)
+        gas_->move_obstacle(static_cast<int>(i), pose_of(poses[static_cast<std::size_t>(body_of[i])]), h);
   });
   if (const long long lost = gas_->moves().lost; lost > 0)
     throw std::runtime_error(std::to_string(lost) + " particles lost (outside their cells) by t = " +
@@ -79,9 +75,7 @@ participant::Outputs TrackerSolver::advance(const participant::Window& w, const 
     row.force += scale * (after[i].impulse - before[i].impulse);
     row.torque += scale * (after[i].angular_impulse - before[i].angular_impulse);
   }
-  std::vector<double> forces;
-  for (const participant::ForceRow& row : on) participant::append(forces, row);
-  return {{}, forces, static_cast<double>(steps)};
+  return {{}, on, static_cast<double>(steps)};
 }
 
 field::FieldFrame TrackerSolver::fields() const {

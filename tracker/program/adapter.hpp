@@ -27,7 +27,8 @@ class TrackerSolver final : public participant::Solver {
   explicit TrackerSolver(Ranks ranks = {}, Draws draws = Draws::per_window) : ranks_(ranks), draws_(draws) {}
 
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
-                                  const std::vector<double>& poses, const std::vector<double>& state) override;
+                                  const std::vector<participant::PoseRow>& poses,
+                                  const std::vector<double>& state) override;
   // Subcycles to exactly w.t1 in equal steps of at most the participant's dt; before each
   // step the bound obstacles move to their body's pose at the step's end (inputs
   // interpolated in the window); forwarded fields replace the tracers' velocity field
@@ -50,7 +51,7 @@ class TrackerSolver final : public participant::Solver {
   const OutputGrid& grid() const { return grid_; }  // rank 0's; empty on the others
 
  private:
-  void check_size(const std::vector<double>& poses) const;
+  void check_size(const std::vector<participant::PoseRow>& poses) const;
 
   Ranks ranks_;
   Draws draws_;

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "coupler/protocol/message.hpp"
 #include "rigidbody/program/adapter.hpp"
 
 namespace cosim::program {
@@ -31,9 +30,10 @@ TEST(FreeFall, FollowsTheParabolaToFirstOrder) {
     const double t = w.t1;
     // Semi-implicit Euler: v_n = -g t_n, z_n = z0 - g t_n^2 / 2 - g h t_n / 2 exactly, so
     // the error against the parabola is g h t / 2 (4.9e-3 m at t = 1 s), first order in h.
-    EXPECT_NEAR(out.poses[2], z0 - g * t * t / 2 - g * h * t / 2, 1e-9) << "t = " << t;
-    EXPECT_LE(std::abs(out.poses[2] - (z0 - g * t * t / 2)), g * h * t / 2 + 1e-9);
-    EXPECT_NEAR(out.poses[9], -g * t, 1e-9);
+    const double z = out.poses.at(0).position.z();
+    EXPECT_NEAR(z, z0 - g * t * t / 2 - g * h * t / 2, 1e-9) << "t = " << t;
+    EXPECT_LE(std::abs(z - (z0 - g * t * t / 2)), g * h * t / 2 + 1e-9);
+    EXPECT_NEAR(out.poses[0].velocity.z(), -g * t, 1e-9);
   }
 }
 
@@ -44,9 +44,10 @@ TEST(FreeFall, ForcesFromTheCouplerAct) {
   solver.initialise(scene, "rigidbody", {}, {});
   const double weight = 9.81 * 2500 * 4.0 / 3.0 * std::numbers::pi * 1e-3;
   participant::Inputs in;
-  in.forces_start = in.forces_end = {0, 0, weight, 0, 0, 0};
+  in.forces_start.emplace_back().force.z() = weight;
+  in.forces_end = in.forces_start;
   const auto out = solver.advance({0, 1, 0.0, 0.01}, in);
-  EXPECT_NEAR(out.poses[2], 2.0, 1e-12);
+  EXPECT_NEAR(out.poses.at(0).position.z(), 2.0, 1e-12);
   const auto state = solver.state();
   solver.advance({1, 1, 0.01, 0.02}, {});
   solver.restore(state);
@@ -64,18 +65,18 @@ TEST(Walls, TheDomainFacesHoldTheBodiesInAndAreNotExchanged) {
       "participants:\n  rigidbody: {dt: 1.0e-3, options: {walls: [x_max, z_min]}}\n");
   RigidSolver solver;
   const auto start = solver.initialise(scene, "rigidbody", {}, {});
-  EXPECT_EQ(start.poses.size(), protocol::kPoseWidth);  // the walls are not bodies of the scene
-  std::vector<double> poses;
+  EXPECT_EQ(start.poses.size(), 1u);  // the walls are not bodies of the scene
+  Eigen::Vector3d position;
   double highest_x = 0;
   for (std::uint64_t k = 0; k < 200; ++k) {
-    poses = solver.advance({k, 1, k * 0.01, (k + 1) * 0.01}, {}).poses;
-    highest_x = std::max(highest_x, poses[0]);
+    position = solver.advance({k, 1, k * 0.01, (k + 1) * 0.01}, {}).poses.at(0).position;
+    highest_x = std::max(highest_x, position.x());
   }
   EXPECT_LE(highest_x, 0.9 + 1e-3);
-  EXPECT_NEAR(poses[2], 0.1, 1e-3);
+  EXPECT_NEAR(position.z(), 0.1, 1e-3);
   // One wrench per scene body is accepted; the walls take none.
   participant::Inputs in;
-  in.forces_start = in.forces_end = {0, 0, 0, 0, 0, 0};
+  in.forces_start = in.forces_end = {participant::ForceRow{}};
   EXPECT_NO_THROW(solver.advance({200, 1, 2.0, 2.01}, in));
 }
 

@@ -22,10 +22,11 @@ scene::Scene boxes() {
       "participants:\n  rigidbody: {dt: 1.0e-3, options: {solver: sequential-impulses, iterations: 10}}\n");
 }
 
+// The poses after the last window, as their wire values.
 std::vector<double> run_windows(RigidSolver& solver, std::uint64_t from, std::uint64_t to) {
-  std::vector<double> poses;
+  std::vector<participant::PoseRow> poses;
   for (std::uint64_t k = from; k < to; ++k) poses = solver.advance({k, 1, k * 0.01, (k + 1) * 0.01}, {}).poses;
-  return poses;
+  return participant::values_of(poses);
 }
 
 // Guards against: an implicit window repeated after a restore differing in the last bit (lost contact

@@ -262,9 +262,9 @@ TEST(TwoRanks, RepeatedWindowAfterRestoreGivesTheSameForces) {
     lead.advance({0, 1, 0.0, 1.0e-3}, {});
     const std::vector<double> state = lead.state();
     EXPECT_EQ(state.front(), 2);  // ranks: participant/mpi_team.hpp's layout
-    const std::vector<double> first = lead.advance({1, 1, 1.0e-3, 2.0e-3}, {}).forces;
+    const std::vector<double> first = participant::values_of(lead.advance({1, 1, 1.0e-3, 2.0e-3}, {}).forces);
     lead.restore(state);
-    const std::vector<double> again = lead.advance({1, 2, 1.0e-3, 2.0e-3}, {}).forces;
+    const std::vector<double> again = participant::values_of(lead.advance({1, 2, 1.0e-3, 2.0e-3}, {}).forces);
     EXPECT_EQ(first, again);
     // The stream's front reaches the sphere after 1.6 ms: the drag has begun.
     EXPECT_GT(first.at(0), 0.0);
@@ -299,7 +299,7 @@ participants:
   const auto inputs = [&](const participant::Window& w) {
     participant::Inputs in;
     for (auto [poses, t] : {std::pair{&in.poses_start, w.t0}, std::pair{&in.poses_end, w.t1}})
-      *poses = {-2 + u * t, 0, 0, 1, 0, 0, 0, u, 0, 0, 0, 0, 0};
+      *poses = {{{-2 + u * t, 0, 0}, Eigen::Quaterniond::Identity(), {u, 0, 0}, Eigen::Vector3d::Zero()}};
     return in;
   };
   TrackerSolver solver{Ranks(MPI_COMM_WORLD)};
@@ -308,9 +308,9 @@ participants:
     const participant::Window first{0, 1, 0.0, 0.25}, second{1, 1, 0.25, 0.5};
     lead.advance(first, inputs(first));
     const std::vector<double> state = lead.state();
-    const std::vector<double> forces = lead.advance(second, inputs(second)).forces;
+    const std::vector<double> forces = participant::values_of(lead.advance(second, inputs(second)).forces);
     lead.restore(state);
-    EXPECT_EQ(lead.advance({1, 2, 0.25, 0.5}, inputs(second)).forces, forces);
+    EXPECT_EQ(participant::values_of(lead.advance({1, 2, 0.25, 0.5}, inputs(second)).forces), forces);
     EXPECT_LT(forces.at(0), 0.0);  // the gas holds the ball back
     return 0;
   });

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "coupler/protocol/message.hpp"
 #include "coupler/scene/scene.hpp"
 #include "tracker/constants.hpp"
 #include "tracker/dsmc/free_molecular.hpp"
@@ -16,8 +15,6 @@
 
 namespace cosim::tracker {
 namespace {
-
-constexpr std::size_t kPose = protocol::kPoseWidth, kForce = protocol::kForceWidth;
 
 // Gas at 1 K with mass 2 k_B (most probable speed 1 m/s), at rest in a periodic box of
 // 16 x 10 x 10 cells of 0.5 m, 100 simulators per cell; no collisions (free-molecular). The
@@ -45,13 +42,10 @@ participants:
 
 // Both bodies' poses with the ball's centre at x along the x axis, moving at u, turned by
 // `angle` about (1, 2, 3) (a ball looks the same turned, but its pose does not).
-std::vector<double> poses(double x, double u, double angle = 0) {
-  std::vector<double> p(2 * kPose, 0.0);
-  p[0] = 3, p[1] = 2, p[2] = 2, p[3] = 1;
+std::vector<participant::PoseRow> poses(double x, double u, double angle = 0) {
   const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, 3).normalized()));
-  p[kPose + 0] = x, p[kPose + 3] = q.w(), p[kPose + 4] = q.x(), p[kPose + 5] = q.y(), p[kPose + 6] = q.z();
-  p[kPose + 7] = u;
-  return p;
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  return {{{3, 2, 2}, Eigen::Quaterniond::Identity(), zero, zero}, {{x, 0, 0}, q, {u, 0, 0}, zero}};
 }
 
 // `turn` rad/s about that axis too (a turning diffuse ball feels a torque and a side force).
@@ -72,11 +66,12 @@ TEST(TrackerAdapter, BallMovedThroughGasAtRestFeelsTheFreeMolecularDrag) {
   for (int k = 0; k < windows; ++k) {
     const participant::Window w{static_cast<std::uint64_t>(k), 1, 0.25 * k, 0.25 * (k + 1)};
     const participant::Outputs out = solver.advance(w, window_inputs(w, x0, u));
-    ASSERT_EQ(out.forces.size(), 2 * kForce);
+    ASSERT_EQ(out.forces.size(), 2u);
     EXPECT_EQ(out.substeps, 5);
-    for (std::size_t c = 0; c < kForce; ++c) EXPECT_EQ(out.forces[c], 0.0) << "idle body, component " << c;
-    force += Eigen::Vector3d(out.forces.data() + kForce) / windows;
-    torque += Eigen::Vector3d(out.forces.data() + kForce + 3) / windows;
+    EXPECT_EQ(out.forces[0].force, Eigen::Vector3d::Zero()) << "idle body";
+    EXPECT_EQ(out.forces[0].torque, Eigen::Vector3d::Zero()) << "idle body";
+    force += out.forces[1].force / windows;
+    torque += out.forces[1].torque / windows;
   }
   const double mass = 2.761298e-23, density = 100 / 0.125, radius = 0.8;
   const double expected = dsmc::sphere_drag(density, mass, u, 1.0, radius);  // speed ratio u: c_mp = 1
@@ -106,14 +101,15 @@ TEST(TrackerAdapter, RepeatedWindowAfterRestoreGivesTheSameForcesToTheBit) {
   EXPECT_EQ(solver.state(), start);
   const participant::Window again{1, 2, 0.25, 0.5};
   const participant::Outputs twice = solver.advance(again, window_inputs(again, -2, 2, 1));
-  EXPECT_EQ(twice.forces, once.forces);
+  EXPECT_EQ(participant::values_of(twice.forces), participant::values_of(once.forces));
   EXPECT_EQ(solver.state(), end);
-  EXPECT_NE(once.forces[kForce], 0.0);
+  EXPECT_NE(once.forces[1].force.x(), 0.0);
 
   // A fresh solver resumed from the state continues the same way (a checkpoint).
   TrackerSolver resumed;
   resumed.initialise(scene, "tracker", poses(-2, 2), start);
-  EXPECT_EQ(resumed.advance(second, window_inputs(second, -2, 2, 1)).forces, once.forces);
+  EXPECT_EQ(participant::values_of(resumed.advance(second, window_inputs(second, -2, 2, 1)).forces),
+            participant::values_of(once.forces));
 }
 
 TEST(TrackerAdapter, StateOfAnotherSceneIsRefused) {
