@@ -89,7 +89,8 @@ void append(Messages& out, int rank, const R& record, std::span<const csg::State
   const std::size_t at = to.size();
   to.resize(at + sizeof record + states.size_bytes());
   std::memcpy(to.data() + at, &record, sizeof record);
-  std::memcpy(to.data() + at + sizeof record, states.data(), states.size_bytes());
+  // Without obstacles there are no states, and memcpy of a null pointer is undefined.
+  if (!states.empty()) std::memcpy(to.data() + at + sizeof record, states.data(), states.size_bytes());
 }
 
 // Calls take(record, states) for each whole record of `records`.
@@ -103,7 +104,7 @@ void for_each_record(std::span<const std::byte> records, int objects, const Take
   for (std::size_t at = 0; at < records.size(); at += size) {
     R r;
     std::memcpy(&r, records.data() + at, sizeof r);
-    std::memcpy(states.data(), records.data() + at + sizeof r, states.size() * sizeof(csg::State));
+    if (!states.empty()) std::memcpy(states.data(), records.data() + at + sizeof r, states.size() * sizeof(csg::State));
     take(r, std::span<const csg::State>(states));
   }
 }

@@ -66,13 +66,13 @@ void put_cells(std::vector<double>& records, const Mesh& cells, Index c, std::sp
 
 std::vector<std::byte> bytes_of(std::span<const double> values) {
   std::vector<std::byte> bytes(values.size_bytes());
-  std::memcpy(bytes.data(), values.data(), bytes.size());
+  if (!bytes.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());  // memcpy of null: undefined
   return bytes;
 }
 
 std::vector<double> doubles_of(std::span<const std::byte> bytes) {
   std::vector<double> values(bytes.size() / sizeof(double));
-  std::memcpy(values.data(), bytes.data(), values.size() * sizeof(double));
+  if (!values.empty()) std::memcpy(values.data(), bytes.data(), values.size() * sizeof(double));
   return values;
 }
 
