@@ -19,12 +19,6 @@ std::vector<double> or_zeros(const std::vector<Row>& rows, std::size_t size) {
   return rows.empty() ? std::vector<double>(size, 0.0) : values_of(rows);
 }
 
-std::vector<std::string> body_names(const scene::Scene& scene) {
-  std::vector<std::string> names;
-  for (const auto& b : scene.bodies) names.push_back(b.name);
-  return names;
-}
-
 // The coupler's run file (output::RunFile), as run_standalone() says.
 class RunFileRecorder final : public Recorder {
  public:
@@ -35,7 +29,7 @@ class RunFileRecorder final : public Recorder {
         name_(name),
         file_(output::RunFile::create(
             path, {scene.text, scene.file.string(), COSIM_GIT_HASH, COSIM_VERSION, protocol::kVersion},
-            body_names(scene), {name})) {}
+            scene.body_names(), {name})) {}
 
   void record(std::uint64_t done, double time, const Outputs& out, double seconds) override {
     const std::uint64_t n = scene_.windows();

@@ -22,12 +22,6 @@ output::RunInfo info_of(const scene::Scene& scene) {
           protocol::kVersion};
 }
 
-std::vector<std::string> names_of(const scene::Scene& scene) {
-  std::vector<std::string> names;
-  for (const auto& b : scene.bodies) names.push_back(b.name);
-  return names;
-}
-
 }  // namespace
 
 int run(const RunRequest& request) {
@@ -54,7 +48,7 @@ int run(const RunRequest& request) {
     const auto& scene = session->scene();
     path = request.output.empty() ? fs::path(scene.output.file) : request.output;
     if (path.has_parent_path()) fs::create_directories(path.parent_path());
-    session->attach(output::RunFile::create(path, info_of(scene), names_of(scene), session->participant_names()),
+    session->attach(output::RunFile::create(path, info_of(scene), scene.body_names(), session->participant_names()),
                 std::nullopt, request.progress);
   }
 

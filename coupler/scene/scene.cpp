@@ -17,6 +17,12 @@ const Participant* Scene::participant(const std::string& name) const {
 
 std::size_t Scene::windows() const { return static_cast<std::size_t>(std::llround(time.end / coupling.window)); }
 
+std::vector<std::string> Scene::body_names() const {
+  std::vector<std::string> names;
+  for (const Body& b : bodies) names.push_back(b.name);
+  return names;
+}
+
 const char* to_string(Scheme s) { return scheme_names.at(static_cast<std::size_t>(s)); }
 const char* to_string(Acceleration a) { return acceleration_names.at(static_cast<std::size_t>(a)); }
 const char* to_string(Effect e) { return effect_names.at(static_cast<std::size_t>(e)); }

@@ -149,6 +149,7 @@ struct Scene {
   bool has_effect(Effect e) const;
   const Participant* participant(const std::string& name) const;
   std::size_t windows() const;             // time.end / coupling.window, exact by validation
+  std::vector<std::string> body_names() const;  // in body order, as the run file's rows
 };
 
 // Reads and validates. Throws SceneError (see error.hpp) naming file, line, key and value.
