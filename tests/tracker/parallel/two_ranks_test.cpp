@@ -1,12 +1,15 @@
 // The tracker's gas over two MPI ranks (run under `mpirun -n 2`): the partition is the
 // same on both ranks, migration delivers every particle with its states to the owner of its
-// cell, and a scene run on two ranks gives one rank's answer within the statistical
+// cell (one left in a ghost, even a second-layer one, with its states evaluated anew there),
+// and a scene run on two ranks gives one rank's answer within the statistical
 // scatter of the two runs (different random streams), computed per quantity below. A
 // repeated coupling window on two ranks gives the same forces after restore(). A gas without
 // random draws writes the same particles, or the same sample of them, on two ranks as on one.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -29,6 +32,7 @@
 #include "tracker/program/standalone.hpp"
 #include "tracker/step/seed_particles.hpp"
 #include "tracker/step/simulation.hpp"
+#include "tracker/step/state_array.hpp"
 
 namespace cosim::tracker {
 namespace {
@@ -449,6 +453,139 @@ TEST(TwoRanks, EachRankTracksOnItsPartAndHandsMovesOver) {
       EXPECT_TRUE(counts.empty());
     }
   }
+}
+
+// A permeable zone: a ball with a small ball cut out of it, the hole written first (so its
+// primitive is numbered first).
+struct HoledZone {
+  Vec3 hole;
+  double hole_radius;
+  Vec3 centre;
+  double radius;
+  bool holds(const Vec3& x) const { return (x - centre).norm() < radius && (x - hole).norm() > hole_radius; }
+};
+
+// Where particle i's record (simulation_state.cpp: position, velocity, cell in the whole
+// mesh, then its states) starts in the gas's state: found by its values, not by the layout
+// of what comes before it.
+std::size_t record_of(const std::vector<double>& state, const Simulation& gas, std::size_t i) {
+  const Particle p = gas.swarm().particle(i);
+  StateWriter key;
+  key.put(p.x, p.v, gas.tracked().global_cell(p.cell));
+  const std::vector<double> values = key.take();
+  return static_cast<std::size_t>(std::search(state.begin(), state.end(), values.begin(), values.end()) -
+                                  state.begin());
+}
+
+// A particle left in a ghost (a stray: put there by a recovery or a moving wall) migrates at
+// the next step to the ghost's owner, which classifies it anew. A second-layer ghost's
+// registration lacks the primitives of the cells beyond the part, so its bits number other
+// primitives than the owner's: here each side of the cut has a zone whose hole lies wholly in
+// the cell beyond the other rank's second layer, so that rank's registration of the
+// second-layer ghost has the zone's ball alone (bit 0), the owner's has the hole (bit 0) and
+// the ball (bit 1), and the holder's state for a particle in the ball reads on the owner as
+// "in the hole, outside the ball": outside the zone. Each rank restores a state in which two
+// of its particles sit in the other rank's cells, one cell beyond the cut (a first-layer
+// ghost, every state bit set) and two cells beyond (second layer, the holder's own states
+// there); the gas is at rest, so one step later each is on its cell's owner alone, at the
+// same point, with the states one rank gives it.
+TEST(TwoRanks, StraysInGhostsReachTheOwnerClassifiedAnew) {
+  const std::array<HoledZone, 2> zones{HoledZone{{1.625, 0.375, 0.375}, 0.08, {1.3, 0.5, 0.5}, 0.25},
+                                       HoledZone{{0.375, 0.375, 0.375}, 0.08, {0.7, 0.5, 0.5}, 0.25}};
+  std::ostringstream text;
+  text << "time: {end: 0.01}\ncoupling: {window: 0.01}\ndomain: {min: [0, 0, 0], max: [2, 1, 1]}\n"
+          "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
+          "      mesh: {type: box, cells: [8, 4, 4]}\n      boundaries: {default: {kind: specular}}\n"
+          "      obstacles:\n";
+  const auto ball = [&](const Vec3& c, double r) {
+    std::ostringstream s;
+    s << "{ball: {centre: [" << c.x() << ", " << c.y() << ", " << c.z() << "], radius: " << r << "}}";
+    return s.str();
+  };
+  for (std::size_t z = 0; z < zones.size(); ++z)
+    text << "        - {name: zone" << z << ", permeable: true, shape: {intersection: [{complement: "
+         << ball(zones[z].hole, zones[z].hole_radius) << "}, " << ball(zones[z].centre, zones[z].radius) << "]}}\n";
+  text << "      particles: {per_cell: 1, temperature: 0, mass: 1.0e-26, seed: 1}\n";
+  const scene::Scene scene = scene::load_scene_from_string(text.str(), "strays.yaml");
+  const TrackerScene whole = read_tracker(scene);  // one rank's registration: the owners'
+  Simulation gas(read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
+  const Mesh& part = gas.tracked();
+  const PartCells numbers(part);
+  const auto cell_at = [&](const Vec3& x) {
+    for (Index c = 0; c < whole.mesh->cell_count(); ++c)
+      if (contains(*whole.mesh, c, x)) return c;
+    return Index{-1};
+  };
+  const auto next_to_own = [&](Index ghost) {
+    for (Index f = part.cell_faces[ghost]; f < part.cell_faces[ghost + 1]; ++f)
+      if (const Index n = part.faces[f].neighbour; n >= 0 && n < part.own_cells()) return true;
+    return false;
+  };
+
+  // The bricks are cut at x = 1, the cells are 0.25 wide: each stray in a zone, well off its
+  // surfaces.
+  struct Stray {
+    Vec3 x;
+    bool second_layer;
+    Index cell;                      // in the whole mesh
+    std::vector<csg::State> states;  // one rank's
+  };
+  const auto stray = [&](const Vec3& x, bool second_layer) {
+    Stray s{x, second_layer, cell_at(x), std::vector<csg::State>(zones.size())};
+    whole.obstacles.classify(s.cell, x, s.states);
+    return s;
+  };
+  const std::vector<Stray> strays{stray({1.2, 0.45, 0.45}, false), stray({1.375, 0.45, 0.45}, true),
+                                  stray({0.8, 0.45, 0.45}, false), stray({0.625, 0.45, 0.45}, true)};
+  std::vector<double> state = gas.state();
+  std::size_t held = 0;
+  for (const Stray& s : strays) {
+    if (gas.decomposition().owns(s.cell)) continue;
+    const Index ghost = numbers.local(s.cell);
+    ASSERT_GE(ghost, part.own_cells());
+    EXPECT_EQ(next_to_own(ghost), !s.second_layer);
+    std::vector<csg::State> states(zones.size());
+    gas.setup().obstacles.classify(ghost, s.x, states);
+    if (s.second_layer) {
+      EXPECT_NE(states, s.states) << "the hole beyond the part should number the ghost's bits unlike the owner's";
+    } else {
+      EXPECT_EQ(states, s.states) << "a first-layer ghost is registered as its owner registers it";
+      states.assign(zones.size(), ~csg::State{0});
+    }
+    const std::size_t at = record_of(state, gas, held++);
+    ASSERT_LT(at, state.size());
+    StateWriter record;
+    record.put(s.x, Vec3::Zero(), s.cell);
+    for (const csg::State bits : states) record.put_bits(bits);
+    const std::vector<double> values = record.take();
+    std::copy(values.begin(), values.end(), state.begin() + static_cast<std::ptrdiff_t>(at));
+  }
+  EXPECT_EQ(held, 2u);
+  gas.restore(state);
+  gas.step(0.01);
+
+  EXPECT_EQ(gas.particles(), gas.seeded());
+  EXPECT_EQ(gas.migrated(), strays.size());  // the strays alone: the gas is at rest
+  std::vector<long long> found(strays.size(), 0);
+  for (std::size_t i = 0; i < gas.swarm().size(); ++i) {
+    const Particle p = gas.swarm().particle(i);
+    for (std::size_t k = 0; k < strays.size(); ++k) {
+      const Stray& s = strays[k];
+      if (p.x != s.x) continue;
+      ++found[k];
+      EXPECT_TRUE(gas.decomposition().owns(s.cell)) << "stray " << k;
+      EXPECT_LT(p.cell, part.own_cells()) << "stray " << k;
+      EXPECT_EQ(part.global_cell(p.cell), s.cell) << "stray " << k;
+      const std::span<const csg::State> states = gas.swarm().states(i);
+      EXPECT_EQ(std::vector<csg::State>(states.begin(), states.end()), s.states) << "stray " << k;
+      for (std::size_t z = 0; z < zones.size(); ++z)
+        EXPECT_EQ(gas.setup().obstacles.cells(static_cast<int>(z)).tree(p.cell).evaluate(states[z]),
+                  zones[z].holds(s.x))
+            << "stray " << k << " in zone " << z;
+    }
+  }
+  gas.decomposition().ranks().sum(found);
+  EXPECT_EQ(found, std::vector<long long>(strays.size(), 1));
 }
 
 // A fault that only one rank's part shows (70 primitives near rank 0's first cell, more than
