@@ -25,12 +25,15 @@ void add_walls(world::World& w, double half_width) {
 
 }  // namespace
 
-RunResult run_cosim(const PourScene& scene, world::SolverKind solver) {
-  const bool soft = solver == world::SolverKind::soft;
+RunResult run_cosim(const PourScene& scene, const CosimRun& run) {
+  const bool soft = run.solver == world::SolverKind::soft;
   RunResult r{.engine = soft ? "soft" : "SI", .bodies = scene.positions.size(), .steps = scene.steps};
   const double heap_before = heap_in_use();
-  auto w = std::make_unique<world::World>(world::Settings{
-      .solver = solver, .iterations = soft ? 0 : scene.iterations, .contact_margin = scene.margin, .dt = scene.dt});
+  auto w = std::make_unique<world::World>(world::Settings{.solver = run.solver,
+                                                          .iterations = soft ? 0 : scene.iterations,
+                                                          .soft = run.soft,
+                                                          .contact_margin = scene.margin,
+                                                          .dt = scene.dt});
   w->reserve(5 + scene.positions.size());
   add_walls(*w, scene.half_width);
   const std::uint32_t first = static_cast<std::uint32_t>(w->size());

@@ -7,9 +7,15 @@
 
 namespace cosim::bench {
 
-// solver: the soft step (the world's default, its own sweep counts) or sequential
-// impulses (scene.iterations).
-RunResult run_cosim(const PourScene& scene, world::SolverKind solver);
+// How cosim's world runs the scene: the solver, and the soft step's settings (the
+// world's defaults unless the command line changes them).
+struct CosimRun {
+  world::SolverKind solver = world::SolverKind::soft;
+  solver::SoftOptions soft{};
+};
+
+// Sequential impulses take scene.iterations; the soft step its own sweeps (run.soft).
+RunResult run_cosim(const PourScene& scene, const CosimRun& run);
 #ifdef COSIM_BENCH_BULLET
 RunResult run_bullet(const PourScene& scene);
 #endif

@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
   int steps = 500;
   int iterations = 10;
   std::vector<std::string> solvers{"soft"};
+  cosim::bench::CosimRun cosim_run;
   [[maybe_unused]] bool bullet = false;  // only with COSIM_BENCH_BULLET
   app.add_option("-n,--bodies", sizes, "numbers of spheres")->capture_default_str();
   app.add_option("--steps", steps, "steps of 1 ms")->capture_default_str()->check(CLI::PositiveNumber);
@@ -72,6 +73,20 @@ int main(int argc, char** argv) {
   app.add_option("--solver", solvers, "cosim's solvers: soft (the default, its own sweeps) and/or si")
       ->capture_default_str()
       ->check(CLI::IsMember({"soft", "si"}));
+  // What the soft step's overlap in a pile costs to bring down (README.md "The soft step's
+  // settings"): more substeps, more sweeps, stiffer springs.
+  app.add_option("--substeps", cosim_run.soft.substeps, "the soft step's substeps per 1 ms step and narrow phase")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app.add_option("--sweeps", cosim_run.soft.iterations, "the soft step's sweeps with bias per substep")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app.add_option("--relax", cosim_run.soft.relax_iterations, "the soft step's rigid sweeps per substep")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--hertz", cosim_run.soft.hertz, "the soft step's contact spring frequency [Hz]")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
 #ifdef COSIM_BENCH_BULLET
   app.add_flag("--bullet", bullet, "run Bullet on each scene too");
 #endif
@@ -86,8 +101,8 @@ int main(int argc, char** argv) {
     scene.steps = steps;
     scene.iterations = iterations;
     for (const std::string& solver : solvers) {
-      runs.push_back(cosim::bench::run_cosim(
-          scene, solver == "soft" ? cosim::world::SolverKind::soft : cosim::world::SolverKind::sequential_impulses));
+      cosim_run.solver = solver == "soft" ? cosim::world::SolverKind::soft : cosim::world::SolverKind::sequential_impulses;
+      runs.push_back(cosim::bench::run_cosim(scene, cosim_run));
       print(runs.back(), scene.radius);
     }
 #ifdef COSIM_BENCH_BULLET

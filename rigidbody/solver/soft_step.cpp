@@ -73,23 +73,29 @@ SolveReport SoftStep::solve(const ContactScene& scene, std::span<const CachedCon
   dt_ = scene.dt;
   mobility_ = scene.mobility;
   build_rows(scene, memory);
+  return solve_again(scene.states);
+}
+
+// Each substep applies its impulses anew: the velocities it starts from carry the last
+// substep's contact impulses, but not the one that holds against this substep's gravity.
+SolveReport SoftStep::solve_again(std::span<dynamics::BodyState> states) {
   for (Row& r : rows_) {
     const Eigen::Vector3d warm = r.impulse;
     r.impulse.setZero();
-    set_impulse(r, warm, scene.states);
+    set_impulse(r, warm, states);
   }
-
-  const SolveReport report = pass(scene.states, true, options_.iterations);
-  // Where the positions will be after this step, to first order in dt: the relative
+  const SolveReport report = pass(states, true, options_.iterations);
+  // Where the positions will be after this substep, to first order in dt: the relative
   // velocity at the point, not the motion of a point fixed on each body, which on a
   // rolling sphere would open a gap that is not there.
-  for (Row& r : rows_) r.separation += scene.dt * r.frame.local_velocity(scene.states)[0];
+  for (Row& r : rows_) r.separation += dt_ * r.frame.local_velocity(states)[0];
   return report;
 }
 
-SolveReport SoftStep::relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory) {
+SolveReport SoftStep::relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory, bool last) {
   SolveReport report = pass(states, false, options_.relax_iterations);
   if (!groups_.empty()) report.iterations += options_.iterations;
+  if (!last) return report;
   restitution(states);
   for (const Row& r : rows_)
     memory[r.point] = {.normal = r.impulse[0],
@@ -165,13 +171,16 @@ double SoftStep::sweeps(const Group& g, std::span<dynamics::BodyState> states, s
     if (sweep == count - 1)
       for (const Row& r : rows) last.push_back(r.impulse);
     if (!block) {
+      // Normal, then friction on the velocity the normal change leaves (through the point's
+      // own W, as update_point): one velocity and one application per point and sweep.
       for (std::size_t i = 0; i < rows.size(); ++i) {
         Row& r = rows[i];
-        const double un = r.frame.local_velocity(states)[0];
-        const double next = std::max(0.0, r.impulse[0] + (target[i] - un - compliance[i] * r.impulse[0]) /
-                                                             (r.law.response(0, 0) + compliance[i]));
-        set_impulse(r, {next, r.impulse[1], r.impulse[2]}, states);
-        set_impulse(r, update_friction(r.law, r.frame.local_velocity(states), r.impulse), states);
+        const Eigen::Vector3d u = r.frame.local_velocity(states);
+        Eigen::Vector3d next = r.impulse;
+        next[0] = std::max(0.0, r.impulse[0] + (target[i] - u[0] - compliance[i] * r.impulse[0]) /
+                                                   (r.law.response(0, 0) + compliance[i]));
+        const Eigen::Vector3d after_normal = u + r.law.response.col(0) * (next[0] - r.impulse[0]);
+        set_impulse(r, update_friction(r.law, after_normal, next), states);
       }
       continue;
     }

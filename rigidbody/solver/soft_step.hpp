@@ -20,13 +20,19 @@ namespace cosim::solver {
 
 struct SoftOptions {
   // Contact spring: natural frequency around the group's whole dynamic mass, so that at
-  // rest no point sinks more than g / (2 pi hertz)^2 (17 um at 120 Hz) under any load.
-  // At most a quarter of the step rate 1 / dt (Box2D's bound: the spring must be resolved).
-  double hertz = 120.0;
+  // rest no point sinks more than g / (2 pi hertz)^2 (1 um at 500 Hz) under any load.
+  // At most a quarter of the substep rate (Box2D's bound: the spring must be resolved):
+  // 500 Hz with two substeps of a 1 ms dt.
+  double hertz = 500.0;
   double damping_ratio = 10.0;  // overdamped: penetration recedes without a bounce
   double push_speed = 3.0;      // [m/s] the fastest a penetration is pushed out
-  int iterations = 4;           // sweeps with bias, before the positions move
-  int relax_iterations = 2;     // rigid sweeps after they moved
+  int iterations = 2;           // sweeps with bias per substep, before the positions move
+  int relax_iterations = 2;     // rigid sweeps per substep, after they moved
+  // Substeps per narrow phase (Box2D's sub-stepping): the world's dt split into this many,
+  // each solved, moved and relaxed on the contact points found at the dt's start. A pile's
+  // overlap is its springs' sag, and substeps allow stiffer springs for the same sweeps
+  // (bench/rigidbody_granular/README.md, "The soft step's settings").
+  int substeps = 2;
   // Groups with at most block_points points solve their normal impulses at once (cost ~n^3
   // per step). Friction passes a load through a light body as slowly as Gauss-Seidel
   // normals do, so groups with at most full_block_points points whose heaviest body is
@@ -44,16 +50,21 @@ struct SoftOptions {
 class SoftStep {
  public:
   explicit SoftStep(const SoftOptions& options = {}) : options_(options) {}
+  const SoftOptions& options() const { return options_; }
 
   // Before the positions move: warm start from `memory` (one per point), then the soft
   // sweeps with bias. Keeps the rows for relax(). Reports the biased sweeps and how much
   // the last one still changed.
   SolveReport solve(const ContactScene& scene, std::span<const CachedContact> memory);
-  // After the positions moved with solve()'s velocities: rigid sweeps without bias on the
-  // separations those velocities left (no new narrow phase), restitution; writes the
-  // impulses to `memory` for the next step's warm start. Reports all sweeps of the
-  // substep (solve's and these) and how much the last relax sweep still changed.
-  SolveReport relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory);
+  // A further substep on the rows solve() built (no narrow phase): warm start from the
+  // last substep's impulses, the sweeps with bias on the separations it left.
+  SolveReport solve_again(std::span<dynamics::BodyState> states);
+  // After the positions moved with the solve's velocities: rigid sweeps without bias on the
+  // separations those velocities left (no new narrow phase). After the last substep of a
+  // narrow phase (`last`), restitution, and the impulses go to `memory` for the next
+  // step's warm start. Reports all sweeps of the substep (the solve's and these) and how
+  // much the last relax sweep still changed.
+  SolveReport relax(std::span<dynamics::BodyState> states, std::span<CachedContact> memory, bool last);
 
  private:
   struct Row {

@@ -32,7 +32,7 @@ struct Settings {
   // exceed the distance a body travels in one substep. 0: a tenth of the smallest bounded
   // body's bounding radius. Never below the lubrication range.
   double contact_margin = 0.0;
-  double dt = 1e-3;  // substep [s]
+  double dt = 1e-3;  // [s] between narrow phases: a substep (the soft step's, split in soft.substeps)
   dynamics::BodyForces body_forces{.gravity = true};  // gravity on/off and g, buoyancy
   // Off: no broad phase, no narrow phase, no solver; bodies pass through each other.
   bool contact = true;

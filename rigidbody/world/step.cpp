@@ -1,6 +1,6 @@
 // A World's step, per substep: integrate velocities -> broad phase -> narrow phase -> solve
 // contacts -> integrate positions (-> relax contacts, the soft step), each stage timed into
-// the StepReport.
+// the StepReport. The soft step's further substeps of a dt skip the broad and narrow phase.
 #include <algorithm>
 #include <chrono>
 
@@ -37,31 +37,38 @@ void merge(StepReport& report, const solver::SolveReport& solved) {
 StepReport World::advance(double window, std::span<const dynamics::WindowWrench> external) {
   const auto start = std::chrono::steady_clock::now();
   StepReport report;
-  dynamics::Substeps substeps(states_, inertias_, external, time_, time_ + window,
-                              {dynamics::Scheme::semi_implicit_euler, settings_.dt, settings_.body_forces});
   // "Only what the scene needs": without contacts (or with nothing to collide with) no
   // broad or narrow phase is ever called.
   const bool contacts = settings_.contact && size() > 1;
   const bool relax = contacts && settings_.solver == SolverKind::soft;
-  if (contacts) check_tunnelling(window, substeps.length(), report);
+  // The soft step's substeps share their dt's narrow phase (solver/README.md "Soft step"),
+  // unless the lubrication film needs each substep's own gaps.
+  const int split = relax ? soft_.options().substeps : 1;
+  const int collide_every = settings_.lubrication.active() ? 1 : split;
+  dynamics::Substeps substeps(states_, inertias_, external, time_, time_ + window,
+                              {dynamics::Scheme::semi_implicit_euler, settings_.dt / split, settings_.body_forces});
+  if (contacts) check_tunnelling(window, substeps.length() * collide_every, report);
   StageClock clock(report.seconds);
   for (long k = 0; k < substeps.count(); ++k) {
     ++report.substeps;
     substeps.integrate_velocities(k);
     clock.lap(Stage::integrate_velocities);
-    if (contacts) {
+    if (contacts && k % collide_every == 0) {
       broad_phase(report);
       clock.lap(Stage::broad_phase);
       narrow_phase(report);
       clock.lap(Stage::narrow_phase);
       solve_contacts(substeps.length(), report);
       clock.lap(Stage::solve_contacts);
+    } else if (contacts) {
+      merge(report, soft_.solve_again(states_));
+      clock.lap(Stage::solve_contacts);
     }
     // With the velocities the solver left: what semi-implicit Euler gives the solvers.
     substeps.integrate_positions();
     clock.lap(Stage::integrate_positions);
     if (relax) {
-      relax_contacts(report);
+      relax_contacts(report, k % collide_every == collide_every - 1 || k == substeps.count() - 1);
       clock.lap(Stage::relax_contacts);
     }
   }
@@ -119,9 +126,9 @@ void World::solve_contacts(double dt, StepReport& report) {
   if (settings_.solver != SolverKind::soft) graph_.remember();
 }
 
-void World::relax_contacts(StepReport& report) {
-  merge(report, soft_.relax(states_, graph_.recalled()));
-  graph_.remember();
+void World::relax_contacts(StepReport& report, bool last) {
+  merge(report, soft_.relax(states_, graph_.recalled(), last));
+  if (last) graph_.remember();
 }
 
 }  // namespace cosim::world

@@ -31,6 +31,7 @@ World::World(const Settings& settings)
     : settings_(settings), soft_(settings.soft_options()), smallest_radius_(std::numeric_limits<double>::infinity()) {
   if (!(settings.dt > 0.0)) throw std::invalid_argument("world: dt must be positive");
   if (!(settings.contact_margin >= 0.0)) throw std::invalid_argument("world: contact margin must be >= 0");
+  if (settings.soft.substeps < 1) throw std::invalid_argument("world: the soft step needs at least one substep");
   const solver::LubricationOptions& l = settings.lubrication;
   if (l.active() && !(l.roughness > 0.0 && l.range > l.roughness))
     throw std::invalid_argument("world: lubrication needs 0 < roughness < range");

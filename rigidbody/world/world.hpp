@@ -69,8 +69,9 @@ class World {
   void narrow_phase(StepReport& report);
   void solve_contacts(double dt, StepReport& report);
   solver::SolveReport solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory);
-  // The soft step's second half, after the positions moved.
-  void relax_contacts(StepReport& report);
+  // The soft step's second half, after the positions moved; `last`: the last substep on
+  // this narrow phase's points.
+  void relax_contacts(StepReport& report, bool last);
   // Counts the bodies that may tunnel in this window's substeps and adds the warning, when
   // one is due, to the report (tunnelling.hpp).
   void check_tunnelling(double window, double substep, StepReport& report);
