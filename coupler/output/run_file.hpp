@@ -86,6 +86,9 @@ struct RunInfo {
   std::string git_hash;
   std::string cosim_version;
   int protocol_version = 0;
+
+  // A scene run by this build: its commit, version and protocol (run_info.cpp).
+  static RunInfo of_this_build(std::string scene_text, std::string scene_file);
 };
 
 // What peek() finds in a run file.

@@ -2,7 +2,6 @@
 
 #include <chrono>
 
-#include "cosim_git_hash.hpp"
 #include "coupler/output/run_file.hpp"
 #include "coupler/participant/progress.hpp"
 #include "coupler/participant/seconds_since.hpp"
@@ -28,8 +27,7 @@ class RunFileRecorder final : public Recorder {
         solver_(solver),
         name_(name),
         file_(output::RunFile::create(
-            path, {scene.text, scene.file.string(), COSIM_GIT_HASH, COSIM_VERSION, protocol::kVersion},
-            scene.body_names(), {name})) {}
+            path, output::RunInfo::of_this_build(scene.text, scene.file.string()), scene.body_names(), {name})) {}
 
   void record(std::uint64_t done, double time, const Outputs& out, double seconds) override {
     const std::uint64_t n = scene_.windows();

@@ -17,11 +17,6 @@ namespace {
 
 using clock = std::chrono::steady_clock;
 
-output::RunInfo info_of(const scene::Scene& scene) {
-  return {scene.text, scene.file.string(), COSIM_GIT_HASH, COSIM_VERSION,
-          protocol::kVersion};
-}
-
 }  // namespace
 
 int run(const RunRequest& request) {
@@ -48,7 +43,7 @@ int run(const RunRequest& request) {
     const auto& scene = session->scene();
     path = request.output.empty() ? fs::path(scene.output.file) : request.output;
     if (path.has_parent_path()) fs::create_directories(path.parent_path());
-    session->attach(output::RunFile::create(path, info_of(scene), scene.body_names(), session->participant_names()),
+    session->attach(output::RunFile::create(path, output::RunInfo::of_this_build(scene.text, scene.file.string()), scene.body_names(), session->participant_names()),
                 std::nullopt, request.progress);
   }
 
