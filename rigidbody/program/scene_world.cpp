@@ -84,6 +84,17 @@ solver::LubricationOptions lubrication(const scene::Reader& options, bool contac
   return l;
 }
 
+// What the soft step trades time for accuracy with (solver/README.md "Soft step"); the
+// other solvers have no use for them.
+void soft_step_options(const scene::Reader& options, world::Settings& s) {
+  s.soft.substeps = options.integer("substeps", s.soft.substeps, scene::Range::at_least(1));
+  s.soft.relax_iterations = options.integer("relax_iterations", s.soft.relax_iterations, scene::Range::at_least(0));
+  s.soft.hertz = options.number("contact_hertz", s.soft.hertz, scene::Range::above(0));
+  if (s.solver == world::SolverKind::soft) return;
+  for (const char* key : {"substeps", "relax_iterations", "contact_hertz"})
+    if (options.has(key)) spdlog::warn("{}: only the soft step uses it, so it is ignored with this solver", options.where(key));
+}
+
 }  // namespace
 
 ProgramOptions program_options(const scene::Scene& scene) {
@@ -100,6 +111,7 @@ ProgramOptions program_options(const scene::Scene& scene) {
   s.iterations = options.integer("iterations", s.iterations, scene::Range::at_least(0));
   s.tolerance = options.number("tolerance", s.tolerance, scene::Range::above(0));
   s.contact_margin = options.number("contact_margin", s.contact_margin, scene::Range::at_least(0));
+  soft_step_options(options, s);
   constexpr std::array restitution_names{"simultaneous", "sequential"};
   constexpr std::array restitutions{solver::Restitution::simultaneous, solver::Restitution::sequential};
   s.restitution = restitutions[options.choice("restitution", restitution_names, 0)];

@@ -170,6 +170,26 @@ TEST(SceneWorld, BadDemOptionsAreNamed) {
   EXPECT_EQ(k.value, "-1");
 }
 
+TEST(SceneWorld, SoftStepOptionsReachTheSettings) {
+  const auto s = settings_of(scene::load_scene_from_string(
+      scene_text("[gravity, contact]", ball, "{iterations: 3, substeps: 4, relax_iterations: 1, contact_hertz: 900}")));
+  EXPECT_EQ(s.solver, world::SolverKind::soft);
+  EXPECT_EQ(s.soft_options().iterations, 3);
+  EXPECT_EQ(s.soft.substeps, 4);
+  EXPECT_EQ(s.soft.relax_iterations, 1);
+  EXPECT_EQ(s.soft.hertz, 900.0);
+  const auto none = error_of("{substeps: 0}");
+  EXPECT_EQ(none.key, "participants.rigidbody.options.substeps");
+  EXPECT_EQ(none.value, "0");
+  EXPECT_EQ(error_of("{contact_hertz: -5}").key, "participants.rigidbody.options.contact_hertz");
+  EXPECT_EQ(error_of("{relax_iterations: 1.5}").key, "participants.rigidbody.options.relax_iterations");
+  // Another solver has no use for them: a warning, and they stay out of its run.
+  EXPECT_EQ(settings_of(scene::load_scene_from_string(
+                            scene_text("[gravity, contact]", ball, "{solver: sequential-impulses, substeps: 4}")))
+                .solver,
+            world::SolverKind::sequential_impulses);
+}
+
 TEST(SceneWorld, LubricationReachesTheSettings) {
   const auto s = settings_of(scene::load_scene_from_string(
       scene_text("[gravity, contact]", ball, "{lubrication: {viscosity: 0.058, range: 2.5e-3}}")));
