@@ -116,7 +116,7 @@ SolveReport SoftStep::pass(std::span<dynamics::BodyState> states, bool biased, i
   SolveReport report{.iterations = groups_.empty() ? 0 : count};
   std::vector<double> target;
   std::vector<double> compliance;
-  for (const Group& g : groups_) {
+  for (Group& g : groups_) {
     target.clear();
     compliance.clear();
     for (const Row& r : std::span(rows_).subspan(g.first, g.count)) {
@@ -124,7 +124,7 @@ SolveReport SoftStep::pass(std::span<dynamics::BodyState> states, bool biased, i
       target.push_back(velocity);
       compliance.push_back(give);
     }
-    const double change = sweeps(g, states, target, compliance, count);
+    const double change = sweeps(g, biased, states, target, compliance, count);
     // As the impulse solvers: with nothing to do (scale 0) only an unchanged sweep settled.
     report.residual = std::max(report.residual, change == 0.0 ? 0.0 : change / g.scale);
   }
@@ -135,24 +135,28 @@ SolveReport SoftStep::pass(std::span<dynamics::BodyState> states, bool biased, i
 // A group with a large mass ratio solves every row at once (friction sticking, sliding
 // points point by point); a small or middle-sized group solves friction point by point, then
 // the normals at once; a large one all point by point (Gauss-Seidel).
-double SoftStep::sweeps(const Group& g, std::span<dynamics::BodyState> states, std::span<const double> target,
+double SoftStep::sweeps(Group& g, bool biased, std::span<dynamics::BodyState> states, std::span<const double> target,
                         std::span<const double> compliance, int count) {
   const std::span<Row> rows = std::span(rows_).subspan(g.first, g.count);
   const int axes = g.axes;
-  std::optional<ContactBlock> block;
+  ContactBlock* block = nullptr;
   std::vector<double> row_target;
-  std::vector<double> row_compliance;
   if (axes > 0) {
-    std::vector<ContactFrame> frames;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      frames.push_back(rows[i].frame);
+    std::vector<double> row_compliance;
+    for (std::size_t i = 0; i < rows.size(); ++i)
       for (int axis = 0; axis < axes; ++axis) {
         row_target.push_back(axis == 0 ? target[i] : 0.0);
         // Friction is rigid; its rows get the relax's regularization.
         row_compliance.push_back(axis == 0 ? compliance[i] : kRigidCompliance * rows[i].law.response(axis, axis));
       }
+    Group::Block& kept = g.blocks[biased ? 1 : 0];
+    if (!kept.solver || kept.compliance != row_compliance) {
+      std::vector<ContactFrame> frames;
+      for (const Row& r : rows) frames.push_back(r.frame);
+      kept.solver.emplace(frames, axes, mobility_, row_compliance);
+      kept.compliance = std::move(row_compliance);
     }
-    block.emplace(frames, axes, mobility_, row_compliance);
+    block = &*kept.solver;
   }
   std::vector<double> u(row_target.size());
   std::vector<double> lambda(row_target.size());

@@ -6,11 +6,14 @@
 // see README.md "Soft step" for the choices.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
 
+#include "rigidbody/solver/contact_block.hpp"
 #include "rigidbody/solver/contact_memory.hpp"
 #include "rigidbody/solver/point_update.hpp"
 #include "rigidbody/solver/problem.hpp"
@@ -85,6 +88,14 @@ class SoftStep {
     // The largest normal velocity change a point needs at the start, max(0, target - u_n)
     // with the biased target: what the report's residual is relative to.
     double scale = 0.0;
+    // A directly solved group's block for the biased pass [1] and the relax [0], kept over
+    // the substeps of a narrow phase: the same rows and, unless a gap closed, the same
+    // compliance, so the same matrix and (for the same active set) factorization.
+    struct Block {
+      std::vector<double> compliance;
+      std::optional<ContactBlock> solver;
+    };
+    std::array<Block, 2> blocks;
   };
 
   void build_rows(const ContactScene& scene, std::span<const CachedContact> memory);
@@ -93,7 +104,7 @@ class SoftStep {
   SolveReport pass(std::span<dynamics::BodyState> states, bool biased, int count);
   std::pair<double, double> normal_law(const Group& g, const Row& r, bool biased) const;
   // Returns the last sweep's largest velocity_change at a point.
-  double sweeps(const Group& g, std::span<dynamics::BodyState> states, std::span<const double> target,
+  double sweeps(Group& g, bool biased, std::span<dynamics::BodyState> states, std::span<const double> target,
                 std::span<const double> compliance, int count);
   void set_impulse(Row& r, const Eigen::Vector3d& impulse, std::span<dynamics::BodyState> states) const;
   void restitution(std::span<dynamics::BodyState> states);
