@@ -20,7 +20,12 @@ void check(std::span<BodyState> states, std::span<const BodyInertia> inertia,
   if (!(dt > 0.0)) throw std::invalid_argument("advance: dt must be positive");
 }
 
-long substep_count(double span, double dt) { return std::max(1L, std::lround(span / dt)); }
+// dt is the longest substep: a span that is not a whole number of them takes one more,
+// shorter, so nothing stepped at dt (the soft step's springs, capped by the substep) is
+// stepped longer. The tolerance keeps a whole number from gaining one by round-off.
+long substep_count(double span, double dt) {
+  return std::max(1L, static_cast<long>(std::ceil(span / dt - 1e-9)));
+}
 
 }  // namespace
 

@@ -16,7 +16,7 @@ enum class Scheme {
 
 struct IntegratorSettings {
   Scheme scheme = Scheme::semi_implicit_euler;
-  double dt = 1e-3;  // target substep; the window is split into round((t1 - t0) / dt) >= 1 equal ones
+  double dt = 1e-3;  // the longest substep; the window is split into ceil((t1 - t0) / dt) >= 1 equal ones
   BodyForces body_forces;
 };
 

@@ -1,4 +1,4 @@
-// What a contact point carries from one substep to the next: the accumulated impulses that
+// What a contact point carries from one narrow phase to the next: the accumulated impulses that
 // warm-start the impulse solvers, or DEM's tangential spring. The solvers take one
 // CachedContact per point of the ContactSet (in: last step's, out: this step's);
 // ContactMemory finds last step's value for each new point.
@@ -17,7 +17,7 @@ namespace cosim::solver {
 // World-frame vectors, so a normal that turns a little between steps only needs the
 // stored vector projected onto the new tangent plane, not a matching tangent basis.
 struct CachedContact {
-  double normal = 0.0;  // normal impulse of the step [N s]
+  double normal = 0.0;  // normal impulse of the (last) substep [N s]
   // Impulse solvers: the friction impulse [N s]. DEM: the tangential spring's stretch [m]
   // (Cundall-Strack); a world runs one solver, so one slot serves both.
   Eigen::Vector3d tangential = Eigen::Vector3d::Zero();

@@ -63,8 +63,6 @@ void SoftStep::build_rows(const ContactScene& scene, std::span<const CachedConta
     g.axes = g.per_point ? 0 : g.count <= options_.full_block_points && mass_ratio ? 3 : 1;
     g.soft = make_softness(std::min(options_.hertz, 0.25 / scene.dt), options_.damping_ratio, g.per_point ? 1.0 : mass,
                            scene.dt);
-    for (const Row& r : std::span(rows_).subspan(g.first))
-      g.scale = std::max(g.scale, normal_law(g, r, true).first - r.approach);
     groups_.push_back(g);
   }
 }
@@ -79,6 +77,13 @@ SolveReport SoftStep::solve(const ContactScene& scene, std::span<const CachedCon
 // Each substep applies its impulses anew: the velocities it starts from carry the last
 // substep's contact impulses, but not the one that holds against this substep's gravity.
 SolveReport SoftStep::solve_again(std::span<dynamics::BodyState> states) {
+  // What the report's residual is relative to, for this substep: a gap that closes only in
+  // a later substep has work to do there, not in the first.
+  for (Group& g : groups_) {
+    g.scale = 0.0;
+    for (const Row& r : std::span(rows_).subspan(g.first, g.count))
+      g.scale = std::max(g.scale, normal_law(g, r, true).first - r.frame.local_velocity(states)[0]);
+  }
   for (Row& r : rows_) {
     const Eigen::Vector3d warm = r.impulse;
     r.impulse.setZero();

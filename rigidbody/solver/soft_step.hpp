@@ -37,7 +37,7 @@ struct SoftOptions {
   // (bench/rigidbody_granular/README.md, "The soft step's settings").
   int substeps = 2;
   // Groups with at most block_points points solve their normal impulses at once (cost ~n^3
-  // per step). Friction passes a load through a light body as slowly as Gauss-Seidel
+  // per factorization: one per pass and active set, kept over a dt's substeps). Friction passes a load through a light body as slowly as Gauss-Seidel
   // normals do, so groups with at most full_block_points points whose heaviest body is
   // more than full_block_mass_ratio times the lightest solve friction at once too (~(3n)^3).
   std::size_t block_points = 128;
@@ -75,8 +75,8 @@ class SoftStep {
     ContactFrame frame;
     PointLaw law;
     Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
-    double separation = 0.0;  // at the narrow phase; after solve(), at the step's end
-    double approach = 0.0;    // normal velocity before the solve, for restitution
+    double separation = 0.0;  // at the narrow phase; after each substep's solve, at its end
+    double approach = 0.0;    // normal velocity before the first substep's solve, for restitution
     double restitution = 0.0;
   };
   struct Group {
@@ -85,8 +85,8 @@ class SoftStep {
     Softness soft;
     bool per_point = false;  // compliance relative to each point's W_nn, not the group's mass
     int axes = 1;            // rows per point solved at once: 3, 1 (normals) or 0 (Gauss-Seidel)
-    // The largest normal velocity change a point needs at the start, max(0, target - u_n)
-    // with the biased target: what the report's residual is relative to.
+    // The largest normal velocity change a point needs at the substep's start,
+    // max(0, target - u_n) with the biased target: what the report's residual is relative to.
     double scale = 0.0;
     // A directly solved group's block for the biased pass [1] and the relax [0], kept over
     // the substeps of a narrow phase: the same rows and, unless a gap closed, the same

@@ -1,5 +1,5 @@
-// The contact edges between nearby bodies, this substep's contacts, and what the
-// solver carries from one substep to the next.
+// The contact edges between nearby bodies, this narrow phase's contacts, and what the
+// solver carries from one narrow phase to the next.
 #pragma once
 
 #include <span>
@@ -25,11 +25,11 @@ class ContactGraph {
   void update(std::span<const broadphase::Pair> pairs);
   std::span<const broadphase::Pair> edges() const { return edges_; }
 
-  // This substep's contacts: clear, then add one manifold per touching edge in edge order.
+  // This narrow phase's contacts: clear, then add one manifold per touching edge in edge order.
   contact::ContactSet& contacts() { return contacts_; }
   const contact::ContactSet& contacts() const { return contacts_; }
 
-  // Last substep's values for this substep's points, for the solver to update in place.
+  // The last narrow phase's values for this one's points, for the solver to update in place.
   std::span<solver::CachedContact> recall();
   // What the last recall() gave, as the solver left it.
   std::span<solver::CachedContact> recalled() { return values_; }

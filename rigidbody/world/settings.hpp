@@ -29,7 +29,7 @@ struct Settings {
   solver::LubricationOptions lubrication{};
   // Pairs whose bounding spheres are this close become graph edges, and points with a gap
   // below it are speculative contacts the solver keeps from closing too fast. It should
-  // exceed the distance a body travels in one substep. 0: a tenth of the smallest bounded
+  // exceed the distance a body travels between narrow phases (dt). 0: a tenth of the smallest bounded
   // body's bounding radius. Never below the lubrication range.
   double contact_margin = 0.0;
   double dt = 1e-3;  // [s] between narrow phases: a substep (the soft step's, split in soft.substeps)

@@ -42,7 +42,8 @@ class World {
   // otherwise grow by doubling and hold up to twice the bytes they need.
   void reserve(std::size_t bodies);
 
-  // Advances all bodies by `window` in substeps of about settings().dt. `external` is
+  // Advances all bodies by `window` in substeps of at most settings().dt (the soft step's:
+  // dt / soft.substeps). `external` is
   // empty or one wrench per body (the coupler's forces over this window).
   StepReport advance(double window, std::span<const dynamics::WindowWrench> external = {});
 
@@ -57,8 +58,9 @@ class World {
   std::span<const dynamics::BodyInertia> inertias() const { return inertias_; }
   const geometry::Shape& shape(std::uint32_t i) const { return shapes_[i]; }
   const ContactGraph& graph() const { return graph_; }
-  // Besides the body states, the only thing a substep carries to the next: a rollback that
-  // restores both repeats the steps bit for bit.
+  // Besides the body states, the only thing a window carries to the next (the soft step's
+  // rows live within one dt's narrow phase): a rollback that restores both repeats the
+  // steps bit for bit.
   solver::ContactMemory& contact_memory() { return graph_.memory(); }
 
  private:

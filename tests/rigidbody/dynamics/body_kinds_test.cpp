@@ -80,12 +80,16 @@ TEST(BodyKinds, PositionsMoveWithTheVelocitiesSetBetweenTheHalves) {
   EXPECT_EQ(state.position, moving().position);
 }
 
-TEST(BodyKinds, SubstepCountIsTheRoundedRatio) {
+// dt is the longest substep: the soft step's springs are capped by it.
+// Guards against: a window stepped in substeps longer than dt.
+TEST(BodyKinds, SubstepCountIsTheRatioRoundedUp) {
   const BodyInertia body = box_body({0.1, 0.2, 0.3});
   BodyState state;
-  const Substeps thirds({&state, 1}, {&body, 1}, {}, 0.0, 1.0, {Scheme::leapfrog, 0.3, {}});
-  EXPECT_EQ(thirds.count(), 3);
-  EXPECT_DOUBLE_EQ(thirds.length(), 1.0 / 3.0);
+  const Substeps quarters({&state, 1}, {&body, 1}, {}, 0.0, 1.0, {Scheme::leapfrog, 0.3, {}});
+  EXPECT_EQ(quarters.count(), 4);
+  EXPECT_DOUBLE_EQ(quarters.length(), 0.25);
+  // A whole number of substeps up to round-off gains none.
+  EXPECT_EQ(Substeps({&state, 1}, {&body, 1}, {}, 0.0, 0.3, {Scheme::leapfrog, 0.1, {}}).count(), 3);
   EXPECT_EQ(Substeps({&state, 1}, {&body, 1}, {}, 1.0, 1.0, {}).count(), 0);
   EXPECT_THROW(advance({&state, 1}, {}, {}, 0.0, 1.0, {}), std::invalid_argument);
 }

@@ -34,6 +34,33 @@ TEST(SoftSubsteps, ARestingSphereSagsByItsSpringAtTheSubstepsCap) {
   }
 }
 
+// A window of 0.7 ms with dt 1 ms: two substeps of 0.35 ms, not one of 0.7 ms (whose cap,
+// 357 Hz, would soften the 500 Hz springs and nearly double the sag).
+// Guards against: springs that change with the coupling window's length.
+TEST(SoftSubsteps, AWindowThatIsNoWholeNumberOfSubstepsKeepsTheSprings) {
+  World world;
+  add_ground(world);
+  const auto ball = add_sphere(world, kRadius, {0.0, 0.0, kRadius});
+  for (int window = 0; window < 700; ++window) world.advance(0.7e-3);
+  const double omega = 2 * M_PI * solver::SoftOptions{}.hertz;
+  EXPECT_NEAR(kRadius - world.states()[ball].position.z(), kG / (omega * omega), 1e-3 * kG / (omega * omega));
+}
+
+// A sphere whose gap closes in the second substep of a dt: the first has nothing to do
+// there, the second does.
+// Guards against: the report's scale taken from the first substep alone (0 here: an
+// infinite residual for an ordinary landing).
+TEST(SoftSubsteps, ALandingInALaterSubstepReportsAFiniteResidual) {
+  World world({.body_forces = {.gravity = false}});
+  add_ground(world);
+  const auto ball = add_sphere(world, kRadius, {0.0, 0.0, kRadius + 0.75e-3});
+  world.states()[ball].velocity = {0.0, 0.0, -1.0};  // 0.5 mm per substep of 0.5 ms
+  const StepReport r = world.advance(world.settings().dt);
+  EXPECT_EQ(r.contacts, 1u);
+  EXPECT_TRUE(std::isfinite(r.residual)) << r.residual;
+  EXPECT_GT(world.states()[ball].position.z(), kRadius - 1e-5);  // stopped at the floor
+}
+
 // Guards against: a narrow phase per substep (the cost substeps are meant to save), or
 // substeps not run at all.
 TEST(SoftSubsteps, ADtsSubstepsShareOneNarrowPhase) {
