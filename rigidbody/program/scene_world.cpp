@@ -90,11 +90,11 @@ void soft_step_options(const scene::Reader& options, world::Settings& s) {
   s.soft.substeps = options.integer("substeps", s.soft.substeps, scene::Range::at_least(1));
   s.soft.relax_iterations = options.integer("relax_iterations", s.soft.relax_iterations, scene::Range::at_least(0));
   s.soft.hertz = options.number("contact_hertz", s.soft.hertz, scene::Range::above(0));
-  if (const double cap = 0.25 * s.soft.substeps / s.dt;
-      s.solver == world::SolverKind::soft && options.has("contact_hertz") && s.soft.hertz > cap)
+  if (const double runs = s.soft.spring_hertz(s.dt / s.soft.substeps);
+      s.solver == world::SolverKind::soft && options.has("contact_hertz") && runs < s.soft.hertz)
     spdlog::warn("{}: {} Hz is stiffer than {} substeps of dt = {} s resolve; the springs run at {} Hz (a quarter of "
                  "the substep rate)",
-                 options.where("contact_hertz"), s.soft.hertz, s.soft.substeps, s.dt, cap);
+                 options.where("contact_hertz"), s.soft.hertz, s.soft.substeps, s.dt, runs);
   if (s.solver == world::SolverKind::soft) return;
   for (const char* key : {"substeps", "relax_iterations", "contact_hertz"})
     if (options.has(key)) spdlog::warn("{}: only the soft step uses it, so it is ignored with this solver", options.where(key));

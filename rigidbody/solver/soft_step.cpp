@@ -61,7 +61,7 @@ void SoftStep::build_rows(const ContactScene& scene, std::span<const CachedConta
     g.per_point = g.count > options_.block_points;
     const bool mass_ratio = heaviest > options_.full_block_mass_ratio * lightest;
     g.axes = g.per_point ? 0 : g.count <= options_.full_block_points && mass_ratio ? 3 : 1;
-    g.soft = make_softness(std::min(options_.hertz, 0.25 / scene.dt), options_.damping_ratio, g.per_point ? 1.0 : mass,
+    g.soft = make_softness(options_.spring_hertz(scene.dt), options_.damping_ratio, g.per_point ? 1.0 : mass,
                            scene.dt);
     groups_.push_back(g);
   }

@@ -6,6 +6,7 @@
 // see README.md "Soft step" for the choices.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -27,6 +28,8 @@ struct SoftOptions {
   // At most a quarter of the substep rate (Box2D's bound: the spring must be resolved):
   // 500 Hz with two substeps of a 1 ms dt.
   double hertz = 500.0;
+  // The frequency the springs run at in substeps of h: hertz, capped.
+  double spring_hertz(double h) const { return std::min(hertz, 0.25 / h); }
   double damping_ratio = 10.0;  // overdamped: penetration recedes without a bounce
   double push_speed = 3.0;      // [m/s] the fastest a penetration is pushed out
   int iterations = 2;           // sweeps with bias per substep, before the positions move
