@@ -45,6 +45,14 @@ struct CellField {
   std::vector<double> values;
 };
 
+// Cell fields of a box of a RectilinearGrid's cells, [lo, hi) along x, y, z: each field's
+// values in the grid's order within the box (x fastest). What a writer that never holds
+// the whole grid's values takes in turn, e.g. from each MPI rank's part of a box.
+struct CellBlock {
+  std::array<std::size_t, 3> lo{}, hi{};
+  std::vector<CellField> fields;
+};
+
 // A value per point of a set, e.g. a particle's velocity: n x components values, the
 // components of a point together. `integer` values are whole numbers (cell indices, bit
 // patterns), written as int64; float64 carries them, so they must lie within +-2^53.

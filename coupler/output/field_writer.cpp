@@ -1,6 +1,7 @@
 #include "coupler/output/field_writer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -25,14 +26,15 @@ bool has_attributes(const field::FieldFrame& frame) {
                      [](const field::PointSet& p) { return !p.attributes.empty(); });
 }
 
-void check_frame(const field::FieldFrame& frame, const std::string& participant) {
+// `cells`: how many cells' values each field holds (the grid's, or none when the values
+// come in blocks).
+void check_frame(const field::FieldFrame& frame, const std::string& participant, std::size_t cells) {
   for (const std::string& problem : {field::grid_problem(frame.grid), field::point_sets_problem(frame.point_sets)})
     if (!problem.empty()) throw ObjectError("fields of " + participant + ": " + problem);
-  const std::size_t n = field::cell_count(frame.grid);
   for (const field::CellField& f : frame.fields) {
-    if (f.components < 1 || f.values.size() != n * static_cast<std::size_t>(f.components))
+    if (f.components < 1 || f.values.size() != cells * static_cast<std::size_t>(f.components))
       throw ObjectError("field " + f.name + " of " + participant + ": " + std::to_string(f.values.size()) +
-                        " values do not fit the grid");
+                        " values do not fit " + (cells > 0 ? "the grid" : "a frame whose values come in blocks"));
     if (f.name == kPointSetGroup && !frame.point_sets.empty())
       throw ObjectError("field " + f.name + " of " + participant +
                         ": the step's group of that name holds the point sets");
@@ -75,6 +77,29 @@ void write_grid(hid_t participant_group, const field::Grid& grid) {
     write_array(group.get(), std::string(1, "xyz"[a]), {nodes[a].size()}, nodes[a].data());
 }
 
+// A block's problem with the frame it belongs to, or empty: it lies within the grid's cells
+// and holds the frame's fields, each with its cells' values.
+std::string block_problem(const field::CellBlock& b, const std::array<std::size_t, 3>& cells,
+                          const std::vector<field::CellField>& fields) {
+  std::size_t n = 1;
+  for (std::size_t a = 0; a < 3; ++a) {
+    if (!(b.lo[a] <= b.hi[a] && b.hi[a] <= cells[a]))
+      return "a block of cells [" + std::to_string(b.lo[a]) + ", " + std::to_string(b.hi[a]) + ") along " +
+             "xyz"[a] + ", where the grid has " + std::to_string(cells[a]);
+    n *= b.hi[a] - b.lo[a];
+  }
+  if (b.fields.size() != fields.size()) return "a block of " + std::to_string(b.fields.size()) + " fields";
+  for (std::size_t k = 0; k < fields.size(); ++k) {
+    const field::CellField& f = b.fields[k];
+    if (f.name != fields[k].name || f.components != fields[k].components ||
+        f.values.size() != n * static_cast<std::size_t>(f.components))
+      return "a block's field " + f.name + " (" + std::to_string(f.values.size()) + " values) for field " +
+             fields[k].name + " of " + std::to_string(fields[k].components) + " components on " + std::to_string(n) +
+             " cells";
+  }
+  return {};
+}
+
 // The set's attributes beside its points: (n) for one component, (n, c) for c, int64 if integer.
 void write_point_attributes(hid_t group, const field::PointSet& p, XdmfPointSet& entry) {
   if (p.attributes.empty()) return;
@@ -91,6 +116,17 @@ void write_point_attributes(hid_t group, const field::PointSet& p, XdmfPointSet&
       write_array(set.get(), a.name, dims, a.values.data());
     }
     entry.attributes.push_back({a.name, a.components, a.integer});
+  }
+}
+
+void write_point_sets(hid_t step, const field::FieldFrame& frame, XdmfStep& entry) {
+  if (frame.point_sets.empty()) return;
+  Handle points = create_group(step, kPointSetGroup);
+  Handle attributes = has_attributes(frame) ? create_group(step, kPointAttributeGroup) : Handle();
+  for (const field::PointSet& p : frame.point_sets) {
+    write_array(points.get(), p.name, {p.points.size() / 3, 3}, p.points.data());
+    entry.point_sets.push_back({p.name, p.points.size() / 3});
+    write_point_attributes(attributes.get(), p, entry.point_sets.back());
   }
 }
 
@@ -132,38 +168,71 @@ XdmfSeries stored_series(hid_t participant_group, const std::string& participant
 
 FieldWriter::FieldWriter(std::filesystem::path h5_path) : h5_path_(std::move(h5_path)) {}
 
-void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_t window, double time,
-                        const field::FieldFrame& frame) {
-  check_frame(frame, participant);
+std::pair<Handle, XdmfStep> FieldWriter::open_step(hid_t file, const std::string& participant,
+                                                   std::uint64_t window, double time,
+                                                   const field::FieldFrame& frame) {
   Handle fields = open_or_create_group(file, "fields");
   Handle group = open_or_create_group(fields.get(), participant);
   const XdmfSeries shape = series_of(participant, frame.grid);
-  auto [it, first] = series_.try_emplace(participant, shape);
-  XdmfSeries& series = it->second;
+  const auto [it, first] = series_.try_emplace(participant, shape);
   if (first && !has_link(group.get(), "grid")) write_grid(group.get(), frame.grid);
-  if (!same_grid(series, shape))
-    throw ObjectError("fields of " + participant + ": the grid changed");
-
+  if (!same_grid(it->second, shape)) throw ObjectError("fields of " + participant + ": the grid changed");
   const std::string name = step_name(window);
   Handle step = create_group(group.get(), name);
   write_attribute(step.get(), "time", time);
-  XdmfStep entry{"/fields/" + participant + "/" + name, time, {}};
+  return {std::move(step), XdmfStep{"/fields/" + participant + "/" + name, time, {}}};
+}
+
+void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_t window, double time,
+                        const field::FieldFrame& frame) {
+  check_frame(frame, participant, field::cell_count(frame.grid));
+  auto [step, entry] = open_step(file, participant, window, time, frame);
+  const XdmfSeries& series = series_.at(participant);
   for (const field::CellField& f : frame.fields) {
     std::vector<hsize_t> dims = cell_dims(series);
     if (f.components > 1) dims.push_back(static_cast<hsize_t>(f.components));
     write_array(step.get(), f.name, dims, f.values.data());
     entry.fields.push_back({f.name, f.components});
   }
-  if (!frame.point_sets.empty()) {
-    Handle points = create_group(step.get(), kPointSetGroup);
-    Handle attributes = has_attributes(frame) ? create_group(step.get(), kPointAttributeGroup) : Handle();
-    for (const field::PointSet& p : frame.point_sets) {
-      write_array(points.get(), p.name, {p.points.size() / 3, 3}, p.points.data());
-      entry.point_sets.push_back({p.name, p.points.size() / 3});
-      write_point_attributes(attributes.get(), p, entry.point_sets.back());
-    }
+  write_point_sets(step.get(), frame, entry);
+  series_.at(participant).steps.push_back(std::move(entry));
+}
+
+void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_t window, double time,
+                        const field::FieldFrame& frame, const std::function<void(const BlockSink&)>& blocks) {
+  const auto* grid = std::get_if<field::RectilinearGrid>(&frame.grid);
+  if (!grid) throw ObjectError("fields of " + participant + ": blocks of cells need a rectilinear grid");
+  check_frame(frame, participant, 0);
+  auto [step, entry] = open_step(file, participant, window, time, frame);
+  const std::array<std::size_t, 3> cells = grid->cells();
+  for (const field::CellField& f : frame.fields) {
+    std::vector<hsize_t> dims = cell_dims(series_.at(participant));
+    if (f.components > 1) dims.push_back(static_cast<hsize_t>(f.components));
+    create_array(step.get(), f.name, dims);
+    entry.fields.push_back({f.name, f.components});
   }
-  series.steps.push_back(std::move(entry));
+  std::size_t written = 0;
+  blocks([&](const field::CellBlock& b) {
+    if (const std::string problem = block_problem(b, cells, frame.fields); !problem.empty())
+      throw ObjectError("fields of " + participant + ": " + problem);
+    const std::size_t n = (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]);
+    written += n;
+    if (n == 0) return;
+    for (const field::CellField& f : b.fields) {
+      std::vector<hsize_t> start{b.lo[2], b.lo[1], b.lo[0]};
+      std::vector<hsize_t> count{b.hi[2] - b.lo[2], b.hi[1] - b.lo[1], b.hi[0] - b.lo[0]};
+      if (f.components > 1) {
+        start.push_back(0);
+        count.push_back(static_cast<hsize_t>(f.components));
+      }
+      write_block(step.get(), f.name, start, count, f.values.data());
+    }
+  });
+  if (written != field::cell_count(frame.grid))
+    throw ObjectError("fields of " + participant + ": blocks of " + std::to_string(written) + " cells for a grid of " +
+                      std::to_string(field::cell_count(frame.grid)));
+  write_point_sets(step.get(), frame, entry);
+  series_.at(participant).steps.push_back(std::move(entry));
 }
 
 void FieldWriter::resume(hid_t file, std::uint64_t next_window) {

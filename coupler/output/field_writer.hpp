@@ -6,10 +6,13 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "coupler/field/field_frame.hpp"
+#include "coupler/output/h5_handle.hpp"
 #include "coupler/output/xdmf.hpp"
 
 namespace cosim::output {
@@ -28,6 +31,16 @@ class FieldWriter {
   // "point_attributes"), or whose grid is not the first one's kind and size.
   void write(hid_t file, const std::string& participant, std::uint64_t window, double time,
              const field::FieldFrame& frame);
+  // The same step with its cell fields in blocks, so that the writer holds one block at a
+  // time (a box spread over MPI ranks, received rank by rank): `frame` names the fields
+  // and their components (their values are left empty) on a rectilinear grid, and
+  // `blocks(take)` calls take() with each block in turn. Throws ObjectError as write()
+  // does, and for a polyhedral grid, a block that does not lie within the grid or does not
+  // hold the frame's fields with its cells' values, or blocks whose cells do not add up to
+  // the grid's.
+  using BlockSink = std::function<void(const field::CellBlock&)>;
+  void write(hid_t file, const std::string& participant, std::uint64_t window, double time,
+             const field::FieldFrame& frame, const std::function<void(const BlockSink&)>& blocks);
   // For --resume from window `next_window`: unlinks the steps after it (their point sets
   // and attributes with them), which the resumed run writes again, and takes those up to it
   // into the sidecar.
@@ -37,6 +50,11 @@ class FieldWriter {
   void write_sidecar() const;
 
  private:
+  // The step's group, with its attribute time, on the participant's grid (written with the
+  // first step), and its entry in the participant's series.
+  std::pair<Handle, XdmfStep> open_step(hid_t file, const std::string& participant, std::uint64_t window,
+                                        double time, const field::FieldFrame& frame);
+
   std::filesystem::path h5_path_;
   std::map<std::string, XdmfSeries> series_;  // by participant
 };

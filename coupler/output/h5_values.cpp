@@ -211,6 +211,28 @@ void write_array(hid_t group, const std::string& name, const std::vector<hsize_t
   write_whole(group, name, dims, values);
 }
 
+void create_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims) {
+  const std::string where = dataset_where(group, name);
+  Handle(H5Dcreate2(group, name.c_str(), H5T_NATIVE_DOUBLE, simple_space(dims, where).get(), H5P_DEFAULT, H5P_DEFAULT,
+                    H5P_DEFAULT),
+         H5Dclose, "create " + where);
+}
+
+void write_block(hid_t group, const std::string& name, const std::vector<hsize_t>& start,
+                 const std::vector<hsize_t>& count, const double* values) {
+  const std::string where = dataset_where(group, name);
+  const std::vector<hsize_t> dims = array_dims(group, name);
+  bool inside = start.size() == dims.size() && count.size() == dims.size();
+  for (std::size_t d = 0; inside && d < dims.size(); ++d) inside = count[d] <= dims[d] && start[d] <= dims[d] - count[d];
+  if (!inside) fail("a block outside " + where);
+  Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
+  Handle file_space(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
+  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
+        "select a block of " + where);
+  check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, simple_space(count, where).get(), file_space.get(), H5P_DEFAULT, values),
+        "write a block of " + where);
+}
+
 std::vector<hsize_t> array_dims(hid_t group, const std::string& name) {
   const std::string where = dataset_where(group, name);
   Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);

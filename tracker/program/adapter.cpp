@@ -1,5 +1,7 @@
 #include "tracker/program/adapter.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -80,6 +82,31 @@ participant::Outputs TrackerSolver::advance(const participant::Window& w, const 
 
 field::FieldFrame TrackerSolver::fields() const {
   // Taking the moments starts a new average: the next frame averages the windows since.
+  if (std::optional<FieldBlocks> blocks = field_blocks()) {
+    // The coupler takes the whole frame: rank 0 puts the blocks together.
+    if (!ranks_.lead()) {
+      blocks->each({});
+      return {};
+    }
+    field::FieldFrame frame = std::move(blocks->frame);
+    const std::array<std::size_t, 3> cells = std::get<field::RectilinearGrid>(grid_.grid).cells();
+    for (field::CellField& f : frame.fields)
+      f.values.assign(cells[0] * cells[1] * cells[2] * static_cast<std::size_t>(f.components), 0.0);
+    blocks->each([&](const field::CellBlock& b) {
+      for (std::size_t k = 0; k < frame.fields.size(); ++k) {
+        const auto width = static_cast<std::size_t>(frame.fields[k].components);
+        const double* from = b.fields[k].values.data();
+        for (std::size_t z = b.lo[2]; z < b.hi[2]; ++z)
+          for (std::size_t y = b.lo[1]; y < b.hi[1]; ++y) {
+            const std::size_t row = width * (b.hi[0] - b.lo[0]);
+            std::copy_n(from, row, frame.fields[k].values.begin() +
+                                       static_cast<std::ptrdiff_t>(width * ((z * cells[1] + y) * cells[0] + b.lo[0])));
+            from += row;
+          }
+      }
+    });
+    return frame;
+  }
   const std::vector<double> count = gas_->counts();
   const std::vector<CellMoments> moments = gas_->take_moments();
   std::optional<field::PointSet> particles;
@@ -88,6 +115,44 @@ field::FieldFrame TrackerSolver::fields() const {
   field::FieldFrame frame{grid_.grid, cell_fields(moments, count)};
   if (particles) frame.point_sets.push_back(std::move(*particles));
   return frame;
+}
+
+std::optional<TrackerSolver::FieldBlocks> TrackerSolver::field_blocks() const {
+  if (!gas_->brick()) return std::nullopt;
+  const Simulation::BrickSamples mine = gas_->take_brick();
+  std::optional<field::PointSet> particles;
+  if (particle_output_ && particle_output_->at(done_, windows_)) particles = particle_set(*gas_, *particle_output_);
+  FieldBlocks blocks;
+  // A block on the wire: its lo and hi, then each field's values.
+  std::vector<double> sent;
+  for (const std::array<int, 3>& corner : {mine.brick.lo, mine.brick.hi}) sent.insert(sent.end(), corner.begin(), corner.end());
+  std::vector<field::CellField> layout;
+  for (field::CellField& f : cell_fields(mine.moments, mine.count)) {
+    sent.insert(sent.end(), f.values.begin(), f.values.end());
+    layout.push_back({std::move(f.name), f.components, {}});
+  }
+  if (ranks_.lead()) {
+    blocks.frame = {grid_.grid, layout};
+    if (particles) blocks.frame.point_sets.push_back(std::move(*particles));
+  }
+  blocks.each = [ranks = ranks_, layout = std::move(layout), sent = std::move(sent)](const auto& take) {
+    ranks.gather_each(sent, [&](std::span<const double> values) {
+      field::CellBlock b;
+      for (std::size_t a = 0; a < 3; ++a) {
+        b.lo[a] = static_cast<std::size_t>(values[a]);
+        b.hi[a] = static_cast<std::size_t>(values[3 + a]);
+      }
+      const std::size_t n = (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]);
+      const double* at = values.data() + 6;
+      for (const field::CellField& f : layout) {
+        const std::size_t count = n * static_cast<std::size_t>(f.components);
+        b.fields.push_back({f.name, f.components, {at, at + count}});
+        at += count;
+      }
+      take(b);
+    });
+  };
+  return blocks;
 }
 
 std::vector<std::string> TrackerSolver::wanted_fields() const { return {"velocity"}; }

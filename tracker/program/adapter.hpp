@@ -8,7 +8,9 @@
 // start, and the tracers are carried by it, held, through the window.
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <optional>
 
 #include "coupler/participant/solver.hpp"
 #include "tracker/program/output_grid.hpp"
@@ -43,6 +45,15 @@ class TrackerSolver final : public participant::Solver {
   // windows particle_output names (counted from the last advance()) the particles too, on
   // rank 0 (particle_dump.hpp).
   field::FieldFrame fields() const override;
+  // fields() in blocks, one per rank, for a writer that never holds every cell's values (a
+  // box of hexahedra over several ranks, Simulation::brick()); nullopt otherwise. Collective.
+  struct FieldBlocks {
+    field::FieldFrame frame;  // rank 0's: the grid, the fields' names and components, the particles
+    // Hands take() each rank's block on rank 0, rank after rank; collective: every rank
+    // calls it once (the others with a take() that is not called).
+    std::function<void(const std::function<void(const field::CellBlock&)>& take)> each;
+  };
+  std::optional<FieldBlocks> field_blocks() const;
   // Tracers need only the fluid's velocity of its frame.
   std::vector<std::string> wanted_fields() const override;
 

@@ -31,7 +31,6 @@ OutputGrid output_grid(const BoxSpec& box) {
     length[a] = nodes.nodes[a].back() - nodes.nodes[a].front();
   }
   OutputGrid out;
-  out.volume = cell_volumes(box);
   out.patches = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
   for (int a = 0; a < 3; ++a) {
     const double side = box.periodic[a] ? 0.0 : length[(a + 1) % 3] * length[(a + 2) % 3];
@@ -39,8 +38,10 @@ OutputGrid output_grid(const BoxSpec& box) {
   }
   if (!box.tetrahedra) {
     out.grid = std::move(nodes);
+    out.box = box;
     return out;
   }
+  out.volume = cell_volumes(box);
   const Polyhedra cells = box_polyhedra(box);
   out.grid = field::PolyhedralGrid{flat(cells.vertices), mixed_topology(cells), out.volume.size()};
   return out;
@@ -49,7 +50,7 @@ OutputGrid output_grid(const BoxSpec& box) {
 OutputGrid output_grid(const Mesh& whole) {
   return {
       field::PolyhedralGrid{flat(whole.vertices), mixed_topology(whole), static_cast<std::size_t>(whole.cell_count())},
-      whole.volume, whole.patches, patch_areas(whole)};
+      whole.volume, std::nullopt, whole.patches, patch_areas(whole)};
 }
 
 OutputGrid output_grid(const Simulation& gas) {

@@ -6,6 +6,7 @@
 // patch's area, which the moments and the walls' stresses are divided by.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,11 @@ namespace cosim::tracker {
 
 struct OutputGrid {
   field::Grid grid;
-  std::vector<double> volume;        // per cell (m^3), in the grid's order
+  // Per cell (m^3), in the grid's order: of a polyhedral grid. A box of hexahedra's come
+  // from `box`, a slab of cells at a time (cell_volumes.hpp), so that its writer never
+  // holds every cell's.
+  std::vector<double> volume;
+  std::optional<BoxSpec> box;
   std::vector<std::string> patches;  // the boundary patches' names (Mesh::patches)
   std::vector<double> patch_area;    // per patch (m^2): a periodic axis's patches have none
 };

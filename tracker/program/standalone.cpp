@@ -39,10 +39,20 @@ class TrackerRecorder final : public participant::Recorder {
     Sample sample{.step = gas.steps(),
                   .time = time,
                   .particles = gas.particles(),
-                  .fields = solver_.fields(),
+                  .fields = {},
                   .objects = gas.tallies(),
                   .patches = gas.patch_tallies(),
                   .moves = gas.moves()};
+    // A box over several ranks is written rank by rank: no rank holds every cell's values.
+    if (std::optional<TrackerSolver::FieldBlocks> blocks = solver_.field_blocks()) {
+      sample.fields = std::move(blocks->frame);
+      if (file_)
+        file_->write(sample, blocks->each);
+      else
+        blocks->each({});
+      return;
+    }
+    sample.fields = solver_.fields();
     if (file_) file_->write(sample);
   }
 

@@ -10,6 +10,7 @@
 #include "coupler/output/series.hpp"
 #include "coupler/output/in_file.hpp"
 #include "coupler/output/text.hpp"
+#include "tracker/step/cell_volumes.hpp"
 
 namespace cosim::tracker {
 namespace {
@@ -38,11 +39,25 @@ struct TrackerFile::Impl {
         patches(grid.patches.size()),
         fields(p),
         volume(grid.volume),
-        volume_dims{grid.volume.size()} {
-    if (const auto* box = std::get_if<field::RectilinearGrid>(&grid.grid)) {
-      const std::array<std::size_t, 3> n = box->cells();
-      volume_dims = {n[2], n[1], n[0]};  // as the fields: numpy's density * volume broadcasts
+        box(grid.box) {}
+
+  // Into the grid's group, once the first step has made it: a box's slab by slab, shaped
+  // as the fields (nz, ny, nx), so that numpy's density * volume broadcasts.
+  void write_volume() {
+    Handle grid = output::open_group(file.get(), "/fields/tracker/grid");
+    if (!box) {
+      output::write_array(grid.get(), "volume", {volume.size()}, volume.data());
+      volume = {};
+      return;
     }
+    std::array<int, 3> n{};
+    for (int a = 0; a < 3; ++a) n[a] = static_cast<int>(axis_nodes(box->axes[a]).size()) - 1;
+    const std::vector<hsize_t> dims{hsize_t(n[2]), hsize_t(n[1]), hsize_t(n[0])};
+    output::create_array(grid.get(), "volume", dims);
+    for (int k = 0; k < n[2]; ++k)
+      output::write_block(grid.get(), "volume", {hsize_t(k), 0, 0}, {1, dims[1], dims[2]},
+                          cell_volumes(*box, {0, 0, k}, {n[0], n[1], k + 1}).data());
+    box.reset();
   }
 
   std::filesystem::path path;
@@ -53,8 +68,9 @@ struct TrackerFile::Impl {
   std::size_t patches = 0;
   std::vector<Series> patch_tallies;  // hits, absorbed, impulse, energy
   output::FieldWriter fields;
-  std::vector<double> volume;   // per cell: into the grid's group once the first step wrote it
-  std::vector<hsize_t> volume_dims;
+  // Until the first step wrote the grid's group: the volumes for it (OutputGrid's).
+  std::vector<double> volume;
+  std::optional<BoxSpec> box;
 };
 
 TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& scene, const OutputGrid& grid,
@@ -110,19 +126,18 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
 TrackerFile::TrackerFile(TrackerFile&&) noexcept = default;
 TrackerFile::~TrackerFile() = default;
 
-void TrackerFile::write(const Sample& s) {
+void TrackerFile::write(const Sample& s, const Blocks& blocks) {
   Impl& m = *impl_;
   output::in_file(m.path, [&] {
     const hid_t file = m.file.get();
     if (s.objects.size() != m.objects)
       throw output::ObjectError("step " + std::to_string(s.step) + ": " + std::to_string(s.objects.size()) +
                                 " object tallies for " + std::to_string(m.objects) + " objects");
-    m.fields.write(file, "tracker", s.step, s.time, s.fields);
-    if (!m.volume.empty()) {  // the first write has just made the grid's group
-      Handle grid = output::open_group(file, "/fields/tracker/grid");
-      output::write_array(grid.get(), "volume", m.volume_dims, m.volume.data());
-      m.volume = {};
-    }
+    if (blocks)
+      m.fields.write(file, "tracker", s.step, s.time, s.fields, blocks);
+    else
+      m.fields.write(file, "tracker", s.step, s.time, s.fields);
+    if (!m.volume.empty() || m.box) m.write_volume();  // the first write has just made the grid's group
 
     m.rows[0].append(&s.step);
     m.rows[1].append(&s.time);

@@ -44,6 +44,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -75,7 +76,11 @@ class TrackerFile {
   TrackerFile(TrackerFile&&) noexcept;
   ~TrackerFile();
 
-  void write(const Sample& sample);  // flushes, then rewrites the sidecar
+  // Flushes, then rewrites the sidecar. With `blocks` the sample's fields name the cell
+  // fields and blocks() hands over their values block by block
+  // (output::FieldWriter::write's).
+  using Blocks = std::function<void(const std::function<void(const field::CellBlock&)>&)>;
+  void write(const Sample& sample, const Blocks& blocks = {});
   void set_status(const std::string& status, double wall_seconds);
 
  private:

@@ -101,7 +101,7 @@ Simulation::Simulation(GasSetup setup, Ranks ranks)
     }
     sampler_ = CellSampler(*part_);
   }
-  if (ranks.size() > 1 && ranks.lead() && setup_.box) whole_volume_ = cell_volumes(*setup_.box);
+  if (ranks.size() > 1 && ranks.lead() && setup_.box && !brick()) whole_volume_ = cell_volumes(*setup_.box);
   swarm_ = seed_particles(tracked(), setup_.obstacles, setup_.particles, decomposition_, volumes);
   seeded_ = swarm_.size();
   if (setup_.collisions) {
@@ -288,6 +288,52 @@ MoveTally Simulation::moves() const {
 std::vector<ObstacleTally> Simulation::tallies() const { return summed(tallies_, decomposition_.ranks()); }
 std::vector<SurfaceTally> Simulation::patch_tallies() const { return summed(patch_tallies_, decomposition_.ranks()); }
 
+std::optional<Bricks::Range> Simulation::brick() const {
+  if (!part_ || !setup_.box || setup_.box->tetrahedra) return std::nullopt;
+  return decomposition_.owners().bricks()->brick(decomposition_.ranks().rank());
+}
+
+Simulation::BrickSamples Simulation::take_brick() {
+  const Bricks::Range mine = *brick();
+  std::vector<double> count(static_cast<std::size_t>(tracked().cell_count()), 0.0);
+  for (std::size_t i = 0; i < swarm_.size(); ++i) count[static_cast<std::size_t>(swarm_.cell(i))] += 1.0;
+  // What a ghost holds (its strays, their sums) goes to its owner.
+  std::map<int, std::vector<double>> records;
+  std::array<double, 1 + CellSampler::kSumsPerCell> held{};
+  for (Index c = tracked().own_cells(); c < tracked().cell_count(); ++c) {
+    held[0] = count[static_cast<std::size_t>(c)];
+    const std::array<double, CellSampler::kSumsPerCell> sums = sampler_.cell_sums(c);
+    std::copy(sums.begin(), sums.end(), held.begin() + 1);
+    put_cells(records[decomposition_.owner(tracked().global_cell(c))], tracked(), c, held);
+  }
+  Messages to_owners;
+  for (const auto& [rank, values] : records) to_owners[rank] = bytes_of(values);
+  for (const auto& [rank, bytes] : decomposition_.exchange(to_owners)) {
+    const std::vector<double> values = doubles_of(bytes);
+    for (std::size_t at = 0; at < values.size(); at += 1 + held.size()) {
+      const Index c = numbering().local(static_cast<Index>(values[at]));
+      count[static_cast<std::size_t>(c)] += values[at + 1];
+      sampler_.add_sums(c, std::span(values).subspan(at + 2, CellSampler::kSumsPerCell));
+    }
+  }
+  BrickSamples taken{.brick = mine, .count = {}, .moments = {}};
+  const std::vector<double> volume = cell_volumes(*setup_.box, mine.lo, mine.hi);
+  taken.count.reserve(volume.size());
+  taken.moments.reserve(volume.size());
+  const std::array<int, 3>& hexahedra = decomposition_.owners().bricks()->hexahedra();
+  std::size_t v = 0;
+  for (int k = mine.lo[2]; k < mine.hi[2]; ++k)
+    for (int j = mine.lo[1]; j < mine.hi[1]; ++j)
+      for (int i = mine.lo[0]; i < mine.hi[0]; ++i, ++v) {
+        const Index c = numbering().local(box_cell_index({{i, j, k}}, hexahedra, 1));
+        taken.count.push_back(count[static_cast<std::size_t>(c)]);
+        taken.moments.push_back(CellSampler::moments(sampler_.cell_sums(c), sampler_.samples(), volume[v],
+                                                     setup_.particles.mass, setup_.particles.weight));
+      }
+  sampler_.reset();
+  return taken;
+}
+
 std::vector<double> Simulation::counts() const {
   std::vector<double> count(static_cast<std::size_t>(tracked().cell_count()), 0.0);
   for (std::size_t i = 0; i < swarm_.size(); ++i) count[static_cast<std::size_t>(swarm_.cell(i))] += 1.0;
@@ -295,6 +341,7 @@ std::vector<double> Simulation::counts() const {
 }
 
 std::vector<CellMoments> Simulation::take_moments() {
+  if (brick()) throw std::logic_error("a brick's moments are take_brick()'s");
   const double mass = setup_.particles.mass, weight = setup_.particles.weight;
   std::vector<CellMoments> moments;
   moments.reserve(decomposition_.ranks().lead() ? static_cast<std::size_t>(whole_cells_) : 0);

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "tracker/mesh/part.hpp"
+#include "tracker/parallel/bricks.hpp"
 #include "tracker/parallel/decomposition.hpp"
 #include "tracker/step/collide.hpp"
 #include "tracker/step/gas_setup.hpp"
@@ -83,10 +84,24 @@ class Simulation {
   // Per boundary patch (Mesh::patches): what the particles gave the walls there.
   std::vector<SurfaceTally> patch_tallies() const;
 
+  // This rank's brick, over several ranks in a box of hexahedra (not in tracer mode): its
+  // per-cell results come as a block of the output's grid (take_brick()), so that no rank
+  // holds every cell's. Empty otherwise (counts() and take_moments() add up on rank 0).
+  std::optional<Bricks::Range> brick() const;
+  struct BrickSamples {
+    Bricks::Range brick;
+    std::vector<double> count;           // particles per cell now
+    std::vector<CellMoments> moments;    // averaged since the last take
+  };
+  // This rank's cells in its brick's order (x fastest), as counts() and take_moments() give
+  // every cell's: a new average begins. Collective; what its ghosts hold (particles and
+  // sums a stray left there) goes to their owners first. Requires brick().
+  BrickSamples take_brick();
   // Particles per cell of the whole mesh now (collective; on rank 0, empty on the others).
   std::vector<double> counts() const;
   // The per-cell moments averaged over the steps since the last call (or the start), then
-  // a new average begins (collective; on rank 0, empty on the others).
+  // a new average begins (collective; on rank 0, empty on the others). Over a brick(),
+  // take_brick() instead (std::logic_error).
   std::vector<CellMoments> take_moments();
 
   // Everything a later restore() needs to continue exactly from here (with the same
@@ -145,7 +160,9 @@ class Simulation {
   // null on one rank and in tracer mode.
   std::unique_ptr<Mesh> part_;
   Index whole_cells_ = 0;
-  std::vector<double> whole_volume_;  // of a box over several ranks, rank 0's: every cell's volume
+  // Of a box of tetrahedra over several ranks, rank 0's: every cell's volume (a box of
+  // hexahedra gives each rank's brick its own, take_brick()).
+  std::vector<double> whole_volume_;
   std::unique_ptr<PartCells> part_cells_;
   Handover away_;  // the moves of a step that entered ghosts, until they are done
   // Some rank may hold particles in its ghosts (an obstacle moved, or a recovery put them

@@ -70,13 +70,30 @@ void CellSampler::reset() {
 std::vector<double> CellSampler::sums() const {
   std::vector<double> out{static_cast<double>(samples_)};
   out.reserve(1 + kSumsPerCell * count_.size());
-  for (std::size_t c = 0; c < count_.size(); ++c) {
-    out.push_back(count_[c]);
-    out.insert(out.end(), sum_[c].begin(), sum_[c].end());
-    out.insert(out.end(), square_[c].data(), square_[c].data() + 9);
-    out.insert(out.end(), cubic_[c].begin(), cubic_[c].end());
+  for (Index c = 0; c < static_cast<Index>(count_.size()); ++c) {
+    const std::array<double, kSumsPerCell> cell = cell_sums(c);
+    out.insert(out.end(), cell.begin(), cell.end());
   }
   return out;
+}
+
+std::array<double, CellSampler::kSumsPerCell> CellSampler::cell_sums(Index cell) const {
+  const auto c = static_cast<std::size_t>(cell);
+  std::array<double, kSumsPerCell> out{count_[c]};
+  std::copy_n(sum_[c].data(), 3, out.begin() + 1);
+  std::copy_n(square_[c].data(), 9, out.begin() + 4);
+  std::copy_n(cubic_[c].data(), 3, out.begin() + 13);
+  return out;
+}
+
+void CellSampler::add_sums(Index cell, std::span<const double> sums) {
+  if (sums.size() != kSumsPerCell)
+    throw std::invalid_argument("CellSampler::add_sums: " + std::to_string(sums.size()) + " sums of a cell");
+  const auto c = static_cast<std::size_t>(cell);
+  count_[c] += sums[0];
+  sum_[c] += Vec3(sums.data() + 1);
+  square_[c] += Eigen::Matrix3d(sums.data() + 4);
+  cubic_[c] += Vec3(sums.data() + 13);
 }
 
 void CellSampler::set_sums(std::span<const double> sums) {

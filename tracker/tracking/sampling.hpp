@@ -6,6 +6,7 @@
 
 #include "tracker/tracking/swarm.hpp"
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -45,6 +46,10 @@ class CellSampler {
   std::vector<double> sums() const;
   // std::invalid_argument unless `sums` has the layout of sums() for this mesh.
   void set_sums(std::span<const double> sums);
+  // One cell's kSumsPerCell sums as sums() lays them out; add_sums() adds such sums (of the
+  // same cell, sampled on another rank) to the cell's.
+  std::array<double, kSumsPerCell> cell_sums(Index cell) const;
+  void add_sums(Index cell, std::span<const double> sums);
 
  private:
   std::vector<double> volume_;

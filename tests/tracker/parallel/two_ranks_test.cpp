@@ -419,6 +419,34 @@ TEST(TwoRanks, TheSameParticleSampleAsOneRank) {
   }
 }
 
+// Guards against: a rank's brick written to another place of the box. The deterministic
+// gas has one rank's particles in every cell: the file written rank by rank holds one
+// rank's fields, the counts exactly, the moments to their sums' rounding.
+TEST(TwoRanks, TheFieldsWrittenRankByRankAreOneRanks) {
+  const OneAndTwo r = run_on_one_and_two(deterministic_gas("0.1"), "fields");
+  if (rank() != 0) return;
+  const auto dir = std::filesystem::path(::testing::TempDir());
+  output::Handle one(H5Fopen((dir / "fields-one.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open one");
+  output::Handle two(H5Fopen((dir / "fields-two.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open two");
+  for (const std::string step : {"000000", "000020", "000040"}) {
+    for (const char* field : {"count", "mean_count", "density", "velocity", "temperature", "pressure"}) {
+      const std::string name = "/fields/tracker/" + step + "/" + field;
+      const std::vector<double> a = output::read_array(one.get(), name), b = output::read_array(two.get(), name);
+      EXPECT_EQ(output::array_dims(two.get(), name), output::array_dims(one.get(), name)) << name;
+      ASSERT_EQ(a.size(), b.size()) << name;
+      double largest = 0.0;
+      for (const double x : a) largest = std::max(largest, std::abs(x));
+      EXPECT_GT(largest, 0.0) << name;
+      for (std::size_t c = 0; c < a.size(); ++c) {
+        if (std::string(field).ends_with("count"))
+          EXPECT_EQ(b[c], a[c]) << name << " [" << c << "]";
+        else
+          EXPECT_NEAR(b[c], a[c], 1e-12 * largest) << name << " [" << c << "]";
+      }
+    }
+  }
+}
+
 // Each rank tracks on its part of the mesh (its cells and two layers of ghosts), and the
 // moves that cross into the other rank's cells are finished there within the step: the
 // deterministic gas makes exactly one rank's moves, crossings and object events.
@@ -611,14 +639,61 @@ TEST(TwoRanks, AFaultOnOneRanksPartStopsEveryRank) {
   }
 }
 
+// Guards against: a stray (a particle a moving wall or a recovery left in a ghost) missing
+// from the fields written rank by rank. Each rank restores a state in which one of its
+// particles sits in the other rank's cells; the owner's brick counts it.
+TEST(TwoRanks, ABrickCountsTheStraysTheOtherRankHolds) {
+  const scene::Scene scene = scene::load_scene_from_string(
+      "time: {end: 0.01}\ncoupling: {window: 0.01}\ndomain: {min: [0, 0, 0], max: [2, 1, 1]}\n"
+      "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
+      "      mesh: {type: box, cells: [8, 4, 4]}\n      boundaries: {default: {kind: specular}}\n"
+      "      particles: {per_cell: 3, temperature: 0, mass: 1.0e-26, seed: 1}\n",
+      "strays.yaml");
+  Simulation gas(read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
+  // The bricks are cut at x = 1: the stray goes a cell beyond it, into hexahedron (4, 1, 1)
+  // from rank 0 and (3, 1, 1) from rank 1.
+  const Vec3 x{rank() == 0 ? 1.1 : 0.9, 0.4, 0.4};
+  const std::array<int, 3> hex{rank() == 0 ? 4 : 3, 1, 1};
+  const Index cell = box_cell_index({hex}, {8, 4, 4}, 1);
+  ASSERT_FALSE(gas.decomposition().owns(cell));
+  std::vector<double> state = gas.state();
+  const std::size_t at = record_of(state, gas, 0);
+  ASSERT_LT(at, state.size());
+  StateWriter record;
+  record.put(x, Vec3::Zero(), cell);
+  const std::vector<double> values = record.take();
+  std::copy(values.begin(), values.end(), state.begin() + static_cast<std::ptrdiff_t>(at));
+  gas.restore(state);
+
+  const Simulation::BrickSamples mine = gas.take_brick();
+  const double counted = std::accumulate(mine.count.begin(), mine.count.end(), 0.0);
+  std::vector<double> total{counted};
+  gas.decomposition().ranks().sum(total);
+  EXPECT_EQ(total[0], static_cast<double>(gas.particles()));
+  // The other rank's stray lies in this rank's hexahedron across the cut.
+  const std::array<int, 3> strays_hex{rank() == 0 ? 3 : 4, 1, 1};
+  const std::array<int, 3>&lo = mine.brick.lo, &hi = mine.brick.hi;
+  ASSERT_TRUE(mine.brick.holds(strays_hex));
+  const auto in_brick = static_cast<std::size_t>(
+      strays_hex[0] - lo[0] + (hi[0] - lo[0]) * (strays_hex[1] - lo[1] + (hi[1] - lo[1]) * (strays_hex[2] - lo[2])));
+  double own = 0;  // this rank's particles in that cell, the restored stray not among them
+  for (std::size_t i = 0; i < gas.swarm().size(); ++i)
+    own += gas.tracked().global_cell(gas.swarm().cell(i)) == box_cell_index({strays_hex}, {8, 4, 4}, 1) ? 1 : 0;
+  EXPECT_EQ(mine.count.at(in_brick), own + 1);
+}
+
 // Coupled, the frame of rank 0 carries every rank's particles, at the windows the option names.
 TEST(TwoRanks, TheCoupledFrameCarriesEveryRanksParticles) {
   TrackerSolver solver{Ranks(MPI_COMM_WORLD)};
   const scene::Scene scene = deterministic_gas("1");
+  Simulation one(read_tracker(scene));  // rank 0's, for its counts
   participant::run_on_ranks(solver, MPI_COMM_WORLD, [&](participant::Solver& lead) {
     lead.initialise(scene, "tracker", {}, {});
     for (std::uint64_t k = 0; k <= 2; ++k) {
-      if (k > 0) lead.advance({k - 1, 1, 0.1 * double(k - 1), 0.1 * double(k)}, {});
+      if (k > 0) {
+        lead.advance({k - 1, 1, 0.1 * double(k - 1), 0.1 * double(k)}, {});
+        one.advance(0.1 * double(k - 1), 0.1 * double(k));
+      }
       const field::FieldFrame frame = lead.fields();
       if (k == 1) {
         EXPECT_TRUE(frame.point_sets.empty());  // not a multiple of every: 2
@@ -626,6 +701,7 @@ TEST(TwoRanks, TheCoupledFrameCarriesEveryRanksParticles) {
       }
       EXPECT_EQ(frame.fields[0].name, "count");
       const std::vector<double>& count = frame.fields[0].values;
+      EXPECT_EQ(count, one.counts()) << "window " << k;  // the ranks' bricks where one rank has the cells
       EXPECT_EQ(frame.point_sets.size(), 1u) << "window " << k;
       if (frame.point_sets.size() == 1) {
         EXPECT_EQ(static_cast<double>(frame.point_sets[0].points.size() / 3),

@@ -200,6 +200,24 @@ TEST(TrackerStandalone, WritesTheLastStepWithoutFieldsEveryAndNoObstacles) {
   EXPECT_NE(summary.find("move "), std::string::npos) << summary;
 }
 
+// Guards against: a box's volumes, written a slab of cells at a time, put in the wrong
+// place (a graded box: every cell's differs from its neighbours').
+TEST(TrackerStandalone, AGradedBoxsVolumesAreShapedAsItsFields) {
+  scene::Scene scene = scene_of_mesh("{type: box, cells: [3, 2, 4], ratio: [2, 3, 0.5]}",
+                                     "      boundaries: {default: {kind: specular}}\n"
+                                     "      particles: {per_cell: 1, temperature: 1, mass: 1.380649e-23}\n");
+  scene.output.fields_every = 0;
+  run_tracker(scene, out("graded.h5"));
+  output::Handle file(H5Fopen(out("graded.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open graded.h5");
+  EXPECT_EQ(output::array_dims(file.get(), "/fields/tracker/grid/volume"), (std::vector<hsize_t>{4, 2, 3}));
+  BoxSpec spec;
+  for (int a = 0; a < 3; ++a)
+    spec.axes[a] = {.min = 0, .max = 1, .cells = std::array{3, 2, 4}[a], .ratio = std::array{2.0, 3.0, 0.5}[a]};
+  const std::vector<double> volume = output::read_array(file.get(), "/fields/tracker/grid/volume");
+  EXPECT_EQ(volume, cell_volumes(spec));
+  EXPECT_NEAR(sum(volume), 1.0, 1e-14);
+}
+
 // DSMC in a closed box (argon, VSS, specular walls): every particle kept, and the
 // collisions per step those of an equilibrium gas, 0.5 N n <sigma g>.
 TEST(TrackerStandalone, CollisionsAtTheEquilibriumRate) {
@@ -394,9 +412,12 @@ TEST(TrackerFields, TheSamplesPerCellInCellOrder) {
 // volumes), to compare with what a box's nodes give without the mesh.
 void expect_geometry_of(const OutputGrid& grid, const Mesh& mesh) {
   const OutputGrid from_mesh = output_grid(mesh);
-  ASSERT_EQ(grid.volume.size(), from_mesh.volume.size());
-  for (std::size_t c = 0; c < grid.volume.size(); ++c)
-    EXPECT_NEAR(grid.volume[c], from_mesh.volume[c], 1e-14 * from_mesh.volume[c]) << "cell " << c;
+  // A box of hexahedra holds no volume per cell: the writer takes them from the box.
+  EXPECT_EQ(grid.volume.empty(), grid.box.has_value());
+  const std::vector<double> volume = grid.box ? cell_volumes(*grid.box) : grid.volume;
+  ASSERT_EQ(volume.size(), from_mesh.volume.size());
+  for (std::size_t c = 0; c < volume.size(); ++c)
+    EXPECT_NEAR(volume[c], from_mesh.volume[c], 1e-14 * from_mesh.volume[c]) << "cell " << c;
   EXPECT_EQ(grid.patches, from_mesh.patches);
   ASSERT_EQ(grid.patch_area.size(), from_mesh.patch_area.size());
   for (std::size_t p = 0; p < grid.patch_area.size(); ++p)
