@@ -63,7 +63,7 @@ void SoftStep::build_rows(const ContactScene& scene, std::span<const CachedConta
     g.axes = g.per_point ? 0 : g.count <= options_.full_block_points && mass_ratio ? 3 : 1;
     g.soft = make_softness(options_.spring_hertz(scene.dt), options_.damping_ratio, g.per_point ? 1.0 : mass,
                            scene.dt);
-    groups_.push_back(g);
+    groups_.push_back(std::move(g));
   }
 }
 
@@ -105,6 +105,9 @@ SolveReport SoftStep::relax(std::span<dynamics::BodyState> states, std::span<Cac
   for (const Row& r : rows_)
     memory[r.point] = {.normal = r.impulse[0],
                        .tangential = r.frame.basis.bottomRows<2>().transpose() * r.impulse.tail<2>()};
+  // The groups' blocks (matrices, factorizations) serve this narrow phase's substeps only:
+  // none is held between steps.
+  groups_.clear();
   return report;
 }
 
@@ -154,7 +157,8 @@ double SoftStep::sweeps(Group& g, bool biased, std::span<dynamics::BodyState> st
         // Friction is rigid; its rows get the relax's regularization.
         row_compliance.push_back(axis == 0 ? compliance[i] : kRigidCompliance * rows[i].law.response(axis, axis));
       }
-    Group::Block& kept = g.blocks[biased ? 1 : 0];
+    if (!g.blocks) g.blocks = std::make_unique<std::array<Group::Block, 2>>();
+    Group::Block& kept = (*g.blocks)[biased ? 1 : 0];
     if (!kept.solver || kept.compliance != row_compliance) {
       std::vector<ContactFrame> frames;
       for (const Row& r : rows) frames.push_back(r.frame);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <span>
 #include <utility>
@@ -93,12 +94,14 @@ class SoftStep {
     double scale = 0.0;
     // A directly solved group's block for the biased pass [1] and the relax [0], kept over
     // the substeps of a narrow phase: the same rows and, unless a gap closed, the same
-    // compliance, so the same matrix and (for the same active set) factorization.
+    // compliance, so the same matrix and (for the same active set) factorization. Out of
+    // line: most groups of a pile are solved point by point, and their place in groups_
+    // should stay small (bench/rigidbody_granular/README.md "Where the memory goes").
     struct Block {
       std::vector<double> compliance;
       std::optional<ContactBlock> solver;
     };
-    std::array<Block, 2> blocks;
+    std::unique_ptr<std::array<Block, 2>> blocks;
   };
 
   void build_rows(const ContactScene& scene, std::span<const CachedContact> memory);
