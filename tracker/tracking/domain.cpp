@@ -35,6 +35,7 @@ Domain::Domain(const Mesh& mesh_, Boundaries boundaries_)
   inner_boxes.reserve(static_cast<std::size_t>(mesh.cell_count()));
   for (Index c = 0; c < mesh.cell_count(); ++c) inner_boxes.push_back(inner_box(mesh, c, tolerance));
   lattice = lattice_faces(mesh);
+  implicit = ImplicitLattice(mesh, lattice);
 }
 
 InnerBox inner_box(const Mesh& mesh, Index cell, double margin) {

@@ -4,6 +4,7 @@
 
 #include "tracker/mesh/locate.hpp"
 #include "tracker/tracking/boundaries.hpp"
+#include "tracker/tracking/implicit_lattice.hpp"
 #include "tracker/tracking/lattice.hpp"
 
 #include <vector>
@@ -45,6 +46,7 @@ struct Domain {
   double tolerance;  // 1e-10 of the (whole) mesh's bounding-box diagonal
   std::vector<InnerBox> inner_boxes;  // per cell, inside by the tolerance
   std::vector<LatticeFaces> lattice;  // per cell, or empty if no cell is an axis-aligned hexahedron
+  ImplicitLattice implicit;           // empty unless the cells are numbered as a lattice
 };
 
 // How far x is outside the cell's planes (the largest -n.(x - point), <= 0 inside) and

@@ -1,7 +1,7 @@
 // The cells' inner boxes and the event-driven move's fast paths: every box is inside its
 // cell by the tolerance, and particles moved with the inner boxes and the lattice scan end
 // exactly where the full algorithm puts them (the full algorithm is what a Domain whose
-// boxes are all empty and that has no lattice runs).
+// boxes are all empty and that has no lattice, implicit or not, runs).
 
 #include "tests/tracker/tracking/hard_moves.hpp"
 #include "tracker/csg/shapes.hpp"
@@ -99,6 +99,7 @@ void without_fast_path(Domain& domain) {
   constexpr float infinity = std::numeric_limits<float>::infinity();
   for (InnerBox& box : domain.inner_boxes) box = {{infinity, infinity, infinity}, {-infinity, -infinity, -infinity}};
   domain.lattice.clear();
+  domain.implicit = {};
 }
 
 void expect_same(const MoveTally& a, const MoveTally& b) {

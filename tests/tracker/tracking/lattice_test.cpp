@@ -1,9 +1,13 @@
 // The lattice path of the face scan (tracker/tracking/lattice.hpp): which cells take it, and
 // that it finds what the general scan finds, to the bit, for any start, velocity, skipped
 // face, horizon and clamp. The whole moves with and without it are compared in
-// inner_box_test.cpp (FastPath.SwarmEndsWhereTheFullAlgorithmPutsIt).
+// inner_box_test.cpp (FastPath.SwarmEndsWhereTheFullAlgorithmPutsIt). The implicit lattice
+// (implicit_lattice.hpp): which cells and faces it takes, and hard moves through it against
+// the face records, to the bit.
 
+#include "tests/tracker/tracking/hard_moves.hpp"
 #include "tracker/mesh/box_mesh.hpp"
+#include "tracker/mesh/box_part.hpp"
 #include "tracker/mesh/geometry.hpp"
 #include "tracker/mesh/perturb.hpp"
 #include "tracker/tracking/detail/algorithms.hpp"
@@ -11,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <random>
 
@@ -125,6 +130,7 @@ TEST(Lattice, MovesThroughAMixedMeshEndWhereTheGeneralScanPutsThem) {
   const Domain lattice(mesh, walls);
   Domain general(mesh, walls);
   general.lattice.clear();
+  general.implicit = {};
   const Obstacles none;
   Swarm a(0);
   std::mt19937_64 seeding(3);
@@ -149,6 +155,111 @@ TEST(Lattice, MovesThroughAMixedMeshEndWhereTheGeneralScanPutsThem) {
     ASSERT_EQ(a.cell(i), b.cell(i)) << i;
     ASSERT_EQ(a.particle(i).x, b.particle(i).x) << i;
   }
+}
+
+
+// Plain cells (their planes and faces the lattice's) and linked faces (into the lattice
+// neighbour, unshifted) of the implicit lattice.
+struct ImplicitCount {
+  int plain = 0, linked = 0;
+};
+ImplicitCount count_implicit(const Mesh& mesh) {
+  const Domain domain(mesh, {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 1.0});
+  ImplicitCount n;
+  for (Index c = 0; c < mesh.cell_count(); ++c) {
+    n.plain += domain.implicit.plain(c);
+    for (Index k = 0; k < 6; ++k) n.linked += domain.implicit.linked(c, 6 * c + k);
+  }
+  return n;
+}
+
+TEST(Lattice, ImplicitOnAWholeBoxOfHexahedraAndItsInteriorFaces) {
+  const Mesh walled = box_mesh(graded(false));
+  // 5 x 4 x 3 cells: the interior faces, each seen from both sides.
+  const int interior = 2 * (4 * 4 * 3 + 5 * 3 * 3 + 5 * 4 * 2);
+  EXPECT_EQ(count_implicit(walled).plain, 60);
+  EXPECT_EQ(count_implicit(walled).linked, interior);
+  // Periodic links keep their records (the shift): the same interior faces.
+  const ImplicitCount periodic = count_implicit(box_mesh(graded(false, {true, false, true})));
+  EXPECT_EQ(periodic.plain, 60);
+  EXPECT_EQ(periodic.linked, interior);
+  EXPECT_EQ(count_implicit(box_mesh(graded(true))).plain, 0);
+  EXPECT_EQ(count_implicit(perturbed(walled, {.fraction = 0.2, .seed = 3})).plain, 0);
+  // The eight cells around the moved vertex keep their records; their plain neighbours'
+  // faces into them are linked (the scan there then reads the records).
+  const ImplicitCount mixed = count_implicit(one_corner_moved());
+  EXPECT_EQ(mixed.plain, 64 - 8);
+  EXPECT_EQ(mixed.linked, 2 * 3 * (3 * 4 * 4) - 8 * 6);
+  // A rank's part is not numbered as a lattice.
+  const Mesh part = box_part(
+      graded(false), {0, 0, 0}, {2, 4, 3}, [](Index c) { return c % 5 < 2 ? 0 : 1; }, 0);
+  EXPECT_EQ(count_implicit(part).plain, 0);
+}
+
+bool same_bits(const Vec3& a, const Vec3& b) {
+  for (int i = 0; i < 3; ++i)
+    if (std::bit_cast<std::uint64_t>(a[i]) != std::bit_cast<std::uint64_t>(b[i])) return false;
+  return true;
+}
+
+// Adversarial moves (starts on vertices, edges and faces, aimed at vertices or along faces,
+// some velocity components 0 or -0, flights of up to 30 cells) through the implicit
+// lattice and through the face records alone (general scan, no inner boxes): the same
+// position and velocity to the bit, cell and counts, with the same random numbers for the
+// re-emitting walls. Guards against: a wrong plane, face index, neighbour, twin or skip of
+// the implicit path, or a wall or periodic link taken as a lattice link.
+void expect_implicit_moves_agree(const char* label, const Mesh& mesh, bool periodic) {
+  const double hot = 1.0 / 1.380649e-23;  // sigma = sqrt(k T / m) = 1 for unit mass
+  Boundaries walls{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 1.0};
+  walls.patches[0] = {.kind = BoundaryKind::diffuse, .temperature = hot};
+  walls.patches[3] = {.kind = BoundaryKind::maxwell, .temperature = hot, .accommodation = 0.5};
+  walls.patches[5] = {.kind = BoundaryKind::open};
+  const Domain implicit(mesh, walls);
+  Domain records(mesh, walls);
+  records.implicit = {};
+  records.lattice.clear();
+  for (InnerBox& box : records.inner_boxes) box = {{1.0f, 1.0f, 1.0f}, {0.0f, 0.0f, 0.0f}};
+  ASSERT_TRUE(implicit.implicit.plain(0)) << label;
+  Random moves(29), random_a(31), random_b(31);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  MoveTally tally_a, tally_b;
+  long long wraps = 0;
+  const Vec3 size = cell_box(mesh, 0).sizes();
+  for (int i = 0; i < 100000; ++i) {
+    testing::Flight flight = testing::hard_move(mesh, moves);
+    Vec3& v = flight.particle.v;
+    if (moves() % 4 == 0) v[static_cast<int>(moves() % 3)] = moves() % 2 == 0 ? 0.0 : -0.0;
+    if (moves() % 5 == 0) flight.dt *= 10.0 * uniform(moves);
+    Particle p = flight.particle, q = flight.particle;
+    const MoveResult r = move(Algorithm::event_driven, implicit, p, flight.dt, random_a);
+    const MoveResult s = move(Algorithm::event_driven, records, q, flight.dt, random_b);
+    MoveTally one_a, one_b;
+    one_a.add(r);
+    one_b.add(s);
+    for (const MoveCounter& c : kMoveCounters) ASSERT_EQ(one_a.*c.count, one_b.*c.count) << label << " move " << i << " " << c.name;
+    ASSERT_EQ(p.cell, q.cell) << label << " move " << i;
+    ASSERT_TRUE(same_bits(p.x, q.x)) << label << " move " << i;
+    ASSERT_TRUE(same_bits(p.v, q.v)) << label << " move " << i;
+    tally_a.add(r);
+    tally_b.add(s);
+    const Vec3 straight = flight.particle.x + flight.dt * flight.particle.v;
+    wraps += !r.removed && r.boundary_hits == 0 && (straight - p.x).cwiseAbs().maxCoeff() > 0.5 * size.minCoeff();
+  }
+  std::printf("%-10s %lld faces crossed, %lld zero-time events, %lld wall hits, %lld wraps\n", label,
+              tally_a.faces_crossed, tally_a.zero_time_events, tally_a.boundary_hits, wraps);
+  EXPECT_EQ(tally_a.lost, 0) << label;
+  EXPECT_GT(tally_a.faces_crossed, 150000) << label;
+  EXPECT_GT(tally_a.zero_time_events, 10000) << label;
+  EXPECT_GT(tally_a.boundary_hits, periodic ? 0 : 10000) << label;
+  if (periodic) {
+    EXPECT_GT(wraps, 1000) << label;
+  }
+}
+
+TEST(Lattice, ImplicitMovesEndWhereTheFaceRecordsPutThem) {
+  expect_implicit_moves_agree("walled", box_mesh(graded(false)), false);
+  expect_implicit_moves_agree("periodic", box_mesh(graded(false, {true, false, true})), true);
+  expect_implicit_moves_agree("mixed", one_corner_moved(), false);
 }
 
 }  // namespace

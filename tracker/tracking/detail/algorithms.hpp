@@ -29,12 +29,25 @@ struct FaceEvent {
 // they lose particles.
 // Faces the particle cannot reach within `horizon` (the rest of its move) are not events.
 FaceEvent first_exit(const Mesh& mesh, const Particle& particle, Index skip, bool clamp_behind, double horizon);
-// The same for an axis-aligned hexahedral cell from its planes' coordinates (lattice.hpp):
-// equal times, face and `behind` for finite x and v (a zero's sign aside).
+// An axis-aligned hexahedron's faces: face[2 a] (inward normal +e_a) in the plane x_a =
+// plane[2 a], face[2 a + 1] (-e_a) in x_a = plane[2 a + 1].
+struct BoxFaces {
+  Index face[6];
+  double plane[6];
+};
+// The scan of such a cell from its planes' coordinates (lattice.hpp): equal times, face and
+// `behind` to first_exit's for finite x and v (a zero's sign aside).
+FaceEvent box_exit(const BoxFaces& box, const Particle& particle, Index skip, bool clamp_behind, double horizon);
+// With the planes read from the cell's face records.
 FaceEvent lattice_exit(const Mesh& mesh, LatticeFaces cell, const Particle& particle, Index skip, bool clamp_behind,
                        double horizon);
-// The one of the two the particle's cell takes.
+// With the planes from the lattice's arrays (a plain cell of implicit_lattice.hpp): the same
+// numbers the records hold, no record read.
+FaceEvent implicit_exit(const ImplicitLattice& lattice, const Particle& particle, Index skip, bool clamp_behind,
+                        double horizon);
+// The one of the three the particle's cell takes.
 inline FaceEvent exit_face(const Domain& domain, const Particle& particle, Index skip, double horizon) {
+  if (domain.implicit.plain(particle.cell)) return implicit_exit(domain.implicit, particle, skip, true, horizon);
   if (!domain.lattice.empty())
     if (const LatticeFaces cell = domain.lattice[static_cast<std::size_t>(particle.cell)]; cell.holds())
       return lattice_exit(domain.mesh, cell, particle, skip, true, horizon);

@@ -41,18 +41,44 @@ FaceEvent first_exit(const Mesh& mesh, const Particle& p, Index skip, bool clamp
   return first;
 }
 
-FaceEvent lattice_exit(const Mesh& mesh, LatticeFaces cell, const Particle& p, Index skip, bool clamp_behind,
-                       double horizon) {
+FaceEvent box_exit(const BoxFaces& box, const Particle& p, Index skip, bool clamp_behind, double horizon) {
   constexpr double none = std::numeric_limits<double>::infinity();
   FaceEvent first{none, -1, none};
-  const Index base = mesh.cell_faces[p.cell];
   for (int a = 0; a < 3; ++a) {
     // n = +e_a on the low face, -e_a on the high one: the scan's n.v and n.(x - point).
-    const Index low = base + cell.low[a], high = base + cell.high[a];
-    if (low != skip) offer(first, low, p.v[a], p.x[a] - mesh.faces[low].point[a], clamp_behind, horizon);
-    if (high != skip) offer(first, high, -p.v[a], mesh.faces[high].point[a] - p.x[a], clamp_behind, horizon);
+    const Index low = box.face[2 * a], high = box.face[2 * a + 1];
+    if (low != skip) offer(first, low, p.v[a], p.x[a] - box.plane[2 * a], clamp_behind, horizon);
+    if (high != skip) offer(first, high, -p.v[a], box.plane[2 * a + 1] - p.x[a], clamp_behind, horizon);
   }
-  return first;
+  // A new object, so that `first` is not the caller's memory: kept in registers, not stored
+  // and reloaded at each offer (box_exit is most of a crossing move's arithmetic).
+  return {first.dt, first.face, first.behind};
+}
+
+FaceEvent lattice_exit(const Mesh& mesh, LatticeFaces cell, const Particle& p, Index skip, bool clamp_behind,
+                       double horizon) {
+  const Index base = mesh.cell_faces[p.cell];
+  BoxFaces box;
+  for (int a = 0; a < 3; ++a) {
+    box.face[2 * a] = base + cell.low[a];
+    box.face[2 * a + 1] = base + cell.high[a];
+    box.plane[2 * a] = mesh.faces[box.face[2 * a]].point[a];
+    box.plane[2 * a + 1] = mesh.faces[box.face[2 * a + 1]].point[a];
+  }
+  return box_exit(box, p, skip, clamp_behind, horizon);
+}
+
+FaceEvent implicit_exit(const ImplicitLattice& lattice, const Particle& p, Index skip, bool clamp_behind,
+                        double horizon) {
+  const ImplicitLattice::Place at = lattice.place(p.cell);
+  BoxFaces box;
+  for (int a = 0; a < 3; ++a) {
+    box.face[2 * a] = 6 * p.cell + 2 * a;
+    box.face[2 * a + 1] = 6 * p.cell + 2 * a + 1;
+    box.plane[2 * a] = lattice.plane(a, at.index[a]);
+    box.plane[2 * a + 1] = lattice.plane(a, at.index[a] + 1);
+  }
+  return box_exit(box, p, skip, clamp_behind, horizon);
 }
 
 Crossed cross(const Domain& domain, Particle& particle, Index face_index, Random& random, MoveResult& result,

@@ -143,6 +143,15 @@ MoveResult follow_events(const Domain& domain, Particle& p, const Flight& flight
       continue;
     }
     const Index from = p.cell;
+    if (domain.implicit.linked(from, face.face)) {
+      // What cross does across an interior face, from the cell index instead of the record.
+      p.x += domain.mesh.shifts[0];
+      p.cell = domain.implicit.neighbour(from, face.face);
+      ++result.faces_crossed;
+      skip = ImplicitLattice::twin(p.cell, from, face.face);
+      carried.follow(from, p, false);
+      continue;
+    }
     switch (cross(domain, p, face.face, random, result, carried.patches)) {
       case Crossed::removed: return result;
       case Crossed::neighbour:
