@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 
 namespace cosim::field {
 namespace {
@@ -102,6 +103,47 @@ std::string point_sets_problem(const std::vector<PointSet>& sets) {
     }
   }
   return {};
+}
+
+std::string block_problem(const CellBlock& b, const std::array<std::size_t, 3>& cells,
+                          const std::vector<CellField>& fields) {
+  std::size_t n = 1;
+  for (std::size_t a = 0; a < 3; ++a) {
+    if (!(b.lo[a] <= b.hi[a] && b.hi[a] <= cells[a]))
+      return "a block of cells [" + std::to_string(b.lo[a]) + ", " + std::to_string(b.hi[a]) + ") along " +
+             "xyz"[a] + ", where the grid has " + std::to_string(cells[a]);
+    n *= b.hi[a] - b.lo[a];
+  }
+  if (b.fields.size() != fields.size()) return "a block of " + std::to_string(b.fields.size()) + " fields";
+  for (std::size_t k = 0; k < fields.size(); ++k) {
+    const CellField& f = b.fields[k];
+    if (f.name != fields[k].name || f.components != fields[k].components ||
+        f.values.size() != n * static_cast<std::size_t>(f.components))
+      return "a block's field " + f.name + " (" + std::to_string(f.values.size()) + " values) for field " +
+             fields[k].name + " of " + std::to_string(fields[k].components) + " components on " + std::to_string(n) +
+             " cells";
+  }
+  return {};
+}
+
+void place(const CellBlock& b, const std::array<std::size_t, 3>& cells, std::vector<CellField>& whole) {
+  std::vector<CellField> layout;
+  for (const CellField& f : whole) {
+    if (f.values.size() != cells[0] * cells[1] * cells[2] * static_cast<std::size_t>(f.components))
+      throw std::invalid_argument("place: field " + f.name + " does not hold the whole grid");
+    layout.push_back({f.name, f.components, {}});
+  }
+  if (const std::string problem = block_problem(b, cells, layout); !problem.empty())
+    throw std::invalid_argument("place: " + problem);
+  for (std::size_t k = 0; k < whole.size(); ++k) {
+    const auto width = static_cast<std::size_t>(whole[k].components);
+    const std::size_t row = width * (b.hi[0] - b.lo[0]);
+    const double* from = b.fields[k].values.data();
+    for (std::size_t z = b.lo[2]; z < b.hi[2]; ++z)
+      for (std::size_t y = b.lo[1]; y < b.hi[1]; ++y, from += row)
+        std::copy_n(from, row,
+                    whole[k].values.begin() + static_cast<std::ptrdiff_t>(width * ((z * cells[1] + y) * cells[0] + b.lo[0])));
+  }
 }
 
 }  // namespace cosim::field

@@ -53,6 +53,15 @@ struct CellBlock {
   std::vector<CellField> fields;
 };
 
+// Why the block does not belong to whole fields `fields` on a rectilinear grid of `cells`
+// cells along x, y, z (it reaches beyond them, or does not hold those fields, each with its
+// cells' values), or empty if it does.
+std::string block_problem(const CellBlock& block, const std::array<std::size_t, 3>& cells,
+                          const std::vector<CellField>& fields);
+// Copies the block's values into `whole`, fields of the whole grid of `cells`; throws
+// std::invalid_argument with block_problem()'s reason.
+void place(const CellBlock& block, const std::array<std::size_t, 3>& cells, std::vector<CellField>& whole);
+
 // A value per point of a set, e.g. a particle's velocity: n x components values, the
 // components of a point together. `integer` values are whole numbers (cell indices, bit
 // patterns), written as int64; float64 carries them, so they must lie within +-2^53.

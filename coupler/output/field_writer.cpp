@@ -77,29 +77,6 @@ void write_grid(hid_t participant_group, const field::Grid& grid) {
     write_array(group.get(), std::string(1, "xyz"[a]), {nodes[a].size()}, nodes[a].data());
 }
 
-// A block's problem with the frame it belongs to, or empty: it lies within the grid's cells
-// and holds the frame's fields, each with its cells' values.
-std::string block_problem(const field::CellBlock& b, const std::array<std::size_t, 3>& cells,
-                          const std::vector<field::CellField>& fields) {
-  std::size_t n = 1;
-  for (std::size_t a = 0; a < 3; ++a) {
-    if (!(b.lo[a] <= b.hi[a] && b.hi[a] <= cells[a]))
-      return "a block of cells [" + std::to_string(b.lo[a]) + ", " + std::to_string(b.hi[a]) + ") along " +
-             "xyz"[a] + ", where the grid has " + std::to_string(cells[a]);
-    n *= b.hi[a] - b.lo[a];
-  }
-  if (b.fields.size() != fields.size()) return "a block of " + std::to_string(b.fields.size()) + " fields";
-  for (std::size_t k = 0; k < fields.size(); ++k) {
-    const field::CellField& f = b.fields[k];
-    if (f.name != fields[k].name || f.components != fields[k].components ||
-        f.values.size() != n * static_cast<std::size_t>(f.components))
-      return "a block's field " + f.name + " (" + std::to_string(f.values.size()) + " values) for field " +
-             fields[k].name + " of " + std::to_string(fields[k].components) + " components on " + std::to_string(n) +
-             " cells";
-  }
-  return {};
-}
-
 // The set's attributes beside its points: (n) for one component, (n, c) for c, int64 if integer.
 void write_point_attributes(hid_t group, const field::PointSet& p, XdmfPointSet& entry) {
   if (p.attributes.empty()) return;
@@ -211,13 +188,24 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
     create_array(step.get(), f.name, dims);
     entry.fields.push_back({f.name, f.components});
   }
-  std::size_t written = 0;
+  // One bit a cell: the datasets are not filled beforehand, so every cell must be written
+  // exactly once.
+  std::vector<bool> written(field::cell_count(frame.grid), false);
+  std::size_t count = 0;
   blocks([&](const field::CellBlock& b) {
-    if (const std::string problem = block_problem(b, cells, frame.fields); !problem.empty())
+    if (const std::string problem = field::block_problem(b, cells, frame.fields); !problem.empty())
       throw ObjectError("fields of " + participant + ": " + problem);
-    const std::size_t n = (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]);
-    written += n;
-    if (n == 0) return;
+    for (std::size_t z = b.lo[2]; z < b.hi[2]; ++z)
+      for (std::size_t y = b.lo[1]; y < b.hi[1]; ++y)
+        for (std::size_t x = b.lo[0]; x < b.hi[0]; ++x) {
+          const std::size_t c = (z * cells[1] + y) * cells[0] + x;
+          if (written[c])
+            throw ObjectError("fields of " + participant + ": cell (" + std::to_string(x) + ", " + std::to_string(y) +
+                              ", " + std::to_string(z) + ") in two blocks");
+          written[c] = true;
+          ++count;
+        }
+    if ((b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]) == 0) return;
     for (const field::CellField& f : b.fields) {
       std::vector<hsize_t> start{b.lo[2], b.lo[1], b.lo[0]};
       std::vector<hsize_t> count{b.hi[2] - b.lo[2], b.hi[1] - b.lo[1], b.hi[0] - b.lo[0]};
@@ -228,9 +216,9 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
       write_block(step.get(), f.name, start, count, f.values.data());
     }
   });
-  if (written != field::cell_count(frame.grid))
-    throw ObjectError("fields of " + participant + ": blocks of " + std::to_string(written) + " cells for a grid of " +
-                      std::to_string(field::cell_count(frame.grid)));
+  if (count != written.size())
+    throw ObjectError("fields of " + participant + ": blocks of " + std::to_string(count) + " cells for a grid of " +
+                      std::to_string(written.size()));
   write_point_sets(step.get(), frame, entry);
   series_.at(participant).steps.push_back(std::move(entry));
 }

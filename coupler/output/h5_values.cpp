@@ -213,8 +213,11 @@ void write_array(hid_t group, const std::string& name, const std::vector<hsize_t
 
 void create_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims) {
   const std::string where = dataset_where(group, name);
-  Handle(H5Dcreate2(group, name.c_str(), H5T_NATIVE_DOUBLE, simple_space(dims, where).get(), H5P_DEFAULT, H5P_DEFAULT,
-                    H5P_DEFAULT),
+  Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "properties of " + where);
+  // Filling first would write every value twice.
+  check(H5Pset_fill_time(properties.get(), H5D_FILL_TIME_NEVER), "fill time of " + where);
+  Handle(H5Dcreate2(group, name.c_str(), H5T_NATIVE_DOUBLE, simple_space(dims, where).get(), H5P_DEFAULT,
+                    properties.get(), H5P_DEFAULT),
          H5Dclose, "create " + where);
 }
 
@@ -224,7 +227,14 @@ void write_block(hid_t group, const std::string& name, const std::vector<hsize_t
   const std::vector<hsize_t> dims = array_dims(group, name);
   bool inside = start.size() == dims.size() && count.size() == dims.size();
   for (std::size_t d = 0; inside && d < dims.size(); ++d) inside = count[d] <= dims[d] && start[d] <= dims[d] - count[d];
-  if (!inside) fail("a block outside " + where);
+  if (!inside) {
+    const auto list = [](const std::vector<hsize_t>& v) {
+      std::string text;
+      for (const hsize_t x : v) text += (text.empty() ? "" : ", ") + std::to_string(x);
+      return "(" + text + ")";
+    };
+    fail("a block of " + list(count) + " values from " + list(start) + " outside " + where + " of shape " + list(dims));
+  }
   Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
   Handle file_space(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
   check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),

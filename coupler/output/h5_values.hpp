@@ -41,9 +41,10 @@ void write_array(hid_t group, const std::string& name, const std::vector<hsize_t
                  const std::int64_t* values);
 
 // A float64 dataset of shape dims written in blocks, for a writer that never holds all its
-// values: create_array() makes it (cells never written read as 0), write_block() writes
-// the block of count[d] values from start[d] along each dimension, its values row-major.
-// A block that does not lie within the dataset is an error naming it.
+// values: create_array() makes it, not filled (the writer writes every value once), and
+// write_block() writes the block of count[d] values from start[d] along each dimension,
+// its values row-major. A block that does not lie within the dataset is an error naming
+// it, the block and the shape.
 void create_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims);
 void write_block(hid_t group, const std::string& name, const std::vector<hsize_t>& start,
                  const std::vector<hsize_t>& count, const double* values);

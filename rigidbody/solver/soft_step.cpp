@@ -105,8 +105,9 @@ SolveReport SoftStep::relax(std::span<dynamics::BodyState> states, std::span<Cac
   for (const Row& r : rows_)
     memory[r.point] = {.normal = r.impulse[0],
                        .tangential = r.frame.basis.bottomRows<2>().transpose() * r.impulse.tail<2>()};
-  // The groups' blocks (matrices, factorizations) serve this narrow phase's substeps only:
-  // none is held between steps.
+  // The rows and the groups' blocks (matrices, factorizations) serve this narrow phase's
+  // substeps only: none is held between steps, and no substep follows without a solve().
+  rows_.clear();
   groups_.clear();
   return report;
 }

@@ -64,7 +64,8 @@ class SoftStep {
   // the last one still changed.
   SolveReport solve(const ContactScene& scene, std::span<const CachedContact> memory);
   // A further substep on the rows solve() built (no narrow phase): warm start from the
-  // last substep's impulses, the sweeps with bias on the separations it left.
+  // last substep's impulses, the sweeps with bias on the separations it left. After a
+  // relax() that was `last` there are no rows: solve() first.
   SolveReport solve_again(std::span<dynamics::BodyState> states);
   // After the positions moved with the solve's velocities: rigid sweeps without bias on the
   // separations those velocities left (no new narrow phase). After the last substep of a
@@ -95,8 +96,9 @@ class SoftStep {
     // A directly solved group's block for the biased pass [1] and the relax [0], kept over
     // the substeps of a narrow phase: the same rows and, unless a gap closed, the same
     // compliance, so the same matrix and (for the same active set) factorization. Out of
-    // line: most groups of a pile are solved point by point, and their place in groups_
-    // should stay small (bench/rigidbody_granular/README.md "Where the memory goes").
+    // line, so that a group's place in groups_, whose capacity outlives the groups (a pile
+    // has about one group per body), stays small (bench/rigidbody_granular/README.md
+    // "Where the memory goes").
     struct Block {
       std::vector<double> compliance;
       std::optional<ContactBlock> solver;

@@ -101,6 +101,12 @@ TEST_F(FieldBlocksTest, RefusesBlocksThatDoNotFit) {
   refused([](const auto& take) { take(block({0, 0, 0}, {3, 4, 4})); }, "blocks of 48 cells for a grid of 60");
   refused(
       [](const auto& take) {
+        take(block({0, 0, 0}, {3, 4, 3}));
+        take(block({1, 2, 2}, {3, 4, 5}));  // 12 cells again, 60 in all
+      },
+      "cell (1, 2, 2) in two blocks");
+  refused(
+      [](const auto& take) {
         field::CellBlock b = block({0, 0, 0}, kCells);
         b.fields[1].values.pop_back();
         take(b);
@@ -121,6 +127,19 @@ TEST_F(FieldBlocksTest, RefusesBlocksThatDoNotFit) {
   } catch (const ObjectError& e) {
     EXPECT_NE(std::string(e.what()).find("values come in blocks"), std::string::npos) << e.what();
   }
+}
+
+// field::place puts blocks where the whole frame has their cells (the coupled tracker's
+// frame, put together from its ranks' bricks), and refuses one that does not fit.
+TEST(FieldBlocks, PlacedBlocksMakeTheWholeFields) {
+  std::vector<field::CellField> whole{{"p", 1, std::vector<double>(60, -1.0)}, {"u", 3, std::vector<double>(180, -1.0)}};
+  for (const auto& [lo, hi] : std::vector<std::pair<std::array<std::size_t, 3>, std::array<std::size_t, 3>>>{
+           {{0, 0, 0}, {2, 4, 5}}, {{2, 0, 0}, {3, 1, 5}}, {{2, 1, 0}, {3, 4, 5}}})
+    field::place(block(lo, hi), kCells, whole);
+  const field::CellBlock expected = block({0, 0, 0}, kCells);
+  EXPECT_EQ(whole[0].values, expected.fields[0].values);
+  EXPECT_EQ(whole[1].values, expected.fields[1].values);
+  EXPECT_THROW(field::place(block({0, 0, 1}, {3, 4, 6}), kCells, whole), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,6 +1,5 @@
 #include "tracker/program/adapter.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -92,19 +91,7 @@ field::FieldFrame TrackerSolver::fields() const {
     const std::array<std::size_t, 3> cells = std::get<field::RectilinearGrid>(grid_.grid).cells();
     for (field::CellField& f : frame.fields)
       f.values.assign(cells[0] * cells[1] * cells[2] * static_cast<std::size_t>(f.components), 0.0);
-    blocks->each([&](const field::CellBlock& b) {
-      for (std::size_t k = 0; k < frame.fields.size(); ++k) {
-        const auto width = static_cast<std::size_t>(frame.fields[k].components);
-        const double* from = b.fields[k].values.data();
-        for (std::size_t z = b.lo[2]; z < b.hi[2]; ++z)
-          for (std::size_t y = b.lo[1]; y < b.hi[1]; ++y) {
-            const std::size_t row = width * (b.hi[0] - b.lo[0]);
-            std::copy_n(from, row, frame.fields[k].values.begin() +
-                                       static_cast<std::ptrdiff_t>(width * ((z * cells[1] + y) * cells[0] + b.lo[0])));
-            from += row;
-          }
-      }
-    });
+    blocks->each([&](const field::CellBlock& b) { field::place(b, cells, frame.fields); });
     return frame;
   }
   const std::vector<double> count = gas_->counts();

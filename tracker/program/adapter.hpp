@@ -41,7 +41,8 @@ class TrackerSolver final : public participant::Solver {
   std::vector<double> state() const override;
   void restore(const std::vector<double>& state) override;
   // The per-cell samples averaged since the last call (or the start) on the tracker's
-  // polyhedral mesh (cell_fields.hpp); collective, the whole frame on every rank. After the
+  // output grid (cell_fields.hpp, output_grid.hpp); collective, the whole frame on rank 0
+  // (the others' is empty). After the
   // windows particle_output names (counted from the last advance()) the particles too, on
   // rank 0 (particle_dump.hpp).
   field::FieldFrame fields() const override;

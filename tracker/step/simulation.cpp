@@ -76,6 +76,23 @@ std::vector<double> doubles_of(std::span<const std::byte> bytes) {
   return values;
 }
 
+// put_cells()'s records by rank, as the sparse exchange sends them.
+Messages messages_of(const std::map<int, std::vector<double>>& records) {
+  Messages out;
+  for (const auto& [rank, values] : records) out[rank] = bytes_of(values);
+  return out;
+}
+
+// Each record that came (its cell in the whole mesh, then `width` numbers), in order.
+template <typename Take>
+void for_each_record(const Messages& in, std::size_t width, const Take& take) {
+  for (const auto& [rank, bytes] : in) {
+    const std::vector<double> values = doubles_of(bytes);
+    for (std::size_t at = 0; at < values.size(); at += 1 + width)
+      take(static_cast<Index>(values[at]), std::span(values).subspan(at + 1, width));
+  }
+}
+
 }  // namespace
 
 Simulation::Simulation(GasSetup setup, Ranks ranks)
@@ -190,9 +207,7 @@ void Simulation::balance() {
                 CellSampler::kSumsPerCell, cell.begin() + 2);
     put_cells(records[owners(tracked().global_cell(c))], tracked(), c, cell);
   }
-  Messages out;
-  for (const auto& [rank, values] : records) out[rank] = bytes_of(values);
-  const Messages in = decomposition_.exchange(out);
+  const Messages in = decomposition_.exchange(messages_of(records));
   // The particles by the whole's cell numbers while the parts change.
   swarm_.renumber_cells([&](Index c) { return tracked().global_cell(c); });
   decomposition_.set_owners(std::move(owners));
@@ -202,16 +217,12 @@ void Simulation::balance() {
   std::vector<double> sums(1 + static_cast<std::size_t>(tracked().cell_count()) * CellSampler::kSumsPerCell, 0.0);
   sums[0] = samples[0];
   std::vector<dsmc::CellCollisionState> states(static_cast<std::size_t>(tracked().cell_count()));
-  for (const auto& [rank, bytes] : in) {
-    const std::vector<double> values = doubles_of(bytes);
-    for (std::size_t at = 0; at < values.size(); at += 1 + kWidth) {
-      const auto c = static_cast<std::size_t>(numbering().local(static_cast<Index>(values[at])));
-      states[c].sigma_g_max = std::max(states[c].sigma_g_max, values[at + 1]);
-      states[c].remainder += values[at + 2];
-      for (std::size_t k = 0; k < CellSampler::kSumsPerCell; ++k)
-        sums[1 + c * CellSampler::kSumsPerCell + k] += values[at + 3 + k];
-    }
-  }
+  for_each_record(in, kWidth, [&](Index global, std::span<const double> cell) {
+    const auto c = static_cast<std::size_t>(numbering().local(global));
+    states[c].sigma_g_max = std::max(states[c].sigma_g_max, cell[0]);
+    states[c].remainder += cell[1];
+    for (std::size_t k = 0; k < CellSampler::kSumsPerCell; ++k) sums[1 + c * CellSampler::kSumsPerCell + k] += cell[2 + k];
+  });
   sampler_ = CellSampler(*part_);
   sampler_.set_sums(sums);
   if (collider_) collider_->set_cells(std::move(states));
@@ -294,9 +305,10 @@ std::optional<Bricks::Range> Simulation::brick() const {
 }
 
 Simulation::BrickSamples Simulation::take_brick() {
-  const Bricks::Range mine = *brick();
-  std::vector<double> count(static_cast<std::size_t>(tracked().cell_count()), 0.0);
-  for (std::size_t i = 0; i < swarm_.size(); ++i) count[static_cast<std::size_t>(swarm_.cell(i))] += 1.0;
+  const std::optional<Bricks::Range> brick_of_rank = brick();
+  if (!brick_of_rank) throw std::logic_error("take_brick: this gas's cells are not a rank's brick of a box");
+  const Bricks::Range& mine = *brick_of_rank;
+  std::vector<double> count = particles_per_cell();
   // What a ghost holds (its strays, their sums) goes to its owner.
   std::map<int, std::vector<double>> records;
   std::array<double, 1 + CellSampler::kSumsPerCell> held{};
@@ -304,18 +316,15 @@ Simulation::BrickSamples Simulation::take_brick() {
     held[0] = count[static_cast<std::size_t>(c)];
     const std::array<double, CellSampler::kSumsPerCell> sums = sampler_.cell_sums(c);
     std::copy(sums.begin(), sums.end(), held.begin() + 1);
-    put_cells(records[decomposition_.owner(tracked().global_cell(c))], tracked(), c, held);
+    if (std::any_of(held.begin(), held.end(), [](double x) { return x != 0.0; }))
+      put_cells(records[decomposition_.owner(tracked().global_cell(c))], tracked(), c, held);
   }
-  Messages to_owners;
-  for (const auto& [rank, values] : records) to_owners[rank] = bytes_of(values);
-  for (const auto& [rank, bytes] : decomposition_.exchange(to_owners)) {
-    const std::vector<double> values = doubles_of(bytes);
-    for (std::size_t at = 0; at < values.size(); at += 1 + held.size()) {
-      const Index c = numbering().local(static_cast<Index>(values[at]));
-      count[static_cast<std::size_t>(c)] += values[at + 1];
-      sampler_.add_sums(c, std::span(values).subspan(at + 2, CellSampler::kSumsPerCell));
-    }
-  }
+  for_each_record(decomposition_.exchange(messages_of(records)), held.size(),
+                  [&](Index global, std::span<const double> cell) {
+                    const Index c = numbering().local(global);
+                    count[static_cast<std::size_t>(c)] += cell[0];
+                    sampler_.add_sums(c, cell.subspan(1));
+                  });
   BrickSamples taken{.brick = mine, .count = {}, .moments = {}};
   const std::vector<double> volume = cell_volumes(*setup_.box, mine.lo, mine.hi);
   taken.count.reserve(volume.size());
@@ -334,11 +343,13 @@ Simulation::BrickSamples Simulation::take_brick() {
   return taken;
 }
 
-std::vector<double> Simulation::counts() const {
+std::vector<double> Simulation::particles_per_cell() const {
   std::vector<double> count(static_cast<std::size_t>(tracked().cell_count()), 0.0);
   for (std::size_t i = 0; i < swarm_.size(); ++i) count[static_cast<std::size_t>(swarm_.cell(i))] += 1.0;
-  return at_lead(count, 1);
+  return count;
 }
+
+std::vector<double> Simulation::counts() const { return at_lead(particles_per_cell(), 1); }
 
 std::vector<CellMoments> Simulation::take_moments() {
   if (brick()) throw std::logic_error("a brick's moments are take_brick()'s");

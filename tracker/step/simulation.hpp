@@ -134,6 +134,7 @@ class Simulation {
   // obstacles and inflows on it.
   void take_part();
   Numbering numbering() const { return part_ ? Numbering{part_.get(), part_cells_.get()} : Numbering{}; }
+  std::vector<double> particles_per_cell() const;  // of tracked()'s cells, this rank's particles
   // Per-cell numbers of this rank's cells (`width` a cell) added up by the whole mesh's
   // cells on rank 0, empty elsewhere (collective): only rank 0 holds an array of every cell.
   std::vector<double> at_lead(std::span<const double> mine, std::size_t width) const;

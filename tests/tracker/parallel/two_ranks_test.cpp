@@ -280,7 +280,9 @@ TEST(TwoRanks, RepeatedWindowAfterRestoreGivesTheSameForces) {
 // periodic box: the wall overruns particles and puts them back at its surface, often in the
 // other rank's cells, which the next step's single migration sends there. Nothing is lost,
 // every particle is kept, and a window repeated after restore() (particles in the other
-// rank's cells included) gives the same forces bit for bit.
+// rank's cells included) gives the same forces bit for bit. The frame put together from
+// the ranks' bricks of the periodic box then counts every particle once, and the mean
+// simulators per cell add up to the gas's.
 TEST(TwoRanks, AMovingBallOverrunsParticlesIntoTheOtherRanksCells) {
   const scene::Scene scene = scene::load_scene_from_string(R"(
 time: {end: 1.0}
@@ -307,6 +309,7 @@ participants:
     return in;
   };
   TrackerSolver solver{Ranks(MPI_COMM_WORLD)};
+  double counted = 0.0, mean_counted = 0.0;  // over the frame's cells, on rank 0
   participant::run_on_ranks(solver, MPI_COMM_WORLD, [&](participant::Solver& lead) {
     lead.initialise(scene, "tracker", inputs({0, 1, 0.0, 0.25}).poses_start, {});
     const participant::Window first{0, 1, 0.0, 0.25}, second{1, 1, 0.25, 0.5};
@@ -316,10 +319,18 @@ participants:
     lead.restore(state);
     EXPECT_EQ(participant::values_of(lead.advance({1, 2, 0.25, 0.5}, inputs(second)).forces), forces);
     EXPECT_LT(forces.at(0), 0.0);  // the gas holds the ball back
+    const field::FieldFrame frame = lead.fields();
+    for (const double n : frame.fields.at(0).values) counted += n;
+    for (const double n : frame.fields.at(1).values) mean_counted += n;
     return 0;
   });
   const Simulation& gas = solver.gas();
   EXPECT_EQ(gas.particles(), gas.seeded());
+  const auto seeded = static_cast<double>(gas.seeded());  // collective
+  if (rank() == 0) {
+    EXPECT_EQ(counted, seeded);
+    EXPECT_NEAR(mean_counted, seeded, 1e-9 * seeded);
+  }
   EXPECT_EQ(gas.moves().lost, 0);
   EXPECT_GT(gas.migrated(), 100u);
   EXPECT_GT(gas.tallies().at(0).overrun, 10);
@@ -641,7 +652,8 @@ TEST(TwoRanks, AFaultOnOneRanksPartStopsEveryRank) {
 
 // Guards against: a stray (a particle a moving wall or a recovery left in a ghost) missing
 // from the fields written rank by rank. Each rank restores a state in which one of its
-// particles sits in the other rank's cells; the owner's brick counts it.
+// particles sits in the other rank's cells, and its sampler holds 5 simulators sampled
+// there; the owner's brick counts the particle and averages the 5 in.
 TEST(TwoRanks, ABrickCountsTheStraysTheOtherRankHolds) {
   const scene::Scene scene = scene::load_scene_from_string(
       "time: {end: 0.01}\ncoupling: {window: 0.01}\ndomain: {min: [0, 0, 0], max: [2, 1, 1]}\n"
@@ -663,6 +675,15 @@ TEST(TwoRanks, ABrickCountsTheStraysTheOtherRankHolds) {
   record.put(x, Vec3::Zero(), cell);
   const std::vector<double> values = record.take();
   std::copy(values.begin(), values.end(), state.begin() + static_cast<std::ptrdiff_t>(at));
+  // The state ends with the sampler's sums: the sample count, then 16 a cell of the part.
+  const auto sums_of = [&](Index local) {
+    const std::size_t cells = static_cast<std::size_t>(gas.tracked().cell_count());
+    return state.size() - 16 * cells + 16 * static_cast<std::size_t>(local);
+  };
+  const PartCells numbers(gas.tracked());
+  state[sums_of(numbers.local(cell))] += 5.0;
+  const Index strays_cell = box_cell_index({{rank() == 0 ? 3 : 4, 1, 1}}, {8, 4, 4}, 1);
+  const double samples = state[sums_of(0) - 1], sampled_here = state[sums_of(numbers.local(strays_cell))];
   gas.restore(state);
 
   const Simulation::BrickSamples mine = gas.take_brick();
@@ -680,6 +701,7 @@ TEST(TwoRanks, ABrickCountsTheStraysTheOtherRankHolds) {
   for (std::size_t i = 0; i < gas.swarm().size(); ++i)
     own += gas.tracked().global_cell(gas.swarm().cell(i)) == box_cell_index({strays_hex}, {8, 4, 4}, 1) ? 1 : 0;
   EXPECT_EQ(mine.count.at(in_brick), own + 1);
+  EXPECT_EQ(mine.moments.at(in_brick).count, (sampled_here + 5.0) / samples);
 }
 
 // Coupled, the frame of rank 0 carries every rank's particles, at the windows the option names.
