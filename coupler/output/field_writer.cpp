@@ -208,12 +208,12 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
     if ((b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]) == 0) return;
     for (const field::CellField& f : b.fields) {
       std::vector<hsize_t> start{b.lo[2], b.lo[1], b.lo[0]};
-      std::vector<hsize_t> count{b.hi[2] - b.lo[2], b.hi[1] - b.lo[1], b.hi[0] - b.lo[0]};
+      std::vector<hsize_t> extent{b.hi[2] - b.lo[2], b.hi[1] - b.lo[1], b.hi[0] - b.lo[0]};
       if (f.components > 1) {
         start.push_back(0);
-        count.push_back(static_cast<hsize_t>(f.components));
+        extent.push_back(static_cast<hsize_t>(f.components));
       }
-      write_block(step.get(), f.name, start, count, f.values.data());
+      write_block(step.get(), f.name, start, extent, f.values.data());
     }
   });
   if (count != written.size())
