@@ -330,14 +330,18 @@ Simulation::BrickSamples Simulation::take_brick() {
   taken.count.reserve(volume.size());
   taken.moments.reserve(volume.size());
   const std::array<int, 3>& hexahedra = decomposition_.owners().bricks()->hexahedra();
-  std::size_t v = 0;
+  // A part numbers its own cells in the whole's order (part.hpp), which within a brick is
+  // the brick's order: own cell c is the brick's c-th, checked rather than looked up.
+  Index c = 0;
   for (int k = mine.lo[2]; k < mine.hi[2]; ++k)
     for (int j = mine.lo[1]; j < mine.hi[1]; ++j)
-      for (int i = mine.lo[0]; i < mine.hi[0]; ++i, ++v) {
-        const Index c = numbering().local(box_cell_index({{i, j, k}}, hexahedra, 1));
+      for (int i = mine.lo[0]; i < mine.hi[0]; ++i, ++c) {
+        if (c >= tracked().own_cells() || tracked().global_cell(c) != box_cell_index({{i, j, k}}, hexahedra, 1))
+          throw std::logic_error("take_brick: the part's own cells are not its brick in order");
         taken.count.push_back(count[static_cast<std::size_t>(c)]);
-        taken.moments.push_back(CellSampler::moments(sampler_.cell_sums(c), sampler_.samples(), volume[v],
-                                                     setup_.particles.mass, setup_.particles.weight));
+        taken.moments.push_back(CellSampler::moments(sampler_.cell_sums(c), sampler_.samples(),
+                                                     volume[static_cast<std::size_t>(c)], setup_.particles.mass,
+                                                     setup_.particles.weight));
       }
   sampler_.reset();
   return taken;

@@ -144,7 +144,8 @@ MoveResult follow_events(const Domain& domain, Particle& p, const Flight& flight
     }
     const Index from = p.cell;
     if (domain.implicit.linked(from, face.face)) {
-      // What cross does across an interior face, from the cell index instead of the record.
+      // What cross does across an interior face, from the cell index instead of the record;
+      // the zero shift added as cross adds it, since x + 0 turns a -0 coordinate into +0.
       p.x += domain.mesh.shifts[0];
       p.cell = domain.implicit.neighbour(from, face.face);
       ++result.faces_crossed;
