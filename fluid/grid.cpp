@@ -1,5 +1,7 @@
 #include "fluid/grid.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "fluid/petsc_check.hpp"
@@ -107,6 +109,13 @@ double Grid::face_volume(int c, const Index& p) const {
     v *= d == c ? axes_[d].centre(i) - axes_[d].centre(i - 1) : axes_[d].width(i);
   }
   return v;
+}
+
+double Grid::finest_width_at(const Point& x) const {
+  double h = std::numeric_limits<double>::infinity();
+  for (int d = 0; d < 3; ++d)
+    if (!axis(d).degenerate()) h = std::min(h, axis(d).width(axis(d).cell_at(x[static_cast<std::size_t>(d)])));
+  return h;
 }
 
 }  // namespace cosim::fluid

@@ -65,6 +65,9 @@ class Grid {
   // The control volume of face p of component c, not a boundary face: from the centre of
   // the cell below to that of the cell above along c, the cell's widths across.
   double face_volume(int c, const Index& p) const;
+  // The smallest width of the cell at x over the axes that carry variation (all but a
+  // two-dimensional grid's one periodic cell): how fine the grid is where a body sits.
+  double finest_width_at(const Point& x) const;
 
  private:
   void create();

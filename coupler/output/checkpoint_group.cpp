@@ -110,6 +110,7 @@ void write_slot(hid_t checkpoint, const std::string& slot_name, const Checkpoint
   write_attribute(slot.get(), "time", c.time);
   write_rows(slot.get(), "poses", c.poses, kPoseWidth);
   write_rows(slot.get(), "forces", c.forces, kForceWidth);
+  write_rows(slot.get(), "responses", c.responses, kResponseWidth);
   Handle states = open_or_create_group(slot.get(), "participants");
   for (const std::string& name : participants) {
     const auto state = c.states.find(name);
@@ -126,6 +127,9 @@ void write_checkpoint(hid_t file, const Checkpoint& c, std::size_t bodies,
                       const std::vector<std::string>& participants) {
   const std::string what = "checkpoint for window " + std::to_string(c.next_window);
   check_body_rows(what, c.poses, c.forces, bodies);
+  if (!c.responses.empty() && c.responses.size() != bodies * kResponseWidth)
+    throw ObjectError(what + ": " + std::to_string(c.responses.size()) + " response values for " +
+                      std::to_string(bodies) + " bodies (" + std::to_string(kResponseWidth) + " each, or none)");
   check_participants(what, c.states, participants);
   Handle group = open_or_create_group(file, kGroup);
   const char* next = "a";
@@ -158,6 +162,7 @@ std::optional<Checkpoint> read_checkpoint(hid_t file,
   c.time = read_attribute<double>(slot.get(), "time");
   c.poses = read_rows(slot.get(), "poses");
   c.forces = read_rows(slot.get(), "forces");
+  if (has_link(slot.get(), "responses")) c.responses = read_rows(slot.get(), "responses");
   Handle states = open_group(slot.get(), "participants");
   for (const std::string& name : participants) {
     if (!has_link(states.get(), name)) continue;

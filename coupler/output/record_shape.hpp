@@ -11,6 +11,7 @@ namespace cosim::output {
 
 constexpr std::size_t kPoseWidth = 13;  // position, quaternion w x y z, velocity, omega
 constexpr std::size_t kForceWidth = 6;  // force, torque
+constexpr std::size_t kResponseWidth = 78;  // added mass, added damping (6 x 6 each), hold (6)
 
 // Throws ObjectError starting with `what` unless poses/forces hold one row per body.
 void check_body_rows(const std::string& what, const std::vector<double>& poses,

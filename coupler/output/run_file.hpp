@@ -41,7 +41,8 @@
 //   /checkpoint/         attr current ("a" or "b", fixed-length ASCII): the slot holding the
 //                        checkpoint; absent until the first checkpoint is complete
 //   /checkpoint/{a,b}/   attrs window (last committed window index + 1 = next window),
-//                        time; datasets poses (b x 13), forces (b x 6), and
+//                        time; datasets poses (b x 13), forces (b x 6), responses
+//                        (b x 78, or 0 rows: the forces' response tensors), and
 //                        participants/<name>/state (opaque float64 array), one group per
 //                        participant with attr present (int; 0: no state in this checkpoint).
 //                        Each of these datasets holds its value in its first `length` rows
@@ -122,6 +123,7 @@ struct Checkpoint {
   double time = 0.0;                      // its start time
   std::vector<double> poses;              // bodies x 13 at `time`
   std::vector<double> forces;             // bodies x 6 at `time`
+  std::vector<double> responses;          // bodies x 78 with those forces, or none
   std::map<std::string, std::vector<double>> states;  // participant -> opaque state
 };
 

@@ -11,6 +11,11 @@ PoseRow pose_at(const double* v) {
 
 ForceRow force_at(const double* f) { return {{f[0], f[1], f[2]}, {f[3], f[4], f[5]}}; }
 
+ResponseRow response_at(const double* r) {
+  using RowMajor = Eigen::Matrix<double, 6, 6, Eigen::RowMajor>;
+  return {Eigen::Map<const RowMajor>(r), Eigen::Map<const RowMajor>(r + 36), force_at(r + 72)};
+}
+
 void append(std::vector<double>& poses, const PoseRow& r) {
   const Eigen::Quaterniond& q = r.orientation;
   poses.insert(poses.end(), {r.position.x(), r.position.y(), r.position.z(), q.w(), q.x(), q.y(), q.z(),
@@ -20,6 +25,13 @@ void append(std::vector<double>& poses, const PoseRow& r) {
 
 void append(std::vector<double>& forces, const ForceRow& r) {
   forces.insert(forces.end(), {r.force.x(), r.force.y(), r.force.z(), r.torque.x(), r.torque.y(), r.torque.z()});
+}
+
+void append(std::vector<double>& responses, const ResponseRow& r) {
+  for (const auto* m : {&r.added_mass, &r.added_damping})
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) responses.push_back((*m)(i, j));
+  append(responses, r.hold);
 }
 
 template <class Row>
@@ -48,8 +60,14 @@ std::vector<ForceRow> force_rows(std::span<const double> values) {
   return decoded(values, protocol::kForceWidth, force_at);
 }
 
+std::vector<ResponseRow> response_rows(std::span<const double> values) {
+  return decoded(values, protocol::kResponseWidth, response_at);
+}
+
 std::vector<double> values_of(std::span<const PoseRow> rows) { return encoded(rows, protocol::kPoseWidth); }
 
 std::vector<double> values_of(std::span<const ForceRow> rows) { return encoded(rows, protocol::kForceWidth); }
+
+std::vector<double> values_of(std::span<const ResponseRow> rows) { return encoded(rows, protocol::kResponseWidth); }
 
 }  // namespace cosim::participant

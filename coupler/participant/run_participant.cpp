@@ -43,9 +43,13 @@ std::vector<Array> output_arrays(const Outputs& out, std::uint32_t provides, dou
   if (scene::has(provides, scene::Data::Poses))
     arrays.push_back(Array::of(Tag::Poses, static_cast<std::uint32_t>(out.poses.size()), protocol::kPoseWidth,
                                values_of(out.poses)));
-  if (scene::has(provides, scene::Data::Forces))
+  if (scene::has(provides, scene::Data::Forces)) {
     arrays.push_back(Array::of(Tag::Forces, static_cast<std::uint32_t>(out.forces.size()), protocol::kForceWidth,
                                values_of(out.forces)));
+    if (!out.responses.empty())
+      arrays.push_back(Array::of(Tag::Responses, static_cast<std::uint32_t>(out.responses.size()),
+                                 protocol::kResponseWidth, values_of(out.responses)));
+  }
   arrays.push_back(Array::of(Tag::Stats, 1, protocol::kStatsWidth, {out.substeps, wall}));
   return arrays;
 }
@@ -102,7 +106,8 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
 
 Inputs inputs_of(Message m) {
   std::vector<Array> fields = protocol::take_field_arrays(m.arrays);
-  Inputs in{poses_of(m, 0), poses_of(m, 1), forces_of(m, 0), forces_of(m, 1), std::nullopt};
+  Inputs in{poses_of(m, 0), poses_of(m, 1), forces_of(m, 0), forces_of(m, 1),
+            response_rows(row_values(m, Tag::Responses, 0, protocol::kResponseWidth)), std::nullopt};
   if (!fields.empty()) in.fields = protocol::field_frame(std::move(fields), "the fields in Advance");
   return in;
 }

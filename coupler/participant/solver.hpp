@@ -30,9 +30,13 @@ struct Window {
 // schemes converge the end value.
 // A participant that needs fields gets another's (the fluid's) as committed at t0, the
 // same in every iteration of the window: held constant over it, explicit, first order.
+// With the forces may come the response tensors of the newest of them (the end value),
+// when the providers of the forces send them: how those forces change with the bodies'
+// motion (body_rows.hpp).
 struct Inputs {
   std::vector<PoseRow> poses_start, poses_end;
   std::vector<ForceRow> forces_start, forces_end;
+  std::vector<ResponseRow> responses;
   std::optional<field::FieldFrame> fields;  // none unless the participant needs fields
 };
 
@@ -45,6 +49,7 @@ struct Outputs {
   std::vector<PoseRow> poses;    // if the solver provides poses
   std::vector<ForceRow> forces;  // if the solver provides forces
   double substeps = 0;
+  std::vector<ResponseRow> responses;  // with the forces, if the solver measures them (else empty)
 };
 
 class Solver {

@@ -90,6 +90,7 @@ const char* to_string(Tag tag) {
     case Tag::Field: return "Field";
     case Tag::Points: return "Points";
     case Tag::PointAttributes: return "PointAttributes";
+    case Tag::Responses: return "Responses";
   }
   return "unknown tag";
 }

@@ -20,13 +20,15 @@ namespace cosim::protocol {
 inline constexpr std::uint32_t kMagic = 0x4d495343;  // "CSIM" read as little-endian u32
 // 2: Points arrays, for the point sets of a Field message (field_message.hpp).
 // 3: PointAttributes arrays, for the values per point of those sets (point_set_arrays.hpp).
-inline constexpr std::uint16_t kVersion = 3;
+// 4: Responses arrays, the response tensors a force provider may send with its forces.
+inline constexpr std::uint16_t kVersion = 4;
 inline constexpr std::size_t kNameSize = 32;          // participant name, NUL padded
 inline constexpr std::size_t kMaxArrays = 64;
 
 // Columns of the per-body arrays and of the stats row.
 inline constexpr std::uint32_t kPoseWidth = 13;   // position, quaternion w x y z, velocity, angular velocity
 inline constexpr std::uint32_t kForceWidth = 6;   // force, torque
+inline constexpr std::uint32_t kResponseWidth = 78;  // added mass, added damping (6 x 6 each), hold (6)
 inline constexpr std::uint32_t kStatsWidth = 2;   // substeps, wall seconds
 
 struct ProtocolError : std::runtime_error {
@@ -59,6 +61,7 @@ enum class Tag : std::uint16_t {
   Field,           // rows x cols float64 named field; name in a preceding Text array
   Points,          // n x 3 float64: x, y, z of points, the point sets of a Field message
   PointAttributes, // 1 x n float64: the values per point of those point sets' attributes
+  Responses,       // n_bodies x 78: added mass, added damping (6 x 6 each, row-major), hold (6)
 };
 
 enum class DType : std::uint16_t { Float64 = 1, Bytes = 2 };

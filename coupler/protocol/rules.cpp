@@ -40,6 +40,7 @@ DType dtype_of(Tag tag) {
     case Tag::Field:
     case Tag::Points:
     case Tag::PointAttributes:
+    case Tag::Responses:
       return DType::Float64;
     case Tag::Text:
       return DType::Bytes;
@@ -69,6 +70,7 @@ void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t c
   };
   if (tag == Tag::Poses) need_cols(kPoseWidth);
   if (tag == Tag::Forces) need_cols(kForceWidth);
+  if (tag == Tag::Responses) need_cols(kResponseWidth);
   if (tag == Tag::Points) need_cols(3);
   if (tag == Tag::Stats) {
     need_cols(kStatsWidth);
@@ -86,7 +88,7 @@ void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t c
 
 void check_values(std::size_t index, Tag tag, std::uint32_t cols,
                   std::span<const double> values) {
-  if (tag != Tag::Poses && tag != Tag::Forces && tag != Tag::Stats) return;
+  if (tag != Tag::Poses && tag != Tag::Forces && tag != Tag::Responses && tag != Tag::Stats) return;
   for (std::size_t i = 0; i < values.size(); ++i)
     if (!std::isfinite(values[i]))
       throw ProtocolError(array_label(index, tag) + " holds " + number(values[i]) +

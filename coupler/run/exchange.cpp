@@ -56,6 +56,10 @@ protocol::Array forces_array(const Eigen::VectorXd& forces) {
   return array_of(protocol::Tag::Forces, forces, kForceSize);
 }
 
+protocol::Array responses_array(const Eigen::VectorXd& responses) {
+  return array_of(protocol::Tag::Responses, responses, kResponseSize);
+}
+
 Eigen::VectorXd take(const protocol::Message& m, protocol::Tag tag, Eigen::Index size,
                      const std::string& when) {
   const auto* a = m.find(tag);

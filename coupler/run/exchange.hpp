@@ -15,11 +15,14 @@ namespace cosim::run {
 
 inline constexpr int kPoseSize = protocol::kPoseWidth;
 inline constexpr int kForceSize = protocol::kForceWidth;
+inline constexpr int kResponseSize = protocol::kResponseWidth;
 
-// Bodies in scene order.
+// Bodies in scene order. The response tensors travel with the forces they describe, summed
+// over the providers that send them; empty when none does.
 struct Exchange {
   Eigen::VectorXd poses;
   Eigen::VectorXd forces;
+  Eigen::VectorXd responses;
 };
 
 struct Roles {
@@ -38,6 +41,7 @@ Eigen::VectorXd initial_poses(const scene::Scene& scene);
 
 protocol::Array poses_array(const Eigen::VectorXd& poses);
 protocol::Array forces_array(const Eigen::VectorXd& forces);
+protocol::Array responses_array(const Eigen::VectorXd& responses);
 // The `tag` array of a participant's message, which must hold exactly `size` values;
 // anything else is that participant's failure.
 Eigen::VectorXd take(const protocol::Message& m, protocol::Tag tag, Eigen::Index size,

@@ -177,8 +177,10 @@ void Session::handshake(Peers& peers) {
   // what the committed forces were computed from.
   const auto b = static_cast<Eigen::Index>(scene_.bodies.size());
   current_ = resume_ ? Exchange{Eigen::Map<const Eigen::VectorXd>(resume_->poses.data(), b * kPoseSize),
-                                Eigen::Map<const Eigen::VectorXd>(resume_->forces.data(), b * kForceSize)}
-                     : Exchange{initial_poses(scene_), Eigen::VectorXd::Zero(b * kForceSize)};
+                                Eigen::Map<const Eigen::VectorXd>(resume_->forces.data(), b * kForceSize),
+                                Eigen::Map<const Eigen::VectorXd>(resume_->responses.data(),
+                                                                  static_cast<Eigen::Index>(resume_->responses.size()))}
+                     : Exchange{initial_poses(scene_), Eigen::VectorXd::Zero(b * kForceSize), {}};
   std::map<std::string, protocol::Message> inits;
   for (const auto& name : roles_.all()) {
     inits.emplace(name, protocol::messages::init(w, window_start(w), scene_.time.end, scene_.file.string(), scene_.text,
@@ -196,8 +198,13 @@ void Session::handshake(Peers& peers) {
   }
   for (const auto& name : roles_.pose_providers)
     current_.poses = take(ready.at(name), protocol::Tag::Poses, b * kPoseSize, when);
-  for (const auto& name : roles_.force_providers)
-    current_.forces += take(ready.at(name), protocol::Tag::Forces, b * kForceSize, when);
+  for (const auto& name : roles_.force_providers) {
+    const protocol::Message& m = ready.at(name);
+    current_.forces += take(m, protocol::Tag::Forces, b * kForceSize, when);
+    if (m.find(protocol::Tag::Responses) == nullptr) continue;
+    if (current_.responses.size() == 0) current_.responses = Eigen::VectorXd::Zero(b * kResponseSize);
+    current_.responses += take(m, protocol::Tag::Responses, b * kResponseSize, when);
+  }
   record(0, 0.0, WindowResult{current_, 0, 0.0, true, {}, {}, {}}, 0.0);
   write_fields(peers, 0);
   checkpoint(peers, 0);
@@ -304,6 +311,7 @@ void Session::checkpoint(Peers& peers, std::uint64_t next_window) {
   c.time = window_start(next_window);
   c.poses.assign(current_.poses.data(), current_.poses.data() + current_.poses.size());
   c.forces.assign(current_.forces.data(), current_.forces.data() + current_.forces.size());
+  c.responses.assign(current_.responses.data(), current_.responses.data() + current_.responses.size());
   const auto when = fmt::format("while checkpointing at t = {} s", c.time);
   for (auto& [name, m] : peers.exchange(std::move(requests), protocol::Type::State, when)) {
     const auto* state = m.find(protocol::Tag::State);

@@ -24,7 +24,7 @@ Eigen::VectorXd stack(const Exchange& e) {
 }
 
 Exchange unstack(const Eigen::VectorXd& x, Eigen::Index n_poses) {
-  return {x.head(n_poses), x.tail(x.size() - n_poses)};
+  return {x.head(n_poses), x.tail(x.size() - n_poses), {}};
 }
 
 // The accelerator mixes iterates linearly, which shortens quaternions; participants are
@@ -82,6 +82,7 @@ Exchange WindowRunner::call(const std::vector<std::string>& names, const Span& s
     if (scene::has(roles_.needs.at(name), scene::Data::Forces)) {
       inputs.push_back(forces_array(start.forces));
       inputs.push_back(forces_array(end.forces));
+      if (end.responses.size() > 0) inputs.push_back(responses_array(end.responses));
     }
     if (const auto f = s.fields.find(name); f != s.fields.end()) {
       inputs.insert(inputs.end(), f->second.begin(), f->second.end());
@@ -95,6 +96,7 @@ Exchange WindowRunner::call(const std::vector<std::string>& names, const Span& s
   Exchange out = end;
   bool forces_returned = false;
   Eigen::VectorXd force_sum = Eigen::VectorXd::Zero(end.forces.size());
+  Eigen::VectorXd response_sum;
   for (const auto& [name, m] : replies) {
     const Eigen::VectorXd stats = take(m, protocol::Tag::Stats, 2, s.when);
     r.substeps[name] += stats(0);
@@ -104,9 +106,16 @@ Exchange WindowRunner::call(const std::vector<std::string>& names, const Span& s
     if (scene::has(roles_.provides.at(name), scene::Data::Forces)) {
       force_sum += take(m, protocol::Tag::Forces, end.forces.size(), s.when);
       forces_returned = true;
+      if (m.find(protocol::Tag::Responses) == nullptr) continue;
+      const Eigen::Index size = end.forces.size() / kForceSize * kResponseSize;
+      if (response_sum.size() == 0) response_sum = Eigen::VectorXd::Zero(size);
+      response_sum += take(m, protocol::Tag::Responses, size, s.when);
     }
   }
-  if (forces_returned) out.forces = force_sum;
+  if (forces_returned) {
+    out.forces = force_sum;
+    out.responses = response_sum;
+  }
   return out;
 }
 
@@ -124,10 +133,14 @@ WindowResult WindowRunner::serial_explicit(const Span& s, const Exchange& start)
   return r;
 }
 
+// The parallel schemes hand the pose provider no response tensors: its forces were computed
+// for poses held or guessed, not for the motion it made, which the tensors refer to.
 WindowResult WindowRunner::parallel_explicit(const Span& s, const Exchange& start) {
   WindowResult r;
   r.iterations = 1;
-  r.end = call(roles_.all(), s, 1, start, start, r);
+  Exchange held = start;
+  held.responses = {};
+  r.end = call(roles_.all(), s, 1, held, held, r);
   return r;
 }
 
@@ -140,13 +153,18 @@ WindowResult WindowRunner::serial_implicit(const Span& s, const Exchange& start)
   accelerator_->new_window();
   Eigen::VectorXd x = start.forces;
   for (int it = 1; it <= coupling_.max_iterations; ++it) {
-    const Exchange moved = call(roles_.pose_providers, s, it, start, {start.poses, x}, r);
+    const Exchange moved =
+        call(roles_.pose_providers, s, it, start, {start.poses, x, it == 1 ? start.responses : r.end.responses}, r);
     r.end = call(roles_.force_providers, s, it, start, moved, r);
     observe(s, it, start, r);
     r.iterations = it;
     r.residual = relative(r.end.forces - x, start.forces, r.end.forces);
     if (converged(r.residual, r.end.forces - x)) return r;
-    x = accelerator_->next(x, r.end.forces);
+    // Forces that come with their response tensors go back unmixed: the pose provider moves
+    // the bodies with the tensors against the motion those forces were computed for (its
+    // previous iteration), which is the quasi-Newton step with the fluid's own Jacobian; a
+    // mixture of forces would have no such motion.
+    x = r.end.responses.size() > 0 ? r.end.forces : accelerator_->next(x, r.end.forces);
   }
   r.converged = false;
   return r;

@@ -87,6 +87,7 @@ struct Shape {
   double height = 0.0;                     // cylinder, capsule: length of the axis (body z)
   Vec3 normal{0, 0, 1};                    // plane: outward normal, through the body position
   std::filesystem::path file;              // mesh: STL or OBJ, resolved against the scene dir
+  bool operator==(const Shape&) const = default;
 };
 
 struct Material {

@@ -7,6 +7,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "fluid/ibm/marker_stencils.hpp"
 #include "fluid/ibm/volume_fraction.hpp"
 #include "fluid/navier_stokes.hpp"
 #include "fluid/petsc_check.hpp"
@@ -153,9 +154,8 @@ std::size_t ImmersedBoundary::add(RigidBody body) {
   // Markers about one cell apart where the body is: the smallest width of its cell on the
   // axes that carry variation.
   const int flat = flat_axis(grid_);
-  double h = std::numeric_limits<double>::infinity();
-  for (int d = 0; d < 3; ++d)
-    if (d != flat) h = std::min(h, grid_.axis(d).width(grid_.axis(d).cell_at(body.pose.position()[d])));
+  const Eigen::Vector3d& at = body.pose.position();
+  const double h = grid_.finest_width_at({at[0], at[1], at[2]});
   const std::vector<geometry::SurfaceSample> samples =
       flat < 0 ? geometry::sample_surface(body.shape, body.pose, options_.spacing * h)
                : geometry::sample_section(body.shape, body.pose, flat, grid_.axis(flat).centre(0), options_.spacing * h);
@@ -256,7 +256,7 @@ void ImmersedBoundary::collect_active_markers() {
       if (o != b && overlap(boxes[b], boxes[o])) touching.push_back(o);
     for (std::size_t k = 0; k < bodies_[b].markers.size(); ++k) {
       const Marker& m = bodies_[b].markers[k];
-      Active a;
+      ActiveMarker a;
       a.body = b;
       a.marker = k;
       a.position = body.pose.to_world(m.position);
@@ -297,11 +297,7 @@ void ImmersedBoundary::collect_active_markers() {
 // step's forces. Once u~ has been read, `predicted` serves as the sweeps' scratch field.
 void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingArrays& arrays) {
   collect_active_markers();
-  for (Entry& e : bodies_) {
-    e.fraction.clear();
-    for (int c = 0; c < 3; ++c)
-      e.fraction.push_back(volume_fraction(grid_, c, e.body, e.distance, grid_.owned(grid_.velocity_dm(c))));
-  }
+  update_fractions();
   // A body's inner momentum is carried from step to step; at the first step (or a body's
   // first) it is taken from the flow as it is, with the body where it will be.
   if (std::any_of(bodies_.begin(), bodies_.end(), [](const Entry& e) { return !e.inner_known; })) {
@@ -313,71 +309,15 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
         bodies_[b].inner_known = true;
       }
   }
-  std::array<Box, 3> owned;
-  for (int c = 0; c < 3; ++c) owned[static_cast<std::size_t>(c)] = grid_.owned(grid_.velocity_dm(c));
   const std::size_t n = active_.size();
-  // The stencils' points on this rank, flattened once per step: the sweeps spread onto,
-  // interpolate from and clear them up to `sweeps` times, and the per-point index and
-  // face-volume arithmetic took most of their time. A point is its offset from the owned
-  // box's first face, the same in every global vector of that component's DMDA.
-  struct Touch {
-    std::ptrdiff_t offset;
-    double weight;
-    double spread;  // weight / dV of the face
-  };
-  std::vector<Touch> touches;
-  std::vector<std::size_t> first(3 * n + 1, 0);
-  for (std::size_t l = 0; l < n; ++l)
-    for (std::size_t c = 0; c < 3; ++c) {
-      first[3 * l + c] = touches.size();
-      if (!active_[l].local[c]) continue;
-      const Box& box = owned[c];
-      for_each_point(active_[l].stencil[c], box, [&](const Index& p, double w) {
-        const std::ptrdiff_t offset =
-            ((p[2] - box.lo[2]) * (box.hi[1] - box.lo[1]) + (p[1] - box.lo[1])) * (box.hi[0] - box.lo[0]) +
-            (p[0] - box.lo[0]);
-        touches.push_back({offset, w, w / grid_.face_volume(static_cast<int>(c), p)});
-      });
-    }
-  first[3 * n] = touches.size();
-  const auto origins = [&](const std::array<PetscScalar***, 3>& field) {
-    std::array<PetscScalar*, 3> o{};
-    for (std::size_t c = 0; c < 3; ++c) {
-      const Box& b = owned[c];
-      if (b.hi[0] > b.lo[0] && b.hi[1] > b.lo[1] && b.hi[2] > b.lo[2]) o[c] = &field[c][b.lo[2]][b.lo[1]][b.lo[0]];
-    }
-    return o;
-  };
-  // field += sum_l g_l w_l / dV; field = 0 there; and the interpolation sum_x w_l field
-  // (summed over the ranks).
-  const auto spread = [&](const std::array<PetscScalar***, 3>& field, const std::vector<double>& g) {
-    const auto o = origins(field);
-    for (std::size_t i = 0; i < 3 * n; ++i)
-      if (g[i] != 0)
-        for (std::size_t t = first[i]; t < first[i + 1]; ++t) o[i % 3][touches[t].offset] += g[i] * touches[t].spread;
-  };
-  const auto clear = [&](const std::array<PetscScalar***, 3>& field) {
-    const auto o = origins(field);
-    for (std::size_t i = 0; i < 3 * n; ++i)
-      for (std::size_t t = first[i]; t < first[i + 1]; ++t) o[i % 3][touches[t].offset] = 0;
-  };
-  const auto interpolate = [&](const std::array<PetscScalar***, 3>& field, std::vector<double>& out) {
-    const auto o = origins(field);
-    for (std::size_t i = 0; i < 3 * n; ++i) {
-      double sum = 0;
-      for (std::size_t t = first[i]; t < first[i + 1]; ++t) sum += touches[t].weight * o[i % 3][touches[t].offset];
-      out[i] = sum;
-    }
-    MPI_Allreduce(MPI_IN_PLACE, out.data(), static_cast<int>(out.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
-  };
-
+  const MarkerStencils stencils(grid_, active_);
   std::vector<double> g(3 * n), residual(3 * n), direction(3 * n), image(3 * n), correction(3 * n, 0.0);
   for (std::size_t l = 0; l < n; ++l) {
     const Eigen::Vector3d& last = bodies_[active_[l].body].markers[active_[l].marker].force;
     for (std::size_t c = 0; c < 3; ++c) g[3 * l + c] = dt * active_[l].volume * last[static_cast<Eigen::Index>(c)];
   }
-  spread(arrays.predicted, g);
-  interpolate(arrays.predicted, residual);
+  stencils.spread(arrays.predicted, g);
+  stencils.interpolate(arrays.predicted, residual);
   double scale = 0;
   for (std::size_t l = 0; l < n; ++l)
     for (std::size_t c = 0; c < 3; ++c) {
@@ -385,13 +325,11 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
       scale = std::max({scale, std::abs(target), std::abs(residual[3 * l + c])});
       residual[3 * l + c] = target - residual[3 * l + c];
     }
-  clear(arrays.predicted);
+  stencils.clear(arrays.predicted);
   // Jacobi-preconditioned: B's diagonal, sum_x w_l(x)^2 / dV_x, evens out how strongly
   // markers of different spacing and volume see themselves.
-  std::vector<double> diagonal(3 * n, 0.0), scaled(3 * n);
-  for (std::size_t i = 0; i < 3 * n; ++i)
-    for (std::size_t t = first[i]; t < first[i + 1]; ++t) diagonal[i] += touches[t].weight * touches[t].spread;
-  MPI_Allreduce(MPI_IN_PLACE, diagonal.data(), static_cast<int>(diagonal.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+  const std::vector<double> diagonal = stencils.diagonal();
+  std::vector<double> scaled(3 * n);
   const auto precondition = [&] {
     for (std::size_t i = 0; i < 3 * n; ++i) scaled[i] = diagonal[i] > 0 ? residual[i] / diagonal[i] : 0.0;
   };
@@ -411,9 +349,9 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
   sweeps_ = 0;
   while (sweeps_ < options_.sweeps && largest(residual) > options_.tolerance * scale) {
     ++sweeps_;
-    spread(arrays.predicted, direction);
-    interpolate(arrays.predicted, image);
-    clear(arrays.predicted);
+    stencils.spread(arrays.predicted, direction);
+    stencils.interpolate(arrays.predicted, image);
+    stencils.clear(arrays.predicted);
     const std::array<double, 3> curvature = norms(direction, image);
     std::array<double, 3> step{};
     for (std::size_t c = 0; c < 3; ++c) step[c] = curvature[c] > 0 ? rr[c] / curvature[c] : 0.0;
@@ -429,7 +367,7 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
   }
   slip_ = largest(residual);
   for (std::size_t i = 0; i < 3 * n; ++i) g[i] += correction[i];
-  spread(arrays.rhs, g);
+  stencils.spread(arrays.rhs, g);
 
   for (Entry& e : bodies_) {
     e.forcing = e.forcing_moment = Eigen::Vector3d::Zero();
@@ -456,6 +394,14 @@ void ImmersedBoundary::finish_step(const NavierStokes& flow, double dt) {
     e.load.force = -rho * e.forcing + rho * (momentum - momentum_before) / dt;
     e.load.torque = -rho * e.forcing_moment + rho * (angular - angular_before) / dt;
     std::copy_n(now, kInnerWidth, e.inner.begin());
+  }
+}
+
+void ImmersedBoundary::update_fractions() {
+  for (Entry& e : bodies_) {
+    e.fraction.clear();
+    for (int c = 0; c < 3; ++c)
+      e.fraction.push_back(volume_fraction(grid_, c, e.body, e.distance, grid_.owned(grid_.velocity_dm(c))));
   }
 }
 

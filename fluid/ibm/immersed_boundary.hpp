@@ -40,6 +40,7 @@
 #include "fluid/ibm/body_distance.hpp"
 #include "fluid/ibm/delta_kernel.hpp"
 #include "fluid/ibm/kernel_stencil.hpp"
+#include "fluid/ibm/marker_stencils.hpp"
 
 namespace cosim::fluid {
 
@@ -122,22 +123,14 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
     std::vector<IndicatorPatch> fraction;  // alpha at this rank's faces of each component, where the body is
     HydrodynamicLoad load;
   };
-  // A marker taking part in the current step.
-  struct Active {
-    std::size_t body = 0, marker = 0;
-    Eigen::Vector3d position, target;
-    double volume = 0;
-    std::array<KernelStencil, 3> stencil;
-    std::array<bool, 3> local{};  // the stencil meets this rank's faces of the component
-  };
-
   void collect_active_markers();
+  void update_fractions();  // of every body at this rank's faces, where it is now
   std::vector<double> inner_momenta(const NavierStokes& flow) const;  // 6 per body, summed over ranks
 
   const Grid& grid_;
   IbmOptions options_;
   std::vector<Entry> bodies_;
-  std::vector<Active> active_;
+  std::vector<ActiveMarker> active_;  // the markers taking part in the current step
   double slip_ = 0;
   int sweeps_ = 0;
 };

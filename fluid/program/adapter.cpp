@@ -1,9 +1,11 @@
 #include "fluid/program/adapter.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "fluid/program/body_responses.hpp"
 #include "fluid/program/body_surfaces.hpp"
 #include "fluid/program/cell_fields.hpp"
 #include "fluid/program/petsc_flags.hpp"
@@ -42,6 +44,7 @@ struct FluidSolver::Flow {
   fluid::NavierStokes flow;
   std::unique_ptr<fluid::BodyTreatment> bodies;
   std::unique_ptr<BodySurfaces> surfaces;  // once the bodies are added
+  std::optional<BodyResponses> responses;  // with the immersed boundary, once the bodies are added
 };
 
 FluidSolver::FluidSolver(bool prescribed) : prescribed_(prescribed) {}
@@ -58,12 +61,23 @@ participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const st
   flow_ = std::make_unique<Flow>(setup_);
   for (const fluid::RigidBody& b : setup_.bodies) flow_->bodies->add(b);
   flow_->surfaces = std::make_unique<BodySurfaces>(flow_->grid, *flow_->bodies, setup_.body_names);
+  if (std::holds_alternative<fluid::IbmOptions>(setup_.body_method)) {
+    std::vector<std::size_t> same_shape;
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+      std::size_t first = 0;
+      while (!(scene.bodies[first].shape == scene.bodies[b].shape)) ++first;
+      same_shape.push_back(first);
+    }
+    flow_->responses.emplace(flow_->grid, setup_.bodies, same_shape, setup_.properties, setup_.steps,
+                             setup_.body_method, scene.coupling.window);
+  }
   const fluid::Point u0 = setup_.initial_velocity;
   flow_->flow.set_velocity([&](const fluid::Point&) { return u0; });
   // The coupler's poses (the rigid-body program's centres of mass) win over the scene's.
   place(prescribed_ || poses.empty() ? program::poses_at(setup_.motions, 0) : poses);
   if (!state.empty()) restore(state);
-  return {prescribed_ ? poses_ : std::vector<participant::PoseRow>{}, forces(), 0};
+  const std::vector<participant::ForceRow> loads = forces();
+  return {prescribed_ ? poses_ : std::vector<participant::PoseRow>{}, loads, 0, responses({}, loads)};
 }
 
 participant::Outputs FluidSolver::advance(const participant::Window& w, const participant::Inputs& in) {
@@ -72,6 +86,7 @@ participant::Outputs FluidSolver::advance(const participant::Window& w, const pa
   // fluid and solid gives the staircase FBM's load a one-step spike, which as the window-end
   // value would act on the body for the whole window.
   std::vector<participant::ForceRow> mean(setup_.bodies.size());
+  const std::vector<participant::PoseRow> start = poses_;
   const double length = w.t1 - w.t0;
   const auto steps = flow_->flow.advance_to(
       w.t1, flow_->bodies->for_step(), [&](double t) { place(poses_at(w, in, t)); },
@@ -86,7 +101,8 @@ participant::Outputs FluidSolver::advance(const participant::Window& w, const pa
       });
   steps_ += steps.size();
   for (const fluid::StepReport& r : steps) stage_seconds_ += r.seconds;
-  return {prescribed_ ? poses_ : std::vector<participant::PoseRow>{}, mean, static_cast<double>(steps.size())};
+  return {prescribed_ ? poses_ : std::vector<participant::PoseRow>{}, mean, static_cast<double>(steps.size()),
+          responses(start, mean)};
 }
 
 std::vector<participant::PoseRow> FluidSolver::poses_at(const participant::Window& w,
@@ -111,6 +127,19 @@ std::vector<participant::ForceRow> FluidSolver::forces() const {
   return out;
 }
 
+std::vector<participant::ResponseRow> FluidSolver::responses(const std::vector<participant::PoseRow>& start,
+                                                              const std::vector<participant::ForceRow>& loads) {
+  if (!flow_->responses) return {};
+  const auto velocities = [](const std::vector<participant::PoseRow>& poses) {
+    std::vector<BodyResponses::Vector6d> out;
+    for (const participant::PoseRow& p : poses) out.push_back((BodyResponses::Vector6d() << p.velocity, p.angular_velocity).finished());
+    return out;
+  };
+  std::vector<Eigen::Quaterniond> orientations;
+  for (const participant::PoseRow& p : poses_) orientations.push_back(p.orientation);
+  return flow_->responses->after(velocities(start), velocities(poses_), orientations, loads);
+}
+
 // Rank 0 alone fills the point sets (coupler/field/field_frame.hpp).
 field::FieldFrame FluidSolver::fields() const {
   field::FieldFrame frame = cell_fields(flow_->flow, *flow_->bodies);
@@ -120,10 +149,14 @@ field::FieldFrame FluidSolver::fields() const {
   return frame;
 }
 
-// The flow's state, then the bodies' (the immersed boundary's inner-fluid momenta).
+// [the responses' length, their state (the changes of the last windows)], the flow's state,
+// then the bodies' (the immersed boundary's inner-fluid momenta).
 std::vector<double> FluidSolver::state() const {
-  std::vector<double> out = flow_->flow.state();
-  const std::vector<double> bodies = flow_->bodies->state();
+  const std::vector<double> responses = flow_->responses ? flow_->responses->state() : std::vector<double>{};
+  std::vector<double> out{static_cast<double>(responses.size())};
+  out.insert(out.end(), responses.begin(), responses.end());
+  const std::vector<double> flow = flow_->flow.state(), bodies = flow_->bodies->state();
+  out.insert(out.end(), flow.begin(), flow.end());
   out.insert(out.end(), bodies.begin(), bodies.end());
   return out;
 }
@@ -131,9 +164,14 @@ std::vector<double> FluidSolver::state() const {
 void FluidSolver::restore(const std::vector<double>& state) {
   const std::size_t bodies = flow_->bodies->state().size();
   try {
-    if (state.size() < bodies) throw std::invalid_argument("too short for the bodies' state");
-    const std::span<const double> all(state);
-    flow_->flow.restore(all.first(state.size() - bodies));
+    const std::size_t responses = state.empty() ? 0 : static_cast<std::size_t>(state[0]);
+    if (state.empty() || state.size() < 1 + responses + bodies) throw std::invalid_argument("too short for its parts");
+    const std::span<const double> all = std::span<const double>(state).subspan(1);
+    if (flow_->responses)
+      flow_->responses->restore(all.first(responses));
+    else if (responses > 0)
+      throw std::invalid_argument("it holds the bodies' responses, which the staircase does not measure");
+    flow_->flow.restore(all.subspan(responses, all.size() - responses - bodies));
     flow_->bodies->restore(all.last(bodies));
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(std::string("restart state: ") + e.what());

@@ -1,6 +1,7 @@
 // cosim-fluid as a participant: the Navier-Stokes flow around the scene's bodies, advanced
 // window by window. It needs the bodies' poses and velocities and provides the
-// hydrodynamic force and torque on each (protocol::kForceWidth values per body).
+// hydrodynamic force and torque on each (protocol::kForceWidth values per body) and, with the
+// immersed boundary, their response tensors (body_responses.hpp).
 #pragma once
 
 #include <memory>
@@ -41,6 +42,10 @@ class FluidSolver final : public participant::Solver {
                                              double t) const;
   void place(const std::vector<participant::PoseRow>& poses);
   std::vector<participant::ForceRow> forces() const;  // per body: the loads of the flow as it is
+  // Per body the response of those loads (body_responses.hpp) after the window whose bodies
+  // started at `start` (empty: no window yet) and are now at poses_; none for the staircase.
+  std::vector<participant::ResponseRow> responses(const std::vector<participant::PoseRow>& start,
+                                                  const std::vector<participant::ForceRow>& loads);
 
   bool prescribed_;
   FluidSetup setup_;

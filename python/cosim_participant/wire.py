@@ -14,12 +14,13 @@ from dataclasses import dataclass, field
 from enum import IntEnum
 
 MAGIC = 0x4D495343  # "CSIM"
-VERSION = 3
+VERSION = 4
 NAME_SIZE = 32  # NUL-padded, so at most 31 characters
 MAX_ARRAYS = 64
 MAX_ELEMENTS = 1 << 31
 POSE_WIDTH = 13  # position, quaternion w x y z, velocity, angular velocity
 FORCE_WIDTH = 6  # force, torque
+RESPONSE_WIDTH = 78  # added mass, added damping (6 x 6 each, row-major), hold (6)
 STATS_WIDTH = 2  # substeps, wall seconds
 
 _HEADER = struct.Struct("<IHH32sQIIIIddI")  # magic .. array count
@@ -56,6 +57,7 @@ class Tag(IntEnum):
     FIELD = 6
     POINTS = 7
     POINT_ATTRIBUTES = 8
+    RESPONSES = 9
 
 
 class DType(IntEnum):
@@ -63,8 +65,9 @@ class DType(IntEnum):
     BYTES = 2
 
 
-_COLUMNS = {Tag.POSES: POSE_WIDTH, Tag.FORCES: FORCE_WIDTH, Tag.STATS: STATS_WIDTH, Tag.POINTS: 3}
-_FINITE = (Tag.POSES, Tag.FORCES, Tag.STATS)
+_COLUMNS = {Tag.POSES: POSE_WIDTH, Tag.FORCES: FORCE_WIDTH, Tag.RESPONSES: RESPONSE_WIDTH, Tag.STATS: STATS_WIDTH,
+            Tag.POINTS: 3}
+_FINITE = (Tag.POSES, Tag.FORCES, Tag.RESPONSES, Tag.STATS)
 
 
 @dataclass

@@ -22,6 +22,13 @@ struct BodyInertia {
   // Mean density mass / volume. Only buoyancy needs it: -rho_f V g = -(rho_f / density) m g,
   // written as a ratio so that equal densities cancel gravity exactly.
   double density = 0.0;
+  // A body moving with a liquid's added inertia (added_inertia.hpp) has a larger mass than
+  // gravity and buoyancy act on: their share of it, m / (m + added mass).
+  double own_mass_fraction = 1.0;
+  // The liquid's resistance to the body's velocity, F = -damping v and, in the body frame,
+  // T = -rotational_damping omega; integrated implicitly (Substeps).
+  double damping = 0.0;
+  Eigen::Matrix3d rotational_damping = Eigen::Matrix3d::Zero();
 
   static BodyInertia fixed() { return {}; }
   static BodyInertia of(double mass, const Eigen::Matrix3d& inertia_body, bool rotates = true);

@@ -18,7 +18,7 @@ Eigen::Vector3d BodyForces::acceleration(const BodyInertia& body) const {
       throw std::invalid_argument("buoyancy needs a positive body density");
     factor -= fluid_density / body.density;
   }
-  return factor * g;
+  return body.own_mass_fraction * factor * g;
 }
 
 }  // namespace cosim::dynamics

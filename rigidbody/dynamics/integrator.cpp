@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+
+#include <Eigen/LU>
 #include <stdexcept>
 
 #include "rigidbody/dynamics/leapfrog.hpp"
@@ -25,6 +27,18 @@ void check(std::span<BodyState> states, std::span<const BodyInertia> inertia,
 // stepped longer. The tolerance keeps a whole number from gaining one by round-off.
 long substep_count(double span, double dt) {
   return std::max(1L, static_cast<long>(std::ceil(span / dt - 1e-9)));
+}
+
+// The liquid's damping over h, implicitly: m (v' - v) = -h c v', and likewise for omega in
+// the body frame with I and the rotational damping. Implicit, so a damping far above m / h
+// (a body in a narrow gap) slows the body without overshooting.
+void damp(BodyState& state, const BodyInertia& body, double h) {
+  if (body.damping > 0.0) state.velocity /= 1.0 + h * body.damping * body.inverse_mass;
+  if (!body.rotates || body.rotational_damping.isZero(0.0)) return;
+  const Eigen::Matrix3d r = state.orientation.toRotationMatrix();
+  const Eigen::Vector3d w = r.transpose() * state.angular_velocity;
+  const Eigen::Matrix3d lhs = body.inertia_body + h * body.rotational_damping;
+  state.angular_velocity = r * Eigen::Vector3d(lhs.partialPivLu().solve(body.inertia_body * w));
 }
 
 }  // namespace
@@ -62,6 +76,7 @@ void Substeps::integrate_velocities(long k) {
       leapfrog_velocity(states_[i], inertia_[i], w, acceleration_[i], h);
     else
       semi_implicit_velocity(states_[i], inertia_[i], w, acceleration_[i], h);
+    damp(states_[i], inertia_[i], h);
   }
 }
 

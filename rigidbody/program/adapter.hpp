@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "coupler/participant/solver.hpp"
+#include "rigidbody/program/fluid_response.hpp"
 #include "rigidbody/program/virtual_mass.hpp"
 #include "rigidbody/world/world.hpp"
 
@@ -31,10 +32,12 @@ class RigidSolver final : public participant::Solver {
 
  private:
   std::vector<participant::PoseRow> poses() const;
+  std::vector<Vector6d> velocities() const;  // of the scene's bodies: linear, then angular
 
   scene::Scene scene_;
   std::unique_ptr<world::World> world_;
   VirtualMass virtual_mass_{0, 0};
+  FluidResponse fluid_response_;
   long substeps_ = 0;
   world::StageSeconds stage_seconds_;
 };

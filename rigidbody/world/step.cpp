@@ -3,6 +3,7 @@
 // the StepReport. The soft step's further substeps of a dt skip the broad and narrow phase.
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 #include "rigidbody/dynamics/integrator.hpp"
 #include "rigidbody/world/world.hpp"
@@ -34,9 +35,17 @@ void merge(StepReport& report, const solver::SolveReport& solved) {
 
 }  // namespace
 
-StepReport World::advance(double window, std::span<const dynamics::WindowWrench> external) {
+StepReport World::advance(double window, std::span<const dynamics::WindowWrench> external,
+                          std::span<const dynamics::AddedInertia> added) {
   const auto start = std::chrono::steady_clock::now();
   StepReport report;
+  stepping_ = inertias_;
+  if (!added.empty()) {
+    if (added.size() != size()) throw std::invalid_argument("advance: added inertia must be one per body or none");
+    moving_.resize(size());
+    for (std::size_t i = 0; i < size(); ++i) moving_[i] = dynamics::with_added(inertias_[i], added[i], states_[i].orientation);
+    stepping_ = moving_;
+  }
   // "Only what the scene needs": without contacts (or with nothing to collide with) no
   // broad or narrow phase is ever called.
   const bool contacts = settings_.contact && size() > 1;
@@ -45,7 +54,7 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
   // unless the lubrication film needs each substep's own gaps.
   const int split = relax ? soft_.options().substeps : 1;
   const int collide_every = settings_.lubrication.active() ? 1 : split;
-  dynamics::Substeps substeps(states_, inertias_, external, time_, time_ + window,
+  dynamics::Substeps substeps(states_, stepping_, external, time_, time_ + window,
                               {dynamics::Scheme::semi_implicit_euler, settings_.dt / split, settings_.body_forces});
   // A window shorter than dt has fewer substeps than a narrow phase covers.
   if (contacts) check_tunnelling(window, substeps.length() * std::min<long>(collide_every, substeps.count()), report);
@@ -117,8 +126,8 @@ solver::SolveReport World::solve(const solver::ContactScene& scene, std::span<so
 void World::solve_contacts(double dt, StepReport& report) {
   // The solvers split the pairs into contact groups themselves (solver::contact_groups:
   // components linked through dynamic bodies only) and report the worst group.
-  mobility_ = solver::mobilities(states_, inertias_);
-  const solver::ContactScene scene{states_, inertias_, mobility_, graph_.contacts(), pair_materials_, dt};
+  mobility_ = solver::mobilities(states_, stepping_);
+  const solver::ContactScene scene{states_, stepping_, mobility_, graph_.contacts(), pair_materials_, dt};
   // Before the contacts, so the solver sees the velocities the film has left.
   solver::apply_lubrication(scene, radii_, settings_.lubrication);
   const std::span<solver::CachedContact> memory = graph_.recall();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rigidbody/broadphase/hash_grid.hpp"
+#include "rigidbody/dynamics/added_inertia.hpp"
 #include "rigidbody/dynamics/body.hpp"
 #include "rigidbody/dynamics/body_forces.hpp"
 #include "rigidbody/geometry/shape.hpp"
@@ -44,8 +45,11 @@ class World {
 
   // Advances all bodies by `window` in substeps of at most settings().dt (the soft step's:
   // dt / soft.substeps). `external` is
-  // empty or one wrench per body (the coupler's forces over this window).
-  StepReport advance(double window, std::span<const dynamics::WindowWrench> external = {});
+  // empty or one wrench per body (the coupler's forces over this window). `added` is empty
+  // or one per body: the liquid's added inertia and damping over this window, with which the
+  // bodies move, contacts included (dynamics::with_added).
+  StepReport advance(double window, std::span<const dynamics::WindowWrench> external = {},
+                     std::span<const dynamics::AddedInertia> added = {});
 
   std::size_t size() const { return states_.size(); }
   double time() const { return time_; }
@@ -86,6 +90,10 @@ class World {
   std::vector<double> radii_;  // of curvature, for the lubrication force (infinite: a plane)
   std::vector<dynamics::BodyState> states_;
   std::vector<dynamics::BodyInertia> inertias_;
+  // What the bodies move with in the current window: inertias_, or with a liquid's added
+  // inertia, moving_.
+  std::vector<dynamics::BodyInertia> moving_;
+  std::span<const dynamics::BodyInertia> stepping_;
   std::vector<BodyMaterial> materials_;
   TunnellingWarnings tunnelling_;
   double smallest_radius_ = 0.0;  // of the bounded bodies, for the default margin

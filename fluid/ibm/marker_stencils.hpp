@@ -1,0 +1,59 @@
+#pragma once
+// The markers that take part in a step, and their kernels' points on this rank flattened
+// once: the forcing's sweeps (and the added mass's, added_mass.hpp) spread onto,
+// interpolate from and clear them many times, and the per-point index and face-volume
+// arithmetic took most of their time. A point is its offset from the owned box's first
+// face, the same in every global vector of that component's DMDA.
+#include <petscdmda.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "fluid/grid.hpp"
+#include "fluid/ibm/kernel_stencil.hpp"
+
+namespace cosim::fluid {
+
+struct ActiveMarker {
+  std::size_t body = 0, marker = 0;
+  Eigen::Vector3d position, target;  // where it is, and the body's velocity there
+  double volume = 0;
+  std::array<KernelStencil, 3> stencil;
+  std::array<bool, 3> local{};  // the stencil meets this rank's faces of the component
+};
+
+// Owned faces of the three components, as DMDA arrays.
+using FaceArrays = std::array<PetscScalar***, 3>;
+
+class MarkerStencils {
+ public:
+  MarkerStencils(const Grid& grid, std::span<const ActiveMarker> markers);
+
+  // field += sum_l g_l w_l / dV, g holding 3 values (x, y, z) per marker.
+  void spread(const FaceArrays& field, const std::vector<double>& g) const;
+  // field = 0 at every point of the markers' kernels.
+  void clear(const FaceArrays& field) const;
+  // out_l = sum_x w_l field, summed over the ranks (collective).
+  void interpolate(const FaceArrays& field, std::vector<double>& out) const;
+  // sum_x w_l^2 / dV per value: the diagonal of interpolating what is spread, summed over
+  // the ranks (collective).
+  std::vector<double> diagonal() const;
+
+ private:
+  struct Touch {
+    std::ptrdiff_t offset;
+    double weight;
+    double spread;  // weight / dV of the face
+  };
+  std::array<PetscScalar*, 3> origins(const FaceArrays& field) const;
+
+  const Grid& grid_;
+  std::array<Box, 3> owned_;
+  std::vector<Touch> touches_;
+  std::vector<std::size_t> first_;  // value i's touches: first_[i] .. first_[i + 1]
+};
+
+}  // namespace cosim::fluid

@@ -1,0 +1,85 @@
+#include "fluid/program/body_responses.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace cosim::program {
+namespace {
+
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+Matrix6d turned(const Matrix6d& body_frame, const Eigen::Quaterniond& q) {
+  Matrix6d r = Matrix6d::Zero();
+  r.topLeftCorner<3, 3>() = r.bottomRightCorner<3, 3>() = q.toRotationMatrix();
+  return r * body_frame * r.transpose();
+}
+
+// Changes remembered per body: the kernel's windows after the newest.
+constexpr std::size_t kRemembered = fluid::kResponseWindows - 1;
+
+}  // namespace
+
+BodyResponses::BodyResponses(const fluid::Grid& grid, const std::vector<fluid::RigidBody>& bodies,
+                             const std::vector<std::size_t>& same_shape, const fluid::FluidProperties& fluid,
+                             const fluid::TimeStepOptions& steps, const fluid::BodyOptions& method, double window)
+    : changes_(bodies.size()) {
+  const auto width = [&](const fluid::RigidBody& body) {
+    const Eigen::Vector3d& x = body.pose.position();
+    return grid.finest_width_at({x[0], x[1], x[2]});
+  };
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const std::size_t first = same_shape.at(b);
+    if (first < b && width(bodies[first]) == width(bodies[b]))
+      body_frame_.push_back(body_frame_[first]);
+    else
+      body_frame_.push_back(fluid::window_response(grid, bodies[b], fluid, steps, method, window));
+  }
+}
+
+// The next window's load with the velocity held: the change d_(k-n) of n windows ago moved
+// this window's load by -K_n d and moves the next one's by -K_(n+1) d.
+std::vector<participant::ResponseRow> BodyResponses::after(std::span<const Vector6d> start,
+                                                           std::span<const Vector6d> end,
+                                                           const std::vector<Eigen::Quaterniond>& orientations,
+                                                           std::span<const participant::ForceRow> loads) {
+  std::vector<participant::ResponseRow> out;
+  for (std::size_t b = 0; b < body_frame_.size(); ++b) {
+    const fluid::WindowResponse& r = body_frame_[b];
+    const Eigen::Quaterniond& q = orientations.at(b);
+    std::deque<Vector6d>& changes = changes_[b];
+    if (!start.empty()) {
+      changes.push_front(end[b] - start[b]);
+      if (changes.size() > kRemembered) changes.pop_back();
+    }
+    Vector6d hold;
+    hold << loads[b].force, loads[b].torque;
+    for (std::size_t n = 0; n < changes.size(); ++n) hold += turned(r.kernel[n] - r.kernel[n + 1], q) * changes[n];
+    out.push_back({turned(r.added_mass, q), turned(r.added_damping, q), {hold.head<3>(), hold.tail<3>()}});
+  }
+  return out;
+}
+
+std::vector<double> BodyResponses::state() const {
+  std::vector<double> out;
+  for (const auto& changes : changes_) {
+    out.push_back(static_cast<double>(changes.size()));
+    for (const Vector6d& d : changes) out.insert(out.end(), d.data(), d.data() + 6);
+  }
+  return out;
+}
+
+void BodyResponses::restore(std::span<const double> state) {
+  std::size_t at = 0;
+  for (auto& changes : changes_) {
+    if (at >= state.size()) throw std::invalid_argument("response state too short");
+    const auto count = static_cast<std::size_t>(state[at++]);
+    if (count > kRemembered || at + 6 * count > state.size())
+      throw std::invalid_argument("response state holds " + std::to_string(count) + " changes for a body, at most " +
+                                  std::to_string(kRemembered));
+    changes.clear();
+    for (std::size_t n = 0; n < count; ++n, at += 6) changes.push_back(Vector6d(state.data() + at));
+  }
+  if (at != state.size()) throw std::invalid_argument("response state has values left over");
+}
+
+}  // namespace cosim::program

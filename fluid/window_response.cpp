@@ -1,0 +1,81 @@
+#include "fluid/window_response.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace cosim::fluid {
+namespace {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+// A periodic box of cells of width h around the origin, three mean half-extents beyond a
+// body of these half-extents on every side, or one cell `layer` thick along a
+// two-dimensional grid's flat axis. An even number of cells per axis, so a body near the
+// origin sits off the grid's planes by the same fraction of a cell on every axis.
+std::array<Axis, 3> box_around(const Eigen::Vector3d& half, double h, int flat, double layer) {
+  const double mean = flat < 0 ? std::cbrt(half.prod()) : std::sqrt(half.prod() / half[flat]);
+  const auto axis = [&](int d) {
+    if (d == flat) return Axis::uniform(1, -0.5 * layer, 0.5 * layer, true);
+    const int cells = 2 * static_cast<int>(std::ceil((half[d] + 3 * mean) / h));
+    return Axis::uniform(cells, -0.5 * cells * h, 0.5 * cells * h, true);
+  };
+  return {axis(0), axis(1), axis(2)};
+}
+
+}  // namespace
+
+WindowResponse window_response(const Grid& grid, const RigidBody& body, const FluidProperties& fluid,
+                               const TimeStepOptions& steps, const BodyOptions& method, double window) {
+  const geometry::Aabb extent =
+      geometry::world_aabb(body.shape, geometry::Pose(Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity()));
+  const Eigen::Vector3d& at = body.pose.position();
+  const double h = grid.finest_width_at({at[0], at[1], at[2]});
+  int flat = -1;
+  for (int d = 0; d < 3; ++d)
+    if (grid.axis(d).degenerate()) flat = d;
+  Grid box(PETSC_COMM_SELF, box_around(0.5 * (extent.max - extent.min), h, flat, flat < 0 ? 0 : grid.axis(flat).width(0)));
+  BoundaryConditions bc(box);
+  Eigen::Vector3d centre = h * Eigen::Vector3d(0.137, 0.291, 0.413);
+  if (flat >= 0) centre[flat] = 0;
+  FluidProperties at_rest = fluid;
+  at_rest.body_force = {};
+  // A thousandth of a cell per window: small enough for the convection, quadratic in it,
+  // to stay out of the response.
+  const double change = 1e-3 * h / window;
+  WindowResponse out;
+  out.kernel.assign(kResponseWindows, WindowResponse::Matrix6d::Zero());
+  const double mu = fluid.viscosity.newtonian() ? fluid.viscosity(0) : 0.0;
+  const double r = std::cbrt(3 * geometry::volume(body.shape) / (4 * std::numbers::pi));
+  out.added_damping.topLeftCorner<3, 3>().diagonal().setConstant(6 * std::numbers::pi * mu * r);
+  out.added_damping.bottomRightCorner<3, 3>().diagonal().setConstant(8 * std::numbers::pi * mu * r * r * r);
+  for (int mode = 0; mode < 6; ++mode) {
+    NavierStokes flow(box, bc, at_rest, steps);
+    flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
+    const std::unique_ptr<BodyTreatment> bodies = make_bodies(box, method);
+    bodies->add({body.shape, geometry::Pose(centre, Eigen::Quaterniond::Identity())});
+    Vector6d unit = Vector6d::Zero();
+    unit[mode] = change;
+    // The mode's velocity at t: ramped over the first window, held after it; the position
+    // and orientation moved by its integral.
+    const auto place = [&](double t) {
+      const double ramp = std::min(t, window) / window, travelled = t <= window ? 0.5 * t * t / window : t - 0.5 * window;
+      const Eigen::Vector3d turned = travelled * unit.tail<3>();
+      const Eigen::Quaterniond q = turned.norm() > 0 ? Eigen::Quaterniond(Eigen::AngleAxisd(turned.norm(), turned.normalized()))
+                                                     : Eigen::Quaterniond::Identity();
+      bodies->move(0, geometry::Pose(centre + travelled * unit.head<3>(), q), ramp * unit.head<3>(), ramp * unit.tail<3>());
+    };
+    for (int k = 0; k < kResponseWindows; ++k) {
+      Vector6d mean = Vector6d::Zero();
+      flow.advance_to((k + 1) * window, bodies->for_step(), place, [&](const StepReport& step) {
+        const HydrodynamicLoad load = bodies->loads(flow)[0];
+        mean.head<3>() += load.force * step.dt / window;
+        mean.tail<3>() += load.torque * step.dt / window;
+      });
+      out.kernel[static_cast<std::size_t>(k)].col(mode) = -mean / change;
+    }
+  }
+  out.added_mass = window * (out.kernel[0] - 0.5 * out.added_damping);
+  return out;
+}
+
+}  // namespace cosim::fluid
