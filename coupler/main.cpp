@@ -33,8 +33,8 @@ int check(const std::string& file) {
   for (const auto& g : scene.generators) {
     const std::string& first = scene.bodies[g.first].name;
     const std::string& last = scene.bodies[g.first + g.count - 1].name;
-    std::cout << fmt::format("  bodies[{}] ({}): {}\n", g.entry, cosim::scene::to_string(g.kind),
-                             g.count == 1 ? "1 body " + first : fmt::format("{} bodies {} .. {}", g.count, first, last));
+    const std::string made = g.count == 1 ? "1 body " + first : fmt::format("{} bodies {} .. {}", g.count, first, last);
+    std::cout << fmt::format("  bodies[{}] ({}): {}\n", g.entry, cosim::scene::to_string(g.kind), made);
   }
   for (const auto& p : plan.start) {
     const auto command = cosim::launcher::participant_command(scene, p, cosim::launcher::own_directory());

@@ -196,11 +196,12 @@ Bodies read_bodies(const std::vector<Reader>& items, const Domain& domain, const
       made.push_back(read_single(r, domain, dir));
     }
     for (Body& b : made) {
+      const bool made_here = r.has("generate");
       if (const auto [first, fresh] = entry_named.try_emplace(b.name, e); !fresh)
-        r.fail("name", r.has("generate") ? fmt::format("makes '{}', a name bodies[{}] has already", b.name, first->second)
-                                         : fmt::format("duplicate body name (first at bodies[{}])", first->second));
+        r.fail("name", made_here ? fmt::format("makes '{}', a name bodies[{}] has already", b.name, first->second)
+                                 : fmt::format("duplicate body name (first at bodies[{}])", first->second));
       entry_of.push_back(e);
-      generated.push_back(r.has("generate"));
+      generated.push_back(made_here);
       bodies.push_back(std::move(b));
     }
   }

@@ -38,7 +38,9 @@ Vec3 per_axis(const Reader& r, const std::string& key, const Range& range) {
   return {v, v, v};
 }
 
-Uniform seeded(const Reader& r) { return Uniform(static_cast<std::uint64_t>(r.integer("seed", 0, Range::at_least(0)))); }
+Uniform seeded(const Reader& r) {
+  return Uniform(static_cast<std::uint64_t>(r.integer("seed", 0, Range::at_least(0))));
+}
 
 // The entry's `region`, which must lie inside the domain.
 Domain read_region(const Reader& entry, const Domain& domain) {
@@ -53,7 +55,8 @@ Domain read_region(const Reader& entry, const Domain& domain) {
 }
 
 std::size_t capped(const Reader& r, const std::string& key, double n) {
-  if (n > static_cast<double>(max_bodies)) r.fail(key, fmt::format("makes {:g} bodies; one entry makes at most {}", n, max_bodies));
+  if (n > static_cast<double>(max_bodies))
+    r.fail(key, fmt::format("makes {:g} bodies; one entry makes at most {}", n, max_bodies));
   return static_cast<std::size_t>(n);
 }
 
@@ -81,7 +84,8 @@ LatticeAxis lattice_axis(const Reader& r, int k, double lo, double hi, double ex
   }
   if (a.count > 1 && a.step < need * (1 - fit))
     r.fail(spacing > 0 ? "spacing" : "count",
-           fmt::format("puts bodies {:g} apart on {}, closer than their width and twice the jitter ({:g}): they could overlap",
+           fmt::format("puts bodies {:g} apart on {}, closer than their width and twice the jitter ({:g}): they "
+                       "could overlap",
                        a.step, axis, need));
   a.first = 0.5 * (lo + hi) - 0.5 * (a.count - 1) * a.step;
   return a;
@@ -125,7 +129,8 @@ std::vector<Vec3> random_centres(const Reader& r, const Body& common, const Gene
   const bool has_count = r.has("count"), has_fraction = r.has("solid_fraction");
   if (has_count == has_fraction)
     r.fail(has_count ? "solid_fraction" : "count",
-           has_count ? "give count or solid_fraction, not both" : "missing: random addition needs count or solid_fraction");
+           has_count ? "give count or solid_fraction, not both"
+                     : "missing: random addition needs count or solid_fraction");
   const std::string key = has_count ? "count" : "solid_fraction";
   std::size_t count = 0;
   if (has_count) {

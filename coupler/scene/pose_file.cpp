@@ -79,7 +79,8 @@ std::vector<FilePose> csv_poses(const Reader& r, const fs::path& file) {
     if (content.empty() || content.front() == '#') continue;
     const std::vector<std::string_view> fields = split(content);
     // A header has no number in it; a first line with a typo in one number is no header.
-    const bool header = first && std::none_of(fields.begin(), fields.end(), [](std::string_view f) { return number(f); });
+    const bool header =
+        first && std::none_of(fields.begin(), fields.end(), [](std::string_view f) { return number(f).has_value(); });
     first = false;
     if (header) continue;
     const std::string where = fmt::format("line {}", line);
@@ -121,7 +122,8 @@ std::vector<FilePose> run_file_poses(const Reader& r, const fs::path& file) {
 
 std::vector<FilePose> read_pose_file(const Reader& r, const fs::path& file) {
   std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".csv") return csv_poses(r, file);
   if (extension == ".h5" || extension == ".hdf5") return run_file_poses(r, file);
   r.fail("file", "expected a .csv table or a cosim run file (.h5)");

@@ -127,7 +127,8 @@ TEST(Lattice, MissingOrMalformedCounts) {
   EXPECT_EQ(error(lattice({})), "scene.yaml:5: bodies[0].count: missing: a lattice needs count, spacing or both");
   EXPECT_EQ(error(lattice({"count: [4, 3.5, 2]"})),
             "scene.yaml:10: bodies[0].count = [4, 3.5, 2]: expected a list of 3 integers");
-  EXPECT_EQ(error(lattice({"count: [4, 0, 2]"})), "scene.yaml:10: bodies[0].count = [4, 0, 2]: every entry must be >= 1");
+  EXPECT_EQ(error(lattice({"count: [4, 0, 2]"})),
+            "scene.yaml:10: bodies[0].count = [4, 0, 2]: every entry must be >= 1");
   EXPECT_EQ(error(lattice({"spacing: [0.1, 0, 0.1]"})),
             "scene.yaml:10: bodies[0].spacing = [0.1, 0, 0.1]: every entry must be > 0");
   EXPECT_EQ(error(lattice({"count: [1, 1, 1]", "jitter: -0.01"})),

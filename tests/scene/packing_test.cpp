@@ -22,22 +22,26 @@ double cube_side(int count, double fraction) {
   return std::cbrt(count * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius / fraction);
 }
 
-// Spheres of `radius` in [0, side]^3 at solid fraction 0.3: the entry is lines 5-11.
-std::string random_entry(double side, const std::string& amount, const std::string& seed) {
+// The corner of a cube of `side` opposite the origin.
+std::string cube(double side) { return fmt::format("[{0:.17g}, {0:.17g}, {0:.17g}]", side); }
+
+// Spheres of `radius` in [0, 0, 0] .. `max`, as many as `amount` says (one key a line): the
+// entry's region is line 9, `amount` starts at line 10.
+std::string random_entry(const std::string& max, const std::string& amount, const std::string& seed = "0") {
   return fmt::format(R"(bodies:
   - generate: random
     name: "p{{:04d}}"
     shape: {{type: sphere, radius: {}}}
     material: {{density: 2500}}
-    region: {{min: [0, 0, 0], max: [{:.17g}, {:.17g}, {:.17g}]}}
+    region: {{min: [0, 0, 0], max: {}}}
     {}
     seed: {}
 )",
-                     radius, side, side, side, amount, seed);
+                     radius, max, amount, seed);
 }
 
 Scene packing(double side, const std::string& amount, const std::string& seed) {
-  return load_scene_from_string(head + random_entry(side, amount, seed), "scene.yaml");
+  return load_scene_from_string(head + random_entry(cube(side), amount, seed), "scene.yaml");
 }
 
 double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
@@ -79,7 +83,7 @@ TEST(RandomPacking, CountAsksForBodiesDirectly) {
 }
 
 TEST(RandomPacking, AnUnreachableSolidFractionNamesTheKeyAndWhatWasReached) {
-  const std::string message = load_error(head + random_entry(cube_side(300, 0.6), "solid_fraction: 0.6", "1"));
+  const std::string message = load_error(head + random_entry(cube(cube_side(300, 0.6)), "solid_fraction: 0.6", "1"));
   const std::string prefix = "scene.yaml:10: bodies[0].solid_fraction = 0.6: random addition placed only ";
   EXPECT_EQ(message.substr(0, prefix.size()), prefix) << message;
   EXPECT_NE(message.find(" of 300 bodies (solid fraction 0."), std::string::npos) << message;
@@ -88,41 +92,24 @@ TEST(RandomPacking, AnUnreachableSolidFractionNamesTheKeyAndWhatWasReached) {
                          "the region or raise attempts"),
             std::string::npos)
       << message;
-  const std::string count = load_error(head + random_entry(cube_side(300, 0.3), "count: 600", "1"));
+  const std::string count = load_error(head + random_entry(cube(cube_side(300, 0.3)), "count: 600", "1"));
   const std::string count_prefix = "scene.yaml:10: bodies[0].count = 600: random addition placed only ";
   EXPECT_EQ(count.substr(0, count_prefix.size()), count_prefix) << count;
 }
 
 TEST(RandomPacking, AmountErrors) {
-  EXPECT_EQ(load_error(head + random_entry(0.2, "solid_fraction: 1", "1")),
+  EXPECT_EQ(load_error(head + random_entry(cube(0.2), "solid_fraction: 1", "1")),
             "scene.yaml:10: bodies[0].solid_fraction = 1: must be in (0, 1)");
-  EXPECT_EQ(load_error(head + random_entry(0.2, "solid_fraction: 1.0e-6", "1")),
+  EXPECT_EQ(load_error(head + random_entry(cube(0.2), "solid_fraction: 1.0e-6", "1")),
             "scene.yaml:10: bodies[0].solid_fraction = 1.0e-6: is less than one body in the region");
-  EXPECT_EQ(load_error(head + random_entry(0.2, "count: 0", "1")), "scene.yaml:10: bodies[0].count = 0: must be >= 1");
-  EXPECT_EQ(load_error(head + random_entry(0.2, "attempts: 10", "1")),
+  EXPECT_EQ(load_error(head + random_entry(cube(0.2), "count: 0", "1")),
+            "scene.yaml:10: bodies[0].count = 0: must be >= 1");
+  EXPECT_EQ(load_error(head + random_entry(cube(0.2), "attempts: 10", "1")),
             "scene.yaml:5: bodies[0].count: missing: random addition needs count or solid_fraction");
-  EXPECT_EQ(load_error(head + R"(bodies:
-  - generate: random
-    name: "p{}"
-    shape: {type: sphere, radius: 0.01}
-    material: {density: 2500}
-    region: {min: [0, 0, 0], max: [0.5, 0.5, 0.015]}
-    count: 1
-)"),
+  EXPECT_EQ(load_error(head + random_entry("[0.5, 0.5, 0.015]", "count: 1")),
             "scene.yaml:9: bodies[0].region = {min: [0, 0, 0], max: [0.5, 0.5, 0.015]}: is 0.015 wide on z, less than "
             "a body (0.02)");
-}
-
-TEST(RandomPacking, BothCountAndSolidFraction) {
-  EXPECT_EQ(load_error(head + R"(bodies:
-  - generate: random
-    name: "p{}"
-    shape: {type: sphere, radius: 0.01}
-    material: {density: 2500}
-    region: {min: [0, 0, 0], max: [0.5, 0.5, 0.5]}
-    count: 5
-    solid_fraction: 0.1
-)"),
+  EXPECT_EQ(load_error(head + random_entry("[0.5, 0.5, 0.5]", "count: 5\n    solid_fraction: 0.1")),
             "scene.yaml:11: bodies[0].solid_fraction = 0.1: give count or solid_fraction, not both");
 }
 
