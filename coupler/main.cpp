@@ -30,6 +30,12 @@ int check(const std::string& file) {
   std::cout << file << ": valid; " << scene.bodies.size() << " bodies, " << scene.windows()
             << " windows of " << scene.coupling.window << " s ("
             << cosim::scene::to_string(scene.coupling.scheme) << ")\n";
+  for (const auto& g : scene.generators) {
+    const std::string& first = scene.bodies[g.first].name;
+    const std::string& last = scene.bodies[g.first + g.count - 1].name;
+    const std::string made = g.count == 1 ? "1 body " + first : fmt::format("{} bodies {} .. {}", g.count, first, last);
+    std::cout << fmt::format("  bodies[{}] ({}): {}\n", g.entry, cosim::scene::to_string(g.kind), made);
+  }
   for (const auto& p : plan.start) {
     const auto command = cosim::launcher::participant_command(scene, p, cosim::launcher::own_directory());
     std::cout << "  starts " << p.name << " (dt " << p.dt << " s): " << fmt::format("{}", fmt::join(command, " "))

@@ -44,6 +44,23 @@ def settling_velocity(run):
     return (z[first] - z[last]) / (t[last] - t[first]), t[first], t[last]
 
 
+def bodies_of(scene, names):
+    """The scene's body entries, one per body of the run file (`names`, scene order): an entry
+    with `generate` stands for the bodies its name pattern names in a row (Python's format
+    reads the patterns {} and {:03d} as cosim does)."""
+    bodies, k = [], 0
+    for entry in scene["bodies"]:
+        if "generate" not in entry:
+            bodies.append(entry)
+            k += 1
+            continue
+        i = 0
+        while k < len(names) and names[k] == entry["name"].format(i):
+            bodies.append(dict(entry, name=names[k]))
+            k, i = k + 1, i + 1
+    return bodies
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("run")
@@ -57,7 +74,8 @@ def main():
 
     with h5py.File(args.run, "r") as f:
         scene = yaml.safe_load(f["run/scene_text"][()].decode())
-        spheres = [b for b in scene["bodies"] if b["shape"]["type"] == "sphere" and not b.get("fixed", False)]
+        names = [n.decode() if isinstance(n, bytes) else n for n in f["run"].attrs["body_names"]]
+        spheres = [b for b in bodies_of(scene, names) if b["shape"]["type"] == "sphere" and not b.get("fixed", False)]
         t = f[f"bodies/{spheres[0]['name']}/time"][:]
         x = np.stack([f[f"bodies/{b['name']}/position"][:] for b in spheres], axis=1)  # rows, bodies, 3
     r = np.array([b["shape"]["radius"] for b in spheres])

@@ -61,16 +61,21 @@ Series Series::open(hid_t group, const std::string& name) {
 void Series::append_raw(const void* row, hid_t type) {
   const hsize_t dims[2] = {rows_ + 1, columns_};
   check(H5Dset_extent(dataset_.get(), dims), "extend series " + path_);
-  Handle file_space(H5Dget_space(dataset_.get()), H5Sclose, "dataspace of series " + path_);
-  const hsize_t start[2] = {rows_, 0};
-  const hsize_t count[2] = {1, columns_};
-  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
-        "select last row of series " + path_);
-  Handle row_space(H5Screate_simple(rank_, count, nullptr), H5Sclose,
-                   "make row dataspace for series " + path_);
+  const auto [file_space, row_space] = row_spaces(rows_);
   check(H5Dwrite(dataset_.get(), type, row_space.get(), file_space.get(), H5P_DEFAULT, row),
         "write series " + path_);
   ++rows_;
+}
+
+std::pair<Handle, Handle> Series::row_spaces(hsize_t row) const {
+  Handle file_space(H5Dget_space(dataset_.get()), H5Sclose, "dataspace of series " + path_);
+  const hsize_t start[2] = {row, 0};
+  const hsize_t count[2] = {1, columns_};
+  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
+        "select row " + std::to_string(row) + " of series " + path_);
+  Handle row_space(H5Screate_simple(rank_, count, nullptr), H5Sclose,
+                   "make row dataspace for series " + path_);
+  return {std::move(file_space), std::move(row_space)};
 }
 
 void Series::truncate(hsize_t rows) {
@@ -90,6 +95,19 @@ std::vector<double> Series::read_all() const {
                   values.data()),
           "read series " + path_);
   }
+  return values;
+}
+
+std::vector<double> Series::read_row(hsize_t row) const {
+  if (row >= rows_) {
+    throw ObjectError("series " + path_ + " has " + std::to_string(rows_) + " rows, no row " +
+                      std::to_string(row));
+  }
+  std::vector<double> values(columns_);
+  const auto [file_space, row_space] = row_spaces(row);
+  check(H5Dread(dataset_.get(), H5T_NATIVE_DOUBLE, row_space.get(), file_space.get(), H5P_DEFAULT,
+                values.data()),
+        "read row " + std::to_string(row) + " of series " + path_);
   return values;
 }
 

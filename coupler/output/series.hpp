@@ -5,6 +5,7 @@
 #include <hdf5.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "coupler/output/h5_handle.hpp"
@@ -35,6 +36,8 @@ class Series {
   // Keeps the first `rows` rows (no more than there are); the next append writes row `rows`.
   void truncate(hsize_t rows);
   std::vector<double> read_all() const;
+  // Row `row` (< rows()): columns() values.
+  std::vector<double> read_row(hsize_t row) const;
 
   hsize_t rows() const { return rows_; }
   hsize_t columns() const { return columns_; }
@@ -44,6 +47,8 @@ class Series {
   Series(Handle dataset, std::string path, hsize_t rows, hsize_t columns, int rank);
   static Series make(hid_t group, const std::string& name, hsize_t columns, hid_t type, bool table);
   void append_raw(const void* row, hid_t type);
+  // The dataset's space with row `row` selected, and a space of one row to pair it with.
+  std::pair<Handle, Handle> row_spaces(hsize_t row) const;
 
   Handle dataset_;
   std::string path_;

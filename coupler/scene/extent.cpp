@@ -2,6 +2,10 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 namespace cosim::scene {
 
 Vec3 half_extent(const Shape& shape, const Quat& q) {
@@ -30,6 +34,46 @@ Vec3 half_extent(const Shape& shape, const Quat& q) {
       break;
   }
   return {h.x(), h.y(), h.z()};
+}
+
+double bounding_radius(const Shape& shape) {
+  switch (shape.type) {
+    case ShapeType::Sphere:
+      return shape.radius;
+    case ShapeType::Ellipsoid:
+      return std::max({shape.radii[0], shape.radii[1], shape.radii[2]});
+    case ShapeType::Box:
+      return std::hypot(shape.half_extents[0], shape.half_extents[1], shape.half_extents[2]);
+    case ShapeType::Cylinder:  // a rim point: radius out, half the height up
+      return std::hypot(shape.radius, 0.5 * shape.height);
+    case ShapeType::Capsule:
+      return shape.radius + 0.5 * shape.height;
+    case ShapeType::Plane:
+    case ShapeType::Mesh:
+      break;
+  }
+  return 0.0;
+}
+
+double volume(const Shape& shape) {
+  using std::numbers::pi;
+  const double ball = 4.0 / 3.0 * pi * shape.radius * shape.radius * shape.radius;
+  switch (shape.type) {
+    case ShapeType::Sphere:
+      return ball;
+    case ShapeType::Ellipsoid:
+      return 4.0 / 3.0 * pi * shape.radii[0] * shape.radii[1] * shape.radii[2];
+    case ShapeType::Box:
+      return 8.0 * shape.half_extents[0] * shape.half_extents[1] * shape.half_extents[2];
+    case ShapeType::Cylinder:
+      return pi * shape.radius * shape.radius * shape.height;
+    case ShapeType::Capsule:
+      return pi * shape.radius * shape.radius * shape.height + ball;
+    case ShapeType::Plane:
+    case ShapeType::Mesh:
+      break;
+  }
+  return 0.0;
 }
 
 }  // namespace cosim::scene

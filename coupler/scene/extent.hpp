@@ -1,4 +1,4 @@
-// How far a shape reaches from its body's position along each world axis.
+// How far a shape reaches from its body's position, and how much space it fills.
 #pragma once
 
 #include "coupler/scene/scene.hpp"
@@ -9,5 +9,15 @@ namespace cosim::scene {
 // quaternion `q`. Zero for planes (unbounded) and meshes (not read here): for those the
 // scene only bounds the position.
 Vec3 half_extent(const Shape& shape, const Quat& q);
+
+// Radius of the smallest sphere about the body's position that holds the shape in any
+// orientation. Zero for planes and meshes, as above.
+double bounding_radius(const Shape& shape);
+
+// The shape's volume; zero for planes and meshes.
+double volume(const Shape& shape);
+
+// Whether the scene knows how far the shape reaches: every shape but planes and meshes.
+inline bool bounded(const Shape& shape) { return shape.type != ShapeType::Plane && shape.type != ShapeType::Mesh; }
 
 }  // namespace cosim::scene

@@ -73,14 +73,6 @@ Output read_output(const Reader& r) {
   return o;
 }
 
-Domain read_domain(const Reader& r) {
-  const Domain d{r.vec3("min"), r.vec3("max")};
-  for (int k = 0; k < 3; ++k)
-    if (d.max[k] <= d.min[k]) r.fail("max", "must be greater than domain.min in every component");
-  r.finish();
-  return d;
-}
-
 std::vector<Effect> read_effects(const Reader& r) {
   std::vector<Effect> effects;
   for (std::size_t i : r.choices("effects", effect_names)) effects.push_back(static_cast<Effect>(i));
@@ -88,6 +80,14 @@ std::vector<Effect> read_effects(const Reader& r) {
 }
 
 }  // namespace
+
+Domain read_box(const Reader& r) {
+  const Domain d{r.vec3("min"), r.vec3("max")};
+  for (int k = 0; k < 3; ++k)
+    if (d.max[k] <= d.min[k]) r.fail("max", fmt::format("must be greater than {} in every component", r.path("min")));
+  r.finish();
+  return d;
+}
 
 Scene load_scene(const fs::path& file) {
   if (!fs::is_regular_file(file))
@@ -108,8 +108,12 @@ Scene load_scene_from_string(const std::string& text, const fs::path& file) {
   s.coupling = read_coupling(r.map("coupling"), s.time);
   if (r.has("output")) s.output = read_output(r.map("output"));
   s.gravity = r.vec3("gravity", s.gravity);
-  s.domain = read_domain(r.map("domain"));
-  if (r.has("bodies")) s.bodies = read_bodies(r.maps("bodies"), s.domain, file.parent_path());
+  s.domain = read_box(r.map("domain"));
+  if (r.has("bodies")) {
+    Bodies b = read_bodies(r.maps("bodies"), s.domain, file.parent_path(), s.output.file);
+    s.bodies = std::move(b.bodies);
+    s.generators = std::move(b.generators);
+  }
   if (r.has("effects")) {
     s.effects = read_effects(r);
     s.effects_line = r.line("effects");

@@ -16,6 +16,7 @@ inline constexpr std::array acceleration_names{"none", "constant", "aitken", "iq
 inline constexpr std::array transport_names{"ipc", "tcp"};
 inline constexpr std::array effect_names{"gravity",  "buoyancy",     "hydrodynamics", "contact",
                                          "friction", "rarefied_gas", "tracers"};
+inline constexpr std::array generator_names{"lattice", "random", "file"};
 inline constexpr std::array shape_names{"sphere", "ellipsoid", "box", "cylinder", "capsule", "plane", "mesh"};
 inline constexpr std::array data_names{"poses", "forces", "fields"};  // bit i of a DataSet
 

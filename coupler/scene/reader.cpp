@@ -157,6 +157,16 @@ void Reader::numbers(const std::string& key, std::span<double> out, const Range&
   }
 }
 
+void Reader::integers(const std::string& key, std::span<int> out, const Range& range) const {
+  std::vector<double> values(out.size());
+  numbers(key, values, range);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (values[i] != std::floor(values[i]) || std::abs(values[i]) > std::numeric_limits<int>::max())
+      fail(key, fmt::format("expected a list of {} integers", out.size()));
+    out[i] = static_cast<int>(values[i]);
+  }
+}
+
 Vec3 Reader::vec3(const std::string& key, const Range& range) const {
   Vec3 v{};
   numbers(key, v, range);

@@ -59,6 +59,7 @@ class Reader {
   Vec3 vec3(const std::string& key, const Range& range = {}) const;
   Vec3 vec3(const std::string& key, const Vec3& fallback, const Range& range = {}) const;
   void numbers(const std::string& key, std::span<double> out, const Range& range = {}) const;  // exactly out.size()
+  void integers(const std::string& key, std::span<int> out, const Range& range = {}) const;  // exactly out.size()
   std::vector<std::string> strings(const std::string& key) const;
   // One of `names`, returned as its index (enum tables index by value).
   std::size_t choice(const std::string& key, std::span<const char* const> names) const;

@@ -26,6 +26,7 @@ std::vector<std::string> Scene::body_names() const {
 const char* to_string(Scheme s) { return scheme_names.at(static_cast<std::size_t>(s)); }
 const char* to_string(Acceleration a) { return acceleration_names.at(static_cast<std::size_t>(a)); }
 const char* to_string(Effect e) { return effect_names.at(static_cast<std::size_t>(e)); }
+const char* to_string(Generator g) { return generator_names.at(static_cast<std::size_t>(g)); }
 
 std::string describe(DataSet set) {
   std::string out;

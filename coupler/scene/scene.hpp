@@ -108,6 +108,17 @@ struct Body {
   int material_line = 0;                   // 1-based line of `material` (of the entry if absent), for warnings
 };
 
+enum class Generator { Lattice, Random, File };
+
+// An entry of `bodies` that made its bodies by a rule (`generate:`) instead of naming one,
+// for reports such as `cosim check`.
+struct BodyGenerator {
+  std::size_t entry = 0;                   // index in the scene file's `bodies` list
+  Generator kind = Generator::Lattice;
+  std::size_t first = 0;                   // its bodies: bodies[first] to bodies[first + count - 1]
+  std::size_t count = 0;
+};
+
 // Where a participant's ranks run. None given: on the coupler's host. Any of them starts
 // the ranks with mpirun or, inside a Slurm allocation, srun (launcher/placement.hpp).
 struct Placement {
@@ -143,6 +154,7 @@ struct Scene {
   Vec3 gravity{0, 0, -9.81};
   Domain domain;
   std::vector<Body> bodies;
+  std::vector<BodyGenerator> generators;   // in file order
   std::vector<Effect> effects;
   int effects_line = 0;                    // 1-based line of `effects`: plan errors about effects point here
   std::vector<Participant> participants;   // in file order
@@ -160,6 +172,7 @@ Scene load_scene_from_string(const std::string& text, const std::filesystem::pat
 const char* to_string(Scheme);
 const char* to_string(Acceleration);
 const char* to_string(Effect);
+const char* to_string(Generator);
 std::string describe(DataSet set);  // "poses, forces", or "nothing"
 
 }  // namespace cosim::scene

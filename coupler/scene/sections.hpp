@@ -2,10 +2,15 @@
 // Each reads one mapping, validates it completely and finish()es it.
 #pragma once
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -14,10 +19,39 @@
 
 namespace cosim::scene {
 
-// `dir` is the scene's folder, against which mesh files are resolved.
-std::vector<Body> read_bodies(const std::vector<Reader>& items, const Domain& domain, const std::filesystem::path& dir);
+// The scene's bodies and the entries of `bodies` that generated some of them.
+struct Bodies {
+  std::vector<Body> bodies;
+  std::vector<BodyGenerator> generators;
+};
+
+// `dir` is the scene's folder, against which mesh and pose files are resolved; `output` is
+// the scene's output.file, which no entry may read from.
+Bodies read_bodies(const std::vector<Reader>& items, const Domain& domain, const std::filesystem::path& dir,
+                   const std::filesystem::path& output);
 // `dir` is the scene's folder, against which hostfiles are resolved.
 std::vector<Participant> read_participants(const Reader& r, const Coupling& coupling, const std::filesystem::path& dir);
+
+// A box given by `min` and `max` (the domain, a generator's region), max > min on every axis.
+Domain read_box(const Reader& r);
+
+// What every body of an entry shares, all but its name and position: fixed, shape,
+// material, orientation, velocity and angular_velocity.
+Body read_common(const Reader& r, const std::filesystem::path& dir);
+
+// The entry's `file` resolved against `dir`; it must exist.
+std::filesystem::path existing_file(const Reader& r, const std::filesystem::path& dir);
+
+// "(extent [..] .. [..]) is outside the domain [..] .. [..]" if some of `b` is outside `d`.
+std::optional<std::string> outside_domain(const Body& b, const Domain& d);
+
+// Scales `q` to unit length, or says why not ("not a unit quaternion (norm 1.1)").
+std::optional<std::string> make_unit(Quat& q);
+
+// Touching the domain boundary is fine; floating point noise in the sum must not make it an error.
+inline constexpr double domain_slack = 1e-12;
+
+inline std::string text(const Vec3& v) { return fmt::format("[{:g}]", fmt::join(v, ", ")); }
 
 // Body and participant names end up in file names, HDF5 paths and ZeroMQ identities (the
 // protocol header holds 31 bytes of name).

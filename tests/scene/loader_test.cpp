@@ -40,7 +40,7 @@ TEST(LoadScene, ReadsEveryKeyOfAFullScene) {
   EXPECT_EQ(s.domain.min, (Vec3{0, 0, 0}));
   EXPECT_EQ(s.domain.max, (Vec3{1, 1, 2}));
 
-  ASSERT_EQ(s.bodies.size(), 7u);
+  ASSERT_EQ(s.bodies.size(), 38u);
   const Body& ball = s.bodies[0];
   EXPECT_EQ(ball.name, "ball");
   EXPECT_EQ(ball.shape.type, ShapeType::Sphere);
@@ -73,10 +73,31 @@ TEST(LoadScene, ReadsEveryKeyOfAFullScene) {
   EXPECT_EQ(rock.shape.file, data / "cube.obj");
   EXPECT_EQ(rock.material.density, 2600);
   EXPECT_EQ(rock.material.friction, 0.6);
+  // Generated: 3 x 3 x 2 grains, 10 beans (solid fraction 0.001 of 0.1 m^3), 3 pebbles.
+  ASSERT_EQ(s.generators.size(), 3u);
+  const auto made = [&](std::size_t g) { return std::pair(s.generators[g].first, s.generators[g].count); };
+  EXPECT_EQ(s.generators[0].entry, 7u);
+  EXPECT_EQ(s.generators[0].kind, Generator::Lattice);
+  EXPECT_EQ(made(0), std::pair(std::size_t{7}, std::size_t{18}));
+  EXPECT_EQ(s.generators[1].kind, Generator::Random);
+  EXPECT_EQ(made(1), std::pair(std::size_t{25}, std::size_t{10}));
+  EXPECT_EQ(s.generators[2].kind, Generator::File);
+  EXPECT_EQ(made(2), std::pair(std::size_t{35}, std::size_t{3}));
+  EXPECT_EQ(s.bodies[7].name, "grain00");
+  EXPECT_EQ(s.bodies[24].name, "grain17");
+  EXPECT_NEAR(s.bodies[24].position[2], 1.75, 1e-12);  // unjittered in z: 1.7 +- 0.05
+  EXPECT_EQ(s.bodies[34].name, "bean9");
+  EXPECT_TRUE(s.bodies[34].fixed);
+  const Body& pebble = s.bodies[37];
+  EXPECT_EQ(pebble.name, "pebble2");
+  EXPECT_EQ(pebble.position, (Vec3{0.6, 0.2, 0.6}));
+  EXPECT_EQ(pebble.orientation, (Quat{0, 1, 0, 0}));
+  EXPECT_EQ(pebble.velocity, (Vec3{0, 0, -0.5}));
+  EXPECT_EQ(pebble.angular_velocity, (Vec3{1, 0, 0}));
 
   EXPECT_EQ(s.effects, (std::vector<Effect>{Effect::Gravity, Effect::Buoyancy, Effect::Hydrodynamics, Effect::Contact,
                                             Effect::Friction}));
-  EXPECT_EQ(s.effects_line, 50);
+  EXPECT_EQ(s.effects_line, 75);
   EXPECT_TRUE(s.has_effect(Effect::Contact));
   EXPECT_FALSE(s.has_effect(Effect::Tracers));
 
@@ -86,7 +107,7 @@ TEST(LoadScene, ReadsEveryKeyOfAFullScene) {
   EXPECT_TRUE(rigid.command.empty());
   EXPECT_EQ(rigid.ranks, 1);
   EXPECT_EQ(rigid.dt, 1e-4);
-  EXPECT_EQ(rigid.line, 52);
+  EXPECT_EQ(rigid.line, 77);
   EXPECT_EQ(rigid.options["iterations"].as<int>(), 20);
   const Participant* fluid = s.participant("fluid");
   ASSERT_NE(fluid, nullptr);

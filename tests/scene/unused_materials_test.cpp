@@ -15,14 +15,15 @@ std::vector<std::string> warnings(const std::string& effects, const std::string&
       head + "effects: " + effects + "\nparticipants:\n  rigidbody: {dt: 0.001}\nbodies:\n" + bodies, "scene.yaml"));
 }
 
-std::string ball(const std::string& name, const std::string& material) {
+// At x: bodies of one scene need places of their own (overlapping spheres are an error).
+std::string ball(const std::string& name, const std::string& material, const std::string& x = "0.5") {
   return "  - {name: " + name + ", shape: {type: sphere, radius: 0.1}, material: {density: 1000" + material +
-         "}, position: [0.5, 0.5, 0.5]}\n";
+         "}, position: [" + x + ", 0.5, 0.5]}\n";
 }
 
 // Guards against: a scene with friction coefficients but no 'friction' effect running frictionless silently.
 TEST(UnusedMaterials, FrictionWithoutTheFrictionEffectNamesBodyKeyAndEffect) {
-  const auto w = warnings("[gravity, contact]", ball("ball", "") + ball("box", ", friction: 0.5"));
+  const auto w = warnings("[gravity, contact]", ball("ball", "", "0.2") + ball("box", ", friction: 0.5", "0.4"));
   ASSERT_EQ(w.size(), 1u);
   EXPECT_EQ(w[0], "scene.yaml:9: bodies[1].material.friction = 0.5: ignored for body 'box': "
                   "the scene's effects do not include 'friction'");
@@ -42,7 +43,8 @@ TEST(UnusedMaterials, WithoutContactBothAreIgnoredAndEveryMissingEffectIsNamed) 
 // Guards against: a bed of many grains printing one line per grain.
 TEST(UnusedMaterials, ManyBodiesGiveOneLineThatCountsThem) {
   const std::string bodies =
-      ball("a", "") + ball("b", ", friction: 0.5") + ball("c", ", friction: 0.4") + ball("d", ", friction: 1");
+      ball("a", "", "0.2") + ball("b", ", friction: 0.5", "0.4") + ball("c", ", friction: 0.4", "0.6") +
+      ball("d", ", friction: 1", "0.8");
   const auto w = warnings("[gravity, contact]", bodies);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_EQ(w[0], "scene.yaml:9: bodies[1].material.friction = 0.5: ignored for body 'b' and 2 more bodies: "
