@@ -123,8 +123,8 @@ struct Checkpoint {
   double time = 0.0;                      // its start time
   std::vector<double> poses;              // bodies x 13 at `time`
   std::vector<double> forces;             // bodies x 6 at `time`
-  std::vector<double> responses;          // bodies x 78 with those forces, or none
   std::map<std::string, std::vector<double>> states;  // participant -> opaque state
+  std::vector<double> responses;          // bodies x 78 with those forces, or none
 };
 
 class RunFile {

@@ -86,7 +86,8 @@ participant::Outputs FluidSolver::advance(const participant::Window& w, const pa
   // fluid and solid gives the staircase FBM's load a one-step spike, which as the window-end
   // value would act on the body for the whole window.
   std::vector<participant::ForceRow> mean(setup_.bodies.size());
-  const std::vector<participant::PoseRow> start = poses_;
+  // Where the bodies start the window: a repeated window's, not where its last iteration left them.
+  const std::vector<participant::PoseRow> start = poses_at(w, in, w.t0);
   const double length = w.t1 - w.t0;
   const auto steps = flow_->flow.advance_to(
       w.t1, flow_->bodies->for_step(), [&](double t) { place(poses_at(w, in, t)); },
@@ -149,30 +150,32 @@ field::FieldFrame FluidSolver::fields() const {
   return frame;
 }
 
-// [the responses' length, their state (the changes of the last windows)], the flow's state,
-// then the bodies' (the immersed boundary's inner-fluid momenta).
+// The flow's state, the bodies' (the immersed boundary's inner-fluid momenta), the
+// responses' (the changes of the motion over the last windows), then the responses' length.
 std::vector<double> FluidSolver::state() const {
+  std::vector<double> out = flow_->flow.state();
+  const std::vector<double> bodies = flow_->bodies->state();
   const std::vector<double> responses = flow_->responses ? flow_->responses->state() : std::vector<double>{};
-  std::vector<double> out{static_cast<double>(responses.size())};
-  out.insert(out.end(), responses.begin(), responses.end());
-  const std::vector<double> flow = flow_->flow.state(), bodies = flow_->bodies->state();
-  out.insert(out.end(), flow.begin(), flow.end());
   out.insert(out.end(), bodies.begin(), bodies.end());
+  out.insert(out.end(), responses.begin(), responses.end());
+  out.push_back(static_cast<double>(responses.size()));
   return out;
 }
 
 void FluidSolver::restore(const std::vector<double>& state) {
   const std::size_t bodies = flow_->bodies->state().size();
   try {
-    const std::size_t responses = state.empty() ? 0 : static_cast<std::size_t>(state[0]);
-    if (state.empty() || state.size() < 1 + responses + bodies) throw std::invalid_argument("too short for its parts");
-    const std::span<const double> all = std::span<const double>(state).subspan(1);
+    const double length = state.empty() ? -1 : state.back();
+    if (!(length >= 0 && length + 1 + static_cast<double>(bodies) <= static_cast<double>(state.size())))
+      throw std::invalid_argument("too short for its parts");
+    const auto responses = static_cast<std::size_t>(length);
+    const std::span<const double> all = std::span<const double>(state).first(state.size() - 1);
     if (flow_->responses)
-      flow_->responses->restore(all.first(responses));
+      flow_->responses->restore(all.last(responses));
     else if (responses > 0)
       throw std::invalid_argument("it holds the bodies' responses, which the staircase does not measure");
-    flow_->flow.restore(all.subspan(responses, all.size() - responses - bodies));
-    flow_->bodies->restore(all.last(bodies));
+    flow_->flow.restore(all.first(all.size() - responses - bodies));
+    flow_->bodies->restore(all.subspan(all.size() - responses - bodies, bodies));
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(std::string("restart state: ") + e.what());
   }
