@@ -39,41 +39,48 @@ WindowResponse window_response(const Grid& grid, const RigidBody& body, const Fl
   if (flat >= 0) centre[flat] = 0;
   FluidProperties at_rest = fluid;
   at_rest.body_force = {};
-  // A thousandth of a cell per window: small enough for the convection, quadratic in it,
-  // to stay out of the response.
-  const double change = 1e-3 * h / window;
-  WindowResponse out;
-  out.kernel.assign(kResponseWindows, WindowResponse::Matrix6d::Zero());
-  const double mu = fluid.viscosity.newtonian() ? fluid.viscosity(0) : 0.0;
-  const double r = std::cbrt(3 * geometry::volume(body.shape) / (4 * std::numbers::pi));
-  out.added_damping.topLeftCorner<3, 3>().diagonal().setConstant(6 * std::numbers::pi * mu * r);
-  out.added_damping.bottomRightCorner<3, 3>().diagonal().setConstant(8 * std::numbers::pi * mu * r * r * r);
-  for (int mode = 0; mode < 6; ++mode) {
-    NavierStokes flow(box, bc, at_rest, steps);
-    flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
-    const std::unique_ptr<BodyTreatment> bodies = make_bodies(box, method);
-    bodies->add({body.shape, geometry::Pose(centre, Eigen::Quaterniond::Identity())});
-    Vector6d unit = Vector6d::Zero();
-    unit[mode] = change;
-    // The mode's velocity at t: ramped over the first window, held after it; the position
-    // and orientation moved by its integral.
-    const auto place = [&](double t) {
-      const double ramp = std::min(t, window) / window, travelled = t <= window ? 0.5 * t * t / window : t - 0.5 * window;
+  NavierStokes flow(box, bc, at_rest, steps);
+  flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
+  const std::unique_ptr<BodyTreatment> bodies = make_bodies(box, method);
+  bodies->add({body.shape, geometry::Pose(centre, Eigen::Quaterniond::Identity())});
+  const std::vector<double> rest = flow.state(), held = bodies->state();
+
+  // The window-mean loads of kResponseWindows windows, the body's velocity changed by
+  // `unit` from rest (ramped over the first window, held after it; its pose moved by the
+  // integral).
+  const auto loads = [&](const Vector6d& unit) {
+    flow.restore(rest);
+    bodies->restore(held);
+    const auto place = [&](double s) {
+      const double ramp = std::min(s, window) / window, travelled = s <= window ? 0.5 * s * s / window : s - 0.5 * window;
       const Eigen::Vector3d turned = travelled * unit.tail<3>();
       const Eigen::Quaterniond q = turned.norm() > 0 ? Eigen::Quaterniond(Eigen::AngleAxisd(turned.norm(), turned.normalized()))
                                                      : Eigen::Quaterniond::Identity();
       bodies->move(0, geometry::Pose(centre + travelled * unit.head<3>(), q), ramp * unit.head<3>(), ramp * unit.tail<3>());
     };
-    for (int k = 0; k < kResponseWindows; ++k) {
-      Vector6d mean = Vector6d::Zero();
+    std::vector<Vector6d> out(kResponseWindows, Vector6d::Zero());
+    for (int k = 0; k < kResponseWindows; ++k)
       flow.advance_to((k + 1) * window, bodies->for_step(), place, [&](const StepReport& step) {
         const HydrodynamicLoad load = bodies->loads(flow)[0];
-        mean.head<3>() += load.force * step.dt / window;
-        mean.tail<3>() += load.torque * step.dt / window;
+        out[static_cast<std::size_t>(k)].head<3>() += load.force * step.dt / window;
+        out[static_cast<std::size_t>(k)].tail<3>() += load.torque * step.dt / window;
       });
-      out.kernel[static_cast<std::size_t>(k)].col(mode) = -mean / change;
-    }
+    return out;
+  };
+  // A thousandth of a cell per window: small enough for the convection, quadratic in it,
+  // to stay out of the response.
+  const double change = 1e-3 * h / window;
+  WindowResponse out;
+  out.kernel.assign(kResponseWindows, WindowResponse::Matrix6d::Zero());
+  for (int mode = 0; mode < 6; ++mode) {
+    const std::vector<Vector6d> changed = loads(change * Vector6d::Unit(mode));
+    for (int k = 0; k < kResponseWindows; ++k)
+      out.kernel[static_cast<std::size_t>(k)].col(mode) = -changed[static_cast<std::size_t>(k)] / change;
   }
+  const double mu = fluid.viscosity.newtonian() ? fluid.viscosity(0) : 0.0;
+  const double r = std::cbrt(3 * geometry::volume(body.shape) / (4 * std::numbers::pi));
+  out.added_damping.topLeftCorner<3, 3>().diagonal().setConstant(6 * std::numbers::pi * mu * r);
+  out.added_damping.bottomRightCorner<3, 3>().diagonal().setConstant(8 * std::numbers::pi * mu * r * r * r);
   out.added_mass = window * (out.kernel[0] - 0.5 * out.added_damping);
   return out;
 }

@@ -49,7 +49,7 @@ struct Outputs {
   std::vector<PoseRow> poses;    // if the solver provides poses
   std::vector<ForceRow> forces;  // if the solver provides forces
   double substeps = 0;
-  std::vector<ResponseRow> responses;  // with the forces, if the solver measures them (else empty)
+  std::vector<ResponseRow> responses = {};  // with the forces, if the solver measures them (else empty)
 };
 
 class Solver {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "coupler/participant/robin.hpp"
 #include "coupler/protocol/field_message.hpp"
 #include "coupler/protocol/messages.hpp"
 #include "coupler/run/failure.hpp"
@@ -44,6 +45,39 @@ Eigen::VectorXd block_weights(const Exchange& e) {
   w << Eigen::VectorXd::Constant(e.poses.size(), weight(e.poses)),
       Eigen::VectorXd::Constant(e.forces.size(), weight(e.forces));
   return w;
+}
+
+// A body's velocity (linear, then angular) in a pose vector.
+participant::Vector6d velocity_of(const Eigen::VectorXd& poses, Eigen::Index body) {
+  return poses.segment<6>(kPoseSize * body + 7);
+}
+
+participant::ResponseRow response_of(const Eigen::VectorXd& responses, Eigen::Index body) {
+  return participant::response_rows({responses.data() + kResponseSize * body, static_cast<std::size_t>(kResponseSize)})[0];
+}
+
+participant::ForceRow force_of(const Eigen::VectorXd& forces, Eigen::Index body) {
+  return {forces.segment<3>(kForceSize * body), forces.segment<3>(kForceSize * body + 3)};
+}
+
+// The Robin wrenches of a new window (participant/robin.hpp): each body keeping its velocity
+// at the window's start, with the load the response says that brings.
+Eigen::VectorXd next_window_wrenches(const Exchange& start) {
+  Eigen::VectorXd out(start.forces.size());
+  for (Eigen::Index b = 0; b < out.size() / kForceSize; ++b)
+    out.segment<6>(kForceSize * b) = participant::robin_wrench(response_of(start.responses, b), velocity_of(start.poses, b));
+  return out;
+}
+
+// The Robin wrenches of a repeated window: the loads `forces` of the motion from the start's
+// velocities to those of `poses`, with the start's responses.
+Eigen::VectorXd repeat_wrenches(const Exchange& start, const Eigen::VectorXd& forces, const Eigen::VectorXd& poses,
+                                double length) {
+  Eigen::VectorXd out(forces.size());
+  for (Eigen::Index b = 0; b < out.size() / kForceSize; ++b)
+    out.segment<6>(kForceSize * b) = participant::robin_wrench(response_of(start.responses, b), force_of(forces, b),
+                                                               velocity_of(start.poses, b), velocity_of(poses, b), length);
+  return out;
 }
 
 }  // namespace
@@ -123,10 +157,13 @@ void WindowRunner::observe(const Span& s, int iteration, const Exchange& start, 
   if (!roles_.others.empty()) call(roles_.others, s, iteration, start, r.end, r);
 }
 
+// With response tensors the pose provider gets the Robin wrenches in place of the forces
+// (participant/robin.hpp), and the responses they were formed with.
 WindowResult WindowRunner::serial_explicit(const Span& s, const Exchange& start) {
   WindowResult r;
   r.iterations = 1;
   r.end = start;
+  if (start.responses.size() > 0) r.end.forces = next_window_wrenches(start);
   if (!roles_.pose_providers.empty()) r.end = call(roles_.pose_providers, s, 1, start, r.end, r);
   if (!roles_.force_providers.empty()) r.end = call(roles_.force_providers, s, 1, start, r.end, r);
   observe(s, 1, start, r);
@@ -148,23 +185,25 @@ bool WindowRunner::converged(double relative_change, const Eigen::VectorXd& forc
   return relative_change <= coupling_.tolerance || force_change.norm() <= coupling_.force_tolerance;
 }
 
+// With response tensors the iterations run on the Robin wrenches (participant/robin.hpp),
+// formed with the responses of the window's start in every iteration: the pose provider's
+// motion is then a fixed function of the wrench, and the force providers' loads, with the
+// motion they were computed for, give the next wrench.
 WindowResult WindowRunner::serial_implicit(const Span& s, const Exchange& start) {
   WindowResult r;
   accelerator_->new_window();
-  Eigen::VectorXd x = start.forces;
+  const bool robin = start.responses.size() > 0;
+  const Eigen::VectorXd first = robin ? next_window_wrenches(start) : start.forces;
+  Eigen::VectorXd x = first;
   for (int it = 1; it <= coupling_.max_iterations; ++it) {
-    const Exchange moved =
-        call(roles_.pose_providers, s, it, start, {start.poses, x, it == 1 ? start.responses : r.end.responses}, r);
+    const Exchange moved = call(roles_.pose_providers, s, it, start, {start.poses, x, start.responses}, r);
     r.end = call(roles_.force_providers, s, it, start, moved, r);
     observe(s, it, start, r);
     r.iterations = it;
-    r.residual = relative(r.end.forces - x, start.forces, r.end.forces);
-    if (converged(r.residual, r.end.forces - x)) return r;
-    // Forces that come with their response tensors go back unmixed: the pose provider moves
-    // the bodies with the tensors against the motion those forces were computed for (its
-    // previous iteration), which is the quasi-Newton step with the fluid's own Jacobian; a
-    // mixture of forces would have no such motion.
-    x = r.end.responses.size() > 0 ? r.end.forces : accelerator_->next(x, r.end.forces);
+    const Eigen::VectorXd y = robin ? repeat_wrenches(start, r.end.forces, r.end.poses, s.t1 - s.t0) : r.end.forces;
+    r.residual = relative(y - x, first, y);
+    if (converged(r.residual, y - x)) return r;
+    x = accelerator_->next(x, y);
   }
   r.converged = false;
   return r;

@@ -7,7 +7,8 @@
 // stop changing (their change relative to the larger of their values at the window's start
 // and end below the tolerance, or the forces' change below force_tolerance) or
 // max_iterations is reached:
-// serial-implicit iterates on the forces, parallel-implicit on poses and forces stacked
+// serial-implicit iterates on the forces (on the Robin wrenches when the forces come with
+// response tensors: participant/robin.hpp), parallel-implicit on poses and forces stacked
 // (each block divided by its norm in the first iteration so neither dominates the
 // accelerator). Participants that provide neither (observers) go last with the final
 // values, in every iteration so their rollback stays in step. A participant that needs

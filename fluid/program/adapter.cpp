@@ -77,7 +77,10 @@ participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const st
   place(prescribed_ || poses.empty() ? program::poses_at(setup_.motions, 0) : poses);
   if (!state.empty()) restore(state);
   const std::vector<participant::ForceRow> loads = forces();
-  return {prescribed_ ? poses_ : std::vector<participant::PoseRow>{}, loads, 0, responses({}, loads)};
+  // Resumed, the coupler goes on with the committed forces and responses; rows made here
+  // would move the responses' state on past the checkpoint's.
+  return {prescribed_ ? poses_ : std::vector<participant::PoseRow>{}, loads, 0,
+          state.empty() ? responses({}, loads) : std::vector<participant::ResponseRow>{}};
 }
 
 participant::Outputs FluidSolver::advance(const participant::Window& w, const participant::Inputs& in) {

@@ -1,5 +1,7 @@
 #include "fluid/program/body_responses.hpp"
 
+#include "coupler/participant/robin.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -29,6 +31,7 @@ BodyResponses::BodyResponses(const fluid::Grid& grid, const std::vector<fluid::R
     return grid.finest_width_at({x[0], x[1], x[2]});
   };
   for (std::size_t b = 0; b < bodies.size(); ++b) {
+    corrections_.emplace_back(window, width(bodies[b]));
     const std::size_t first = same_shape.at(b);
     // The same width to round-off: a uniform axis's cells differ in their last bits.
     if (first < b && std::abs(width(bodies[first]) - width(bodies[b])) <= 1e-9 * width(bodies[b]))
@@ -53,27 +56,35 @@ std::vector<participant::ResponseRow> BodyResponses::after(std::span<const Vecto
       changes.push_front(end[b] - start[b]);
       if (changes.size() > kRemembered) changes.pop_back();
     }
+    ResponseCorrection& correction = corrections_[b];
+    if (!start.empty()) correction.observe(changes.front().head<3>(), loads[b].force);
     Vector6d hold;
     hold << loads[b].force, loads[b].torque;
     for (std::size_t n = 0; n < changes.size(); ++n) hold += turned(r.kernel[n] - r.kernel[n + 1], q) * changes[n];
-    out.push_back({turned(r.added_mass, q), turned(r.added_damping, q), {hold.head<3>(), hold.tail<3>()}});
+    participant::ResponseRow row{turned(r.added_mass, q), turned(r.added_damping, q), {hold.head<3>(), hold.tail<3>()}};
+    correction.apply(row, changes.empty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(changes.front().head<3>()));
+    out.push_back(row);
   }
   return out;
 }
 
 std::vector<double> BodyResponses::state() const {
   std::vector<double> out;
-  for (const auto& changes : changes_) {
-    out.push_back(static_cast<double>(changes.size()));
-    for (const Vector6d& d : changes) out.insert(out.end(), d.data(), d.data() + 6);
+  for (std::size_t b = 0; b < changes_.size(); ++b) {
+    corrections_[b].state(out);
+    out.push_back(static_cast<double>(changes_[b].size()));
+    for (const Vector6d& d : changes_[b]) out.insert(out.end(), d.data(), d.data() + 6);
   }
   return out;
 }
 
 void BodyResponses::restore(std::span<const double> state) {
   std::size_t at = 0;
-  for (auto& changes : changes_) {
-    if (at >= state.size()) throw std::invalid_argument("response state too short");
+  for (std::size_t b = 0; b < changes_.size(); ++b) {
+    std::deque<Vector6d>& changes = changes_[b];
+    if (at + ResponseCorrection::kStateSize >= state.size()) throw std::invalid_argument("response state too short");
+    corrections_[b].restore(state.subspan(at, ResponseCorrection::kStateSize));
+    at += ResponseCorrection::kStateSize;
     const auto count = static_cast<std::size_t>(state[at++]);
     if (count > kRemembered || at + 6 * count > state.size())
       throw std::invalid_argument("response state holds " + std::to_string(count) + " changes for a body, at most " +

@@ -3,7 +3,8 @@
 // measured once per shape where the body starts and turned with the body into the world
 // frame, and the load expected over the next window if the body keeps the velocity it has:
 // the last window's load changed by what the changes of the motion over the windows before
-// still do to it, through the response kernel.
+// still do to it, through the response kernel; and what the kernel misses where the body is,
+// estimated as the run goes (response_correction.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "coupler/participant/body_rows.hpp"
+#include "fluid/program/response_correction.hpp"
 #include "fluid/window_response.hpp"
 
 namespace cosim::program {
@@ -33,14 +35,15 @@ class BodyResponses {
                                               const std::vector<Eigen::Quaterniond>& orientations,
                                               std::span<const participant::ForceRow> loads);
 
-  // The changes of the last windows, which the next rows depend on: for a rollback and a
-  // restart.
+  // The changes of the last windows and the corrections, which the next rows depend on: for
+  // a rollback and a restart.
   std::vector<double> state() const;
   void restore(std::span<const double> state);
 
  private:
   std::vector<fluid::WindowResponse> body_frame_;
   std::vector<std::deque<Vector6d>> changes_;  // per body, the newest first
+  std::vector<ResponseCorrection> corrections_;
 };
 
 }  // namespace cosim::program

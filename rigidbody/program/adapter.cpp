@@ -57,18 +57,22 @@ participant::Outputs RigidSolver::advance(const participant::Window& w, const pa
   auto external = wrenches(in, scene_.bodies.size(), world_->size());
   std::vector<dynamics::AddedInertia> added;
   if (!in.responses.empty()) {
-    const auto& forces = in.forces_end.empty() ? in.forces_start : in.forces_end;
-    FluidResponse::Carried carried = fluid_response_.prepare(w, forces, in.responses, velocities());
-    carried.wrenches.resize(world_->size());
-    carried.added.resize(world_->size());
-    external = std::move(carried.wrenches);
-    added = std::move(carried.added);
+    // The forces are the coupler's Robin wrenches; the bodies carry the responses.
+    if (virtual_mass_.active() && !warned_virtual_mass_) {
+      spdlog::warn("participants.rigidbody.options.virtual_mass is ignored: the fluid sends its response tensors, "
+                   "and the bodies move with those");
+      warned_virtual_mass_ = true;
+    }
+    if (in.responses.size() != scene_.bodies.size())
+      throw std::runtime_error("responses for " + std::to_string(in.responses.size()) + " bodies, the scene has " +
+                               std::to_string(scene_.bodies.size()));
+    added = added_inertia(in.responses);
+    added.resize(world_->size());
   } else if (virtual_mass_.active() && !external.empty()) {
     external = virtual_mass_.blend(world_->inertias(), world_->settings().body_forces, external);
   }
   world_->set_time(w.t0);
   const world::StepReport report = world_->advance(w.t1 - w.t0, external, added);
-  if (!in.responses.empty()) fluid_response_.finish(velocities());
   for (const std::string& warning : report.warnings) spdlog::warn("{}", warning);
   substeps_ += report.substeps;
   stage_seconds_ += report.seconds;
@@ -101,17 +105,6 @@ void RigidSolver::restore(const std::vector<double>& state) {
   const std::vector<participant::PoseRow> poses =
       participant::pose_rows(std::span(state).subspan(1, protocol::kPoseWidth * bodies));
   for (std::size_t b = 0; b < bodies; ++b) world_->states()[b] = state_of(poses[b]);
-}
-
-std::vector<Vector6d> RigidSolver::velocities() const {
-  std::vector<Vector6d> out;
-  for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
-    const dynamics::BodyState& s = world_->states()[b];
-    Vector6d v;
-    v << s.velocity, s.angular_velocity;
-    out.push_back(v);
-  }
-  return out;
 }
 
 std::vector<participant::PoseRow> RigidSolver::poses() const {

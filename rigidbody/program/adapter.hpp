@@ -32,12 +32,11 @@ class RigidSolver final : public participant::Solver {
 
  private:
   std::vector<participant::PoseRow> poses() const;
-  std::vector<Vector6d> velocities() const;  // of the scene's bodies: linear, then angular
 
   scene::Scene scene_;
   std::unique_ptr<world::World> world_;
   VirtualMass virtual_mass_{0, 0};
-  FluidResponse fluid_response_;
+  bool warned_virtual_mass_ = false;
   long substeps_ = 0;
   world::StageSeconds stage_seconds_;
 };

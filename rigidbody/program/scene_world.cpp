@@ -66,16 +66,43 @@ std::vector<world::BodyDesc> walls(const scene::Scene& scene, const scene::Reade
   return out;
 }
 
-// lubrication: {viscosity: mu, range: gap the fluid resolves, roughness: gap where it stops}
-solver::LubricationOptions lubrication(const scene::Reader& options, bool contact) {
-  if (!options.has("lubrication")) return {};
-  const scene::Reader r = options.map("lubrication");
+// lubrication: auto: the film of the scene's cosim-fluid, its Newtonian viscosity below the
+// gap its grid resolves, the widest of its cells along the axes that have more than one.
+solver::LubricationOptions lubrication_of_the_fluid(const scene::Scene& scene, const scene::Reader& options) {
+  const scene::Participant* fluid = scene.participant("fluid");
+  if (fluid == nullptr)
+    options.fail("lubrication", "auto takes the viscosity and the cell size from participants.fluid, which this scene lacks");
+  const scene::Reader fluid_options = scene::options_of(scene, *fluid);
+  const scene::Reader viscosity = fluid_options.map("viscosity");
+  if (viscosity.string("model") != "newtonian")
+    options.fail("lubrication", "auto needs a Newtonian fluid: give viscosity and range for " +
+                                    fluid_options.where("viscosity") + " = " + viscosity.string("model"));
+  std::array<double, 3> cells{};
+  fluid_options.map("grid").numbers("cells", cells, scene::Range::at_least(1));
   solver::LubricationOptions l;
-  l.viscosity = r.number("viscosity", scene::Range::above(0));
-  l.range = r.number("range", scene::Range::above(0));
-  l.roughness = r.number("roughness", 1e-3 * l.range, scene::Range::above(0));
-  if (l.roughness >= l.range) r.fail("roughness", "must be below range (" + std::to_string(l.range) + " m)");
-  r.finish();
+  l.viscosity = viscosity.number("mu", scene::Range::above(0));
+  for (int a = 0; a < 3; ++a)
+    if (cells[a] > 1) l.range = std::max(l.range, (scene.domain.max[a] - scene.domain.min[a]) / cells[a]);
+  l.roughness = 1e-3 * l.range;
+  return l;
+}
+
+// lubrication: {viscosity: mu, range: gap the fluid resolves, roughness: gap where it stops}, or auto
+solver::LubricationOptions lubrication(const scene::Scene& scene, const scene::Reader& options, bool contact) {
+  if (!options.has("lubrication")) return {};
+  solver::LubricationOptions l;
+  if (options.node("lubrication").IsScalar()) {
+    if (options.string("lubrication") != "auto")
+      options.fail("lubrication", "expected auto or {viscosity, range, roughness}");
+    l = lubrication_of_the_fluid(scene, options);
+  } else {
+    const scene::Reader r = options.map("lubrication");
+    l.viscosity = r.number("viscosity", scene::Range::above(0));
+    l.range = r.number("range", scene::Range::above(0));
+    l.roughness = r.number("roughness", 1e-3 * l.range, scene::Range::above(0));
+    if (l.roughness >= l.range) r.fail("roughness", "must be below range (" + std::to_string(l.range) + " m)");
+    r.finish();
+  }
   // The film acts on the pairs the contact pipeline finds; without it there are none.
   if (!contact) {
     spdlog::warn("{}: no contact effect in effects, so the lubrication force is not applied", options.where("lubrication"));
@@ -137,7 +164,7 @@ ProgramOptions program_options(const scene::Scene& scene) {
   constexpr std::array laws{solver::NormalLaw::linear, solver::NormalLaw::hertz};
   s.dem.law = laws[options.choice("dem_law", law_names, 0)];
   s.dem.normal_stiffness = options.number("normal_stiffness", s.dem.normal_stiffness, scene::Range::above(0));
-  s.lubrication = lubrication(options, s.contact);
+  s.lubrication = lubrication(scene, options, s.contact);
   out.convex_hulls = convex_hulls(scene, options);
   out.walls = walls(scene, options, scene.has_effect(scene::Effect::Friction));
   options.finish();

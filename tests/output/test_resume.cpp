@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "tests/output/h5_read.hpp"
+#include "coupler/output/record_shape.hpp"
 #include "coupler/output/run_file.hpp"
 #include "tests/output/polyhedral_frame.hpp"
 #include "tests/output/sample_run.hpp"
@@ -31,6 +32,9 @@ Checkpoint checkpoint_after(std::uint64_t window) {
   c.poses = w.poses;
   c.forces = w.forces;
   c.states = {{"fluid", {1.0, 2.0, 3.0}}, {"rigid", {}}};  // tracer has none
+  // A force provider's response tensors in every other checkpoint, none in the rest.
+  if (window % 2 == 0)
+    for (std::size_t i = 0; i < kResponseWidth * kBodies.size(); ++i) c.responses.push_back(window + 0.01 * i);
   return c;
 }
 
@@ -58,6 +62,8 @@ TEST_F(ResumeTest, CutsSeriesToTheCheckpointAndContinues) {
     EXPECT_EQ(c.time, expected.time);
     EXPECT_EQ(c.poses, expected.poses);
     EXPECT_EQ(c.forces, expected.forces);
+    EXPECT_EQ(c.responses, expected.responses);
+    EXPECT_FALSE(c.responses.empty());
     EXPECT_EQ(c.states, expected.states);
     for (std::uint64_t k = c.next_window; k < 7; ++k) {
       run.append(sample_window(k, kDt, kBodies.size(), kParticipants));

@@ -88,15 +88,16 @@ class Fuzzer {
   }
 
   Array array() {
-    const auto tag = static_cast<Tag>(between(1, 8));
+    const auto tag = static_cast<Tag>(between(1, 9));
     if (tag == Tag::Text) {
       Frame b = bytes(between(0, 40));
       return Array::text(std::string(reinterpret_cast<const char*>(b.data()), b.size()));
     }
-    const bool physics = tag == Tag::Poses || tag == Tag::Forces || tag == Tag::Stats;
+    const bool physics = tag == Tag::Poses || tag == Tag::Forces || tag == Tag::Responses || tag == Tag::Stats;
     const auto rows = static_cast<std::uint32_t>(tag == Tag::Stats ? 1 : between(0, 3));
     const auto cols = static_cast<std::uint32_t>(tag == Tag::Poses    ? kPoseWidth
                                                  : tag == Tag::Forces ? kForceWidth
+                                                 : tag == Tag::Responses ? kResponseWidth
                                                  : tag == Tag::Stats  ? kStatsWidth
                                                  : tag == Tag::Points ? 3
                                                                       : between(0, 6));

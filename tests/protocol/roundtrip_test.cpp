@@ -32,6 +32,7 @@ Message sample(Type type) {
                     .ranks = 4};
   m.arrays.push_back(Array::of(Tag::Poses, 2, 13, ramp(26, -1.0)));
   m.arrays.push_back(Array::of(Tag::Forces, 2, 6, ramp(12, 3.0)));
+  m.arrays.push_back(Array::of(Tag::Responses, 2, kResponseWidth, ramp(2 * kResponseWidth, -7.0)));
   m.arrays.push_back(Array::of(Tag::Stats, 1, 2, {12.0, 0.003}));
   // Opaque arrays are not checked: NaN payloads, infinities and -0 must pass unchanged.
   m.arrays.push_back(Array::of(Tag::State, 1, 5,

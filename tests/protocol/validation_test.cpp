@@ -286,6 +286,17 @@ TEST(Validation, EncoderRefusesWhatDecoderWould) {
   EXPECT_THAT(encode_error(m), HasSubstr("unknown message type 0"));
 }
 
+// Response tensors are physics: a NaN in them, or rows of another width, fail at the sender.
+TEST(Validation, ResponsesAreCheckedLikeForces) {
+  Message m = valid();
+  m.arrays.push_back(Array::of(Tag::Responses, 2, kResponseWidth, std::vector<double>(2 * kResponseWidth, 1.0)));
+  EXPECT_NO_THROW(encode(m));
+  m.arrays.back().values[kResponseWidth + 5] = kNaN;
+  EXPECT_THAT(encode_error(m), HasSubstr("(Responses) holds nan at row 1, column 5"));
+  m.arrays.back() = Array::of(Tag::Responses, 1, 72, std::vector<double>(72, 1.0));
+  EXPECT_THAT(encode_error(m), HasSubstr("(Responses) has 72 columns, expected 78"));
+}
+
 TEST(Validation, ArrayOfChecksItsSize) {
   EXPECT_THROW(Array::of(Tag::Forces, 2, 6, std::vector<double>(11)), ProtocolError);
 }

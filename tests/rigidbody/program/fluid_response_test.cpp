@@ -1,12 +1,15 @@
 // The fluid's response tensors on the rigid side, against known answers on model fluids
 // whose window-mean load lags the motion that causes it by a window, as explicit coupling
-// hands it over: a body moves as if the load followed its motion at once, whatever its mass,
-// where the plain lagged load diverges; a repeated window converges to the coupled motion.
+// hands it over: with the coupler's Robin wrenches (coupler/participant/robin.hpp) and the
+// tensors carried, a body moves as if the load followed its motion at once, whatever its
+// mass, where the plain lagged load diverges; a repeated window converges to the coupled
+// motion.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "coupler/participant/robin.hpp"
 #include "rigidbody/program/adapter.hpp"
 
 namespace cosim::program {
@@ -64,8 +67,12 @@ std::vector<double> explicit_windows(double density, ModelFluid fluid, bool resp
   for (int k = 0; k < windows; ++k) {
     participant::Inputs in;
     in.forces_start.emplace_back().force.z() = fluid.load();
+    if (responses) {
+      in.responses.push_back(fluid.response());
+      const participant::Vector6d wrench = participant::robin_wrench(in.responses[0], {0, 0, w.back(), 0, 0, 0});
+      in.forces_start[0] = {wrench.head<3>(), wrench.tail<3>()};
+    }
     in.forces_end = in.forces_start;
-    if (responses) in.responses.push_back(fluid.response());
     const auto out = solver.advance({static_cast<std::uint64_t>(k), 1, k * kWindow, (k + 1) * kWindow}, in);
     fluid.changes.push_back(out.poses.at(0).velocity.z() - w.back());
     w.push_back(out.poses[0].velocity.z());
@@ -108,9 +115,10 @@ TEST(FluidResponse, AStiffLaggingDragIsTakenImplicitly) {
 
 // Guards against: a repeated window (implicit coupling) not converging to the coupled
 // motion when the response is not the fluid's exact one. The fluid's true added mass is
-// 1.5 times the one it sends; each repetition gets the load of the previous one's motion,
-// and the velocity converges to the coupled (m - rho_f V) g W / (m + A_true), the error
-// shrinking by |A_true - A| / (m + A) per iteration.
+// 1.5 times the one it sends; each repetition gets the Robin wrench of the previous one's
+// load and motion (unaccelerated), and the velocity converges to the coupled
+// (m - rho_f V) g W / (m + A_true), the error shrinking by |A_true - A| / (m + A) per
+// iteration.
 TEST(FluidResponse, ARepeatedWindowConvergesToTheCoupledMotion) {
   const double density = 100, mass = density * kVolume, sent = 0.5 * kFluidDensity * kVolume, truth = 1.5 * sent;
   const double coupled = (kFluidDensity * kVolume - mass) * kG * kWindow / (mass + truth);
@@ -119,16 +127,19 @@ TEST(FluidResponse, ARepeatedWindowConvergesToTheCoupledMotion) {
   solver.initialise(sphere_in_liquid(density), "rigidbody", {}, {});
   const std::vector<double> start = solver.state();
   ModelFluid fluid{.added_mass = sent};
-  participant::ResponseRow response = fluid.response();
-  double load = 0, error = 0;
+  const participant::ResponseRow response = fluid.response();
+  participant::Vector6d wrench = participant::robin_wrench(response, participant::Vector6d::Zero());
+  double error = 0;
   for (std::uint32_t iteration = 1; iteration <= 12; ++iteration) {
     solver.restore(start);
     participant::Inputs in;
-    in.forces_start.emplace_back().force.z() = load;
+    in.forces_start.push_back({wrench.head<3>(), wrench.tail<3>()});
     in.forces_end = in.forces_start;
     in.responses.push_back(response);
     const double w = solver.advance({0, iteration, 0.0, kWindow}, in).poses.at(0).velocity.z();
-    load = -truth * w / kWindow;  // the window's load for this motion from rest
+    // The window's load for this motion from rest, and the next wrench, as the coupler forms it.
+    const participant::ForceRow load{{0, 0, -truth * w / kWindow}, {0, 0, 0}};
+    wrench = participant::robin_wrench(response, load, participant::Vector6d::Zero(), {0, 0, w, 0, 0, 0}, kWindow);
     const double next = std::abs(w - coupled);
     if (iteration > 2) {
       EXPECT_NEAR(next / error, rate, 1e-6) << "iteration " << iteration;

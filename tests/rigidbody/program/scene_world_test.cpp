@@ -203,6 +203,29 @@ TEST(SceneWorld, LubricationReachesTheSettings) {
                    .lubrication.active());
 }
 
+// `lubrication: auto` takes the film from the scene's fluid: its Newtonian viscosity, and
+// its widest cell as the gap it resolves.
+TEST(SceneWorld, AutoLubricationTakesTheFluidsViscosityAndCell) {
+  const std::string fluid =
+      "  fluid: {dt: 1.0e-3, options: {density: 1000, viscosity: {model: newtonian, mu: 0.058}, grid: {cells: [20, 40, 1]}}}\n";
+  const auto s = settings_of(scene::load_scene_from_string(
+      scene_text("[gravity, contact, hydrodynamics]", ball, "{lubrication: auto}") + fluid));
+  EXPECT_EQ(s.lubrication.viscosity, 0.058);
+  EXPECT_DOUBLE_EQ(s.lubrication.range, 10.0 / 20);  // the domain is 10 m wide; the one-cell axis does not count
+  EXPECT_DOUBLE_EQ(s.lubrication.roughness, 1e-3 * s.lubrication.range);
+  EXPECT_EQ(error_of("{lubrication: automatic}").key, "participants.rigidbody.options.lubrication");
+  const std::string carreau =
+      "  fluid: {dt: 1.0e-3, options: {density: 1000, viscosity: {model: carreau, mu_zero: 1, mu_infinity: 0.1, "
+      "time_constant: 1, index: 0.5}, grid: {cells: [20, 40, 1]}}}\n";
+  try {
+    settings_of(scene::load_scene_from_string(scene_text("[gravity, contact, hydrodynamics]", ball, "{lubrication: auto}") +
+                                              carreau));
+    FAIL() << "auto lubrication with a Carreau fluid";
+  } catch (const scene::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("needs a Newtonian fluid"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SceneWorld, BadLubricationIsNamed) {
   const auto rough = error_of("{lubrication: {viscosity: 0.058, range: 1.0e-3, roughness: 2.0e-3}}");
   EXPECT_EQ(rough.key, "participants.rigidbody.options.lubrication.roughness");
