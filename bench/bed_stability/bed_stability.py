@@ -13,8 +13,11 @@ difference over the implicit run's fastest speed: its root mean square over sphe
 written rows, and its largest, which a landing one window apart sets), the
 implicit iterations per window (mean and most), the deepest overlap in either run (of the
 radius) and both wall times. Writes the Markdown table to stdout (README.md holds it).
+--lattice and --gap spread the bed or shrink it to one sphere (what the neighbours cost
+the implicit iterations).
 
-    bench/bed_stability/bed_stability.py [--bin build/release/bin] [--ratios 2 1.2 ...] [--window 0.02] [--out runs/bed_stability]
+    bench/bed_stability/bed_stability.py [--bin build/release/bin] [--ratios 2 1.2 ...] [--window 0.02]
+                                         [--lattice 4 4 2] [--gap 1] [--out runs/bed_stability]
 """
 
 import argparse
@@ -33,13 +36,18 @@ RADIUS = 0.0125
 CELLS = 36  # 0.15 m / 36 = 4.17 mm: d/h 6
 
 
-def scene(name, ratio, scheme, end, window):
+def scene(name, ratio, scheme, end, window, lattice, gap):
     rng = random.Random(7)
     bodies = []
-    for k in range(2):
-        for j in range(4):
-            for i in range(4):
-                x, y, z = 0.0375 + 0.026 * i + 1e-4 * j, 0.0375 + 0.026 * j - 1e-4 * i, 0.062 + 0.026 * k
+    pitch = 2 * RADIUS + gap
+    nx, ny, nz = lattice
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                # centred on the box across, the lowest layer 62 mm up
+                x = 0.0765 + pitch * (i - (nx - 1) / 2) + 1e-4 * j
+                y = 0.0765 + pitch * (j - (ny - 1) / 2) - 1e-4 * i
+                z = 0.062 + pitch * k
                 v = [rng.uniform(-0.01, 0.01) for _ in range(3)]
                 bodies.append(f"  - {{name: s{len(bodies):02d}, shape: {{type: sphere, radius: {RADIUS}}}, "
                               f"material: {{density: {ratio}, friction: 0.3}}, position: [{x:.5f}, {y:.5f}, {z:.5f}], "
@@ -98,6 +106,9 @@ def main():
     parser.add_argument("--ratios", type=float, nargs="+", default=[2, 1.2, 1.0, 0.7, 0.5, 0.3, 0.2, 0.1])
     parser.add_argument("--end", type=float, default=1.0)
     parser.add_argument("--window", type=float, default=0.02, help="coupling window and fluid step [s]")
+    parser.add_argument("--lattice", type=int, nargs=3, default=[4, 4, 2], metavar=("NX", "NY", "NZ"),
+                        help="spheres along x, y, z")
+    parser.add_argument("--gap", type=float, default=1.0, help="gap between neighbouring spheres [mm]")
     parser.add_argument("--out", default=os.path.join("runs", "bed_stability"))
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
@@ -108,8 +119,9 @@ def main():
         tag = f"{ratio:g}".replace(".", "_")
         runs = {}
         for scheme in ("serial-explicit", "serial-implicit"):
-            name = f"bed_{tag}_w{args.window:g}_{scheme.split('-')[1]}"
-            runs[scheme] = run(cosim, args.out, name, scene(name, ratio, scheme, args.end, args.window))
+            name = f"bed_{tag}_w{args.window:g}_{'x'.join(map(str, args.lattice))}_g{args.gap:g}_{scheme.split('-')[1]}"
+            text = scene(name, ratio, scheme, args.end, args.window, args.lattice, 1e-3 * args.gap)
+            runs[scheme] = run(cosim, args.out, name, text)
         (ce, we, fe, ee), (ci, wi, fi, ei) = runs["serial-explicit"], runs["serial-implicit"]
         if ci != 0:
             print(f"| {ratio:g} | implicit run failed | | | | {we:.0f} s, {wi:.0f} s |")
