@@ -7,9 +7,9 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
-#include <tuple>
 
 #include "fluid/petsc_check.hpp"
+#include "fluid/tridiagonal_lines.hpp"
 
 namespace cosim::fluid {
 
@@ -60,26 +60,13 @@ AxisTransform axis_transform(const Axis& axis, BoundaryKind lower, BoundaryKind 
   return t;
 }
 
-// [begin, end) of n items split over `size` ranks as evenly as possible.
-std::pair<PetscInt, PetscInt> share(PetscInt n, int rank, int size) {
-  const PetscInt base = n / size, extra = n % size;
-  const PetscInt begin = rank * base + std::min<PetscInt>(rank, extra);
-  return {begin, begin + base + (rank < extra ? 1 : 0)};
-}
-
 }  // namespace
 
 bool FastPoisson::applies(const Grid& grid) { return uniform(grid.axis(0)) && uniform(grid.axis(1)); }
 
-FastPoisson::FastPoisson(const Grid& grid, const BoundaryConditions& bc) : grid_(grid) {
+FastPoisson::FastPoisson(const Grid& grid, const BoundaryConditions& bc) : grid_(grid), slabs_(grid.pressure_dm()) {
   const auto n = grid.cells();
   nx_ = n[0], ny_ = n[1], nz_ = n[2];
-  int rank = 0, size = 1;
-  MPI_Comm_rank(grid.comm(), &rank);
-  MPI_Comm_size(grid.comm(), &size);
-  serial_ = size == 1;
-  std::tie(k_begin_, k_end_) = share(nz_, rank, size);
-  std::tie(j_begin_, j_end_) = share(ny_, rank, size);
 
   const AxisTransform x = axis_transform(grid.axis(0), bc.at(0, Side::lower).kind, bc.at(0, Side::upper).kind);
   const AxisTransform y = axis_transform(grid.axis(1), bc.at(1, Side::lower).kind, bc.at(1, Side::upper).kind);
@@ -113,7 +100,7 @@ FastPoisson::FastPoisson(const Grid& grid, const BoundaryConditions& bc) : grid_
 
   create_or_release(
       [&] {
-        const int planes = static_cast<int>(k_end_ - k_begin_);
+        const int planes = static_cast<int>(slabs_.k_end() - slabs_.k_begin());
         if (planes > 0) {
           // Planned on a scratch array (FFTW_ESTIMATE leaves it alone and, unlike
           // FFTW_MEASURE, picks the same algorithm in every run, so runs repeat bit for
@@ -132,7 +119,6 @@ FastPoisson::FastPoisson(const Grid& grid, const BoundaryConditions& bc) : grid_
         int failed = planes > 0 && (!forward_ || !backward_) ? 1 : 0;
         MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, grid.comm());
         if (failed) throw std::runtime_error("fluid: FFTW could not plan the pressure transforms");
-        if (!serial_) create_scatters();
       },
       [this] { release(); });
 }
@@ -143,98 +129,32 @@ void FastPoisson::release() {
   if (forward_) fftw_destroy_plan(forward_);
   if (backward_) fftw_destroy_plan(backward_);
   forward_ = backward_ = nullptr;
-  VecScatterDestroy(&to_planes_);
-  VecScatterDestroy(&to_lines_);
-  VecDestroy(&planes_);
-  VecDestroy(&lines_);
-}
-
-// planes_ holds whole x-y planes k_begin_ .. k_end_ in natural order (so its global index
-// is the natural one); lines_ holds rows j_begin_ .. j_end_ as (j, k, i), whole z lines.
-void FastPoisson::create_scatters() {
-  MPI_Comm comm = grid_.comm();
-  DM dm = grid_.pressure_dm();
-  const PetscInt plane = nx_ * ny_;
-  const PetscInt in_planes = plane * (k_end_ - k_begin_), in_lines = nx_ * nz_ * (j_end_ - j_begin_);
-  COSIM_PETSC(VecCreateMPI(comm, in_planes, PETSC_DETERMINE, &planes_));
-  COSIM_PETSC(VecCreateMPI(comm, in_lines, PETSC_DETERMINE, &lines_));
-
-  std::vector<PetscInt> from(static_cast<std::size_t>(in_planes));
-  for (PetscInt n = 0; n < in_planes; ++n) from[static_cast<std::size_t>(n)] = plane * k_begin_ + n;
-  AO ao;
-  COSIM_PETSC(DMDAGetAO(dm, &ao));
-  COSIM_PETSC(AOApplicationToPetsc(ao, in_planes, from.data()));
-  IS is_from, is_to;
-  COSIM_PETSC(ISCreateGeneral(comm, in_planes, from.data(), PETSC_COPY_VALUES, &is_from));
-  COSIM_PETSC(ISCreateStride(comm, in_planes, plane * k_begin_, 1, &is_to));
-  Vec global;
-  COSIM_PETSC(DMGetGlobalVector(dm, &global));
-  const PetscErrorCode made = VecScatterCreate(global, is_from, planes_, is_to, &to_planes_);
-  COSIM_PETSC(DMRestoreGlobalVector(dm, &global));
-  ISDestroy(&is_from);
-  ISDestroy(&is_to);
-  COSIM_PETSC(made);
-
-  from.resize(static_cast<std::size_t>(in_lines));
-  std::size_t at = 0;
-  for (PetscInt j = j_begin_; j < j_end_; ++j)
-    for (PetscInt k = 0; k < nz_; ++k)
-      for (PetscInt i = 0; i < nx_; ++i) from[at++] = (k * ny_ + j) * nx_ + i;
-  COSIM_PETSC(ISCreateGeneral(comm, in_lines, from.data(), PETSC_COPY_VALUES, &is_from));
-  COSIM_PETSC(ISCreateStride(comm, in_lines, nx_ * nz_ * j_begin_, 1, &is_to));
-  const PetscErrorCode made_lines = VecScatterCreate(planes_, is_from, lines_, is_to, &to_lines_);
-  ISDestroy(&is_from);
-  ISDestroy(&is_to);
-  COSIM_PETSC(made_lines);
 }
 
 void FastPoisson::solve(Vec b, Vec phi) {
-  if (serial_) {
-    // One rank holds everything in natural order: transforms and lines in place in phi.
-    COSIM_PETSC(VecCopy(b, phi));
-    PetscScalar* data = nullptr;
-    COSIM_PETSC(VecGetArray(phi, &data));
-    transform(data, true);
-    solve_lines(data, 0, ny_, nx_, nx_ * ny_);
-    transform(data, false);
-    COSIM_PETSC(VecRestoreArray(phi, &data));
-    return;
-  }
-  COSIM_PETSC(VecScatterBegin(to_planes_, b, planes_, INSERT_VALUES, SCATTER_FORWARD));
-  COSIM_PETSC(VecScatterEnd(to_planes_, b, planes_, INSERT_VALUES, SCATTER_FORWARD));
-  PetscScalar* data = nullptr;
-  COSIM_PETSC(VecGetArray(planes_, &data));
-  transform(data, true);
-  COSIM_PETSC(VecRestoreArray(planes_, &data));
-  COSIM_PETSC(VecScatterBegin(to_lines_, planes_, lines_, INSERT_VALUES, SCATTER_FORWARD));
-  COSIM_PETSC(VecScatterEnd(to_lines_, planes_, lines_, INSERT_VALUES, SCATTER_FORWARD));
-  COSIM_PETSC(VecGetArray(lines_, &data));
-  solve_lines(data, j_begin_, j_end_, nz_ * nx_, nx_);
-  COSIM_PETSC(VecRestoreArray(lines_, &data));
-  COSIM_PETSC(VecScatterBegin(to_lines_, lines_, planes_, INSERT_VALUES, SCATTER_REVERSE));
-  COSIM_PETSC(VecScatterEnd(to_lines_, lines_, planes_, INSERT_VALUES, SCATTER_REVERSE));
-  COSIM_PETSC(VecGetArray(planes_, &data));
-  transform(data, false);
-  COSIM_PETSC(VecRestoreArray(planes_, &data));
-  COSIM_PETSC(VecScatterBegin(to_planes_, planes_, phi, INSERT_VALUES, SCATTER_REVERSE));
-  COSIM_PETSC(VecScatterEnd(to_planes_, planes_, phi, INSERT_VALUES, SCATTER_REVERSE));
+  slabs_.run(
+      b, phi, [this](double* planes, PetscInt k0, PetscInt k1) { transform(planes, k0, k1, true); },
+      [this](double* data, PetscInt j0, PetscInt j1, PetscInt j_stride, PetscInt k_stride) {
+        solve_lines(data, j0, j1, j_stride, k_stride);
+      },
+      [this](double* planes, PetscInt k0, PetscInt k1) { transform(planes, k0, k1, false); });
 }
 
-// In place on whole planes k_begin_ .. k_end_; the forward pass first divides by the cell
+// In place on whole planes k_begin .. k_end; the forward pass first divides by the cell
 // volume (A's rows carry it), the backward pass undoes the transforms' scale.
-void FastPoisson::transform(double* planes, bool forward) {
-  if (k_end_ == k_begin_) return;
+void FastPoisson::transform(double* planes, PetscInt k_begin, PetscInt k_end, bool forward) {
+  if (k_end == k_begin) return;
   const PetscInt plane = nx_ * ny_;
   if (forward) {
-    for (PetscInt k = k_begin_; k < k_end_; ++k) {
-      double* p = planes + (k - k_begin_) * plane;
+    for (PetscInt k = k_begin; k < k_end; ++k) {
+      double* p = planes + (k - k_begin) * plane;
       const double inverse = 1 / volume_[static_cast<std::size_t>(k)];
       for (PetscInt n = 0; n < plane; ++n) p[n] *= inverse;
     }
     fftw_execute_r2r(forward_, planes, planes);
   } else {
     fftw_execute_r2r(backward_, planes, planes);
-    const PetscInt total = plane * (k_end_ - k_begin_);
+    const PetscInt total = plane * (k_end - k_begin);
     for (PetscInt n = 0; n < total; ++n) planes[n] *= scale_;
   }
 }
@@ -247,9 +167,6 @@ void FastPoisson::transform(double* planes, bool forward) {
 void FastPoisson::solve_lines(double* data, PetscInt j_begin, PetscInt j_end, PetscInt j_stride, PetscInt k_stride) {
   const PetscInt n = nz_, nx = nx_;
   const bool closed = std::all_of(outlet_.begin(), outlet_.end(), [](double o) { return o == 0; });
-  double* w = work_.data();
-  double* v = work_.data() + n * nx;  // Sherman-Morrison's second right-hand side
-  double* gamma = v + n * nx;          // and its free parameter, minus row 0's diagonal
   const auto L = [&](PetscInt k) { return lower_[static_cast<std::size_t>(k)]; };
   const auto U = [&](PetscInt k) { return upper_[static_cast<std::size_t>(k)]; };
   const auto O = [&](PetscInt k) { return outlet_[static_cast<std::size_t>(k)]; };
@@ -264,55 +181,9 @@ void FastPoisson::solve_lines(double* data, PetscInt j_begin, PetscInt j_end, Pe
     const auto diagonal = [&](PetscInt k, PetscInt i) { return L(k) + U(k) + O(k) - (sigma_x[i] + sigma_y); };
     if (singular)
       for (PetscInt k = 0; k < n; ++k) singular_[static_cast<std::size_t>(k)] = row[k * k_stride];
-    // The corners of a cyclic line: row 0 reaches k = n - 1 (beta), row n - 1 reaches 0 (alpha).
-    const double alpha = -U(n - 1), beta = -L(0);
-    for (PetscInt i = 0; i < nx; ++i) {
-      w[i] = diagonal(0, i);
-      if (periodic_z_) {
-        gamma[i] = -w[i];
-        w[i] -= gamma[i];
-        v[i] = gamma[i];
-      }
-    }
-    if (periodic_z_)
-      for (PetscInt k = 1; k < n; ++k)
-        for (PetscInt i = 0; i < nx; ++i) v[k * nx + i] = k == n - 1 ? alpha : 0;
-    // Forward elimination, with the periodic line's last diagonal modified.
-    for (PetscInt k = 1; k < n; ++k) {
-      double* f = row + k * k_stride;
-      const double* f_prev = row + (k - 1) * k_stride;
-      const double a = -L(k), c_prev = -U(k - 1);
-      for (PetscInt i = 0; i < nx; ++i) {
-        double d = diagonal(k, i);
-        if (periodic_z_ && k == n - 1) d -= alpha * beta / gamma[i];
-        const double m = a / w[(k - 1) * nx + i];
-        w[k * nx + i] = d - m * c_prev;
-        f[i] -= m * f_prev[i];
-        if (periodic_z_) v[k * nx + i] -= m * v[(k - 1) * nx + i];
-      }
-    }
-    // Back substitution.
-    for (PetscInt i = 0; i < nx; ++i) {
-      row[(n - 1) * k_stride + i] /= w[(n - 1) * nx + i];
-      if (periodic_z_) v[(n - 1) * nx + i] /= w[(n - 1) * nx + i];
-    }
-    for (PetscInt k = n - 2; k >= 0; --k) {
-      double* f = row + k * k_stride;
-      const double* f_next = row + (k + 1) * k_stride;
-      const double c = -U(k);
-      for (PetscInt i = 0; i < nx; ++i) {
-        f[i] = (f[i] - c * f_next[i]) / w[k * nx + i];
-        if (periodic_z_) v[k * nx + i] = (v[k * nx + i] - c * v[(k + 1) * nx + i]) / w[k * nx + i];
-      }
-    }
-    if (periodic_z_)
-      for (PetscInt i = 0; i < nx; ++i) {
-        double* first = row + i;
-        const double* last = row + (n - 1) * k_stride + i;
-        const double fact =
-            (*first + beta * *last / gamma[i]) / (1 + v[i] + beta * v[(n - 1) * nx + i] / gamma[i]);
-        for (PetscInt k = 0; k < n; ++k) row[k * k_stride + i] -= fact * v[k * nx + i];
-      }
+    solve_tridiagonal_lines(
+        row, n, nx, k_stride, [&](PetscInt k) { return -L(k); }, [&](PetscInt k) { return -U(k); }, diagonal,
+        periodic_z_, work_);
     if (singular) solve_singular_line(row, k_stride);
   }
 }

@@ -12,13 +12,14 @@
 // It solves the same equations PressureSolver assembles, to round-off, with no iteration.
 // On several ranks the right-hand side is redistributed into slabs of whole x-y planes
 // for the transforms, then into slabs of whole z lines for the tridiagonal solves, and back
-// (PETSc scatters); the grid's own partition is left as it is.
+// (SlabTranspose).
 #include <petscvec.h>
 
 #include <vector>
 
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/grid.hpp"
+#include "fluid/slab_transpose.hpp"
 
 struct fftw_plan_s;  // FFTW's plan, kept out of this header
 
@@ -41,17 +42,14 @@ class FastPoisson {
   void solve(Vec b, Vec phi);
 
  private:
-  void create_scatters();
   void release();
-  void transform(double* planes, bool forward);
+  void transform(double* planes, PetscInt k_begin, PetscInt k_end, bool forward);
   void solve_lines(double* data, PetscInt j_begin, PetscInt j_end, PetscInt j_stride, PetscInt k_stride);
   void solve_singular_line(double* row, PetscInt k_stride);
 
   const Grid& grid_;
   PetscInt nx_ = 0, ny_ = 0, nz_ = 0;
-  bool serial_ = true;
-  PetscInt k_begin_ = 0, k_end_ = 0;  // this rank's x-y planes
-  PetscInt j_begin_ = 0, j_end_ = 0;  // this rank's z lines: all i, j in range
+  SlabTranspose slabs_;
   std::vector<double> eigen_x_, eigen_y_;  // of the 1D Laplacians, <= 0
   std::vector<double> eigen_x_pinned_;     // eigen_x_ with the zero replaced: the singular row's sweep
   double scale_ = 1;                       // of a forward and backward transform together
@@ -59,8 +57,6 @@ class FastPoisson {
   std::vector<double> lower_, upper_, outlet_;  // z couplings over the cell volume
   bool periodic_z_ = false;
   fftw_plan_s *forward_ = nullptr, *backward_ = nullptr;
-  Vec planes_ = nullptr, lines_ = nullptr;  // several ranks only
-  VecScatter to_planes_ = nullptr, to_lines_ = nullptr;
   std::vector<double> work_;      // the sweep's modified diagonal; for cyclic lines a second solution and gamma
   std::vector<double> singular_;  // the right-hand side of the singular mode's line
 };

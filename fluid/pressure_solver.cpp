@@ -8,39 +8,17 @@
 #include "fluid/cell_faces.hpp"
 #include "fluid/mac_operators.hpp"
 #include "fluid/petsc_check.hpp"
+#include "fluid/solver_choice.hpp"
 
 namespace cosim::fluid {
-
-namespace {
-
-// -pressure_solver, or fft where it applies unless a KSP or PC flag asks for the Krylov solver.
-bool use_transforms(const Grid& grid) {
-  char name[16] = "";
-  PetscBool set = PETSC_FALSE;
-  COSIM_PETSC(PetscOptionsGetString(nullptr, nullptr, "-pressure_solver", name, sizeof name, &set));
-  const std::string chosen = set ? name : "";
-  if (set && chosen != "fft" && chosen != "krylov")
-    throw std::invalid_argument("-pressure_solver: '" + chosen + "' is neither fft nor krylov");
-  if (chosen == "fft" && !FastPoisson::applies(grid))
-    throw std::invalid_argument("-pressure_solver fft: needs uniform x and y axes; this grid stretches one");
-  if (set) return chosen == "fft";
-  char* all = nullptr;
-  COSIM_PETSC(PetscOptionsGetAll(nullptr, &all));
-  const std::string options = all ? all : "";
-  COSIM_PETSC(PetscFree(all));
-  const bool krylov_flags = options.find("-pressure_ksp_") != std::string::npos ||
-                            options.find("-pressure_pc_") != std::string::npos;
-  return !krylov_flags && FastPoisson::applies(grid);
-}
-
-}  // namespace
 
 PressureSolver::PressureSolver(const Grid& grid, const BoundaryConditions& bc) : grid_(grid), bc_(bc) {
   create_or_release(
       [this] {
         update_null_space();
         COSIM_PETSC(DMCreateGlobalVector(grid_.pressure_dm(), &rhs_));
-        transforms_ = use_transforms(grid_);
+        transforms_ = use_transforms(
+            "pressure", FastPoisson::applies(grid_) ? "" : "needs uniform x and y axes; this grid stretches one");
         if (!transforms_) create_krylov();  // a bad -pressure_* option fails here
       },
       [this] { release(); });

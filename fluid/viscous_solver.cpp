@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "fluid/petsc_check.hpp"
+#include "fluid/solver_choice.hpp"
 #include "fluid/viscous_stencil.hpp"
 
 namespace cosim::fluid {
@@ -41,7 +42,17 @@ ViscousSolver::ViscousSolver(const Grid& grid, const BoundaryConditions& bc, con
     : grid_(grid), bc_(bc), weights_(weights) {
   // A misspelt -viscous_* option fails here; a preconditioner the stencil operator cannot
   // serve, at the first solve.
-  create_or_release([this] { create(); }, [this] { release(); });
+  create_or_release(
+      [this] {
+        std::string obstacle;
+        if (!weights_) obstacle = "needs a uniform (Newtonian) viscosity";
+        else if (!FastViscous::applies(grid_)) obstacle = "needs uniform x and y axes; this grid stretches one";
+        if (use_transforms("viscous", obstacle)) fast_ = std::make_unique<FastViscous>(grid_, bc_, *weights_);
+        // The Krylov path too: for solves with imposed faces, and so a bad -viscous_*
+        // option fails here either way.
+        create();
+      },
+      [this] { release(); });
 }
 
 void ViscousSolver::create() {
@@ -88,6 +99,7 @@ void ViscousSolver::create() {
 ViscousSolver::~ViscousSolver() { release(); }
 
 void ViscousSolver::release() {
+  fast_.reset();
   for (int c = 0; c < 3; ++c) {
     KSPDestroy(&ksp_[c]);
     VecDestroy(&operators_[static_cast<std::size_t>(c)].local);
@@ -136,6 +148,10 @@ void ViscousSolver::assemble(int c, double s, const ViscosityField& nu, const Im
 }
 
 int ViscousSolver::solve(int c, double s, const ViscosityField& nu, const ImposedFaces* imposed, Vec rhs, Vec x) {
+  if (fast_ && !imposed) {
+    fast_->solve(c, s, rhs, x);
+    return 0;
+  }
   const int generation = imposed ? imposed->generation() : -1;
   const bool changed = s != assembled_for_[c] || generation != assembled_generation_[c];
   if (weights_ && changed) {

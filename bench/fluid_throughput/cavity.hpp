@@ -21,7 +21,12 @@ struct Cavity {
   int n = 64;     // cells per side; even, so that x = y = 0.5 lies on faces
   int steps = 5;  // the first is the warm-up (assembly, multigrid setup)
   CavityBody body = CavityBody::none;
-  double viscosity() const { return kLidVelocity / kReynolds; }  // the side is 1
+  // nu dt / h^2 where given (> 0), for the viscous solve's cost at a chosen stiffness;
+  // otherwise nu from Re = 100.
+  double viscous_number = 0;
+  double viscosity() const {  // the side is 1
+    return viscous_number > 0 ? viscous_number / (static_cast<double>(n) * n * dt()) : kLidVelocity / kReynolds;
+  }
   double dt() const { return kCourant / (n * kLidVelocity); }
   double end_time() const { return steps * dt(); }
   long cells() const { return static_cast<long>(n) * n * n; }

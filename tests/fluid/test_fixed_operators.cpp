@@ -1,18 +1,23 @@
 // The operators that never change for a Newtonian fluid without imposed faces are solved
-// by shortcuts: the projection by FastPoisson's transforms, the viscous half-step from its
-// stencil weights without a matrix. Each must give what the general path (the assembled
+// by shortcuts: the projection by FastPoisson's transforms, the viscous half-step by
+// FastViscous's (or, on the Krylov path, from its stencil weights without a matrix). Each must give what the general path (the assembled
 // operator, solved by a Krylov method to 1e-10) gives, on every kind of boundary, on
 // stretched axes, periodic axes and a two-dimensional (one periodic cell) grid.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include "fluid/fast_poisson.hpp"
+#include "fluid/fast_viscous.hpp"
 #include "fluid/imposed_faces.hpp"
 #include "fluid/local_velocity.hpp"
 #include "fluid/pressure_solver.hpp"
+#include "fluid/viscous_axis_basis.hpp"
 #include "fluid/viscous_solver.hpp"
 
 namespace cosim::fluid {
@@ -74,6 +79,17 @@ std::vector<Case> cases() {
       {"two-dimensional: one periodic cell along y", {Axis::uniform(16, 0, 2, false), Axis::uniform(1, 0, 0.1, true), Axis::uniform(8, 0, 1, false)},
        {{{in, out}, {wall, wall}, {wall, wall}}}},
   };
+}
+
+// Calls f(case, grid, bc) for each of cases(), its boundary conditions applied.
+template <typename F>
+void for_each_case(F&& f) {
+  for (const Case& k : cases()) {
+    Grid grid(PETSC_COMM_WORLD, k.axes);
+    BoundaryConditions bc(grid);
+    apply(k, grid, bc);
+    f(k, grid, bc);
+  }
 }
 
 // A velocity with divergence everywhere, boundary values as the conditions impose.
@@ -163,7 +179,9 @@ TEST(ViscousSolver, TheStencilOperatorSolvesWhatTheAssembledOneDoes) {
     apply(k, grid, bc);
     ViscosityField viscosity(grid, ViscosityModel::newtonian(nu), 1.0);
     const UniformViscousWeights weights(grid, bc, nu);
-    ViscousSolver stencil(grid, bc, &weights), assembled(grid, bc, nullptr);
+    ViscousSolver assembled(grid, bc, nullptr);
+    auto stencil_solver = with_options("-viscous_solver krylov", [&] { return std::make_unique<ViscousSolver>(grid, bc, &weights); });
+    ViscousSolver& stencil = *stencil_solver;
     ImposedFaces imposed(grid);
     imposed.clear();
     for (int c = 0; c < 3; ++c)
@@ -199,6 +217,181 @@ TEST(ViscousSolver, TheStencilOperatorSolvesWhatTheAssembledOneDoes) {
         for (Vec& v : *vs) VecDestroy(&v);
     }
   }
+}
+
+// The bases FastViscous uses along x and y diagonalise the 1D operators the stencil applies:
+// A B = B diag(lambda) and F B = I, for every component, axis and kind of end of cases().
+TEST(ViscousAxisBasis, DiagonalisesTheStencilsOneDimensionalOperators) {
+  const double nu = 0.05;
+  for_each_case([&](const Case& k, const Grid& grid, const BoundaryConditions& bc) {
+    const UniformViscousWeights weights(grid, bc, nu);
+    for (int c = 0; c < 3; ++c)
+      for (int d = 0; d < 2; ++d) {
+        const ViscousAxisBasis b = viscous_axis_basis(grid, bc, weights, c, d);
+        const std::vector<double> a = viscous_axis_matrix(grid, bc, weights, c, d);
+        const PetscInt n = b.size;
+        double scale = 0, residual = 0, identity = 0;
+        for (double v : a) scale = std::max(scale, std::abs(v));
+        const auto B = [&](PetscInt r, PetscInt q) { return b.backward[static_cast<std::size_t>(q * n + r)]; };
+        const auto F = [&](PetscInt r, PetscInt q) { return b.forward[static_cast<std::size_t>(q * n + r)]; };
+        for (PetscInt r = 0; r < n; ++r)
+          for (PetscInt q = 0; q < n; ++q) {
+            double ab = 0, fb = 0;
+            for (PetscInt l = 0; l < n; ++l) {
+              ab += a[static_cast<std::size_t>(r * n + l)] * B(l, q);
+              fb += F(r, l) * B(l, q);
+            }
+            residual = std::max(residual, std::abs(ab - B(r, q) * b.eigenvalues[static_cast<std::size_t>(q)]));
+            identity = std::max(identity, std::abs(fb - (r == q ? 1 : 0)));
+          }
+        EXPECT_LT(residual, 1e-12 * std::max(scale, 1.0)) << k.name << ", component " << c << ", axis " << d;
+        EXPECT_LT(identity, 1e-11) << k.name << ", component " << c << ", axis " << d;
+        for (double lambda : b.eigenvalues) EXPECT_LE(lambda, 1e-12 * scale) << k.name;
+      }
+  });
+}
+
+// Which ends have a closed-form transform, read off the stencil's weights on an axis of n
+// uniform cells: lambda = -4 nu sin^2(theta_k / 2) / h^2 with the theta_k of the DST-I
+// (normal component between walls), the DCT-II (between outflows, normal or tangential),
+// an odd-length quarter wave (normal, outflow below and wall above) and the real Fourier
+// transform (periodic); a tangential component next to a wall has the quadratic closure's
+// row [-4 4/3], whose basis has no closed form.
+TEST(ViscousAxisBasis, MatchesTheClosedFormsWhereTheyExist) {
+  using K = BoundaryKind;
+  const double nu = 0.05, h = 0.125;
+  const int n = 8;
+  const auto check = [&](bool periodic, K lower, K upper, int c, std::vector<double> theta) {
+    Grid grid(PETSC_COMM_WORLD, {Axis::uniform(n, 0, n * h, periodic), Axis::uniform(4, 0, 1, false),
+                                 Axis::uniform(4, 0, 1, false)});
+    BoundaryConditions bc(grid);
+    if (!periodic) {
+      bc.set(0, Side::lower, boundary(lower));
+      bc.set(0, Side::upper, boundary(upper));
+    }
+    const UniformViscousWeights weights(grid, bc, nu);
+    std::vector<double> got = viscous_axis_basis(grid, bc, weights, c, 0).eigenvalues, want;
+    for (double t : theta) want.push_back(-4 * nu * std::pow(std::sin(t / 2) / h, 2));
+    std::sort(got.begin(), got.end());
+    std::sort(want.begin(), want.end());
+    ASSERT_EQ(got.size(), want.size());
+    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], want[i], 1e-11 * nu / (h * h)) << i;
+  };
+  const double pi = std::numbers::pi;
+  std::vector<double> dst1, dct2_faces, quarter, dct2_cells, fourier;
+  for (int k = 1; k < n; ++k) dst1.push_back(pi * k / n);
+  for (int k = 0; k < n - 1; ++k) dct2_faces.push_back(pi * k / (n - 1));
+  for (int k = 0; k < n - 1; ++k) quarter.push_back(pi * (k + 0.5) / (n - 0.5));
+  for (int k = 0; k < n; ++k) dct2_cells.push_back(pi * k / n);
+  for (int k = 0; k < n; ++k) fourier.push_back(2 * pi * k / n);
+  check(false, K::wall, K::inflow, 0, dst1);
+  check(false, K::outflow, K::outflow, 0, dct2_faces);
+  check(false, K::outflow, K::wall, 0, quarter);
+  check(false, K::outflow, K::outflow, 1, dct2_cells);
+  check(true, K::wall, K::wall, 0, fourier);
+  check(true, K::wall, K::wall, 1, fourier);
+
+  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(n, 0, n * h, false), Axis::uniform(4, 0, 1, false),
+                               Axis::uniform(4, 0, 1, false)});
+  BoundaryConditions bc(grid);
+  const UniformViscousWeights weights(grid, bc, nu);
+  const std::vector<double> a = viscous_axis_matrix(grid, bc, weights, 1, 0);
+  EXPECT_NEAR(a[0] * h * h / nu, -4, 1e-12);
+  EXPECT_NEAR(a[1] * h * h / nu, 4.0 / 3, 1e-12);
+  EXPECT_NEAR(a[n + 0] * h * h / nu, 1, 1e-12);
+}
+
+// The transforms against the Krylov path (GMRES to a tight tolerance) on every grid of
+// cases(), each component, at nu s / h^2 = 0.1 and 4 for h the smallest cell width.
+TEST(FastViscous, SolvesWhatTheKrylovPathSolves) {
+  const double nu = 0.05;
+  for_each_case([&](const Case& k, const Grid& grid, const BoundaryConditions& bc) {
+    ASSERT_TRUE(FastViscous::applies(grid)) << k.name;
+    ViscosityField viscosity(grid, ViscosityModel::newtonian(nu), 1.0);
+    const UniformViscousWeights weights(grid, bc, nu);
+    double h = 1e300;
+    for (int d = 0; d < 3; ++d)
+      if (!grid.axis(d).degenerate())
+        for (int i = 0; i < grid.axis(d).cells(); ++i) h = std::min(h, grid.axis(d).width(i));
+    auto fft = with_options("-viscous_solver fft", [&] { return std::make_unique<ViscousSolver>(grid, bc, &weights); });
+    auto krylov = with_options("-viscous_solver krylov -viscous_ksp_rtol 1e-14 -viscous_ksp_gmres_restart 60", [&] {
+      return std::make_unique<ViscousSolver>(grid, bc, &weights);
+    });
+    for (const double number : {0.1, 4.0}) {
+      const double s = number * h * h / nu;
+      for (int c = 0; c < 3; ++c) {
+        Vec rhs, a, b;
+        DMCreateGlobalVector(grid.velocity_dm(c), &rhs);
+        VecDuplicate(rhs, &a);
+        VecDuplicate(rhs, &b);
+        std::array<Vec, 3> all{};
+        for (int q = 0; q < 3; ++q) DMCreateGlobalVector(grid.velocity_dm(q), &all[q]);
+        fill(grid, all);
+        VecCopy(all[c], rhs);
+        VecSet(a, 0);
+        VecSet(b, 0);
+        const int its = fft->solve(c, s, viscosity, nullptr, rhs, a);
+        const int krylov_its = krylov->solve(c, s, viscosity, nullptr, rhs, b);
+        const double difference = max_abs_difference(a, b), scale = max_abs(b);
+        PetscPrintf(PETSC_COMM_WORLD, "%s, nu s / h^2 %.1f, component %d: max |u_fft - u_krylov| %.2e of %.2e (%d Krylov iterations)\n",
+                    k.name.c_str(), number, c, difference, scale, krylov_its);
+        EXPECT_EQ(its, 0);
+        EXPECT_GT(scale, 1e-3);
+        EXPECT_LT(difference, 1e-10 * scale) << k.name << ", component " << c << ", nu s / h^2 " << number;
+        VecDestroy(&rhs);
+        VecDestroy(&a);
+        VecDestroy(&b);
+        for (Vec& v : all) VecDestroy(&v);
+      }
+    }
+  });
+}
+
+// The choice errs clearly: an unknown value, and fft where it does not apply (a stretched x,
+// a varying viscosity); a -viscous_ksp_* flag chooses the Krylov path.
+TEST(FastViscous, TheOptionErrsClearly) {
+  const auto message = [](const char* options, auto&& make) -> std::string {
+    try {
+      with_options(options, make);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  Grid uniform_grid(PETSC_COMM_WORLD, {Axis::uniform(6, 0, 1, false), Axis::uniform(6, 0, 1, false), Axis::uniform(6, 0, 1, false)});
+  Grid stretched_grid(PETSC_COMM_WORLD, {Axis::stretched(6, 0, 1, 1, false), Axis::uniform(6, 0, 1, false), Axis::uniform(6, 0, 1, false)});
+  BoundaryConditions uniform_bc(uniform_grid), stretched_bc(stretched_grid);
+  const UniformViscousWeights uniform_weights(uniform_grid, uniform_bc, 0.1), stretched_weights(stretched_grid, stretched_bc, 0.1);
+  const auto on = [](const Grid& g, const BoundaryConditions& b, const UniformViscousWeights* w) {
+    return [&g, &b, w] { return std::make_unique<ViscousSolver>(g, b, w); };
+  };
+  const std::string unknown = message("-viscous_solver spectral", on(uniform_grid, uniform_bc, &uniform_weights));
+  EXPECT_NE(unknown.find("-viscous_solver"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("spectral"), std::string::npos) << unknown;
+  const std::string stretched = message("-viscous_solver fft", on(stretched_grid, stretched_bc, &stretched_weights));
+  EXPECT_NE(stretched.find("-viscous_solver fft"), std::string::npos) << stretched;
+  EXPECT_NE(stretched.find("uniform x and y"), std::string::npos) << stretched;
+  const std::string varying = message("-viscous_solver fft", on(uniform_grid, uniform_bc, nullptr));
+  EXPECT_NE(varying.find("-viscous_solver fft"), std::string::npos) << varying;
+  EXPECT_NE(varying.find("viscosity"), std::string::npos) << varying;
+  // Where fft does not apply the default is the Krylov path, and a KSP flag asks for it.
+  EXPECT_EQ(message("", on(stretched_grid, stretched_bc, &stretched_weights)), "");
+  ViscosityField viscosity(uniform_grid, ViscosityModel::newtonian(0.1), 1.0);
+  Vec rhs, x;
+  DMCreateGlobalVector(uniform_grid.velocity_dm(0), &rhs);
+  VecDuplicate(rhs, &x);
+  VecSet(rhs, 1);
+  VecSet(x, 0);
+  const auto iterations = [&](const char* options) {
+    auto solver = with_options(options, on(uniform_grid, uniform_bc, &uniform_weights));
+    VecSet(x, 0);  // not the previous solution, which a Krylov solver would start from
+    return solver->solve(0, 0.01, viscosity, nullptr, rhs, x);
+  };
+  EXPECT_EQ(iterations(""), 0);
+  EXPECT_GT(iterations("-viscous_ksp_type gmres"), 0);
+  EXPECT_GT(iterations("-viscous_solver krylov"), 0);
+  VecDestroy(&rhs);
+  VecDestroy(&x);
 }
 
 }  // namespace
