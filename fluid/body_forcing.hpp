@@ -20,12 +20,31 @@ struct ForcingArrays {
   std::array<PetscScalar***, 3> rhs{};
 };
 
+// How the step's final velocity answers impulses added to its viscous solve's right-hand
+// side after the projection: the viscous solve and the projection once more, on the
+// impulses' field alone, with the boundaries' values zero (the step is linear in them).
+class StepResponse {
+ public:
+  virtual ~StepResponse() = default;
+  // The right-hand side to spread into, zero; open until the next call.
+  virtual const std::array<PetscScalar***, 3>& rhs() = 0;
+  // The change of the velocity that rhs() causes, open for reading until the next call;
+  // rhs() is zero again.
+  virtual const std::array<PetscScalar***, 3>& change() = 0;
+  // Adds the change that rhs() causes to the step's velocity and pressure; rhs() is zero again.
+  virtual void apply() = 0;
+};
+
 class BodyForcing {
  public:
   virtual ~BodyForcing() = default;
   // Adds dt f to `rhs` where the force f acts; `predicted` is the forcing's to use and
   // leave as it likes. `flow` is still at the step's start. Collective.
   virtual void force(const NavierStokes& flow, double dt, const ForcingArrays& arrays) = 0;
+  // After the projection: corrects the slip the viscous solve and the projection left at
+  // the bodies' surfaces in `flow`'s velocity through `response`, and takes the corrections
+  // into the bodies' loads; returns how many responses it asked for. Collective.
+  virtual int correct(const NavierStokes& flow, double dt, StepResponse& response) = 0;
   // After the projection: `flow` holds the step's final velocity. Collective.
   virtual void finish_step(const NavierStokes& flow, double dt) = 0;
 };

@@ -111,7 +111,11 @@ StepReport NavierStokes::step(double dt, const StepBodies& bodies) {
   }
   run_stage(Stage::viscous_solve, report.seconds,
             [&] { report.viscous_iterations = viscous_solve(dt, bodies.imposed); });
-  run_stage(Stage::projection, report.seconds, [&] { report.pressure_iterations = project(dt, bodies.imposed); });
+  run_stage(Stage::projection, report.seconds,
+            [&] { report.pressure_iterations = project(dt, bodies.imposed, u_); });
+  if (bodies.forcing)
+    run_stage(Stage::no_slip, report.seconds,
+              [&] { report.no_slip_corrections = enforce_no_slip(dt, *bodies.forcing); });
   // u^{n+1} becomes the next step's u^n: convection history, clock, ghosts.
   std::swap(convection_, previous_convection_);
   previous_dt_ = dt;

@@ -44,6 +44,7 @@ struct StepReport {
   double max_divergence = 0;  // after the projection, 1/s
   int pressure_iterations = 0;
   std::array<int, 3> viscous_iterations{};
+  int no_slip_corrections = 0;  // of a body forcing, after the projection
   StageSeconds seconds;  // wall time of each stage of the step
 };
 
@@ -64,7 +65,8 @@ class NavierStokes {
   double stable_dt();  // from the CFL target and the controller's limits
   // One step of stable_dt() / of a given size, with the bodies' faces or forcing
   // (BodyTreatment::for_step()). Its stages, in order: the right-hand side, the body
-  // forcing, the viscous solve, the projection, and the forcing's loads at the end.
+  // forcing, the viscous solve, the projection, the forcing's no-slip corrections, and the
+  // forcing's loads at the end.
   StepReport step(const StepBodies& bodies = {});
   StepReport step(double dt, const StepBodies& bodies = {});
   // Steps to exactly t_end, shortening the last two steps rather than leaving a sliver.
@@ -97,7 +99,8 @@ class NavierStokes {
   // The stages of step(), in navier_stokes_stages.cpp.
   void right_hand_side(double dt, const ImposedFaces* imposed, const StepArrays& arrays);
   std::array<int, 3> viscous_solve(double dt, const ImposedFaces* imposed);
-  int project(double dt, const ImposedFaces* imposed);
+  int project(double dt, const ImposedFaces* imposed, const std::array<Vec, 3>& u, bool update = true);
+  int enforce_no_slip(double dt, BodyForcing& forcing);
   void update_pressure();
   double boundary_value(int c, const Index& p, double t) const;
 

@@ -2,6 +2,7 @@
 #include <array>
 
 #include "fluid/convection.hpp"
+#include "fluid/linear_response.hpp"
 #include "fluid/mac_operators.hpp"
 #include "fluid/navier_stokes.hpp"
 #include "fluid/petsc_check.hpp"
@@ -98,9 +99,11 @@ std::array<int, 3> NavierStokes::viscous_solve(double dt, const ImposedFaces* im
 }
 
 // u^{n+1} = u* - dt grad phi with div grad phi = div u* / dt, the imposed faces kept, then
-// the pressure update; returns the pressure solver's iterations.
-int NavierStokes::project(double dt, const ImposedFaces* imposed) {
-  local_.update(u_, bc_, time_ + dt);
+// the pressure update (unless a trial correction of enforce_no_slip's asks not to); returns
+// the pressure solver's iterations. u is u_, or such a correction, whose boundary faces are
+// zero: the divergence reads no ghost.
+int NavierStokes::project(double dt, const ImposedFaces* imposed, const std::array<Vec, 3>& u_star, bool update) {
+  local_.update(u_star, bc_, time_ + dt);
   COSIM_PETSC(PetscLogEventBegin(pressure_solve_event(), 0, 0, 0, 0));
   const int iterations = pressure_solver_.solve(local_, dt, imposed, phi_);
   COSIM_PETSC(PetscLogEventEnd(pressure_solve_event(), 0, 0, 0, 0));
@@ -109,15 +112,35 @@ int NavierStokes::project(double dt, const ImposedFaces* imposed) {
   for (int c = 0; c < 3; ++c) {
     DM dm = grid_.velocity_dm(c);
     PetscScalar*** u = nullptr;
-    COSIM_PETSC(DMDAVecGetArray(dm, u_[c], &u));
+    COSIM_PETSC(DMDAVecGetArray(dm, u_star[c], &u));
     for_each_index(grid_.owned(dm), [&](const Index& p) {
       if (!imposed || !imposed->contains(c, p)) u[p[2]][p[1]][p[0]] -= dt * face_gradient(grid_, bc_, phi, c, p);
     });
-    COSIM_PETSC(DMDAVecRestoreArray(dm, u_[c], &u));
+    COSIM_PETSC(DMDAVecRestoreArray(dm, u_star[c], &u));
   }
   COSIM_PETSC(DMDAVecRestoreArrayRead(pdm, p_local_, &phi));
-  update_pressure();
+  if (update) update_pressure();
   return iterations;
+}
+
+// The forcing acted on the step's explicit estimate; the implicit viscous solve and the
+// projection then moved the fluid at the bodies' surfaces again (at low Reynolds number by
+// several per cent of the body's speed where it moves a good part of a cell per step:
+// fluid/README.md "Time step of a moving body"). The forcing corrects that through the
+// step's response to further impulses, which is linear in them: the step it ends with is
+// the one its corrected forces would have given.
+int NavierStokes::enforce_no_slip(double dt, BodyForcing& forcing) {
+  const double theta = controller_.options().theta;
+  LinearResponse response(grid_, [&](const std::array<Vec, 3>& rhs, const std::array<Vec, 3>& change, bool keep) {
+    for (int c = 0; c < 3; ++c) {
+      COSIM_PETSC(VecZeroEntries(change[c]));
+      viscous_.solve(c, theta * dt, viscosity_, nullptr, rhs[c], change[c]);
+    }
+    project(dt, nullptr, change, keep);
+    if (keep)
+      for (int c = 0; c < 3; ++c) COSIM_PETSC(VecAXPY(u_[c], 1.0, change[c]));
+  });
+  return forcing.correct(*this, dt, response);
 }
 
 // p += rho phi, or in the rotational form (TimeStepOptions::rotational_pressure)

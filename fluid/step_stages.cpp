@@ -14,7 +14,7 @@ const LogEvents& log_events() {
     LogEvents e;
     COSIM_PETSC(PetscClassIdRegister("cosim fluid", &id));
     const std::array<const char*, kStageNames.size()> names{"FluidMomentumRHS", "FluidBodyForcing",
-                                                            "FluidViscousSolve", "FluidProjection"};
+                                                            "FluidViscousSolve", "FluidProjection", "FluidNoSlip"};
     for (std::size_t s = 0; s < names.size(); ++s) COSIM_PETSC(PetscLogEventRegister(names[s], id, &e.stages[s]));
     COSIM_PETSC(PetscLogEventRegister("FluidPressureSolve", id, &e.pressure_solve));
     return e;

@@ -12,8 +12,8 @@
 
 namespace cosim::fluid {
 
-enum class Stage { right_hand_side, body_forcing, viscous_solve, projection };
-inline constexpr std::array kStageNames{"right-hand side", "body forcing", "viscous solve", "projection"};
+enum class Stage { right_hand_side, body_forcing, viscous_solve, projection, no_slip };
+inline constexpr std::array kStageNames{"right-hand side", "body forcing", "viscous solve", "projection", "no-slip"};
 
 class StageSeconds {
  public:
@@ -27,7 +27,7 @@ class StageSeconds {
 };
 
 // The stage's PETSc event (FluidMomentumRHS, FluidBodyForcing, FluidViscousSolve,
-// FluidProjection), registered at the first call.
+// FluidProjection, FluidNoSlip), registered at the first call.
 PetscLogEvent log_event(Stage stage);
 // FluidPressureSolve, within the projection: PETSc logs the pressure's and the viscous KSP
 // solves under one KSPSolve event, and the transforms not at all; bench/fluid_throughput

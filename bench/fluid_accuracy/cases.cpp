@@ -98,13 +98,15 @@ constexpr double kRadius = 0.2, kViscosity = 10, kDrive = 10;
 // Moves body 0 from `start` at constant `velocity`, one fluid step of dt at a time, and
 // after step k calls after(k, where the body is now) until it returns false.
 template <typename After>
-void tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start, const Eigen::Vector3d& velocity,
-         double dt, After after) {
+// Returns the steps' no-slip corrections, summed.
+int tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start, const Eigen::Vector3d& velocity,
+        double dt, After after) {
+  int corrections = 0;
   for (int k = 1;; ++k) {
     const Eigen::Vector3d at = start + k * dt * velocity;
     bodies.move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero());
-    flow.step(dt, bodies.for_step());
-    if (!after(k, at)) return;
+    corrections += flow.step(dt, bodies.for_step()).no_slip_corrections;
+    if (!after(k, at)) return corrections;
   }
 }
 
@@ -284,7 +286,7 @@ Towed towed_sphere(const BodyOptions& method, double cells_per_step, double reyn
   bodies->add({geometry::Sphere(d / 2), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   double last_z = z_start, last_drag = 0;
-  tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
+  const int corrections = tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
     const double drag = bodies->loads(flow)[0].force.z();
     if (at.z() <= z_measure) {  // linear between the two steps around it
       const double w = (last_z - z_measure) / (last_z - at.z());
@@ -296,6 +298,7 @@ Towed towed_sphere(const BodyOptions& method, double cells_per_step, double reyn
     last_drag = drag;
     return true;
   });
+  out.corrections = static_cast<double>(corrections) / out.steps;
   out.seconds = MPI_Wtime() - start_time;
   return out;
 }

@@ -59,6 +59,7 @@ Smoothness sphere_through_a_cell(const fluid::BodyOptions& method, int steps_per
 // number nu dt / h^2 is 6 cells_per_step / Re.
 struct Towed {
   double cells_per_step = 0, viscous_number = 0, drag = 0, seconds = 0;
+  double corrections = 0;  // the immersed boundary's no-slip corrections per step
   int steps = 0;
 };
 Towed towed_sphere(const fluid::BodyOptions& method, double cells_per_step, double reynolds);

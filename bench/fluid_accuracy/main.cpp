@@ -137,8 +137,8 @@ void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, std::vec
                  double reynolds) {
   std::sort(cells_per_step.rbegin(), cells_per_step.rend());
   PetscPrintf(PETSC_COMM_WORLD, "towed sphere, d/h 6, Re %g\n", reynolds);
-  PetscPrintf(PETSC_COMM_WORLD, "%-26s %10s %9s %6s %9s %10s %12s %7s\n", "method", "cells/step", "nu dt/h2", "steps",
-              "wall [s]", "drag", "vs finest", "order");
+  PetscPrintf(PETSC_COMM_WORLD, "%-26s %10s %9s %6s %9s %10s %12s %7s %10s\n", "method", "cells/step", "nu dt/h2",
+              "steps", "wall [s]", "drag", "vs finest", "order", "corr/step");
   for (const auto& method : methods) {
     std::vector<Towed> runs;
     for (double c : cells_per_step) runs.push_back(towed_sphere(method, c, reynolds));
@@ -150,9 +150,9 @@ void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, std::vec
       if (i + 2 < runs.size())
         order = std::log(std::abs((runs[i].drag - runs[i + 1].drag) / (runs[i + 1].drag - runs[i + 2].drag))) /
                 std::log(runs[i].cells_per_step / runs[i + 1].cells_per_step);
-      PetscPrintf(PETSC_COMM_WORLD, "%-26s %10.3f %9.3f %6d %9.1f %10.6f %+11.3f%% %7.2f\n", label(method).c_str(),
-                  r.cells_per_step, r.viscous_number, r.steps, r.seconds, r.drag, 100 * (r.drag - finest) / finest,
-                  order);
+      PetscPrintf(PETSC_COMM_WORLD, "%-26s %10.3f %9.3f %6d %9.1f %10.6f %+11.3f%% %7.2f %10.2f\n",
+                  label(method).c_str(), r.cells_per_step, r.viscous_number, r.steps, r.seconds, r.drag,
+                  100 * (r.drag - finest) / finest, order, r.corrections);
     }
   }
 }
@@ -249,6 +249,10 @@ int main(int argc, char** argv) {
   app.add_option("--retraction", retraction, "IBM marker retraction in cell widths (constant part)");
   app.add_option("--curvature-retraction", curvature, "IBM marker retraction's curvature part (with --retraction)");
   app.add_option("--sweeps", ibm.sweeps, "IBM forcing sweeps per step");
+  app.add_option("--corrections", ibm.corrections, "IBM no-slip corrections per step after the projection, at most")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--no-slip-tolerance", ibm.no_slip_tolerance,
+                 "IBM root mean square slip after the corrections, of the largest velocity at the markers");
   app.add_option("--spacing", ibm.spacing, "IBM marker spacing in cell widths");
   app.add_option("--boxes", s.boxes, "Hasimoto grids (cells per side; d/h = 0.4 n)");
   app.add_option("--diameters", s.diameters, "DFG cells per diameter");

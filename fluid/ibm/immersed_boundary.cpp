@@ -1,7 +1,10 @@
 #include "fluid/ibm/immersed_boundary.hpp"
 
+#include <petscksp.h>
+
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -136,6 +139,9 @@ Retraction calibrated_retraction(DeltaKernel kernel) {
 
 ImmersedBoundary::ImmersedBoundary(const Grid& grid, IbmOptions options) : grid_(grid), options_(resolved(options)) {
   if (options.sweeps < 1) throw std::invalid_argument("immersed boundary: sweeps must be >= 1");
+  if (options.corrections < 0) throw std::invalid_argument("immersed boundary: corrections must be >= 0");
+  if (!(options.no_slip_tolerance > 0 && options.no_slip_tolerance < 1))
+    throw std::invalid_argument("immersed boundary: no_slip_tolerance must be in (0, 1)");
   if (!(options.tolerance > 0)) throw std::invalid_argument("immersed boundary: the tolerance must be > 0");
   if (!(options.spacing > 0)) throw std::invalid_argument("immersed boundary: the marker spacing must be > 0");
   flat_axis(grid);
@@ -290,6 +296,29 @@ void ImmersedBoundary::collect_active_markers() {
   }
 }
 
+namespace {
+
+double largest(const std::vector<double>& a) {
+  double m = 0;
+  for (double v : a) m = std::max(m, std::abs(v));
+  return m;
+}
+
+// residual = target - interpolated at each marker; returns the largest of both, the scale of
+// the forcing's tolerance.
+double slip_against(std::span<const ActiveMarker> active, std::vector<double>& residual) {
+  double scale = 0;
+  for (std::size_t l = 0; l < active.size(); ++l)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double target = active[l].target[static_cast<Eigen::Index>(c)];
+      scale = std::max({scale, std::abs(target), std::abs(residual[3 * l + c])});
+      residual[3 * l + c] = target - residual[3 * l + c];
+    }
+  return scale;
+}
+
+}  // namespace
+
 // The markers' impulses g_l = dt F_l dV_l (velocity times volume, per component) are those
 // whose spread brings the interpolated velocity to the body's: B g = U - I[u~], where
 // B = I S, B_lm = sum_x w_l(x) w_m(x) / dV_x, is symmetric positive semi-definite, so
@@ -311,27 +340,160 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
   }
   const std::size_t n = active_.size();
   const MarkerStencils stencils(grid_, active_);
-  std::vector<double> g(3 * n), residual(3 * n), direction(3 * n), image(3 * n), correction(3 * n, 0.0);
+  std::vector<double> g(3 * n), residual(3 * n);
   for (std::size_t l = 0; l < n; ++l) {
     const Eigen::Vector3d& last = bodies_[active_[l].body].markers[active_[l].marker].force;
     for (std::size_t c = 0; c < 3; ++c) g[3 * l + c] = dt * active_[l].volume * last[static_cast<Eigen::Index>(c)];
   }
   stencils.spread(arrays.predicted, g);
   stencils.interpolate(arrays.predicted, residual);
-  double scale = 0;
-  for (std::size_t l = 0; l < n; ++l)
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double target = active_[l].target[static_cast<Eigen::Index>(c)];
-      scale = std::max({scale, std::abs(target), std::abs(residual[3 * l + c])});
-      residual[3 * l + c] = target - residual[3 * l + c];
-    }
   stencils.clear(arrays.predicted);
+  const double scale = slip_against(active_, residual);
+  const std::vector<double> correction = impulses(stencils, arrays.predicted, residual, scale);
+  for (std::size_t i = 0; i < 3 * n; ++i) g[i] += correction[i];
+  stencils.spread(arrays.rhs, g);
+  for (Entry& e : bodies_) {
+    e.forcing = e.forcing_moment = Eigen::Vector3d::Zero();
+    for (Marker& m : e.markers) m.force = Eigen::Vector3d::Zero();  // inactive markers start afresh
+  }
+  add_impulses(g, dt);
+}
+
+double ImmersedBoundary::slip_in(const NavierStokes& flow, const MarkerStencils& stencils,
+                                 std::vector<double>& residual) const {
+  residual.assign(3 * active_.size(), 0.0);
+  FaceArrays u{};
+  // interpolate() only reads the velocity it is given.
+  for (int c = 0; c < 3; ++c) {
+    const PetscScalar*** read = nullptr;
+    COSIM_PETSC(DMDAVecGetArrayRead(grid_.velocity_dm(c), flow.velocity(c), &read));
+    u[static_cast<std::size_t>(c)] = const_cast<PetscScalar***>(read);
+  }
+  stencils.interpolate(u, residual);
+  for (int c = 0; c < 3; ++c) {
+    const PetscScalar*** read = const_cast<const PetscScalar***>(u[static_cast<std::size_t>(c)]);
+    COSIM_PETSC(DMDAVecRestoreArrayRead(grid_.velocity_dm(c), flow.velocity(c), &read));
+  }
+  return slip_against(active_, residual);
+}
+
+namespace {
+
+// What the correction's Krylov solve reads through PETSc's callbacks.
+struct Correction {
+  const MarkerStencils* stencils;
+  StepResponse* response;
+  std::function<std::vector<double>(std::vector<double>&)> precondition;
+  std::vector<double> image;
+};
+
+std::vector<double> read(Vec v) {
+  PetscInt n = 0;
+  COSIM_PETSC(VecGetLocalSize(v, &n));
+  const PetscScalar* a = nullptr;
+  COSIM_PETSC(VecGetArrayRead(v, &a));
+  std::vector<double> out(a, a + n);
+  COSIM_PETSC(VecRestoreArrayRead(v, &a));
+  return out;
+}
+
+void write(const std::vector<double>& values, Vec v) {
+  PetscScalar* a = nullptr;
+  COSIM_PETSC(VecGetArray(v, &a));
+  std::copy(values.begin(), values.end(), a);
+  COSIM_PETSC(VecRestoreArray(v, &a));
+}
+
+// y = the interpolated change of the step's velocity that impulses x cause.
+PetscErrorCode respond(Mat A, Vec x, Vec y) {
+  PetscFunctionBeginUser;
+  Correction* k = nullptr;
+  PetscCall(MatShellGetContext(A, &k));
+  k->stencils->spread(k->response->rhs(), read(x));
+  k->stencils->interpolate(k->response->change(), k->image);
+  write(k->image, y);
+  PetscFunctionReturn(0);
+}
+
+// y = the impulses that the forcing's own system (no solve, no projection) maps to slip x.
+PetscErrorCode precondition(PC pc, Vec x, Vec y) {
+  PetscFunctionBeginUser;
+  Correction* k = nullptr;
+  PetscCall(PCShellGetContext(pc, &k));
+  std::vector<double> slip = read(x);
+  write(k->precondition(slip), y);
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+// The slip left in the step's final velocity, r = U - I[u], is cancelled by impulses g with
+// I[R S g] = r, R the viscous solve and projection: FGMRES on the markers' values (the same
+// on every rank, each rank running the same iterations), right-preconditioned by the forcing's
+// system I S g = r, which it is where R is the identity.
+int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse& response) {
+  const std::size_t n = active_.size();
+  if (n == 0) return 0;
+  const MarkerStencils stencils(grid_, active_);
+  std::vector<double> residual;
+  const double scale = slip_in(flow, stencils, residual);
+  final_slip_ = largest(residual);
+  if (options_.corrections == 0 || final_slip_ <= options_.no_slip_tolerance * scale) return 0;
+  const double slip = slip_;
+  const int sweeps = sweeps_;
+  Correction k{&stencils, &response, [&](std::vector<double>& r) { return impulses(stencils, response.rhs(), r, scale); },
+               std::vector<double>(3 * n)};
+  const auto size = static_cast<PetscInt>(3 * n);
+  Vec rhs = nullptr, g = nullptr;
+  Mat A = nullptr;
+  KSP ksp = nullptr;
+  COSIM_PETSC(VecCreateSeq(PETSC_COMM_SELF, size, &rhs));
+  COSIM_PETSC(VecDuplicate(rhs, &g));
+  write(residual, rhs);
+  COSIM_PETSC(MatCreateShell(PETSC_COMM_SELF, size, size, size, size, &k, &A));
+  COSIM_PETSC(MatShellSetOperation(A, MATOP_MULT, reinterpret_cast<void (*)(void)>(respond)));
+  COSIM_PETSC(KSPCreate(PETSC_COMM_SELF, &ksp));
+  COSIM_PETSC(KSPSetOptionsPrefix(ksp, "no_slip_"));
+  COSIM_PETSC(KSPSetType(ksp, KSPFGMRES));
+  COSIM_PETSC(KSPGMRESSetRestart(ksp, options_.corrections));
+  COSIM_PETSC(KSPSetOperators(ksp, A, A));
+  PC pc;
+  COSIM_PETSC(KSPGetPC(ksp, &pc));
+  COSIM_PETSC(PCSetType(pc, PCSHELL));
+  COSIM_PETSC(PCShellSetContext(pc, &k));
+  COSIM_PETSC(PCShellSetApply(pc, precondition));
+  // Converged where the root mean square slip is no_slip_tolerance of the velocity scale.
+  const double rms = options_.no_slip_tolerance * scale * std::sqrt(static_cast<double>(size));
+  COSIM_PETSC(KSPSetTolerances(ksp, 1e-12, rms, PETSC_DEFAULT, options_.corrections));
+  COSIM_PETSC(KSPSetFromOptions(ksp));
+  COSIM_PETSC(KSPSolve(ksp, rhs, g));
+  PetscInt iterations = 0;
+  COSIM_PETSC(KSPGetIterationNumber(ksp, &iterations));
+  const std::vector<double> impulses_found = read(g);
+  KSPDestroy(&ksp);
+  MatDestroy(&A);
+  VecDestroy(&g);
+  VecDestroy(&rhs);
+  slip_ = slip;
+  sweeps_ = sweeps;
+  stencils.spread(response.rhs(), impulses_found);
+  response.apply();
+  add_impulses(impulses_found, dt);
+  slip_in(flow, stencils, residual);
+  final_slip_ = largest(residual);
+  return static_cast<int>(iterations) + 1;
+}
+
+std::vector<double> ImmersedBoundary::impulses(const MarkerStencils& stencils, const FaceArrays& scratch,
+                                               std::vector<double>& residual, double scale) {
+  const std::size_t size = residual.size();
+  std::vector<double> direction(size), image(size), correction(size, 0.0);
   // Jacobi-preconditioned: B's diagonal, sum_x w_l(x)^2 / dV_x, evens out how strongly
   // markers of different spacing and volume see themselves.
   const std::vector<double> diagonal = stencils.diagonal();
-  std::vector<double> scaled(3 * n);
+  std::vector<double> scaled(size);
   const auto precondition = [&] {
-    for (std::size_t i = 0; i < 3 * n; ++i) scaled[i] = diagonal[i] > 0 ? residual[i] / diagonal[i] : 0.0;
+    for (std::size_t i = 0; i < size; ++i) scaled[i] = diagonal[i] > 0 ? residual[i] / diagonal[i] : 0.0;
   };
   precondition();
   direction = scaled;
@@ -340,43 +502,35 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
     for (std::size_t i = 0; i < a.size(); ++i) dot[i % 3] += a[i] * b[i];
     return dot;
   };
-  const auto largest = [](const std::vector<double>& a) {
-    double m = 0;
-    for (double v : a) m = std::max(m, std::abs(v));
-    return m;
-  };
   std::array<double, 3> rr = norms(residual, scaled);
   sweeps_ = 0;
   while (sweeps_ < options_.sweeps && largest(residual) > options_.tolerance * scale) {
     ++sweeps_;
-    stencils.spread(arrays.predicted, direction);
-    stencils.interpolate(arrays.predicted, image);
-    stencils.clear(arrays.predicted);
+    stencils.spread(scratch, direction);
+    stencils.interpolate(scratch, image);
+    stencils.clear(scratch);
     const std::array<double, 3> curvature = norms(direction, image);
     std::array<double, 3> step{};
     for (std::size_t c = 0; c < 3; ++c) step[c] = curvature[c] > 0 ? rr[c] / curvature[c] : 0.0;
-    for (std::size_t i = 0; i < 3 * n; ++i) {
+    for (std::size_t i = 0; i < size; ++i) {
       correction[i] += step[i % 3] * direction[i];
       residual[i] -= step[i % 3] * image[i];
     }
     precondition();
     const std::array<double, 3> next = norms(residual, scaled);
-    for (std::size_t i = 0; i < 3 * n; ++i)
+    for (std::size_t i = 0; i < size; ++i)
       direction[i] = scaled[i] + (rr[i % 3] > 0 ? next[i % 3] / rr[i % 3] : 0.0) * direction[i];
     rr = next;
   }
   slip_ = largest(residual);
-  for (std::size_t i = 0; i < 3 * n; ++i) g[i] += correction[i];
-  stencils.spread(arrays.rhs, g);
+  return correction;
+}
 
-  for (Entry& e : bodies_) {
-    e.forcing = e.forcing_moment = Eigen::Vector3d::Zero();
-    for (Marker& m : e.markers) m.force = Eigen::Vector3d::Zero();  // inactive markers start afresh
-  }
-  for (std::size_t l = 0; l < n; ++l) {
+void ImmersedBoundary::add_impulses(const std::vector<double>& g, double dt) {
+  for (std::size_t l = 0; l < active_.size(); ++l) {
     Entry& e = bodies_[active_[l].body];
     const Eigen::Vector3d impulse(g[3 * l], g[3 * l + 1], g[3 * l + 2]);
-    e.markers[active_[l].marker].force = impulse / (dt * active_[l].volume);
+    e.markers[active_[l].marker].force += impulse / (dt * active_[l].volume);
     e.forcing += impulse / dt;
     e.forcing_moment += (active_[l].position - e.body.pose.position()).cross(impulse / dt);
   }

@@ -127,15 +127,17 @@ fluid::BodyOptions read_body_method(const Reader& options) {
   if (!options.has("bodies")) return defaults;
   const Reader r = options.map("bodies");
   const bool ibm = r.choice("method", method_names, 0) == 0;
-  for (const char* key : ibm ? std::array{"subsamples", "surface_offset", "", "", "", ""}
-                             : std::array{"kernel", "sweeps", "tolerance", "retraction", "curvature_retraction",
-                                          "marker_spacing"})
+  for (const char* key : ibm ? std::array{"subsamples", "surface_offset", "", "", "", "", "", ""}
+                             : std::array{"kernel", "sweeps", "corrections", "no_slip_tolerance", "tolerance",
+                                          "retraction", "curvature_retraction", "marker_spacing"})
     if (*key && r.has(key)) r.fail(key, std::string("applies to method ") + (ibm ? "staircase" : "ibm") + " only");
   fluid::BodyOptions out;
   if (ibm) {
     fluid::IbmOptions o;
     o.kernel = static_cast<fluid::DeltaKernel>(r.choice("kernel", kernel_names, static_cast<std::size_t>(o.kernel)));
     o.sweeps = r.integer("sweeps", o.sweeps, Range::at_least(1));
+    o.corrections = r.integer("corrections", o.corrections, Range::at_least(0));
+    o.no_slip_tolerance = r.number("no_slip_tolerance", o.no_slip_tolerance, Range::open(0, 1));
     o.tolerance = r.number("tolerance", o.tolerance, Range::open(0, 1));
     const fluid::Retraction calibrated = fluid::calibrated_retraction(o.kernel);
     o.retraction = fluid::Retraction{r.number("retraction", calibrated.constant, Range::closed(0, 2)),
