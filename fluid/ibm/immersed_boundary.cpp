@@ -404,14 +404,19 @@ void write(const std::vector<double>& values, Vec v) {
   COSIM_PETSC(VecRestoreArray(v, &a));
 }
 
-// y = the interpolated change of the step's velocity that impulses x cause.
+// y = the interpolated change of the step's velocity that impulses x cause. An exception
+// must not cross PETSc's C frames: it becomes PETSc's error, which KSPSolve returns.
 PetscErrorCode respond(Mat A, Vec x, Vec y) {
   PetscFunctionBeginUser;
   Correction* k = nullptr;
   PetscCall(MatShellGetContext(A, &k));
-  k->stencils->spread(k->response->rhs(), read(x));
-  k->stencils->interpolate(k->response->change(), k->image);
-  write(k->image, y);
+  try {
+    k->stencils->spread(k->response->rhs(), read(x));
+    k->stencils->interpolate(k->response->change(), k->image);
+    write(k->image, y);
+  } catch (const std::exception& e) {
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
+  }
   PetscFunctionReturn(0);
 }
 
@@ -420,9 +425,32 @@ PetscErrorCode precondition(PC pc, Vec x, Vec y) {
   PetscFunctionBeginUser;
   Correction* k = nullptr;
   PetscCall(PCShellGetContext(pc, &k));
-  std::vector<double> slip = read(x);
-  write(k->precondition(slip), y);
+  try {
+    std::vector<double> slip = read(x);
+    write(k->precondition(slip), y);
+  } catch (const std::exception& e) {
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
+  }
   PetscFunctionReturn(0);
+}
+
+// The Krylov solve's PETSc objects, destroyed however correct() leaves.
+struct KrylovObjects {
+  Vec rhs = nullptr, g = nullptr;
+  Mat A = nullptr;
+  KSP ksp = nullptr;
+  ~KrylovObjects() {
+    KSPDestroy(&ksp);
+    MatDestroy(&A);
+    VecDestroy(&g);
+    VecDestroy(&rhs);
+  }
+};
+
+double root_mean_square(const std::vector<double>& a) {
+  double sum = 0;
+  for (double v : a) sum += v * v;
+  return a.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(a.size()));
 }
 
 }  // namespace
@@ -438,25 +466,24 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
   std::vector<double> residual;
   const double scale = slip_in(flow, stencils, residual);
   final_slip_ = largest(residual);
-  if (options_.corrections == 0 || final_slip_ <= options_.no_slip_tolerance * scale) return 0;
+  if (options_.corrections == 0 || root_mean_square(residual) <= options_.no_slip_tolerance * scale) return 0;
   const double slip = slip_;
   const int sweeps = sweeps_;
   Correction k{&stencils, &response, [&](std::vector<double>& r) { return impulses(stencils, response.rhs(), r, scale); },
                std::vector<double>(3 * n)};
   const auto size = static_cast<PetscInt>(3 * n);
-  Vec rhs = nullptr, g = nullptr;
-  Mat A = nullptr;
-  KSP ksp = nullptr;
-  COSIM_PETSC(VecCreateSeq(PETSC_COMM_SELF, size, &rhs));
-  COSIM_PETSC(VecDuplicate(rhs, &g));
-  write(residual, rhs);
-  COSIM_PETSC(MatCreateShell(PETSC_COMM_SELF, size, size, size, size, &k, &A));
-  COSIM_PETSC(MatShellSetOperation(A, MATOP_MULT, reinterpret_cast<void (*)(void)>(respond)));
-  COSIM_PETSC(KSPCreate(PETSC_COMM_SELF, &ksp));
+  KrylovObjects o;
+  COSIM_PETSC(VecCreateSeq(PETSC_COMM_SELF, size, &o.rhs));
+  COSIM_PETSC(VecDuplicate(o.rhs, &o.g));
+  write(residual, o.rhs);
+  COSIM_PETSC(MatCreateShell(PETSC_COMM_SELF, size, size, size, size, &k, &o.A));
+  COSIM_PETSC(MatShellSetOperation(o.A, MATOP_MULT, reinterpret_cast<void (*)(void)>(respond)));
+  COSIM_PETSC(KSPCreate(PETSC_COMM_SELF, &o.ksp));
+  KSP ksp = o.ksp;
   COSIM_PETSC(KSPSetOptionsPrefix(ksp, "no_slip_"));
   COSIM_PETSC(KSPSetType(ksp, KSPFGMRES));
   COSIM_PETSC(KSPGMRESSetRestart(ksp, options_.corrections));
-  COSIM_PETSC(KSPSetOperators(ksp, A, A));
+  COSIM_PETSC(KSPSetOperators(ksp, o.A, o.A));
   PC pc;
   COSIM_PETSC(KSPGetPC(ksp, &pc));
   COSIM_PETSC(PCSetType(pc, PCSHELL));
@@ -466,16 +493,13 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
   const double rms = options_.no_slip_tolerance * scale * std::sqrt(static_cast<double>(size));
   COSIM_PETSC(KSPSetTolerances(ksp, 1e-12, rms, PETSC_DEFAULT, options_.corrections));
   COSIM_PETSC(KSPSetFromOptions(ksp));
-  COSIM_PETSC(KSPSolve(ksp, rhs, g));
+  COSIM_PETSC(KSPSolve(ksp, o.rhs, o.g));
   PetscInt iterations = 0;
   COSIM_PETSC(KSPGetIterationNumber(ksp, &iterations));
-  const std::vector<double> impulses_found = read(g);
-  KSPDestroy(&ksp);
-  MatDestroy(&A);
-  VecDestroy(&g);
-  VecDestroy(&rhs);
   slip_ = slip;
   sweeps_ = sweeps;
+  if (iterations == 0) return 0;
+  const std::vector<double> impulses_found = read(o.g);
   stencils.spread(response.rhs(), impulses_found);
   response.apply();
   add_impulses(impulses_found, dt);

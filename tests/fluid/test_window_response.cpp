@@ -37,7 +37,9 @@ TEST(WindowResponse, ASpheresIsIsotropicWithTheStokesDamping) {
     EXPECT_NEAR(a(i, i), a(0, 0), 0.02 * a(0, 0));
     EXPECT_GT(a(i, i), 0.2 * kRho * volume);  // the inertia of fluid the body moves
     for (int j = 0; j < 3; ++j) {
-      if (j != i) EXPECT_LT(std::abs(a(i, j)), 0.01 * a(0, 0));
+      if (j != i) {
+        EXPECT_LT(std::abs(a(i, j)), 0.01 * a(0, 0));
+      }
     }
   }
   EXPECT_EQ(r.kernel.size(), static_cast<std::size_t>(kResponseWindows));
