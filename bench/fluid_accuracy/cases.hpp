@@ -52,17 +52,36 @@ struct Smoothness {
 };
 Smoothness sphere_through_a_cell(const fluid::BodyOptions& method, int steps_per_cell);
 
-// What the time step costs a moving body: a sphere of six cells across (ten Cate's d/h, in
-// a closed box of 6.7 x 6.7 x 10.7 diameters on 40 x 40 x 64 cells, as their tank) towed
-// downwards at constant speed U from rest at Reynolds number U d / nu, its drag once it has
-// travelled 3.3 diameters, with the fluid's step dt = cells_per_step h / U. The viscous
-// number nu dt / h^2 is 6 cells_per_step / Re.
+// What the time step costs a moving body: a sphere of `cells_per_diameter` cells across (ten
+// Cate's d/h is 6) in a closed box of 6.7 x 6.7 x 10.7 diameters (as their tank; 40 x 40 x 64
+// cells at d/h 6) towed downwards at constant speed U from rest at Reynolds number U d / nu,
+// its drag once it has travelled 3.3 diameters, with the fluid's step dt = cells_per_step h / U.
+// The viscous number nu dt / h^2 is cells_per_diameter cells_per_step / Re.
 struct Towed {
   double cells_per_step = 0, viscous_number = 0, drag = 0, seconds = 0;
   double corrections = 0;  // the immersed boundary's no-slip corrections per step
   int steps = 0;
 };
-Towed towed_sphere(const fluid::BodyOptions& method, double cells_per_step, double reynolds);
+Towed towed_sphere(const fluid::BodyOptions& method, int cells_per_diameter, double cells_per_step, double reynolds);
+
+// A sphere driven towards a no-slip wall: a sphere of `cells_per_diameter` cells across in
+// a closed cube 6.7 diameters wide (ten Cate's tank's width), moved at constant speed U
+// straight down from rest, three radii above the floor, at Reynolds number U d / nu, with
+// fluid steps of nu dt / h^2 = `viscous_number`. Its drag over Stokes's 6 pi mu a U as the
+// gap to the floor passes each of `gaps` (in radii, falling), linear between the two steps
+// around it.
+struct WallApproach {
+  double cells_per_step = 0, seconds = 0;
+  double corrections = 0;  // the immersed boundary's no-slip corrections per step
+  int steps = 0;
+  std::vector<double> factors;  // F / (6 pi mu a U) at each gap
+};
+WallApproach sphere_approaching_a_wall(const fluid::BodyOptions& method, int cells_per_diameter,
+                                       double viscous_number, double reynolds, const std::vector<double>& gaps);
+
+// Brenner's (1961) exact Stokes drag of a sphere moving straight towards a plane no-slip
+// wall, over 6 pi mu a U, at a gap of `gap` radii between the sphere and the wall.
+double brenner_wall_factor(double gap);
 
 // ten Cate's tank seen from its settling sphere, without the lids: the sphere held in a
 // square duct 20/3 diameters wide (100 mm for 15 mm), 5 diameters downstream of a uniform

@@ -4,7 +4,8 @@
 // cylinder (C_D), each on several grid levels. Prints one row per run; --csv writes them too
 // (plot.py draws error against wall time). --oscillating runs the oscillating-cylinder
 // study instead (--csv: the force histories, plot_oscillating.py), --towed the time-step
-// study of a moving sphere, --duct the settling sphere's tank seen from the sphere. Serial
+// study of a moving sphere, --wall-approach that of a sphere closing on a wall, --duct the
+// settling sphere's tank seen from the sphere. Serial
 // or under mpirun (PETSC_COMM_WORLD).
 #include <CLI/CLI.hpp>
 #include <petscsys.h>
@@ -133,15 +134,15 @@ void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ib
 
 // The towed sphere at each time step, finest last: the drag's error against the finest
 // step's and its observed order in the step.
-void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, std::vector<double> cells_per_step,
-                 double reynolds) {
+void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, int cells_per_diameter,
+                 std::vector<double> cells_per_step, double reynolds) {
   std::sort(cells_per_step.rbegin(), cells_per_step.rend());
-  PetscPrintf(PETSC_COMM_WORLD, "towed sphere, d/h 6, Re %g\n", reynolds);
+  PetscPrintf(PETSC_COMM_WORLD, "towed sphere, d/h %d, Re %g\n", cells_per_diameter, reynolds);
   PetscPrintf(PETSC_COMM_WORLD, "%-26s %10s %9s %6s %9s %10s %12s %7s %10s\n", "method", "cells/step", "nu dt/h2",
               "steps", "wall [s]", "drag", "vs finest", "order", "corr/step");
   for (const auto& method : methods) {
     std::vector<Towed> runs;
-    for (double c : cells_per_step) runs.push_back(towed_sphere(method, c, reynolds));
+    for (double c : cells_per_step) runs.push_back(towed_sphere(method, cells_per_diameter, c, reynolds));
     const double finest = runs.back().drag;
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const Towed& r = runs[i];
@@ -154,6 +155,73 @@ void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, std::vec
                   label(method).c_str(), r.cells_per_step, r.viscous_number, r.steps, r.seconds, r.drag,
                   100 * (r.drag - finest) / finest, order, r.corrections);
     }
+  }
+}
+
+// The film correction cosim-rigidbody adds below the gap `range` the fluid resolves
+// (rigidbody/solver/README.md "Lubrication"), 6 pi mu a^2 U (1/s - 1/range), over 6 pi mu a U,
+// gaps in radii.
+double film_correction(double gap, double range) { return gap < range ? 1 / gap - 1 / range : 0; }
+
+// Largest relative error against Brenner's of `factors` (at `gaps`) with the film correction
+// from `range` added.
+double largest_film_error(const std::vector<double>& factors, const std::vector<double>& gaps, double range) {
+  double largest = 0;
+  for (std::size_t g = 0; g < gaps.size(); ++g) {
+    const double brenner = brenner_wall_factor(gaps[g]);
+    largest = std::max(largest, std::abs(factors[g] + film_correction(gaps[g], range) - brenner) / brenner);
+  }
+  return largest;
+}
+
+// The largest error against Brenner's over the gaps measured with the film correction from
+// a range of one, a half, 0.4 and a third of a cell added to the grid's drag, and the range
+// (in cells) that comes nearest.
+void print_film_range(const std::vector<double>& factors, const std::vector<double>& gaps, int cells_per_diameter) {
+  const double radius_in_cells = 0.5 * cells_per_diameter;
+  PetscPrintf(PETSC_COMM_WORLD, "with the film correction from a range of");
+  for (double cells : {1.0, 0.5, 0.4, 1.0 / 3.0})
+    PetscPrintf(PETSC_COMM_WORLD, " %.2f cells: %.1f %%,", cells,
+                100 * largest_film_error(factors, gaps, cells / radius_in_cells));
+  double best = 1, best_error = largest_film_error(factors, gaps, 1 / radius_in_cells);
+  for (double cells = 0.05; cells <= 1.5; cells += 0.01)
+    if (const double e = largest_film_error(factors, gaps, cells / radius_in_cells); e < best_error) {
+      best = cells;
+      best_error = e;
+    }
+  PetscPrintf(PETSC_COMM_WORLD, " nearest from %.2f cells: %.1f %% (the largest error against Brenner's)\n", best,
+              100 * best_error);
+}
+
+// The sphere driven towards the floor at each time step, finest last: its drag at each gap
+// over Stokes's, and the error against the finest step's.
+void wall_approach_study(const std::vector<cosim::fluid::BodyOptions>& methods, int cells_per_diameter,
+                         std::vector<double> viscous_numbers, double reynolds, std::vector<double> gaps) {
+  std::sort(viscous_numbers.rbegin(), viscous_numbers.rend());
+  std::sort(gaps.rbegin(), gaps.rend());
+  if (gaps.front() >= 3 || gaps.back() <= 0) throw std::invalid_argument("--gaps: between 0 and 3 radii");
+  PetscPrintf(PETSC_COMM_WORLD, "sphere driven towards a wall, d/h %d, Re %g: F / (6 pi mu a U) at gaps of", cells_per_diameter,
+              reynolds);
+  for (double g : gaps) PetscPrintf(PETSC_COMM_WORLD, " %.2f", g);
+  PetscPrintf(PETSC_COMM_WORLD, " radii (Brenner's:");
+  for (double g : gaps) PetscPrintf(PETSC_COMM_WORLD, " %.4f", brenner_wall_factor(g));
+  PetscPrintf(PETSC_COMM_WORLD, ")\n%-26s %9s %10s %6s %9s %10s  %s\n", "method", "nu dt/h2", "cells/step", "steps",
+              "wall [s]", "corr/step", "F / (6 pi mu a U) (vs finest)");
+  for (const auto& method : methods) {
+    std::vector<WallApproach> runs;
+    for (double v : viscous_numbers)
+      runs.push_back(sphere_approaching_a_wall(method, cells_per_diameter, v, reynolds, gaps));
+    const WallApproach& finest = runs.back();
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const WallApproach& r = runs[i];
+      PetscPrintf(PETSC_COMM_WORLD, "%-26s %9.3f %10.4f %6d %9.1f %10.2f ", label(method).c_str(), viscous_numbers[i],
+                  r.cells_per_step, r.steps, r.seconds, r.corrections);
+      for (std::size_t g = 0; g < gaps.size(); ++g)
+        PetscPrintf(PETSC_COMM_WORLD, " %8.4f (%+6.2f%%)", r.factors[g],
+                    100 * (r.factors[g] - finest.factors[g]) / finest.factors[g]);
+      PetscPrintf(PETSC_COMM_WORLD, "\n");
+    }
+    print_film_range(finest.factors, gaps, cells_per_diameter);
   }
 }
 
@@ -238,10 +306,10 @@ int main(int argc, char** argv) {
   app.add_flag("--oscillating", oscillating, "The oscillating cylinder (D/h 5, 10, 20, two periods) instead");
   std::vector<double> towed;
   app.add_option("--towed", towed,
-                 "The towed sphere (d/h 6) instead, at these time steps in cells the body moves per step");
+                 "The towed sphere (--diameter cells across) instead, at these time steps in cells the body moves per step");
   double reynolds = 1.5;
   app.add_option("--reynolds", reynolds,
-                 "The towed sphere's Reynolds number (ten Cate E1 1.5, E4 32); with --moving-frame Hasimoto's, "
+                 "The towed sphere's and the wall approach's Reynolds number (ten Cate E1 1.5, E4 32); with --moving-frame Hasimoto's, "
                  "estimated from Stokes drag");
   app.add_option("--method", method, "ibm, staircase or both")->check(CLI::IsMember({"ibm", "staircase", "both"}));
   app.add_option("--kernel", kernel, "IBM kernel")->check(CLI::IsMember({"roma3", "peskin4", "bao6"}));
@@ -273,6 +341,14 @@ int main(int argc, char** argv) {
   app.add_option("--moving-frame", moving,
                  "Galilean check instead: Hasimoto's sphere (the first --boxes) at --reynolds, fixed, then towed "
                  "through fluid at rest, at these time steps in cells the body moves per step");
+  std::vector<double> wall;
+  app.add_option("--wall-approach", wall,
+                 "A sphere driven towards a no-slip wall instead (at --reynolds, --diameter cells across), at these "
+                 "time steps as nu dt / h^2");
+  std::vector<double> gaps{2, 1, 0.5, 0.25};
+  app.add_option("--gaps", gaps, "The wall approach's gaps to the wall in radii (below 3, where it starts)");
+  int diameter = 6;
+  app.add_option("--diameter", diameter, "The towed sphere's and the wall approach's cells per diameter")->check(CLI::Range(2, 32));
   std::vector<int> duct;
   app.add_option("--duct", duct,
                  "ten Cate's tank seen from the sphere instead (held in a square duct whose walls slide past, at "
@@ -304,8 +380,10 @@ int main(int argc, char** argv) {
       calibrate(s.boxes, ibm, s);
     else if (!duct.empty())
       duct_study(s.methods, duct, reynolds);
+    else if (!wall.empty())
+      wall_approach_study(s.methods, diameter, wall, reynolds, gaps);
     else if (!towed.empty())
-      towed_study(s.methods, towed, reynolds);
+      towed_study(s.methods, diameter, towed, reynolds);
     else if (oscillating)
       oscillating_study(quick, csv, s.methods);
     else

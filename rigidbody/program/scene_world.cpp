@@ -66,8 +66,17 @@ std::vector<world::BodyDesc> walls(const scene::Scene& scene, const scene::Reade
   return out;
 }
 
+// The gap the fluid resolves, in its widest cells. The immersed boundary (Roma's kernel)
+// follows Brenner's drag of a sphere closing on a wall to a fraction of a cell; the range
+// is where the leading-order correction added to its drag comes nearest Brenner's at every
+// gap, calibrated at d/h 6 and Re 0.1 and 0.5, checked at d/h 8 (fluid_accuracy
+// --wall-approach; fluid/README.md "Sphere closing on a wall"). The staircase's surfaces
+// sit on cell faces, so its film goes below a cell.
+constexpr double kResolvedFilmCellsIbm = 0.4, kResolvedFilmCellsStaircase = 1.0;
+
 // lubrication: auto: the film of the scene's cosim-fluid, its Newtonian viscosity below the
-// gap its grid resolves, the widest of its cells along the axes that have more than one.
+// gap its grid resolves, a fraction of the widest of its cells along the axes that have more
+// than one.
 solver::LubricationOptions lubrication_of_the_fluid(const scene::Scene& scene, const scene::Reader& options) {
   const scene::Participant* fluid = scene.participant("fluid");
   if (fluid == nullptr)
@@ -83,6 +92,9 @@ solver::LubricationOptions lubrication_of_the_fluid(const scene::Scene& scene, c
   l.viscosity = viscosity.number("mu", scene::Range::above(0));
   for (int a = 0; a < 3; ++a)
     if (cells[a] > 1) l.range = std::max(l.range, (scene.domain.max[a] - scene.domain.min[a]) / cells[a]);
+  const bool staircase =
+      fluid_options.has("bodies") && fluid_options.map("bodies").string("method", "ibm") == "staircase";
+  l.range *= staircase ? kResolvedFilmCellsStaircase : kResolvedFilmCellsIbm;
   l.roughness = 1e-3 * l.range;
   return l;
 }

@@ -384,7 +384,8 @@ TEST(Settling, SpheresRestingOnTheFloorStayAtRestWithAVirtualMass) {
 }
 
 // The immersed boundary at d/h 6 under the default soft step, with the lubrication film of
-// the fluid's viscosity below one of its cells between every pair and wall: the fluid sends
+// the fluid's viscosity below the gap its grid resolves (`lubrication: auto`) between every
+// pair and wall: the fluid sends
 // its response tensors (fluid/window_response.hpp) and the layer needs no virtual mass.
 FloorLayer immersed_layer(double z, double end) {
   return {.z = z, .end = end, .solver = "lubrication: auto, ", .fluid = "grid: {cells: [36, 36, 24]}, bodies: {method: ibm}"};

@@ -204,15 +204,23 @@ TEST(SceneWorld, LubricationReachesTheSettings) {
 }
 
 // `lubrication: auto` takes the film from the scene's fluid: its Newtonian viscosity, and
-// its widest cell as the gap it resolves.
+// the gap its method resolves: 0.4 of its widest cell with the immersed boundary
+// (fluid_accuracy --wall-approach), the whole cell with the staircase.
 TEST(SceneWorld, AutoLubricationTakesTheFluidsViscosityAndCell) {
-  const std::string fluid =
-      "  fluid: {dt: 1.0e-3, options: {density: 1000, viscosity: {model: newtonian, mu: 0.058}, grid: {cells: [20, 40, 1]}}}\n";
+  const auto with_bodies = [](const std::string& bodies) {
+    return "  fluid: {dt: 1.0e-3, options: {density: 1000, viscosity: {model: newtonian, mu: 0.058}, grid: {cells: "
+           "[20, 40, 1]}" + bodies + "}}\n";
+  };
   const auto s = settings_of(scene::load_scene_from_string(
-      scene_text("[gravity, contact, hydrodynamics]", ball, "{lubrication: auto}") + fluid));
+      scene_text("[gravity, contact, hydrodynamics]", ball, "{lubrication: auto}") + with_bodies("")));
   EXPECT_EQ(s.lubrication.viscosity, 0.058);
-  EXPECT_DOUBLE_EQ(s.lubrication.range, 10.0 / 20);  // the domain is 10 m wide; the one-cell axis does not count
+  const double cell = 10.0 / 20;  // the domain is 10 m wide; the one-cell axis does not count
+  EXPECT_DOUBLE_EQ(s.lubrication.range, 0.4 * cell);
   EXPECT_DOUBLE_EQ(s.lubrication.roughness, 1e-3 * s.lubrication.range);
+  const auto staircase = settings_of(scene::load_scene_from_string(
+      scene_text("[gravity, contact, hydrodynamics]", ball, "{lubrication: auto}") +
+      with_bodies(", bodies: {method: staircase}")));
+  EXPECT_DOUBLE_EQ(staircase.lubrication.range, cell);
   EXPECT_EQ(error_of("{lubrication: automatic}").key, "participants.rigidbody.options.lubrication");
   const std::string carreau =
       "  fluid: {dt: 1.0e-3, options: {density: 1000, viscosity: {model: carreau, mu_zero: 1, mu_infinity: 0.1, "
