@@ -11,9 +11,12 @@ of the scene with that bead alone), which holds the walls' and the grid's effect
 bead, so that what remains is the correlation itself, and the exponent n = ln(u0/u_i) /
 ln(1 - alpha) the bed's own alpha implies; with --swap, for
 the first two spheres (drafting, kissing and tumbling), the closest approach and the times
-at which the higher one becomes the lower.
+at which the higher one becomes the lower; with --settle, a settling cloud's mean fall speed
+over a time window, how many spheres end on the floor, its fastest sphere and its largest
+fluid force.
 
     bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4 --since 1.0 --lone lone.h5] [--swap]
+        [--settle 0.2 0.6]
 
 Reference: docs/references.md (Aguilar et al.; Richardson-Zaki, m = 2.4 at Re_p 500);
 the wall correction is Richardson & Zaki's (Trans. Inst. Chem. Eng. 32, 1954).
@@ -70,6 +73,9 @@ def main():
     parser.add_argument("--since", type=float, help="average the bed over t >= this (default: the run's second half)")
     parser.add_argument("--lone", help="a run of one bead settling in the same column: its u_i for Richardson-Zaki")
     parser.add_argument("--swap", action="store_true", help="closest approach and order swaps of the first two spheres")
+    parser.add_argument("--settle", type=float, nargs=2, metavar=("T0", "T1"),
+                        help="a settling cloud: its mean fall speed over [T0, T1], how it ends on the floor, its "
+                        "fastest sphere and largest fluid force")
     args = parser.parse_args()
 
     with h5py.File(args.run, "r") as f:
@@ -78,6 +84,8 @@ def main():
         spheres = [b for b in bodies_of(scene, names) if b["shape"]["type"] == "sphere" and not b.get("fixed", False)]
         t = f[f"bodies/{spheres[0]['name']}/time"][:]
         x = np.stack([f[f"bodies/{b['name']}/position"][:] for b in spheres], axis=1)  # rows, bodies, 3
+        v = np.stack([f[f"bodies/{b['name']}/velocity"][:] for b in spheres], axis=1)
+        force = np.stack([f[f"bodies/{b['name']}/force"][:] for b in spheres], axis=1)
     r = np.array([b["shape"]["radius"] for b in spheres])
     lo, hi = np.array(scene["domain"]["min"]), np.array(scene["domain"]["max"])
     walls = scene["participants"]["rigidbody"].get("options", {}).get("walls", [])
@@ -101,6 +109,19 @@ def main():
         k = distance.argmin()
         print(f"{spheres[0]['name']} and {spheres[1]['name']}: closest centre distance {distance[k]:.3f} d at "
               f"t = {t[k]:.3f} s; order swapped at t = {', '.join(swaps) or 'never'} s")
+
+    if args.settle:
+        window = (t >= args.settle[0] - 1e-9) & (t <= args.settle[1] + 1e-9)
+        speed = np.linalg.norm(v, axis=2)
+        on_floor = x[-1, :, 2] - lo[2] - r < 0.1 * r  # the centre within a tenth of a radius of resting on it
+        rho_f = scene["participants"]["fluid"]["options"]["density"]
+        rho_p = np.array([b["material"]["density"] for b in spheres])
+        weight = (rho_p - rho_f) * 4 / 3 * math.pi * r**3 * np.linalg.norm(scene["gravity"])  # in the fluid
+        print(f"falls at {-v[window, :, 2].mean():.4f} m/s on average over {args.settle[0]}-{args.settle[1]} s; at "
+              f"t = {t[-1]:.3f} s {on_floor.sum()} of {len(r)} on the floor, the highest centre at "
+              f"z = {x[-1, :, 2].max() - lo[2]:.4f} m, the fastest sphere at {speed[-1].max():.4f} m/s; the fastest "
+              f"ever {speed.max():.4f} m/s, the largest fluid force {(np.linalg.norm(force, axis=2) / weight).max():.2f} "
+              f"times a sphere's weight in the fluid")
 
     if args.bed:
         area = (hi[0] - lo[0]) * (hi[1] - lo[1])
