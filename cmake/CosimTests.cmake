@@ -7,7 +7,7 @@
 #
 # Every GoogleTest executable under tests/ registers its cases with this (one ctest entry
 # per case, as gtest_discover_tests does). The cases matching a STABILITY pattern are the
-# hard cases of issue 7: they get the ctest label `stability`, so `ctest -L stability`
+# hard cases: they get the ctest label `stability`, so `ctest -L stability`
 # runs them all, across programs. Patterns are GoogleTest filter patterns on the gtest
 # name, without TEST_PREFIX: `Suite.Case`, `Suite.*`, `*/Suite.Case/*` for
 # value-parameterised cases.

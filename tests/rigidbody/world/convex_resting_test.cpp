@@ -1,4 +1,4 @@
-// Convex shapes resting on a face (issue 22, goal 3): a hull box, a cylinder on its cap
+// Convex shapes resting on a face: a hull box, a cylinder on its cap
 // and a capsule lying down stay still on a plane, a fixed box and a box on a plane with the
 // default solver, because the narrow phase gives each the points of its contact area.
 #include <gtest/gtest.h>

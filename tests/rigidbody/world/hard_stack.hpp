@@ -1,4 +1,4 @@
-// The hard resting cases of issue 22 (mass and size ratios, pyramids at friction 5, a
+// The hard resting cases (mass and size ratios, pyramids at friction 5, a
 // 20-box tower), shared by the stability tests and bench/rigidbody_accuracy.
 #pragma once
 

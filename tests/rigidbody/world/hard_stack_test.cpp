@@ -1,4 +1,4 @@
-// Issue 22 goal 1: the hard resting cases stand for 10,000 steps with the default options
+// The hard resting cases stand for 10,000 steps with the default options
 // (the soft step), within 1 % of the smallest body's size.
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ TEST_P(HardStacks, StandAtRestWithTheDefaultOptions) {
   EXPECT_LT(e.penetration, 0.01 * stack.smallest_size) << stack.name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Issue22, HardStacks, ::testing::Range<std::size_t>(0, hard_stacks().size()),
+INSTANTIATE_TEST_SUITE_P(HardCases, HardStacks, ::testing::Range<std::size_t>(0, hard_stacks().size()),
                          [](const auto& info) { return hard_stacks()[info.param].id; });
 
 }  // namespace
