@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "bench/fluid_accuracy/channel.hpp"
@@ -109,6 +110,28 @@ int tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start,
     if (!after(k, at)) return corrections;
   }
 }
+
+// A value sampled after each step as a coordinate falls, read at given levels (falling):
+// linear between the two steps around each.
+class Crossings {
+ public:
+  Crossings(std::vector<double> levels, double start) : levels_(std::move(levels)), last_at_(start) {}
+  // Records the levels passed since the last sample; true while some are left.
+  bool sample(double at, double value) {
+    for (std::size_t i = values_.size(); i < levels_.size() && at <= levels_[i]; ++i) {
+      const double w = (last_at_ - levels_[i]) / (last_at_ - at);
+      values_.push_back((1 - w) * last_value_ + w * value);
+    }
+    last_at_ = at;
+    last_value_ = value;
+    return values_.size() < levels_.size();
+  }
+  const std::vector<double>& values() const { return values_; }
+
+ private:
+  std::vector<double> levels_, values_;
+  double last_at_, last_value_ = 0;
+};
 
 // Steady flow through the periodic array in the unit box on n^3 cells. The incremental
 // scheme's slow splitting mode decays per step, and far more slowly at large viscous
@@ -288,19 +311,12 @@ Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cel
   const Eigen::Vector3d start(0.5 + 0.31 * h, 0.5 + 0.17 * h, z_start);
   bodies->add({geometry::Sphere(d / 2), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
-  double last_z = z_start, last_drag = 0;
+  Crossings drag({z_measure}, z_start);
   const int corrections = tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
-    const double drag = bodies->loads(flow)[0].force.z();
-    if (at.z() <= z_measure) {  // linear between the two steps around it
-      const double w = (last_z - z_measure) / (last_z - at.z());
-      out.drag = (1 - w) * last_drag + w * drag;
-      out.steps = k;
-      return false;
-    }
-    last_z = at.z();
-    last_drag = drag;
-    return true;
+    out.steps = k;
+    return drag.sample(at.z(), bodies->loads(flow)[0].force.z());
   });
+  out.drag = drag.values().front();
   out.corrections = static_cast<double>(corrections) / out.steps;
   out.seconds = MPI_Wtime() - start_time;
   return out;
@@ -326,18 +342,12 @@ WallApproach sphere_approaching_a_wall(const BodyOptions& method, int cells_per_
   bodies->add({geometry::Sphere(a), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   const double stokes = 6 * std::numbers::pi * nu * a * U;
-  double last_gap = start.z() / a - 1, last_factor = 0;
+  Crossings factors(gaps, start.z() / a - 1);
   const int corrections = tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
-    const double gap = at.z() / a - 1, factor = bodies->loads(flow)[0].force.z() / stokes;
-    for (std::size_t i = out.factors.size(); i < gaps.size() && gap <= gaps[i]; ++i) {
-      const double w = (last_gap - gaps[i]) / (last_gap - gap);
-      out.factors.push_back((1 - w) * last_factor + w * factor);
-    }
-    last_gap = gap;
-    last_factor = factor;
     out.steps = k;
-    return out.factors.size() < gaps.size();
+    return factors.sample(at.z() / a - 1, bodies->loads(flow)[0].force.z() / stokes);
   });
+  out.factors = factors.values();
   out.corrections = static_cast<double>(corrections) / out.steps;
   out.seconds = MPI_Wtime() - start_time;
   return out;

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -183,7 +184,7 @@ void print_film_range(const std::vector<double>& factors, const std::vector<doub
   for (double cells : {1.0, 0.5, 0.4, 1.0 / 3.0})
     PetscPrintf(PETSC_COMM_WORLD, " %.2f cells: %.1f %%,", cells,
                 100 * largest_film_error(factors, gaps, cells / radius_in_cells));
-  double best = 1, best_error = largest_film_error(factors, gaps, 1 / radius_in_cells);
+  double best = 0, best_error = std::numeric_limits<double>::infinity();
   for (double cells = 0.05; cells <= 1.5; cells += 0.01)
     if (const double e = largest_film_error(factors, gaps, cells / radius_in_cells); e < best_error) {
       best = cells;
