@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fluid/petsc_check.hpp"
+
 namespace cosim::fluid {
 
 double divergence(const Grid& grid, const LocalVelocity& u, const Index& cell) {
@@ -13,6 +15,14 @@ double divergence(const Grid& grid, const LocalVelocity& u, const Index& cell) {
     sum += (u(d, shifted(cell, d, 1)) - u(d, cell)) / a.width(static_cast<int>(cell[d]));
   }
   return sum;
+}
+
+const PetscScalar*** read_ghosted(DM pdm, Vec global, Vec local) {
+  COSIM_PETSC(DMGlobalToLocalBegin(pdm, global, INSERT_VALUES, local));
+  COSIM_PETSC(DMGlobalToLocalEnd(pdm, global, INSERT_VALUES, local));
+  const PetscScalar*** array = nullptr;
+  COSIM_PETSC(DMDAVecGetArrayRead(pdm, local, &array));
+  return array;
 }
 
 double max_divergence(const Grid& grid, const LocalVelocity& u) {

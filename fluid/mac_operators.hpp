@@ -19,4 +19,8 @@ double max_divergence(const Grid& grid, const LocalVelocity& u);
 double face_gradient(const Grid& grid, const BoundaryConditions& bc, const PetscScalar* const* const* q,
                      int c, const Index& p);
 
+// `global`, a vector of the pressure DM, with its ghosts in `local`, open for reading;
+// closed by DMDAVecRestoreArrayRead(pdm, local, ...).
+const PetscScalar*** read_ghosted(DM pdm, Vec global, Vec local);
+
 }  // namespace cosim::fluid

@@ -2,8 +2,10 @@
 // Incompressible Navier-Stokes on the MAC grid by incremental pressure correction:
 //   (u* - u^n)/dt + AB2[div(u u)] = -grad(p^{n-1/2})/rho + nu/2 lap(u* + u^n) + f
 //   div grad(phi) = div(u*)/dt,  u^{n+1} = u* - dt grad(phi),  p^{n+1/2} = p^{n-1/2} + rho phi
-// (or, in the rotational form of TimeStepOptions::rotational_pressure,
-// p^{n+1/2} = p^{n-1/2} + rho (phi - theta nu div u*); theta = 1/2 unless set otherwise).
+// (or, in the rotational form of PressureUpdate::rotational,
+// p^{n+1/2} = p^{n-1/2} + rho (phi - theta nu div u*); theta = 1/2 unless set otherwise;
+// or, with PressureUpdate::exact, the pressure that makes the implicit step itself
+// divergence-free: project_exactly).
 // Convection explicit (variable-step Adams-Bashforth 2, Euler on the first step),
 // viscosity implicit (Crank-Nicolson): second order in time for the velocity. A
 // generalized-Newtonian viscosity is evaluated from u^n (lagged, so first order in time
@@ -31,6 +33,7 @@
 namespace cosim::fluid {
 
 class StepArrays;
+struct ExactProjection;
 
 struct FluidProperties {
   double density = 1;                                       // kg/m^3
@@ -101,6 +104,13 @@ class NavierStokes {
   std::array<int, 3> viscous_solve(double dt, const ImposedFaces* imposed);
   int project(double dt, const ImposedFaces* imposed, const std::array<Vec, 3>& u, bool update = true);
   int enforce_no_slip(double dt, BodyForcing& forcing);
+  int project_standard(double dt, const ImposedFaces* imposed, const std::array<Vec, 3>& u, bool update);
+  // In exact_projection.cpp, with the callbacks of its Krylov solve.
+  friend struct ExactProjection;
+  int project_exactly(double dt, const std::array<Vec, 3>& u, bool update);
+  void viscous_gradient(double dt, Vec phi, const std::array<Vec, 3>& out);
+  void divergence_of(const std::array<Vec, 3>& u, Vec y);
+  void cahouet_chabard(double dt, Vec r, Vec phi);
   void update_pressure();
   double boundary_value(int c, const Index& p, double t) const;
 

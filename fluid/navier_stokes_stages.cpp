@@ -11,20 +11,6 @@
 #include "fluid/viscous_stencil.hpp"
 
 namespace cosim::fluid {
-namespace {
-
-// `global`, a vector of the pressure DM, with its ghosts in `local`, open for reading (the old
-// pressure for its gradient, phi for the correction); closed by DMDAVecRestoreArrayRead.
-const PetscScalar*** read_ghosted(DM pdm, Vec global, Vec local) {
-  COSIM_PETSC(DMGlobalToLocalBegin(pdm, global, INSERT_VALUES, local));
-  COSIM_PETSC(DMGlobalToLocalEnd(pdm, global, INSERT_VALUES, local));
-  const PetscScalar*** array = nullptr;
-  COSIM_PETSC(DMDAVecGetArrayRead(pdm, local, &array));
-  return array;
-}
-
-}  // namespace
-
 // The viscous solve's right-hand side: u^n, the extrapolated convection (with the cross
 // stresses of a varying viscosity), the explicit Crank-Nicolson half of the viscous term,
 // the body force and the old pressure gradient; boundary faces and the staircase's imposed
@@ -103,6 +89,13 @@ std::array<int, 3> NavierStokes::viscous_solve(double dt, const ImposedFaces* im
 // the pressure solver's iterations. u is u_, or such a correction, whose boundary faces are
 // zero: the divergence reads no ghost.
 int NavierStokes::project(double dt, const ImposedFaces* imposed, const std::array<Vec, 3>& u_star, bool update) {
+  if (!imposed && controller_.options().pressure_update == PressureUpdate::exact)
+    return project_exactly(dt, u_star, update);
+  return project_standard(dt, imposed, u_star, update);
+}
+
+int NavierStokes::project_standard(double dt, const ImposedFaces* imposed, const std::array<Vec, 3>& u_star,
+                                   bool update) {
   local_.update(u_star, bc_, time_ + dt);
   COSIM_PETSC(PetscLogEventBegin(pressure_solve_event(), 0, 0, 0, 0));
   const int iterations = pressure_solver_.solve(local_, dt, imposed, phi_);
@@ -143,12 +136,12 @@ int NavierStokes::enforce_no_slip(double dt, BodyForcing& forcing) {
   return forcing.correct(*this, dt, response);
 }
 
-// p += rho phi, or in the rotational form (TimeStepOptions::rotational_pressure)
+// p += rho phi, or in the rotational form (PressureUpdate::rotational)
 // p += rho (phi - theta nu div u*): the implicit viscous term acted on u*, whose gradient
 // part the projection removes afterwards, and the rotational form puts that part's viscous
 // stress into the pressure. local_ still holds u* here.
 void NavierStokes::update_pressure() {
-  if (!controller_.options().rotational_pressure) {
+  if (controller_.options().pressure_update != PressureUpdate::rotational) {
     COSIM_PETSC(VecAXPY(p_, fluid_.density, phi_));
     return;
   }

@@ -124,23 +124,7 @@ void PressureSolver::update_null_space() {
 }
 
 int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi) {
-  // Each solver is set up when first needed: the staircase's imposed faces on a grid the
-  // transforms could serve take the Krylov solver from their first step.
-  const bool transforms = transforms_ && !imposed;
-  if (transforms && !fast_) {
-    fast_ = std::make_unique<FastPoisson>(grid_, bc_);
-    ++assemblies_;
-  }
-  if (!transforms && !ksp_) create_or_release([this] { create_krylov(); }, [this] { KSPDestroy(&ksp_); });
-  const int generation = imposed ? imposed->generation() : -1;
-  if (imposed != imposed_ || generation != assembled_generation_) {
-    imposed_ = imposed;
-    assembled_generation_ = generation;
-    if (imposed_) connected_.update(grid_, bc_, *imposed_);
-    update_null_space();
-    // Asks the KSP to call compute_operator again before the next solve.
-    if (!transforms) COSIM_PETSC(KSPSetComputeOperators(ksp_, compute_operator, this));
-  }
+  prepare(imposed);
   DM dm = grid_.pressure_dm();
   PetscScalar*** r = nullptr;
   COSIM_PETSC(DMDAVecGetArray(dm, rhs_, &r));
@@ -148,10 +132,48 @@ int PressureSolver::solve(const LocalVelocity& u_star, double dt, const ImposedF
     r[m[2]][m[1]][m[0]] = closed(m) ? 0 : -grid_.cell_volume(m) * divergence(grid_, u_star, m) / dt;
   });
   COSIM_PETSC(DMDAVecRestoreArray(dm, rhs_, &r));
+  return solve_assembled(phi);
+}
+
+int PressureSolver::solve(Vec divergence, Vec phi) {
+  prepare(nullptr);
+  DM dm = grid_.pressure_dm();
+  PetscScalar*** r = nullptr;
+  const PetscScalar*** d = nullptr;
+  COSIM_PETSC(DMDAVecGetArray(dm, rhs_, &r));
+  COSIM_PETSC(DMDAVecGetArrayRead(dm, divergence, &d));
+  for_each_index(grid_.owned(dm),
+                 [&](const Index& m) { r[m[2]][m[1]][m[0]] = -grid_.cell_volume(m) * d[m[2]][m[1]][m[0]]; });
+  COSIM_PETSC(DMDAVecRestoreArrayRead(dm, divergence, &d));
+  COSIM_PETSC(DMDAVecRestoreArray(dm, rhs_, &r));
+  return solve_assembled(phi);
+}
+
+// Each solver is set up when first needed: the staircase's imposed faces on a grid the
+// transforms could serve take the Krylov solver from their first step.
+void PressureSolver::prepare(const ImposedFaces* imposed) {
+  transforms_now_ = transforms_ && !imposed;
+  if (transforms_now_ && !fast_) {
+    fast_ = std::make_unique<FastPoisson>(grid_, bc_);
+    ++assemblies_;
+  }
+  if (!transforms_now_ && !ksp_) create_or_release([this] { create_krylov(); }, [this] { KSPDestroy(&ksp_); });
+  const int generation = imposed ? imposed->generation() : -1;
+  if (imposed != imposed_ || generation != assembled_generation_) {
+    imposed_ = imposed;
+    assembled_generation_ = generation;
+    if (imposed_) connected_.update(grid_, bc_, *imposed_);
+    update_null_space();
+    // Asks the KSP to call compute_operator again before the next solve.
+    if (!transforms_now_) COSIM_PETSC(KSPSetComputeOperators(ksp_, compute_operator, this));
+  }
+}
+
+int PressureSolver::solve_assembled(Vec phi) {
   // Closed or periodic domains: the discrete compatibility condition holds only up to
   // round-off, which the solver must not try to fit.
   if (constants_) COSIM_PETSC(MatNullSpaceRemove(constants_, rhs_));
-  if (!transforms) return solve_or_throw(ksp_, rhs_, phi, "pressure solve");
+  if (!transforms_now_) return solve_or_throw(ksp_, rhs_, phi, "pressure solve");
   fast_->solve(rhs_, phi);
   // The transforms leave phi's constant free: the Krylov solver's zero mean.
   if (constants_) COSIM_PETSC(MatNullSpaceRemove(constants_, phi));

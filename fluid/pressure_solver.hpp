@@ -33,6 +33,11 @@ class PressureSolver {
   // are and phi = 0 in cells they enclose; returns the number of Krylov iterations (0 for
   // the transforms).
   int solve(const LocalVelocity& u_star, double dt, const ImposedFaces* imposed, Vec phi);
+  // Solves div(grad phi) = `divergence` (a global vector of the pressure DM) without
+  // imposed faces; phi as above.
+  int solve(Vec divergence, Vec phi);
+  // The constants the operator cannot see (null where an outflow fixes the level).
+  MatNullSpace null_space() const { return constants_; }
   // An owned cell inside a body or a sliver they close, as of the last solve: phi = 0 there.
   bool closed(const Index& cell) const;
   // How often the operator was set up (transforms planned or matrix assembled): once for
@@ -40,6 +45,8 @@ class PressureSolver {
   int assemblies() const { return assemblies_; }
 
  private:
+  void prepare(const ImposedFaces* imposed);  // the solver and null space for these faces
+  int solve_assembled(Vec phi);               // from rhs_
   void create_krylov();
   void release();
   void update_null_space();
@@ -48,6 +55,7 @@ class PressureSolver {
   const Grid& grid_;
   const BoundaryConditions& bc_;
   bool transforms_ = false;             // where they apply and were not declined
+  bool transforms_now_ = false;         // for the faces of the last prepare()
   std::unique_ptr<FastPoisson> fast_;  // when first needed
   KSP ksp_ = nullptr;                   // when first needed
   Vec rhs_ = nullptr;

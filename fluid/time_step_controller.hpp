@@ -6,6 +6,8 @@
 
 namespace cosim::fluid {
 
+enum class PressureUpdate { standard, rotational, exact };
+
 struct TimeStepOptions {
   double cfl = 0.5;          // target max over cells of dt * sum_d |u_d| / h_d
   double dt_max = 1e-2;      // never larger
@@ -15,20 +17,24 @@ struct TimeStepOptions {
   // Euler (first order), which damps the stiff viscous modes that Crank-Nicolson leaves
   // ringing, for runs to a steady state with large steps.
   double theta = 0.5;
-  // The pressure update after the projection: p += rho phi (false), or its rotational form
-  // p += rho (phi - theta nu div u*) (Timmermans, Minev & Van De Vosse 1996), which reduces
-  // the plain form's splitting error in a pressure layer of width sqrt(nu dt) along no-slip
-  // surfaces (O(dt) to O(dt^3/2) in the usual estimates). With a generalized-Newtonian
-  // viscosity it does so only in part: div(nu grad) and grad(nu div) differ by terms in
-  // grad nu. The error does not shrink with the grid at a fixed step; it matters where nu dt / h^2
-  // nears one (ten Cate's E1: the settling sphere 3-4 % too fast on 40 and 41 cells, 6 % on
-  // 50 and 51).
-  // Not the default yet: a face switching between fluid and solid puts its jump of div u*
-  // into the pressure too, and the settling test's 50 ms windows then stalled once
-  // (tests/fluid/test_settling.cpp). Nothing fixes the pressure's level at an outflow but
-  // the sum of the updates, and there the rotational one adds theta nu div u* of an
-  // impulsive start (3e-6 of the pressure drop in tests/fluid/test_poiseuille.cpp).
-  bool rotational_pressure = false;
+  // How the step finds its pressure (fluid/README.md "Time stepping"):
+  // - standard: p += rho phi after the projection;
+  // - rotational: p += rho (phi - theta nu div u*) (Timmermans, Minev & Van De Vosse 1996),
+  //   which reduces the standard form's splitting error in a pressure layer of width
+  //   sqrt(nu dt) along no-slip surfaces (O(dt) to O(dt^3/2) in the usual estimates); with
+  //   a generalized-Newtonian viscosity only in part (div(nu grad) and grad(nu div) differ
+  //   by terms in grad nu). The error does not shrink with the grid at a fixed step; it
+  //   matters where nu dt / h^2 nears one (ten Cate's E1: the settling sphere 3-4 % too
+  //   fast on 40 and 41 cells, 6 % on 50 and 51). Nothing fixes the pressure's level at an
+  //   outflow but the sum of the updates, and there it adds theta nu div u* of an
+  //   impulsive start (3e-6 of the pressure drop in tests/fluid/test_poiseuille.cpp);
+  // - exact: the implicit viscous step and the pressure solved together (no splitting
+  //   error at all, NavierStokes::project_exactly), at a few viscous solves and pressure
+  //   solves per step; on the staircase's imposed faces the standard update.
+  // Not rotational by default: a face switching between fluid and solid puts its jump of
+  // div u* into the pressure too, and the settling test's 50 ms windows then stalled once
+  // (tests/fluid/test_settling.cpp).
+  PressureUpdate pressure_update = PressureUpdate::standard;
 };
 
 // max over cells of sum_d |u_d| / h_d (the larger face value per axis), all ranks.

@@ -96,18 +96,25 @@ namespace {
 
 constexpr double kRadius = 0.2, kViscosity = 10, kDrive = 10;
 
+// The steps' no-slip corrections and wall seconds per stage, summed.
+struct Towing {
+  int corrections = 0;
+  StageSeconds seconds;
+};
+
 // Moves body 0 from `start` at constant `velocity`, one fluid step of dt at a time, and
 // after step k calls after(k, where the body is now) until it returns false.
 template <typename After>
-// Returns the steps' no-slip corrections, summed.
-int tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start, const Eigen::Vector3d& velocity,
-        double dt, After after) {
-  int corrections = 0;
+Towing tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start, const Eigen::Vector3d& velocity,
+           double dt, After after) {
+  Towing out;
   for (int k = 1;; ++k) {
     const Eigen::Vector3d at = start + k * dt * velocity;
     bodies.move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero());
-    corrections += flow.step(dt, bodies.for_step()).no_slip_corrections;
-    if (!after(k, at)) return corrections;
+    const StepReport report = flow.step(dt, bodies.for_step());
+    out.corrections += report.no_slip_corrections;
+    out.seconds += report.seconds;
+    if (!after(k, at)) return out;
   }
 }
 
@@ -288,7 +295,17 @@ Smoothness sphere_through_a_cell(const BodyOptions& method, int steps_per_cell) 
   return s;
 }
 
-Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cells_per_step, double reynolds) {
+namespace {
+
+// The case's step with `stepping`'s theta and pressure update.
+TimeStepOptions fixed_step(double dt, const TimeStepOptions& stepping) {
+  return {.cfl = 10, .dt_max = dt, .dt_initial = dt, .theta = stepping.theta, .pressure_update = stepping.pressure_update};
+}
+
+}  // namespace
+
+Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cells_per_step, double reynolds,
+                   const TimeStepOptions& stepping) {
   const int n = static_cast<int>(std::lround(6.7 * cells_per_diameter));
   const int height = static_cast<int>(std::lround(10.7 * cells_per_diameter));
   // Started 8/3 diameters below the lid (0.4 m for ten Cate's 15 mm sphere scaled to 0.15).
@@ -304,7 +321,7 @@ Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cel
   const double dt = cells_per_step * h / U;
   out.viscous_number = nu * dt / (h * h);
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(nu), {0, 0, 0}},
-                    {.cfl = 10, .dt_max = dt, .dt_initial = dt});
+                    fixed_step(dt, stepping));
   const auto bodies = make_bodies(grid, method);
   const Eigen::Vector3d velocity(0, 0, -U);
   // Off the cells' centres and faces by a generic amount.
@@ -312,10 +329,11 @@ Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cel
   bodies->add({geometry::Sphere(d / 2), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   Crossings drag({z_measure}, z_start);
-  const int corrections = tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
+  const Towing towing = tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
     out.steps = k;
     return drag.sample(at.z(), bodies->loads(flow)[0].force.z());
   });
+  const int corrections = towing.corrections;
   out.drag = drag.values().front();
   out.corrections = static_cast<double>(corrections) / out.steps;
   out.seconds = MPI_Wtime() - start_time;
@@ -323,8 +341,9 @@ Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cel
 }
 
 WallApproach sphere_approaching_a_wall(const BodyOptions& method, int cells_per_diameter, double viscous_number,
-                                       double reynolds, const std::vector<double>& gaps) {
-  const int n = static_cast<int>(std::lround(6.7 * cells_per_diameter));
+                                       double reynolds, const std::vector<double>& gaps,
+                                       const TimeStepOptions& stepping, const WallApproachBox& box) {
+  const int n = static_cast<int>(std::lround(box.diameters * cells_per_diameter));
   const double h = 1.0 / n, a = 0.5 * cells_per_diameter * h, U = 1, nu = U * 2 * a / reynolds;
   const double start_time = MPI_Wtime();
   const Axis axis = Axis::uniform(n, 0, 1, false);
@@ -334,23 +353,53 @@ WallApproach sphere_approaching_a_wall(const BodyOptions& method, int cells_per_
   const double dt = viscous_number * h * h / nu;
   out.cells_per_step = U * dt / h;
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(nu), {0, 0, 0}},
-                    {.cfl = 10, .dt_max = dt, .dt_initial = dt});
+                    fixed_step(dt, stepping));
   const auto bodies = make_bodies(grid, method);
   const Eigen::Vector3d velocity(0, 0, -U);
   // Off the cells' centres and faces by a generic amount.
-  const Eigen::Vector3d start(0.5 + 0.31 * h, 0.5 + 0.17 * h, 4 * a + 0.42 * h);
+  const Eigen::Vector3d start(0.5 + 0.31 * h, 0.5 + 0.17 * h, (box.start_gap + 1) * a + 0.42 * h);
   bodies->add({geometry::Sphere(a), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   const double stokes = 6 * std::numbers::pi * nu * a * U;
   Crossings factors(gaps, start.z() / a - 1);
-  const int corrections = tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
+  const Towing towing = tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
     out.steps = k;
-    return factors.sample(at.z() / a - 1, bodies->loads(flow)[0].force.z() / stokes);
+    out.sampled_gaps.push_back(at.z() / a - 1);
+    out.sampled_factors.push_back(bodies->loads(flow)[0].force.z() / stokes);
+    return factors.sample(out.sampled_gaps.back(), out.sampled_factors.back());
   });
   out.factors = factors.values();
-  out.corrections = static_cast<double>(corrections) / out.steps;
+  out.corrections = static_cast<double>(towing.corrections) / out.steps;
+  out.stages = towing.seconds;
   out.seconds = MPI_Wtime() - start_time;
   return out;
+}
+
+// Value of the falling samples `y` at `x` (linear between the two around it, held beyond the last).
+namespace {
+
+double between(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  for (std::size_t i = 1; i < x.size(); ++i)
+    if (x[i] <= at) {
+      const double w = (x[i - 1] - at) / (x[i - 1] - x[i]);
+      return (1 - w) * y[i - 1] + w * y[i];
+    }
+  return y.back();
+}
+
+}  // namespace
+
+double error_against(const WallApproach& run, const WallApproach& finest, double gap) {
+  const auto error_at = [&](std::size_t i) {
+    return run.sampled_factors[i] / between(finest.sampled_gaps, finest.sampled_factors, run.sampled_gaps[i]) - 1;
+  };
+  for (std::size_t i = 1; i < run.sampled_gaps.size(); ++i)
+    if (run.sampled_gaps[i] <= gap) {
+      if (run.sampled_gaps[i] < finest.sampled_gaps.back()) return error_at(i - 1);
+      const double w = (run.sampled_gaps[i - 1] - gap) / (run.sampled_gaps[i - 1] - run.sampled_gaps[i]);
+      return (1 - w) * error_at(i - 1) + w * error_at(i);
+    }
+  return error_at(run.sampled_gaps.size() - 1);
 }
 
 double brenner_wall_factor(double gap) {

@@ -15,7 +15,10 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "bench/fluid_accuracy/cases.hpp"
@@ -24,6 +27,19 @@
 using namespace cosim::bench;
 
 namespace {
+
+// The scene key pressure_update's values.
+const std::map<std::string, cosim::fluid::PressureUpdate> kPressureUpdates{
+    {"standard", cosim::fluid::PressureUpdate::standard},
+    {"rotational", cosim::fluid::PressureUpdate::rotational},
+    {"exact", cosim::fluid::PressureUpdate::exact}};
+
+std::string describe(const cosim::fluid::TimeStepOptions& stepping) {
+  std::string update;
+  for (const auto& [name, value] : kPressureUpdates)
+    if (value == stepping.pressure_update) update = name;
+  return "theta " + std::to_string(stepping.theta).substr(0, 4) + ", " + update + " pressure update";
+}
 
 void print_header() {
   PetscPrintf(PETSC_COMM_WORLD, "%-12s %-8s %-26s %7s %6s %9s %10s %10s %9s %9s\n", "case", "level", "method", "cells",
@@ -136,14 +152,15 @@ void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ib
 // The towed sphere at each time step, finest last: the drag's error against the finest
 // step's and its observed order in the step.
 void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, int cells_per_diameter,
-                 std::vector<double> cells_per_step, double reynolds) {
+                 std::vector<double> cells_per_step, double reynolds, const cosim::fluid::TimeStepOptions& stepping) {
   std::sort(cells_per_step.rbegin(), cells_per_step.rend());
-  PetscPrintf(PETSC_COMM_WORLD, "towed sphere, d/h %d, Re %g\n", cells_per_diameter, reynolds);
+  PetscPrintf(PETSC_COMM_WORLD, "towed sphere, d/h %d, Re %g, %s\n", cells_per_diameter, reynolds,
+              describe(stepping).c_str());
   PetscPrintf(PETSC_COMM_WORLD, "%-26s %10s %9s %6s %9s %10s %12s %7s %10s\n", "method", "cells/step", "nu dt/h2",
               "steps", "wall [s]", "drag", "vs finest", "order", "corr/step");
   for (const auto& method : methods) {
     std::vector<Towed> runs;
-    for (double c : cells_per_step) runs.push_back(towed_sphere(method, cells_per_diameter, c, reynolds));
+    for (double c : cells_per_step) runs.push_back(towed_sphere(method, cells_per_diameter, c, reynolds, stepping));
     const double finest = runs.back().drag;
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const Towed& r = runs[i];
@@ -195,14 +212,15 @@ void print_film_range(const std::vector<double>& factors, const std::vector<doub
 }
 
 // The sphere driven towards the floor at each time step, finest last: its drag at each gap
-// over Stokes's, and the error against the finest step's.
+// over Stokes's, as the finest step's times one plus the error against it (error_against).
 void wall_approach_study(const std::vector<cosim::fluid::BodyOptions>& methods, int cells_per_diameter,
-                         std::vector<double> viscous_numbers, double reynolds, std::vector<double> gaps) {
+                         std::vector<double> viscous_numbers, double reynolds, std::vector<double> gaps,
+                         const cosim::fluid::TimeStepOptions& stepping) {
   std::sort(viscous_numbers.rbegin(), viscous_numbers.rend());
   std::sort(gaps.rbegin(), gaps.rend());
   if (gaps.front() >= 3 || gaps.back() <= 0) throw std::invalid_argument("--gaps: between 0 and 3 radii");
-  PetscPrintf(PETSC_COMM_WORLD, "sphere driven towards a wall, d/h %d, Re %g: F / (6 pi mu a U) at gaps of", cells_per_diameter,
-              reynolds);
+  PetscPrintf(PETSC_COMM_WORLD, "sphere driven towards a wall, d/h %d, Re %g, %s: F / (6 pi mu a U) at gaps of",
+              cells_per_diameter, reynolds, describe(stepping).c_str());
   for (double g : gaps) PetscPrintf(PETSC_COMM_WORLD, " %.2f", g);
   PetscPrintf(PETSC_COMM_WORLD, " radii (Brenner's:");
   for (double g : gaps) PetscPrintf(PETSC_COMM_WORLD, " %.4f", brenner_wall_factor(g));
@@ -211,18 +229,27 @@ void wall_approach_study(const std::vector<cosim::fluid::BodyOptions>& methods, 
   for (const auto& method : methods) {
     std::vector<WallApproach> runs;
     for (double v : viscous_numbers)
-      runs.push_back(sphere_approaching_a_wall(method, cells_per_diameter, v, reynolds, gaps));
+      runs.push_back(sphere_approaching_a_wall(method, cells_per_diameter, v, reynolds, gaps, stepping));
     const WallApproach& finest = runs.back();
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const WallApproach& r = runs[i];
       PetscPrintf(PETSC_COMM_WORLD, "%-26s %9.3f %10.4f %6d %9.1f %10.2f ", label(method).c_str(), viscous_numbers[i],
                   r.cells_per_step, r.steps, r.seconds, r.corrections);
-      for (std::size_t g = 0; g < gaps.size(); ++g)
-        PetscPrintf(PETSC_COMM_WORLD, " %8.4f (%+6.2f%%)", r.factors[g],
-                    100 * (r.factors[g] - finest.factors[g]) / finest.factors[g]);
+      for (std::size_t g = 0; g < gaps.size(); ++g) {
+        const double error = &r == &finest ? 0.0 : error_against(r, finest, gaps[g]);
+        PetscPrintf(PETSC_COMM_WORLD, " %8.4f (%+6.2f%%)", finest.factors[g] * (1 + error), 100 * error);
+      }
       PetscPrintf(PETSC_COMM_WORLD, "\n");
     }
     print_film_range(finest.factors, gaps, cells_per_diameter);
+    PetscPrintf(PETSC_COMM_WORLD, "wall ms per step, by stage:");
+    for (const char* stage : cosim::fluid::kStageNames) PetscPrintf(PETSC_COMM_WORLD, " %s,", stage);
+    PetscPrintf(PETSC_COMM_WORLD, " at each nu dt / h^2\n");
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      PetscPrintf(PETSC_COMM_WORLD, "  %6.3f:", viscous_numbers[i]);
+      for (double seconds : runs[i].stages.all()) PetscPrintf(PETSC_COMM_WORLD, " %8.2f", 1e3 * seconds / runs[i].steps);
+      PetscPrintf(PETSC_COMM_WORLD, "\n");
+    }
   }
 }
 
@@ -331,7 +358,14 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--viscous-number", s.stepping.viscous_number, "Hasimoto's step as nu dt / h^2")
       ->check(CLI::PositiveNumber);
-  app.add_option("--theta", s.stepping.theta, "Hasimoto's implicit weight of the viscous term")
+  std::optional<double> theta;
+  cosim::fluid::TimeStepOptions moving_steps;  // the towed sphere's and the wall approach's
+  app.add_option("--pressure-update", moving_steps.pressure_update,
+                 "The towed sphere's and the wall approach's pressure update (the scene key pressure_update)")
+      ->transform(CLI::CheckedTransformer(kPressureUpdates));
+  app.add_option("--theta", theta,
+                 "The implicit weight of the viscous term (Hasimoto's default 1; the towed sphere's and the wall "
+                 "approach's the fluid's default, 0.5)")
       ->check(CLI::Range(0.5, 1.0));
   app.add_flag("--hasimoto", only_hasimoto, "Only the Hasimoto sphere");
   app.add_flag("--dfg", only_dfg, "Only the DFG cylinder");
@@ -355,6 +389,7 @@ int main(int argc, char** argv) {
                  "ten Cate's tank seen from the sphere instead (held in a square duct whose walls slide past, at "
                  "--reynolds), at these cells per diameter (multiples of 3)");
   CLI11_PARSE(app, argc, argv);
+  if (theta) s.stepping.theta = moving_steps.theta = *theta;
   if (retraction >= 0) ibm.retraction = cosim::fluid::Retraction{retraction, curvature};
   ibm.kernel = kernel == "roma3" ? cosim::fluid::DeltaKernel::roma3
                : kernel == "peskin4" ? cosim::fluid::DeltaKernel::peskin4 : cosim::fluid::DeltaKernel::bao6;
@@ -382,9 +417,9 @@ int main(int argc, char** argv) {
     else if (!duct.empty())
       duct_study(s.methods, duct, reynolds);
     else if (!wall.empty())
-      wall_approach_study(s.methods, diameter, wall, reynolds, gaps);
+      wall_approach_study(s.methods, diameter, wall, reynolds, gaps, moving_steps);
     else if (!towed.empty())
-      towed_study(s.methods, diameter, towed, reynolds);
+      towed_study(s.methods, diameter, towed, reynolds, moving_steps);
     else if (oscillating)
       oscillating_study(quick, csv, s.methods);
     else

@@ -19,7 +19,7 @@ using scene::Reader;
 constexpr std::array face_names{"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
 constexpr std::array boundary_names{"wall", "inflow", "outflow", "periodic"};
 constexpr std::array profile_names{"uniform", "parabolic"};
-constexpr std::array pressure_update_names{"standard", "rotational"};
+constexpr std::array pressure_update_names{"standard", "rotational", "exact"};
 constexpr std::array viscosity_names{"newtonian", "power-law", "carreau"};
 constexpr std::array method_names{"ibm", "staircase"};
 constexpr std::array kernel_names{"roma3", "peskin4", "bao6"};
@@ -205,8 +205,11 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   s.steps.cfl = options.number("cfl", s.steps.cfl, Range::above(0));
   s.steps.dt_initial = options.number("dt_initial", std::min(s.steps.dt_initial, p.dt), Range::left_open(0, p.dt));
   s.steps.theta = options.number("theta", s.steps.theta, Range::closed(0.5, 1));
-  s.steps.rotational_pressure = options.choice("pressure_update", pressure_update_names, 0) == 1;
+  s.steps.pressure_update = static_cast<fluid::PressureUpdate>(options.choice("pressure_update", pressure_update_names, 0));
   s.body_method = read_body_method(options);
+  if (s.steps.pressure_update == fluid::PressureUpdate::exact && std::holds_alternative<fluid::FbmOptions>(s.body_method))
+    options.fail("pressure_update", "exact needs bodies: {method: ibm}: the staircase's imposed faces take the "
+                                    "standard projection");
   try {
     s.petsc = parse_petsc_flags(options.string("petsc", ""));
   } catch (const std::invalid_argument& e) {

@@ -3,7 +3,7 @@
 // next to a no-slip surface that is an error of order sqrt(nu dt) which does not shrink
 // with the grid, and at nu dt / h^2 near one (ten Cate's E1) it made a settling sphere fall
 // several per cent too fast. The rotational form, p += rho (phi - theta nu div u*)
-// (TimeStepOptions::rotational_pressure), keeps the force on a moving body nearly
+// (PressureUpdate::rotational), keeps the force on a moving body nearly
 // independent of the step.
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ double drag_after_start(double dt, bool rotational) {
   Grid grid(PETSC_COMM_WORLD, {Axis::uniform(24, 0, 1.6, false), Axis::uniform(15, 0, 1, false),
                                Axis::uniform(15, 0, 1, false)});
   BoundaryConditions bc(grid);
-  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(kNu), {0, 0, 0}}, {.rotational_pressure = rotational});
+  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(kNu), {0, 0, 0}}, {.pressure_update = rotational ? PressureUpdate::rotational : PressureUpdate::standard});
   FictitiousBoundary fbm(grid, {.subsamples = 4});
   const Eigen::Vector3d velocity(kSpeed, 0, 0);
   const auto pose = [&](double t) {

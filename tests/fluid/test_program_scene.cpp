@@ -53,8 +53,10 @@ TEST(FluidScene, ReadsGridFluidBoundariesAndBodies) {
   ASSERT_TRUE(std::holds_alternative<fluid::FbmOptions>(s.body_method));
   EXPECT_EQ(std::get<fluid::FbmOptions>(s.body_method).subsamples, 2);
   EXPECT_EQ(std::get<fluid::FbmOptions>(s.body_method).offset, fluid::kCalibratedSurfaceOffset);
-  EXPECT_TRUE(s.steps.rotational_pressure);
-  EXPECT_FALSE(setup_of(oscillating_cylinder_scene()).steps.rotational_pressure);
+  EXPECT_EQ(s.steps.pressure_update, fluid::PressureUpdate::rotational);
+  EXPECT_EQ(setup_of(oscillating_cylinder_scene()).steps.pressure_update, fluid::PressureUpdate::standard);
+  EXPECT_EQ(setup_of(oscillating_cylinder_scene("      pressure_update: exact\n")).steps.pressure_update,
+            fluid::PressureUpdate::exact);
   const PetscFlags flags{{"-pressure_pc_type", "hypre"}, {"-pressure_ksp_rtol", "1e-9"}};
   EXPECT_EQ(s.petsc, flags);
   ASSERT_EQ(s.bodies.size(), 1u);
@@ -164,6 +166,8 @@ TEST(FluidScene, ErrorsNameFileLineKeyAndValue) {
       {"density: 1000", "density: 1000\n      body_force: [1, 0]", "body_force", "[1, 0]"},
       {"density: 1000", "density: 1000\n      petsc: hypre", "petsc", "hypre"},
       {"density: 1000", "density: 1000\n      pressure_update: incremental", "pressure_update", "incremental"},
+      {"density: 1000", "density: 1000\n      pressure_update: exact\n      bodies: {method: staircase}", "pressure_update",
+       "exact"},
       {"density: 1000", "density: 1000\n      bodies: {method: cutcell}", "bodies.method", "cutcell"},
       {"density: 1000", "density: 1000\n      bodies: {kernel: gauss}", "bodies.kernel", "gauss"},
       {"density: 1000", "density: 1000\n      bodies: {sweeps: 0}", "bodies.sweeps", "0"},
