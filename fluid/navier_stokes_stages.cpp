@@ -84,16 +84,19 @@ std::array<int, 3> NavierStokes::viscous_solve(double dt, const ImposedFaces* im
   return iterations;
 }
 
-// u^{n+1} = u* - dt grad phi with div grad phi = div u* / dt, the imposed faces kept, then
-// the pressure update (unless a trial correction of enforce_no_slip's asks not to); returns
-// the pressure solver's iterations. u is u_, or such a correction, whose boundary faces are
-// zero: the divergence reads no ghost.
+// The projection of u* (u_, or a trial correction of enforce_no_slip's, whose boundary
+// faces are zero), with the pressure update unless `update` is false: exactly
+// (project_exactly) where the options ask for it and no face is imposed, else the
+// standard projection. Returns the solver's iterations.
 int NavierStokes::project(double dt, const ImposedFaces* imposed, const std::array<Vec, 3>& u_star, bool update) {
   if (!imposed && controller_.options().pressure_update == PressureUpdate::exact)
     return project_exactly(dt, u_star, update);
   return project_standard(dt, imposed, u_star, update);
 }
 
+// u^{n+1} = u* - dt grad phi with div grad phi = div u* / dt, the imposed faces kept, then
+// the pressure update; returns the pressure solver's iterations. The divergence reads no
+// ghost.
 int NavierStokes::project_standard(double dt, const ImposedFaces* imposed, const std::array<Vec, 3>& u_star,
                                    bool update) {
   local_.update(u_star, bc_, time_ + dt);
