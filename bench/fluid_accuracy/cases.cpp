@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <utility>
 #include <vector>
 
 #include "bench/fluid_accuracy/channel.hpp"
@@ -118,27 +117,16 @@ Towing tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& sta
   }
 }
 
-// A value sampled after each step as a coordinate falls, read at given levels (falling):
-// linear between the two steps around each.
-class Crossings {
- public:
-  Crossings(std::vector<double> levels, double start) : levels_(std::move(levels)), last_at_(start) {}
-  // Records the levels passed since the last sample; true while some are left.
-  bool sample(double at, double value) {
-    for (std::size_t i = values_.size(); i < levels_.size() && at <= levels_[i]; ++i) {
-      const double w = (last_at_ - levels_[i]) / (last_at_ - at);
-      values_.push_back((1 - w) * last_value_ + w * value);
+// The value of samples `y`, taken where a coordinate fell through `x`, at `at`: linear
+// between the two samples around it, the last one's beyond them.
+double between(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  for (std::size_t i = 1; i < x.size(); ++i)
+    if (x[i] <= at) {
+      const double w = (x[i - 1] - at) / (x[i - 1] - x[i]);
+      return (1 - w) * y[i - 1] + w * y[i];
     }
-    last_at_ = at;
-    last_value_ = value;
-    return values_.size() < levels_.size();
-  }
-  const std::vector<double>& values() const { return values_; }
-
- private:
-  std::vector<double> levels_, values_;
-  double last_at_, last_value_ = 0;
-};
+  return y.back();
+}
 
 // Steady flow through the periodic array in the unit box on n^3 cells. The incremental
 // scheme's slow splitting mode decays per step, and far more slowly at large viscous
@@ -328,14 +316,15 @@ Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cel
   const Eigen::Vector3d start(0.5 + 0.31 * h, 0.5 + 0.17 * h, z_start);
   bodies->add({geometry::Sphere(d / 2), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
-  Crossings drag({z_measure}, z_start);
+  std::vector<double> heights, drags;
   const Towing towing = tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
     out.steps = k;
-    return drag.sample(at.z(), bodies->loads(flow)[0].force.z());
+    heights.push_back(at.z());
+    drags.push_back(bodies->loads(flow)[0].force.z());
+    return at.z() > z_measure;
   });
-  const int corrections = towing.corrections;
-  out.drag = drag.values().front();
-  out.corrections = static_cast<double>(corrections) / out.steps;
+  out.drag = between(heights, drags, z_measure);
+  out.corrections = static_cast<double>(towing.corrections) / out.steps;
   out.seconds = MPI_Wtime() - start_time;
   return out;
 }
@@ -361,33 +350,18 @@ WallApproach sphere_approaching_a_wall(const BodyOptions& method, int cells_per_
   bodies->add({geometry::Sphere(a), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   const double stokes = 6 * std::numbers::pi * nu * a * U;
-  Crossings factors(gaps, start.z() / a - 1);
   const Towing towing = tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
     out.steps = k;
     out.sampled_gaps.push_back(at.z() / a - 1);
     out.sampled_factors.push_back(bodies->loads(flow)[0].force.z() / stokes);
-    return factors.sample(out.sampled_gaps.back(), out.sampled_factors.back());
+    return out.sampled_gaps.back() > gaps.back();
   });
-  out.factors = factors.values();
+  for (double gap : gaps) out.factors.push_back(between(out.sampled_gaps, out.sampled_factors, gap));
   out.corrections = static_cast<double>(towing.corrections) / out.steps;
   out.stages = towing.seconds;
   out.seconds = MPI_Wtime() - start_time;
   return out;
 }
-
-// Value of the falling samples `y` at `x` (linear between the two around it, held beyond the last).
-namespace {
-
-double between(const std::vector<double>& x, const std::vector<double>& y, double at) {
-  for (std::size_t i = 1; i < x.size(); ++i)
-    if (x[i] <= at) {
-      const double w = (x[i - 1] - at) / (x[i - 1] - x[i]);
-      return (1 - w) * y[i - 1] + w * y[i];
-    }
-  return y.back();
-}
-
-}  // namespace
 
 double error_against(const WallApproach& run, const WallApproach& finest, double gap) {
   const auto error_at = [&](std::size_t i) {
