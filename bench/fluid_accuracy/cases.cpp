@@ -128,6 +128,21 @@ double between(const std::vector<double>& x, const std::vector<double>& y, doubl
   return y.back();
 }
 
+// The mean of samples `y` over the stretch of `x` from `a` to `b`, `y` linear between the
+// samples (whichever way `x` runs).
+double mean_between(const std::vector<double>& x, const std::vector<double>& y, double a, double b) {
+  const double lo = std::min(a, b), hi = std::max(a, b);
+  double integral = 0;
+  for (std::size_t i = 1; i < x.size(); ++i) {
+    const double x0 = std::min(x[i - 1], x[i]), x1 = std::max(x[i - 1], x[i]);
+    const double from = std::max(x0, lo), to = std::min(x1, hi);
+    if (to <= from) continue;
+    const auto at = [&](double v) { return y[i - 1] + (y[i] - y[i - 1]) * (v - x[i - 1]) / (x[i] - x[i - 1]); };
+    integral += 0.5 * (at(from) + at(to)) * (to - from);
+  }
+  return integral / (hi - lo);
+}
+
 // Steady flow through the periodic array in the unit box on n^3 cells. The incremental
 // scheme's slow splitting mode decays per step, and far more slowly at large viscous
 // numbers (fluid/README.md, "Accuracy study"), hence steps of nu dt / h^2 = 1 by default;
@@ -323,7 +338,7 @@ Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cel
     drags.push_back(bodies->loads(flow)[0].force.z());
     return at.z() > z_measure;
   });
-  out.drag = between(heights, drags, z_measure);
+  out.drag = mean_between(heights, drags, z_measure + h, z_measure);
   out.corrections = static_cast<double>(towing.corrections) / out.steps;
   out.seconds = MPI_Wtime() - start_time;
   return out;

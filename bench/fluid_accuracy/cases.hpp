@@ -55,7 +55,9 @@ Smoothness sphere_through_a_cell(const fluid::BodyOptions& method, int steps_per
 // What the time step costs a moving body: a sphere of `cells_per_diameter` cells across (ten
 // Cate's d/h is 6) in a closed box of 6.7 x 6.7 x 10.7 diameters (as their tank; 40 x 40 x 64
 // cells at d/h 6) towed downwards at constant speed U from rest at Reynolds number U d / nu,
-// its drag once it has travelled 3.3 diameters, with the fluid's step dt = cells_per_step h / U.
+// its drag over the cell of travel that ends 3.3 diameters from the start (a whole cell, over
+// which the kernel's ripple as the markers cross the grid averages out: at Re 32 it swings
+// the drag by 3 % from step to step), with the fluid's step dt = cells_per_step h / U.
 // The viscous number nu dt / h^2 is cells_per_diameter cells_per_step / Re.
 struct Towed {
   double cells_per_step = 0, viscous_number = 0, drag = 0, seconds = 0;

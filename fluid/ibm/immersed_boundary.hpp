@@ -73,9 +73,10 @@ struct IbmOptions {
   // preconditioned by the forcing's own system, each iteration a viscous solve and a
   // projection of their field, at most `corrections` of them, to a root mean square slip
   // of `no_slip_tolerance` of the largest velocity at the markers. 0 (the default): the
-  // forcing acts on the explicit estimate alone. At Re 32 the corrections move a towed
-  // sphere's drag by 1.3 % at a third of a cell per step where it held within 0.1 %
-  // without them (fluid/README.md "Time step of a moving body"), so they are asked for.
+  // forcing acts on the explicit estimate alone. Off by default: each costs a viscous solve
+  // and a projection, and under implicit coupling a count that stops at a tolerance changes
+  // with the pose and moves the load by steps below the coupling's tolerance, so a scene
+  // that needs them asks for a fixed count.
   int corrections = 0;
   double no_slip_tolerance = 3e-3;
   std::optional<Retraction> retraction;  // unset: calibrated_retraction(kernel)
