@@ -8,7 +8,7 @@
 
 #include <Eigen/Dense>
 
-#include "coupler/scene/scene.hpp"
+#include "coupler/coupling/acceleration_kind.hpp"
 
 namespace cosim::coupling {
 
@@ -33,6 +33,6 @@ std::unique_ptr<Accelerator> make_aitken(double w);
 // make the fit ill-conditioned are dropped (QR filter).
 std::unique_ptr<Accelerator> make_iqn_ils(double w);
 
-std::unique_ptr<Accelerator> make_accelerator(scene::Acceleration kind, double w);
+std::unique_ptr<Accelerator> make_accelerator(Acceleration kind, double w);
 
 }  // namespace cosim::coupling

@@ -13,13 +13,15 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "coupler/coupling/acceleration_kind.hpp"
+
 namespace cosim::scene {
 
 using Vec3 = std::array<double, 3>;
 using Quat = std::array<double, 4>;  // w, x, y, z
 
 enum class Scheme { SerialExplicit, ParallelExplicit, SerialImplicit, ParallelImplicit };
-enum class Acceleration { None, Constant, Aitken, IqnIls };
+using coupling::Acceleration;
 enum class Transport { Ipc, Tcp };
 
 // What a participant puts on the wire or takes from it.

@@ -24,13 +24,13 @@ void expect_same(const Window& a, const Window& b) {
 
 TEST(MakeAccelerator, MapsEveryKind) {
   const double w = 0.3;
-  expect_same(three_updates(*make_accelerator(scene::Acceleration::None, w)),
+  expect_same(three_updates(*make_accelerator(Acceleration::None, w)),
               three_updates(*make_fixed_point()));
-  expect_same(three_updates(*make_accelerator(scene::Acceleration::Constant, w)),
+  expect_same(three_updates(*make_accelerator(Acceleration::Constant, w)),
               three_updates(*make_constant(w)));
-  expect_same(three_updates(*make_accelerator(scene::Acceleration::Aitken, w)),
+  expect_same(three_updates(*make_accelerator(Acceleration::Aitken, w)),
               three_updates(*make_aitken(w)));
-  expect_same(three_updates(*make_accelerator(scene::Acceleration::IqnIls, w)),
+  expect_same(three_updates(*make_accelerator(Acceleration::IqnIls, w)),
               three_updates(*make_iqn_ils(w)));
 }
 
@@ -46,7 +46,7 @@ TEST(MakeAccelerator, KindsAreDistinguishable) {
 }
 
 TEST(MakeAccelerator, RejectsAValueOutsideTheEnum) {
-  EXPECT_THROW(make_accelerator(static_cast<scene::Acceleration>(99), 0.5), std::invalid_argument);
+  EXPECT_THROW(make_accelerator(static_cast<Acceleration>(99), 0.5), std::invalid_argument);
 }
 
 }  // namespace

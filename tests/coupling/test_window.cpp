@@ -9,7 +9,7 @@
 namespace cosim::coupling::test {
 namespace {
 
-class NewWindow : public ::testing::TestWithParam<scene::Acceleration> {};
+class NewWindow : public ::testing::TestWithParam<Acceleration> {};
 
 TEST_P(NewWindow, SecondWindowMatchesAFreshAccelerator) {
   const Eigen::Index n = 6;
@@ -30,21 +30,21 @@ TEST_P(NewWindow, SecondWindowMatchesAFreshAccelerator) {
 }
 
 // Named here rather than through scene::to_string, which lives in cosim_scene.
-std::string name(const ::testing::TestParamInfo<scene::Acceleration>& info) {
+std::string name(const ::testing::TestParamInfo<Acceleration>& info) {
   switch (info.param) {
-    case scene::Acceleration::None: return "None";
-    case scene::Acceleration::Constant: return "Constant";
-    case scene::Acceleration::Aitken: return "Aitken";
-    case scene::Acceleration::IqnIls: return "IqnIls";
+    case Acceleration::None: return "None";
+    case Acceleration::Constant: return "Constant";
+    case Acceleration::Aitken: return "Aitken";
+    case Acceleration::IqnIls: return "IqnIls";
   }
   return "Unknown";
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, NewWindow,
-                         ::testing::Values(scene::Acceleration::None,
-                                           scene::Acceleration::Constant,
-                                           scene::Acceleration::Aitken,
-                                           scene::Acceleration::IqnIls),
+                         ::testing::Values(Acceleration::None,
+                                           Acceleration::Constant,
+                                           Acceleration::Aitken,
+                                           Acceleration::IqnIls),
                          name);
 
 }  // namespace
