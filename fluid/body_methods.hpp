@@ -4,7 +4,7 @@
 #include <string>
 #include <variant>
 
-#include "fluid/fictitious_boundary.hpp"
+#include "fluid/staircase/fictitious_boundary.hpp"
 #include "fluid/ibm/immersed_boundary.hpp"
 
 namespace cosim::fluid {

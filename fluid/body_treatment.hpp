@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "fluid/fbm_indicator.hpp"
+#include "fluid/staircase/fbm_indicator.hpp"
 #include "fluid/rigid_body.hpp"
 #include "fluid/step_bodies.hpp"
 

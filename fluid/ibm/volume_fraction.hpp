@@ -9,7 +9,7 @@
 // the body's force, then changes smoothly as the body moves across the grid.
 #include <span>
 
-#include "fluid/fbm_indicator.hpp"
+#include "fluid/staircase/fbm_indicator.hpp"
 #include "fluid/grid.hpp"
 #include "fluid/ibm/body_distance.hpp"
 #include "fluid/rigid_body.hpp"

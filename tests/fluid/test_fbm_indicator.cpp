@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "fluid/fictitious_boundary.hpp"
+#include "fluid/staircase/fictitious_boundary.hpp"
 #include "rigidbody/geometry/queries.hpp"
 
 namespace cosim::fluid {

@@ -9,7 +9,7 @@
 
 #include "tests/fluid/flow_checks.hpp"
 #include "fluid/connected_cells.hpp"
-#include "fluid/fictitious_boundary.hpp"
+#include "fluid/staircase/fictitious_boundary.hpp"
 #include "fluid/local_velocity.hpp"
 #include "fluid/mac_operators.hpp"
 #include "fluid/region_means.hpp"

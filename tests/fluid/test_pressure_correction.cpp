@@ -11,7 +11,7 @@
 #include <cmath>
 
 #include "tests/fluid/flow_checks.hpp"
-#include "fluid/fictitious_boundary.hpp"
+#include "fluid/staircase/fictitious_boundary.hpp"
 
 namespace cosim::fluid {
 namespace {

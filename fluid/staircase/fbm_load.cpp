@@ -1,4 +1,4 @@
-#include "fluid/fbm_load.hpp"
+#include "fluid/staircase/fbm_load.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "fluid/fbm_indicator.hpp"
+#include "fluid/staircase/fbm_indicator.hpp"
 
 #include <Eigen/Core>
 #include <algorithm>

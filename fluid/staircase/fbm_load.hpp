@@ -13,7 +13,7 @@
 #include <array>
 
 #include "fluid/body_treatment.hpp"
-#include "fluid/fbm_indicator.hpp"
+#include "fluid/staircase/fbm_indicator.hpp"
 #include "fluid/navier_stokes.hpp"
 
 namespace cosim::fluid {

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "fluid/body_treatment.hpp"
-#include "fluid/fbm_indicator.hpp"
-#include "fluid/fbm_load.hpp"
+#include "fluid/staircase/fbm_indicator.hpp"
+#include "fluid/staircase/fbm_load.hpp"
 #include "fluid/imposed_faces.hpp"
 #include "fluid/navier_stokes.hpp"
 #include "fluid/rigid_body.hpp"

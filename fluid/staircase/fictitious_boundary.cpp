@@ -1,4 +1,4 @@
-#include "fluid/fictitious_boundary.hpp"
+#include "fluid/staircase/fictitious_boundary.hpp"
 
 #include <stdexcept>
 
