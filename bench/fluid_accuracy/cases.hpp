@@ -57,7 +57,7 @@ Smoothness sphere_through_a_cell(const fluid::BodyOptions& method, int steps_per
 // cells at d/h 6) towed downwards at constant speed U from rest at Reynolds number U d / nu,
 // its drag over the cell of travel that ends 3.3 diameters from the start (a whole cell, over
 // which the kernel's ripple as the markers cross the grid averages out: at Re 32 it swings
-// the drag by 3 % from step to step), with the fluid's step dt = cells_per_step h / U.
+// the drag by 3 % within a cell), with the fluid's step dt = cells_per_step h / U.
 // The viscous number nu dt / h^2 is cells_per_diameter cells_per_step / Re.
 struct Towed {
   double cells_per_step = 0, viscous_number = 0, drag = 0, seconds = 0;
