@@ -43,7 +43,14 @@ class OutputExample(unittest.TestCase):
         self.assertEqual(read.returncode, 0, read.stdout)
         lines = read.stdout.splitlines()
         self.assertEqual(lines[0], "status: finished")
-        self.assertTrue(lines[1].startswith("cylinder: t = 0.5 s, position ["), read.stdout)
+        # The prescribed x = 0.55 + 0.1 sin(2 pi t) is back at 0.55 at t = 0.5 s.
+        position = re.match(r"cylinder: t = 0\.5 s, position \[([^]]*)\] m, force \[([^]]*)\] N$", lines[1])
+        self.assertIsNotNone(position, read.stdout)
+        x, y, _ = map(float, position.group(1).split())
+        self.assertAlmostEqual(x, 0.55, places=9)
+        self.assertAlmostEqual(y, 0.2, places=9)
+        # The liquid resists the moving cylinder along x.
+        self.assertGreater(abs(float(position.group(2).split()[0])), 1.0, read.stdout)
         self.assertTrue(lines[2].startswith("coupling iterations per window: "), read.stdout)
         self.assertRegex(lines[3], r"^fluid window 000010 t = 0\.5 s: \[.*'alpha'.*'pressure'.*'velocity'\]$")
 
