@@ -101,15 +101,31 @@ struct Towing {
   StageSeconds seconds;
 };
 
-// Moves body 0 from `start` at constant `velocity`, one fluid step of dt at a time, and
-// after step k calls after(k, where the body is now) until it returns false.
+// A speed that rises from rest to one over the time `rise` as 3 x^2 - 2 x^3 (x = t / rise),
+// and the distance it covers by t; a rise of 0 starts at full speed.
+struct SpeedRise {
+  double rise = 0;
+  double speed(double t) const {
+    const double x = rise > 0 ? std::min(t / rise, 1.0) : 1.0;
+    return x * x * (3 - 2 * x);
+  }
+  double distance(double t) const {
+    if (t >= rise) return t - rise / 2;
+    const double x = t / rise;
+    return rise * x * x * x * (1 - x / 2);
+  }
+};
+
+// Moves body 0 from `start` at `velocity` (reached over `rise`), one fluid step of dt at a
+// time, and after step k calls after(k, where the body is now) until it returns false.
 template <typename After>
 Towing tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start, const Eigen::Vector3d& velocity,
-           double dt, After after) {
+           double dt, After after, SpeedRise rise = {}) {
   Towing out;
   for (int k = 1;; ++k) {
-    const Eigen::Vector3d at = start + k * dt * velocity;
-    bodies.move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero());
+    const Eigen::Vector3d at = start + rise.distance(k * dt) * velocity;
+    bodies.move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), rise.speed(k * dt) * velocity,
+                Eigen::Vector3d::Zero());
     const StepReport report = flow.step(dt, bodies.for_step());
     out.corrections += report.no_slip_corrections;
     out.seconds += report.seconds;
@@ -308,7 +324,7 @@ TimeStepOptions fixed_step(double dt, const TimeStepOptions& stepping) {
 }  // namespace
 
 Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cells_per_step, double reynolds,
-                   const TimeStepOptions& stepping) {
+                   double rise, const TimeStepOptions& stepping) {
   const int n = static_cast<int>(std::lround(6.7 * cells_per_diameter));
   const int height = static_cast<int>(std::lround(10.7 * cells_per_diameter));
   // Started 8/3 diameters below the lid (0.4 m for ten Cate's 15 mm sphere scaled to 0.15).
@@ -337,7 +353,7 @@ Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cel
     heights.push_back(at.z());
     drags.push_back(bodies->loads(flow)[0].force.z());
     return at.z() > z_measure;
-  });
+  }, SpeedRise{rise * d / U});
   out.drag = mean_between(heights, drags, z_measure + h, z_measure);
   out.corrections = static_cast<double>(towing.corrections) / out.steps;
   out.seconds = MPI_Wtime() - start_time;

@@ -57,7 +57,8 @@ Smoothness sphere_through_a_cell(const fluid::BodyOptions& method, int steps_per
 // cells at d/h 6) towed downwards at constant speed U from rest at Reynolds number U d / nu,
 // its drag over the cell of travel that ends 3.3 diameters from the start (a whole cell, over
 // which the kernel's ripple as the markers cross the grid averages out: at Re 32 it swings
-// the drag by 3 % within a cell), with the fluid's step dt = cells_per_step h / U.
+// the drag by 3 % within a cell), with the fluid's step dt = cells_per_step h / U. Its speed
+// rises from rest to U over `rise` d / U (3 x^2 - 2 x^3 in time; 0: at once).
 // The viscous number nu dt / h^2 is cells_per_diameter cells_per_step / Re.
 struct Towed {
   double cells_per_step = 0, viscous_number = 0, drag = 0, seconds = 0;
@@ -66,7 +67,7 @@ struct Towed {
 };
 // `stepping`: its theta and pressure update (the step is the case's).
 Towed towed_sphere(const fluid::BodyOptions& method, int cells_per_diameter, double cells_per_step, double reynolds,
-                   const fluid::TimeStepOptions& stepping);
+                   double rise, const fluid::TimeStepOptions& stepping);
 
 // A sphere driven towards a no-slip wall: a sphere of `cells_per_diameter` cells across in
 // a closed cube `box.diameters` wide (by default ten Cate's tank's width, 6.7), moved at

@@ -152,15 +152,16 @@ void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ib
 // The towed sphere at each time step, finest last: the drag's error against the finest
 // step's and its observed order in the step.
 void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, int cells_per_diameter,
-                 std::vector<double> cells_per_step, double reynolds, const cosim::fluid::TimeStepOptions& stepping) {
+                 std::vector<double> cells_per_step, double reynolds, double rise,
+                 const cosim::fluid::TimeStepOptions& stepping) {
   std::sort(cells_per_step.rbegin(), cells_per_step.rend());
-  PetscPrintf(PETSC_COMM_WORLD, "towed sphere, d/h %d, Re %g, %s\n", cells_per_diameter, reynolds,
-              describe(stepping).c_str());
+  PetscPrintf(PETSC_COMM_WORLD, "towed sphere, d/h %d, Re %g, speed reached over %g d/U, %s\n", cells_per_diameter,
+              reynolds, rise, describe(stepping).c_str());
   PetscPrintf(PETSC_COMM_WORLD, "%-26s %10s %9s %6s %9s %10s %12s %7s %10s\n", "method", "cells/step", "nu dt/h2",
               "steps", "wall [s]", "drag", "vs finest", "order", "corr/step");
   for (const auto& method : methods) {
     std::vector<Towed> runs;
-    for (double c : cells_per_step) runs.push_back(towed_sphere(method, cells_per_diameter, c, reynolds, stepping));
+    for (double c : cells_per_step) runs.push_back(towed_sphere(method, cells_per_diameter, c, reynolds, rise, stepping));
     const double finest = runs.back().drag;
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const Towed& r = runs[i];
@@ -335,6 +336,9 @@ int main(int argc, char** argv) {
   std::vector<double> towed;
   app.add_option("--towed", towed,
                  "The towed sphere (--diameter cells across) instead, at these time steps in cells the body moves per step");
+  double rise = 0;
+  app.add_option("--rise", rise, "The towed sphere's speed rises from rest over this time, in d / U (0: at once)")
+      ->check(CLI::NonNegativeNumber);
   double reynolds = 1.5;
   app.add_option("--reynolds", reynolds,
                  "The towed sphere's and the wall approach's Reynolds number (ten Cate E1 1.5, E4 32); with --moving-frame Hasimoto's, "
@@ -419,7 +423,7 @@ int main(int argc, char** argv) {
     else if (!wall.empty())
       wall_approach_study(s.methods, diameter, wall, reynolds, gaps, moving_steps);
     else if (!towed.empty())
-      towed_study(s.methods, diameter, towed, reynolds, moving_steps);
+      towed_study(s.methods, diameter, towed, reynolds, rise, moving_steps);
     else if (oscillating)
       oscillating_study(quick, csv, s.methods);
     else

@@ -38,6 +38,25 @@ bool overlap(const geometry::Aabb& a, const geometry::Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
 }
 
+// Whether `box` comes within `reach` of the largest cell width of the cells `cells` on
+// every axis (on a periodic axis also a period away): a body that does not has no marker
+// whose kernel touches them.
+bool near(const Grid& grid, const Box& cells, const geometry::Aabb& box, double reach) {
+  for (int d = 0; d < 3; ++d) {
+    const Axis& axis = grid.axis(d);
+    if (axis.degenerate()) continue;
+    const double margin = reach * axis.max_width();
+    const double lo = axis.face(static_cast<int>(cells.lo[d])) - margin;
+    const double hi = axis.face(static_cast<int>(cells.hi[d])) + margin;
+    const double period = axis.periodic() ? axis.hi() - axis.lo() : 0;
+    bool meets = false;
+    for (double shift : {0.0, -period, period})
+      meets = meets || (box.min[d] + shift <= hi && box.max[d] + shift >= lo);
+    if (!meets) return false;
+  }
+  return true;
+}
+
 // The retraction's law was calibrated at h kappa = 1/3 and 1/2 (spheres of twelve and eight
 // cells across) and holds at 2/3 (six: the Hasimoto error +0.3 %, fluid/README.md); it is
 // held at a sphere of four cells across, beyond which (small or sharp features) the markers
@@ -188,6 +207,7 @@ std::size_t ImmersedBoundary::add(RigidBody body) {
                                 std::to_string(options_.retraction->constant) +
                                 " cell widths: it is thinner than twice that" +
                                 (flat < 0 ? std::string() : std::string(" or misses the grid's plane")));
+  first_marker_.push_back(first_marker_.back() + e.markers.size());
   bodies_.push_back(std::move(e));
   return bodies_.size() - 1;
 }
@@ -218,13 +238,25 @@ std::vector<Eigen::Vector3d> ImmersedBoundary::markers(std::size_t i) const {
   return out;
 }
 
-// Per body: the inner momenta, whether they are known, then 3 per marker.
+// Per body: the inner momenta, whether they are known, then 3 per marker: the force its
+// holders agree on (collective; every marker's, once per checkpoint).
 std::vector<double> ImmersedBoundary::state() const {
+  std::vector<double> forces(3 * total_markers(), 0.0), holders(total_markers(), 0.0);
+  for (const auto& [b, k] : held_) {
+    const Marker& m = bodies_[b].markers[k];
+    const std::size_t id = first_marker_[b] + k;
+    for (int c = 0; c < 3; ++c) forces[3 * id + static_cast<std::size_t>(c)] = m.force[c];
+    holders[id] = 1;
+  }
+  MPI_Allreduce(MPI_IN_PLACE, forces.data(), static_cast<int>(forces.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+  MPI_Allreduce(MPI_IN_PLACE, holders.data(), static_cast<int>(holders.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
   std::vector<double> out;
-  for (const Entry& e : bodies_) {
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const Entry& e = bodies_[b];
     out.insert(out.end(), e.inner.begin(), e.inner.end());
     out.push_back(e.inner_known ? 1 : 0);
-    for (const Marker& m : e.markers) out.insert(out.end(), m.force.data(), m.force.data() + 3);
+    for (std::size_t id = first_marker_[b]; id < first_marker_[b + 1]; ++id)
+      for (std::size_t c = 0; c < 3; ++c) out.push_back(holders[id] > 0 ? forces[3 * id + c] / holders[id] : 0.0);
   }
   return out;
 }
@@ -236,26 +268,35 @@ void ImmersedBoundary::restore(std::span<const double> state) {
     throw std::invalid_argument("immersed boundary state has " + std::to_string(state.size()) + " values, its " +
                                 std::to_string(bodies_.size()) + " bodies need " + std::to_string(expected));
   auto at = state.begin();
-  for (Entry& e : bodies_) {
+  held_.clear();
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    Entry& e = bodies_[b];
     std::copy_n(at, kInnerWidth, e.inner.begin());
     at += kInnerWidth;
     e.inner_known = *at++ != 0;
-    for (Marker& m : e.markers) {
-      m.force = Eigen::Vector3d(at[0], at[1], at[2]);
+    for (std::size_t k = 0; k < e.markers.size(); ++k) {
+      e.markers[k].force = Eigen::Vector3d(at[0], at[1], at[2]);
+      e.markers[k].known = true;
+      held_.emplace_back(b, k);
       at += 3;
     }
   }
 }
 
 // Markers inside the domain's bounded extent and outside every other body (where bodies
-// touch, the other's surface holds the fluid there), with their kernels on the grid.
+// touch, the other's surface holds the fluid there), with their kernels on the grid and
+// touching this rank's faces.
 void ImmersedBoundary::collect_active_markers() {
   active_.clear();
   std::vector<geometry::Aabb> boxes;
   for (const Entry& e : bodies_) boxes.push_back(geometry::world_aabb(e.body.shape, e.body.pose));
   std::array<Box, 3> owned;
   for (int c = 0; c < 3; ++c) owned[static_cast<std::size_t>(c)] = grid_.owned(grid_.velocity_dm(c));
+  const Box cells = grid_.owned(grid_.cell_dm());
+  // A face's kernel reaches support_radius widths; a face lies half a cell outside its cell.
+  const double reach = support_radius(options_.kernel) + 1;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    if (!near(grid_, cells, boxes[b], reach)) continue;
     const RigidBody& body = bodies_[b].body;
     std::vector<std::size_t> touching;
     for (std::size_t o = 0; o < bodies_.size(); ++o)
@@ -284,7 +325,8 @@ void ImmersedBoundary::collect_active_markers() {
         empty = empty || a.stencil[static_cast<std::size_t>(c)].empty();
         a.local[static_cast<std::size_t>(c)] = a.stencil[static_cast<std::size_t>(c)].meets(owned[static_cast<std::size_t>(c)]);
       }
-      if (empty) continue;
+      if (empty || !(a.local[0] || a.local[1] || a.local[2])) continue;
+      a.id = first_marker_[b] + k;
       // dV = area times the width across the surface.
       const Eigen::Vector3d normal = body.pose.direction_to_world(m.normal);
       double across = 0;
@@ -298,15 +340,9 @@ void ImmersedBoundary::collect_active_markers() {
 
 namespace {
 
-double largest(const std::vector<double>& a) {
-  double m = 0;
-  for (double v : a) m = std::max(m, std::abs(v));
-  return m;
-}
-
-// residual = target - interpolated at each marker; returns the largest of both, the scale of
-// the forcing's tolerance.
-double slip_against(std::span<const ActiveMarker> active, std::vector<double>& residual) {
+// residual = target - interpolated at each marker; returns the largest of both over every
+// rank, the scale of the forcing's tolerance.
+double slip_against(std::span<const ActiveMarker> active, const MarkerSharing& sharing, std::vector<double>& residual) {
   double scale = 0;
   for (std::size_t l = 0; l < active.size(); ++l)
     for (std::size_t c = 0; c < 3; ++c) {
@@ -314,7 +350,13 @@ double slip_against(std::span<const ActiveMarker> active, std::vector<double>& r
       scale = std::max({scale, std::abs(target), std::abs(residual[3 * l + c])});
       residual[3 * l + c] = target - residual[3 * l + c];
     }
-  return scale;
+  return sharing.largest(scale);
+}
+
+// The root mean square of values held across the ranks.
+double root_mean_square(const MarkerSharing& sharing, const std::vector<double>& a) {
+  const std::array<double, 3> squares = sharing.dot(a, a);
+  return sharing.count() > 0 ? std::sqrt((squares[0] + squares[1] + squares[2]) / sharing.count()) : 0.0;
 }
 
 }  // namespace
@@ -339,24 +381,45 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
       }
   }
   const std::size_t n = active_.size();
-  const MarkerStencils stencils(grid_, active_);
-  std::vector<double> g(3 * n), residual(3 * n);
-  for (std::size_t l = 0; l < n; ++l) {
-    const Eigen::Vector3d& last = bodies_[active_[l].body].markers[active_[l].marker].force;
-    for (std::size_t c = 0; c < 3; ++c) g[3 * l + c] = dt * active_[l].volume * last[static_cast<Eigen::Index>(c)];
-  }
+  const MarkerStencils stencils(grid_, active_, total_markers());
+  std::vector<double> g = last_impulses(stencils.sharing(), dt), residual(3 * n);
   stencils.spread(arrays.predicted, g);
   stencils.interpolate(arrays.predicted, residual);
   stencils.clear(arrays.predicted);
-  const double scale = slip_against(active_, residual);
+  const double scale = slip_against(active_, stencils.sharing(), residual);
   const std::vector<double> correction = impulses(stencils, arrays.predicted, residual, scale);
   for (std::size_t i = 0; i < 3 * n; ++i) g[i] += correction[i];
   stencils.spread(arrays.rhs, g);
-  for (Entry& e : bodies_) {
-    e.forcing = e.forcing_moment = Eigen::Vector3d::Zero();
-    for (Marker& m : e.markers) m.force = Eigen::Vector3d::Zero();  // inactive markers start afresh
+  for (Entry& e : bodies_) e.forcing = e.forcing_moment = Eigen::Vector3d::Zero();
+  // Markers that leave this rank, or every body, start afresh when they come back.
+  for (const auto& [b, k] : held_) {
+    bodies_[b].markers[k].force = Eigen::Vector3d::Zero();
+    bodies_[b].markers[k].known = false;
   }
-  add_impulses(g, dt);
+  held_.clear();
+  for (const ActiveMarker& a : active_) {
+    bodies_[a.body].markers[a.marker].force = Eigen::Vector3d::Zero();
+    held_.emplace_back(a.body, a.marker);
+  }
+  add_impulses(g, dt, stencils.sharing());
+}
+
+// A rank that did not hold a marker in the last step does not know its force: the holders
+// that did agree on it (their mean, the same value on each), the others start from zero.
+std::vector<double> ImmersedBoundary::last_impulses(const MarkerSharing& sharing, double dt) const {
+  const std::size_t n = active_.size();
+  std::vector<double> g(3 * n), holders(3 * n);
+  for (std::size_t l = 0; l < n; ++l) {
+    const Marker& m = bodies_[active_[l].body].markers[active_[l].marker];
+    for (std::size_t c = 0; c < 3; ++c) {
+      g[3 * l + c] = m.known ? m.force[static_cast<Eigen::Index>(c)] : 0.0;
+      holders[3 * l + c] = m.known ? 1.0 : 0.0;
+    }
+  }
+  sharing.sum(g);
+  sharing.sum(holders);
+  for (std::size_t i = 0; i < 3 * n; ++i) g[i] = holders[i] > 0 ? dt * active_[i / 3].volume * g[i] / holders[i] : 0.0;
+  return g;
 }
 
 double ImmersedBoundary::slip_in(const NavierStokes& flow, const MarkerStencils& stencils,
@@ -374,7 +437,7 @@ double ImmersedBoundary::slip_in(const NavierStokes& flow, const MarkerStencils&
     const PetscScalar*** read = const_cast<const PetscScalar***>(u[static_cast<std::size_t>(c)]);
     COSIM_PETSC(DMDAVecRestoreArrayRead(grid_.velocity_dm(c), flow.velocity(c), &read));
   }
-  return slip_against(active_, residual);
+  return slip_against(active_, stencils.sharing(), residual);
 }
 
 namespace {
@@ -387,20 +450,20 @@ struct Correction {
   std::vector<double> image;
 };
 
-std::vector<double> read(Vec v) {
-  PetscInt n = 0;
-  COSIM_PETSC(VecGetLocalSize(v, &n));
+// The markers' values this rank holds, from the Krylov vector's roots (collective).
+std::vector<double> read(const MarkerSharing& sharing, Vec v, std::size_t held) {
   const PetscScalar* a = nullptr;
   COSIM_PETSC(VecGetArrayRead(v, &a));
-  std::vector<double> out(a, a + n);
+  std::vector<double> out(held);
+  sharing.from_roots(a, out);
   COSIM_PETSC(VecRestoreArrayRead(v, &a));
   return out;
 }
 
-void write(const std::vector<double>& values, Vec v) {
+void write(const MarkerSharing& sharing, const std::vector<double>& values, Vec v) {
   PetscScalar* a = nullptr;
   COSIM_PETSC(VecGetArray(v, &a));
-  std::copy(values.begin(), values.end(), a);
+  sharing.to_roots(values, a);
   COSIM_PETSC(VecRestoreArray(v, &a));
 }
 
@@ -411,9 +474,10 @@ PetscErrorCode respond(Mat A, Vec x, Vec y) {
   Correction* k = nullptr;
   PetscCall(MatShellGetContext(A, &k));
   try {
-    k->stencils->spread(k->response->rhs(), read(x));
+    const MarkerSharing& sharing = k->stencils->sharing();
+    k->stencils->spread(k->response->rhs(), read(sharing, x, k->image.size()));
     k->stencils->interpolate(k->response->change(), k->image);
-    write(k->image, y);
+    write(sharing, k->image, y);
   } catch (const std::exception& e) {
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
   }
@@ -426,8 +490,9 @@ PetscErrorCode precondition(PC pc, Vec x, Vec y) {
   Correction* k = nullptr;
   PetscCall(PCShellGetContext(pc, &k));
   try {
-    std::vector<double> slip = read(x);
-    write(k->precondition(slip), y);
+    const MarkerSharing& sharing = k->stencils->sharing();
+    std::vector<double> slip = read(sharing, x, k->image.size());
+    write(sharing, k->precondition(slip), y);
   } catch (const std::exception& e) {
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
   }
@@ -447,38 +512,33 @@ struct KrylovObjects {
   }
 };
 
-double root_mean_square(const std::vector<double>& a) {
-  double sum = 0;
-  for (double v : a) sum += v * v;
-  return a.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(a.size()));
-}
-
 }  // namespace
 
 // The slip left in the step's final velocity, r = U - I[u], is cancelled by impulses g with
-// I[R S g] = r, R the viscous solve and projection: FGMRES on the markers' values (the same
-// on every rank, each rank running the same iterations), right-preconditioned by the forcing's
-// system I S g = r, which it is where R is the identity.
+// I[R S g] = r, R the viscous solve and projection: FGMRES on the markers' values (each held
+// once, by the root of marker_sharing.hpp), right-preconditioned by the forcing's system
+// I S g = r, which it is where R is the identity.
 int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse& response) {
   const std::size_t n = active_.size();
-  if (n == 0) return 0;
-  const MarkerStencils stencils(grid_, active_);
+  const MarkerStencils stencils(grid_, active_, total_markers());
+  const MarkerSharing& sharing = stencils.sharing();
+  if (sharing.count() == 0) return 0;
   std::vector<double> residual;
   const double scale = slip_in(flow, stencils, residual);
-  final_slip_ = largest(residual);
-  if (options_.corrections == 0 || root_mean_square(residual) <= options_.no_slip_tolerance * scale) return 0;
+  final_slip_ = sharing.largest(residual);
+  if (options_.corrections == 0 || root_mean_square(sharing, residual) <= options_.no_slip_tolerance * scale) return 0;
   const double slip = slip_;
   const int sweeps = sweeps_;
   Correction k{&stencils, &response, [&](std::vector<double>& r) { return impulses(stencils, response.rhs(), r, scale); },
                std::vector<double>(3 * n)};
-  const auto size = static_cast<PetscInt>(3 * n);
+  const PetscInt roots = sharing.roots();
   KrylovObjects o;
-  COSIM_PETSC(VecCreateSeq(PETSC_COMM_SELF, size, &o.rhs));
+  COSIM_PETSC(VecCreateMPI(grid_.comm(), roots, PETSC_DETERMINE, &o.rhs));
   COSIM_PETSC(VecDuplicate(o.rhs, &o.g));
-  write(residual, o.rhs);
-  COSIM_PETSC(MatCreateShell(PETSC_COMM_SELF, size, size, size, size, &k, &o.A));
+  write(sharing, residual, o.rhs);
+  COSIM_PETSC(MatCreateShell(grid_.comm(), roots, roots, PETSC_DETERMINE, PETSC_DETERMINE, &k, &o.A));
   COSIM_PETSC(MatShellSetOperation(o.A, MATOP_MULT, reinterpret_cast<void (*)(void)>(respond)));
-  COSIM_PETSC(KSPCreate(PETSC_COMM_SELF, &o.ksp));
+  COSIM_PETSC(KSPCreate(grid_.comm(), &o.ksp));
   KSP ksp = o.ksp;
   COSIM_PETSC(KSPSetOptionsPrefix(ksp, "no_slip_"));
   COSIM_PETSC(KSPSetType(ksp, KSPFGMRES));
@@ -490,7 +550,7 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
   COSIM_PETSC(PCShellSetContext(pc, &k));
   COSIM_PETSC(PCShellSetApply(pc, precondition));
   // Converged where the root mean square slip is no_slip_tolerance of the velocity scale.
-  const double rms = options_.no_slip_tolerance * scale * std::sqrt(static_cast<double>(size));
+  const double rms = options_.no_slip_tolerance * scale * std::sqrt(sharing.count());
   COSIM_PETSC(KSPSetTolerances(ksp, 1e-12, rms, PETSC_DEFAULT, options_.corrections));
   COSIM_PETSC(KSPSetFromOptions(ksp));
   COSIM_PETSC(KSPSolve(ksp, o.rhs, o.g));
@@ -499,12 +559,12 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
   slip_ = slip;
   sweeps_ = sweeps;
   if (iterations == 0) return 0;
-  const std::vector<double> impulses_found = read(o.g);
+  const std::vector<double> impulses_found = read(sharing, o.g, 3 * n);
   stencils.spread(response.rhs(), impulses_found);
   response.apply();
-  add_impulses(impulses_found, dt);
+  add_impulses(impulses_found, dt, sharing);
   slip_in(flow, stencils, residual);
-  final_slip_ = largest(residual);
+  final_slip_ = sharing.largest(residual);
   return static_cast<int>(iterations) + 1;
 }
 
@@ -521,14 +581,11 @@ std::vector<double> ImmersedBoundary::impulses(const MarkerStencils& stencils, c
   };
   precondition();
   direction = scaled;
-  const auto norms = [&](const std::vector<double>& a, const std::vector<double>& b) {
-    std::array<double, 3> dot{};
-    for (std::size_t i = 0; i < a.size(); ++i) dot[i % 3] += a[i] * b[i];
-    return dot;
-  };
+  const MarkerSharing& sharing = stencils.sharing();
+  const auto norms = [&](const std::vector<double>& a, const std::vector<double>& b) { return sharing.dot(a, b); };
   std::array<double, 3> rr = norms(residual, scaled);
   sweeps_ = 0;
-  while (sweeps_ < options_.sweeps && largest(residual) > options_.tolerance * scale) {
+  while (sweeps_ < options_.sweeps && sharing.largest(residual) > options_.tolerance * scale) {
     ++sweeps_;
     stencils.spread(scratch, direction);
     stencils.interpolate(scratch, image);
@@ -546,25 +603,37 @@ std::vector<double> ImmersedBoundary::impulses(const MarkerStencils& stencils, c
       direction[i] = scaled[i] + (rr[i % 3] > 0 ? next[i % 3] / rr[i % 3] : 0.0) * direction[i];
     rr = next;
   }
-  slip_ = largest(residual);
+  slip_ = sharing.largest(residual);
   return correction;
 }
 
-void ImmersedBoundary::add_impulses(const std::vector<double>& g, double dt) {
+void ImmersedBoundary::add_impulses(const std::vector<double>& g, double dt, const MarkerSharing& sharing) {
   for (std::size_t l = 0; l < active_.size(); ++l) {
     Entry& e = bodies_[active_[l].body];
     const Eigen::Vector3d impulse(g[3 * l], g[3 * l + 1], g[3 * l + 2]);
-    e.markers[active_[l].marker].force += impulse / (dt * active_[l].volume);
-    e.forcing += impulse / dt;
-    e.forcing_moment += (active_[l].position - e.body.pose.position()).cross(impulse / dt);
+    Marker& m = e.markers[active_[l].marker];
+    m.force += impulse / (dt * active_[l].volume);
+    m.known = true;
+    const Eigen::Vector3d share = sharing.once(3 * l) * impulse / dt;
+    e.forcing += share;
+    e.forcing_moment += (active_[l].position - e.body.pose.position()).cross(share);
   }
 }
 
 void ImmersedBoundary::finish_step(const NavierStokes& flow, double dt) {
   const std::vector<double> momenta = inner_momenta(flow);
   const double rho = flow.fluid().density;
+  // Each rank summed its share of the markers' forcing.
+  std::vector<double> forcing;
+  for (const Entry& e : bodies_) {
+    forcing.insert(forcing.end(), e.forcing.data(), e.forcing.data() + 3);
+    forcing.insert(forcing.end(), e.forcing_moment.data(), e.forcing_moment.data() + 3);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, forcing.data(), static_cast<int>(forcing.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     Entry& e = bodies_[b];
+    e.forcing = Eigen::Vector3d(forcing[6 * b], forcing[6 * b + 1], forcing[6 * b + 2]);
+    e.forcing_moment = Eigen::Vector3d(forcing[6 * b + 3], forcing[6 * b + 4], forcing[6 * b + 5]);
     const double* now = momenta.data() + kInnerWidth * b;
     const Eigen::Vector3d momentum(now[0], now[1], now[2]), angular(now[3], now[4], now[5]);
     const Eigen::Vector3d momentum_before(e.inner[0], e.inner[1], e.inner[2]);

@@ -17,10 +17,11 @@
 // dt F_l dV_l), which converges in a few sweeps where the plain correction stalls on the
 // system's slow modes, and the sweeps go on until the markers' velocity is met to
 // `tolerance`. Each step starts from the forces of the last one, so a steady flow needs
-// no sweep at all. The markers take part
-// on every rank (their interpolated velocities are summed over the ranks that own the
-// kernel's points), so no ghost layer is needed whatever the kernel's width. The projection
-// then runs over the whole domain with the fluid's own, never-changing operators.
+// no sweep at all. A marker takes part on the ranks whose faces its kernel touches, its
+// interpolated velocity summed over them (marker_sharing.hpp), so a rank's forcing work
+// grows with the bodies near it and no ghost layer is needed whatever the kernel's width.
+// The projection then runs over the whole domain with the fluid's own, never-changing
+// operators.
 //
 // Load on a body: the reaction to the forcing plus the rate of change of the momentum of the
 // fluid inside it, whose inertia is then the fluid's own (Kempe & Froehlich):
@@ -32,6 +33,7 @@
 // its volume.
 #include <array>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "fluid/body_forcing.hpp"
@@ -40,6 +42,7 @@
 #include "fluid/ibm/body_distance.hpp"
 #include "fluid/ibm/delta_kernel.hpp"
 #include "fluid/ibm/kernel_stencil.hpp"
+#include "fluid/ibm/marker_sharing.hpp"
 #include "fluid/ibm/marker_stencils.hpp"
 
 namespace cosim::fluid {
@@ -118,6 +121,8 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   double slip() const { return slip_; }
   double final_slip() const { return final_slip_; }
   int sweeps() const { return sweeps_; }
+  // The markers this rank forced in the last step: those whose kernels touch its faces.
+  std::size_t held_markers() const { return active_.size(); }
   const IbmOptions& options() const { return options_; }
 
  private:
@@ -125,6 +130,7 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
     Eigen::Vector3d position, normal;  // body frame
     double area = 0;
     Eigen::Vector3d force = Eigen::Vector3d::Zero();  // F_l of the last step, world frame
+    bool known = false;  // this rank held it in the last step, so `force` is that step's
   };
   struct Entry {
     Entry(const Grid& grid, RigidBody b) : body(std::move(b)), distance(grid, body) {}
@@ -137,6 +143,7 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
     std::vector<IndicatorPatch> fraction;  // alpha at this rank's faces of each component, where the body is
     HydrodynamicLoad load;
   };
+  // The markers whose kernels touch this rank's faces, of the bodies near it.
   void collect_active_markers();
   void update_fractions();  // of every body at this rank's faces, where it is now
   std::vector<double> inner_momenta(const NavierStokes& flow) const;  // 6 per body, summed over ranks
@@ -147,13 +154,20 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
                                std::vector<double>& residual, double scale);
   // The interpolated velocity's misses at the markers (3 per marker), and their scale.
   double slip_in(const NavierStokes& flow, const MarkerStencils& stencils, std::vector<double>& residual) const;
-  // Adds the markers' impulses dt F_l dV_l to their forces and their bodies' forcing.
-  void add_impulses(const std::vector<double>& g, double dt);
+  // Adds the markers' impulses dt F_l dV_l to their forces and their bodies' forcing (each
+  // marker's share on this rank).
+  void add_impulses(const std::vector<double>& g, double dt, const MarkerSharing& sharing);
+  // The last step's forces of the active markers, agreed between their holders, as impulses.
+  std::vector<double> last_impulses(const MarkerSharing& sharing, double dt) const;
+  std::size_t total_markers() const { return first_marker_.empty() ? 0 : first_marker_.back(); }
 
   const Grid& grid_;
   IbmOptions options_;
   std::vector<Entry> bodies_;
-  std::vector<ActiveMarker> active_;  // the markers taking part in the current step
+  std::vector<ActiveMarker> active_;  // the markers taking part in the current step here
+  std::vector<std::size_t> first_marker_{0};  // body b's markers are numbered from first_marker_[b]
+  // The markers whose forces this rank holds from the last step (every marker after restore()).
+  std::vector<std::pair<std::size_t, std::size_t>> held_;
   double slip_ = 0, final_slip_ = 0;
   int sweeps_ = 0;
 };

@@ -2,7 +2,20 @@
 
 namespace cosim::fluid {
 
-MarkerStencils::MarkerStencils(const Grid& grid, std::span<const ActiveMarker> markers) : grid_(grid) {
+namespace {
+
+// Value c of marker l is number 3 id + c.
+std::vector<PetscInt> value_ids(std::span<const ActiveMarker> markers) {
+  std::vector<PetscInt> ids;
+  for (const ActiveMarker& m : markers)
+    for (std::size_t c = 0; c < 3; ++c) ids.push_back(static_cast<PetscInt>(3 * m.id + c));
+  return ids;
+}
+
+}  // namespace
+
+MarkerStencils::MarkerStencils(const Grid& grid, std::span<const ActiveMarker> markers, std::size_t total)
+    : grid_(grid), sharing_(grid.comm(), value_ids(markers), static_cast<PetscInt>(3 * total)) {
   for (int c = 0; c < 3; ++c) owned_[static_cast<std::size_t>(c)] = grid.owned(grid.velocity_dm(c));
   const std::size_t n = markers.size();
   first_.assign(3 * n + 1, 0);
@@ -50,14 +63,14 @@ void MarkerStencils::interpolate(const FaceArrays& field, std::vector<double>& o
     for (std::size_t t = first_[i]; t < first_[i + 1]; ++t) sum += touches_[t].weight * o[i % 3][touches_[t].offset];
     out[i] = sum;
   }
-  MPI_Allreduce(MPI_IN_PLACE, out.data(), static_cast<int>(out.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+  sharing_.sum(out);
 }
 
 std::vector<double> MarkerStencils::diagonal() const {
   std::vector<double> d(first_.size() - 1, 0.0);
   for (std::size_t i = 0; i < d.size(); ++i)
     for (std::size_t t = first_[i]; t < first_[i + 1]; ++t) d[i] += touches_[t].weight * touches_[t].spread;
-  MPI_Allreduce(MPI_IN_PLACE, d.data(), static_cast<int>(d.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+  sharing_.sum(d);
   return d;
 }
 

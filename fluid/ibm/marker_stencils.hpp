@@ -1,6 +1,6 @@
 #pragma once
-// The markers that take part in a step, and their kernels' points on this rank flattened
-// once: the forcing's sweeps (and the added mass's, added_mass.hpp) spread onto,
+// The markers that take part in a step on this rank (those whose kernels touch its faces),
+// and their kernels' points on this rank flattened once: the forcing's sweeps spread onto,
 // interpolate from and clear them many times, and the per-point index and face-volume
 // arithmetic took most of their time. A point is its offset from the owned box's first
 // face, the same in every global vector of that component's DMDA.
@@ -14,11 +14,13 @@
 
 #include "fluid/grid.hpp"
 #include "fluid/ibm/kernel_stencil.hpp"
+#include "fluid/ibm/marker_sharing.hpp"
 
 namespace cosim::fluid {
 
 struct ActiveMarker {
   std::size_t body = 0, marker = 0;
+  std::size_t id = 0;  // its number among all bodies' markers
   Eigen::Vector3d position, target;  // where it is, and the body's velocity there
   double volume = 0;
   std::array<KernelStencil, 3> stencil;
@@ -30,17 +32,19 @@ using FaceArrays = std::array<PetscScalar***, 3>;
 
 class MarkerStencils {
  public:
-  MarkerStencils(const Grid& grid, std::span<const ActiveMarker> markers);
+  // `total`: all bodies' markers, on every rank (collective).
+  MarkerStencils(const Grid& grid, std::span<const ActiveMarker> markers, std::size_t total);
 
   // field += sum_l g_l w_l / dV, g holding 3 values (x, y, z) per marker.
   void spread(const FaceArrays& field, const std::vector<double>& g) const;
   // field = 0 at every point of the markers' kernels.
   void clear(const FaceArrays& field) const;
-  // out_l = sum_x w_l field, summed over the ranks (collective).
+  // out_l = sum_x w_l field, summed over the ranks that hold marker l (collective).
   void interpolate(const FaceArrays& field, std::vector<double>& out) const;
   // sum_x w_l^2 / dV per value: the diagonal of interpolating what is spread, summed over
   // the ranks (collective).
   std::vector<double> diagonal() const;
+  const MarkerSharing& sharing() const { return sharing_; }
 
  private:
   struct Touch {
@@ -54,6 +58,7 @@ class MarkerStencils {
   std::array<Box, 3> owned_;
   std::vector<Touch> touches_;
   std::vector<std::size_t> first_;  // value i's touches: first_[i] .. first_[i + 1]
+  MarkerSharing sharing_;
 };
 
 }  // namespace cosim::fluid

@@ -1,5 +1,5 @@
-// Run under mpirun -n 2: the same flow on all ranks (PETSC_COMM_WORLD) and on each rank
-// alone (PETSC_COMM_SELF) must agree to solver tolerance.
+// Run under mpirun -n 2 (the cloud also under -n 4): the same flow on all ranks
+// (PETSC_COMM_WORLD) and on each rank alone (PETSC_COMM_SELF) must agree to solver tolerance.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 
 #include "tests/fluid/flow_checks.hpp"
 #include "fluid/body_methods.hpp"
+#include "fluid/ibm/immersed_boundary.hpp"
 
 namespace cosim::fluid {
 namespace {
@@ -86,6 +87,63 @@ TEST(TwoRanks, ImmersedBoundarySameAsOneRank) {
   ibm.tolerance = 1e-10;
   ibm.sweeps = 200;
   expect_bodies_same_on_one_and_two_ranks(ibm);
+}
+
+struct CloudRun {
+  std::vector<HydrodynamicLoad> loads;
+  std::size_t held = 0, total = 0;  // markers this rank held in the last step, and all bodies'
+};
+
+// Five spheres (d/h 4.8) moving through a box periodic in x and y: on the ranks' cuts, with
+// kernels across the periodic seam and inside one rank, with the no-slip corrections (a
+// Krylov solve over the markers of every rank) after each of 6 steps.
+CloudRun sphere_cloud(MPI_Comm comm) {
+  const Axis across = Axis::uniform(24, 0, 2, true);
+  Grid grid(comm, {across, across, Axis::uniform(12, 0, 1, false)});
+  BoundaryConditions bc(grid);
+  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(0.05), {0, 0, 0}},
+                    {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 0.05});
+  ImmersedBoundary bodies(grid, {.sweeps = 200, .tolerance = 1e-10, .corrections = 30, .no_slip_tolerance = 1e-9});
+  const std::vector<Eigen::Vector3d> starts = {{1.0, 1.0, 0.5}, {1.02, 0.4, 0.45}, {0.05, 1.5, 0.5},
+                                               {1.5, 0.3, 0.55}, {0.4, 0.98, 0.5}};
+  const std::vector<Eigen::Vector3d> velocities = {{0.3, -0.2, 0.1}, {0, 0.4, 0}, {-0.5, 0, 0.1},
+                                                   {0.1, 0.1, -0.2}, {0.2, 0.3, 0}};
+  for (std::size_t i = 0; i < starts.size(); ++i)
+    bodies.add({geometry::Sphere(0.2), geometry::Pose(starts[i], Eigen::Quaterniond::Identity()), velocities[i],
+                Eigen::Vector3d(0, 0, 1)});
+  flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
+  for (int s = 0; s < 6; ++s) {
+    const double t = flow.time() + 0.05;
+    for (std::size_t i = 0; i < starts.size(); ++i)
+      bodies.move(i, geometry::Pose(starts[i] + t * velocities[i], Eigen::Quaterniond::Identity()), velocities[i],
+                  Eigen::Vector3d(0, 0, 1));
+    EXPECT_LT(flow.step(0.05, bodies.for_step()).max_divergence, 1e-8) << "step " << s;
+  }
+  CloudRun out{bodies.loads(flow), bodies.held_markers(), 0};
+  for (std::size_t i = 0; i < bodies.size(); ++i) out.total += bodies.markers(i).size();
+  return out;
+}
+
+// Each rank forces only the markers whose kernels touch its faces, and the loads are those
+// of one rank.
+TEST(TwoRanks, ImmersedBoundaryCloudSameAsOneRank) {
+  const CloudRun distributed = sphere_cloud(PETSC_COMM_WORLD);
+  const CloudRun serial = sphere_cloud(PETSC_COMM_SELF);
+  PetscMPIInt size = 0;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  for (std::size_t b = 0; b < serial.loads.size(); ++b) {
+    const double force = (distributed.loads[b].force - serial.loads[b].force).norm();
+    const double torque = (distributed.loads[b].torque - serial.loads[b].torque).norm();
+    PetscPrintf(PETSC_COMM_WORLD, "%d ranks vs 1, sphere %zu: |dF| = %.2e (|F| = %.4f), |dT| = %.2e (|T| = %.5f)\n",
+                size, b, force, serial.loads[b].force.norm(), torque, serial.loads[b].torque.norm());
+    EXPECT_LT(force, 1e-7 * serial.loads[b].force.norm()) << "sphere " << b;
+    EXPECT_LT(torque, 1e-6 * serial.loads[b].torque.norm() + 1e-10) << "sphere " << b;
+  }
+  PetscSynchronizedPrintf(PETSC_COMM_WORLD, "  rank holds %zu of the %zu markers\n", distributed.held,
+                          distributed.total);
+  PetscSynchronizedFlush(PETSC_COMM_WORLD, PETSC_STDOUT);
+  EXPECT_EQ(serial.held, serial.total);
+  EXPECT_LT(distributed.held, serial.held);
 }
 
 }  // namespace

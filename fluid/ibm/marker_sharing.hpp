@@ -1,0 +1,51 @@
+#pragma once
+// The markers a rank takes part in are those whose kernels touch its faces, so its work and
+// memory grow with the bodies near it, not with all of them. A marker whose kernel spans
+// several ranks is held by each (a leaf of a PETSc star forest) and its interpolated
+// velocity is the sum of their parts, joined through one root per value: the values'
+// global numbers laid out evenly over the ranks, so the messages, too, go with a rank's own
+// markers. Every holder then holds the same values and runs the same arithmetic on them;
+// sums over the markers count each once.
+#include <petscsf.h>
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace cosim::fluid {
+
+class MarkerSharing {
+ public:
+  // `ids`: the global number of each value this rank holds, `total` values in all (collective).
+  MarkerSharing(MPI_Comm comm, std::span<const PetscInt> ids, PetscInt total);
+  ~MarkerSharing();
+  MarkerSharing(const MarkerSharing&) = delete;
+  MarkerSharing& operator=(const MarkerSharing&) = delete;
+
+  // values[i] = the sum of value i over the ranks that hold it (collective).
+  void sum(std::vector<double>& values) const;
+  // sum_i a_i b_i over every value held anywhere, once each, per component (i % 3; collective).
+  std::array<double, 3> dot(const std::vector<double>& a, const std::vector<double>& b) const;
+  // The largest |a_i| over every rank (collective).
+  double largest(const std::vector<double>& a) const;
+  // The largest `local` over every rank (collective).
+  double largest(double local) const;
+  // The values held anywhere (collective at construction).
+  double count() const { return count_; }
+  // The share of value i this rank counts in a sum over the markers: 1 / its holders.
+  double once(std::size_t i) const { return once_[i]; }
+
+  // This rank's roots, the values a parallel Krylov solve over the markers owns here.
+  PetscInt roots() const { return roots_; }
+  void to_roots(const std::vector<double>& leaves, PetscScalar* roots) const;  // any holder's value
+  void from_roots(const PetscScalar* roots, std::vector<double>& leaves) const;
+
+ private:
+  MPI_Comm comm_;
+  PetscSF sf_ = nullptr;
+  PetscInt roots_ = 0;
+  std::vector<double> once_;
+  double count_ = 0;
+};
+
+}  // namespace cosim::fluid
