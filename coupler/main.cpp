@@ -2,6 +2,10 @@
 //   cosim check scene.yaml          validate a scene (each program reads its section), show what would run
 //   cosim run scene.yaml [-o f.h5]  run it
 //   cosim run --resume f.h5         continue a run from its last checkpoint
+//   cosim study scene.yaml --vary KEY=V1,V2,V3 --measure NAME=EXPR
+//                                   run the scene at several resolutions: each quantity's value,
+//                                   observed order, extrapolate and GCI against the runs' cost
+//                                   (docs/study.md)
 #include <CLI/CLI.hpp>
 #include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
@@ -14,11 +18,15 @@
 #include "coupler/scene/error.hpp"
 #include "coupler/scene/plan.hpp"
 #include "coupler/scene/unused_materials.hpp"
+#include "coupler/study/argument_error.hpp"
+#include "coupler/study/measures.hpp"
+#include "coupler/study/study.hpp"
 
 namespace {
 
 int check(const std::string& file) {
   const auto scene = cosim::scene::load_scene(file);
+  const auto measures = cosim::study::measures_of(scene, {});
   const auto plan = cosim::scene::plan_participants(scene);
   for (const auto& w : cosim::scene::unused_materials(scene)) spdlog::warn("{}", w);
   const auto refused = cosim::launcher::refused_sections(scene, plan.start, cosim::launcher::own_directory());
@@ -42,7 +50,22 @@ int check(const std::string& file) {
               << "\n";
   }
   for (const auto& s : plan.skipped) std::cout << "  not started: " << s << "\n";
+  for (const auto& m : measures) std::cout << "  study measure " << m.name << ": " << m.text << "\n";
   return 0;
+}
+
+// The command line as a shell would take it back, for the study's report.
+std::string command_line(int argc, char** argv) {
+  std::string out = "cosim";
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                         "0123456789_-+=.,/:") == std::string::npos;
+    std::string quoted = "'";
+    for (char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    out += " " + (plain ? a : quoted + "'");
+  }
+  return out;
 }
 
 }  // namespace
@@ -66,12 +89,51 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("-q,--quiet", quiet, "No progress line");
   scene_opt->excludes(resume_opt);
 
+  cosim::study::Request study_request;
+  auto* study_cmd = app.add_subcommand("study", "Run a scene at several resolutions: what accuracy costs in time");
+  study_cmd->add_option("scene", study_request.scene, "Scene file (YAML)")->required();
+  auto* vary_opt =
+      study_cmd
+          ->add_option("--vary", study_request.vary,
+                       "KEY=V1,V2,...: a dotted key of the scene (coupling.window, bodies.0.position) and its value "
+                       "on each level, coarsest first; several --vary change together, level by level")
+          ->expected(1)
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  auto* refine_opt = study_cmd
+                         ->add_option("--refine", study_request.refine,
+                                      "F: instead of --vary, divide coupling.window and every participant's dt by F "
+                                      "per level and multiply the fluid's grid cells by F")
+                         ->excludes(vary_opt);
+  study_cmd->add_option("--levels", study_request.levels, "N: levels with --refine (default 3)")->needs(refine_opt);
+  study_cmd
+      ->add_option("--measure", study_request.measures,
+                   "NAME=EXPR: a quantity of each run, such as peak=max(body:ball:velocity.z) (docs/study.md); adds "
+                   "to the scene's study.measure")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  study_cmd->add_option("--order", study_request.order,
+                        "P: the order the scheme should show, to judge the asymptotic range (default: the scene's "
+                        "study.order)");
+  study_cmd->add_option("--out", study_request.out, "Folder for the levels and the report (default runs/study/<scene>)");
+  study_cmd->add_option("--jobs", study_request.jobs,
+                        "N: runs side by side (default 1); runs side by side share the cores, which distorts their "
+                        "wall times");
+
   CLI11_PARSE(app, argc, argv);
   spdlog::set_pattern("cosim: %^%l%$: %v");
   spdlog::set_level(spdlog::level::info);
 
   return cosim::scene::exit_code("cosim", [&] {
     if (*check_cmd) return check(check_file);
+    if (*study_cmd) {
+      study_request.command = command_line(argc, argv);
+      try {
+        return cosim::study::study(study_request);
+      } catch (const cosim::study::ArgumentError& e) {
+        std::cerr << "cosim study: " << e.what() << "\n";
+        return 2;
+      }
+    }
     if (scene_file.empty() && resume.empty()) {
       std::cerr << "cosim run: give a scene file or --resume run.h5\n";
       return 2;

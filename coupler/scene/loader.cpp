@@ -79,6 +79,22 @@ std::vector<Effect> read_effects(const Reader& r) {
   return effects;
 }
 
+Study read_study(const Reader& r) {
+  Study s;
+  if (r.has("measure")) {
+    const Reader m = r.map("measure");
+    for (const std::string& name : m.keys()) {
+      // Names end up in file names (the study's plots).
+      if (!is_name(name)) m.fail(name, name_rule);
+      s.measures.push_back({name, m.string(name), m.line(name)});
+    }
+    m.finish();
+  }
+  if (r.has("order")) s.order = r.number("order", Range::above(0));
+  r.finish();
+  return s;
+}
+
 }  // namespace
 
 Domain read_box(const Reader& r) {
@@ -119,6 +135,7 @@ Scene load_scene_from_string(const std::string& text, const fs::path& file) {
     s.effects_line = r.line("effects");
   }
   if (r.has("participants")) s.participants = read_participants(r.map("participants"), s.coupling, file.parent_path());
+  if (r.has("study")) s.study = read_study(r.map("study"));
   r.finish();
   // A scene whose effects no set of participants can serve is as wrong as a negative
   // radius, and must be caught before anything starts.

@@ -147,6 +147,20 @@ struct Participant {
   int line = 0;                            // 1-based line of the section in the scene file
 };
 
+// A quantity `cosim study` measures on every level (docs/study.md), as written: the
+// expression is coupler/study's to parse, so every program accepts a scene that carries one.
+struct StudyMeasure {
+  std::string name;
+  std::string expression;
+  int line = 0;                            // 1-based line of the name, for errors about the expression
+};
+
+// `study:`, read by `cosim study` only.
+struct Study {
+  std::vector<StudyMeasure> measures;      // in file order
+  std::optional<double> order;             // the order the scene's resolution is expected to converge with
+};
+
 struct Scene {
   std::filesystem::path file;              // where it was read from ("<string>" if not a file)
   std::string text;                        // the YAML exactly as read, stored in every run file
@@ -160,6 +174,7 @@ struct Scene {
   std::vector<Effect> effects;
   int effects_line = 0;                    // 1-based line of `effects`: plan errors about effects point here
   std::vector<Participant> participants;   // in file order
+  Study study;
 
   bool has_effect(Effect e) const;
   const Participant* participant(const std::string& name) const;

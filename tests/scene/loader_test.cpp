@@ -122,6 +122,14 @@ TEST(LoadScene, ReadsEveryKeyOfAFullScene) {
   EXPECT_EQ(spring->provides, static_cast<DataSet>(Data::Forces));
   EXPECT_EQ(spring->needs, static_cast<DataSet>(Data::Poses));
   EXPECT_EQ(s.participant("tracker"), nullptr);
+
+  ASSERT_EQ(s.study.measures.size(), 2u);
+  EXPECT_EQ(s.study.measures[0].name, "top");
+  EXPECT_EQ(s.study.measures[0].expression, "max(body:ball:position.z)");
+  EXPECT_EQ(s.study.measures[0].line, 91);
+  EXPECT_EQ(s.study.measures[1].name, "drift");
+  EXPECT_EQ(s.study.measures[1].expression, "mean(body:ball:velocity.x, 0.5, 1.5)");
+  EXPECT_EQ(s.study.order, 2.0);
 }
 
 TEST(LoadScene, AppliesDefaults) {
@@ -150,6 +158,8 @@ TEST(LoadScene, AppliesDefaults) {
   EXPECT_EQ(b.material.friction, 0.0);
   EXPECT_TRUE(s.effects.empty());
   EXPECT_TRUE(s.participants.empty());
+  EXPECT_TRUE(s.study.measures.empty());
+  EXPECT_FALSE(s.study.order);
   EXPECT_EQ(s.windows(), 100u);
 }
 

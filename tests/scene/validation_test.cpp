@@ -18,7 +18,7 @@ std::string ball(const std::string& extra = "") {
 TEST(Validation, UnknownTopLevelKey) {
   EXPECT_EQ(load_error(head + "bodys: []\n"),
             "scene.yaml:4: bodys = []: unknown key; expected one of: "
-            "time, coupling, output, gravity, domain, bodies, effects, participants");
+            "time, coupling, output, gravity, domain, bodies, effects, participants, study");
 }
 
 TEST(Validation, UnknownNestedKey) {
@@ -32,6 +32,19 @@ TEST(Validation, UnknownNestedKey) {
             "generate, name, fixed, shape, material, orientation, velocity, angular_velocity, position");
   EXPECT_EQ(load_error(head + "bodies:\n  - name: ball\n    shape: {type: sphere, radius: 0.1, height: 1}\n"),
             "scene.yaml:6: bodies[0].shape.height = 1: unknown key; expected one of: type, radius");
+}
+
+// `study` is cosim study's (docs/study.md): the loader checks its shape, not the expressions.
+TEST(Validation, StudySection) {
+  EXPECT_EQ(load_error(head + "study: {measure: {peak: max(body:b:velocity.z)}, order: 2}\n"), "");
+  EXPECT_EQ(load_error(head + "study: {measures: {}}\n"),
+            "scene.yaml:4: study.measures = {}: unknown key; expected one of: measure, order");
+  EXPECT_EQ(load_error(head + "study:\n  measure:\n    peak speed: max(body:b:velocity.z)\n"),
+            "scene.yaml:6: study.measure.peak speed = max(body:b:velocity.z): expected a name of 1 to 31 "
+            "letters, digits, '_' and '-'");
+  EXPECT_EQ(load_error(head + "study: {measure: {peak: [1, 2]}}\n"),
+            "scene.yaml:4: study.measure.peak = [1, 2]: expected a string");
+  EXPECT_EQ(load_error(head + "study: {order: 0}\n"), "scene.yaml:4: study.order = 0: must be > 0");
 }
 
 TEST(Validation, WrongType) {

@@ -1,0 +1,118 @@
+// What --vary and --refine make of a scene, and the refinement ratios they imply.
+#include <gtest/gtest.h>
+
+#include "coupler/scene/scene.hpp"
+#include "coupler/study/argument_error.hpp"
+#include "coupler/study/key_path.hpp"
+#include "coupler/study/levels.hpp"
+#include "coupler/study/refinement.hpp"
+
+namespace cosim::study {
+namespace {
+
+const char* kScene = R"(time: {end: 1}
+coupling: {window: 0.01}
+domain: {min: [0, 0, 0], max: [1, 1, 1]}
+effects: [hydrodynamics]
+bodies:
+  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2}, position: [0.5, 0.5, 0.5]}
+participants:
+  rigidbody: {dt: 0.001}
+  fluid:
+    dt: 0.01
+    options: {grid: {cells: [10, 10, 20]}}
+)";
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const ArgumentError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Vary, ValuesAreYamlSoListsKeepTheirCommas) {
+  const Varied v = parse_vary("participants.fluid.options.grid.cells=[10,10,20],[20, 20, 40]");
+  EXPECT_EQ(v.key, "participants.fluid.options.grid.cells");
+  ASSERT_EQ(v.values.size(), 2u);
+  EXPECT_EQ(text(v.values[0]), "[10, 10, 20]");
+  EXPECT_EQ(text(v.values[1]), "[20, 20, 40]");
+  EXPECT_EQ(text(parse_vary("coupling.window=0.01,0.005").values[1]), "0.005");
+}
+
+TEST(Vary, BadArgumentsAreNamed) {
+  EXPECT_EQ(error_of([] { parse_vary("coupling.window"); }),
+            "--vary coupling.window: expected KEY=V1,V2,... (coupling.window=0.01,0.005,0.0025)");
+  EXPECT_EQ(error_of([] { parse_vary("coupling.window=0.01"); }),
+            "--vary coupling.window=0.01: give at least two values, coarsest first");
+  EXPECT_EQ(error_of([] { parse_vary("coupling.window=0.01,,0.005"); }),
+            "--vary coupling.window=0.01,,0.005: a value is empty");
+  EXPECT_NE(error_of([] { parse_vary("coupling.window=[0.01,0.005"); }), "");
+  EXPECT_EQ(error_of([] { level_count({parse_vary("a=1,2,3"), parse_vary("b=1,2")}); }),
+            "--vary b=1,2 gives 2 values but --vary a=1,2,3 gives 3: every --vary needs one value per level");
+}
+
+TEST(KeyPath, SetsMapKeysAndListEntriesInPlace) {
+  YAML::Node doc = YAML::Load(kScene);
+  set_at(doc, "bodies.0.position", YAML::Load("[0.4, 0.5, 0.5]"), "--vary");
+  set_at(doc, "coupling.relaxation", YAML::Load("0.3"), "--vary");  // a new last key: the loader judges it
+  EXPECT_EQ(doc["bodies"][0]["position"][0].as<double>(), 0.4);
+  EXPECT_EQ(doc["coupling"]["relaxation"].as<double>(), 0.3);
+  EXPECT_EQ(doc["coupling"]["window"].as<double>(), 0.01);
+}
+
+TEST(KeyPath, PathsThatAreNotInTheSceneAreNamed) {
+  YAML::Node doc = YAML::Load(kScene);
+  const YAML::Node v = YAML::Load("1");
+  EXPECT_EQ(error_of([&] { set_at(doc, "coupler.window", v, "--vary coupler.window=1,2"); }),
+            "--vary coupler.window=1,2: the scene has no key 'coupler' (it has: time, coupling, domain, effects, "
+            "bodies, participants)");
+  EXPECT_EQ(error_of([&] { set_at(doc, "bodies.1.position", v, "--vary X"); }),
+            "--vary X: bodies is a list of 1 entries: expected an index from 0 to 0, not '1'");
+  EXPECT_EQ(error_of([&] { set_at(doc, "bodies.ball.position", v, "--vary X"); }),
+            "--vary X: bodies is a list of 1 entries: expected an index from 0 to 0, not 'ball'");
+  EXPECT_EQ(error_of([&] { set_at(doc, "coupling.window.x", v, "--vary X"); }),
+            "--vary X: coupling.window is a value, not a mapping or list: no 'x' in it");
+  EXPECT_EQ(error_of([&] { set_at(doc, "coupling..window", v, "--vary X"); }),
+            "--vary X: 'coupling..window' is not a key path (keys joined by dots: coupling.window)");
+}
+
+TEST(Refine, DividesStepsAndMultipliesCellsFromTheScenesValues) {
+  const scene::Scene s = scene::load_scene_from_string(kScene);
+  const std::vector<Varied> keys = refine(s, 2, 3);
+  ASSERT_EQ(keys.size(), 4u);
+  EXPECT_EQ(keys[0].key, "coupling.window");
+  EXPECT_EQ(keys[1].key, "participants.rigidbody.dt");
+  EXPECT_EQ(keys[2].key, "participants.fluid.dt");
+  EXPECT_EQ(keys[3].key, "participants.fluid.options.grid.cells");
+  EXPECT_EQ(text(keys[0].values[2]), "0.0025");
+  EXPECT_EQ(text(keys[1].values[1]), "0.0005");
+  EXPECT_EQ(text(keys[3].values[2]), "[40, 40, 80]");
+  EXPECT_EQ(keys[0].argument, "--refine 2");
+  // Every variant is a valid scene, its numbers read back as numbers.
+  const YAML::Node doc = YAML::Load(s.text);
+  for (std::size_t level = 0; level < 3; ++level) {
+    YAML::Emitter out;
+    out << variant(doc, keys, level);
+    const scene::Scene v = scene::load_scene_from_string(out.c_str());
+    EXPECT_DOUBLE_EQ(v.coupling.window, 0.01 / (1 << level));
+    EXPECT_EQ(v.participant("fluid")->options["grid"]["cells"][2].as<int>(), 20 << level);
+  }
+  EXPECT_EQ(doc["coupling"]["window"].as<double>(), 0.01);  // the scene itself is left as it was
+}
+
+TEST(Ratios, StepsShrinkAndCountsGrow) {
+  EXPECT_EQ(refinement_ratios(parse_vary("w=0.01,0.005,0.002")).r, (std::vector<double>{2, 2.5}));
+  const Ratios cells = refinement_ratios(parse_vary("c=[10,10,10],[20,20,20],[40,40,80]"));
+  ASSERT_EQ(cells.r.size(), 2u);
+  EXPECT_DOUBLE_EQ(cells.r[0], 2);
+  EXPECT_DOUBLE_EQ(cells.r[1], std::cbrt(16.0));  // (2 x 2 x 4)^(1/3)
+  EXPECT_EQ(refinement_ratios(parse_vary("s=iqn-ils,aitken")).why_none,
+            "the values of s are not positive numbers (or lists of them)");
+  EXPECT_EQ(refinement_ratios(parse_vary("w=0.01,0.005,0.01")).why_none,
+            "the values of w neither all grow nor all shrink from level to level");
+}
+
+}  // namespace
+}  // namespace cosim::study
