@@ -6,6 +6,7 @@ namespace {
 struct LogEvents {
   std::array<PetscLogEvent, kStageNames.size()> stages{};
   PetscLogEvent pressure_solve{};
+  PetscLogEvent forcing_sweep{};
 };
 
 const LogEvents& log_events() {
@@ -17,6 +18,7 @@ const LogEvents& log_events() {
                                                             "FluidViscousSolve", "FluidProjection", "FluidNoSlip"};
     for (std::size_t s = 0; s < names.size(); ++s) COSIM_PETSC(PetscLogEventRegister(names[s], id, &e.stages[s]));
     COSIM_PETSC(PetscLogEventRegister("FluidPressureSolve", id, &e.pressure_solve));
+    COSIM_PETSC(PetscLogEventRegister("FluidForcingSweep", id, &e.forcing_sweep));
     return e;
   }();
   return events;
@@ -32,5 +34,7 @@ StageSeconds& StageSeconds::operator+=(const StageSeconds& other) {
 PetscLogEvent log_event(Stage stage) { return log_events().stages[static_cast<std::size_t>(stage)]; }
 
 PetscLogEvent pressure_solve_event() { return log_events().pressure_solve; }
+
+PetscLogEvent forcing_sweep_event() { return log_events().forcing_sweep; }
 
 }  // namespace cosim::fluid

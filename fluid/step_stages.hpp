@@ -33,6 +33,9 @@ PetscLogEvent log_event(Stage stage);
 // solves under one KSPSolve event, and the transforms not at all; bench/fluid_throughput
 // reads it.
 PetscLogEvent pressure_solve_event();
+// FluidForcingSweep, within the body forcing: one per sweep of the immersed boundary's
+// forcing, so -log_view's count is the sweeps (bench/particulate reads it).
+PetscLogEvent forcing_sweep_event();
 
 // Runs f as `stage`: inside the stage's log event, its wall time added to seconds.
 template <class F>

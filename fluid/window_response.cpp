@@ -22,10 +22,28 @@ std::array<Axis, 3> box_around(const Eigen::Vector3d& half, double h, int flat, 
   return {axis(0), axis(1), axis(2)};
 }
 
+// The measurement's steps are logged apart from the flow's own: -log_view's stage
+// "FluidResponse".
+class LoggedApart {
+ public:
+  LoggedApart() {
+    static const PetscLogStage stage = [] {
+      PetscLogStage s = 0;
+      COSIM_PETSC(PetscLogStageRegister("FluidResponse", &s));
+      return s;
+    }();
+    COSIM_PETSC(PetscLogStagePush(stage));
+  }
+  ~LoggedApart() { PetscLogStagePop(); }
+  LoggedApart(const LoggedApart&) = delete;
+  LoggedApart& operator=(const LoggedApart&) = delete;
+};
+
 }  // namespace
 
 WindowResponse window_response(const Grid& grid, const RigidBody& body, const FluidProperties& fluid,
                                const TimeStepOptions& steps, const BodyOptions& method, double window) {
+  const LoggedApart logged;
   const geometry::Aabb extent =
       geometry::world_aabb(body.shape, geometry::Pose(Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity()));
   const Eigen::Vector3d& at = body.pose.position();

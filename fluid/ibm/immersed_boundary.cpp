@@ -14,6 +14,7 @@
 #include "fluid/ibm/volume_fraction.hpp"
 #include "fluid/navier_stokes.hpp"
 #include "fluid/petsc_check.hpp"
+#include "fluid/step_stages.hpp"
 #include "rigidbody/geometry/queries.hpp"
 #include "rigidbody/geometry/surface_sampling.hpp"
 
@@ -182,7 +183,7 @@ std::size_t ImmersedBoundary::add(RigidBody body) {
   const Eigen::Vector3d& at = body.pose.position();
   const double h = grid_.finest_width_at({at[0], at[1], at[2]});
   const std::vector<geometry::SurfaceSample> samples =
-      flat < 0 ? geometry::sample_surface(body.shape, body.pose, options_.spacing * h)
+      flat < 0 ? sampled_.at(body.shape, body.pose, options_.spacing * h)
                : geometry::sample_section(body.shape, body.pose, flat, grid_.axis(flat).centre(0), options_.spacing * h);
   Entry e(grid_, std::move(body));
   // On a two-dimensional grid a marker stands for its length of curve times the layer.
@@ -587,9 +588,11 @@ std::vector<double> ImmersedBoundary::impulses(const MarkerStencils& stencils, c
   sweeps_ = 0;
   while (sweeps_ < options_.sweeps && sharing.largest(residual) > options_.tolerance * scale) {
     ++sweeps_;
+    COSIM_PETSC(PetscLogEventBegin(forcing_sweep_event(), 0, 0, 0, 0));
     stencils.spread(scratch, direction);
     stencils.interpolate(scratch, image);
     stencils.clear(scratch);
+    COSIM_PETSC(PetscLogEventEnd(forcing_sweep_event(), 0, 0, 0, 0));
     const std::array<double, 3> curvature = norms(direction, image);
     std::array<double, 3> step{};
     for (std::size_t c = 0; c < 3; ++c) step[c] = curvature[c] > 0 ? rr[c] / curvature[c] : 0.0;

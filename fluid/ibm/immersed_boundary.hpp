@@ -44,6 +44,7 @@
 #include "fluid/ibm/kernel_stencil.hpp"
 #include "fluid/ibm/marker_sharing.hpp"
 #include "fluid/ibm/marker_stencils.hpp"
+#include "rigidbody/geometry/sampled_shapes.hpp"
 
 namespace cosim::fluid {
 
@@ -164,6 +165,7 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   const Grid& grid_;
   IbmOptions options_;
   std::vector<Entry> bodies_;
+  geometry::SampledShapes sampled_;  // the bodies' shapes, sampled once each
   std::vector<ActiveMarker> active_;  // the markers taking part in the current step here
   std::vector<std::size_t> first_marker_{0};  // body b's markers are numbered from first_marker_[b]
   // The markers whose forces this rank holds from the last step (every marker after restore()).

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "rigidbody/geometry/surface_sampling.hpp"
+#include "rigidbody/geometry/sampled_shapes.hpp"
 
 namespace cosim::program {
 
@@ -11,15 +11,19 @@ BodySurfaces::BodySurfaces(const fluid::Grid& grid, const fluid::BodyTreatment& 
   int flat = -1;
   for (int d = 0; d < 3; ++d)
     if (grid.axis(d).degenerate()) flat = d;
+  geometry::SampledShapes sampled;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const fluid::RigidBody& body = bodies.body(b);
     double h = std::numeric_limits<double>::infinity();
     for (int d = 0; d < 3; ++d)
       if (d != flat) h = std::min(h, grid.axis(d).width(grid.axis(d).cell_at(body.pose.position()[d])));
-    const auto samples = flat < 0 ? geometry::sample_surface(body.shape, body.pose, h)
-                                   : geometry::sample_section(body.shape, body.pose, flat, grid.axis(flat).centre(0), h);
     std::vector<Eigen::Vector3d> frame;
-    for (const geometry::SurfaceSample& s : samples) frame.push_back(body.pose.to_body(s.point));
+    if (flat < 0)
+      for (const geometry::SurfaceSample& s : sampled.body_frame(body.shape, h)) frame.push_back(s.point);
+    else
+      for (const geometry::SurfaceSample& s :
+           geometry::sample_section(body.shape, body.pose, flat, grid.axis(flat).centre(0), h))
+        frame.push_back(body.pose.to_body(s.point));
     points_.push_back(std::move(frame));
   }
 }

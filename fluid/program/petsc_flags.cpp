@@ -29,7 +29,11 @@ void insert_petsc_flags(const PetscFlags& flags) {
   for (const auto& [name, value] : flags) {
     PetscBool set = PETSC_FALSE;
     COSIM_PETSC(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &set));
-    if (!set) COSIM_PETSC(PetscOptionsSetValue(nullptr, name.c_str(), value.empty() ? nullptr : value.c_str()));
+    if (set) continue;
+    COSIM_PETSC(PetscOptionsSetValue(nullptr, name.c_str(), value.empty() ? nullptr : value.c_str()));
+    // PETSc starts its event log at initialisation when the command line asks for a
+    // report; asked for here, later, the log starts now so PetscFinalize can write it.
+    if (name == "-log_view") COSIM_PETSC(PetscLogDefaultBegin());
   }
 }
 

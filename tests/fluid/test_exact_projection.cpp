@@ -64,7 +64,8 @@ TEST(ExactProjection, OneLongStepIsTheSteadyStokesFlow) {
 // of it, as they lag the film's pressure and viscous stress a step behind the sphere
 // (fluid/README.md "Sphere closing on a wall").
 TEST(ExactProjection, KeepsTheDragOfASphereClosingOnAWallAtLargeSteps) {
-  const IbmOptions ibm{.corrections = 20};
+  IbmOptions ibm;
+  ibm.corrections = 20;
   const bench::WallApproachBox box{.diameters = 4, .start_gap = 1.5};
   const TimeStepOptions exact{.theta = 1, .pressure_update = PressureUpdate::exact};
   const auto run = [&](double viscous_number, const TimeStepOptions& stepping) {

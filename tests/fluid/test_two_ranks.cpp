@@ -103,7 +103,12 @@ CloudRun sphere_cloud(MPI_Comm comm) {
   BoundaryConditions bc(grid);
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(0.05), {0, 0, 0}},
                     {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 0.05});
-  ImmersedBoundary bodies(grid, {.sweeps = 200, .tolerance = 1e-10, .corrections = 30, .no_slip_tolerance = 1e-9});
+  IbmOptions tight;
+  tight.sweeps = 200;
+  tight.tolerance = 1e-10;
+  tight.corrections = 30;
+  tight.no_slip_tolerance = 1e-9;
+  ImmersedBoundary bodies(grid, tight);
   const std::vector<Eigen::Vector3d> starts = {{1.0, 1.0, 0.5}, {1.02, 0.4, 0.45}, {0.05, 1.5, 0.5},
                                                {1.5, 0.3, 0.55}, {0.4, 0.98, 0.5}};
   const std::vector<Eigen::Vector3d> velocities = {{0.3, -0.2, 0.1}, {0, 0.4, 0}, {-0.5, 0, 0.1},
