@@ -382,7 +382,8 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
       }
   }
   const std::size_t n = active_.size();
-  const MarkerStencils stencils(grid_, active_, total_markers());
+  // Built once for the step: the corrections after the projection use the same markers.
+  const MarkerStencils& stencils = stencils_.emplace(grid_, active_, total_markers());
   std::vector<double> g = last_impulses(stencils.sharing(), dt), residual(3 * n);
   stencils.spread(arrays.predicted, g);
   stencils.interpolate(arrays.predicted, residual);
@@ -520,10 +521,10 @@ struct KrylovObjects {
 // once, by the root of marker_sharing.hpp), right-preconditioned by the forcing's system
 // I S g = r, which it is where R is the identity.
 int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse& response) {
+  if (!stencils_ || stencils_->sharing().count() == 0) return 0;
   const std::size_t n = active_.size();
-  const MarkerStencils stencils(grid_, active_, total_markers());
+  const MarkerStencils& stencils = *stencils_;
   const MarkerSharing& sharing = stencils.sharing();
-  if (sharing.count() == 0) return 0;
   std::vector<double> residual;
   const double scale = slip_in(flow, stencils, residual);
   final_slip_ = sharing.largest(residual);

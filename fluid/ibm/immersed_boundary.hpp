@@ -167,6 +167,7 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   std::vector<Entry> bodies_;
   geometry::SampledShapes sampled_;  // the bodies' shapes, sampled once each
   std::vector<ActiveMarker> active_;  // the markers taking part in the current step here
+  std::optional<MarkerStencils> stencils_;  // their kernels, made by force() for the step
   std::vector<std::size_t> first_marker_{0};  // body b's markers are numbered from first_marker_[b]
   // The markers whose forces this rank holds from the last step (every marker after restore()).
   std::vector<std::pair<std::size_t, std::size_t>> held_;

@@ -30,10 +30,10 @@ MarkerSharing::MarkerSharing(MPI_Comm comm, std::span<const PetscInt> ids, Petsc
 MarkerSharing::~MarkerSharing() { PetscSFDestroy(&sf_); }
 
 void MarkerSharing::sum(std::vector<double>& values) const {
-  std::vector<double> roots(static_cast<std::size_t>(roots_), 0.0);
-  COSIM_PETSC(PetscSFReduceBegin(sf_, MPI_DOUBLE, values.data(), roots.data(), MPI_SUM));
-  COSIM_PETSC(PetscSFReduceEnd(sf_, MPI_DOUBLE, values.data(), roots.data(), MPI_SUM));
-  from_roots(roots.data(), values);
+  roots_buffer_.assign(static_cast<std::size_t>(roots_), 0.0);
+  COSIM_PETSC(PetscSFReduceBegin(sf_, MPI_DOUBLE, values.data(), roots_buffer_.data(), MPI_SUM));
+  COSIM_PETSC(PetscSFReduceEnd(sf_, MPI_DOUBLE, values.data(), roots_buffer_.data(), MPI_SUM));
+  from_roots(roots_buffer_.data(), values);
 }
 
 std::array<double, 3> MarkerSharing::dot(const std::vector<double>& a, const std::vector<double>& b) const {

@@ -45,6 +45,7 @@ class MarkerSharing {
   PetscSF sf_ = nullptr;
   PetscInt roots_ = 0;
   std::vector<double> once_;
+  mutable std::vector<double> roots_buffer_;  // sum()'s, kept: it runs every sweep
   double count_ = 0;
 };
 
