@@ -6,7 +6,7 @@ namespace {
 struct LogEvents {
   std::array<PetscLogEvent, kStageNames.size()> stages{};
   PetscLogEvent pressure_solve{};
-  PetscLogEvent forcing_sweep{};
+  PetscLogEvent forcing_iteration{};
 };
 
 const LogEvents& log_events() {
@@ -18,7 +18,7 @@ const LogEvents& log_events() {
                                                             "FluidViscousSolve", "FluidProjection", "FluidNoSlip"};
     for (std::size_t s = 0; s < names.size(); ++s) COSIM_PETSC(PetscLogEventRegister(names[s], id, &e.stages[s]));
     COSIM_PETSC(PetscLogEventRegister("FluidPressureSolve", id, &e.pressure_solve));
-    COSIM_PETSC(PetscLogEventRegister("FluidForcingSweep", id, &e.forcing_sweep));
+    COSIM_PETSC(PetscLogEventRegister("FluidForcingIteration", id, &e.forcing_iteration));
     return e;
   }();
   return events;
@@ -35,6 +35,6 @@ PetscLogEvent log_event(Stage stage) { return log_events().stages[static_cast<st
 
 PetscLogEvent pressure_solve_event() { return log_events().pressure_solve; }
 
-PetscLogEvent forcing_sweep_event() { return log_events().forcing_sweep; }
+PetscLogEvent forcing_iteration_event() { return log_events().forcing_iteration; }
 
 }  // namespace cosim::fluid

@@ -33,9 +33,10 @@ PetscLogEvent log_event(Stage stage);
 // solves under one KSPSolve event, and the transforms not at all; bench/fluid_throughput
 // reads it.
 PetscLogEvent pressure_solve_event();
-// FluidForcingSweep, within the body forcing: one per sweep of the immersed boundary's
-// forcing, so -log_view's count is the sweeps (bench/particulate reads it).
-PetscLogEvent forcing_sweep_event();
+// FluidForcingIteration, within the body forcing and the no-slip corrections: one per
+// iteration of the immersed boundary's forcing system (forcing_system.hpp), so -log_view's
+// count is the iterations (bench/particulate reads it).
+PetscLogEvent forcing_iteration_event();
 
 // Runs f as `stage`: inside the stage's log event, its wall time added to seconds.
 template <class F>

@@ -348,7 +348,7 @@ int main(int argc, char** argv) {
   double retraction = -1, curvature = 0;
   app.add_option("--retraction", retraction, "IBM marker retraction in cell widths (constant part)");
   app.add_option("--curvature-retraction", curvature, "IBM marker retraction's curvature part (with --retraction)");
-  app.add_option("--sweeps", ibm.sweeps, "IBM forcing sweeps per step");
+  app.add_option("--sweeps", ibm.sweeps, "IBM forcing solve's iterations per step, at most");
   app.add_option("--corrections", ibm.corrections, "IBM no-slip corrections per step after the projection, at most")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--no-slip-tolerance", ibm.no_slip_tolerance,

@@ -180,7 +180,7 @@ def run_case(count, ranks, windows, out, bin_dir):
         "rest_s": float(np.mean(wall - fluid - rigid)),
         **{f"{s}_ms": 1e3 * stages.get(s, 0) / windows for s in STAGES},
         "ibm_share": forcing / step if step > 0 else float("nan"),
-        "sweeps_per_step": events.get("FluidForcingSweep", (0, 0.0))[0] / windows,
+        "iterations_per_step": events.get("FluidForcingIteration", (0, 0.0))[0] / windows,
         "start_s": total - float(np.sum(every)),  # the programs' start and set-up
         "fluid_MB": memory.peak["cosim-fluid"],
         "rigid_MB": memory.peak["cosim-rigidbody"],
@@ -191,7 +191,7 @@ def run_case(count, ranks, windows, out, bin_dir):
 def markdown(rows):
     head = ("| bodies | fluid ranks | cells | start [s] | window [s] | per body [ms] | fluid [s] | rigid [s] "
             "| coupler and wire [s] | RHS, forcing, viscous, projection, no-slip [ms] | IB share of a step "
-            "| forcing sweeps per step | peak MB: fluid (per rank), rigid, cosim |")
+            "| forcing iterations per step | peak MB: fluid (per rank), rigid, cosim |")
     lines = [head, "|" + "---|" * 13]
     for r in rows:
         r = {k: float(v) for k, v in r.items()}
@@ -199,7 +199,7 @@ def markdown(rows):
         lines.append(
             f"| {r['bodies']:.0f} | {r['ranks']:.0f} | {r['cells']:,.0f} | {r['start_s']:.1f} | {r['window_s']:.3f} "
             f"| {r['per_body_ms']:.2f} | {r['fluid_s']:.3f} | {r['rigid_s']:.3f} | {r['rest_s']:.3f} | {stages} "
-            f"| {100 * r['ibm_share']:.0f} % | {r['sweeps_per_step']:.1f} "
+            f"| {100 * r['ibm_share']:.0f} % | {r['iterations_per_step']:.1f} "
             f"| {r['fluid_MB']:.0f}, {r['rigid_MB']:.0f}, {r['cosim_MB']:.0f} |")
     return "\n".join(lines) + "\n"
 

@@ -364,9 +364,8 @@ double root_mean_square(const MarkerSharing& sharing, const std::vector<double>&
 
 // The markers' impulses g_l = dt F_l dV_l (velocity times volume, per component) are those
 // whose spread brings the interpolated velocity to the body's: B g = U - I[u~], where
-// B = I S, B_lm = sum_x w_l(x) w_m(x) / dV_x, is symmetric positive semi-definite, so
-// conjugate gradients solve it, one spread and one interpolation a sweep, from the last
-// step's forces. Once u~ has been read, `predicted` serves as the sweeps' scratch field.
+// B = I S, B_lm = sum_x w_l(x) w_m(x) / dV_x, is symmetric positive definite
+// (forcing_system.hpp), solved from the last step's impulses.
 void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingArrays& arrays) {
   collect_active_markers();
   update_fractions();
@@ -383,14 +382,14 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
   }
   const std::size_t n = active_.size();
   // Built once for the step: the corrections after the projection use the same markers.
-  const MarkerStencils& stencils = stencils_.emplace(grid_, active_, total_markers());
+  system_.reset();
+  const MarkerStencils& stencils = stencils_.emplace(grid_, active_, roots_by_body(grid_.comm(), first_marker_));
+  const ForcingSystem& system = system_.emplace(stencils, first_marker_);
   std::vector<double> g = last_impulses(stencils.sharing(), dt), residual(3 * n);
-  stencils.spread(arrays.predicted, g);
   stencils.interpolate(arrays.predicted, residual);
-  stencils.clear(arrays.predicted);
   const double scale = slip_against(active_, stencils.sharing(), residual);
-  const std::vector<double> correction = impulses(stencils, arrays.predicted, residual, scale);
-  for (std::size_t i = 0; i < 3 * n; ++i) g[i] += correction[i];
+  sweeps_ = system.solve(g, residual, options_.tolerance * scale, options_.sweeps);
+  slip_ = stencils.sharing().largest(residual);
   stencils.spread(arrays.rhs, g);
   for (Entry& e : bodies_) e.forcing = e.forcing_moment = Eigen::Vector3d::Zero();
   // Markers that leave this rank, or every body, start afresh when they come back.
@@ -529,10 +528,12 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
   const double scale = slip_in(flow, stencils, residual);
   final_slip_ = sharing.largest(residual);
   if (options_.corrections == 0 || root_mean_square(sharing, residual) <= options_.no_slip_tolerance * scale) return 0;
-  const double slip = slip_;
-  const int sweeps = sweeps_;
-  Correction k{&stencils, &response, [&](std::vector<double>& r) { return impulses(stencils, response.rhs(), r, scale); },
-               std::vector<double>(3 * n)};
+  const auto forcing_solve = [&](std::vector<double>& r) {
+    std::vector<double> g(r.size(), 0.0);
+    system_->solve(g, r, options_.tolerance * scale, options_.sweeps);
+    return g;
+  };
+  Correction k{&stencils, &response, forcing_solve, std::vector<double>(3 * n)};
   const PetscInt roots = sharing.roots();
   KrylovObjects o;
   COSIM_PETSC(VecCreateMPI(grid_.comm(), roots, PETSC_DETERMINE, &o.rhs));
@@ -558,8 +559,6 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
   COSIM_PETSC(KSPSolve(ksp, o.rhs, o.g));
   PetscInt iterations = 0;
   COSIM_PETSC(KSPGetIterationNumber(ksp, &iterations));
-  slip_ = slip;
-  sweeps_ = sweeps;
   if (iterations == 0) return 0;
   const std::vector<double> impulses_found = read(sharing, o.g, 3 * n);
   stencils.spread(response.rhs(), impulses_found);
@@ -568,47 +567,6 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
   slip_in(flow, stencils, residual);
   final_slip_ = sharing.largest(residual);
   return static_cast<int>(iterations) + 1;
-}
-
-std::vector<double> ImmersedBoundary::impulses(const MarkerStencils& stencils, const FaceArrays& scratch,
-                                               std::vector<double>& residual, double scale) {
-  const std::size_t size = residual.size();
-  std::vector<double> direction(size), image(size), correction(size, 0.0);
-  // Jacobi-preconditioned: B's diagonal, sum_x w_l(x)^2 / dV_x, evens out how strongly
-  // markers of different spacing and volume see themselves.
-  const std::vector<double> diagonal = stencils.diagonal();
-  std::vector<double> scaled(size);
-  const auto precondition = [&] {
-    for (std::size_t i = 0; i < size; ++i) scaled[i] = diagonal[i] > 0 ? residual[i] / diagonal[i] : 0.0;
-  };
-  precondition();
-  direction = scaled;
-  const MarkerSharing& sharing = stencils.sharing();
-  const auto norms = [&](const std::vector<double>& a, const std::vector<double>& b) { return sharing.dot(a, b); };
-  std::array<double, 3> rr = norms(residual, scaled);
-  sweeps_ = 0;
-  while (sweeps_ < options_.sweeps && sharing.largest(residual) > options_.tolerance * scale) {
-    ++sweeps_;
-    COSIM_PETSC(PetscLogEventBegin(forcing_sweep_event(), 0, 0, 0, 0));
-    stencils.spread(scratch, direction);
-    stencils.interpolate(scratch, image);
-    stencils.clear(scratch);
-    COSIM_PETSC(PetscLogEventEnd(forcing_sweep_event(), 0, 0, 0, 0));
-    const std::array<double, 3> curvature = norms(direction, image);
-    std::array<double, 3> step{};
-    for (std::size_t c = 0; c < 3; ++c) step[c] = curvature[c] > 0 ? rr[c] / curvature[c] : 0.0;
-    for (std::size_t i = 0; i < size; ++i) {
-      correction[i] += step[i % 3] * direction[i];
-      residual[i] -= step[i % 3] * image[i];
-    }
-    precondition();
-    const std::array<double, 3> next = norms(residual, scaled);
-    for (std::size_t i = 0; i < size; ++i)
-      direction[i] = scaled[i] + (rr[i % 3] > 0 ? next[i % 3] / rr[i % 3] : 0.0) * direction[i];
-    rr = next;
-  }
-  slip_ = sharing.largest(residual);
-  return correction;
 }
 
 void ImmersedBoundary::add_impulses(const std::vector<double>& g, double dt, const MarkerSharing& sharing) {

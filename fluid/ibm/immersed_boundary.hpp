@@ -12,12 +12,11 @@
 // interpolates to the body's velocity at every marker, U_l = sum_x u delta(x - X_l) h^3,
 // and the force goes into the viscous solve's right-hand side. Multidirect forcing finds
 // them by sweeps that each interpolate, correct F_l by the missing velocity over dt and
-// spread the correction, so that every marker sees its neighbours' forcing; here each sweep
-// is a conjugate-gradient iteration on that same linear system (symmetric in the impulses
-// dt F_l dV_l), which converges in a few sweeps where the plain correction stalls on the
-// system's slow modes, and the sweeps go on until the markers' velocity is met to
-// `tolerance`. Each step starts from the forces of the last one, so a steady flow needs
-// no sweep at all. A marker takes part on the ranks whose faces its kernel touches, its
+// spread the correction, so that every marker sees its neighbours' forcing; here that same
+// linear system (symmetric in the impulses dt F_l dV_l) is assembled from the markers'
+// kernels and solved by conjugate gradients with each body's block solved exactly
+// (forcing_system.hpp), until the markers' velocity is met to `tolerance`. Each step
+// starts from the forces of the last one, so a steady flow needs no iteration at all. A marker takes part on the ranks whose faces its kernel touches, its
 // interpolated velocity summed over them (marker_sharing.hpp), so a rank's forcing work
 // grows with the bodies near it and no ghost layer is needed whatever the kernel's width.
 // The projection then runs over the whole domain with the fluid's own, never-changing
@@ -41,6 +40,7 @@
 #include "fluid/grid.hpp"
 #include "fluid/ibm/body_distance.hpp"
 #include "fluid/ibm/delta_kernel.hpp"
+#include "fluid/ibm/forcing_system.hpp"
 #include "fluid/ibm/kernel_stencil.hpp"
 #include "fluid/ibm/marker_sharing.hpp"
 #include "fluid/ibm/marker_stencils.hpp"
@@ -67,9 +67,9 @@ Retraction calibrated_retraction(DeltaKernel kernel);
 
 struct IbmOptions {
   DeltaKernel kernel = DeltaKernel::roma3;
-  int sweeps = 50;          // forcing sweeps per step, at most
+  int sweeps = 50;          // iterations of the forcing system per solve, at most
   // Largest slip at a marker, of the largest velocity there. The load moves with it by
-  // steps as the sweep count changes, so implicit coupling, which iterates to 1e-4 of the
+  // steps as the iteration count changes, so implicit coupling, which iterates to 1e-4 of the
   // load, needs it well below that (at 1e-4 a window stalled at 1.6e-4).
   double tolerance = 1e-6;
   // After the projection the forcing corrects the slip the viscous solve and the projection
@@ -148,11 +148,6 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   void collect_active_markers();
   void update_fractions();  // of every body at this rank's faces, where it is now
   std::vector<double> inner_momenta(const NavierStokes& flow) const;  // 6 per body, summed over ranks
-  // The impulses whose spread field interpolates to `residual`, by conjugate gradients from
-  // zero to the tolerance of `scale`; `scratch` holds their field between sweeps (zero on
-  // entry and on return), and `residual` ends as what is left of it.
-  std::vector<double> impulses(const MarkerStencils& stencils, const FaceArrays& scratch,
-                               std::vector<double>& residual, double scale);
   // The interpolated velocity's misses at the markers (3 per marker), and their scale.
   double slip_in(const NavierStokes& flow, const MarkerStencils& stencils, std::vector<double>& residual) const;
   // Adds the markers' impulses dt F_l dV_l to their forces and their bodies' forcing (each
@@ -168,6 +163,7 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   geometry::SampledShapes sampled_;  // the bodies' shapes, sampled once each
   std::vector<ActiveMarker> active_;  // the markers taking part in the current step here
   std::optional<MarkerStencils> stencils_;  // their kernels, made by force() for the step
+  std::optional<ForcingSystem> system_;     // and their forcing system
   std::vector<std::size_t> first_marker_{0};  // body b's markers are numbered from first_marker_[b]
   // The markers whose forces this rank holds from the last step (every marker after restore()).
   std::vector<std::pair<std::size_t, std::size_t>> held_;

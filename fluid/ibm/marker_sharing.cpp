@@ -7,10 +7,11 @@
 
 namespace cosim::fluid {
 
-MarkerSharing::MarkerSharing(MPI_Comm comm, std::span<const PetscInt> ids, PetscInt total) : comm_(comm) {
+MarkerSharing::MarkerSharing(MPI_Comm comm, std::span<const PetscInt> ids, PetscInt roots)
+    : comm_(comm), roots_(roots) {
   PetscLayout layout = nullptr;
-  COSIM_PETSC(PetscLayoutCreateFromSizes(comm, PETSC_DECIDE, total, 1, &layout));
-  COSIM_PETSC(PetscLayoutGetLocalSize(layout, &roots_));
+  COSIM_PETSC(PetscLayoutCreateFromSizes(comm, roots, PETSC_DECIDE, 1, &layout));
+  COSIM_PETSC(PetscLayoutGetRange(layout, &first_root_, nullptr));
   COSIM_PETSC(PetscSFCreate(comm, &sf_));
   COSIM_PETSC(PetscSFSetGraphLayout(sf_, layout, static_cast<PetscInt>(ids.size()), nullptr, PETSC_COPY_VALUES,
                                     ids.data()));

@@ -3,8 +3,8 @@
 // memory grow with the bodies near it, not with all of them. A marker whose kernel spans
 // several ranks is held by each (a leaf of a PETSc star forest) and its interpolated
 // velocity is the sum of their parts, joined through one root per value: the values'
-// global numbers laid out evenly over the ranks, so the messages, too, go with a rank's own
-// markers. Every holder then holds the same values and runs the same arithmetic on them;
+// global numbers laid out over the ranks in ranges the caller chooses (whole bodies each,
+// about evenly: forcing_system.hpp), so the messages, too, go with a rank's own markers. Every holder then holds the same values and runs the same arithmetic on them;
 // sums over the markers count each once.
 #include <petscsf.h>
 
@@ -16,8 +16,9 @@ namespace cosim::fluid {
 
 class MarkerSharing {
  public:
-  // `ids`: the global number of each value this rank holds, `total` values in all (collective).
-  MarkerSharing(MPI_Comm comm, std::span<const PetscInt> ids, PetscInt total);
+  // `ids`: the global number of each value this rank holds; `roots`: how many values' roots
+  // this rank keeps, the next range of global numbers after the lower ranks' (collective).
+  MarkerSharing(MPI_Comm comm, std::span<const PetscInt> ids, PetscInt roots);
   ~MarkerSharing();
   MarkerSharing(const MarkerSharing&) = delete;
   MarkerSharing& operator=(const MarkerSharing&) = delete;
@@ -35,15 +36,18 @@ class MarkerSharing {
   // The share of value i this rank counts in a sum over the markers: 1 / its holders.
   double once(std::size_t i) const { return once_[i]; }
 
-  // This rank's roots, the values a parallel Krylov solve over the markers owns here.
+  // This rank's roots, the values a parallel Krylov solve over the markers owns here, and
+  // the global number of the first.
   PetscInt roots() const { return roots_; }
+  PetscInt first_root() const { return first_root_; }
+  MPI_Comm comm() const { return comm_; }
   void to_roots(const std::vector<double>& leaves, PetscScalar* roots) const;  // any holder's value
   void from_roots(const PetscScalar* roots, std::vector<double>& leaves) const;
 
  private:
   MPI_Comm comm_;
   PetscSF sf_ = nullptr;
-  PetscInt roots_ = 0;
+  PetscInt roots_ = 0, first_root_ = 0;
   std::vector<double> once_;
   mutable std::vector<double> roots_buffer_;  // sum()'s, kept: it runs every sweep
   double count_ = 0;

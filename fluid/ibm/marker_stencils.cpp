@@ -1,5 +1,7 @@
 #include "fluid/ibm/marker_stencils.hpp"
 
+#include <algorithm>
+
 namespace cosim::fluid {
 
 namespace {
@@ -14,8 +16,8 @@ std::vector<PetscInt> value_ids(std::span<const ActiveMarker> markers) {
 
 }  // namespace
 
-MarkerStencils::MarkerStencils(const Grid& grid, std::span<const ActiveMarker> markers, std::size_t total)
-    : grid_(grid), sharing_(grid.comm(), value_ids(markers), static_cast<PetscInt>(3 * total)) {
+MarkerStencils::MarkerStencils(const Grid& grid, std::span<const ActiveMarker> markers, PetscInt roots)
+    : grid_(grid), ids_(value_ids(markers)), sharing_(grid.comm(), ids_, roots) {
   for (int c = 0; c < 3; ++c) owned_[static_cast<std::size_t>(c)] = grid.owned(grid.velocity_dm(c));
   const std::size_t n = markers.size();
   first_.assign(3 * n + 1, 0);
@@ -50,12 +52,6 @@ void MarkerStencils::spread(const FaceArrays& field, const std::vector<double>& 
       for (std::size_t t = first_[i]; t < first_[i + 1]; ++t) o[i % 3][touches_[t].offset] += g[i] * touches_[t].spread;
 }
 
-void MarkerStencils::clear(const FaceArrays& field) const {
-  const auto o = origins(field);
-  for (std::size_t i = 0; i + 1 < first_.size(); ++i)
-    for (std::size_t t = first_[i]; t < first_[i + 1]; ++t) o[i % 3][touches_[t].offset] = 0;
-}
-
 void MarkerStencils::interpolate(const FaceArrays& field, std::vector<double>& out) const {
   const auto o = origins(field);
   for (std::size_t i = 0; i + 1 < first_.size(); ++i) {
@@ -66,12 +62,50 @@ void MarkerStencils::interpolate(const FaceArrays& field, std::vector<double>& o
   sharing_.sum(out);
 }
 
-std::vector<double> MarkerStencils::diagonal() const {
-  std::vector<double> d(first_.size() - 1, 0.0);
-  for (std::size_t i = 0; i < d.size(); ++i)
-    for (std::size_t t = first_[i]; t < first_[i + 1]; ++t) d[i] += touches_[t].weight * touches_[t].spread;
-  sharing_.sum(d);
-  return d;
+std::vector<MarkerStencils::Product> MarkerStencils::products() const {
+  const std::size_t values = first_.size() - 1;
+  // The touches of each face, as lists threaded through `next` from the face's `head`.
+  std::array<std::vector<std::ptrdiff_t>, 3> head;
+  for (std::size_t c = 0; c < 3; ++c) {
+    const Box& b = owned_[c];
+    head[c].assign(static_cast<std::size_t>(std::max<PetscInt>(0, (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) *
+                                                                      (b.hi[2] - b.lo[2]))),
+                   -1);
+  }
+  std::vector<std::ptrdiff_t> next(touches_.size());
+  std::vector<std::size_t> value_of(touches_.size());
+  for (std::size_t i = 0; i < values; ++i)
+    for (std::size_t t = first_[i]; t < first_[i + 1]; ++t) {
+      auto& h = head[i % 3][static_cast<std::size_t>(touches_[t].offset)];
+      next[t] = h;
+      h = static_cast<std::ptrdiff_t>(t);
+      value_of[t] = i;
+    }
+  // Row i gathers its products in `row`, the columns it met in `met`.
+  std::vector<double> row(values, 0.0);
+  std::vector<char> seen(values, 0);
+  std::vector<std::size_t> met;
+  std::vector<Product> out;
+  for (std::size_t i = 0; i < values; ++i) {
+    for (std::size_t t = first_[i]; t < first_[i + 1]; ++t)
+      for (std::ptrdiff_t k = head[i % 3][static_cast<std::size_t>(touches_[t].offset)]; k >= 0;
+           k = next[static_cast<std::size_t>(k)]) {
+        const std::size_t j = value_of[static_cast<std::size_t>(k)];
+        if (!seen[j]) {
+          seen[j] = 1;
+          met.push_back(j);
+        }
+        row[j] += touches_[t].weight * touches_[static_cast<std::size_t>(k)].spread;
+      }
+    std::sort(met.begin(), met.end());  // the columns in order, as the matrix keeps them
+    for (std::size_t j : met) {
+      out.push_back({ids_[i], ids_[j], row[j]});
+      row[j] = 0;
+      seen[j] = 0;
+    }
+    met.clear();
+  }
+  return out;
 }
 
 }  // namespace cosim::fluid

@@ -32,18 +32,23 @@ using FaceArrays = std::array<PetscScalar***, 3>;
 
 class MarkerStencils {
  public:
-  // `total`: all bodies' markers, on every rank (collective).
-  MarkerStencils(const Grid& grid, std::span<const ActiveMarker> markers, std::size_t total);
+  // `roots`: the values whose roots this rank keeps (marker_sharing.hpp; collective).
+  MarkerStencils(const Grid& grid, std::span<const ActiveMarker> markers, PetscInt roots);
 
   // field += sum_l g_l w_l / dV, g holding 3 values (x, y, z) per marker.
   void spread(const FaceArrays& field, const std::vector<double>& g) const;
-  // field = 0 at every point of the markers' kernels.
-  void clear(const FaceArrays& field) const;
   // out_l = sum_x w_l field, summed over the ranks that hold marker l (collective).
   void interpolate(const FaceArrays& field, std::vector<double>& out) const;
-  // sum_x w_l^2 / dV per value: the diagonal of interpolating what is spread, summed over
-  // the ranks (collective).
-  std::vector<double> diagonal() const;
+  // The entries of B = I S, interpolating what is spread, that this rank's faces make:
+  // sum_x w_i(x) w_j(x) / dV_x over them for each pair of values of one component it holds,
+  // rows and columns by the values' global numbers, in the order of the values this rank
+  // holds and then of the columns. A value's row of B is the sum of its entries over the
+  // ranks.
+  struct Product {
+    PetscInt row, column;
+    double value;
+  };
+  std::vector<Product> products() const;
   const MarkerSharing& sharing() const { return sharing_; }
 
  private:
@@ -58,6 +63,7 @@ class MarkerStencils {
   std::array<Box, 3> owned_;
   std::vector<Touch> touches_;
   std::vector<std::size_t> first_;  // value i's touches: first_[i] .. first_[i + 1]
+  std::vector<PetscInt> ids_;       // value i's global number
   MarkerSharing sharing_;
 };
 
