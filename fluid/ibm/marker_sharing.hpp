@@ -49,7 +49,7 @@ class MarkerSharing {
   PetscSF sf_ = nullptr;
   PetscInt roots_ = 0, first_root_ = 0;
   std::vector<double> once_;
-  mutable std::vector<double> roots_buffer_;  // sum()'s, kept: it runs every sweep
+  mutable std::vector<double> roots_buffer_;  // sum()'s, kept: it runs several times a step
   double count_ = 0;
 };
 

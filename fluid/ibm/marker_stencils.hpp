@@ -1,9 +1,9 @@
 #pragma once
 // The markers that take part in a step on this rank (those whose kernels touch its faces),
-// and their kernels' points on this rank flattened once: the forcing's sweeps spread onto,
-// interpolate from and clear them many times, and the per-point index and face-volume
-// arithmetic took most of their time. A point is its offset from the owned box's first
-// face, the same in every global vector of that component's DMDA.
+// and their kernels' points on this rank flattened once: the forcing assembles its system
+// from them, and the step and the no-slip corrections spread onto and interpolate from
+// them. A point is its offset from the owned box's first face, the same in every global
+// vector of that component's DMDA.
 #include <petscdmda.h>
 
 #include <Eigen/Core>
