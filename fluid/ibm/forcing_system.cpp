@@ -126,13 +126,8 @@ ForcingSystem::~ForcingSystem() {
 int ForcingSystem::solve(std::vector<double>& g, std::vector<double>& residual, double tolerance,
                          int max_iterations) const {
   const MarkerSharing& sharing = stencils_.sharing();
-  PetscScalar* a = nullptr;
-  COSIM_PETSC(VecGetArray(rhs_, &a));
-  sharing.to_roots(residual, a);
-  COSIM_PETSC(VecRestoreArray(rhs_, &a));
-  COSIM_PETSC(VecGetArray(g_, &a));
-  sharing.to_roots(g, a);
-  COSIM_PETSC(VecRestoreArray(g_, &a));
+  sharing.to_roots(residual, rhs_);
+  sharing.to_roots(g, g_);
   Test test{tolerance, work_, left_};
   COSIM_PETSC(KSPSetConvergenceTest(ksp_, converged, &test, nullptr));
   COSIM_PETSC(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
@@ -143,13 +138,8 @@ int ForcingSystem::solve(std::vector<double>& g, std::vector<double>& residual, 
   // What is left: r - B g.
   COSIM_PETSC(MatMult(B_, g_, work_));
   COSIM_PETSC(VecAYPX(work_, -1.0, rhs_));
-  const PetscScalar* read = nullptr;
-  COSIM_PETSC(VecGetArrayRead(g_, &read));
-  sharing.from_roots(read, g);
-  COSIM_PETSC(VecRestoreArrayRead(g_, &read));
-  COSIM_PETSC(VecGetArrayRead(work_, &read));
-  sharing.from_roots(read, residual);
-  COSIM_PETSC(VecRestoreArrayRead(work_, &read));
+  sharing.from_roots(g_, g);
+  sharing.from_roots(work_, residual);
   return static_cast<int>(iterations);
 }
 

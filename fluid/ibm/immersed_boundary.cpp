@@ -451,23 +451,6 @@ struct Correction {
   std::vector<double> image;
 };
 
-// The markers' values this rank holds, from the Krylov vector's roots (collective).
-std::vector<double> read(const MarkerSharing& sharing, Vec v, std::size_t held) {
-  const PetscScalar* a = nullptr;
-  COSIM_PETSC(VecGetArrayRead(v, &a));
-  std::vector<double> out(held);
-  sharing.from_roots(a, out);
-  COSIM_PETSC(VecRestoreArrayRead(v, &a));
-  return out;
-}
-
-void write(const MarkerSharing& sharing, const std::vector<double>& values, Vec v) {
-  PetscScalar* a = nullptr;
-  COSIM_PETSC(VecGetArray(v, &a));
-  sharing.to_roots(values, a);
-  COSIM_PETSC(VecRestoreArray(v, &a));
-}
-
 // y = the interpolated change of the step's velocity that impulses x cause. An exception
 // must not cross PETSc's C frames: it becomes PETSc's error, which KSPSolve returns.
 PetscErrorCode respond(Mat A, Vec x, Vec y) {
@@ -476,9 +459,11 @@ PetscErrorCode respond(Mat A, Vec x, Vec y) {
   PetscCall(MatShellGetContext(A, &k));
   try {
     const MarkerSharing& sharing = k->stencils->sharing();
-    k->stencils->spread(k->response->rhs(), read(sharing, x, k->image.size()));
+    std::vector<double> impulses(k->image.size());
+    sharing.from_roots(x, impulses);
+    k->stencils->spread(k->response->rhs(), impulses);
     k->stencils->interpolate(k->response->change(), k->image);
-    write(sharing, k->image, y);
+    sharing.to_roots(k->image, y);
   } catch (const std::exception& e) {
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
   }
@@ -492,8 +477,9 @@ PetscErrorCode precondition(PC pc, Vec x, Vec y) {
   PetscCall(PCShellGetContext(pc, &k));
   try {
     const MarkerSharing& sharing = k->stencils->sharing();
-    std::vector<double> slip = read(sharing, x, k->image.size());
-    write(sharing, k->precondition(slip), y);
+    std::vector<double> slip(k->image.size());
+    sharing.from_roots(x, slip);
+    sharing.to_roots(k->precondition(slip), y);
   } catch (const std::exception& e) {
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
   }
@@ -538,7 +524,7 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
   KrylovObjects o;
   COSIM_PETSC(VecCreateMPI(grid_.comm(), roots, PETSC_DETERMINE, &o.rhs));
   COSIM_PETSC(VecDuplicate(o.rhs, &o.g));
-  write(sharing, residual, o.rhs);
+  sharing.to_roots(residual, o.rhs);
   COSIM_PETSC(MatCreateShell(grid_.comm(), roots, roots, PETSC_DETERMINE, PETSC_DETERMINE, &k, &o.A));
   COSIM_PETSC(MatShellSetOperation(o.A, MATOP_MULT, reinterpret_cast<void (*)(void)>(respond)));
   COSIM_PETSC(KSPCreate(grid_.comm(), &o.ksp));
@@ -560,7 +546,8 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
   PetscInt iterations = 0;
   COSIM_PETSC(KSPGetIterationNumber(ksp, &iterations));
   if (iterations == 0) return 0;
-  const std::vector<double> impulses_found = read(sharing, o.g, 3 * n);
+  std::vector<double> impulses_found(3 * n);
+  sharing.from_roots(o.g, impulses_found);
   stencils.spread(response.rhs(), impulses_found);
   response.apply();
   add_impulses(impulses_found, dt, sharing);

@@ -66,4 +66,18 @@ void MarkerSharing::from_roots(const PetscScalar* roots, std::vector<double>& le
   COSIM_PETSC(PetscSFBcastEnd(sf_, MPI_DOUBLE, roots, leaves.data(), MPI_REPLACE));
 }
 
+void MarkerSharing::to_roots(const std::vector<double>& leaves, Vec roots) const {
+  PetscScalar* a = nullptr;
+  COSIM_PETSC(VecGetArray(roots, &a));
+  to_roots(leaves, a);
+  COSIM_PETSC(VecRestoreArray(roots, &a));
+}
+
+void MarkerSharing::from_roots(Vec roots, std::vector<double>& leaves) const {
+  const PetscScalar* a = nullptr;
+  COSIM_PETSC(VecGetArrayRead(roots, &a));
+  from_roots(a, leaves);
+  COSIM_PETSC(VecRestoreArrayRead(roots, &a));
+}
+
 }  // namespace cosim::fluid

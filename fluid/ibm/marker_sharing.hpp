@@ -7,6 +7,7 @@
 // about evenly: forcing_system.hpp), so the messages, too, go with a rank's own markers. Every holder then holds the same values and runs the same arithmetic on them;
 // sums over the markers count each once.
 #include <petscsf.h>
+#include <petscvec.h>
 
 #include <array>
 #include <span>
@@ -41,10 +42,14 @@ class MarkerSharing {
   PetscInt roots() const { return roots_; }
   PetscInt first_root() const { return first_root_; }
   MPI_Comm comm() const { return comm_; }
-  void to_roots(const std::vector<double>& leaves, PetscScalar* roots) const;  // any holder's value
-  void from_roots(const PetscScalar* roots, std::vector<double>& leaves) const;
+  // A parallel vector of this rank's roots from the values held (any holder's), and back.
+  void to_roots(const std::vector<double>& leaves, Vec roots) const;
+  void from_roots(Vec roots, std::vector<double>& leaves) const;
 
  private:
+  void to_roots(const std::vector<double>& leaves, PetscScalar* roots) const;
+  void from_roots(const PetscScalar* roots, std::vector<double>& leaves) const;
+
   MPI_Comm comm_;
   PetscSF sf_ = nullptr;
   PetscInt roots_ = 0, first_root_ = 0;
