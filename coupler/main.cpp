@@ -2,6 +2,7 @@
 //   cosim check scene.yaml          validate a scene (each program reads its section), show what would run
 //   cosim run scene.yaml [-o f.h5]  run it
 //   cosim run --resume f.h5         continue a run from its last checkpoint
+//   cosim calibrate                 measure this host's costs for the estimates (docs/cost.md)
 //   cosim study scene.yaml --vary KEY=V1,V2,V3 --measure NAME=EXPR
 //                                   run the scene at several resolutions: each quantity's value,
 //                                   observed order, extrapolate and GCI against the runs' cost
@@ -12,8 +13,11 @@
 
 #include <iostream>
 
+#include "cosim_git_hash.hpp"
+#include "coupler/estimate/calibrate.hpp"
+#include "coupler/estimate/estimate.hpp"
+#include "coupler/estimate/program_work.hpp"
 #include "coupler/launcher/command.hpp"
-#include "coupler/launcher/section_check.hpp"
 #include "coupler/run/coupler.hpp"
 #include "coupler/scene/error.hpp"
 #include "coupler/scene/plan.hpp"
@@ -29,10 +33,9 @@ int check(const std::string& file) {
   const auto measures = cosim::study::measures_of(scene, {});
   const auto plan = cosim::scene::plan_participants(scene);
   for (const auto& w : cosim::scene::unused_materials(scene)) spdlog::warn("{}", w);
-  const auto refused = cosim::launcher::refused_sections(scene, plan.start, cosim::launcher::own_directory());
-  if (!refused.empty()) {
-    std::cerr << "cosim: invalid scene: " << file << ": " << fmt::format("{}", fmt::join(refused, ", "))
-              << (refused.size() > 1 ? " refused their sections" : " refused its section") << " (above)\n";
+  const auto sections = cosim::estimate::read_sections(scene, plan.start);
+  if (!sections.refused.empty()) {
+    std::cerr << "cosim: " << cosim::estimate::refused_message(scene, sections.refused) << "\n";
     return 2;
   }
   std::cout << file << ": valid; " << scene.bodies.size() << " bodies, " << scene.windows()
@@ -51,6 +54,7 @@ int check(const std::string& file) {
   }
   for (const auto& s : plan.skipped) std::cout << "  not started: " << s << "\n";
   for (const auto& m : measures) std::cout << "  study measure " << m.name << ": " << m.text << "\n";
+  std::cout << cosim::estimate::estimate_here(scene, plan.start, sections.work, COSIM_GIT_HASH) << "\n";
   return 0;
 }
 
@@ -89,6 +93,12 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("-q,--quiet", quiet, "No progress line");
   scene_opt->excludes(resume_opt);
 
+  double calibrate_scale = 1;
+  auto* calibrate_cmd =
+      app.add_subcommand("calibrate", "Measure what runs cost on this host, for the estimate before every run");
+  calibrate_cmd->add_option("--scale", calibrate_scale, "Make each calibration run this many times longer")
+      ->check(CLI::Range(0.1, 100.0));
+
   cosim::study::Request study_request;
   auto* study_cmd = app.add_subcommand("study", "Run a scene at several resolutions: what accuracy costs in time");
   study_cmd->add_option("scene", study_request.scene, "Scene file (YAML)")->required();
@@ -125,6 +135,7 @@ int main(int argc, char** argv) {
 
   return cosim::scene::exit_code("cosim", [&] {
     if (*check_cmd) return check(check_file);
+    if (*calibrate_cmd) return cosim::estimate::calibrate(cosim::launcher::own_directory() / "cosim", calibrate_scale);
     if (*study_cmd) {
       study_request.command = command_line(argc, argv);
       try {

@@ -111,10 +111,10 @@ double Grid::face_volume(int c, const Index& p) const {
   return v;
 }
 
-double Grid::finest_width_at(const Point& x) const {
+double finest_width_at(const Axes& axes, const Point& x) {
   double h = std::numeric_limits<double>::infinity();
-  for (int d = 0; d < 3; ++d)
-    if (!axis(d).degenerate()) h = std::min(h, axis(d).width(axis(d).cell_at(x[static_cast<std::size_t>(d)])));
+  for (const std::size_t d : {0u, 1u, 2u})
+    if (!axes[d].degenerate()) h = std::min(h, axes[d].width(axes[d].cell_at(x[d])));
   return h;
 }
 

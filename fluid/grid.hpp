@@ -38,6 +38,12 @@ void for_each_index(const Box& b, F&& f) {
 // Component index of a cell-centred quantity in position(), next to the velocity components 0..2.
 inline constexpr int kCellCentre = -1;
 
+using Axes = std::array<Axis, 3>;  // x, y, z
+
+// The smallest width of the cell at x over the axes that carry variation (all but a
+// two-dimensional grid's one periodic cell): how fine the grid is where a body sits.
+double finest_width_at(const Axes& axes, const Point& x);
+
 class Grid {
  public:
   Grid(MPI_Comm comm, std::array<Axis, 3> axes);
@@ -47,6 +53,7 @@ class Grid {
 
   MPI_Comm comm() const { return comm_; }
   const Axis& axis(int d) const { return axes_[static_cast<std::size_t>(d)]; }
+  const Axes& axes() const { return axes_; }
   DM pressure_dm() const { return pressure_; }
   DM velocity_dm(int c) const { return velocity_[static_cast<std::size_t>(c)]; }
   // Cell-centred fields that stencils read with diagonal neighbours and boundary ghosts
@@ -65,9 +72,7 @@ class Grid {
   // The control volume of face p of component c, not a boundary face: from the centre of
   // the cell below to that of the cell above along c, the cell's widths across.
   double face_volume(int c, const Index& p) const;
-  // The smallest width of the cell at x over the axes that carry variation (all but a
-  // two-dimensional grid's one periodic cell): how fine the grid is where a body sits.
-  double finest_width_at(const Point& x) const;
+  double finest_width_at(const Point& x) const { return fluid::finest_width_at(axes_, x); }
 
  private:
   void create();

@@ -68,6 +68,7 @@ Process::Process(Process&& o) noexcept
       pid_(o.pid_),
       ended_(std::move(o.ended_)),
       exit_status_(o.exit_status_),
+      peak_bytes_(o.peak_bytes_),
       group_ended_(o.group_ended_) {
   o.pid_ = -1;
 }
@@ -79,12 +80,14 @@ Process::~Process() {
 std::optional<std::string> Process::poll() {
   if (ended_ || pid_ <= 0) return ended_;
   int status = 0;
-  if (waitpid(pid_, &status, WNOHANG) == pid_) ended(status);
+  rusage usage{};
+  if (wait4(pid_, &status, WNOHANG, &usage) == pid_) ended(status, usage);
   return ended_;
 }
 
-void Process::ended(int status) {
+void Process::ended(int status, const rusage& usage) {
   ended_ = describe(status);
+  peak_bytes_ = static_cast<double>(usage.ru_maxrss) * 1024.0;  // Linux counts kB
   if (WIFEXITED(status)) exit_status_ = WEXITSTATUS(status);
 }
 
@@ -103,7 +106,8 @@ void Process::stop(std::chrono::milliseconds grace) {
     if (!wait_until(clock::now() + std::chrono::seconds(5))) {
       kill(-pid_, SIGKILL);
       int status = 0;
-      if (waitpid(pid_, &status, 0) == pid_) ended(status);
+      rusage usage{};
+      if (wait4(pid_, &status, 0, &usage) == pid_) ended(status, usage);
     }
   }
   // Helpers the participant forked into its group may outlive its main process. Once

@@ -4,6 +4,7 @@
 // outlive even a killed coupler (mpirun forwards the SIGTERM to its ranks).
 #pragma once
 
+#include <sys/resource.h>
 #include <sys/types.h>
 
 #include <chrono>
@@ -31,16 +32,20 @@ class Process {
   std::optional<std::string> poll();
   // Its exit status once it has exited; nullopt while running or when a signal ended it.
   std::optional<int> exit_status() const { return exit_status_; }
+  // Once it has ended: the peak resident set of it or of the largest descendant it waited
+  // for (mpirun: its largest rank), in bytes; 0 before.
+  double peak_bytes() const { return peak_bytes_; }
   // Waits up to `grace` for a voluntary exit, then SIGTERM, then SIGKILL to the group.
   void stop(std::chrono::milliseconds grace);
 
  private:
-  void ended(int status);
+  void ended(int status, const rusage& usage);
 
   std::string name_;
   pid_t pid_ = -1;
   std::optional<std::string> ended_;
   std::optional<int> exit_status_;
+  double peak_bytes_ = 0;
   bool group_ended_ = false;
 };
 

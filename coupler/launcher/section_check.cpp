@@ -10,7 +10,8 @@
 namespace cosim::launcher {
 
 std::vector<std::string> refused_sections(const scene::Scene& scene, const std::vector<scene::Participant>& start,
-                                          const std::filesystem::path& programs_dir) {
+                                          const std::filesystem::path& programs_dir,
+                                          const std::filesystem::path& work_dir) {
   std::vector<std::string> refused;
   for (const scene::Participant& p : start) {
     if (!p.command.empty() || !scene::is_builtin(p.name)) continue;
@@ -19,6 +20,7 @@ std::vector<std::string> refused_sections(const scene::Scene& scene, const std::
     alone.placement = {};
     auto argv = participant_command(scene, alone, programs_dir);
     argv.insert(argv.end(), {"--check", scene.file.string()});
+    if (!work_dir.empty()) argv.insert(argv.end(), {"--work", (work_dir / (p.name + ".yaml")).string()});
     Process program(p.name, argv, mpi_environment());
     program.stop(std::chrono::milliseconds(static_cast<long>(scene.coupling.timeout * 1000)));
     if (program.exit_status() == 0) continue;

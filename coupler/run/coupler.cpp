@@ -3,8 +3,11 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <iostream>
 
 #include "cosim_git_hash.hpp"
+#include "coupler/estimate/estimate.hpp"
+#include "coupler/estimate/program_work.hpp"
 #include "coupler/launcher/process.hpp"
 #include "coupler/output/run_file.hpp"
 #include "coupler/run/failure.hpp"
@@ -17,6 +20,34 @@ namespace {
 
 using clock = std::chrono::steady_clock;
 
+// Each program reads its section before anything starts, as `cosim check` has them do, and
+// their work reports give the run's estimate. Empty if one refused (it said why).
+std::optional<std::map<std::string, estimate::ProgramWork>> read_sections(const scene::Scene& scene,
+                                                                          const scene::Plan& plan) {
+  auto sections = estimate::read_sections(scene, plan.start);
+  if (!sections.refused.empty()) {
+    spdlog::error("{}", estimate::refused_message(scene, sections.refused));
+    return std::nullopt;
+  }
+  std::cout << estimate::estimate_here(scene, plan.start, sections.work, COSIM_GIT_HASH) << std::endl;
+  return std::move(sections.work);
+}
+
+// A finished run teaches the cost models of this host what it took; a failure to record it
+// costs only the next estimate's accuracy.
+void learn(const scene::Scene& scene, const std::map<std::string, estimate::ProgramWork>& work,
+           estimate::RunTotals totals, double wall, const fs::path& run_file) {
+  try {
+    totals.wall_seconds = wall;
+    totals.disk_bytes = static_cast<double>(fs::file_size(run_file));
+    auto store = estimate::CostStore::load(estimate::CostStore::default_path());
+    store.add(estimate::run_record(scene, work, totals, COSIM_GIT_HASH));
+    store.save();
+  } catch (const std::exception& e) {
+    spdlog::warn("the run's cost was not recorded for later estimates: {}", e.what());
+  }
+}
+
 }  // namespace
 
 int run(const RunRequest& request) {
@@ -27,6 +58,7 @@ int run(const RunRequest& request) {
 
   std::optional<Session> session;
   fs::path path;
+  std::map<std::string, estimate::ProgramWork> work;  // a new run's; a resumed run does not learn
   if (request.resume) {
     // Validate what the file holds before resume() writes anything to it.
     path = *request.resume;
@@ -41,6 +73,9 @@ int run(const RunRequest& request) {
   } else {
     session.emplace(scene::load_scene(request.scene));
     const auto& scene = session->scene();
+    auto read = read_sections(scene, session->plan());
+    if (!read) return 2;
+    work = std::move(*read);
     path = request.output.empty() ? fs::path(scene.output.file) : request.output;
     if (path.has_parent_path()) fs::create_directories(path.parent_path());
     session->attach(output::RunFile::create(path, output::RunInfo::of_this_build(scene.text, scene.file.string()), scene.body_names(), session->participant_names()),
@@ -73,6 +108,7 @@ int run(const RunRequest& request) {
     return 1;
   }
   session->file().set_status("finished", wall());
+  if (!request.resume) learn(session->scene(), work, session->totals(), wall(), path);
   spdlog::info("finished in {:.2f} s; wrote {}", wall(), path.string());
   return 0;
 }

@@ -149,6 +149,12 @@ std::map<std::string, protocol::Message> Peers::exchange(
   return gather(names, reply, when);
 }
 
+std::map<std::string, double> Peers::peak_bytes() const {
+  std::map<std::string, double> out;
+  for (const auto& [name, p] : processes_) out[name] = p.peak_bytes();
+  return out;
+}
+
 void Peers::stop_all() {
   const protocol::Message stop = protocol::messages::stop();
   for (const auto& name : names()) send(name, stop, "while stopping");

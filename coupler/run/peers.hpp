@@ -38,6 +38,8 @@ class Peers {
 
   // Stop (answered by Bye) to all, then wait for the processes; anything left is killed.
   void stop_all();
+  // The peak resident set of each participant's largest process, once stop_all() has ended them.
+  std::map<std::string, double> peak_bytes() const;
   // Abort with a reason to all that still run, then end the processes.
   void abort_all(const std::string& reason);
 

@@ -119,6 +119,7 @@ void Session::execute() {
     handshake(peers);
     windows(peers);
     peers.stop_all();
+    totals_.peak_bytes = peers.peak_bytes();
   } catch (const Interrupted&) {
     peers.abort_all("the coupler was interrupted");
     throw;
@@ -219,6 +220,7 @@ void Session::windows(Peers& peers) {
     const double t1 = window_start(k + 1);
     WindowResult r = runner.advance(k, window_start(k), t1, current_, forwarded_fields(peers, k));
     for (const auto& [name, bytes] : r.field_bytes) forwarded_bytes_ += bytes;
+    count(r);
     if (!r.converged)
       spdlog::warn("window {} (t = {} s): not converged after {} iterations, residual {:.3g}",
                    k, t1, r.iterations, r.residual);
@@ -238,6 +240,13 @@ void Session::windows(Peers& peers) {
   if (!field_source_.empty() && n > first_window())
     spdlog::info("forwarded {:.0f} bytes of fields ({:.0f} per window)", forwarded_bytes_,
                  forwarded_bytes_ / static_cast<double>(n - first_window()));
+}
+
+void Session::count(const WindowResult& r) {
+  totals_.windows += 1;
+  totals_.iterations += r.iterations;
+  for (const auto& [name, s] : r.wall_seconds) totals_.seconds[name] += s;
+  for (const auto& [name, n] : r.substeps) totals_.steps[name] += n;
 }
 
 void Session::record(std::uint64_t window, double time, const WindowResult& r, double wall) {

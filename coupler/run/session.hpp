@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "coupler/estimate/run_record.hpp"
 #include "coupler/output/run_file.hpp"
 #include "coupler/run/exchange.hpp"
 #include "coupler/run/peers.hpp"
@@ -31,10 +32,14 @@ class Session {
   void execute();
 
   const scene::Scene& scene() const { return scene_; }
+  const scene::Plan& plan() const { return plan_; }
   std::vector<std::string> participant_names() const { return roles_.all(); }
   output::RunFile& file() { return *file_; }
   std::uint64_t committed() const { return committed_; }
   std::optional<std::uint64_t> checkpointed() const { return checkpointed_; }
+  // This session's windows: iterations, each participant's steps and seconds, and its
+  // processes' peak memory once they have stopped (the cost models learn from them).
+  const estimate::RunTotals& totals() const { return totals_; }
 
  private:
   void announce() const;
@@ -43,6 +48,7 @@ class Session {
   void handshake(Peers& peers);
   void windows(Peers& peers);
   void record(std::uint64_t window, double time, const WindowResult& r, double wall);
+  void count(const WindowResult& r);  // into totals_
   // The fields of `providers` at the start of `window` (their committed state).
   std::map<std::string, field::FieldFrame> request_fields(Peers& peers, const std::set<std::string>& providers,
                                                            std::uint64_t window, const std::string& when);
@@ -71,6 +77,7 @@ class Session {
   Exchange current_;
   std::uint64_t committed_ = 0;
   std::optional<std::uint64_t> checkpointed_;  // next window of the last checkpoint
+  estimate::RunTotals totals_;
 };
 
 }  // namespace cosim::run

@@ -8,18 +8,20 @@
 
 namespace cosim::fluid {
 
-BodyDistance::BodyDistance(const Grid& grid, const RigidBody& body) {
+BodyDistance::BodyDistance(const Axes& axes, const RigidBody& body) {
   double h = std::numeric_limits<double>::infinity();
   for (int d = 0; d < 3; ++d) {
-    if (grid.axis(d).degenerate()) {
+    const Axis& axis = axes[static_cast<std::size_t>(d)];
+    if (axis.degenerate()) {
       flat_axis_ = d;
       continue;
     }
-    h = std::min(h, grid.axis(d).width(grid.axis(d).cell_at(body.pose.position()[d])));
+    h = std::min(h, axis.width(axis.cell_at(body.pose.position()[d])));
   }
   if (flat_axis_ < 0) return;
+  const Axis& flat = axes[static_cast<std::size_t>(flat_axis_)];
   for (const geometry::SurfaceSample& s :
-       geometry::section_boundary(body.shape, body.pose, flat_axis_, grid.axis(flat_axis_).centre(0), h)) {
+       geometry::section_boundary(body.shape, body.pose, flat_axis_, flat.centre(0), h)) {
     points_.push_back(body.pose.to_body(s.point));
     normals_.push_back(body.pose.direction_to_body(s.normal));
   }

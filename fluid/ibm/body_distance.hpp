@@ -24,7 +24,8 @@ namespace cosim::fluid {
 class BodyDistance {
  public:
   // `body` where it is first placed: a section's points are kept in its frame.
-  BodyDistance(const Grid& grid, const RigidBody& body);
+  BodyDistance(const Axes& axes, const RigidBody& body);
+  BodyDistance(const Grid& grid, const RigidBody& body) : BodyDistance(grid.axes(), body) {}
   // out[i]: the signed distance of points[i] (world) to `body`, the same body now.
   void operator()(const RigidBody& body, std::span<const Eigen::Vector3d> points, std::span<double> out) const;
   double at(const RigidBody& body, const Eigen::Vector3d& point) const;

@@ -25,10 +25,10 @@ constexpr std::size_t kInnerWidth = 6;  // momentum and angular momentum
 constexpr double kSamplingGap = 0.8;     // geometry::sample_surface's least distance, in spacings
 
 // The only axis of one periodic cell (a two-dimensional grid), or -1.
-int flat_axis(const Grid& grid) {
+int flat_axis(const Axes& axes) {
   int flat = -1;
   for (int d = 0; d < 3; ++d)
-    if (grid.axis(d).degenerate()) {
+    if (axes[static_cast<std::size_t>(d)].degenerate()) {
       if (flat >= 0) throw std::invalid_argument("immersed boundary: at most one axis may be a single periodic cell");
       flat = d;
     }
@@ -142,6 +142,11 @@ void thin_out(std::vector<Marker>& markers, double gap) {
   markers = std::move(kept);
 }
 
+void require_bounded(const RigidBody& body) {
+  if (!geometry::is_bounded(body.shape))
+    throw std::invalid_argument("immersed boundary: a half-space is not a body (use a wall boundary)");
+}
+
 IbmOptions resolved(IbmOptions options) {
   if (!options.retraction) options.retraction = calibrated_retraction(options.kernel);
   return options;
@@ -158,59 +163,83 @@ Retraction calibrated_retraction(DeltaKernel kernel) {
 }
 
 ImmersedBoundary::ImmersedBoundary(const Grid& grid, IbmOptions options) : grid_(grid), options_(resolved(options)) {
+  check(grid.axes(), options);
+}
+
+void ImmersedBoundary::check(const Axes& axes, const IbmOptions& options) {
   if (options.sweeps < 1) throw std::invalid_argument("immersed boundary: sweeps must be >= 1");
   if (options.corrections < 0) throw std::invalid_argument("immersed boundary: corrections must be >= 0");
   if (!(options.no_slip_tolerance > 0 && options.no_slip_tolerance < 1))
     throw std::invalid_argument("immersed boundary: no_slip_tolerance must be in (0, 1)");
   if (!(options.tolerance > 0)) throw std::invalid_argument("immersed boundary: the tolerance must be > 0");
   if (!(options.spacing > 0)) throw std::invalid_argument("immersed boundary: the marker spacing must be > 0");
-  flat_axis(grid);
+  flat_axis(axes);
   const int reach = static_cast<int>(std::ceil(support_radius(options.kernel)));
-  for (int d = 0; d < 3; ++d) {
-    const Axis& a = grid.axis(d);
+  for (const Axis& a : axes)
     if (a.periodic() && !a.degenerate() && a.cells() < 2 * reach)
       throw std::invalid_argument("immersed boundary: a periodic axis needs at least " + std::to_string(2 * reach) +
                                   " cells for the " + std::string(name(options.kernel)) + " kernel");
+}
+
+std::size_t ImmersedBoundary::marker_count(const Axes& axes, const IbmOptions& options,
+                                           std::span<const RigidBody> bodies) {
+  check(axes, options);
+  const IbmOptions placing = resolved(options);
+  geometry::SampledShapes sampled;
+  std::size_t count = 0;
+  for (const RigidBody& body : bodies) {
+    require_bounded(body);
+    count += place_markers(axes, placing, body, BodyDistance(axes, body), sampled).size();
   }
+  return count;
 }
 
 std::size_t ImmersedBoundary::add(RigidBody body) {
-  if (!geometry::is_bounded(body.shape))
-    throw std::invalid_argument("immersed boundary: a half-space is not a body (use a wall boundary)");
+  require_bounded(body);
+  Entry e(grid_, std::move(body));
+  e.markers = place_markers(grid_.axes(), options_, e.body, e.distance, sampled_);
+  first_marker_.push_back(first_marker_.back() + e.markers.size());
+  bodies_.push_back(std::move(e));
+  return bodies_.size() - 1;
+}
+
+std::vector<ImmersedBoundary::Marker> ImmersedBoundary::place_markers(const Axes& axes, const IbmOptions& options,
+                                                                      const RigidBody& body,
+                                                                      const BodyDistance& distance,
+                                                                      geometry::SampledShapes& sampled) {
   // Markers about one cell apart where the body is: the smallest width of its cell on the
   // axes that carry variation.
-  const int flat = flat_axis(grid_);
+  const int flat = flat_axis(axes);
   const Eigen::Vector3d& at = body.pose.position();
-  const double h = grid_.finest_width_at({at[0], at[1], at[2]});
+  const double h = finest_width_at(axes, {at[0], at[1], at[2]});
+  const Axis* layer = flat < 0 ? nullptr : &axes[static_cast<std::size_t>(flat)];
   const std::vector<geometry::SurfaceSample> samples =
-      flat < 0 ? sampled_.at(body.shape, body.pose, options_.spacing * h)
-               : geometry::sample_section(body.shape, body.pose, flat, grid_.axis(flat).centre(0), options_.spacing * h);
-  Entry e(grid_, std::move(body));
+      flat < 0 ? sampled.at(body.shape, body.pose, options.spacing * h)
+               : geometry::sample_section(body.shape, body.pose, flat, layer->centre(0), options.spacing * h);
   // On a two-dimensional grid a marker stands for its length of curve times the layer.
-  const double thickness = flat < 0 ? 1.0 : grid_.axis(flat).width(0);
+  const double thickness = flat < 0 ? 1.0 : layer->width(0);
+  std::vector<Marker> markers;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const geometry::SurfaceSample& s = samples[i];
-    const double kappa = flat < 0 ? curvature_in_space(e.body.shape, e.body.pose, s.point, h)
-                                  : curvature_in_plane(samples, i, h);
-    const double depth = h * (options_.retraction->constant + options_.retraction->curvature * h * kappa);
+    const double kappa =
+        flat < 0 ? curvature_in_space(body.shape, body.pose, s.point, h) : curvature_in_plane(samples, i, h);
+    const double depth = h * (options.retraction->constant + options.retraction->curvature * h * kappa);
     const Eigen::Vector3d x = s.point - depth * s.normal;
-    const double inside = e.distance.at(e.body, x);
+    const double inside = distance.at(body, x);
     if (!(inside < 0)) continue;
     // The moved surface's share: the area shrinks by (1 - depth kappa_i) along each
     // principal direction (taken as equal in space).
     const double shrink = flat < 0 ? std::pow(1 - depth * kappa / 2, 2) : 1 - depth * kappa;
-    e.markers.push_back({e.body.pose.to_body(x), e.body.pose.direction_to_body(s.normal),
-                         s.area * thickness * std::max(shrink, 0.1)});
+    markers.push_back(
+        {body.pose.to_body(x), body.pose.direction_to_body(s.normal), s.area * thickness * std::max(shrink, 0.1)});
   }
-  thin_out(e.markers, kSamplingGap * options_.spacing * h);
-  if (e.markers.empty())
+  thin_out(markers, kSamplingGap * options.spacing * h);
+  if (markers.empty())
     throw std::invalid_argument("immersed boundary: no marker stays inside the body once retracted by " +
-                                std::to_string(options_.retraction->constant) +
+                                std::to_string(options.retraction->constant) +
                                 " cell widths: it is thinner than twice that" +
                                 (flat < 0 ? std::string() : std::string(" or misses the grid's plane")));
-  first_marker_.push_back(first_marker_.back() + e.markers.size());
-  bodies_.push_back(std::move(e));
-  return bodies_.size() - 1;
+  return markers;
 }
 
 void ImmersedBoundary::move(std::size_t i, const geometry::Pose& pose, const Eigen::Vector3d& velocity,

@@ -32,6 +32,7 @@
 // its volume.
 #include <array>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -89,8 +90,15 @@ struct IbmOptions {
 
 class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
  public:
-  // grid must outlive this object.
+  // grid must outlive this object. Throws std::invalid_argument for options out of range or
+  // a grid it cannot work on (more than one flat axis, a periodic axis narrower than the
+  // kernel's reach twice).
   explicit ImmersedBoundary(const Grid& grid, IbmOptions options = {});
+
+  // The markers add() gives `bodies` on a grid of `axes`, counted without a grid (whose
+  // arrays a large one would make costly): what the forcing works on, for an estimate of a
+  // run's cost. Throws as the constructor and add() do.
+  static std::size_t marker_count(const Axes& axes, const IbmOptions& options, std::span<const RigidBody> bodies);
 
   // Throws std::invalid_argument for a half-space, or a body none of whose markers stays
   // inside it once retracted (thinner than twice the retraction, or off a two-dimensional
@@ -144,6 +152,11 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
     std::vector<IndicatorPatch> fraction;  // alpha at this rank's faces of each component, where the body is
     HydrodynamicLoad load;
   };
+  static void check(const Axes& axes, const IbmOptions& options);  // what the constructor refuses
+  // The body's markers, placed about one cell apart on its surface and moved in by the
+  // retraction (`options` resolved), the crowded ones thinned out.
+  static std::vector<Marker> place_markers(const Axes& axes, const IbmOptions& options, const RigidBody& body,
+                                           const BodyDistance& distance, geometry::SampledShapes& sampled);
   // The markers whose kernels touch this rank's faces, of the bodies near it.
   void collect_active_markers();
   void update_fractions();  // of every body at this rank's faces, where it is now

@@ -1,31 +1,34 @@
 #include "fluid/program/body_surfaces.hpp"
 
+#include <algorithm>
 #include <limits>
-
-#include "rigidbody/geometry/sampled_shapes.hpp"
 
 namespace cosim::program {
 
-BodySurfaces::BodySurfaces(const fluid::Grid& grid, const fluid::BodyTreatment& bodies, std::vector<std::string> names)
-    : names_(std::move(names)) {
+std::vector<Eigen::Vector3d> surface_points(const fluid::Axes& axes, const fluid::RigidBody& body,
+                                            geometry::SampledShapes& sampled) {
+  const auto axis = [&](int d) -> const fluid::Axis& { return axes[static_cast<std::size_t>(d)]; };
   int flat = -1;
   for (int d = 0; d < 3; ++d)
-    if (grid.axis(d).degenerate()) flat = d;
+    if (axis(d).degenerate()) flat = d;
+  double h = std::numeric_limits<double>::infinity();
+  for (int d = 0; d < 3; ++d)
+    if (d != flat) h = std::min(h, axis(d).width(axis(d).cell_at(body.pose.position()[d])));
+  std::vector<Eigen::Vector3d> frame;
+  if (flat < 0)
+    for (const geometry::SurfaceSample& s : sampled.body_frame(body.shape, h)) frame.push_back(s.point);
+  else
+    for (const geometry::SurfaceSample& s :
+         geometry::sample_section(body.shape, body.pose, flat, axis(flat).centre(0), h))
+      frame.push_back(body.pose.to_body(s.point));
+  return frame;
+}
+
+BodySurfaces::BodySurfaces(const fluid::Grid& grid, const fluid::BodyTreatment& bodies, std::vector<std::string> names)
+    : names_(std::move(names)) {
   geometry::SampledShapes sampled;
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const fluid::RigidBody& body = bodies.body(b);
-    double h = std::numeric_limits<double>::infinity();
-    for (int d = 0; d < 3; ++d)
-      if (d != flat) h = std::min(h, grid.axis(d).width(grid.axis(d).cell_at(body.pose.position()[d])));
-    std::vector<Eigen::Vector3d> frame;
-    if (flat < 0)
-      for (const geometry::SurfaceSample& s : sampled.body_frame(body.shape, h)) frame.push_back(s.point);
-    else
-      for (const geometry::SurfaceSample& s :
-           geometry::sample_section(body.shape, body.pose, flat, grid.axis(flat).centre(0), h))
-        frame.push_back(body.pose.to_body(s.point));
-    points_.push_back(std::move(frame));
-  }
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    points_.push_back(surface_points(grid.axes(), bodies.body(b), sampled));
 }
 
 std::vector<field::PointSet> BodySurfaces::where(const fluid::BodyTreatment& bodies) const {

@@ -9,9 +9,15 @@
 
 #include "fluid/body_treatment.hpp"
 #include "fluid/grid.hpp"
+#include "rigidbody/geometry/sampled_shapes.hpp"
 #include "coupler/field/field_frame.hpp"
 
 namespace cosim::program {
+
+// Body `body`'s surface points in its frame on a grid of `axes`, as BodySurfaces keeps them
+// (`sampled` reuses a shape's sampling for the bodies that share it).
+std::vector<Eigen::Vector3d> surface_points(const fluid::Axes& axes, const fluid::RigidBody& body,
+                                            geometry::SampledShapes& sampled);
 
 class BodySurfaces {
  public:

@@ -1,7 +1,8 @@
 // cosim-fluid: the fluid program.
 //   started by `cosim run` (COSIM_ENDPOINT set)       a coupled participant
 //   cosim-fluid --standalone scene.yaml [-o f.h5]      bodies in prescribed motion
-//   cosim-fluid --check scene.yaml                     read the fluid section only (cosim check)
+//   cosim-fluid --check scene.yaml [--work FILE]       read the fluid section only (cosim check),
+//                                                      and write the work it gives (fluid_work.hpp)
 // Arguments CLI11 does not know (-ksp_*, -pc_*, -log_view ...) go to PETSc. Under mpirun
 // rank 0 talks to the coupler or writes the run file, the others follow (mpi_team.hpp).
 #include <CLI/CLI.hpp>
@@ -13,6 +14,7 @@
 #include <spdlog/spdlog.h>
 
 #include "fluid/program/adapter.hpp"
+#include "fluid/program/fluid_work.hpp"
 #include "fluid/program/scene_fluid.hpp"
 #include "fluid/program/standalone.hpp"
 #include "coupler/participant/mpi_team.hpp"
@@ -67,7 +69,8 @@ int main(int argc, char** argv) {
   return with_petsc(app.remaining(), [&] {
     return cosim::scene::exit_code("cosim-fluid", [&] {
       if (!args.check.empty()) {
-        cosim::program::fluid_setup(cosim::scene::load_scene(args.check));
+        const cosim::program::FluidSetup setup = cosim::program::fluid_setup(cosim::scene::load_scene(args.check));
+        if (!args.work.empty()) cosim::participant::write_work(args.work, cosim::program::fluid_work(setup));
         return 0;
       }
       return cosim::program::run_fluid_standalone(args.standalone, args.output);

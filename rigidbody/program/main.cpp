@@ -1,7 +1,8 @@
 // cosim-rigidbody: the rigid-body program.
 //   started by `cosim run` (COSIM_ENDPOINT set)     a coupled participant
 //   cosim-rigidbody --standalone scene.yaml [-o f.h5]  the scene alone, no external forces
-//   cosim-rigidbody --check scene.yaml                 read the bodies and the section only (cosim check)
+//   cosim-rigidbody --check scene.yaml [--work FILE]   read the bodies and the section only (cosim check),
+//                                                     and write the work they give (rigid_work.hpp)
 #include <CLI/CLI.hpp>
 
 #include <spdlog/spdlog.h>
@@ -9,6 +10,7 @@
 #include "coupler/participant/program_args.hpp"
 #include "coupler/participant/run_participant.hpp"
 #include "rigidbody/program/adapter.hpp"
+#include "rigidbody/program/rigid_work.hpp"
 #include "rigidbody/program/scene_world.hpp"
 #include "rigidbody/program/standalone.hpp"
 #include "coupler/scene/error.hpp"
@@ -30,10 +32,14 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   return cosim::scene::exit_code("cosim-rigidbody", [&] {
-    if (!args.check.empty())
-      cosim::program::make_world(cosim::scene::load_scene(args.check));
-    else
+    if (!args.check.empty()) {
+      const cosim::scene::Scene scene = cosim::scene::load_scene(args.check);
+      const cosim::program::ProgramOptions options = cosim::program::program_options(scene);
+      cosim::program::make_world(scene, options);
+      if (!args.work.empty()) cosim::participant::write_work(args.work, cosim::program::rigid_work(scene, options));
+    } else {
       cosim::program::run_standalone(args.standalone, args.output);
+    }
     return 0;
   });
 }

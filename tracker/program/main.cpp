@@ -1,7 +1,8 @@
 // cosim-tracker: the tracker program.
 //   started by `cosim run` (COSIM_ENDPOINT set)         a coupled participant (adapter.hpp)
 //   cosim-tracker --standalone scene.yaml [-o f.h5]     particles among the scene's obstacles
-//   cosim-tracker --check scene.yaml                    read the tracker section only (cosim check)
+//   cosim-tracker --check scene.yaml [--work FILE]      read the tracker section only (cosim check),
+//                                                       and write the work it gives (tracker_work.hpp)
 // Under mpirun the gas is spread over the ranks (tracker/parallel): rank 0 talks to the
 // coupler or writes the run file, the others follow (participant/mpi_team.hpp).
 #include <CLI/CLI.hpp>
@@ -24,6 +25,7 @@
 #include "tracker/program/adapter.hpp"
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/standalone.hpp"
+#include "tracker/program/tracker_work.hpp"
 
 namespace {
 
@@ -93,7 +95,9 @@ int main(int argc, char** argv) {
     try {
       app.parse(argc, argv);
       code = args.check.empty() ? standalone(args.standalone, args.output) : cosim::scene::exit_code("cosim-tracker", [&] {
-        cosim::tracker::read_tracker(cosim::scene::load_scene(args.check));
+        const cosim::scene::Scene scene = cosim::scene::load_scene(args.check);
+        const cosim::tracker::TrackerScene setup = cosim::tracker::read_tracker(scene);
+        if (!args.work.empty()) cosim::participant::write_work(args.work, cosim::tracker::tracker_work(scene, setup));
         return 0;
       });
     } catch (const CLI::ParseError& e) {

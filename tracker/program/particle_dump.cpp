@@ -30,6 +30,8 @@ bool chosen(const Vec3& x, const ParticleOutput& output) {
 // state's high and low 32 bits and whether it is inside. The cell comes first so that
 // records sort by it.
 constexpr std::size_t kCell = 0, kX = 1, kV = 4, kObstacles = 7, kPerObstacle = 3;
+// A record holds what the set will, which the work report counts (particle_values()).
+static_assert(kObstacles + 2 * kPerObstacle == particle_values(2));
 
 // The state over the cell's primitives alone: an obstacle without primitives in a cell
 // never looks at its state there, which keeps whatever bits the particle brought in.

@@ -26,6 +26,10 @@ namespace cosim::tracker {
 
 inline constexpr char kParticleSet[] = "particles";
 
+// The float64 values one particle takes in the set: x, y, z, velocity (3) and cell, and per
+// obstacle its state (2) and inside.
+constexpr std::size_t particle_values(std::size_t obstacles) { return 7 + 3 * obstacles; }
+
 // Collective over the gas's ranks: rank 0 gets the chosen particles of every rank, in cell
 // order and within a cell by position (the same set in the same order on any rank count),
 // the other ranks a set without points.

@@ -45,6 +45,26 @@ class Seeder {
     return std::move(swarm_);
   }
 
+  // What per_cell() keeps, without keeping it. Where no object has primitives, the states,
+  // and so whether a draw falls inside a wall, are the same everywhere in the cell: the cell
+  // keeps all its draws or none, as its centroid does. Elsewhere the cell draws as
+  // per_cell() does, velocities too, since they come from the same stream as the positions.
+  std::size_t per_cell_count() {
+    std::size_t kept = 0;
+    const auto n = static_cast<std::size_t>(seeding_.per_cell);
+    for (const auto& [global, local] : owned_) {
+      if (obstacles_.empty()) {
+        kept += n;
+      } else if (obstacles_.active(obstacles_.bounding_cell(local)).empty()) {
+        obstacles_.classify(local, mesh_.centroid[local], states_);
+        if (!obstacles_.inside_wall(local, states_)) kept += n;
+      } else {
+        kept += static_cast<std::size_t>(draw(global, local, seeding_.per_cell, 0, false));
+      }
+    }
+    return kept;
+  }
+
   Swarm total(const Ranks& ranks, const CellVolumes& volumes) {
     volumes_ = &volumes;
     long long wanted = seeding_.total, drawn = 0;
@@ -74,8 +94,8 @@ class Seeder {
   }
 
   // n uniform draws in the cell (`global` in the whole mesh, `cell` here); adds those outside
-  // every wall, with Maxwellian velocities.
-  long long draw(Index global, Index cell, long long n, std::uint64_t round) {
+  // every wall, with Maxwellian velocities, unless `add` is false; returns how many.
+  long long draw(Index global, Index cell, long long n, std::uint64_t round, bool add = true) {
     dsmc::Rng rng = keyed(seeding_.seed, round, Drawn::cell_particles, static_cast<std::uint64_t>(global));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     // normal_distribution needs a positive deviation: a cold gas draws no thermal part.
@@ -95,7 +115,7 @@ class Seeder {
       obstacles_.classify(cell, x, states_);
       if (obstacles_.inside_wall(cell, states_)) continue;
       const Vec3 thermal = sigma_ > 0 ? Vec3(gauss(rng), gauss(rng), gauss(rng)) : Vec3::Zero();
-      swarm_.add({x, seeding_.drift + thermal, cell}, states_);
+      if (add) swarm_.add({x, seeding_.drift + thermal, cell}, states_);
       ++kept;
     }
     return kept;
@@ -147,6 +167,12 @@ Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding
                      const CellVolumes& volumes) {
   Seeder seeder(mesh, obstacles, seeding, cells);
   return seeding.per_cell > 0 ? seeder.per_cell() : seeder.total(cells.ranks(), volumes);
+}
+
+std::size_t seeded_count(const Mesh& whole, const Obstacles& obstacles, const Seeding& seeding) {
+  if (seeding.per_cell == 0) return static_cast<std::size_t>(seeding.total);  // rounds until exactly that many
+  const Decomposition one(whole, Ranks());
+  return Seeder(whole, obstacles, seeding, one).per_cell_count();
 }
 
 }  // namespace cosim::tracker

@@ -52,4 +52,10 @@ CellVolumes volumes_of(const BoxSpec& box);
 Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells,
                      const CellVolumes& volumes);
 
+// How many particles seed_particles() makes on any number of ranks, counted on one that
+// holds the whole mesh without making them (fast where no obstacle has primitives; for the
+// work a scene gives). `total` is taken as it comes: the walls' leaving no room for it is
+// found by the seeding.
+std::size_t seeded_count(const Mesh& whole, const Obstacles& obstacles, const Seeding& seeding);
+
 }  // namespace cosim::tracker

@@ -101,6 +101,20 @@ TEST(Seeding, PerCellDropsDrawsInsideWallsAndRepeatsForItsSeed) {
   EXPECT_NE(moved.particle(0).x, swarm.particle(0).x);
 }
 
+// The count without the particles is the seeding's to the particle: in the cells wholly
+// inside the ball (none), wholly outside it (all) and cut by it (those its draws miss).
+TEST(Seeding, CountedWithoutMakingThemAsSeeded) {
+  for (const char* mesh : {"{type: box, cells: [10, 10, 10]}", "{type: box, cells: [5, 5, 5], tetrahedra: true}"}) {
+    const TrackerScene t = tracker_with("{per_cell: 3, temperature: 1, mass: 1.380649e-23, seed: 4}", mesh);
+    const std::size_t made = seeded(t).size();
+    EXPECT_EQ(seeded_count(*t.mesh, t.obstacles, t.particles), made) << mesh;
+    EXPECT_LT(made, 3u * static_cast<std::size_t>(t.mesh->cell_count()) * 3 / 4) << mesh;  // the ball is 27 %
+  }
+  const TrackerScene total = tracker_with("{total: 777, temperature: 1, mass: 1.380649e-23}");
+  EXPECT_EQ(seeded_count(*total.mesh, total.obstacles, total.particles), 777u);
+  EXPECT_EQ(seeded(total).size(), 777u);
+}
+
 // Free space of 2e-4 of the box: 10 particles would take about 50000 draws.
 TEST(Seeding, AlmostNoFreeSpaceIsAnError) {
   const TrackerScene t = read_tracker(scene::load_scene_from_string(

@@ -1,0 +1,20 @@
+#include "rigidbody/program/rigid_work.hpp"
+
+#include <algorithm>
+
+namespace cosim::program {
+
+participant::WorkReport rigid_work(const scene::Scene& scene, const ProgramOptions& options) {
+  const auto moving =
+      std::count_if(scene.bodies.begin(), scene.bodies.end(), [](const scene::Body& b) { return !b.fixed; });
+  // The walls are fixed half-spaces in the world like any body: held, never stepped.
+  const std::size_t held = scene.bodies.size() + options.walls.size();
+  return {.program = "rigidbody",
+          .per_step = {{"bodies", static_cast<std::uint64_t>(moving)}},
+          .held = {{"bodies", held}},
+          .frame_bytes = 0,
+          // RigidSolver::state: the time and each body's pose (13), the contacts' memory aside.
+          .state_bytes = (1 + 13 * scene.bodies.size()) * sizeof(double)};
+}
+
+}  // namespace cosim::program

@@ -1,0 +1,59 @@
+#include "tracker/program/tracker_work.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "tracker/constants.hpp"
+#include "tracker/program/particle_dump.hpp"
+#include "tracker/step/seed_particles.hpp"
+
+namespace cosim::tracker {
+namespace {
+
+// count, mean_count, density, velocity (3), temperature, pressure: cell_fields.hpp.
+constexpr std::uint64_t kCellValues = 8;
+
+// About how many cell faces a step's flights cross in all: each particle flies the seeding's
+// mean thermal speed plus its drift for a step, through cells of the mesh's mean width. The
+// tracking's cost per particle grows with these as the cells get smaller than a flight.
+std::uint64_t crossings(const TrackerScene& setup, std::uint64_t particles) {
+  const Seeding& gas = setup.particles;
+  const double thermal =
+      gas.temperature > 0 && gas.mass > 0 ? std::sqrt(8 * boltzmann * gas.temperature / (std::numbers::pi * gas.mass)) : 0;
+  const Mesh& mesh = *setup.mesh;
+  double volume = 0;
+  for (const double v : mesh.volume) volume += v;
+  const double width = std::cbrt(volume / static_cast<double>(mesh.cell_count()));
+  const double per_particle = (thermal + gas.drift.norm()) * setup.dt / width;
+  return static_cast<std::uint64_t>(std::llround(static_cast<double>(particles) * per_particle));
+}
+
+}  // namespace
+
+participant::WorkReport tracker_work(const scene::Scene& scene, const TrackerScene& setup) {
+  const std::uint64_t particles = seeded_count(*setup.mesh, setup.obstacles, setup.particles);
+  const auto cells = static_cast<std::uint64_t>(setup.mesh->cell_count());
+  double bytes = static_cast<double>(kCellValues * cells * sizeof(double));
+  if (setup.particle_output && scene.output.fields_every > 0) {
+    // Particles go with every `every`-th window's fields, a multiple of the fields' own.
+    const ParticleOutput& out = *setup.particle_output;
+    const double share = static_cast<double>(scene.output.fields_every) / out.every;
+    const auto per_particle =
+        static_cast<double>(particle_values(static_cast<std::size_t>(setup.obstacles.count())) * sizeof(double));
+    bytes += share * out.fraction * static_cast<double>(particles) * per_particle;
+  }
+  const bool grows =
+      std::any_of(setup.inflows.begin(), setup.inflows.end(), [](const Inflow& i) { return i.rate() > 0; });
+  return {.program = "tracker",
+          .per_step = {{"particles", particles}, {"crossings", crossings(setup, particles)}, {"cells", cells}},
+          .held = {{"particles", particles}, {"cells", cells}},
+          .frame_bytes = static_cast<std::uint64_t>(std::llround(bytes)),
+          // Simulation::state: position, velocity and cell per particle and one value per
+          // obstacle's logical state; the collision and sampling sums per cell (about 12).
+          .state_bytes = (particles * (7 + static_cast<std::uint64_t>(setup.obstacles.count())) + 12 * cells) *
+                         sizeof(double),
+          .grows = grows};
+}
+
+}  // namespace cosim::tracker
