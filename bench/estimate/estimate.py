@@ -152,9 +152,11 @@ def write_table(rows, table):
                        "measured_disk_MB": f"{r['measured_disk'] / 1e6:.3f}" if "measured_disk" in r else "",
                        "disk_ratio": ratio(r["estimate_disk"], r.get("measured_disk"))}
             w.writerow(csv_row)
+            largest = (f"{r['top']} {csv_row['estimate_steps']} / {csv_row['measured_steps'] or '–'}"
+                       if r["top"] else "")
             lines.append(f"| {r['scene']} | {csv_row['estimate_s']} | {csv_row['measured_s'] or 'not run'} | "
-                         f"{csv_row['wall_ratio']} | {csv_row['again_ratio']} | {r['top']} {csv_row['estimate_steps']} / "
-                         f"{csv_row['measured_steps'] or '–'} | {memory} | {csv_row['estimate_disk_MB']} / "
+                         f"{csv_row['wall_ratio']} | {csv_row['again_ratio']} | {largest} | {memory} | "
+                         f"{csv_row['estimate_disk_MB']} / "
                          f"{csv_row['measured_disk_MB'] or '–'} |")
     table.with_suffix(".md").write_text("\n".join(lines) + "\n")
 

@@ -7,7 +7,7 @@
 
 namespace cosim::estimate {
 
-// `scale` multiplies every calibration run's length (1: about a minute on two cores).
+// `scale` multiplies every calibration run's length (1: about a minute and a half on two cores).
 int calibrate(const std::filesystem::path& cosim_executable, double scale);
 
 }  // namespace cosim::estimate

@@ -1,11 +1,14 @@
 #include "coupler/estimate/cost_model.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 
 namespace cosim::estimate {
 namespace {
@@ -24,6 +27,9 @@ double dot(double constant, const Units& coefficients, double one, const Units& 
 // (the others held at zero), which is the exact answer for so few columns.
 Eigen::VectorXd non_negative_least_squares(const Eigen::MatrixXd& a, const Eigen::VectorXd& b) {
   const auto n = a.cols();
+  // A model has a constant and a few counts (the coupler's: three and a start-up per
+  // built-in program); 2^n subsets stay cheap well beyond that.
+  if (n > 16) throw std::runtime_error(fmt::format("a cost model of {} coefficients is beyond its fit", n));
   Eigen::VectorXd best = Eigen::VectorXd::Zero(n);
   double best_residual = b.squaredNorm();
   for (unsigned mask = 1; mask < (1u << n); ++mask) {

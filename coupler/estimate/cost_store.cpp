@@ -103,10 +103,13 @@ void CostStore::save() const {
   out << YAML::EndSeq << YAML::EndMap;
   fs::create_directories(path_.parent_path().empty() ? fs::path(".") : path_.parent_path());
   const fs::path temporary = path_.string() + "." + std::to_string(getpid());
-  {
-    std::ofstream file(temporary);
-    file << out.c_str() << "\n";
-    if (!file) throw std::runtime_error(temporary.string() + ": cannot write the measured costs");
+  std::ofstream file(temporary);
+  file << out.c_str() << "\n";
+  file.close();
+  if (!file) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw std::runtime_error(temporary.string() + ": cannot write the measured costs");
   }
   fs::rename(temporary, path_);
 }

@@ -18,7 +18,7 @@ namespace cosim::estimate {
 inline constexpr const char* kCoupler = "coupler";
 
 struct RunRecord {
-  std::string scene;             // absolute path of the scene file
+  std::string scene;             // the scene as scene_key() names it (run_record.hpp)
   std::string build;             // git hash of the build that ran it
   bool calibration = false;      // run by `cosim calibrate`
   double windows = 0;

@@ -6,20 +6,23 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "coupler/estimate/run_record.hpp"
+
 namespace cosim::estimate {
 namespace {
 
-// Priors: the cost models before any run was measured on this host, from `cosim calibrate`
-// on the 2-core development machine (coupler/estimate/README.md). Their weight in a fit is
-// small, so the first measured runs here replace them.
+// Priors: the cost models before any run was measured on this host, rounded from
+// `cosim calibrate` on the 2-core development machine (bench/estimate/README.md). Their
+// weight in a fit is small, so the first measured runs here replace them.
 Coefficients prior(const std::string& program) {
-  if (program == "fluid") return {2e-3, {{"cells", 6e-7}, {"markers", 2e-5}}, 60e6, {{"cells", 600}, {"markers", 4e3}}};
-  if (program == "rigidbody") return {2e-5, {{"bodies", 3e-6}}, 15e6, {{"bodies", 1.5e3}}};
-  if (program == "tracker") return {1e-4, {{"particles", 1.2e-7}, {"crossings", 8e-8}, {"cells", 1e-7}}, 30e6, {{"particles", 120}, {"cells", 2e3}}};
+  if (program == "fluid") return {2.3e-4, {{"cells", 7.6e-7}, {"markers", 1.1e-5}}, 55e6, {{"cells", 670}, {"markers", 6.6e3}}};
+  if (program == "rigidbody") return {1.5e-6, {{"bodies", 6e-7}}, 18e6, {{"bodies", 1.15e5}}};
+  if (program == "tracker")
+    return {0, {{"particles", 0}, {"crossings", 1.1e-7}, {"cells", 2.1e-7}}, 65e6, {{"particles", 245}, {"cells", 1.3e3}}};
   if (program == kCoupler)
-    return {0.1,
-            {{"exchanges", 1e-3}, {"body_rows", 1e-4}, {"field_bytes", 1e-8}, {"start:fluid", 1.2},
-             {"start:rigidbody", 0.3}, {"start:tracker", 1.2}},
+    return {0,
+            {{"exchanges", 0}, {"body_rows", 1.2e-4}, {"field_bytes", 3.5e-8}, {"start:fluid", 1.2},
+             {"start:rigidbody", 0}, {"start:tracker", 1.0}},
             0,
             {}};
   return {};  // an external program: only what it measured
@@ -83,7 +86,8 @@ std::string bytes(double b) {
 std::string count(double n) {
   if (n < 1e4) return fmt::format("{:.0f}", n);
   if (n < 1e6) return fmt::format("{:.0f} k", n / 1e3);
-  return fmt::format("{:.2g} M", n / 1e6);
+  if (n < 1e9) return fmt::format("{:.3g} M", n / 1e6);
+  return fmt::format("{:.3g} G", n / 1e9);
 }
 
 }  // namespace
@@ -137,20 +141,28 @@ Units coupler_work(const scene::Scene& scene, const std::vector<scene::Participa
   Units out{{"exchanges", exchanges},
             {"body_rows", static_cast<double>(scene.bodies.size()) * written(windows, scene.output.every)},
             {"field_bytes", written(windows, scene.output.fields_every) * frame_bytes(start, work)}};
-  // Each program's start-up (MPI and PETSc, its mesh, its bodies' markers) until it answers.
-  for (const auto& p : start) out["start:" + p.name] = 1;
+  // Each built-in program's start-up (MPI and PETSc, its mesh, its bodies' markers) until it
+  // answers; the built-in ones are those that report their work.
+  for (const auto& p : start)
+    if (work.contains(p.name)) out["start:" + p.name] = 1;
   return out;
 }
 
 Estimate estimate(const scene::Scene& scene, const std::vector<scene::Participant>& start,
                   const std::map<std::string, ProgramWork>& work, const CostStore& store, const std::string& build) {
   Estimate out;
-  const std::string scene_path = std::filesystem::absolute(scene.file).lexically_normal().string();
-  const RunRecord* last = store.last_run_of(scene_path);
+  const RunRecord* last = store.last_run_of(scene_key(scene));
   out.scene_measured = last != nullptr;
   for (const auto& r : store.records()) (r.build == build ? out.runs_measured : out.runs_other_builds) += 1;
+  // With nobody on one side of the exchange, an implicit scheme has no loop to close and
+  // takes one pass per window (coupler/run/window.cpp).
+  const auto provides = [&](scene::Data d) {
+    return std::any_of(start.begin(), start.end(), [&](const scene::Participant& p) { return scene::has(p.provides, d); });
+  };
   const bool implicit =
-      scene.coupling.scheme == scene::Scheme::SerialImplicit || scene.coupling.scheme == scene::Scheme::ParallelImplicit;
+      (scene.coupling.scheme == scene::Scheme::SerialImplicit ||
+       scene.coupling.scheme == scene::Scheme::ParallelImplicit) &&
+      provides(scene::Data::Poses) && provides(scene::Data::Forces);
   const bool serial =
       scene.coupling.scheme == scene::Scheme::SerialImplicit || scene.coupling.scheme == scene::Scheme::SerialExplicit;
   out.iterations_per_window = implicit ? kAssumedIterations : 1.0;
@@ -200,7 +212,7 @@ std::string estimate_line(const Estimate& e) {
   std::string line = "estimate: " + duration(e.wall_seconds) + " here";
   const auto top = std::max_element(e.programs.begin(), e.programs.end(),
                                     [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
-  if (top != e.programs.end() && e.wall_seconds > 0) {
+  if (top != e.programs.end() && top->seconds > 0 && e.wall_seconds > 0) {
     const double share = 100 * top->seconds / e.wall_seconds;
     line += fmt::format(" ({} {:.0f} %: ", top->name, std::min(share, 100.0));
     line += top->largest_unit.empty() ? fmt::format("{} steps)", count(top->steps))

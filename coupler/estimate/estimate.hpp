@@ -43,8 +43,8 @@ inline constexpr double kAssumedIterations = 3.0;
 Estimate estimate(const scene::Scene& scene, const std::vector<scene::Participant>& start,
                   const std::map<std::string, ProgramWork>& work, const CostStore& store, const std::string& build);
 
-// "estimate: 2.1 min here (fluid 82 %: 0.10 M cells x 2400 steps); memory fluid 180 MB, ...;
-// run file 45 MB; fitted to 12 runs on this host"
+// "estimate: 2.1 min here (fluid 82 %: 102 k cells x 2400 steps); memory fluid 180 MB, ...;
+// run file 45 MB; fitted to 12 runs of this build here"
 std::string estimate_line(const Estimate& e);
 
 // estimate_line() from this host's measured costs (CostStore::default_path()). A store that

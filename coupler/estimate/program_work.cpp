@@ -1,5 +1,6 @@
 #include "coupler/estimate/program_work.hpp"
 
+#include <spdlog/spdlog.h>
 #include <stdlib.h>
 
 #include <filesystem>
@@ -10,6 +11,19 @@
 
 namespace cosim::estimate {
 namespace fs = std::filesystem;
+
+namespace {
+
+// A rank's share of the work: what one rank's seconds and peak memory, which the run
+// records, grow with (an even split, as the box decomposition and the grid's make).
+ProgramWork one_rank(ProgramWork work, int ranks) {
+  if (ranks > 1)
+    for (Units* units : {&work.per_step, &work.held})
+      for (auto& [unit, count] : *units) count /= ranks;
+  return work;
+}
+
+}  // namespace
 
 std::string refused_message(const scene::Scene& scene, const std::vector<std::string>& refused) {
   std::string names;
@@ -25,8 +39,15 @@ SectionsRead read_sections(const scene::Scene& scene, const std::vector<scene::P
   SectionsRead out;
   try {
     out.refused = launcher::refused_sections(scene, start, launcher::own_directory(), dir);
-    for (const auto& p : start)
-      if (fs::exists(dir / (p.name + ".yaml"))) out.work[p.name] = read_work(dir / (p.name + ".yaml"));
+    for (const auto& p : start) {
+      const fs::path report = dir / (p.name + ".yaml");
+      if (!fs::exists(report)) continue;
+      try {
+        out.work[p.name] = one_rank(read_work(report), p.ranks);
+      } catch (const std::exception& e) {
+        spdlog::warn("{}'s work report is left out of the estimate: {}", p.name, e.what());
+      }
+    }
   } catch (...) {
     fs::remove_all(dir);
     throw;

@@ -3,16 +3,25 @@
 #include "coupler/estimate/estimate.hpp"
 #include "coupler/scene/plan.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 
 namespace cosim::estimate {
 
+std::string scene_key(const scene::Scene& scene) {
+  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a: stable across builds and hosts
+  for (const unsigned char c : scene.text) hash = (hash ^ c) * 1099511628211ull;
+  return fmt::format("{} {:016x}", std::filesystem::absolute(scene.file).lexically_normal().string(), hash);
+}
+
 RunRecord run_record(const scene::Scene& scene, const std::map<std::string, ProgramWork>& work,
                      const RunTotals& totals, const std::string& build) {
   RunRecord r;
-  r.scene = std::filesystem::absolute(scene.file).lexically_normal().string();
+  r.scene = scene_key(scene);
   r.build = build;
   r.calibration = std::getenv(kCalibrationEnv) != nullptr;
   r.windows = totals.windows;

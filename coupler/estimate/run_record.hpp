@@ -25,6 +25,10 @@ struct RunTotals {
 // Set by `cosim calibrate` for the runs it starts, so that their records say so.
 inline constexpr const char* kCalibrationEnv = "COSIM_CALIBRATION";
 
+// A scene's name in the records: its file's absolute path and a hash of its text, so that
+// an edited scene (another grid, step or window) is not estimated from its former runs.
+std::string scene_key(const scene::Scene& scene);
+
 RunRecord run_record(const scene::Scene& scene, const std::map<std::string, ProgramWork>& work,
                      const RunTotals& totals, const std::string& build);
 

@@ -34,8 +34,13 @@ participants:
 }
 
 std::map<std::string, ProgramWork> work() {
-  return {{"fluid", {"fluid", {{"cells", 12800}, {"markers", 100}}, {{"cells", 12800}, {"markers", 100}}, 5e5, 1000, false}},
-          {"rigidbody", {"rigidbody", {{"bodies", 1}}, {{"bodies", 1}}, 0, 200, false}}};
+  return {{"fluid",
+           {.program = "fluid",
+            .per_step = {{"cells", 12800}, {"markers", 100}},
+            .held = {{"cells", 12800}, {"markers", 100}},
+            .frame_bytes = 5e5,
+            .state_bytes = 1000}},
+          {"rigidbody", {.program = "rigidbody", .per_step = {{"bodies", 1}}, .held = {{"bodies", 1}}, .state_bytes = 200}}};
 }
 
 CostStore empty_store() { return CostStore::load(fs::temp_directory_path() / "cosim-estimate-none.yaml"); }
@@ -96,6 +101,9 @@ TEST(Estimate, TheScenesLastRunGivesItsIterationsAndItsOwnSpeed) {
   EXPECT_TRUE(after.scene_measured);
   EXPECT_DOUBLE_EQ(program(after, "fluid").steps, 60.0 / 30 * 20 * 1.5);  // its steps per exchange, 2
   EXPECT_NEAR(program(after, "fluid").seconds / program(after, "fluid").steps, 2 * modelled_step, 1e-3 * modelled_step);
+  // The same file edited: its former run no longer speaks for it.
+  const auto edited = settling("parallel-implicit");
+  EXPECT_FALSE(estimate(edited, scene::plan_participants(edited).start, work(), store, "build").scene_measured);
 }
 
 TEST(Estimate, TheLineSaysWhatItRestsOn) {

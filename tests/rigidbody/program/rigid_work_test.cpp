@@ -1,4 +1,5 @@
 // cosim-rigidbody --check --work: the bodies that move per step, every body it holds.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -44,6 +45,13 @@ TEST(RigidWork, StepsTheBodiesThatMoveAndHoldsThemAll) {
   EXPECT_FALSE(w.grows);
 }
 
+// The soft step's substeps are its steps where bodies can touch; the other solvers step by dt.
+TEST(RigidWork, TheSoftStepsSubstepsAreItsSteps) {
+  EXPECT_DOUBLE_EQ(work_of(three_bodies()).dt, 1e-3 / 2);  // two substeps by default
+  EXPECT_DOUBLE_EQ(work_of(three_bodies("{substeps: 4}")).dt, 1e-3 / 4);
+  EXPECT_EQ(work_of(three_bodies("{solver: pgs}")).dt, 0.0);
+}
+
 // The domain's faces made walls are fixed bodies of the world: held, not stepped.
 TEST(RigidWork, WallsAreHeldNotStepped) {
   const participant::WorkReport w = work_of(three_bodies("{walls: [x_min, x_max, y_min]}"));
@@ -57,11 +65,13 @@ TEST(RigidWork, TheProgramWritesTheReportWithCheck) {
   ASSERT_EQ(testing::run_check("cosim-rigidbody", dir / "scene.yaml", dir / "work.yaml", dir / "log"), 0)
       << testing::read_file(dir / "log");
   // The checkpoint's state: the time, and each body's position, orientation and velocities.
-  EXPECT_EQ(testing::read_file(dir / "work.yaml"),
-            "program: rigidbody\nper_step:\n  bodies: 2\nheld:\n  bodies: 3\nframe_bytes: 0\nstate_bytes: " +
-                std::to_string((1 + 13 * 3) * 8) + "\n");
+  EXPECT_THAT(testing::read_file(dir / "work.yaml"),
+              ::testing::StartsWith("program: rigidbody\nper_step:\n  bodies: 2\nheld:\n  bodies: 3\nframe_bytes: "
+                                    "0\nstate_bytes: " +
+                                    std::to_string((1 + 13 * 3) * 8) + "\ndt: "));
   const YAML::Node doc = YAML::LoadFile((dir / "work.yaml").string());
   EXPECT_EQ(doc["per_step"]["bodies"].as<double>(), 2);
+  EXPECT_DOUBLE_EQ(doc["dt"].as<double>(), 5e-4);  // the soft step's two substeps
 
   // Without --work, --check writes nothing; --work needs --check.
   ASSERT_EQ(testing::run_check("cosim-rigidbody", dir / "scene.yaml", ""), 0);
