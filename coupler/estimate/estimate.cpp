@@ -160,11 +160,8 @@ Estimate estimate(const scene::Scene& scene, const std::vector<scene::Participan
     return std::any_of(start.begin(), start.end(), [&](const scene::Participant& p) { return scene::has(p.provides, d); });
   };
   const bool implicit =
-      (scene.coupling.scheme == scene::Scheme::SerialImplicit ||
-       scene.coupling.scheme == scene::Scheme::ParallelImplicit) &&
-      provides(scene::Data::Poses) && provides(scene::Data::Forces);
-  const bool serial =
-      scene.coupling.scheme == scene::Scheme::SerialImplicit || scene.coupling.scheme == scene::Scheme::SerialExplicit;
+      scene::is_implicit(scene.coupling.scheme) && provides(scene::Data::Poses) && provides(scene::Data::Forces);
+  const bool serial = scene::is_serial(scene.coupling.scheme);
   out.iterations_per_window = implicit ? kAssumedIterations : 1.0;
   if (implicit && last != nullptr && last->windows > 0) {
     out.iterations_per_window = last->iterations / last->windows;

@@ -28,8 +28,7 @@ RunRecord run_record(const scene::Scene& scene, const std::map<std::string, Prog
   r.iterations = totals.iterations;
   r.wall_seconds = totals.wall_seconds;
   r.disk_bytes = totals.disk_bytes;
-  const bool serial =
-      scene.coupling.scheme == scene::Scheme::SerialImplicit || scene.coupling.scheme == scene::Scheme::SerialExplicit;
+  const bool serial = scene::is_serial(scene.coupling.scheme);
   double programs = 0;
   for (const auto& [name, seconds] : totals.seconds) {
     Observation o;

@@ -60,8 +60,7 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
   const auto texts = init.all(Tag::Text);
   if (texts.size() != 2) throw protocol::ProtocolError("Init must carry the scene file and text");
   const auto scene = scene::load_scene_from_string(texts[1]->bytes, texts[0]->bytes);
-  const bool implicit = scene.coupling.scheme == scene::Scheme::SerialImplicit ||
-                        scene.coupling.scheme == scene::Scheme::ParallelImplicit;
+  const bool implicit = scene::is_implicit(scene.coupling.scheme);
 
   auto start = std::chrono::steady_clock::now();
   const Array* state = init.find(Tag::State);

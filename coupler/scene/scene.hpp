@@ -21,6 +21,8 @@ using Vec3 = std::array<double, 3>;
 using Quat = std::array<double, 4>;  // w, x, y, z
 
 enum class Scheme { SerialExplicit, ParallelExplicit, SerialImplicit, ParallelImplicit };
+constexpr bool is_serial(Scheme s) { return s == Scheme::SerialExplicit || s == Scheme::SerialImplicit; }
+constexpr bool is_implicit(Scheme s) { return s == Scheme::SerialImplicit || s == Scheme::ParallelImplicit; }
 using coupling::Acceleration;
 enum class Transport { Ipc, Tcp };
 
