@@ -2,6 +2,9 @@
 //   cosim check scene.yaml          validate a scene (each program reads its section), show what would run
 //   cosim run scene.yaml [-o f.h5]  run it
 //   cosim run --resume f.h5         continue a run from its last checkpoint
+//   cosim run scene.yaml --target NAME=TOL
+//                                   run it at the cheapest resolution whose error in NAME meets
+//                                   TOL (docs/study.md)
 //   cosim calibrate                 measure this host's costs for the estimates (docs/cost.md)
 //   cosim study scene.yaml --vary KEY=V1,V2,V3 --measure NAME=EXPR
 //                                   run the scene at several resolutions: each quantity's value,
@@ -25,6 +28,7 @@
 #include "coupler/study/argument_error.hpp"
 #include "coupler/study/measures.hpp"
 #include "coupler/study/study.hpp"
+#include "coupler/target/target.hpp"
 
 namespace {
 
@@ -92,6 +96,30 @@ int main(int argc, char** argv) {
       ->excludes(resume_opt);
   run_cmd->add_flag("-q,--quiet", quiet, "No progress line");
   scene_opt->excludes(resume_opt);
+  cosim::target::Request target_request;
+  std::string budget;
+  auto* target_opt =
+      run_cmd
+          ->add_option("--target", target_request.target,
+                       "NAME=TOL: run at the cheapest resolution whose error in the measure NAME is within TOL (0.5% "
+                       "relative, 1e-4 absolute), chosen from three cheap levels (docs/study.md)")
+          ->excludes(resume_opt)
+          ->excludes("--output");
+  run_cmd
+      ->add_option("--measure", target_request.measures,
+                   "NAME=EXPR: with --target, a quantity besides the scene's study.measure")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->needs(target_opt);
+  run_cmd->add_option("--budget", budget, "With --target: refuse a level estimated to take longer (600, 90s, 10m, 2h)")
+      ->needs(target_opt);
+  run_cmd
+      ->add_option("--ratio", target_request.ratio,
+                   "With --target: the refinement ratio between the cheap levels (default 1.5)")
+      ->needs(target_opt);
+  run_cmd->add_option("--out", target_request.out, "With --target: folder for the levels and the report (default "
+                                                   "runs/target/<scene>)")
+      ->needs(target_opt);
 
   double calibrate_scale = 1;
   auto* calibrate_cmd =
@@ -109,6 +137,12 @@ int main(int argc, char** argv) {
                        "on each level, coarsest first; several --vary change together, level by level")
           ->expected(1)
           ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  study_cmd
+      ->add_option("--set", study_request.set,
+                   "KEY=VALUE: a key of the scene set to the same value on every level (time.end=1.0, "
+                   "participants.fluid.options.bodies={method: staircase})")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   auto* refine_opt = study_cmd
                          ->add_option("--refine", study_request.refine,
                                       "F: instead of --vary, divide coupling.window and every participant's dt by F "
@@ -142,6 +176,22 @@ int main(int argc, char** argv) {
         return cosim::study::study(study_request);
       } catch (const cosim::study::ArgumentError& e) {
         std::cerr << "cosim study: " << e.what() << "\n";
+        return 2;
+      }
+    }
+    if (!target_request.target.empty()) {
+      if (scene_file.empty()) {
+        std::cerr << "cosim run: --target needs a scene file\n";
+        return 2;
+      }
+      target_request.scene = scene_file;
+      target_request.command = command_line(argc, argv);
+      target_request.build = COSIM_GIT_HASH;
+      try {
+        if (!budget.empty()) target_request.budget = cosim::target::parse_budget(budget);
+        return cosim::target::run_to_target(target_request);
+      } catch (const cosim::study::ArgumentError& e) {
+        std::cerr << "cosim run: " << e.what() << "\n";
         return 2;
       }
     }

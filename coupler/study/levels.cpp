@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "coupler/study/argument_error.hpp"
@@ -36,30 +37,63 @@ Varied parse_vary(const std::string& argument) {
   return v;
 }
 
-std::vector<Varied> refine(const scene::Scene& scene, double factor, int levels) {
-  const std::string where = fmt::format("--refine {}", factor);
-  std::vector<Varied> out{{"coupling.window", {}, where}};
-  for (int k = 0; k < levels; ++k) out[0].values.push_back(number(scene.coupling.window / std::pow(factor, k)));
-  for (const scene::Participant& p : scene.participants) {
-    Varied dt{"participants." + p.name + ".dt", {}, where};
-    for (int k = 0; k < levels; ++k) dt.values.push_back(number(p.dt / std::pow(factor, k)));
-    out.push_back(std::move(dt));
+Setting parse_set(const std::string& argument) {
+  const std::string where = "--set " + argument;
+  const std::size_t eq = argument.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == argument.size())
+    throw ArgumentError(where + ": expected KEY=VALUE (time.end=1.0)");
+  try {
+    return {argument.substr(0, eq), YAML::Load(argument.substr(eq + 1)), where};
+  } catch (const YAML::Exception& e) {
+    throw ArgumentError(fmt::format("{}: the value is not YAML: {}", where, e.msg));
   }
+}
+
+std::vector<Varied> scaled(const scene::Scene& scene, const std::vector<double>& scales, const std::string& argument) {
+  const auto windows = static_cast<double>(scene.windows());
+  std::vector<double> counts;  // windows per level
+  for (double s : scales) counts.push_back(std::max(1.0, std::round(windows * s)));
+  // One division each, so that a value reads back as the shortest decimal: 1 / 400 = 0.0025.
+  const auto each = [&](double total, double per_window) {
+    std::vector<YAML::Node> values;
+    for (double n : counts) values.push_back(number(total / (n * per_window)));
+    return values;
+  };
+  const double end = scene.time.end;
+  std::vector<Varied> out{{"coupling.window", each(end, 1), argument}};
+  for (const scene::Participant& p : scene.participants)
+    out.push_back({"participants." + p.name + ".dt", each(end, std::round(scene.coupling.window / p.dt)), argument});
   // IsDefined() before anything else: yaml-cpp throws on any other question to a missing key.
   const scene::Participant* fluid = scene.participant("fluid");
-  const YAML::Node grid = fluid != nullptr && fluid->options.IsMap() ? fluid->options["grid"] : YAML::Node();
+  const YAML::Node options = fluid != nullptr && fluid->options.IsMap() ? fluid->options : YAML::Node();
+  const YAML::Node first = options.IsDefined() ? options["dt_initial"] : YAML::Node();
+  if (first.IsDefined() && first.IsScalar())
+    out.push_back({"participants.fluid.options.dt_initial", each(end, scene.coupling.window / first.as<double>()),
+                   argument});
+  const YAML::Node grid = options.IsDefined() ? options["grid"] : YAML::Node();
   const YAML::Node base = grid.IsDefined() && grid.IsMap() ? grid["cells"] : YAML::Node();
   if (base.IsDefined() && base.IsSequence()) {
-    Varied cells{"participants.fluid.options.grid.cells", {}, where};
-    for (int k = 0; k < levels; ++k) {
+    Varied cells{"participants.fluid.options.grid.cells", {}, argument};
+    for (double n : counts) {
       YAML::Node level(YAML::NodeType::Sequence);
       level.SetStyle(YAML::EmitterStyle::Flow);
-      for (const auto& n : base)
-        level.push_back(std::lround(n.as<double>() * std::pow(factor, k)));
+      for (const auto& c : base) level.push_back(std::max(1L, std::lround(c.as<double>() * n / windows)));
       cells.values.push_back(level);
     }
     out.push_back(std::move(cells));
   }
+  return out;
+}
+
+std::vector<Varied> refine(const scene::Scene& scene, double factor, int levels) {
+  std::vector<double> scales;
+  for (int k = 0; k < levels; ++k) scales.push_back(std::pow(factor, k));
+  return scaled(scene, scales, fmt::format("--refine {}", factor));
+}
+
+std::vector<double> scales_of(const scene::Scene& scene, const std::vector<Varied>& varied) {
+  std::vector<double> out;
+  for (const YAML::Node& window : varied.front().values) out.push_back(scene.coupling.window / window.as<double>());
   return out;
 }
 

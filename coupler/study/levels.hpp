@@ -21,11 +21,30 @@ struct Varied {
 // ArgumentError.
 Varied parse_vary(const std::string& argument);
 
-// --refine F over `levels` levels, from the scene's own values: coupling.window and each
-// participant's dt divided by F per level, participants.fluid.options.grid.cells (when the
-// scene sets it) multiplied by F and rounded to whole cells. The window comes first, so the
-// refinement ratio is F.
+// --set KEY=VALUE: one value, the same on every level (a method, an end time). Throws
+// ArgumentError.
+struct Setting {
+  std::string key;
+  YAML::Node value;
+  std::string argument;  // "--set time.end=1.0"
+};
+Setting parse_set(const std::string& argument);
+
+
+// The scene at each resolution scale s of `scales` (1: as written; 2: twice as fine), from
+// its own values: the number of windows multiplied by s and rounded to a whole number (so
+// that time.end stays a whole number of windows), each participant's dt and the fluid's
+// dt_initial shrunk with the window (so that a window stays the same whole number of
+// steps), participants.fluid.options.grid.cells (when the scene sets it) multiplied by the
+// windows' ratio and rounded to whole cells. The window comes first, so the refinement
+// ratio is the windows'. `argument` names what asked for it, for messages.
+std::vector<Varied> scaled(const scene::Scene& scene, const std::vector<double>& scales, const std::string& argument);
+
+// --refine F over `levels` levels: scaled() at 1, F, F^2, ...
 std::vector<Varied> refine(const scene::Scene& scene, double factor, int levels);
+
+// The resolution scale of each level of scaled(): its windows over the scene's.
+std::vector<double> scales_of(const scene::Scene& scene, const std::vector<Varied>& varied);
 
 // The number of levels, the same for every key; throws ArgumentError naming two that differ.
 std::size_t level_count(const std::vector<Varied>& varied);

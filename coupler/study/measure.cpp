@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "coupler/output/body_series.hpp"
+#include "coupler/output/field_means.hpp"
 #include "coupler/study/argument_error.hpp"
 
 namespace cosim::study {
@@ -49,9 +50,14 @@ class Parser {
       expect(':');
       return series();
     }
+    if (word == "field") {
+      expect(':');
+      return field();
+    }
     const auto f = std::find_if(kFunctions.begin(), kFunctions.end(), [&](const Function& f) { return word == f.name; });
     if (f == kFunctions.end())
-      fail(start, word.empty() ? "expected max, min, final, mean, abs or body:NAME:DATASET.COMPONENT"
+      fail(start, word.empty() ? "expected max, min, final, mean, abs, body:NAME:DATASET.COMPONENT or "
+                                 "field:PARTICIPANT:FIELD[.COMPONENT]"
                                : fmt::format("unknown function '{}'; expected max, min, final, mean or abs", word));
     Expression e;
     e.op = f->op;
@@ -60,7 +66,9 @@ class Parser {
     const std::size_t arg_start = pos_;
     Expression arg = expression();
     if (e.op != Op::Abs && !arg.is_series())
-      fail(arg_start, fmt::format("{}() takes a series (body:NAME:DATASET.COMPONENT), not a number", word));
+      fail(arg_start, fmt::format("{}() takes a series (body:NAME:DATASET.COMPONENT, field:PARTICIPANT:FIELD), not a "
+                                  "number",
+                                  word));
     if (e.op == Op::Mean) {
       expect(',');
       skip_space();
@@ -78,25 +86,50 @@ class Parser {
     return e;
   }
 
-  // After "body:".
-  Expression series() {
-    Expression e;
-    const std::size_t name_start = pos_;
+  // A body's or a participant's name: letters, digits, '_' and '-'.
+  std::string name_after(const char* what) {
+    const std::size_t start = pos_;
     while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_' ||
                                    text_[pos_] == '-'))
       ++pos_;
-    e.body = text_.substr(name_start, pos_ - name_start);
-    if (e.body.empty()) fail(name_start, "expected a body's name after 'body:'");
+    if (pos_ == start) fail(start, fmt::format("expected a {}", what));
+    return text_.substr(start, pos_ - start);
+  }
+
+  // After "field:".
+  Expression field() {
+    Expression e;
+    e.participant = name_after("participant's name after 'field:'");
+    expect(':');
+    const std::size_t field_start = pos_;
+    e.dataset = word_at();
+    if (e.dataset.empty()) fail(field_start, "expected a field's name (velocity, pressure, density, ...)");
+    e.column = -1;
+    if (pos_ < text_.size() && text_[pos_] == '.') {
+      ++pos_;
+      e.column = component();
+    }
+    return e;
+  }
+
+  int component() {
+    const std::size_t start = pos_;
+    const auto c = std::find(kComponents.begin(), kComponents.end(), word_at());
+    if (c == kComponents.end()) fail(start, "expected the component x, y or z");
+    return static_cast<int>(c - kComponents.begin());
+  }
+
+  // After "body:".
+  Expression series() {
+    Expression e;
+    e.body = name_after("body's name after 'body:'");
     expect(':');
     const std::size_t dataset_start = pos_;
     e.dataset = word_at();
     if (std::find(kDatasets.begin(), kDatasets.end(), e.dataset) == kDatasets.end())
       fail(dataset_start, "expected position, velocity, angular_velocity, force or torque");
     expect('.');
-    const std::size_t component_start = pos_;
-    const auto c = std::find(kComponents.begin(), kComponents.end(), word_at());
-    if (c == kComponents.end()) fail(component_start, "expected the component x, y or z");
-    e.column = static_cast<int>(c - kComponents.begin());
+    e.column = component();
     return e;
   }
 
@@ -147,6 +180,18 @@ Samples samples(const Expression& e, const std::filesystem::path& file) {
     for (double& v : s.value) v = std::abs(v);
     return s;
   }
+  if (!e.participant.empty()) {
+    const output::FieldMeans means = output::field_means(file, e.participant, e.dataset);
+    const std::string where = fmt::format("{}: field:{}:{}", file.string(), e.participant, e.dataset);
+    if (e.column < 0 && means.columns != 1)
+      throw std::runtime_error(fmt::format("{} has {} components: name one (.x, .y, .z)", where, means.columns));
+    if (e.column >= 0 && static_cast<std::size_t>(e.column) >= means.columns)
+      throw std::runtime_error(fmt::format("{} has {} component{}", where, means.columns, means.columns > 1 ? "s" : ""));
+    Samples s{means.time, {}};
+    const auto column = static_cast<std::size_t>(std::max(e.column, 0));
+    for (std::size_t row = 0; row < means.time.size(); ++row) s.value.push_back(means.values[row * means.columns + column]);
+    return s;
+  }
   const output::BodySeries series = output::body_series(file, e.body, e.dataset);
   Samples s{series.time, {}};
   for (std::size_t row = 0; row < series.time.size(); ++row)
@@ -186,8 +231,14 @@ bool Expression::is_series() const { return op == Op::Series || (op == Op::Abs &
 Measure parse_measure(const std::string& name, const std::string& text) { return {name, text, Parser(text).measure()}; }
 
 std::vector<std::string> bodies_of(const Expression& e) {
-  if (e.op == Op::Series) return {e.body};
+  if (e.op == Op::Series) return e.participant.empty() ? std::vector<std::string>{e.body} : std::vector<std::string>{};
   return bodies_of(*e.arg);
+}
+
+std::vector<std::string> participants_of(const Expression& e) {
+  if (e.op == Op::Series)
+    return e.participant.empty() ? std::vector<std::string>{} : std::vector<std::string>{e.participant};
+  return participants_of(*e.arg);
 }
 
 double latest_time(const Expression& e) {

@@ -1,13 +1,15 @@
 // A quantity of interest: one number read from a run file by a small expression.
 //
 //   measure := max(series) | min(series) | final(series) | mean(series, t0, t1) | abs(measure)
-//   series  := body:NAME:DATASET.COMPONENT | abs(series)
+//   series  := body:NAME:DATASET.COMPONENT | field:PARTICIPANT:FIELD[.COMPONENT] | abs(series)
 //
 // DATASET is one of a body's series in the run file (docs/output.md): position, velocity,
-// angular_velocity, force, torque; COMPONENT x, y or z. max, min and final take the
-// written rows (one per window with output.every 1); mean is the time average over
-// [t0, t1] s by the trapezoidal rule, the ends interpolated, so that levels with different
-// windows average the same interval.
+// angular_velocity, force, torque; COMPONENT x, y or z. A field series is a grid field's
+// volume-weighted mean over the whole grid at each field frame (output.fields_every), its
+// component named for a vector field. max, min and final take the written rows (one per
+// window with output.every 1, or per field frame); mean is the time average over [t0, t1] s
+// by the trapezoidal rule, the ends interpolated, so that levels with different windows
+// average the same interval.
 #pragma once
 
 #include <filesystem>
@@ -20,8 +22,10 @@ namespace cosim::study {
 struct Expression {
   enum class Op { Series, Max, Min, Final, Mean, Abs };
   Op op = Op::Series;
-  // Series: the body, its dataset and the component's column.
+  // Series: the body, or the participant whose field it is; the dataset or field; the
+  // component's column (-1: none named, for a scalar field).
   std::string body;
+  std::string participant;
   std::string dataset;
   int column = 0;
   double t0 = 0, t1 = 0;  // Mean
@@ -39,8 +43,10 @@ struct Measure {
 // caller to say where the text came from (measures.hpp).
 Measure parse_measure(const std::string& name, const std::string& text);
 
-// The bodies the measure reads, for checking them against the scene before anything runs.
+// The bodies and the participants whose fields the measure reads, for checking them
+// against the scene before anything runs.
 std::vector<std::string> bodies_of(const Expression& e);
+std::vector<std::string> participants_of(const Expression& e);
 // The latest time a mean reads (0 if none): it must lie within every level's run.
 double latest_time(const Expression& e);
 

@@ -21,6 +21,15 @@ std::string mismatch(const Measure& m, const scene::Scene& scene) {
                        fmt::join(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(shown), ", "),
                        names.size() > shown ? ", ..." : names.empty() ? "none" : "");
   }
+  for (const std::string& p : participants_of(m.expression)) {
+    if (scene.participant(p) == nullptr) {
+      std::vector<std::string> names;
+      for (const scene::Participant& q : scene.participants) names.push_back(q.name);
+      return fmt::format("no participant '{}' in the scene (its participants: {})", p,
+                         names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", ")));
+    }
+    if (scene.output.fields_every == 0) return "output.fields_every is 0: the run writes no fields to measure";
+  }
   if (latest_time(m.expression) > scene.time.end)
     return fmt::format("mean() reaches t = {} s, past time.end = {} s", latest_time(m.expression), scene.time.end);
   return "";

@@ -123,7 +123,9 @@ void write_report(const Results& r, const fs::path& file) {
                        r.keys.front(), r.keys.size() > 1 ? " (the first varied key)" : "");
   else
     out << " No refinement ratio, so no order: " << r.ratios.why_none << ".";
-  out << (r.expected_order ? fmt::format(" Expected order: {:g}.", *r.expected_order) : std::string()) << "\n\n";
+  out << (r.expected_order ? fmt::format(" Expected order: {:g}.", *r.expected_order) : std::string());
+  if (!r.set.empty()) out << fmt::format(" Set on every level: {}.", fmt::join(r.set, ", "));
+  out << "\n\n";
   out << (r.jobs > 1 ? fmt::format("Up to {} runs went side by side: they share the cores, so their wall times are "
                                    "longer than alone.",
                                    r.jobs)

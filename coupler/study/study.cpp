@@ -4,20 +4,15 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <fstream>
 #include <iostream>
-#include <stdexcept>
 
-#include "coupler/launcher/command.hpp"
-#include "coupler/launcher/section_check.hpp"
 #include "coupler/scene/error.hpp"
-#include "coupler/scene/plan.hpp"
 #include "coupler/study/argument_error.hpp"
+#include "coupler/study/key_path.hpp"
+#include "coupler/study/level_runs.hpp"
 #include "coupler/study/levels.hpp"
 #include "coupler/study/measures.hpp"
-#include "coupler/study/plot.hpp"
 #include "coupler/study/report.hpp"
-#include "coupler/study/verdict.hpp"
 
 namespace cosim::study {
 namespace {
@@ -49,87 +44,32 @@ std::string arguments_of(const std::vector<Varied>& varied) {
   return fmt::format("{}", fmt::join(out, " "));
 }
 
-void write_variant(const YAML::Node& document, const std::vector<Varied>& varied, std::size_t level,
-                   const Level& l) {
-  std::vector<std::string> set;
-  for (std::size_t i = 0; i < varied.size(); ++i) set.push_back(varied[i].key + " = " + l.values[i]);
+// The scene with every --set applied, as a document and as the scene it loads to.
+std::pair<YAML::Node, scene::Scene> with_settings(const Request& request, std::vector<std::string>& shown) {
+  scene::Scene scene = scene::load_scene(request.scene);
+  YAML::Node document = YAML::Load(scene.text);
+  if (request.set.empty()) return {document, scene};
+  for (const std::string& argument : request.set) {
+    const Setting s = parse_set(argument);
+    set_at(document, s.key, s.value, s.argument);
+    shown.push_back(s.key + " = " + text(s.value));
+  }
   YAML::Emitter out;
-  out << YAML::Comment(fmt::format("level {} of cosim study: {}", level + 1, fmt::join(set, ", "))) << YAML::Newline
-      << variant(document, varied, level);
-  std::ofstream file(l.scene);
-  file << out.c_str() << "\n";
-  if (!file) throw std::runtime_error("cannot write " + l.scene.string());
-}
-
-// Everything `cosim check` finds wrong with a level, before any level runs.
-void check_level(const Level& l, std::size_t level, const std::vector<Measure>& measures, const std::string& arguments) {
-  scene::Scene s;
+  out << document;
   try {
-    s = scene::load_scene(l.scene);
+    scene = scene::load_scene_from_string(out.c_str(), request.scene);
   } catch (const scene::SceneError& e) {
-    throw ArgumentError(fmt::format("{}: level {} is not a valid scene: {}", arguments, level + 1, e.what()));
+    throw ArgumentError(fmt::format("--set {}: the scene is no longer valid: {}", fmt::join(request.set, " --set "),
+                                    e.what()));
   }
-  for (const Measure& m : measures)
-    if (const std::string why = mismatch(m, s); !why.empty())
-      throw ArgumentError(fmt::format("{}: measure {} on level {}: {}", arguments, m.name, level + 1, why));
-  const auto refused = launcher::refused_sections(s, scene::plan_participants(s).start, launcher::own_directory());
-  if (!refused.empty())
-    throw ArgumentError(fmt::format("{}: on level {} ({}), {} refused {} section (above)", arguments, level + 1,
-                                    l.scene.string(), fmt::join(refused, ", "), refused.size() > 1 ? "their" : "its"));
-}
-
-Quantity measure(const Measure& m, const Results& r) {
-  const std::size_t n = r.levels.size();
-  Quantity q{m, std::vector<std::optional<double>>(n), std::vector<std::string>(n),
-             std::vector<std::optional<Estimate>>(n), {}, false, {}, {}};
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!r.levels[k].usage.ended.empty()) {
-      q.problems[k] = "the run failed";
-      continue;
-    }
-    try {
-      q.values[k] = evaluate(m.expression, r.levels[k].run_file);
-    } catch (const std::exception& e) {
-      q.problems[k] = e.what();
-    }
-  }
-  // Level k with the two before it: phi1 the finest, as in Celik et al.
-  if (!r.ratios.r.empty())
-    for (std::size_t k = 2; k < n; ++k)
-      if (q.values[k] && q.values[k - 1] && q.values[k - 2])
-        q.estimates[k] = estimate(*q.values[k], *q.values[k - 1], *q.values[k - 2], r.ratios.r[k - 1], r.ratios.r[k - 2]);
-  const auto& last = q.estimates[n - 1];
-  if (last && last->order) {
-    q.reference = last->extrapolate;
-    q.against_extrapolate = true;
-  } else {
-    q.reference = q.values[n - 1];
-  }
-  if (r.ratios.r.empty())
-    q.finding = "no order: " + r.ratios.why_none + ".";
-  else if (last) {
-    const auto previous = n >= 4 && q.estimates[n - 2] ? q.estimates[n - 2]->order : std::nullopt;
-    q.finding = verdict(*last, r.expected_order, previous);
-  } else if (n > 2)
-    q.finding = fmt::format("no order: the finest three levels do not all have a value.");
-  return q;
-}
-
-void set_plots(Results& r, const fs::path& csv) {
-  const std::string why = plot(csv);
-  for (Quantity& q : r.quantities) {
-    const fs::path png = csv.parent_path() / ("error_" + q.measure.name + ".png");
-    if (why.empty() && fs::exists(png))
-      q.plot = fmt::format("![{}: error against wall time]({})", q.measure.name, png.filename().string());
-    else
-      q.plot = "No plot: " + (why.empty() ? "the plot script wrote no " + png.filename().string() : why) + ".";
-  }
+  return {document, scene};
 }
 
 }  // namespace
 
 int study(const Request& request) {
-  const scene::Scene scene = scene::load_scene(request.scene);
+  std::vector<std::string> settings;
+  const auto [document, scene] = with_settings(request, settings);
   const std::vector<Measure> measures = measures_of(scene, request.measures);
   if (measures.empty())
     throw ArgumentError("nothing to measure: give --measure NAME=EXPRESSION, or the scene's study.measure");
@@ -141,52 +81,18 @@ int study(const Request& request) {
   r.scene = request.scene;
   r.command = request.command;
   for (const Varied& v : varied) r.keys.push_back(v.key);
+  r.set = settings;
   r.ratios = refinement_ratios(varied.front());
   r.expected_order = request.order ? request.order : scene.study.order;
   r.jobs = request.jobs;
 
   const fs::path dir = request.out.empty() ? fs::path("runs/study") / request.scene.stem() : request.out;
   fs::create_directories(dir);
-  const YAML::Node document = YAML::Load(scene.text);
   const std::string arguments = arguments_of(varied);
-  const std::string self = fs::read_symlink("/proc/self/exe").string();
-  std::vector<Job> jobs;
-  for (std::size_t k = 0; k < n; ++k) {
-    Level l;
-    const std::string stem = fmt::format("level_{}", k + 1);
-    l.scene = dir / (stem + ".yaml");
-    l.run_file = dir / (stem + ".h5");
-    l.log = dir / (stem + ".log");
-    for (const Varied& v : varied) l.values.push_back(text(v.values[k]));
-    write_variant(document, varied, k, l);
-    check_level(l, k, measures, arguments);
-    jobs.push_back({{self, "run", l.scene.string(), "-o", l.run_file.string(), "-q"}, l.log});
-    r.levels.push_back(std::move(l));
-  }
+  for (std::size_t k = 0; k < n; ++k) r.levels.push_back(write_level(dir, document, varied, k, measures, arguments));
+  const bool failed = !run_levels(r.levels, 0, r.keys, request.jobs, "cosim study");
 
-  const auto started = [&](std::size_t k) {
-    std::vector<std::string> set;
-    for (std::size_t i = 0; i < varied.size(); ++i) set.push_back(varied[i].key + " = " + r.levels[k].values[i]);
-    std::cout << fmt::format("cosim study: level {}/{} running ({})", k + 1, n, fmt::join(set, ", ")) << std::endl;
-  };
-  const auto finished = [&](std::size_t k, const Usage& u) {
-    if (u.ended.empty())
-      std::cout << fmt::format("cosim study: level {}/{} done: {:.2f} s wall, {:.2f} s CPU, {:.0f} MB peak", k + 1, n,
-                               u.wall_seconds, u.cpu_seconds, u.peak_mb)
-                << std::endl;
-    else
-      std::cout << fmt::format("cosim study: level {}/{} failed: cosim run {} (see {})", k + 1, n, u.ended,
-                               r.levels[k].log.string())
-                << std::endl;
-  };
-  const std::vector<Usage> usage = run_all(jobs, request.jobs, started, finished);
-  bool failed = false;
-  for (std::size_t k = 0; k < n; ++k) {
-    r.levels[k].usage = usage[k];
-    failed = failed || !usage[k].ended.empty();
-  }
-
-  for (const Measure& m : measures) r.quantities.push_back(measure(m, r));
+  for (const Measure& m : measures) r.quantities.push_back(measure_quantity(m, r));
   const fs::path csv = dir / "results.csv";
   write_csv(r, csv);
   set_plots(r, csv);

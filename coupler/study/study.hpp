@@ -19,6 +19,7 @@ namespace cosim::study {
 struct Request {
   std::filesystem::path scene;
   std::vector<std::string> vary;      // KEY=V1,V2,...
+  std::vector<std::string> set;       // KEY=VALUE, the same on every level
   std::optional<double> refine;       // or: the factor, with `levels`
   int levels = 3;
   std::vector<std::string> measures;  // NAME=EXPR, added to (or replacing by name) the scene's study.measure
@@ -49,6 +50,7 @@ struct Results {
   std::filesystem::path scene;
   std::string command;
   std::vector<std::string> keys;  // varied, in order; the first gives the ratios
+  std::vector<std::string> set;   // KEY = VALUE, the same on every level
   std::vector<Level> levels;
   Ratios ratios;
   std::optional<double> expected_order;

@@ -44,13 +44,15 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::
 // its asymptotic range for the first mass's position at the end, x1(1 s).
 TEST(Study, OscillatorShowsTheSchemesOrderAndTheExtrapolateBeatsTheFinestLevel) {
   OscillatorScene s;
-  s.end = 1.0;
+  s.end = 2.0;  // --set cuts it to 1 s on every level
   s.window = 0.02;
   s.dt_mass = s.dt_spring = 0.002;
   const auto dir = scratch_dir("study_oscillator");
   write_file(dir / "oscillator.yaml", s.yaml());
   const auto r = run_cosim({"study", (dir / "oscillator.yaml").string(), "--refine", "2", "--levels", "3", "--measure",
-                            "x1=final(body:m1:position.x)", "--order", "2", "--out", (dir / "study").string()});
+                            "x1=final(body:m1:position.x)", "--order", "2", "--set", "time.end=1.0", "--out",
+                            (dir / "study").string()});
+  s.end = 1.0;
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::cout << r.output;
   const auto rows = read_csv(dir / "study" / "results.csv");
@@ -68,6 +70,7 @@ TEST(Study, OscillatorShowsTheSchemesOrderAndTheExtrapolateBeatsTheFinestLevel) 
   EXPECT_THAT(r.output, HasSubstr("in the asymptotic range"));
   const std::string report = read_file(dir / "study" / "report.md");
   EXPECT_THAT(report, HasSubstr("| level | coupling.window | participants.mass.dt | participants.spring.dt | value |"));
+  EXPECT_THAT(report, HasSubstr("Set on every level: time.end = 1.0."));
   for (const char* f : {"level_1.yaml", "level_3.h5", "level_2.log"}) EXPECT_TRUE(std::filesystem::exists(dir / "study" / f)) << f;
 }
 
@@ -100,6 +103,10 @@ TEST(Study, BadArgumentsAreNamedAndExitWithStatusTwo) {
   EXPECT_THAT(refused({"--vary", "coupling.window=0.02,0.015", "--measure", measure}),
               HasSubstr("--vary coupling.window=0.02,0.015: level 2 is not a valid scene"));
   EXPECT_THAT(refused({"--refine", "2"}), HasSubstr("nothing to measure"));
+  EXPECT_THAT(refused({"--refine", "2", "--measure", measure, "--set", "time.end=0.015"}),
+              HasSubstr("cosim study: --set time.end=0.015: the scene is no longer valid"));
+  EXPECT_THAT(refused({"--refine", "2", "--measure", measure, "--set", "time.end"}),
+              HasSubstr("--set time.end: expected KEY=VALUE"));
 }
 
 }  // namespace

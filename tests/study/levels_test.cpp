@@ -102,6 +102,29 @@ TEST(Refine, DividesStepsAndMultipliesCellsFromTheScenesValues) {
   EXPECT_EQ(doc["coupling"]["window"].as<double>(), 0.01);  // the scene itself is left as it was
 }
 
+// A scale that is not a whole ratio keeps time.end a whole number of windows and each
+// window the same whole number of steps; the fluid's first step shrinks with them.
+TEST(Scaled, AnyScaleGivesWholeWindowsAndStepsPerWindow) {
+  std::string yaml = kScene;
+  yaml.replace(yaml.find("options: {grid"), 14, "options: {dt_initial: 0.005, grid");
+  const scene::Scene s = scene::load_scene_from_string(yaml);
+  const std::vector<Varied> keys = scaled(s, {1 / 2.25, 1 / 1.5, 1, 2.3}, "--target x=1%");
+  ASSERT_EQ(keys.size(), 5u);
+  EXPECT_EQ(keys[3].key, "participants.fluid.options.dt_initial");
+  const std::vector<double> scales = scales_of(s, keys), expected{0.44, 0.67, 1, 2.3};
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(scales[k], expected[k], 1e-12) << k;
+  const YAML::Node doc = YAML::Load(s.text);
+  for (std::size_t level = 0; level < 4; ++level) {
+    YAML::Emitter out;
+    out << variant(doc, keys, level);
+    const scene::Scene v = scene::load_scene_from_string(out.c_str());  // throws if not whole
+    EXPECT_NEAR(v.coupling.window / v.participant("rigidbody")->dt, 10, 1e-9);
+    EXPECT_NEAR(v.participant("fluid")->options["dt_initial"].as<double>(), v.coupling.window / 2, 1e-15);
+  }
+  EXPECT_EQ(text(keys[4].values[0]), "[4, 4, 9]");
+  EXPECT_EQ(text(keys[4].values[3]), "[23, 23, 46]");
+}
+
 TEST(Ratios, StepsShrinkAndCountsGrow) {
   EXPECT_EQ(refinement_ratios(parse_vary("w=0.01,0.005,0.002")).r, (std::vector<double>{2, 2.5}));
   const Ratios cells = refinement_ratios(parse_vary("c=[10,10,10],[20,20,20],[40,40,80]"));

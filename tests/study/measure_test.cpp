@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "coupler/field/field_frame.hpp"
 #include "coupler/output/run_file.hpp"
 #include "coupler/scene/error.hpp"
 #include "coupler/study/argument_error.hpp"
@@ -36,11 +37,16 @@ TEST(Measure, ErrorsPointAtTheRestOfTheText) {
   EXPECT_EQ(parse_error("max(body:ball:velocity.x"), "at the end: expected ')'");
   EXPECT_EQ(parse_error("max(body:ball:velocity.x) + 1"), "at '+ 1': expected the end of the measure");
   EXPECT_EQ(parse_error("max(final(body:ball:velocity.x))"),
-            "at 'final(body:ball:velocity.x))': max() takes a series (body:NAME:DATASET.COMPONENT), not a number");
+            "at 'final(body:ball:velocity.x))': max() takes a series (body:NAME:DATASET.COMPONENT, "
+            "field:PARTICIPANT:FIELD), not a number");
   EXPECT_EQ(parse_error("mean(body:ball:velocity.x, 1, 0.5)"), "at '0.5)': mean() needs t1 > t0 (t0 = 1)");
   EXPECT_EQ(parse_error("mean(body:ball:velocity.x, 1)"), "at ')': expected ','");
   EXPECT_EQ(parse_error("max(body::velocity.x)"), "at ':velocity.x)': expected a body's name after 'body:'");
   EXPECT_EQ(parse_error(" abs( min( body:ball-2:force.y ) ) "), "");
+  EXPECT_EQ(parse_error("final(field::velocity.x)"), "at ':velocity.x)': expected a participant's name after 'field:'");
+  EXPECT_EQ(parse_error("final(field:fluid:.x)"), "at '.x)': expected a field's name (velocity, pressure, density, ...)");
+  EXPECT_EQ(parse_error("final(field:fluid:velocity.w)"), "at 'w)': expected the component x, y or z");
+  EXPECT_EQ(parse_error("final(field:fluid:pressure)"), "");
 }
 
 TEST(Measure, NamesItsBodiesAndItsLatestTime) {
@@ -48,9 +54,15 @@ TEST(Measure, NamesItsBodiesAndItsLatestTime) {
   EXPECT_EQ(bodies_of(m.expression), std::vector<std::string>{"ball-2"});
   EXPECT_EQ(latest_time(m.expression), 1.5);
   EXPECT_EQ(latest_time(parse_measure("q", "final(body:b:position.x)").expression), 0.0);
+  const Measure f = parse_measure("q", "max(abs(field:fluid:velocity.z))");
+  EXPECT_EQ(participants_of(f.expression), std::vector<std::string>{"fluid"});
+  EXPECT_TRUE(bodies_of(f.expression).empty());
 }
 
 // A run of 11 rows, t = 0, 0.1, ..., 1: the ball's velocity.x is t - 0.5, its position.z 2 t.
+// Participant p writes fields at t = 0, 0.5 and 1 on two cells of widths 1 and 2 along x:
+// the scalar s is 10 t in both, the vector u has x 1 and 4 (volume-weighted mean 3, plain
+// mean 2.5) and y 10 t in the second (mean 20 t / 3).
 class OnARunFile : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -64,6 +76,11 @@ class OnARunFile : public ::testing::Test {
       w.poses = {0, 0, 2 * t, 1, 0, 0, 0, t - 0.5, 0, 0, 0, 0, 0};
       w.forces = {0, -3, 0, 0, 0, 0};
       run.append(w);
+      if (k % 5 == 0) {
+        const field::RectilinearGrid grid{{std::vector<double>{0, 1, 3}, {0, 1}, {0, 1}}};
+        run.write_fields("p", w.window, t,
+                         {grid, {{"s", 1, {10 * t, 10 * t}}, {"u", 3, {1, 0, 0, 4, 10 * t, 0}}}});
+      }
     }
   }
   void TearDown() override { std::filesystem::remove(file_); }
@@ -87,6 +104,15 @@ TEST_F(OnARunFile, MeanIsTheTimeAverageOverTheInterval) {
   EXPECT_NEAR(value("mean(body:ball:velocity.x, 0, 1)"), 0.0, 1e-12);
   EXPECT_NEAR(value("mean(body:ball:velocity.x, 0.6, 0.8)"), 0.2, 1e-12);
   EXPECT_THROW(value("mean(body:ball:velocity.x, 0.5, 1.5)"), std::runtime_error);
+}
+
+TEST_F(OnARunFile, FieldsAreVolumeWeightedMeansOverTheGrid) {
+  EXPECT_NEAR(value("final(field:p:s)"), 10.0, 1e-12);
+  EXPECT_NEAR(value("max(field:p:u.x)"), 3.0, 1e-12);
+  EXPECT_NEAR(value("final(field:p:u.y)"), 20.0 / 3, 1e-12);
+  EXPECT_NEAR(value("mean(field:p:u.y, 0, 1)"), 10.0 / 3, 1e-12);  // linear between the frames
+  for (const char* bad : {"final(field:p:u)", "final(field:p:s.y)", "final(field:p:w)", "final(field:q:s)"})
+    EXPECT_THROW(value(bad), std::runtime_error) << bad;
 }
 
 const char* kScene = R"(time: {end: 1}
@@ -136,6 +162,8 @@ TEST(Measures, ErrorsNameTheArgumentOrTheSceneKey) {
   EXPECT_EQ(argument_error(std::string(kScene) + "    bad: max(body:ball:position.q)\n", "v=max(body:ball:velocity.x)"),
             "scene: scene.yaml:8: study.measure.bad = max(body:ball:position.q): at 'q)': expected the component x, y "
             "or z");
+  EXPECT_EQ(argument_error(kScene, "u=final(field:fluid:velocity.x)"),
+            "--measure u=final(field:fluid:velocity.x): no participant 'fluid' in the scene (its participants: none)");
 }
 
 }  // namespace
