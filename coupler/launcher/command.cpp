@@ -49,7 +49,8 @@ std::vector<std::string> participant_command(const scene::Scene& scene,
   command[0] = program->string();
   if (!p.placement.local())
     return placed_command(scene, p, std::move(command), programs_dir,
-                          {protocol::kEndpointEnv, protocol::kParticipantEnv, protocol::curve::kServerKeyEnv,
+                          {protocol::kEndpointEnv, protocol::kParticipantEnv, protocol::kHeartbeatEnv,
+                           protocol::curve::kServerKeyEnv,
                            protocol::curve::kPublicKeyEnv, protocol::curve::kSecretKeyEnv});
   if (p.ranks > 1)
     command.insert(command.begin(), {launcher_path(scene, p, "mpirun", programs_dir, "participants." + p.name + ".ranks",

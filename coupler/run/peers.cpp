@@ -31,6 +31,7 @@ Peers::Peers(protocol::Server& server, std::chrono::milliseconds timeout, std::c
     : server_(server), timeout_(timeout), heartbeat_(heartbeat) {}
 
 Peers::~Peers() {
+  for (const auto& held : refusals_.held_back()) spdlog::warn("{}", held);
   for (auto& [name, p] : processes_) p.stop(std::chrono::milliseconds(0));
   launcher::end_orphans();
 }
@@ -60,7 +61,8 @@ void Peers::fail(const std::string& name, const std::string& problem, const std:
 }
 
 void Peers::watch_connections() {
-  for (const auto& refusal : server_.refusals()) spdlog::warn("{}", refusal);
+  for (const auto& refusal : server_.refusals())
+    if (const auto line = refusals_.admit(refusal)) spdlog::warn("{}", *line);
   for (auto& name : server_.lost())
     if (processes_.contains(name)) lost_.insert(std::move(name));
 }

@@ -14,6 +14,7 @@
 #include "coupler/launcher/process.hpp"
 #include "coupler/protocol/message.hpp"
 #include "coupler/protocol/server.hpp"
+#include "coupler/run/warning_rate.hpp"
 
 namespace cosim::run {
 
@@ -46,7 +47,8 @@ class Peers {
  private:
   [[noreturn]] void fail(const std::string& name, const std::string& problem,
                          const std::string& when);
-  // Logs what the server refused, notes whom it lost.
+  // Logs what the server refused (at most once a second: warning_rate.hpp), notes whom it
+  // lost.
   void watch_connections();
   std::string lost_connection() const;  // the problem, for fail()
   // Fails the first participant whose connection was lost, unless it had said Bye.
@@ -58,6 +60,7 @@ class Peers {
   std::map<std::string, launcher::Process> processes_;
   std::set<std::string> said_bye_;  // may exit without that being a failure
   std::set<std::string> lost_;      // connections ended; failed once their last messages are read
+  WarningRate refusals_;
 };
 
 }  // namespace cosim::run

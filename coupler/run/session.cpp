@@ -112,6 +112,7 @@ void Session::execute() {
     auto env = launcher::mpi_environment(!plan_.start[i].placement.local());
     env[protocol::kEndpointEnv] = server->endpoint();
     env[protocol::kParticipantEnv] = name;
+    env[protocol::kHeartbeatEnv] = fmt::format("{}", scene_.coupling.heartbeat);
     env.merge(listen.environment[name]);
     peers.start(name, commands_[i], env);
   }

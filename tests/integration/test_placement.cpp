@@ -81,7 +81,7 @@ TEST(Placement, HostsAndHostfileGoToMpirunWithTheCouplersVariables) {
   const auto r = run_cosim({"check", (dir / "scene.yaml").string()});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string forwarded =
-      " -x COSIM_ENDPOINT -x COSIM_PARTICIPANT -x COSIM_CURVE_SERVER_KEY -x COSIM_CURVE_PUBLIC_KEY"
+      " -x COSIM_ENDPOINT -x COSIM_PARTICIPANT -x COSIM_HEARTBEAT -x COSIM_CURVE_SERVER_KEY -x COSIM_CURVE_PUBLIC_KEY"
       " -x COSIM_CURVE_SECRET_KEY ";
   EXPECT_THAT(r.output, ::testing::ContainsRegex("starts mass .*mpirun -n 4 --hostfile " + (dir / "nodes.txt").string() +
                                                  forwarded + program("cosim-test-oscillator-mass")));

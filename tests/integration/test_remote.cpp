@@ -1,6 +1,7 @@
 // `cosim run` as it runs across hosts, on this machine: the coupler listens on 127.0.0.2
 // with CURVE and the participants connect to it as if remote; foreign clients knock; a
-// participant stops answering. Traffic goes to 127.0.0.0/8 only.
+// participant stops answering, the coupler stops answering. Traffic goes to 127.0.0.0/8
+// only.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -130,6 +131,38 @@ TEST(Remote, ForeignClientsAreRefusedAndTheRunFinishesUnharmed) {
   expect_same_series(dir / "quiet.h5", dir / "knocked.h5");
 }
 
+// Guards against: a client knocking again and again (a scanner, a misconfigured participant
+// retrying) flooding the log.
+TEST(Remote, RepeatedRefusalsAreLoggedOnceASecondWithACount) {
+  const auto dir = scratch_dir("remote_flood");
+  auto s = on_another_address(oscillator());
+  s.spring_extra = {"delay: 0.01"};
+  write_file(dir / "flooded.yaml", s.yaml());
+  CosimProcess cosim(run_args(dir, "flooded"));
+  const std::string endpoint = wait_for_output(cosim, R"(listening on (tcp://[0-9.:]+))");
+  (void)wait_for_output(cosim, R"((started spring))");
+  const pid_t mass = child_pid(cosim.pid(), "cosim-test-oscillator-mass");
+  ASSERT_GT(mass, 0);
+  const std::string server_key = environment_of(mass)[curve::kServerKeyEnv];
+  zmq::context_t context;
+  int knocks = 0;
+  for (auto until = std::chrono::steady_clock::now() + 1500ms; std::chrono::steady_clock::now() < until; ++knocks) {
+    auto k = foreign(context, "spring", curve::ClientKeys{server_key, curve::make_keypair()});
+    k.connect(endpoint);
+    std::this_thread::sleep_for(5ms);
+  }
+  const auto r = cosim.wait();
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string refusal = "refused a connection from 127.0.0.1: its key is not one of this run's";
+  std::size_t lines = 0;
+  for (std::size_t at = r.output.find(refusal); at != std::string::npos; at = r.output.find(refusal, at + 1)) ++lines;
+  std::cout << knocks << " knocks, " << lines << " lines logged\n";
+  EXPECT_GT(knocks, 50);
+  EXPECT_GE(lines, 1u);
+  EXPECT_LE(lines, 4u);  // 1.5 s of knocking: the first, one a second after, one at the end
+  EXPECT_THAT(r.output, ::testing::ContainsRegex("more times since it was last shown"));
+}
+
 // Guards against: a participant that stops answering (its host died: no process to watch)
 // hanging the run until coupling.timeout, going unnamed, or the resume not ending identical.
 TEST(Remote, StoppedParticipantIsLostWithinTheHeartbeatAndResumeIsIdentical) {
@@ -161,6 +194,50 @@ TEST(Remote, StoppedParticipantIsLostWithinTheHeartbeatAndResumeIsIdentical) {
   const auto resumed = run_cosim({"run", "--resume", (dir / "stopped.h5").string(), "-q"});
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   expect_same_series(dir / "whole.h5", dir / "stopped.h5");
+}
+
+// Whether the process has exited: gone, or a zombie its (stopped) parent has not reaped.
+bool exited(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return true;
+  const auto close = line.rfind(')');
+  return close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z';
+}
+
+// Guards against: participants whose coupler's host died (no process left to send them
+// SIGTERM, no connection closed) waiting for it for ever.
+TEST(Remote, ParticipantsOfAStoppedCouplerExitWithinTheHeartbeat) {
+  const auto dir = scratch_dir("remote_coupler_stopped");
+  auto s = on_another_address(oscillator());
+  s.heartbeat = 1.5;
+  s.timeout = 30;
+  s.spring_extra = {"delay: 0.01"};
+  write_file(dir / "stopped.yaml", s.yaml());
+  CosimProcess cosim(run_args(dir, "stopped"));
+  (void)wait_for_output(cosim, R"((started spring))");
+  std::this_thread::sleep_for(500ms);
+  const pid_t mass = child_pid(cosim.pid(), "cosim-test-oscillator-mass");
+  const pid_t spring = child_pid(cosim.pid(), "cosim-test-oscillator-spring");
+  ASSERT_GT(mass, 0);
+  ASSERT_GT(spring, 0);
+  kill(cosim.pid(), SIGSTOP);
+  const auto stopped_at = std::chrono::steady_clock::now();
+  while (!(exited(mass) && exited(spring)) && std::chrono::steady_clock::now() < stopped_at + 10s)
+    std::this_thread::sleep_for(20ms);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stopped_at).count();
+  std::cout << "the participants of a stopped coupler exited after " << seconds << " s (heartbeat 1.5 s)\n";
+  const bool both = exited(mass) && exited(spring);
+  kill(cosim.pid(), SIGCONT);
+  const auto r = cosim.wait();
+  ASSERT_TRUE(both) << r.output;
+  // A ping every half heartbeat and half a heartbeat for its answer: the connection ends at
+  // most a heartbeat after the coupler stopped; exit then waits up to the socket's linger
+  // (1 s, client.cpp) for messages still queued. Measured 2.0 s here; a second of slack.
+  EXPECT_LT(seconds, 1.5 + 1.0 + 1.0);
+  EXPECT_THAT(r.output, HasSubstr("participant 'mass' lost the coupler at tcp://127.0.0.2:"));
+  EXPECT_THAT(r.output, HasSubstr("or it answered no heartbeat for 750 ms (coupling.heartbeat 1.5 s)"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
 }
 
 }  // namespace

@@ -171,6 +171,26 @@ TEST_P(Transport, ClientWaitTimesOut) {
   }
 }
 
+// A coupler that exits closes its end: the participant waiting on it hears so at once,
+// with the coupler's address, instead of waiting out its timeout.
+TEST_P(Transport, ClosedCouplerEndsTheWaitNamingIt) {
+  auto server = std::make_unique<Server>(bind_address());
+  const std::string endpoint = server->endpoint();
+  Client client(endpoint, "fluid");
+  client.reply(make(Type::Ready));
+  ASSERT_TRUE(server->receive(kWait));  // connected
+  server.reset();
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    client.wait_for({Type::Init}, kWait);
+    FAIL() << "no ProtocolError";
+  } catch (const ProtocolError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("participant 'fluid' lost the coupler at " + endpoint +
+                                    ": the connection closed"));
+  }
+  EXPECT_LT(std::chrono::steady_clock::now() - start, 2s);
+}
+
 TEST_P(Transport, IdentityMustMatchHeader) {
   Server server(bind_address());
   zmq::context_t context;
@@ -241,6 +261,18 @@ TEST(ClientEnvironment, HalfSetIsAnError) {
   setenv(kEndpointEnv, "tcp://127.0.0.1:5555", 1);
   unsetenv(kParticipantEnv);
   EXPECT_THROW(Client::from_environment(), ProtocolError);
+}
+
+TEST(ClientEnvironment, HeartbeatMustBeSeconds) {
+  setenv(kEndpointEnv, "tcp://127.0.0.1:5555", 1);
+  setenv(kParticipantEnv, "tracker", 1);
+  for (const char* bad : {"", "ten", "0", "-1", "1s"}) {
+    setenv(kHeartbeatEnv, bad, 1);
+    EXPECT_THROW(Client::from_environment(), ProtocolError) << bad;
+  }
+  setenv(kHeartbeatEnv, "2.5", 1);
+  EXPECT_TRUE(Client::from_environment());
+  unsetenv(kHeartbeatEnv);
 }
 
 TEST(ClientEnvironment, ConnectsUnderItsName) {
