@@ -1,6 +1,7 @@
 #include "tests/integration/cosim_process.hpp"
 
 #include <fcntl.h>
+#include <sched.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -60,7 +61,7 @@ Finished run_scene_text(const fs::path& dir, const std::string& yaml, const std:
   return run_cosim(run_args(dir, stem));
 }
 
-CosimProcess::CosimProcess(const std::vector<std::string>& args) {
+CosimProcess::CosimProcess(const std::vector<std::string>& args, const std::string& network_namespace) {
   static int counter = 0;
   log_ = fs::temp_directory_path() /
          ("cosim-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + ".log");
@@ -75,6 +76,10 @@ CosimProcess::CosimProcess(const std::vector<std::string>& args) {
     const int fd = open(log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(fd, STDOUT_FILENO);
     dup2(fd, STDERR_FILENO);
+    if (!network_namespace.empty()) {
+      const int ns = open(network_namespace.c_str(), O_RDONLY | O_CLOEXEC);
+      if (ns < 0 || setns(ns, CLONE_NEWNET) != 0) _exit(126);
+    }
     execv(cargs[0], cargs.data());
     _exit(127);
   }

@@ -17,7 +17,9 @@ struct Finished {
 
 class CosimProcess {
  public:
-  explicit CosimProcess(const std::vector<std::string>& args);
+  // With `network_namespace` (a /var/run/netns path) it runs inside that namespace, as on
+  // another host.
+  explicit CosimProcess(const std::vector<std::string>& args, const std::string& network_namespace = "");
   // A run a failed assertion left behind is killed (its participants follow the coupler).
   ~CosimProcess();
   CosimProcess(const CosimProcess&) = delete;

@@ -42,7 +42,7 @@ std::string OscillatorScene::yaml() const {
     << "    options: {integrator: " << integrator << "}\n";
   for (const auto& line : mass_keys) s << "    " << line << "\n";
   s << "  spring:\n"
-    << "    command: [cosim-test-oscillator-spring]\n"
+    << "    command: " << spring_command << "\n"
     << "    provides: [forces]\n"
     << "    needs: [poses]\n"
     << "    dt: " << dt_spring << "\n";
