@@ -125,8 +125,13 @@ Scene load_scene_from_string(const std::string& text, const fs::path& file) {
   if (r.has("output")) s.output = read_output(r.map("output"));
   s.gravity = r.vec3("gravity", s.gravity);
   s.domain = read_box(r.map("domain"));
+  s.folder = file.parent_path();
+  if (r.has("folder")) {
+    s.folder = s.folder / r.string("folder");
+    if (!fs::is_directory(s.folder)) r.fail("folder", "no such folder: " + s.folder.string());
+  }
   if (r.has("bodies")) {
-    Bodies b = read_bodies(r.maps("bodies"), s.domain, file.parent_path(), s.output.file);
+    Bodies b = read_bodies(r.maps("bodies"), s.domain, s.folder, s.output.file);
     s.bodies = std::move(b.bodies);
     s.generators = std::move(b.generators);
   }
@@ -134,7 +139,7 @@ Scene load_scene_from_string(const std::string& text, const fs::path& file) {
     s.effects = read_effects(r);
     s.effects_line = r.line("effects");
   }
-  if (r.has("participants")) s.participants = read_participants(r.map("participants"), s.coupling, file.parent_path());
+  if (r.has("participants")) s.participants = read_participants(r.map("participants"), s.coupling, s.folder);
   if (r.has("study")) s.study = read_study(r.map("study"));
   r.finish();
   // A scene whose effects no set of participants can serve is as wrong as a negative

@@ -165,6 +165,10 @@ struct Study {
 
 struct Scene {
   std::filesystem::path file;              // where it was read from ("<string>" if not a file)
+  // Where relative file names in the scene (meshes, balls, tracer fields, hostfiles) are
+  // found: the key `folder` (relative to the scene file's folder), or the scene file's
+  // folder. `cosim study` sets it in the levels it writes elsewhere.
+  std::filesystem::path folder;
   std::string text;                        // the YAML exactly as read, stored in every run file
   Time time;
   Coupling coupling;

@@ -53,6 +53,14 @@ void check_level(const Level& l, std::size_t level, const std::vector<Measure>& 
 
 }  // namespace
 
+YAML::Node level_document(const scene::Scene& scene) {
+  YAML::Node document = YAML::Load(scene.text);
+  // A scene in the working folder has an empty folder, which fs::absolute refuses.
+  const fs::path folder = scene.folder.empty() ? fs::path(".") : scene.folder;
+  document["folder"] = fs::absolute(folder).lexically_normal().string();
+  return document;
+}
+
 Level write_level(const fs::path& dir, const YAML::Node& document, const std::vector<Varied>& varied, std::size_t k,
                   const std::vector<Measure>& measures, const std::string& arguments) {
   Level l;

@@ -9,11 +9,16 @@
 #include <filesystem>
 #include <vector>
 
+#include "coupler/scene/scene.hpp"
 #include "coupler/study/levels.hpp"
 #include "coupler/study/measure.hpp"
 #include "coupler/study/study.hpp"
 
 namespace cosim::study {
+
+// The scene as a document for its levels, which live in another folder: `folder` set to
+// the scene's own (absolute), so that the files it names by relative path are found.
+YAML::Node level_document(const scene::Scene& scene);
 
 // Level `k` (0-based) of `varied`: DIR/level_<k+1>.yaml written from the scene `document`
 // with the level's values, and checked (the scene loader, every measure, each built-in

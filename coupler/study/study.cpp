@@ -47,7 +47,7 @@ std::string arguments_of(const std::vector<Varied>& varied) {
 // The scene with every --set applied, as a document and as the scene it loads to.
 std::pair<YAML::Node, scene::Scene> with_settings(const Request& request, std::vector<std::string>& shown) {
   scene::Scene scene = scene::load_scene(request.scene);
-  YAML::Node document = YAML::Load(scene.text);
+  YAML::Node document = level_document(scene);
   if (request.set.empty()) return {document, scene};
   for (const std::string& argument : request.set) {
     const Setting s = parse_set(argument);

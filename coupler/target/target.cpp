@@ -155,7 +155,7 @@ int run_to_target(const Request& request) {
   results.expected_order = scene.study.order;
   const fs::path dir = request.out.empty() ? fs::path("runs/target") / request.scene.stem() : request.out;
   fs::create_directories(dir);
-  const YAML::Node document = YAML::Load(scene.text);
+  const YAML::Node document = study::level_document(scene);
   for (std::size_t k = 0; k < kCheap; ++k)
     results.levels.push_back(study::write_level(dir, document, varied, k, {measure}, argument));
   const std::vector<double> cheap_scales = study::scales_of(scene, varied);

@@ -18,7 +18,12 @@ std::string ball(const std::string& extra = "") {
 TEST(Validation, UnknownTopLevelKey) {
   EXPECT_EQ(load_error(head + "bodys: []\n"),
             "scene.yaml:4: bodys = []: unknown key; expected one of: "
-            "time, coupling, output, gravity, domain, bodies, effects, participants, study");
+            "time, coupling, output, gravity, domain, folder, bodies, effects, participants, study");
+}
+
+TEST(Validation, FolderMustExist) {
+  EXPECT_EQ(load_error(head + "folder: no-such-folder\n"),
+            "scene.yaml:4: folder = no-such-folder: no such folder: no-such-folder");
 }
 
 TEST(Validation, UnknownNestedKey) {

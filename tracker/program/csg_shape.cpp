@@ -24,9 +24,9 @@ enum Kind : std::size_t {
   kLattice, kBalls
 };
 
-std::vector<csg::Expression> shapes(const Reader& r, const std::string& key, const std::filesystem::path& file) {
+std::vector<csg::Expression> shapes(const Reader& r, const std::string& key, const std::filesystem::path& folder) {
   std::vector<csg::Expression> out;
-  for (const Reader& s : r.maps(key)) out.push_back(read_shape(s, file));
+  for (const Reader& s : r.maps(key)) out.push_back(read_shape(s, folder));
   if (out.empty()) r.fail(key, "needs at least one shape");
   return out;
 }
@@ -40,7 +40,7 @@ Eigen::Quaterniond orientation(const Reader& r) {
   return out.normalized();
 }
 
-csg::Expression transform(const Reader& r, const std::filesystem::path& file) {
+csg::Expression transform(const Reader& r, const std::filesystem::path& folder) {
   Eigen::Affine3d t = Eigen::Affine3d::Identity();
   t.translate(scene::to_eigen(r.vec3("translate", {0, 0, 0})));
   if (r.has("rotate")) {
@@ -50,11 +50,11 @@ csg::Expression transform(const Reader& r, const std::filesystem::path& file) {
     t.rotate(Eigen::AngleAxisd(rot.number("angle"), axis.normalized()));
     rot.finish();
   }
-  return csg::Expression::transformed(t, read_shape(r.map("shape"), file));
+  return csg::Expression::transformed(t, read_shape(r.map("shape"), folder));
 }
 
-csg::Expression lattice(const Reader& r, const std::filesystem::path& file) {
-  const csg::Expression cell = read_shape(r.map("shape"), file);
+csg::Expression lattice(const Reader& r, const std::filesystem::path& folder) {
+  const csg::Expression cell = read_shape(r.map("shape"), folder);
   const Eigen::Vector3d spacing = scene::to_eigen(r.vec3("spacing"));
   std::array<double, 3> count{};
   r.numbers("count", count, Range::at_least(1));
@@ -71,8 +71,8 @@ csg::Expression lattice(const Reader& r, const std::filesystem::path& file) {
   return csg::Expression::unite(copies);
 }
 
-csg::Expression balls_file(const Reader& r, const std::filesystem::path& scene_file) {
-  const std::filesystem::path path = scene_file.parent_path() / r.string("file");
+csg::Expression balls_file(const Reader& r, const std::filesystem::path& folder) {
+  const std::filesystem::path path = folder / r.string("file");
   std::ifstream in(path);
   if (!in) r.fail("file", "cannot read " + path.string());
   std::vector<csg::Expression> balls;
@@ -110,26 +110,26 @@ csg::Expression from_map(const Reader& shape, const std::string& key, const Read
   return out;
 }
 
-csg::Expression read_kind(Kind kind, const Reader& shape, const std::string& key, const std::filesystem::path& file) {
+csg::Expression read_kind(Kind kind, const Reader& shape, const std::string& key, const std::filesystem::path& folder) {
   switch (kind) {
-    case kUnion: return csg::Expression::unite(shapes(shape, key, file));
-    case kIntersection: return csg::Expression::intersect(shapes(shape, key, file));
+    case kUnion: return csg::Expression::unite(shapes(shape, key, folder));
+    case kIntersection: return csg::Expression::intersect(shapes(shape, key, folder));
     case kDifference: {
-      const auto parts = shapes(shape, key, file);
+      const auto parts = shapes(shape, key, folder);
       if (parts.size() != 2) shape.fail(key, "needs exactly two shapes: a minus b");
       return parts[0] - parts[1];
     }
-    case kComplement: return ~read_shape(shape.map(key), file);
-    case kTransform: return from_map(shape, key, [&](const Reader& r) { return transform(r, file); });
-    case kLattice: return from_map(shape, key, [&](const Reader& r) { return lattice(r, file); });
-    case kBalls: return from_map(shape, key, [&](const Reader& r) { return balls_file(r, file); });
+    case kComplement: return ~read_shape(shape.map(key), folder);
+    case kTransform: return from_map(shape, key, [&](const Reader& r) { return transform(r, folder); });
+    case kLattice: return from_map(shape, key, [&](const Reader& r) { return lattice(r, folder); });
+    case kBalls: return from_map(shape, key, [&](const Reader& r) { return balls_file(r, folder); });
     default: return from_map(shape, key, [&](const Reader& r) { return primitive(kind, r); });
   }
 }
 
 }  // namespace
 
-csg::Expression read_shape(const Reader& shape, const std::filesystem::path& scene_file) {
+csg::Expression read_shape(const Reader& shape, const std::filesystem::path& folder) {
   const std::vector<std::string> keys = shape.keys();
   if (keys.size() != 1) {
     if (keys.empty()) shape.fail("", "a shape is one key naming it: ball, half_space, union, ...");
@@ -143,7 +143,7 @@ csg::Expression read_shape(const Reader& shape, const std::filesystem::path& sce
     shape.fail(key, "unknown shape; expected one of: " + names);
   }
   try {
-    return read_kind(static_cast<Kind>(found - kKinds.begin()), shape, key, scene_file);
+    return read_kind(static_cast<Kind>(found - kKinds.begin()), shape, key, folder);
   } catch (const std::invalid_argument& e) {  // a zero axis or normal, from the builders
     shape.fail(key, e.what());
   }

@@ -21,6 +21,7 @@
 
 namespace cosim::tracker {
 
-csg::Expression read_shape(const scene::Reader& shape, const std::filesystem::path& scene_file);
+// `folder`: where a relative file name (a balls file) is found, the scene's `folder`.
+csg::Expression read_shape(const scene::Reader& shape, const std::filesystem::path& folder);
 
 }  // namespace cosim::tracker

@@ -95,7 +95,7 @@ SceneMesh read_mesh(const Reader& r, const scene::Scene& scene, const std::funct
         spec = box(r, scene.domain);
         mesh = box_part && !r.has("perturb") ? box_part(*spec) : box_mesh(*spec);
         break;
-      case kGmsh: mesh = load_gmsh(scene.file.parent_path() / r.string("file")); break;
+      case kGmsh: mesh = load_gmsh(scene.folder / r.string("file")); break;
       case kVoronoi: mesh = voronoi(r, scene.domain); break;
     }
     if (r.has("perturb")) {

@@ -52,7 +52,7 @@ SceneObstacles read_obstacles(const scene::Reader& options, const scene::Scene& 
     if (name.empty() || !names.insert(name).second) r.fail("name", "expected a unique, non-empty name");
     const int body = r.has("body") ? body_index(r, scene, r.string("body")) : -1;
     csg::Tree shape(body >= 0 && !r.has("shape") ? body_shape(r, scene.bodies[static_cast<std::size_t>(body)])
-                                                 : read_shape(r.map("shape"), scene.file));
+                                                 : read_shape(r.map("shape"), scene.folder));
     const bool permeable = r.boolean("permeable", false);
     // A zone has no wall: `wall` on one stays unread, and finish() names it.
     BoundaryCondition wall;

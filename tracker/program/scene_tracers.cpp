@@ -12,7 +12,7 @@ std::optional<Tracers> read_tracers(const scene::Reader& options, const scene::S
   t.model.substeps = static_cast<int>(r.integer("substeps", 1, scene::Range::at_least(1)));
   if (r.has("velocity")) {
     const scene::Reader v = r.map("velocity");
-    const std::filesystem::path file = scene.file.parent_path() / v.string("file");
+    const std::filesystem::path file = scene.folder / v.string("file");
     v.finish();
     try {
       t.velocity = read_velocity(file);

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 const fs::path kScene = fs::temp_directory_path() / ("cosim-shape-" + std::to_string(getpid())) / "scene.yaml";
 
 csg::Tree shape(const std::string& yaml) {
-  return csg::Tree(read_shape(scene::Reader(YAML::Load(yaml), kScene.string(), "shape"), kScene));
+  return csg::Tree(read_shape(scene::Reader(YAML::Load(yaml), kScene.string(), "shape"), kScene.parent_path()));
 }
 
 std::string error_of(const std::string& yaml) {

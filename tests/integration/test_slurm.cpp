@@ -1,0 +1,144 @@
+// Runs inside a real Slurm allocation (label slurm): a one-machine cluster of Debian's
+// slurm-wlm (slurm_cluster.hpp), the coupled oscillator submitted with sbatch as the README's
+// script does, its spring started by srun as a step of the job, as a component of a
+// heterogeneous job, on the nodes of a hostfile; a job cancelled mid-run then resumed
+// bit-identically. Skipped, with the reason, where the daemons cannot run.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <thread>
+
+#include "tests/integration/cosim_process.hpp"
+#include "tests/integration/h5_read.hpp"
+#include "tests/integration/oscillator_scene.hpp"
+#include "tests/integration/slurm_cluster.hpp"
+
+namespace cosim::testing {
+namespace {
+
+using namespace std::chrono_literals;
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kSeries{"/bodies/m1/time", "/bodies/m1/position", "/bodies/m1/force",
+                                       "/coupling/iterations"};
+
+std::string output_of(const std::string& command) {
+  std::string out;
+  if (std::FILE* p = popen((command + " 2>&1").c_str(), "r")) {
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, p) != nullptr) out += buffer;
+    pclose(p);
+  }
+  return out;
+}
+
+class Slurm : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    cluster_ = new SlurmCluster();
+    if (cluster_->running()) setenv("SLURM_CONF", cluster_->conf().c_str(), 1);
+  }
+  static void TearDownTestSuite() {
+    delete cluster_;
+    cluster_ = nullptr;
+  }
+
+  void SetUp() override {
+    if (!cluster_->running()) GTEST_SKIP() << cluster_->why();
+    dir_ = scratch_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    ASSERT_EQ(run_scene_text(dir_, OscillatorScene{}.yaml(), "local").exit_code, 0);
+  }
+
+  // The oscillator with the spring placed by `placement` (a scene key of its section),
+  // the coupler listening on this host's loopback for it.
+  static OscillatorScene placed(const std::string& placement) {
+    OscillatorScene s;
+    s.transport = "tcp";
+    s.interface = "127.0.0.1";
+    s.checkpoint_every = 7;
+    s.spring_keys = {placement};
+    return s;
+  }
+
+  // A batch script that runs `cosim <arguments>` in an allocation of `header` (#SBATCH
+  // lines), its output in DIR/<stem>.out.
+  fs::path script(const std::string& stem, const std::string& header, const std::string& arguments) const {
+    const auto cosim = fs::read_symlink("/proc/self/exe").parent_path() / "cosim";
+    const auto path = dir_ / (stem + ".sh");
+    write_file(path, "#!/bin/bash\n" + header + cosim.string() + " " + arguments + "\n");
+    return path;
+  }
+
+  // sbatch --wait: the job's exit status (124 if it did not end within two minutes).
+  int submit_and_wait(const fs::path& job, const std::string& stem) const {
+    const int status = std::system(("timeout 120 sbatch --wait --quiet --output=" + (dir_ / (stem + ".out")).string() +
+                                    " " + job.string() + " >/dev/null 2>&1")
+                                       .c_str());
+    return WEXITSTATUS(status);
+  }
+
+  std::string job_output(const std::string& stem) const { return read_file(dir_ / (stem + ".out")); }
+
+  void expect_same_as_local(const std::string& stem) const {
+    for (const auto& series : kSeries)
+      EXPECT_EQ(read_series(dir_ / "local.h5", series).values, read_series(dir_ / (stem + ".h5"), series).values)
+          << series;
+  }
+
+  static SlurmCluster* cluster_;
+  fs::path dir_;
+};
+
+SlurmCluster* Slurm::cluster_ = nullptr;
+
+TEST_F(Slurm, SbatchRunsTheSceneWithItsParticipantAsAStepOfTheJob) {
+  write_file(dir_ / "step.yaml", placed("hosts: scheduler").yaml());
+  const auto job = script("step", "#SBATCH --ntasks=2\n", "run " + (dir_ / "step.yaml").string() + " -o " +
+                                                                (dir_ / "step.h5").string() + " -q");
+  ASSERT_EQ(submit_and_wait(job, "step"), 0) << job_output("step");
+  EXPECT_THAT(job_output("step"), HasSubstr("srun --ntasks=1 --exact"));
+  expect_same_as_local("step");
+}
+
+TEST_F(Slurm, HostfileNamesTheNodesOfTheAllocation) {
+  write_file(dir_ / "nodes.txt", cluster_->node() + "\n");
+  write_file(dir_ / "listed.yaml", placed("hostfile: nodes.txt").yaml());
+  const auto job = script("listed", "#SBATCH --ntasks=2\n",
+                          "run " + (dir_ / "listed.yaml").string() + " -o " + (dir_ / "listed.h5").string() + " -q");
+  ASSERT_EQ(submit_and_wait(job, "listed"), 0) << job_output("listed");
+  EXPECT_THAT(job_output("listed"), HasSubstr("srun --nodefile="));
+  expect_same_as_local("listed");
+}
+
+// Guards against: a job that reaches its time limit or is cancelled leaving a run file that
+// cannot be resumed, or a resume that does not end where the whole run does.
+TEST_F(Slurm, CancelledJobResumesBitIdentical) {
+  auto s = placed("hosts: scheduler");
+  s.spring_extra = {"delay: 0.01"};  // a second or more of run to cancel during
+  write_file(dir_ / "cancelled.yaml", s.yaml());
+  const auto h5 = (dir_ / "cancelled.h5").string();
+  const auto job = script("cancelled", "#SBATCH --ntasks=2\n", "run " + (dir_ / "cancelled.yaml").string() + " -o " + h5);
+  const std::string id =
+      output_of("sbatch --parsable --output=" + (dir_ / "cancelled.out").string() + " " + job.string());
+  ASSERT_FALSE(id.empty());
+  for (auto until = std::chrono::steady_clock::now() + 30s;
+       job_output("cancelled").find("started spring") == std::string::npos && std::chrono::steady_clock::now() < until;)
+    std::this_thread::sleep_for(20ms);
+  std::this_thread::sleep_for(500ms);
+  ASSERT_EQ(std::system(("scancel " + id).c_str()), 0);
+  for (auto until = std::chrono::steady_clock::now() + 30s;
+       !output_of("squeue -h -j " + id).empty() && std::chrono::steady_clock::now() < until;)
+    std::this_thread::sleep_for(100ms);
+  EXPECT_THAT(job_output("cancelled"), HasSubstr("cosim run --resume"));
+
+  const auto resume = script("resumed", "#SBATCH --ntasks=2\n", "run --resume " + h5 + " -q");
+  ASSERT_EQ(submit_and_wait(resume, "resumed"), 0) << job_output("resumed");
+  expect_same_as_local("cancelled");
+}
+
+}  // namespace
+}  // namespace cosim::testing
