@@ -77,7 +77,9 @@ std::vector<Varied> scaled(const scene::Scene& scene, const std::vector<double>&
     for (double n : counts) {
       YAML::Node level(YAML::NodeType::Sequence);
       level.SetStyle(YAML::EmitterStyle::Flow);
-      for (const auto& c : base) level.push_back(std::max(1L, std::lround(c.as<double>() * n / windows)));
+      // A single layer is a two-dimensional scene's: it stays one cell.
+      for (const auto& c : base)
+        level.push_back(c.as<double>() == 1 ? 1L : std::max(1L, std::lround(c.as<double>() * n / windows)));
       cells.values.push_back(level);
     }
     out.push_back(std::move(cells));

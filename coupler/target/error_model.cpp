@@ -10,25 +10,31 @@ namespace cosim::target {
 
 double Tolerance::absolute(double extrapolate) const { return relative ? value * std::abs(extrapolate) : value; }
 
-Tolerance parse_tolerance(const std::string& text) {
-  std::string number = text;
-  while (!number.empty() && std::isspace(static_cast<unsigned char>(number.back()))) number.pop_back();
-  const bool relative = !number.empty() && number.back() == '%';
-  if (relative) number.pop_back();
+std::optional<Quantity> number_and_unit(const std::string& text) {
   std::size_t used = 0;
   double value = 0;
   try {
-    value = std::stod(number, &used);
+    value = std::stod(text, &used);
   } catch (const std::exception&) {
-    used = 0;
+    return std::nullopt;
   }
-  while (used < number.size() && std::isspace(static_cast<unsigned char>(number[used]))) ++used;
-  if (used == 0 || used != number.size() || !std::isfinite(value) || !(value > 0))
+  if (!std::isfinite(value)) return std::nullopt;
+  std::string unit = text.substr(used);
+  const auto blank = [](unsigned char c) { return std::isspace(c) != 0; };
+  while (!unit.empty() && blank(unit.back())) unit.pop_back();
+  while (!unit.empty() && blank(unit.front())) unit.erase(unit.begin());
+  return Quantity{value, unit};
+}
+
+Tolerance parse_tolerance(const std::string& text) {
+  const auto q = number_and_unit(text);
+  if (!q || !(q->value > 0) || !(q->unit.empty() || q->unit == "%"))
     throw std::invalid_argument(fmt::format(
         "tolerance '{}': expected a positive number, relative with a % sign (0.5%) or absolute in the quantity's unit "
         "(1e-4)",
         text));
-  return {relative ? value / 100 : value, relative, text};
+  const bool relative = q->unit == "%";
+  return {relative ? q->value / 100 : q->value, relative, text};
 }
 
 Fit predict(const study::Estimate& e, double phi1, double s1, const Tolerance& tolerance) {

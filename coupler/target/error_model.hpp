@@ -27,6 +27,14 @@ struct Tolerance {
 // Throws std::invalid_argument naming the text.
 Tolerance parse_tolerance(const std::string& text);
 
+// A finite number and the word after it, blanks around the word dropped: "10m" is 10, "m";
+// none if the text does not start with a number.
+struct Quantity {
+  double value = 0;
+  std::string unit;
+};
+std::optional<Quantity> number_and_unit(const std::string& text);
+
 // Factor of safety on the modelled error (Celik et al.'s 1.25 for three levels).
 inline constexpr double kSafety = 1.25;
 

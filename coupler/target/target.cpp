@@ -27,7 +27,8 @@ namespace fs = std::filesystem;
 using study::ArgumentError;
 
 constexpr const char* kWho = "cosim run --target";
-constexpr std::size_t kCheap = 3;  // cheap levels: the scene coarsened twice, once, and as written
+constexpr std::size_t kCheap = 3;
+constexpr double kSmallestRatio = 1.3;  // cheap levels: the scene coarsened twice, once, and as written
 
 struct Target {
   std::string name;
@@ -124,18 +125,12 @@ Cost cost_of(const study::Level& level, const std::string& build) {
 }  // namespace
 
 double parse_budget(const std::string& text) {
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  const std::string unit = used > 0 ? text.substr(used) : "";
+  const auto q = number_and_unit(text);
+  const std::string unit = q ? q->unit : "";
   const double factor = unit.empty() || unit == "s" ? 1 : unit == "m" || unit == "min" ? 60 : unit == "h" ? 3600 : 0;
-  if (used == 0 || factor == 0 || !(value > 0) || !std::isfinite(value))
+  if (!q || factor == 0 || !(q->value > 0))
     throw ArgumentError(fmt::format("--budget {}: expected a time such as 600, 90s, 10m or 2h", text));
-  return value * factor;
+  return q->value * factor;
 }
 
 int run_to_target(const Request& request) {
@@ -206,9 +201,11 @@ int run_to_target(const Request& request) {
       return 0;
     }
 
-  // Whole windows: the scale rounded up to the next whole number of them.
+  // Whole windows: the scale rounded up to the next whole number of them, and at least
+  // Celik et al.'s smallest ratio of 1.3 to the scene, below which the check after the run
+  // cannot resolve an order from the finest three levels.
   const auto windows = static_cast<double>(scene.windows());
-  varied = scales_for({1 / (r * r), 1 / r, 1, std::ceil(windows * p.scale - 1e-9) / windows});
+  varied = scales_for({1 / (r * r), 1 / r, 1, std::ceil(windows * std::max(p.scale, kSmallestRatio) - 1e-9) / windows});
   for (std::size_t i = 0; i < varied.size(); ++i) results.keys[i] = varied[i].key;
   results.levels.push_back(study::write_level(dir, document, varied, kCheap, {measure}, argument));
   const double scale = study::scales_of(scene, varied).back();

@@ -67,7 +67,7 @@ class Connection:
             seconds = float(heartbeat) if heartbeat is not None else 0.0
         except ValueError:
             seconds = -1.0
-        if not seconds >= 0:
+        if heartbeat is not None and not 0 < seconds <= 1e6:
             raise ProtocolError(f"{HEARTBEAT_ENV} = {heartbeat!r}: expected seconds > 0")
         return Connection(endpoint, name, keys if all(keys) else None, seconds)
 

@@ -20,6 +20,9 @@ NamespacePair::NamespacePair() {
   }
   const std::string id = std::to_string(getpid());
   const std::string a = "cosim-a-" + id, b = "cosim-b-" + id, veth = "cv" + id.substr(id.size() > 8 ? id.size() - 8 : 0);
+  // Left behind by a test process of the same pid that was killed.
+  sh("ip netns del " + a);
+  sh("ip netns del " + b);
   if (sh("ip netns add " + a) != 0) {
     why_ = "`ip netns add` failed: this machine (a container without CAP_NET_ADMIN?) cannot make network namespaces";
     return;

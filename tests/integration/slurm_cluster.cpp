@@ -75,8 +75,9 @@ SlurmCluster::SlurmCluster() {
   fs::create_directories(dir_ / "spool");
   fs::copy_file("/etc/munge/munge.key", dir_ / "munge.key", fs::copy_options::overwrite_existing);
   fs::permissions(dir_ / "munge.key", fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::replace);
-  // Ports of this process's own: several test processes may each run a cluster.
-  const int port = 20000 + static_cast<int>(getpid() % 20000) * 2;
+  // Ports of this process's own (several test processes may each run a cluster), above
+  // Linux's ephemeral range (32768-60999), where couplers bound to port 0 land.
+  const int port = 61000 + static_cast<int>(getpid() % 2000) * 2;
   const std::string d = dir_.string();
   std::ofstream(conf()) << "ClusterName=cosimtest\nSlurmctldHost=" << node_ << "\nSlurmUser=root\nSlurmdUser=root\n"
                         << "AuthType=auth/munge\nCredType=cred/munge\nAuthInfo=socket=" << d << "/munge.sock\n"
@@ -96,7 +97,7 @@ SlurmCluster::SlurmCluster() {
   for (int i = 0; i < 100 && !fs::exists(dir_ / "munge.sock"); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   slurmctld_ = spawn({"/usr/sbin/slurmctld", "-D", "-i", "-f", conf().string()}, dir_ / "slurmctld.log");
   slurmd_ = spawn({"/usr/sbin/slurmd", "-D", "-f", conf().string()}, dir_ / "slurmd.log");
-  const std::string sinfo = "SLURM_CONF=" + conf().string() + " sinfo -h -o %t 2>&1";
+  const std::string sinfo = "SLURM_CONF=" + conf().string() + " timeout 2 sinfo -h -o %t 2>&1";
   for (int i = 0; i < 150; ++i) {
     const std::string state = output_of(sinfo);
     if (state.starts_with("idle")) return;
@@ -106,6 +107,8 @@ SlurmCluster::SlurmCluster() {
 }
 
 SlurmCluster::~SlurmCluster() {
+  // A job a failed test left running would outlive slurmd (its slurmstepd does).
+  if (running()) (void)output_of("SLURM_CONF=" + conf().string() + " timeout 5 scancel --full -u root 2>&1");
   stop(slurmd_);
   stop(slurmctld_);
   stop(munged_);

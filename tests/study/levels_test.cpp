@@ -123,6 +123,11 @@ TEST(Scaled, AnyScaleGivesWholeWindowsAndStepsPerWindow) {
   }
   EXPECT_EQ(text(keys[4].values[0]), "[4, 4, 9]");
   EXPECT_EQ(text(keys[4].values[3]), "[23, 23, 46]");
+  // A two-dimensional scene's single layer stays one cell.
+  std::string flat = kScene;
+  flat.replace(flat.find("[10, 10, 20]"), 12, "[10, 20, 1]");
+  const auto layer = scaled(scene::load_scene_from_string(flat), {2.3}, "--target x=1%");
+  EXPECT_EQ(text(layer.back().values[0]), "[23, 46, 1]");
 }
 
 TEST(Ratios, StepsShrinkAndCountsGrow) {
