@@ -134,14 +134,7 @@ std::vector<StepReport> NavierStokes::advance_to(double t_end, const StepBodies&
   std::vector<StepReport> reports;
   const double eps = 1e-12 * std::max(1.0, std::abs(t_end));
   while (time_ < t_end - eps) {
-    double dt = stable_dt();
-    // time_ is a running sum, so a window that is a whole number of steps can leave a
-    // remainder a rounding error above dt: that is the last step, not two half steps.
-    const double remaining = t_end - time_;
-    if (dt >= remaining * (1 - 1e-9))
-      dt = remaining;
-    else if (2 * dt > remaining)
-      dt = remaining / 2;
+    const double dt = step_within(stable_dt(), t_end - time_);
     if (before_step) before_step(time_ + dt);
     reports.push_back(step(dt, bodies));
     if (after_step) after_step(reports.back());

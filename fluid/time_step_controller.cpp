@@ -38,4 +38,26 @@ double TimeStepController::next(double rate, double previous_dt) const {
   return dt;
 }
 
+double step_within(double dt, double remaining) {
+  // The time is a running sum, so a window that is a whole number of steps can leave a
+  // remainder a rounding error above dt: that is the last step, not two half steps.
+  if (dt >= remaining * (1 - 1e-9)) return remaining;
+  return 2 * dt > remaining ? remaining / 2 : dt;
+}
+
+double TimeStepController::steps_per_window(double rate, double window, long windows) const {
+  if (!(window > 0) || windows < 1) return 0;
+  // The pattern settles within a few windows: a thousand of them, or a million steps, are
+  // enough for its mean.
+  constexpr long kMostWindows = 1000, kMostSteps = 1000000;
+  long steps = 0, k = 0;
+  double previous = 0;
+  for (; k < std::min(windows, kMostWindows) && steps < kMostSteps; ++k)
+    for (double remaining = window; remaining > 1e-12 * window; ++steps) {
+      previous = step_within(next(rate, previous), remaining);
+      remaining -= previous;
+    }
+  return static_cast<double>(steps) / static_cast<double>(k);
+}
+
 }  // namespace cosim::fluid

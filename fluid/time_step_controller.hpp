@@ -40,12 +40,21 @@ struct TimeStepOptions {
 // max over cells of sum_d |u_d| / h_d (the larger face value per axis), all ranks.
 double convective_rate(const Grid& grid, const LocalVelocity& u);
 
+// The step to take of `dt` when `remaining` is left to a window's end: the rest if dt
+// reaches it, half the rest if two steps of dt would overshoot it (rather than a sliver
+// after a full step), dt otherwise.
+double step_within(double dt, double remaining);
+
 class TimeStepController {
  public:
   explicit TimeStepController(TimeStepOptions options);
   const TimeStepOptions& options() const { return options_; }
   // previous_dt <= 0 means no step has been taken yet.
   double next(double rate, double previous_dt) const;
+  // The mean number of steps per window of `window` over `windows` windows at a constant
+  // convective `rate`, as NavierStokes::advance_to takes them (the growth limit restarts
+  // from each window's shortened last step).
+  double steps_per_window(double rate, double window, long windows) const;
 
  private:
   TimeStepOptions options_;

@@ -36,16 +36,17 @@ bool empty(const Coefficients& c) {
 }
 
 // Steps per window and iteration: as this scene's last run took them, or the window over the
-// program's step (the one it expects, where it chooses its own).
+// program's mean step where it chooses its own (its work's dt, the window's shortened steps
+// counted), or the window over its fixed step rounded up to whole steps.
 double steps_per_exchange(const scene::Scene& scene, const scene::Participant& p, const ProgramWork* work,
                           const RunRecord* last) {
   if (last != nullptr && last->programs.contains(p.name) && last->iterations > 0 &&
       last->programs.at(p.name).steps > 0)
     return last->programs.at(p.name).steps / last->iterations;
-  double dt = p.dt;
-  if (work != nullptr && work->dt > 0 && (!(dt > 0) || work->dt < dt)) dt = work->dt;
-  if (!(dt > 0)) return 1;
-  return std::max(1.0, std::ceil(scene.coupling.window / dt - 1e-9));
+  if (work != nullptr && work->dt > 0 && (!(p.dt > 0) || work->dt < p.dt))
+    return std::max(1.0, scene.coupling.window / work->dt);
+  if (!(p.dt > 0)) return 1;
+  return std::max(1.0, std::ceil(scene.coupling.window / p.dt - 1e-9));
 }
 
 // How much slower (> 1) or faster this scene's last run took than the model said.

@@ -17,7 +17,7 @@ struct ProgramWork {
   Units held;              // what the program's memory grows with
   double frame_bytes = 0;  // one field frame in the run file; 0: it writes none
   double state_bytes = 0;  // its checkpoint state (two slots of it are kept)
-  double dt = 0;           // the step it expects where it chooses its own (the fluid's CFL); 0: none
+  double dt = 0;           // where it chooses its own step (the fluid's CFL), its mean step per window; 0: none
   bool grows = false;      // an inflow adds particles as the run goes: the counts are the start's
 };
 

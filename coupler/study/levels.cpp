@@ -70,6 +70,16 @@ std::vector<Varied> scaled(const scene::Scene& scene, const std::vector<double>&
   if (first.IsDefined() && first.IsScalar())
     out.push_back({"participants.fluid.options.dt_initial", each(end, scene.coupling.window / first.as<double>()),
                    argument});
+  // Field frames at the same times on every level, as far as whole windows allow, so that a
+  // field measure reads the same instants and each level writes as many frames.
+  const YAML::Node written = YAML::Load(scene.text)["output"];
+  const YAML::Node frames = written.IsDefined() && written.IsMap() ? written["fields_every"] : YAML::Node();
+  if (frames.IsDefined() && frames.IsScalar() && scene.output.fields_every > 0) {
+    Varied every{"output.fields_every", {}, argument};
+    for (double n : counts)
+      every.values.push_back(YAML::Node(std::max(1L, std::lround(scene.output.fields_every * n / windows))));
+    out.push_back(std::move(every));
+  }
   const YAML::Node grid = options.IsDefined() ? options["grid"] : YAML::Node();
   const YAML::Node base = grid.IsDefined() && grid.IsMap() ? grid["cells"] : YAML::Node();
   if (base.IsDefined() && base.IsSequence()) {

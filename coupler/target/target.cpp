@@ -209,7 +209,15 @@ int run_to_target(const Request& request) {
   for (std::size_t i = 0; i < varied.size(); ++i) results.keys[i] = varied[i].key;
   results.levels.push_back(study::write_level(dir, document, varied, kCheap, {measure}, argument));
   const double scale = study::scales_of(scene, varied).back();
-  const Cost cost = cost_of(results.levels.back(), request.build);
+  Cost cost;
+  try {
+    cost = cost_of(results.levels.back(), request.build);
+  } catch (const std::exception& e) {
+    // The cheap levels' runs are worth their report even when level 4 cannot be started.
+    story.say(fmt::format("level 4 ({}) cannot be estimated: {}", level_text(results, kCheap), e.what()));
+    story.write(results, dir, heading);
+    return 1;
+  }
   story.say(fmt::format("level 4 ({}), {:.3g} times as fine as the scene, is the cheapest the model says reaches it: "
                         "modelled error {:.3g} with the safety factor, within {:.3g}",
                         level_text(results, kCheap), scale, modelled_error(p, 1, scale), p.tolerance));

@@ -11,7 +11,9 @@ namespace cosim::program {
 // BodySurfaces put in a field frame, velocity (3), pressure and alpha per cell and x, y, z
 // per surface point, all float64. The markers are placed as the solver places them, without
 // making the grid. Throws std::invalid_argument for a body or grid the immersed boundary
-// cannot work with, as a run would.
-participant::WorkReport fluid_work(const FluidSetup& setup);
+// cannot work with, as a run would. dt: the mean step per window it expects, from the fastest
+// flow the scene leads to (fluid_work.cpp peak_rate) and the step controller's way through
+// each window.
+participant::WorkReport fluid_work(const FluidSetup& setup, const scene::Scene& scene);
 
 }  // namespace cosim::program

@@ -69,8 +69,9 @@ int main(int argc, char** argv) {
   return with_petsc(app.remaining(), [&] {
     return cosim::scene::exit_code("cosim-fluid", [&] {
       if (!args.check.empty()) {
-        const cosim::program::FluidSetup setup = cosim::program::fluid_setup(cosim::scene::load_scene(args.check));
-        if (!args.work.empty()) cosim::participant::write_work(args.work, cosim::program::fluid_work(setup));
+        const cosim::scene::Scene scene = cosim::scene::load_scene(args.check);
+        const cosim::program::FluidSetup setup = cosim::program::fluid_setup(scene);
+        if (!args.work.empty()) cosim::participant::write_work(args.work, cosim::program::fluid_work(setup, scene));
         return 0;
       }
       return cosim::program::run_fluid_standalone(args.standalone, args.output);

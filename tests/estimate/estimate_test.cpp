@@ -63,7 +63,7 @@ TEST(Estimate, StepsFollowTheWindowsTheIterationsAndEachProgramsStep) {
 TEST(Estimate, AProgramThatChoosesASmallerStepTakesMore) {
   const auto s = settling("serial-implicit");
   auto w = work();
-  w["fluid"].dt = 0.001;  // the CFL limit at the start: 5 steps per window, not 2
+  w["fluid"].dt = 0.001;  // the mean step the fluid expects: 5 steps per window, not 2
   const auto e = estimate(s, scene::plan_participants(s).start, w, empty_store(), "build");
   EXPECT_EQ(program(e, "fluid").steps, 20 * kAssumedIterations * 5);
   w["fluid"].dt = 0.01;  // larger than the scene's: the scene's holds

@@ -41,7 +41,8 @@ std::string box_scene(const std::string& body_options = "") {
          body_options;
 }
 
-FluidSetup setup_of(const std::string& text) { return fluid_setup(scene::load_scene_from_string(text, "s.yaml")); }
+scene::Scene scene_of(const std::string& text) { return scene::load_scene_from_string(text, "s.yaml"); }
+FluidSetup setup_of(const std::string& text) { return fluid_setup(scene_of(text)); }
 
 // The markers ImmersedBoundary::add() places for each body of the setup, on a real grid.
 std::size_t solver_markers(const FluidSetup& s) {
@@ -61,7 +62,7 @@ std::uint64_t first_frame_bytes(const std::string& text) {
 
 TEST(FluidWork, CellsMarkersAndFrameBytesAreTheSolversOwn) {
   const FluidSetup s = setup_of(box_scene());
-  const participant::WorkReport w = fluid_work(s);
+  const participant::WorkReport w = fluid_work(s, scene_of(box_scene()));
   EXPECT_EQ(w.program, "fluid");
   EXPECT_EQ(unit(w.per_step, "cells"), 8192u);
   EXPECT_EQ(unit(w.held, "cells"), 8192u);
@@ -82,7 +83,7 @@ TEST(FluidWork, ASpheresMarkersAreWhatTheImmersedBoundaryCreates) {
   for (const char* spacing : {"1.0", "0.7"}) {
     FluidSetup s = setup_of(box_scene(std::string("      bodies: {method: ibm, marker_spacing: ") + spacing + "}\n"));
     s.bodies.erase(s.bodies.begin() + 1, s.bodies.end());
-    EXPECT_EQ(unit(fluid_work(s).per_step, "markers"), solver_markers(s)) << spacing;
+    EXPECT_EQ(unit(fluid_work(s, scene_of(box_scene())).per_step, "markers"), solver_markers(s)) << spacing;
   }
 }
 
@@ -90,7 +91,7 @@ TEST(FluidWork, ASpheresMarkersAreWhatTheImmersedBoundaryCreates) {
 TEST(FluidWork, ATwoDimensionalGridCountsTheSectionsMarkers) {
   const std::string text = testing::oscillating_cylinder_scene();
   const FluidSetup s = setup_of(text);
-  const participant::WorkReport w = fluid_work(s);
+  const participant::WorkReport w = fluid_work(s, scene_of(text));
   EXPECT_EQ(unit(w.per_step, "cells"), 16u * 8u);
   EXPECT_GT(unit(w.per_step, "markers"), 0u);
   EXPECT_EQ(unit(w.per_step, "markers"), solver_markers(s));
@@ -100,7 +101,7 @@ TEST(FluidWork, ATwoDimensionalGridCountsTheSectionsMarkers) {
 // The staircase has no markers; its frames carry the surfaces all the same.
 TEST(FluidWork, TheStaircaseHasNoMarkers) {
   const std::string text = box_scene("      bodies: {method: staircase}\n");
-  const participant::WorkReport w = fluid_work(setup_of(text));
+  const participant::WorkReport w = fluid_work(setup_of(text), scene_of(text));
   EXPECT_EQ(unit(w.per_step, "markers"), 0u);
   EXPECT_EQ(unit(w.held, "markers"), 0u);
   EXPECT_EQ(w.frame_bytes, first_frame_bytes(text));
@@ -111,7 +112,7 @@ TEST(FluidWork, TheProgramWritesTheReportWithCheck) {
   testing::write_file(dir / "scene.yaml", box_scene());
   ASSERT_EQ(testing::run_check("cosim-fluid", dir / "scene.yaml", dir / "work.yaml", dir / "log"), 0)
       << testing::read_file(dir / "log");
-  const participant::WorkReport expected = fluid_work(setup_of(box_scene()));
+  const participant::WorkReport expected = fluid_work(setup_of(box_scene()), scene_of(box_scene()));
   EXPECT_EQ(testing::read_file(dir / "work.yaml"), participant::work_yaml(expected));
   const YAML::Node doc = YAML::LoadFile((dir / "work.yaml").string());
   EXPECT_EQ(doc["program"].as<std::string>(), "fluid");

@@ -1,6 +1,8 @@
 // What --vary and --refine make of a scene, and the refinement ratios they imply.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "coupler/scene/scene.hpp"
 #include "coupler/study/argument_error.hpp"
 #include "coupler/study/key_path.hpp"
@@ -128,6 +130,22 @@ TEST(Scaled, AnyScaleGivesWholeWindowsAndStepsPerWindow) {
   flat.replace(flat.find("[10, 10, 20]"), 12, "[10, 20, 1]");
   const auto layer = scaled(scene::load_scene_from_string(flat), {2.3}, "--target x=1%");
   EXPECT_EQ(text(layer.back().values[0]), "[23, 46, 1]");
+}
+
+// A scene that writes fields every N windows writes them at the same times on every level.
+TEST(Scaled, FieldFramesKeepTheirTimes) {
+  std::string yaml = kScene;
+  yaml.replace(yaml.find("domain:"), 0, "output: {fields_every: 5}\n");
+  const scene::Scene s = scene::load_scene_from_string(yaml);
+  const std::vector<Varied> keys = scaled(s, {1 / 2.25, 0.5, 1, 2}, "--target x=1%");
+  const auto frames = std::find_if(keys.begin(), keys.end(), [](const Varied& v) { return v.key == "output.fields_every"; });
+  ASSERT_NE(frames, keys.end());
+  EXPECT_EQ(text(frames->values[0]), "2");  // 44 windows: every 2.2, rounded
+  EXPECT_EQ(text(frames->values[1]), "3");  // 50 windows: every 2.5, rounded away from zero
+  EXPECT_EQ(text(frames->values[2]), "5");
+  EXPECT_EQ(text(frames->values[3]), "10");
+  // Without the key in the scene nothing is added (the default's frames are the scene's).
+  for (const Varied& v : scaled(scene::load_scene_from_string(kScene), {0.5, 1}, "x")) EXPECT_NE(v.key, "output.fields_every");
 }
 
 TEST(Ratios, StepsShrinkAndCountsGrow) {
