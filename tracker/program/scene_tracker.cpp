@@ -41,6 +41,17 @@ std::function<Mesh(const BoxSpec&)> box_parts(const Ranks& ranks) {
   };
 }
 
+// The whole mesh's, also where this rank holds only its part of a box.
+double mesh_volume(const TrackerScene& t) {
+  if (t.box) {
+    const CellVolumes box = volumes_of(*t.box);
+    return box.below(box.cells);
+  }
+  double v = 0;
+  for (const double c : t.mesh->volume) v += c;
+  return v;
+}
+
 }  // namespace
 
 TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
@@ -55,7 +66,7 @@ TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
   t.mesh = std::make_unique<Mesh>(std::move(mesh.mesh));
   t.box = std::move(mesh.box);
   const bool part = t.mesh->partial;
-  t.particles = read_seeding(options.map("particles"));
+  t.particles = read_seeding(options.map("particles"), scene.folder, mesh_volume(t));
   Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass, ranks);
   t.inflows = read_inflows(options, *t.mesh, boundaries, t.particles.mass, t.particles.weight);
   // A part may hold none of an inflow's faces, but some rank must.

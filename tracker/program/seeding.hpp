@@ -9,14 +9,24 @@
 //     weight: 1e10           # optional: real molecules per simulator (fnum), default 1
 //     seed: 1                # optional: of every random draw of the run
 //
+// or, instead of per_cell or total, temperature and drift, gases by region (seeding_regions.hpp):
+//
+//   particles:
+//     mass: 6.63e-26
+//     weight: 1e10
+//     regions: [{region: {ball: {..}}, number_density: 2.4e20, temperature: 300}, ...]
+//
 // Read into Seeding; how the particles are drawn from it: tracker/step/seed_particles.hpp.
 #pragma once
+
+#include <filesystem>
 
 #include "coupler/scene/reader.hpp"
 #include "tracker/step/seed_particles.hpp"
 
 namespace cosim::tracker {
 
-Seeding read_seeding(const scene::Reader& particles);
+// `folder` and `mesh_volume` (m^3): read_seed_regions'.
+Seeding read_seeding(const scene::Reader& particles, const std::filesystem::path& folder, double mesh_volume);
 
 }  // namespace cosim::tracker

@@ -15,17 +15,18 @@ namespace {
 constexpr std::uint64_t kCellValues = 8;
 
 // About how many cell faces a step's flights cross in all: each particle flies the seeding's
-// mean thermal speed plus its drift for a step, through cells of the mesh's mean width. The
-// tracking's cost per particle grows with these as the cells get smaller than a flight.
+// mean thermal speed plus its drift (of the hottest and fastest region) for a step, through
+// cells of the mesh's mean width. The tracking's cost per particle grows with these as the
+// cells get smaller than a flight.
 std::uint64_t crossings(const TrackerScene& setup, std::uint64_t particles) {
   const Seeding& gas = setup.particles;
   const double thermal =
-      gas.temperature > 0 && gas.mass > 0 ? std::sqrt(8 * boltzmann * gas.temperature / (std::numbers::pi * gas.mass)) : 0;
+      gas.hottest() > 0 && gas.mass > 0 ? std::sqrt(8 * boltzmann * gas.hottest() / (std::numbers::pi * gas.mass)) : 0;
   const Mesh& mesh = *setup.mesh;
   double volume = 0;
   for (const double v : mesh.volume) volume += v;
   const double width = std::cbrt(volume / static_cast<double>(mesh.cell_count()));
-  const double per_particle = (thermal + gas.drift.norm()) * setup.dt / width;
+  const double per_particle = (thermal + gas.fastest_drift()) * setup.dt / width;
   return static_cast<std::uint64_t>(std::llround(static_cast<double>(particles) * per_particle));
 }
 

@@ -22,8 +22,8 @@ enum class Drawn : std::uint64_t { range_share = 0, cell_particles = 1 };
 
 // pcg64 keeps 127 bits of a stream number (the top bit is lost to the increment's low one):
 // bit 126 set, so that no stream of the run's other generators (collisions: below 2^64)
-// is one of these; the round from bit 65, what is drawn at bit 64, the key (a cell, or a
-// range a << 32 | b of 31-bit cell indices) below.
+// is one of these; the round (of total, or the region's index in regions) from bit 65, what
+// is drawn at bit 64, the key (a cell, or a range a << 32 | b of 31-bit cell indices) below.
 dsmc::Rng keyed(std::uint64_t seed, std::uint64_t round, Drawn what, std::uint64_t key) {
   using Stream = pcg_extras::pcg128_t;
   return dsmc::Rng(seed, Stream(1) << 126 | Stream(round) << 65 | Stream(static_cast<std::uint64_t>(what)) << 64 |
@@ -34,32 +34,31 @@ class Seeder {
  public:
   Seeder(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells)
       : mesh_(mesh), obstacles_(obstacles), seeding_(seeding), states_(static_cast<std::size_t>(obstacles.count())),
-        sigma_(std::sqrt(boltzmann * seeding.temperature / seeding.mass)), swarm_(obstacles.count()) {
+        gas_{seeding.drift, sigma(seeding.temperature)}, swarm_(obstacles.count()) {
     // A part's own cells come first, in the whole's order.
     for (Index c = 0; c < mesh.own_cells(); ++c)
       if (const Index g = mesh.global_cell(c); cells.owns(g)) owned_.push_back({g, c});
   }
 
   Swarm per_cell() {
-    for (const auto& [global, local] : owned_) draw(global, local, seeding_.per_cell, 0);
+    for (const auto& [global, local] : owned_) {
+      dsmc::Rng rng = stream(global, 0);
+      draw(rng, local, seeding_.per_cell, gas_);
+    }
     return std::move(swarm_);
   }
 
-  // What per_cell() keeps, without keeping it. Where no object has primitives, the states,
-  // and so whether a draw falls inside a wall, are the same everywhere in the cell: the cell
-  // keeps all its draws or none, as its centroid does. Elsewhere the cell draws as
-  // per_cell() does, velocities too, since they come from the same stream as the positions.
+  // What per_cell() keeps, without keeping it: whole cells where the walls keep all draws or
+  // none, elsewhere the cell draws as per_cell() does, velocities too, since they come from
+  // the same stream as the positions.
   std::size_t per_cell_count() {
     std::size_t kept = 0;
-    const auto n = static_cast<std::size_t>(seeding_.per_cell);
     for (const auto& [global, local] : owned_) {
-      if (obstacles_.empty()) {
-        kept += n;
-      } else if (obstacles_.active(obstacles_.bounding_cell(local)).empty()) {
-        obstacles_.classify(local, mesh_.centroid[local], states_);
-        if (!obstacles_.inside_wall(local, states_)) kept += n;
+      if (const Walls walls = walls_in(local); walls != Walls::cut) {
+        kept += walls == Walls::none ? static_cast<std::size_t>(seeding_.per_cell) : 0;
       } else {
-        kept += static_cast<std::size_t>(draw(global, local, seeding_.per_cell, 0, false));
+        dsmc::Rng rng = stream(global, 0);
+        kept += static_cast<std::size_t>(draw(rng, local, seeding_.per_cell, gas_, nullptr, false));
       }
     }
     return kept;
@@ -77,13 +76,81 @@ class Seeder {
     return std::move(swarm_);
   }
 
+  Swarm regions(const CellVolumes& volumes) {
+    each_region(volumes, true);
+    return std::move(swarm_);
+  }
+  std::size_t regions_count(const CellVolumes& volumes) {
+    return static_cast<std::size_t>(each_region(volumes, false));
+  }
+
  private:
+  // The drift and the thermal spread per component (sqrt(k_B T / m)) of the velocities drawn.
+  struct Gas {
+    Vec3 drift;
+    double sigma;
+  };
+  double sigma(double temperature) const { return std::sqrt(boltzmann * temperature / seeding_.mass); }
+
+  // Where no object has primitives, the states, and so whether a draw falls inside a wall,
+  // are the same everywhere in the cell: a cell's draws are all free or all inside a wall,
+  // as its centroid is.
+  enum class Walls { none, whole, cut };
+  Walls walls_in(Index cell) {
+    if (obstacles_.empty()) return Walls::none;
+    if (!obstacles_.active(obstacles_.bounding_cell(cell)).empty()) return Walls::cut;
+    obstacles_.classify(cell, mesh_.centroid[cell], states_);
+    return obstacles_.inside_wall(cell, states_) ? Walls::whole : Walls::none;
+  }
+
+  dsmc::Rng stream(Index global, std::uint64_t round) const {
+    return keyed(seeding_.seed, round, Drawn::cell_particles, static_cast<std::uint64_t>(global));
+  }
+
+  // Cell by cell, each region's draws in the cell; returns how many are kept. Counting only
+  // (`add` false), a cell wholly inside the region that the walls keep all draws of or none
+  // needs no draws beyond its count's.
+  long long each_region(const CellVolumes& volumes, bool add) {
+    std::vector<RegionShape> shapes;
+    std::vector<Gas> gases;
+    for (const SeedRegion& r : seeding_.regions) {
+      shapes.emplace_back(r.shape);
+      gases.push_back({r.velocity, sigma(r.temperature)});
+    }
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    long long kept = 0;
+    for (const auto& [global, local] : owned_) {
+      const Eigen::AlignedBox3d box = cell_box(mesh_, local);
+      // The whole's volumes, not the part's: every rank count draws the same counts.
+      const double volume = volumes.below(global + 1) - volumes.below(global);
+      for (std::size_t i = 0; i < shapes.size(); ++i) {
+        const RegionShape::Cover cover = shapes[i].cover(box, mesh_.centroid[local]);
+        if (cover == RegionShape::Cover::outside) continue;
+        dsmc::Rng rng = stream(global, i);
+        const double expected = seeding_.regions[i].number_density * volume / seeding_.weight;
+        auto n = static_cast<long long>(expected);
+        if (unit(rng) < expected - static_cast<double>(n)) ++n;
+        if (!add && cover == RegionShape::Cover::inside) {
+          if (const Walls walls = walls_in(local); walls != Walls::cut) {
+            kept += walls == Walls::none ? n : 0;
+            continue;
+          }
+        }
+        kept += draw(rng, local, n, gases[i], cover == RegionShape::Cover::cut ? &shapes[i] : nullptr, add);
+      }
+    }
+    return kept;
+  }
+
   // Splits n draws over the cells [a, b) by volume and draws this rank's; returns how many
   // of those are free.
   long long split(Index a, Index b, long long n, std::uint64_t round) {
     const auto first = std::lower_bound(owned_.begin(), owned_.end(), std::pair<Index, Index>{a, -1});
     if (n == 0 || first == owned_.end() || first->first >= b) return 0;
-    if (b - a == 1) return draw(a, first->second, n, round);
+    if (b - a == 1) {
+      dsmc::Rng rng = stream(a, round);
+      return draw(rng, first->second, n, gas_);
+    }
     const Index m = a + (b - a) / 2;
     const double below = volumes_->below(a);
     const double share = std::clamp((volumes_->below(m) - below) / (volumes_->below(b) - below), 0.0, 1.0);
@@ -93,13 +160,14 @@ class Seeder {
     return split(a, m, low, round) + split(m, b, n - low, round);
   }
 
-  // n uniform draws in the cell (`global` in the whole mesh, `cell` here); adds those outside
-  // every wall, with Maxwellian velocities, unless `add` is false; returns how many.
-  long long draw(Index global, Index cell, long long n, std::uint64_t round, bool add = true) {
-    dsmc::Rng rng = keyed(seeding_.seed, round, Drawn::cell_particles, static_cast<std::uint64_t>(global));
+  // n uniform draws in the cell, from the cell's stream `rng`; adds those inside `region`
+  // (none: all) and outside every wall, with `gas`'s Maxwellian velocities, unless `add` is
+  // false; returns how many.
+  long long draw(dsmc::Rng& rng, Index cell, long long n, const Gas& gas, const RegionShape* region = nullptr,
+                 bool add = true) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     // normal_distribution needs a positive deviation: a cold gas draws no thermal part.
-    std::normal_distribution<double> gauss(0.0, sigma_ > 0 ? sigma_ : 1.0);
+    std::normal_distribution<double> gauss(0.0, gas.sigma > 0 ? gas.sigma : 1.0);
     const Eigen::AlignedBox3d box = cell_box(mesh_, cell);
     long long kept = 0;
     for (long long i = 0; i < n; ++i) {
@@ -112,10 +180,11 @@ class Seeder {
           break;
         }
       }
+      if (region != nullptr && !region->contains(x)) continue;
       obstacles_.classify(cell, x, states_);
       if (obstacles_.inside_wall(cell, states_)) continue;
-      const Vec3 thermal = sigma_ > 0 ? Vec3(gauss(rng), gauss(rng), gauss(rng)) : Vec3::Zero();
-      if (add) swarm_.add({x, seeding_.drift + thermal, cell}, states_);
+      const Vec3 thermal = gas.sigma > 0 ? Vec3(gauss(rng), gauss(rng), gauss(rng)) : Vec3::Zero();
+      if (add) swarm_.add({x, gas.drift + thermal, cell}, states_);
       ++kept;
     }
     return kept;
@@ -127,7 +196,7 @@ class Seeder {
   std::vector<std::pair<Index, Index>> owned_;  // (in the whole, here), ascending
   const CellVolumes* volumes_ = nullptr;
   std::vector<csg::State> states_;
-  double sigma_;
+  Gas gas_;  // per_cell's and total's
   Swarm swarm_;
 };
 
@@ -166,12 +235,14 @@ CellVolumes volumes_of(const BoxSpec& box) {
 Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells,
                      const CellVolumes& volumes) {
   Seeder seeder(mesh, obstacles, seeding, cells);
+  if (!seeding.regions.empty()) return seeder.regions(volumes);
   return seeding.per_cell > 0 ? seeder.per_cell() : seeder.total(cells.ranks(), volumes);
 }
 
 std::size_t seeded_count(const Mesh& whole, const Obstacles& obstacles, const Seeding& seeding) {
-  if (seeding.per_cell == 0) return static_cast<std::size_t>(seeding.total);  // rounds until exactly that many
   const Decomposition one(whole, Ranks());
+  if (!seeding.regions.empty()) return Seeder(whole, obstacles, seeding, one).regions_count(volumes_of(whole));
+  if (seeding.per_cell == 0) return static_cast<std::size_t>(seeding.total);  // rounds until exactly that many
   return Seeder(whole, obstacles, seeding, one).per_cell_count();
 }
 

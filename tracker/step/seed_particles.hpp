@@ -12,25 +12,47 @@
 // cell indices), each cell draws its share and drops draws inside walls, and the next round
 // draws as many again as all ranks dropped. That is rejection sampling of the free space, so
 // the result is exact in distribution; every rank takes part in every round (collective).
+// regions (seed_regions.hpp): each region in turn, in every cell it meets, n V / weight draws
+// at its number density n in the cell's volume V (the whole part, and one more with the
+// probability of the fraction, as SPARTA rounds), uniform in the cell; a draw is kept when it
+// lies inside the region (wholly inside: all are) and outside every wall. So the count in a
+// region is n / weight times its free volume in expectation, exactly in volume, with no
+// more spread than Poisson's; region i's draws in a cell come from the cell's stream of round i.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/parallel/decomposition.hpp"
+#include "tracker/step/seed_regions.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
 namespace cosim::tracker {
 
 struct Seeding {
   int per_cell = 0;  // particles per cell, or
-  int total = 0;     // in all, cells drawn by volume (exactly one of the two is used)
+  int total = 0;     // in all, cells drawn by volume (exactly one of the two is used), or
+  std::vector<SeedRegion> regions;  // gases by region (then per_cell, total, temperature and drift are not)
   double temperature = 0.0;  // K: Maxwellian velocities about the drift (0: all at the drift)
   Vec3 drift = Vec3::Zero();
   double mass = 0.0;    // kg, also what diffuse walls re-emit with
   double weight = 1.0;  // real molecules per simulator (fnum)
   std::uint64_t seed = 1;  // of every random draw of the run
+
+  // The hottest temperature and the fastest drift the gas starts with, over its regions.
+  double hottest() const {
+    double t = temperature;
+    for (const SeedRegion& r : regions) t = std::max(t, r.temperature);
+    return t;
+  }
+  double fastest_drift() const {
+    double v = drift.norm();
+    for (const SeedRegion& r : regions) v = std::max(v, r.velocity.norm());
+    return v;
+  }
 };
 
 // The whole mesh's cells by volume, for `total`'s split: `below(c)` is the volume of the cells

@@ -123,7 +123,7 @@ Simulation::Simulation(GasSetup setup, Ranks ranks)
   seeded_ = swarm_.size();
   if (setup_.collisions) {
     // The first (sigma g)_max per cell: at the hottest temperature the scene gives.
-    double hottest = setup_.particles.temperature;
+    double hottest = setup_.particles.hottest();
     for (const Inflow& inflow : setup_.inflows) hottest = std::max(hottest, inflow.temperature());
     collider_.emplace(tracked(), *setup_.collisions, std::max(hottest, 1.0), setup_.particles.weight, seed_);
     collider_->reseed(seed_, collision_stream(0, ranks.rank()));

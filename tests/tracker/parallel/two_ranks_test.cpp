@@ -83,10 +83,19 @@ TEST(Migration, EveryParticleReachesItsCellsOwnerWithItsStates) {
   EXPECT_EQ(d.ranks().sum(ids), 1999LL * 2000 / 2);  // every id once
 }
 
+// Two gases by region, overlapping, one cut by the tetrahedra and by the wall ball.
+constexpr const char* kRegions =
+    "{mass: 6.63e-26, weight: 5.0e15, seed: 4, regions: ["
+    "{region: {ball: {centre: [0.7, 0.5, 0.5], radius: 0.35}}, number_density: 2.0e19, temperature: 300,"
+    " velocity: [100, 0, 0]},"
+    " {region: {box: {centre: [0.3, 0.5, 0.5], half_extents: [0.3, 0.5, 0.5]}}, number_density: 1.0e19,"
+    " temperature: 50}]}";
+
 // Each rank's particles are, in order and to the bit, those a one-rank seeding puts in its cells.
 TEST(Seeding, TwoRanksSeedWhatOneRankSeeds) {
   for (const char* particles : {"{per_cell: 7, temperature: 300, mass: 6.63e-26, seed: 4}",
-                                "{total: 5000, temperature: 300, drift: [100, 0, 0], mass: 6.63e-26, seed: 4}"}) {
+                                "{total: 5000, temperature: 300, drift: [100, 0, 0], mass: 6.63e-26, seed: 4}",
+                                kRegions}) {
     const TrackerScene t = read_tracker(scene::load_scene_from_string(
         "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
         "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
@@ -108,6 +117,42 @@ TEST(Seeding, TwoRanksSeedWhatOneRankSeeds) {
     EXPECT_EQ(k, mine.size()) << particles;
     EXPECT_EQ(two.ranks().sum(static_cast<long long>(mine.size())), static_cast<long long>(all.size())) << particles;
   }
+}
+
+// The gas by region on each rank's part of a box (the cells' volumes from the box's nodes,
+// not from the part): as many particles as on one rank holding the whole box, at the same
+// places with the same velocities (their sums, to round-off).
+TEST(Seeding, RegionsOnTheRanksPartsAsOnOne) {
+  const scene::Scene scene = scene::load_scene_from_string(
+      "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
+      "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
+      "      mesh: {type: box, cells: [13, 6, 5]}\n      boundaries: {default: {kind: specular}}\n"
+      "      particles: " + std::string(kRegions) + "\n",
+      "regions.yaml");
+  const auto sums = [](const Simulation& gas, MPI_Comm comm) {
+    std::array<double, 7> s{};
+    for (std::size_t i = 0; i < gas.swarm().size(); ++i) {
+      const Particle p = gas.swarm().particle(i);
+      for (int a = 0; a < 3; ++a) {
+        s[static_cast<std::size_t>(a)] += p.x[a];
+        s[3 + static_cast<std::size_t>(a)] += p.v[a];
+      }
+      s[6] += 1;
+    }
+    MPI_Allreduce(MPI_IN_PLACE, s.data(), 7, MPI_DOUBLE, MPI_SUM, comm);
+    return s;
+  };
+  const Ranks world(MPI_COMM_WORLD);
+  TrackerScene part = read_tracker(scene, world);
+  ASSERT_TRUE(part.mesh->partial);
+  const Simulation two(std::move(part), world);
+  const std::array<double, 7> on_two = sums(two, MPI_COMM_WORLD);
+  if (rank() != 0) return;
+  const Simulation one(read_tracker(scene), Ranks(MPI_COMM_SELF));
+  const std::array<double, 7> on_one = sums(one, MPI_COMM_SELF);
+  EXPECT_GT(on_one[6], 1000);
+  EXPECT_EQ(on_two[6], on_one[6]);  // the count
+  for (std::size_t k = 0; k < 6; ++k) EXPECT_NEAR(on_two[k], on_one[k], 1e-9 * std::abs(on_one[k]) + 1e-6) << k;
 }
 
 // What the comparisons read from a run file (rank 0).

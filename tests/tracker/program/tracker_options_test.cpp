@@ -104,6 +104,53 @@ TEST(TrackerOptions, ObstacleMistakesNameTheKey) {
                "obstacle 'far': its surface meets no cell of the mesh");
 }
 
+TEST(TrackerOptions, RegionsReadIntoTheirStates) {
+  const TrackerScene t = read_tracker(scene_with(
+      "      boundaries: {default: {kind: specular}}\n"
+      "      particles:\n        mass: 2\n        weight: 3\n        regions:\n"
+      "          - {region: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}, number_density: 10, temperature: 4,"
+      " velocity: [1, 2, 3]}\n"
+      "          - {region: {box: {centre: [0.5, 0.5, 0.5], half_extents: [0.5, 0.5, 0.5]}}, number_density: 5,"
+      " temperature: 0}\n"));
+  ASSERT_EQ(t.particles.regions.size(), 2u);
+  EXPECT_EQ(t.particles.regions[0].number_density, 10);
+  EXPECT_EQ(t.particles.regions[0].temperature, 4);
+  EXPECT_EQ(t.particles.regions[0].velocity, Vec3(1, 2, 3));
+  EXPECT_EQ(t.particles.regions[1].velocity, Vec3::Zero());
+  EXPECT_EQ(t.particles.weight, 3);
+  EXPECT_EQ(t.particles.hottest(), 4);
+  EXPECT_EQ(t.particles.fastest_drift(), Vec3(1, 2, 3).norm());
+}
+
+TEST(TrackerOptions, RegionMistakesNameTheKey) {
+  const std::string p = "      boundaries: {default: {kind: specular}}\n      particles:\n        mass: 1\n";
+  const std::string ball = "{ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}";
+  const auto region = [&](const std::string& rest) {
+    return p + "        regions:\n          - {region: " + ball + ", " + rest + "}\n";
+  };
+  EXPECT_ERROR(region("number_density: 0, temperature: 1"), "scene.yaml:14: participants.tracker.options.particles."
+                                                            "regions[0].number_density = 0: must be > 0");
+  EXPECT_ERROR(region("number_density: 1, temperature: -1"), "particles.regions[0].temperature = -1");
+  EXPECT_ERROR(region("number_density: 1"), "particles.regions[0].temperature");
+  EXPECT_ERROR(region("number_density: 1, temperature: 1, velocity: [1, 2]"), "particles.regions[0].velocity");
+  EXPECT_ERROR(region("number_density: 1, temperature: 1, species: {Ar: 0.5, He: 0.5}"),
+               "particles.regions[0].species = {Ar: 0.5, He: 0.5}: the gas is one species");
+  EXPECT_ERROR(region("number_density: 1, temperature: 1, drift: [1, 0, 0]"),
+               "particles.regions[0].drift = [1, 0, 0]: unknown key");
+  EXPECT_ERROR(p + "        regions:\n          - {region: {sphere: {radius: 1}}, number_density: 1, temperature: 1}\n",
+               "particles.regions[0].region.sphere = {radius: 1}: unknown shape");
+  EXPECT_ERROR(p + "        regions:\n          - {number_density: 1, temperature: 1}\n",
+               "particles.regions[0].region");
+  EXPECT_ERROR(p + "        regions: []\n", "particles.regions = []: needs at least one region");
+  EXPECT_ERROR(p + "        per_cell: 2\n        regions:\n          - {region: " + ball +
+                   ", number_density: 1, temperature: 1}\n",
+               "particles.per_cell = 2: not with regions");
+  // A real density with the default weight 1: 2.5e25 in the unit box is far too many.
+  EXPECT_ERROR(region("number_density: 2.5e25, temperature: 300"),
+               "particles.regions[0].number_density = 2.5e25: up to 2.5e+25 particles in the mesh's 1 m^3 at "
+               "particles.weight 1: give a weight");
+}
+
 TEST(TrackerOptions, InflowMistakesNameTheKey) {
   const std::string p = std::string(kParticles) + "      boundaries: {default: {kind: specular}, x_min: {kind: open}}\n";
   EXPECT_ERROR(p + "      inflow: [{patches: [y_min], number_density: 1, temperature: 1}]\n",
