@@ -128,6 +128,11 @@ std::map<haddr_t, Bytes>::iterator first_after(std::map<haddr_t, Bytes>& held, h
 void hold(State& s, haddr_t at, const unsigned char* data, std::size_t n) {
   const haddr_t end = at + n;
   const auto first = first_after(s.held, at);
+  // Within one held extent (a chunk or an object header written again): in place.
+  if (first != s.held.end() && first->first <= at && end <= first->first + first->second.size()) {
+    std::copy(data, data + n, first->second.begin() + (at - first->first));
+    return;
+  }
   auto last = first;
   haddr_t lo = at, hi = end;
   for (; last != s.held.end() && last->first < end; ++last) {
