@@ -6,6 +6,7 @@
 #include "coupler/output/h5_groups.hpp"
 #include "coupler/output/h5_values.hpp"
 #include "coupler/output/in_file.hpp"
+#include "coupler/output/journal_driver.hpp"
 
 namespace cosim::output {
 namespace {
@@ -22,7 +23,7 @@ std::vector<double> widths(hid_t grid, const std::string& axis) {
 
 FieldMeans field_means(const std::filesystem::path& path, const std::string& participant, const std::string& field) {
   return in_file(path, [&] {
-    const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open file");
+    const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, journaled_access().get()), H5Fclose, "open file");
     const Handle fields = open_group(file.get(), "fields");
     const Handle group = open_group(fields.get(), participant);
     const Handle grid = open_group(group.get(), "grid");

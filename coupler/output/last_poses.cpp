@@ -5,6 +5,7 @@
 
 #include "coupler/output/h5_groups.hpp"
 #include "coupler/output/in_file.hpp"
+#include "coupler/output/journal_driver.hpp"
 #include "coupler/output/run_file.hpp"
 #include "coupler/output/series.hpp"
 
@@ -29,7 +30,7 @@ std::vector<LastPose> last_poses(const std::filesystem::path& path) {
   // peek() says what is wrong with a file that is no run file, and gives the body order.
   const std::vector<std::string> bodies = RunFile::peek(path).bodies;
   return in_file(path, [&] {
-    const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open file");
+    const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, journaled_access().get()), H5Fclose, "open file");
     const Handle group = open_group(file.get(), "bodies");
     std::vector<Series> positions, orientations;
     hsize_t rows = std::numeric_limits<hsize_t>::max();

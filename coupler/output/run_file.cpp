@@ -1,9 +1,5 @@
 #include "coupler/output/run_file.hpp"
 
-#include <fcntl.h>
-
-#include <cerrno>
-#include <cstring>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -14,6 +10,7 @@
 #include "coupler/output/h5_groups.hpp"
 #include "coupler/output/h5_handle.hpp"
 #include "coupler/output/h5_values.hpp"
+#include "coupler/output/journal_driver.hpp"
 #include "coupler/output/run_series.hpp"
 #include "coupler/output/in_file.hpp"
 #include "coupler/output/text.hpp"
@@ -40,27 +37,10 @@ void write_status(hid_t file, const std::string& status, double wall_seconds) {
   write_attribute(run.get(), "wall_seconds", wall_seconds);
 }
 
-// The coupler forks its participants while the file is open. An inherited descriptor
-// shares HDF5's lock (it belongs to the open file description), so a participant outliving
-// a killed coupler would keep --resume from opening the file.
-void close_on_exec(hid_t file) {
-  Handle fapl(H5Fget_access_plist(file), H5Pclose, "get file access properties");
-  // Only the sec2 driver's handle is an int*.
-  if (H5Pget_driver(fapl.get()) != H5FD_SEC2) throw ObjectError("file driver is not sec2");
-  void* handle = nullptr;
-  check(H5Fget_vfd_handle(file, fapl.get(), &handle), "get file descriptor");
-  const int fd = *static_cast<int*>(handle);
-  const int flags = fcntl(fd, F_GETFD);
-  if (flags < 0 || fcntl(fd, F_SETFD, flags | FD_CLOEXEC) < 0) {
-    throw ObjectError(std::string("set close-on-exec: ") + std::strerror(errno));
-  }
-}
-
 Handle open_run_file(const std::filesystem::path& path, unsigned flags) {
   // Said before H5Fopen would: its message for this is "file signature not found".
   if (H5Fis_hdf5(path.c_str()) == 0) throw ObjectError("not a cosim run file (not HDF5)");
-  Handle file(H5Fopen(path.c_str(), flags, H5P_DEFAULT), H5Fclose, "open file");
-  close_on_exec(file.get());
+  Handle file(H5Fopen(path.c_str(), flags, journaled_access().get()), H5Fclose, "open file");
   if (!has_link(file.get(), "run")) throw ObjectError("not a cosim run file (no /run group)");
   return file;
 }
@@ -120,25 +100,33 @@ RunFile RunFile::create(const std::filesystem::path& path, const RunInfo& info,
     impl->info = info;
     impl->bodies = bodies;
     impl->participants = participants;
-    impl->file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
-                        H5Fclose, "create file");
-    const hid_t file = impl->file.get();
-    close_on_exec(file);
+    // Written whole under another name and renamed: a kill before the file is complete
+    // leaves no file at `path` rather than half of one.
+    std::filesystem::path partial = path;
+    partial += ".tmp";
     {
-      Handle run = create_group(file, "run");
-      write_text(run.get(), "scene_text", info.scene_text);
-      write_attribute(run.get(), "scene_file", info.scene_file);
-      write_attribute(run.get(), "git_hash", info.git_hash);
-      write_attribute(run.get(), "cosim_version", info.cosim_version);
-      write_attribute(run.get(), "protocol_version", info.protocol_version);
-      write_attribute(run.get(), "started", utc_now_iso8601());
-      write_attribute(run.get(), "body_names", bodies);
-      write_attribute(run.get(), "participant_names", participants);
-      create_text_list(run.get(), kResumedBy);
+      const Handle file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, journaled_access().get()),
+                        H5Fclose, "create file");
+      {
+        Handle run = create_group(file.get(), "run");
+        write_text(run.get(), "scene_text", info.scene_text);
+        write_attribute(run.get(), "scene_file", info.scene_file);
+        write_attribute(run.get(), "git_hash", info.git_hash);
+        write_attribute(run.get(), "cosim_version", info.cosim_version);
+        write_attribute(run.get(), "protocol_version", info.protocol_version);
+        write_attribute(run.get(), "started", utc_now_iso8601());
+        write_attribute(run.get(), "body_names", bodies);
+        write_attribute(run.get(), "participant_names", participants);
+        create_text_list(run.get(), kResumedBy);
+      }
+      write_status(file.get(), "running", 0.0);
+      RunSeries::create(file.get(), bodies, participants);
     }
-    write_status(file, "running", 0.0);
-    impl->series = RunSeries::create(file, bodies, participants);
-    flush(file);
+    // A journal left by an earlier file of this name belongs to that file.
+    std::filesystem::remove(journal_of(path));
+    std::filesystem::rename(partial, path);
+    impl->file = open_run_file(path, H5F_ACC_RDWR);
+    impl->series = RunSeries::open(impl->file.get(), bodies, participants);
     return RunFile(std::move(impl));
   });
 }

@@ -47,26 +47,26 @@
 //                        participant with attr present (int; 0: no state in this checkpoint).
 //                        Each of these datasets holds its value in its first `length` rows
 //                        (uint64 attr); rows after that are space kept from a longer value.
-// Strings are variable-length UTF-8, but for /checkpoint's current. After every committed
-// window the file is flushed, so a crash (even SIGKILL) after append() returns loses nothing
-// committed. A crash inside append() can leave some series one row longer than others:
-// resume() cuts them back and readers should use the shortest length. A checkpoint is
-// written into the slot `current` does not name, flushed, and only then committed by
-// overwriting `current` in place and flushing again: a crash at any point leaves the
-// previous checkpoint whole. Checkpoint writes never free file space (datasets are only
-// overwritten and grown) because HDF5 1.10 can shrink the file before it rewrites the
-// superblock, and a kill between the two leaves a file it refuses to open ("truncated file").
-// For the same reason resume() appends to the resumed_by dataset: rewriting a growing list
-// attribute moves /run's object header, and kills inside resume() then left files HDF5
-// could not open ("addr overflow").
+// Strings are variable-length UTF-8, but for /checkpoint's current. The file is written
+// through a journaling driver (journal_driver.hpp): each flush is one commit, and a kill at
+// any instant leaves the file as the last finished flush left it, or the next open finishes
+// the flush it cut off. After every committed window the file is flushed, so a crash (even
+// SIGKILL) after append() returns loses nothing committed. An error inside append() (a full
+// disk) can leave some series one row longer than others: resume() cuts them back and
+// readers should use the shortest length. A checkpoint is written into the slot `current`
+// does not name, flushed, and only then committed by overwriting `current` in place and
+// flushing again: an error at any point leaves the previous checkpoint whole. Checkpoint
+// writes never free file space (datasets are only overwritten and grown), and resume()
+// appends to the resumed_by dataset rather than rewrite a growing attribute, which would
+// move /run's object header: the file keeps its layout. create() writes the file whole under <file>.tmp and renames
+// it, so a kill before it returns leaves no file rather than part of one.
 // Fields come with a sidecar <file>.xmf (XDMF 3: one temporal collection of 3DRectMesh or
 // Mixed grids per participant, referencing the datasets by the run file's name; with point
 // sets, each step a spatial collection of that grid and a Polyvertex grid per set with its
 // attributes node-centred, xdmf.hpp)
 // that ParaView opens (with its "XDMF Reader (Xdmf3ReaderS)" once a grid is polyhedral); it
 // is rewritten, by rename, after every field write once the file is flushed.
-// The file's descriptor is close-on-exec: participants forked while it is open must not
-// inherit it, nor with it HDF5's lock, which would keep --resume out after a crash.
+// The file's descriptors are close-on-exec (journal_driver.hpp).
 // Errors are std::runtime_error naming the file and the HDF5 object.
 #pragma once
 

@@ -13,8 +13,13 @@ namespace cosim::output::test {
 
 class ReadFile {
  public:
-  explicit ReadFile(const std::filesystem::path& path)
-      : id_(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) {
+  // HDF5's own driver, without a lock: tests read files a RunFile in the same process still
+  // holds (and locks through its own driver), as h5py does with HDF5_USE_FILE_LOCKING=FALSE.
+  explicit ReadFile(const std::filesystem::path& path) {
+    const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
+    H5Pset_file_locking(access, false, true);
+    id_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, access);
+    H5Pclose(access);
     if (id_ < 0) throw std::runtime_error("cannot open " + path.string());
   }
   ~ReadFile() { H5Fclose(id_); }

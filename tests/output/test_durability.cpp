@@ -1,6 +1,7 @@
 // The file keeps every committed window: after the writer is gone, and after it is killed
 // without any chance to close the file.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -8,11 +9,13 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <optional>
 #include <random>
 
 #include "tests/output/h5_read.hpp"
+#include "coupler/output/journal_driver.hpp"
 #include "coupler/output/run_file.hpp"
 #include "tests/output/sample_run.hpp"
 #include "tests/output/temp_dir.hpp"
@@ -207,6 +210,86 @@ TEST_F(DurabilityTest, SigkillDuringCheckpointWritesKeepsTheLastCheckpoint) {
   std::printf("[ stress   ] %d kills, %llu checkpoints completed, %d kills after the commit "
               "point, %.2f s\n",
               kKills, static_cast<unsigned long long>(written), after_commit, seconds);
+}
+
+// A journal without a commit in it (a kill after the journal was made, before its first
+// header, or after the commit's end) is no reason to refuse the file, and resume() removes it.
+TEST_F(DurabilityTest, AJournalWithoutACommitIsIgnored) {
+  const auto path = file("run.h5");
+  {
+    RunFile run = RunFile::create(path, RunInfo{}, kBodies, kParticipants);
+    const WindowRecord w = sample_window(0, 0.5, kBodies.size(), kParticipants);
+    run.append(w);
+    run.write_checkpoint(Checkpoint{1, w.time, w.poses, w.forces, {}, {}});
+  }
+  for (const std::string& text : {std::string(), std::string(40, '\0') + "rest of an earlier commit"}) {
+    std::ofstream(journal_of(path), std::ios::binary) << text;
+    EXPECT_EQ(RunFile::peek(path).checkpoint_window, 1u);
+    EXPECT_EQ(RunFile::resume(path, "d1e2f3").checkpoint().next_window, 1u);
+    EXPECT_FALSE(std::filesystem::exists(journal_of(path)));
+  }
+}
+
+// Whether a commit is under way or was cut off: the journal's header carries the magic.
+bool commit_pending(int journal) {
+  char magic[8] = {};
+  return pread(journal, magic, sizeof magic, 0) == sizeof magic && std::string(magic, 8) == "cosimjl1";
+}
+
+bool commit_pending_at(const std::filesystem::path& path) {
+  const int journal = open(journal_of(path).c_str(), O_RDONLY);
+  const bool pending = journal >= 0 && commit_pending(journal);
+  if (journal >= 0) close(journal);
+  return pending;
+}
+
+// A kill after a commit's commit point but before its end (the journal whole, the file half
+// written) is finished by the next open: read-only in memory, by resume() in the file, so
+// that no kill inside a flush leaves the file between two states.
+TEST_F(DurabilityTest, SigkillInsideACommitIsFinishedByTheNextOpen) {
+  const auto path = file("run.h5");
+  { RunFile::create(path, RunInfo{}, kBodies, kParticipants).write_checkpoint(stress_checkpoint(1)); }
+  for (int attempt = 0; attempt < 20; ++attempt) {
+    int pipe_fds[2];
+    ASSERT_EQ(pipe(pipe_fds), 0);
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      close(pipe_fds[0]);
+      checkpoint_forever(path, pipe_fds[1]);
+    }
+    close(pipe_fds[1]);
+    std::uint64_t last = 0;
+    // After the first checkpoint the journal exists; the kill comes as soon as it holds one.
+    ASSERT_EQ(read(pipe_fds[0], &last, sizeof last), static_cast<ssize_t>(sizeof last));
+    const int journal = open(journal_of(path).c_str(), O_RDONLY);
+    ASSERT_GE(journal, 0);
+    while (!commit_pending(journal)) {
+    }
+    kill(child, SIGKILL);
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    for (std::uint64_t seq = 0; read(pipe_fds[0], &seq, sizeof seq) == static_cast<ssize_t>(sizeof seq);) last = seq;
+    close(pipe_fds[0]);
+    const bool cut_off = commit_pending(journal);
+    close(journal);
+    if (!cut_off) continue;  // the commit ended between the look and the kill: again
+
+    // The commit cut off wrote either the slot (the checkpoint stays `last`) or the switch to
+    // it (`last + 1`): either way the checkpoint read is whole.
+    const std::uint64_t seen = RunFile::peek(path).checkpoint_window;
+    EXPECT_TRUE(seen == last || seen == last + 1) << seen << " after " << last;
+    EXPECT_TRUE(commit_pending_at(path)) << "a read-only open changed the file";
+    {
+      RunFile run = RunFile::resume(path, "d1e2f3");
+      EXPECT_EQ(run.checkpoint().next_window, seen);
+      EXPECT_TRUE(run.checkpoint().states == stress_checkpoint(seen).states);
+    }
+    EXPECT_FALSE(std::filesystem::exists(journal_of(path)));
+    EXPECT_EQ(RunFile::peek(path).checkpoint_window, seen);
+    return;
+  }
+  FAIL() << "no kill in 20 landed inside a commit";
 }
 
 }  // namespace

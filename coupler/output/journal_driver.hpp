@@ -1,0 +1,32 @@
+// The run file's HDF5 file driver: POSIX I/O as HDF5's default (sec2), but every flush is
+// one commit that a kill at any instant leaves either whole or not begun.
+//
+// HDF5 1.10 updates a file in place, one metadata block after another, and can shrink the
+// file before it rewrites the superblock that says its size: a kill in the middle leaves a
+// file HDF5 refuses to open. This driver keeps what the last flush left (the committed
+// bytes, up to the committed size) intact until the next flush: a write into them is held
+// in memory; a write past them (the file's growth: new windows' rows, field steps, objects)
+// goes straight to the file, where nothing committed refers to it. A flush then writes the
+// held bytes and the new size to <file>.journal (through <file>.journal.tmp and a rename,
+// so a journal that exists is whole), copies them into the file, sets its size and removes
+// the journal. Opening the file with this driver finishes a journal a kill left behind
+// (read-only: in memory, the file untouched). No fsync: this guards against the process
+// dying, not the machine losing power.
+//
+// The file and journal descriptors are close-on-exec: participants forked while the file is
+// open must not inherit it, nor with it HDF5's lock (flock, as sec2), which would keep
+// --resume out after a crash.
+#pragma once
+
+#include <filesystem>
+
+#include "coupler/output/h5_handle.hpp"
+
+namespace cosim::output {
+
+// File access properties that select the driver.
+Handle journaled_access();
+// Where the driver keeps the journal of `file`.
+std::filesystem::path journal_of(const std::filesystem::path& file);
+
+}  // namespace cosim::output
