@@ -117,9 +117,7 @@ int calibrate(const fs::path& cosim_executable, double scale) {
       // Enough particles, and enough cells, for their memory to show above the program's own.
       tracker(400, 500, 1, windows(2e-5, 2)), tracker(50, 5, 20, windows(2e-5, 1)),
   };
-  auto store = CostStore::load(CostStore::default_path());
-  store.drop_calibration();
-  store.save();
+  CostStore::update(CostStore::default_path(), [](CostStore& store) { store.drop_calibration(); });
   const fs::path dir = fs::temp_directory_path() / fmt::format("cosim-calibrate-{}", getpid());
   std::vector<study::Job> jobs;
   for (const auto& level : levels) {
@@ -130,7 +128,7 @@ int calibrate(const fs::path& cosim_executable, double scale) {
                     dir / level.name / "log.txt"});
   }
   setenv(kCalibrationEnv, "1", 1);
-  std::cout << "cosim calibrate: " << levels.size() << " small runs, one at a time, into " << store.path().string()
+  std::cout << "cosim calibrate: " << levels.size() << " small runs, one at a time, into " << CostStore::default_path().string()
             << "\n";
   bool failed = false;
   const auto usage = study::run_all(
@@ -143,7 +141,7 @@ int calibrate(const fs::path& cosim_executable, double scale) {
   unsetenv(kCalibrationEnv);
   if (failed) return 1;
   fs::remove_all(dir);
-  store = CostStore::load(CostStore::default_path());
+  const CostStore store = CostStore::load(CostStore::default_path());
   for (const char* program : {"fluid", "rigidbody", "tracker", kCoupler}) {
     const Coefficients c = model_of(program, store, COSIM_GIT_HASH);
     std::string units;

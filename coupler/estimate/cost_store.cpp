@@ -1,10 +1,14 @@
 #include "coupler/estimate/cost_store.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cerrno>
 #include <cstdlib>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
 
 namespace cosim::estimate {
@@ -112,6 +116,23 @@ void CostStore::save() const {
     throw std::runtime_error(temporary.string() + ": cannot write the measured costs");
   }
   fs::rename(temporary, path_);
+}
+
+void CostStore::update(const fs::path& path, const std::function<void(CostStore&)>& change) {
+  fs::create_directories(path.parent_path().empty() ? fs::path(".") : path.parent_path());
+  const std::string lock_path = path.string() + ".lock";
+  const int lock = open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock < 0) throw std::runtime_error(lock_path + ": cannot open the lock of the measured costs");
+  // Released when the descriptor closes, also if change() or save() throws.
+  const std::unique_ptr<int, void (*)(int*)> closer(new int(lock), [](int* fd) {
+    close(*fd);
+    delete fd;
+  });
+  while (flock(lock, LOCK_EX) != 0)
+    if (errno != EINTR) throw std::runtime_error(lock_path + ": cannot lock the measured costs");
+  CostStore store = load(path);
+  change(store);
+  store.save();
 }
 
 void CostStore::add(RunRecord record) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -37,6 +38,10 @@ class CostStore {
   static CostStore load(const std::filesystem::path& path);
   // Writes a temporary file and renames it over the store.
   void save() const;
+  // Loads the store at `path`, lets `change` change it, and saves it, holding an exclusive
+  // lock (flock on <path>.lock) throughout, so that runs finishing at once (`cosim study`'s
+  // levels side by side, tests in parallel) each keep their record.
+  static void update(const std::filesystem::path& path, const std::function<void(CostStore&)>& change);
 
   void add(RunRecord record);  // keeps the newest records, up to a bound
   void drop_calibration();     // before `cosim calibrate` measures anew

@@ -40,9 +40,9 @@ void learn(const scene::Scene& scene, const std::map<std::string, estimate::Prog
   try {
     totals.wall_seconds = wall;
     totals.disk_bytes = static_cast<double>(fs::file_size(run_file));
-    auto store = estimate::CostStore::load(estimate::CostStore::default_path());
-    store.add(estimate::run_record(scene, work, totals, COSIM_GIT_HASH));
-    store.save();
+    estimate::CostStore::update(estimate::CostStore::default_path(), [&](estimate::CostStore& store) {
+      store.add(estimate::run_record(scene, work, totals, COSIM_GIT_HASH));
+    });
   } catch (const std::exception& e) {
     spdlog::warn("the run's cost was not recorded for later estimates: {}", e.what());
   }

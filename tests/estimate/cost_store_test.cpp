@@ -2,8 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 namespace cosim::estimate {
 namespace {
@@ -66,6 +71,35 @@ TEST(CostStore, AnUnreadableFileIsNamed) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
   }
+}
+
+// Runs that finish at once (a study's levels side by side) each keep their record: forked
+// writers adding to one store at the same time lose none.
+TEST(CostStore, WritersAtOnceLoseNoRecord) {
+  const fs::path path = scratch("at-once.yaml");
+  constexpr int kWriters = 8, kEach = 10;
+  std::vector<pid_t> children;
+  for (int w = 0; w < kWriters; ++w) {
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      for (int k = 0; k < kEach; ++k)
+        CostStore::update(path, [&](CostStore& store) {
+          store.add(record("/w" + std::to_string(w) + "-" + std::to_string(k) + ".yaml", "b", 1e4));
+        });
+      _exit(0);
+    }
+    children.push_back(pid);
+  }
+  for (const pid_t pid : children) {
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  }
+  const CostStore store = CostStore::load(path);
+  EXPECT_EQ(store.records().size(), static_cast<std::size_t>(kWriters * kEach));
+  for (int w = 0; w < kWriters; ++w)
+    EXPECT_NE(store.last_run_of("/w" + std::to_string(w) + "-" + std::to_string(kEach - 1) + ".yaml"), nullptr) << w;
 }
 
 }  // namespace
