@@ -192,6 +192,8 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
   // exactly once.
   std::vector<bool> written(field::cell_count(frame.grid), false);
   std::size_t count = 0;
+  // Clang before 16, the fuzz preset's, cannot capture a structured binding in a lambda.
+  const auto step_id = step.get();
   blocks([&](const field::CellBlock& b) {
     if (const std::string problem = field::block_problem(b, cells, frame.fields); !problem.empty())
       throw ObjectError("fields of " + participant + ": " + problem);
@@ -213,7 +215,7 @@ void FieldWriter::write(hid_t file, const std::string& participant, std::uint64_
         start.push_back(0);
         extent.push_back(static_cast<hsize_t>(f.components));
       }
-      write_block(step.get(), f.name, start, extent, f.values.data());
+      write_block(step_id, f.name, start, extent, f.values.data());
     }
   });
   if (count != written.size())

@@ -55,6 +55,9 @@ Domain read_region(const Reader& entry, const Domain& domain) {
 }
 
 std::size_t capped(const Reader& r, const std::string& key, double n) {
+  // NaN from a region and a body too small to have a volume in double precision (0 / 0).
+  if (std::isnan(n))
+    r.fail(key, "gives no number of bodies: the sizes of the region and the body are below double precision");
   if (n > static_cast<double>(max_bodies))
     r.fail(key, fmt::format("makes {:g} bodies; one entry makes at most {}", n, max_bodies));
   return static_cast<std::size_t>(n);

@@ -2,6 +2,7 @@
 // their own files.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -99,8 +100,12 @@ Study read_study(const Reader& r) {
 
 Domain read_box(const Reader& r) {
   const Domain d{r.vec3("min"), r.vec3("max")};
-  for (int k = 0; k < 3; ++k)
+  for (int k = 0; k < 3; ++k) {
     if (d.max[k] <= d.min[k]) r.fail("max", fmt::format("must be greater than {} in every component", r.path("min")));
+    // Every width, volume and cell count of the box is computed from max - min.
+    if (!std::isfinite(d.max[k] - d.min[k]))
+      r.fail("max", fmt::format("is too far from {}: the box's width is beyond double precision", r.path("min")));
+  }
   r.finish();
   return d;
 }
