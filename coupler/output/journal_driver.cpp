@@ -38,6 +38,10 @@ struct State {
   haddr_t disk = 0;       // the file's size on disk
   haddr_t committed = 0;  // the size the last commit left: what committed metadata can name
   std::map<haddr_t, Bytes> held;
+  // A commit failed after its journal became whole: the file may be half written, and only
+  // that journal, finished by the next open, mends it. No later commit may write a journal
+  // over it.
+  bool broken = false;
 };
 
 // HDF5 hands the driver back the H5FD_t it returned from open: the state hangs off it.
@@ -126,6 +130,7 @@ std::map<haddr_t, Bytes>::iterator first_after(std::map<haddr_t, Bytes>& held, h
 
 // Holds [at, at + n), merged with the held extents it overlaps.
 void hold(State& s, haddr_t at, const unsigned char* data, std::size_t n) {
+  if (n == 0) return;  // an empty extent would shadow the next one held at its address
   const haddr_t end = at + n;
   const auto first = first_after(s.held, at);
   // Within one held extent (a chunk or an object header written again): in place.
@@ -143,7 +148,7 @@ void hold(State& s, haddr_t at, const unsigned char* data, std::size_t n) {
   for (auto it = first; it != last; ++it) std::copy(it->second.begin(), it->second.end(), merged.begin() + (it->first - lo));
   std::copy(data, data + n, merged.begin() + (at - lo));
   s.held.erase(first, last);
-  s.held.emplace(lo, std::move(merged));
+  s.held[lo] = std::move(merged);
 }
 
 std::string journal_name(const State& s) { return journal_of(s.path).string(); }
@@ -157,11 +162,12 @@ struct Header {
   std::uint64_t body;   // the body's length in bytes
 };
 
-// Copies the held extents into the file and gives it `size`.
+// Copies the held extents into the file and gives it `size`, also where a commit cut off
+// after its truncation left extents beyond it.
 bool apply(State& s, haddr_t size) {
   for (const auto& [at, bytes] : s.held)
     if (!write_all(s.fd, bytes.data(), bytes.size(), static_cast<off_t>(at))) return false;
-  if (size != s.disk && ftruncate(s.fd, static_cast<off_t>(size)) != 0) return false;
+  if (ftruncate(s.fd, static_cast<off_t>(size)) != 0) return false;
   s.held.clear();
   s.disk = s.committed = s.eof = size;
   return true;
@@ -169,11 +175,22 @@ bool apply(State& s, haddr_t size) {
 
 herr_t commit(State& s) {
   if (!s.writable) return 0;
+  if (s.broken) {
+    errno = EIO;
+    return error(H5E_WRITEERROR, "a commit to " + s.path + " failed before: the next open finishes it");
+  }
   if (s.held.empty() && s.eof == s.disk) {
     s.committed = s.disk;
     return 0;
   }
   const std::string journal = journal_name(s);
+  // Another open of the file may have finished and removed the journal this one writes
+  // (recover()): a journal nobody can find would protect nothing.
+  struct stat st {};
+  if (s.journal >= 0 && (fstat(s.journal, &st) != 0 || st.st_nlink == 0)) {
+    close(s.journal);
+    s.journal = -1;
+  }
   if (s.journal < 0) s.journal = open(journal.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (s.journal < 0) return error(H5E_CANTOPENFILE, "create " + journal);
   Header header{{}, s.eof, s.held.size(), 0};
@@ -200,9 +217,11 @@ herr_t commit(State& s) {
   // split, is the commit point. From there on an open finishes the commit.
   if (!write_pieces() || !write_all(s.journal, &header, sizeof header, 0))
     return error(H5E_WRITEERROR, "write " + journal);
+  s.broken = true;  // until the journal is applied and marked done
   if (!apply(s, s.eof)) return error(H5E_WRITEERROR, "write " + s.path);
   const char done[sizeof kMagic] = {};
   if (!write_all(s.journal, done, sizeof done, 0)) return error(H5E_WRITEERROR, "write " + journal);
+  s.broken = false;
   return 0;
 }
 
@@ -238,8 +257,9 @@ herr_t recover(State& s) {
     return error(H5E_CANTOPENFILE, "journal " + journal + " is not one this driver wrote");
   }
   if (pending) s.eof = header.size;
-  if (!s.writable) return 0;
-  if (pending && !apply(s, header.size)) return error(H5E_WRITEERROR, "write " + s.path);
+  // A journal with nothing to do may be a live writer's, between its commits: left alone.
+  if (!s.writable || !pending) return 0;
+  if (!apply(s, header.size)) return error(H5E_WRITEERROR, "write " + s.path);
   return unlink(journal.c_str()) == 0 ? 0 : error(H5E_WRITEERROR, "remove " + journal);
 }
 
@@ -328,6 +348,7 @@ herr_t get_handle(H5FD_t* f, hid_t, void** handle) {
 
 herr_t read_at(H5FD_t* f, H5FD_mem_t, hid_t, haddr_t addr, size_t size, void* buffer) {
   State& s = state_of(f);
+  if (size == 0) return 0;  // parallel HDF5 passes empty reads and writes down
   auto* out = static_cast<unsigned char*>(buffer);
   if (!read_disk(s, addr, size, out)) return error(H5E_READERROR, "read " + s.path);
   const haddr_t end = addr + size;
@@ -341,6 +362,7 @@ herr_t read_at(H5FD_t* f, H5FD_mem_t, hid_t, haddr_t addr, size_t size, void* bu
 
 herr_t write_at(H5FD_t* f, H5FD_mem_t, hid_t, haddr_t addr, size_t size, const void* buffer) {
   State& s = state_of(f);
+  if (size == 0) return 0;
   const auto* data = static_cast<const unsigned char*>(buffer);
   const haddr_t end = addr + size;
   if (addr < s.committed) {

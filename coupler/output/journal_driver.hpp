@@ -7,11 +7,13 @@
 // bytes, up to the committed size) intact until the next flush: a write into them is held
 // in memory; a write past them (the file's growth: new windows' rows, field steps, objects)
 // goes straight to the file, where nothing committed refers to it. A flush then writes the
-// held bytes and the new size to <file>.journal (through <file>.journal.tmp and a rename,
-// so a journal that exists is whole), copies them into the file, sets its size and removes
-// the journal. Opening the file with this driver finishes a journal a kill left behind
-// (read-only: in memory, the file untouched). No fsync: this guards against the process
-// dying, not the machine losing power.
+// held bytes and the new size into <file>.journal behind its header, then the header with
+// its magic (one write of 32 bytes, which a kill cannot split: the commit point), copies
+// the bytes into the file, sets its size and clears the magic; the journal is removed when
+// the file closes. Opening the file with this driver finishes a journal whose magic a kill
+// left set (read-only: in memory, the file untouched); a commit that failed after its
+// commit point leaves the rest to that open and commits nothing more. No fsync: this
+// guards against the process dying, not the machine losing power.
 //
 // The file and journal descriptors are close-on-exec: participants forked while the file is
 // open must not inherit it, nor with it HDF5's lock (flock, as sec2), which would keep
