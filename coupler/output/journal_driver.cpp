@@ -58,19 +58,6 @@ herr_t error(hid_t minor, const std::string& what) {
   return -1;
 }
 
-bool write_all(int fd, const void* data, std::size_t n, off_t at) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  while (n > 0) {
-    const ssize_t done = pwrite(fd, p, n, at);
-    if (done < 0 && errno == EINTR) continue;
-    if (done <= 0) return false;
-    p += done;
-    n -= static_cast<std::size_t>(done);
-    at += done;
-  }
-  return true;
-}
-
 // Writes the pieces one after another from `at` on, and moves `at` past them.
 bool write_vector(int fd, std::vector<iovec> pieces, off_t& at) {
   std::size_t first = 0;
@@ -89,6 +76,10 @@ bool write_vector(int fd, std::vector<iovec> pieces, off_t& at) {
     while (first < pieces.size() && pieces[first].iov_len == 0) ++first;
   }
   return true;
+}
+
+bool write_all(int fd, const void* data, std::size_t n, off_t at) {
+  return write_vector(fd, {{const_cast<void*>(data), n}}, at);
 }
 
 bool read_all(int fd, void* out, std::size_t n, off_t at) {

@@ -149,6 +149,20 @@ Checkpoint stress_checkpoint(std::uint64_t seq) {
   _exit(3);
 }
 
+// Forks a child that runs checkpoint_forever(path); `from_child` reads its numbers.
+void start_checkpointing(const std::filesystem::path& path, pid_t& child, int& from_child) {
+  int pipe_fds[2];
+  ASSERT_EQ(pipe(pipe_fds), 0);
+  child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    close(pipe_fds[0]);
+    checkpoint_forever(path, pipe_fds[1]);
+  }
+  close(pipe_fds[1]);
+  from_child = pipe_fds[0];
+}
+
 // SIGKILL at random moments of a loop that does nothing but write checkpoints: after every
 // kill the file opens and holds the last checkpoint the child finished, or the one it was
 // writing if the kill came after its commit point, never anything else.
@@ -163,19 +177,13 @@ TEST_F(DurabilityTest, SigkillDuringCheckpointWritesKeepsTheLastCheckpoint) {
   int after_commit = 0;  // kills between the commit point and write_checkpoint returning
   const auto start = std::chrono::steady_clock::now();
   for (int k = 0; k < kKills; ++k) {
-    int pipe_fds[2];
-    ASSERT_EQ(pipe(pipe_fds), 0);
-    const pid_t child = fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-      close(pipe_fds[0]);
-      checkpoint_forever(path, pipe_fds[1]);
-    }
-    close(pipe_fds[1]);
+    pid_t child = -1;
+    int from_child = -1;
+    ASSERT_NO_FATAL_FAILURE(start_checkpointing(path, child, from_child));
     std::uint64_t last = 0;
     std::uint64_t seq = 0;
     // Waits for the first checkpoint, so the kill lands inside the loop, not in resume().
-    ASSERT_EQ(read(pipe_fds[0], &last, sizeof last), static_cast<ssize_t>(sizeof last))
+    ASSERT_EQ(read(from_child, &last, sizeof last), static_cast<ssize_t>(sizeof last))
         << "child died before its first checkpoint (kill " << k << ")";
     const std::uint64_t first = last;
     usleep(static_cast<useconds_t>(delay_us(rng)));
@@ -183,8 +191,8 @@ TEST_F(DurabilityTest, SigkillDuringCheckpointWritesKeepsTheLastCheckpoint) {
     int status = 0;
     ASSERT_EQ(waitpid(child, &status, 0), child);
     ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "kill " << k;
-    while (read(pipe_fds[0], &seq, sizeof seq) == static_cast<ssize_t>(sizeof seq)) last = seq;
-    close(pipe_fds[0]);
+    while (read(from_child, &seq, sizeof seq) == static_cast<ssize_t>(sizeof seq)) last = seq;
+    close(from_child);
     written += last - first + 1;
 
     std::optional<RunFile> run;
@@ -250,18 +258,12 @@ TEST_F(DurabilityTest, SigkillInsideACommitIsFinishedByTheNextOpen) {
   const auto path = file("run.h5");
   { RunFile::create(path, RunInfo{}, kBodies, kParticipants).write_checkpoint(stress_checkpoint(1)); }
   for (int attempt = 0; attempt < 20; ++attempt) {
-    int pipe_fds[2];
-    ASSERT_EQ(pipe(pipe_fds), 0);
-    const pid_t child = fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-      close(pipe_fds[0]);
-      checkpoint_forever(path, pipe_fds[1]);
-    }
-    close(pipe_fds[1]);
+    pid_t child = -1;
+    int from_child = -1;
+    ASSERT_NO_FATAL_FAILURE(start_checkpointing(path, child, from_child));
     std::uint64_t last = 0;
     // After the first checkpoint the journal exists; the kill comes as soon as it holds one.
-    ASSERT_EQ(read(pipe_fds[0], &last, sizeof last), static_cast<ssize_t>(sizeof last));
+    ASSERT_EQ(read(from_child, &last, sizeof last), static_cast<ssize_t>(sizeof last));
     const int journal = open(journal_of(path).c_str(), O_RDONLY);
     ASSERT_GE(journal, 0);
     // The child commits over and over; should it die instead, the test must not spin.
@@ -269,8 +271,8 @@ TEST_F(DurabilityTest, SigkillInsideACommitIsFinishedByTheNextOpen) {
     kill(child, SIGKILL);
     int status = 0;
     ASSERT_EQ(waitpid(child, &status, 0), child);
-    for (std::uint64_t seq = 0; read(pipe_fds[0], &seq, sizeof seq) == static_cast<ssize_t>(sizeof seq);) last = seq;
-    close(pipe_fds[0]);
+    for (std::uint64_t seq = 0; read(from_child, &seq, sizeof seq) == static_cast<ssize_t>(sizeof seq);) last = seq;
+    close(from_child);
     const bool cut_off = commit_pending(journal);
     close(journal);
     if (!cut_off) continue;  // the commit ended between the look and the kill: again
