@@ -1,5 +1,7 @@
 #include "coupler/output/field_means.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <numeric>
 
@@ -11,17 +13,27 @@
 namespace cosim::output {
 namespace {
 
-// The widths of an axis's cells from its node coordinates.
-std::vector<double> widths(hid_t grid, const std::string& axis) {
+// An axis's weights: each cell's length within [lo, hi], or, for lo == hi, 1 for the one cell
+// holding lo (the last cell takes its upper node too). All zero when the interval misses.
+std::vector<double> weights(hid_t grid, const std::string& axis, double lo, double hi) {
   const std::vector<double> nodes = read_array(grid, axis);
   std::vector<double> out;
-  for (std::size_t i = 1; i < nodes.size(); ++i) out.push_back(nodes[i] - nodes[i - 1]);
+  for (std::size_t i = 1; i < nodes.size(); ++i) {
+    const bool last = i + 1 == nodes.size();
+    if (lo == hi)
+      out.push_back(lo >= nodes[i - 1] && (lo < nodes[i] || (last && lo == nodes[i])) ? 1.0 : 0.0);
+    else
+      out.push_back(std::max(0.0, std::min(hi, nodes[i]) - std::max(lo, nodes[i - 1])));
+  }
   return out;
 }
 
+double sum(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
+
 }  // namespace
 
-FieldMeans field_means(const std::filesystem::path& path, const std::string& participant, const std::string& field) {
+FieldMeans field_means(const std::filesystem::path& path, const std::string& participant, const std::string& field,
+                       const Region& region) {
   return in_file(path, [&] {
     const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, journaled_access().get()), H5Fclose, "open file");
     const Handle fields = open_group(file.get(), "fields");
@@ -29,9 +41,13 @@ FieldMeans field_means(const std::filesystem::path& path, const std::string& par
     const Handle grid = open_group(group.get(), "grid");
     if (!has_link(grid.get(), "x"))
       fail("/fields/" + participant + "/grid is polyhedral: the run file holds no cell volumes to weigh a mean by");
-    const std::vector<double> dx = widths(grid.get(), "x"), dy = widths(grid.get(), "y"), dz = widths(grid.get(), "z");
-    const double volume = std::accumulate(dx.begin(), dx.end(), 0.0) * std::accumulate(dy.begin(), dy.end(), 0.0) *
-                          std::accumulate(dz.begin(), dz.end(), 0.0);
+    const std::vector<double> dx = weights(grid.get(), "x", region.lo[0], region.hi[0]);
+    const std::vector<double> dy = weights(grid.get(), "y", region.lo[1], region.hi[1]);
+    const std::vector<double> dz = weights(grid.get(), "z", region.lo[2], region.hi[2]);
+    const double volume = sum(dx) * sum(dy) * sum(dz);
+    if (volume == 0)
+      fail(fmt::format("/fields/{}/grid: no cell lies in [{}, {}] x [{}, {}] x [{}, {}]", participant, region.lo[0],
+                       region.hi[0], region.lo[1], region.hi[1], region.lo[2], region.hi[2]));
     std::vector<std::pair<double, std::vector<double>>> frames;
     FieldMeans out;
     for (const std::string& name : link_names(group.get())) {

@@ -73,11 +73,11 @@ class Parser {
       expect(',');
       skip_space();
       const std::size_t t0_start = pos_;
-      e.t0 = number();
+      e.t0 = number("a time in seconds");
       expect(',');
       skip_space();
       const std::size_t t1_start = pos_;
-      e.t1 = number();
+      e.t1 = number("a time in seconds");
       if (e.t0 < 0) fail(t0_start, "mean() needs t0 >= 0");
       if (e.t1 <= e.t0) fail(t1_start, fmt::format("mean() needs t1 > t0 (t0 = {})", e.t0));
     }
@@ -109,7 +109,37 @@ class Parser {
       ++pos_;
       e.column = component();
     }
+    if (pos_ < text_.size() && text_[pos_] == '@') {
+      ++pos_;
+      e.region = region();
+    }
     return e;
+  }
+
+  // After '@': a point [x, y, z], or a box [x0, y0, z0]..[x1, y1, z1].
+  output::Region region() {
+    output::Region r;
+    r.lo = r.hi = point();
+    if (text_.compare(pos_, 2, "..") == 0) {
+      pos_ += 2;
+      skip_space();
+      const std::size_t hi_start = pos_;
+      r.hi = point();
+      for (int a = 0; a < 3; ++a)
+        if (r.hi[a] <= r.lo[a]) fail(hi_start, "a box's upper corner must exceed its lower one on every axis");
+    }
+    return r;
+  }
+
+  std::array<double, 3> point() {
+    expect('[');
+    std::array<double, 3> p{};
+    for (int a = 0; a < 3; ++a) {
+      if (a > 0) expect(',');
+      p[a] = number("a coordinate in metres");
+    }
+    expect(']');
+    return p;
   }
 
   int component() {
@@ -140,12 +170,12 @@ class Parser {
     return text_.substr(start, pos_ - start);
   }
 
-  double number() {
+  double number(const char* what) {
     skip_space();
     double value = 0;
     const char* begin = text_.data() + pos_;
     const auto [end, ec] = std::from_chars(begin, text_.data() + text_.size(), value);
-    if (ec != std::errc() || !std::isfinite(value)) fail(pos_, "expected a time in seconds");
+    if (ec != std::errc() || !std::isfinite(value)) fail(pos_, fmt::format("expected {}", what));
     pos_ += static_cast<std::size_t>(end - begin);
     return value;
   }
@@ -181,7 +211,7 @@ Samples samples(const Expression& e, const std::filesystem::path& file) {
     return s;
   }
   if (!e.participant.empty()) {
-    const output::FieldMeans means = output::field_means(file, e.participant, e.dataset);
+    const output::FieldMeans means = output::field_means(file, e.participant, e.dataset, e.region);
     const std::string where = fmt::format("{}: field:{}:{}", file.string(), e.participant, e.dataset);
     if (e.column < 0 && means.columns != 1)
       throw std::runtime_error(fmt::format("{} has {} components: name one (.x, .y, .z)", where, means.columns));
@@ -242,6 +272,11 @@ std::vector<std::string> participants_of(const Expression& e) {
   if (e.op == Op::Series)
     return e.participant.empty() ? std::vector<std::string>{} : std::vector<std::string>{e.participant};
   return participants_of(*e.arg);
+}
+
+const output::Region* region_of(const Expression& e) {
+  if (e.op == Op::Series) return e.participant.empty() ? nullptr : &e.region;
+  return region_of(*e.arg);
 }
 
 double latest_time(const Expression& e) {

@@ -1,12 +1,14 @@
 // A quantity of interest: one number read from a run file by a small expression.
 //
 //   measure := max(series) | min(series) | final(series) | mean(series, t0, t1) | abs(measure)
-//   series  := body:NAME:DATASET.COMPONENT | field:PARTICIPANT:FIELD[.COMPONENT] | abs(series)
+//   series  := body:NAME:DATASET.COMPONENT | field:PARTICIPANT:FIELD[.COMPONENT][@WHERE] | abs(series)
+//   WHERE   := [x, y, z] | [x0, y0, z0]..[x1, y1, z1]
 //
 // DATASET is one of a body's series in the run file (docs/output.md): position, velocity,
 // angular_velocity, force, torque; COMPONENT x, y or z. A field series is a grid field's
-// volume-weighted mean over the whole grid at each field frame (output.fields_every), its
-// component named for a vector field. max, min and final take the written rows (one per
+// volume-weighted mean over the whole grid, over a box of it, or its value in the cell
+// holding a point, at each field frame (output.fields_every), its component named for a
+// vector field. max, min and final take the written rows (one per
 // window with output.every 1, or per field frame); mean is the time average over [t0, t1] s
 // by the trapezoidal rule, the ends interpolated, so that levels with different windows
 // average the same interval.
@@ -16,6 +18,8 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "coupler/output/field_means.hpp"
 
 namespace cosim::study {
 
@@ -28,6 +32,7 @@ struct Expression {
   std::string participant;
   std::string dataset;
   int column = 0;
+  output::Region region;  // a field's: where its mean is taken
   double t0 = 0, t1 = 0;  // Mean
   std::shared_ptr<const Expression> arg;  // all but Series
   bool is_series() const;
@@ -47,6 +52,7 @@ Measure parse_measure(const std::string& name, const std::string& text);
 // against the scene before anything runs.
 std::vector<std::string> bodies_of(const Expression& e);
 std::vector<std::string> participants_of(const Expression& e);
+const output::Region* region_of(const Expression& e);  // a field series' region; nullptr for a body's
 // The latest time a mean reads (0 if none): it must lie within every level's run.
 double latest_time(const Expression& e);
 

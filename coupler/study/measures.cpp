@@ -30,6 +30,13 @@ std::string mismatch(const Measure& m, const scene::Scene& scene) {
     }
     if (scene.output.fields_every == 0) return "output.fields_every is 0: the run writes no fields to measure";
   }
+  if (const output::Region* r = region_of(m.expression)) {
+    const auto& d = scene.domain;
+    for (int a = 0; a < 3; ++a)
+      if (r->hi[a] < d.min[a] || r->lo[a] > d.max[a])
+        return fmt::format("the field's region [{}, {}] on axis {} lies outside the domain [{}, {}]", r->lo[a],
+                           r->hi[a], "xyz"[a], d.min[a], d.max[a]);
+  }
   if (latest_time(m.expression) > scene.time.end)
     return fmt::format("mean() reaches t = {} s, past time.end = {} s", latest_time(m.expression), scene.time.end);
   return "";

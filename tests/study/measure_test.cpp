@@ -117,6 +117,25 @@ TEST_F(OnARunFile, FieldsAreVolumeWeightedMeansOverTheGrid) {
     EXPECT_THROW(value(bad), std::runtime_error) << bad;
 }
 
+// A point takes the value of the cell holding it; a box weighs each cell by its overlap.
+TEST_F(OnARunFile, FieldsAtAPointOrOverABox) {
+  EXPECT_NEAR(value("final(field:p:u.x@[0.5, 0.5, 0.5])"), 1.0, 1e-12);
+  EXPECT_NEAR(value("final(field:p:u.x@[2, 0.5, 0.5])"), 4.0, 1e-12);
+  EXPECT_NEAR(value("final(field:p:u.x@[3, 1, 1])"), 4.0, 1e-12);  // the grid's last nodes are in its last cell
+  EXPECT_NEAR(value("final(field:p:u.x@[0.5, 0, 0]..[2, 1, 1])"), (0.5 * 1 + 1 * 4) / 1.5, 1e-12);
+  EXPECT_NEAR(value("mean(field:p:u.y@[1.5, 0.2, 0.2], 0, 1)"), 5.0, 1e-12);
+  EXPECT_THROW(value("final(field:p:u.x@[5, 0, 0]..[6, 1, 1])"), std::runtime_error);
+  EXPECT_THROW(value("final(field:p:u.x@[-1, 0.5, 0.5])"), std::runtime_error);
+}
+
+TEST(ParseMeasure, RegionsAreThreeCoordinatesEach) {
+  EXPECT_EQ(parse_error("final(field:fluid:velocity.x@[1, 2])"), "at '])': expected ','");
+  EXPECT_EQ(parse_error("final(field:fluid:velocity.x@[1, 2, z])"), "at 'z])': expected a coordinate in metres");
+  EXPECT_EQ(parse_error("final(field:fluid:velocity.x@[0, 0, 0]..[1, 0, 1])"),
+            "at '[1, 0, 1])': a box's upper corner must exceed its lower one on every axis");
+  EXPECT_EQ(parse_error("final(field:fluid:pressure@[0, 0, 0]..[1, 1, 1])"), "");
+}
+
 const char* kScene = R"(time: {end: 1}
 coupling: {window: 0.1}
 domain: {min: [0, 0, 0], max: [1, 1, 1]}
@@ -166,6 +185,19 @@ TEST(Measures, ErrorsNameTheArgumentOrTheSceneKey) {
             "or z");
   EXPECT_EQ(argument_error(kScene, "u=final(field:fluid:velocity.x)"),
             "--measure u=final(field:fluid:velocity.x): no participant 'fluid' in the scene (its participants: none)");
+}
+
+TEST(Measures, AFieldsRegionMustMeetTheDomain) {
+  const std::string scene = R"(time: {end: 1}
+coupling: {window: 0.1}
+output: {fields_every: 1}
+domain: {min: [0, 0, 0], max: [1, 1, 1]}
+participants: {fluid: {dt: 0.1, options: {density: 1, viscosity: {model: newtonian, mu: 1}, grid: {cells: [4, 4, 4]}}}}
+)";
+  EXPECT_EQ(argument_error(scene, "u=final(field:fluid:velocity.x@[0.5, 0.5, 0.5])"), "");
+  EXPECT_EQ(argument_error(scene, "u=final(field:fluid:velocity.x@[0.5, 2, 0.5])"),
+            "--measure u=final(field:fluid:velocity.x@[0.5, 2, 0.5]): the field's region [2, 2] on axis y lies outside "
+            "the domain [0, 1]");
 }
 
 }  // namespace

@@ -88,6 +88,31 @@ TEST(RigidScenes, SpherePyramidStaysOnTheFloor) {
   }
 }
 
+// Guards against: the settled pyramid, the reference of the solvers' iteration study
+// (scripts/study rigidbody), moving once its gaps have closed: each free sphere ends below
+// its start by at most what closing the gaps beneath it takes and does not move sideways.
+// A layer starts sqrt(2) r + g above the one below, whose spheres are 2 (r + g) apart
+// (g = 1e-3 r), and rests sqrt(4 r^2 - 2 (r + g)^2) ~ sqrt(2) (r - g) above it: it drops
+// (1 + sqrt(2)) g per layer.
+TEST(RigidScenes, SettledPyramidStandsOnItsFixedLayer) {
+  std::vector<std::string> spheres;
+  for (int layer = 1; layer < 7; ++layer)
+    for (int i = 0; i < 7 - layer; ++i)
+      for (int j = 0; j < 7 - layer; ++j)
+        spheres.push_back("s" + std::to_string(layer) + "_" + std::to_string(i) + "_" + std::to_string(j));
+  ASSERT_EQ(spheres.size(), 91u);
+  const auto runs = run_config("rigid_settled_pyramid", "0.2", spheres);
+  constexpr double r = 0.05;
+  for (const auto& s : spheres) {
+    const auto p = runs.position(s);
+    ASSERT_EQ(p.rows, 21u);
+    const int layer = s[1] - '0';
+    for (int axis = 0; axis < 2; ++axis) EXPECT_NEAR(p.at(p.rows - 1, axis), p.at(0, axis), 1e-4 * r) << s;
+    EXPECT_LE(p.at(p.rows - 1, 2), p.at(0, 2)) << s;
+    EXPECT_GE(p.at(p.rows - 1, 2), p.at(0, 2) - 1.05 * (1 + std::sqrt(2.0)) * 1e-3 * r * layer) << s;
+  }
+}
+
 TEST(RigidScenes, MixedShapesLandOnThePlane) {
   const std::vector<std::string> bodies{"sphere", "small_sphere", "ellipsoid", "box", "cylinder", "capsule", "gem", "torus"};
   const auto runs = run_config("rigid_mixed_shapes", "0.5", bodies);
