@@ -80,7 +80,8 @@ std::string shown(const char* v) { return v; }
 
 // Records on construction, for the length of the getter's call, one tab-separated line:
 // path, kind, "required" or "default" and the default, range, allowed names, program.
-// `count` is the length of a list of numbers.
+// `count` is the length of a list of numbers. has() records too (kind "has"): a key asked
+// about before it is read is optional even where its getter takes no fallback.
 class Note {
  public:
   template <class Fallback = int>
