@@ -3,8 +3,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <errno.h>
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 
 #include "coupler/scene/error.hpp"
@@ -49,6 +54,59 @@ std::size_t index_of(std::span<const char* const> names, const std::string& name
   return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
+// COSIM_SCENE_KEYS=<file> makes every getter append what it was asked to read, one line
+// per call, so that scripts/scene_reference can list every key from the code that reads it.
+// The programs `cosim check` starts inherit the variable and append to the same file; one
+// write() per line with O_APPEND keeps their lines whole. Unset, a getter pays one branch.
+int key_log() {
+  static const int fd = [] {
+    const char* file = std::getenv("COSIM_SCENE_KEYS");
+    return file && *file ? ::open(file, O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644) : -1;
+  }();
+  return fd;
+}
+
+// Getters call each other (number with a fallback calls number, vec3 calls numbers); only
+// the one the caller named records.
+thread_local int depth = 0;
+
+// The default as the user would write it.
+std::string shown(double v) { return fmt::format("{}", v); }
+std::string shown(int v) { return std::to_string(v); }
+std::string shown(bool v) { return v ? "true" : "false"; }
+std::string shown(const std::string& v) { return v.empty() ? "\"\"" : v; }
+std::string shown(const Vec3& v) { return fmt::format("[{}]", fmt::join(v, ", ")); }
+std::string shown(const char* v) { return v; }
+
+// Records on construction, for the length of the getter's call, one tab-separated line:
+// path, kind, "required" or "default" and the default, range, allowed names, program.
+// `count` is the length of a list of numbers. has() records too (kind "has"): a key asked
+// about before it is read is optional even where its getter takes no fallback.
+class Note {
+ public:
+  template <class Fallback = int>
+  Note(const Reader& r, const std::string& key, std::string_view kind, const Range* range = nullptr,
+       const Fallback* fallback = nullptr, std::span<const char* const> names = {}, std::size_t count = 0)
+      : on_(key_log() >= 0) {
+    if (!on_ || depth++ > 0) return;
+    const std::string line =
+        fmt::format("{}\t{}{}\t{}\t{}\t{}\t{}\t{}\n", r.path(key), kind, count ? fmt::format(":{}", count) : "",
+                    fallback ? "default" : "required", fallback ? shown(*fallback) : "",
+                    range ? range->requirement() : "", fmt::join(names, ","), program_invocation_short_name);
+    if (::write(key_log(), line.data(), line.size()) < 0) return;  // a lost line shows as a missing key
+  }
+  ~Note() {
+    if (on_) --depth;
+  }
+  Note(const Note&) = delete;
+  Note& operator=(const Note&) = delete;
+
+ private:
+  bool on_;
+};
+
+constexpr const int* none = nullptr;  // no fallback: the key is required
+
 }  // namespace
 
 bool Range::contains(double v) const { return (open_lo_ ? v > lo_ : v >= lo_) && (open_hi_ ? v < hi_ : v <= hi_); }
@@ -89,6 +147,7 @@ const Reader::Entry* Reader::find(const std::string& key) const {
 }
 
 bool Reader::has(const std::string& key) const {
+  const Note note(*this, key, "has");
   if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.push_back(key);
   return find(key) != nullptr;
 }
@@ -111,41 +170,54 @@ double Reader::checked(const std::string& key, double value, const Range& range)
   return value;
 }
 
-double Reader::number(const std::string& key, const Range& range) const { return checked(key, finite(key), range); }
+double Reader::number(const std::string& key, const Range& range) const {
+  const Note note(*this, key, "number", &range);
+  return checked(key, finite(key), range);
+}
 
 double Reader::number(const std::string& key, double fallback, const Range& range) const {
+  const Note note(*this, key, "number", &range, &fallback);
   return has(key) ? number(key, range) : fallback;
 }
 
 int Reader::integer(const std::string& key, const Range& range) const {
+  const Note note(*this, key, "integer", &range);
   const double value = finite(key);
   if (value != std::floor(value) || std::abs(value) > std::numeric_limits<int>::max()) fail(key, "expected an integer");
   return static_cast<int>(checked(key, value, range));
 }
 
 int Reader::integer(const std::string& key, int fallback, const Range& range) const {
+  const Note note(*this, key, "integer", &range, &fallback);
   return has(key) ? integer(key, range) : fallback;
 }
 
 std::string Reader::string(const std::string& key) const {
+  const Note note(*this, key, "string");
   const YAML::Node& node = get(key);
   if (!node.IsScalar()) fail(key, "expected a string");
   return node.Scalar();
 }
 
 std::string Reader::string(const std::string& key, const std::string& fallback) const {
+  const Note note(*this, key, "string", nullptr, &fallback);
   return has(key) ? string(key) : fallback;
 }
 
 bool Reader::boolean(const std::string& key) const {
+  const Note note(*this, key, "boolean");
   bool value = false;
   if (!YAML::convert<bool>::decode(get(key), value)) fail(key, "expected true or false");
   return value;
 }
 
-bool Reader::boolean(const std::string& key, bool fallback) const { return has(key) ? boolean(key) : fallback; }
+bool Reader::boolean(const std::string& key, bool fallback) const {
+  const Note note(*this, key, "boolean", nullptr, &fallback);
+  return has(key) ? boolean(key) : fallback;
+}
 
 void Reader::numbers(const std::string& key, std::span<double> out, const Range& range) const {
+  const Note note(*this, key, "numbers", &range, none, {}, out.size());
   const YAML::Node& node = get(key);
   const std::string expected = fmt::format("expected a list of {} numbers", out.size());
   if (!node.IsSequence() || node.size() != out.size()) fail(key, expected);
@@ -158,6 +230,7 @@ void Reader::numbers(const std::string& key, std::span<double> out, const Range&
 }
 
 void Reader::integers(const std::string& key, std::span<int> out, const Range& range) const {
+  const Note note(*this, key, "integers", &range, none, {}, out.size());
   std::vector<double> values(out.size());
   numbers(key, values, range);
   for (std::size_t i = 0; i < out.size(); ++i) {
@@ -168,16 +241,19 @@ void Reader::integers(const std::string& key, std::span<int> out, const Range& r
 }
 
 Vec3 Reader::vec3(const std::string& key, const Range& range) const {
+  const Note note(*this, key, "vec3", &range);
   Vec3 v{};
   numbers(key, v, range);
   return v;
 }
 
 Vec3 Reader::vec3(const std::string& key, const Vec3& fallback, const Range& range) const {
+  const Note note(*this, key, "vec3", &range, &fallback);
   return has(key) ? vec3(key, range) : fallback;
 }
 
 std::vector<std::string> Reader::strings(const std::string& key) const {
+  const Note note(*this, key, "strings");
   const YAML::Node& node = get(key);
   if (!node.IsSequence()) fail(key, "expected a list of strings");
   std::vector<std::string> out;
@@ -189,16 +265,19 @@ std::vector<std::string> Reader::strings(const std::string& key) const {
 }
 
 std::size_t Reader::choice(const std::string& key, std::span<const char* const> names) const {
+  const Note note(*this, key, "choice", nullptr, none, names);
   const std::size_t i = index_of(names, string(key));
   if (i == names.size()) fail(key, one_of(names));
   return i;
 }
 
 std::size_t Reader::choice(const std::string& key, std::span<const char* const> names, std::size_t fallback) const {
+  const Note note(*this, key, "choice", nullptr, &names[fallback], names);
   return has(key) ? choice(key, names) : fallback;
 }
 
 std::vector<std::size_t> Reader::choices(const std::string& key, std::span<const char* const> names) const {
+  const Note note(*this, key, "choices", nullptr, none, names);
   const YAML::Node& node = get(key);
   if (!node.IsSequence()) fail(key, fmt::format("expected a list of: {}", fmt::join(names, ", ")));
   std::vector<std::size_t> out;
@@ -212,12 +291,14 @@ std::vector<std::size_t> Reader::choices(const std::string& key, std::span<const
 }
 
 Reader Reader::map(const std::string& key) const {
+  const Note note(*this, key, "mapping");
   const YAML::Node& node = get(key);
   if (!node.IsMap()) fail(key, "expected a mapping");
   return Reader(node, file_, path(key));
 }
 
 std::vector<Reader> Reader::maps(const std::string& key) const {
+  const Note note(*this, key, "mappings");
   const YAML::Node& node = get(key);
   if (!node.IsSequence()) fail(key, "expected a list of mappings");
   std::vector<Reader> out;
@@ -225,7 +306,10 @@ std::vector<Reader> Reader::maps(const std::string& key) const {
   return out;
 }
 
-YAML::Node Reader::node(const std::string& key) const { return get(key); }
+YAML::Node Reader::node(const std::string& key) const {
+  const Note note(*this, key, "node");
+  return get(key);
+}
 
 int Reader::line(const std::string& key) const {
   const Entry* e = find(key);
