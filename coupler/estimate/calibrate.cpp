@@ -101,6 +101,34 @@ participants:
                                                                            fmt::arg("weight", 5.2e9 / (cells * per_cell)))};
 }
 
+// Argon at rest in a periodic box among a lattice of k^3 diffuse balls, without collisions:
+// the tracker's cost per particle-step apart from collisions, and per obstacle primitive a
+// flight is tested against (the more balls, the more primitives in each cell).
+Level tracker_obstacles(int k, int per_cell, double end) {
+  const double side = 1.0e-3, spacing = side / k;
+  return {fmt::format("tracker-balls-{}-{}", k * k * k, per_cell), fmt::format(R"(time: {{end: {end}}}
+coupling: {{window: 2.0e-5, scheme: serial-explicit}}
+output: {{file: run.h5, checkpoint_every: 1000, fields_every: 0}}
+domain: {{min: [0, 0, 0], max: [{side}, {side}, {side}]}}
+effects: [rarefied_gas]
+participants:
+  tracker:
+    dt: 1.0e-7
+    options:
+      mesh: {{type: box, cells: [16, 16, 16], periodic: [true, true, true]}}
+      obstacles:
+        - name: balls
+          shape: {{lattice: {{shape: {{ball: {{centre: [{first}, {first}, {first}], radius: {radius}}}}},
+                             spacing: [{spacing}, {spacing}, {spacing}], count: [{k}, {k}, {k}]}}}}
+          wall: {{kind: diffuse, temperature: 273}}
+      particles: {{per_cell: {per_cell}, temperature: 273, mass: 6.63e-26, weight: {weight}, seed: 1}}
+)", fmt::arg("end", end), fmt::arg("side", side), fmt::arg("first", spacing / 2), fmt::arg("radius", 0.3 * spacing),
+                                                                 fmt::arg("spacing", spacing), fmt::arg("k", k),
+                                                                 fmt::arg("per_cell", per_cell),
+                                                                 // the Couette scene's density, 1.3e22 per m³
+                                                                 fmt::arg("weight", 1.3e13 / (4096 * per_cell)))};
+}
+
 std::string rounded(double end) { return fmt::format("{:.6g}", end); }
 
 }  // namespace
@@ -116,6 +144,7 @@ int calibrate(const fs::path& cosim_executable, double scale) {
       tracker(50, 50, 1, windows(2e-5, 20)), tracker(50, 200, 1, windows(2e-5, 10)), tracker(400, 50, 1, windows(2e-5, 10)),
       // Enough particles, and enough cells, for their memory to show above the program's own.
       tracker(400, 500, 1, windows(2e-5, 2)), tracker(50, 5, 20, windows(2e-5, 1)),
+      tracker_obstacles(2, 20, windows(2e-5, 1)), tracker_obstacles(8, 5, windows(2e-5, 1)),
   };
   CostStore::update(CostStore::default_path(), [](CostStore& store) { store.drop_calibration(); });
   const fs::path dir = fs::temp_directory_path() / fmt::format("cosim-calibrate-{}", getpid());

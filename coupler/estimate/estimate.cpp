@@ -18,7 +18,14 @@ Coefficients prior(const std::string& program) {
   if (program == "fluid") return {2.3e-4, {{"cells", 7.6e-7}, {"markers", 1.1e-5}}, 55e6, {{"cells", 670}, {"markers", 6.6e3}}};
   if (program == "rigidbody") return {1.5e-6, {{"bodies", 6e-7}}, 18e6, {{"bodies", 1.15e5}}};
   if (program == "tracker")
-    return {0, {{"particles", 0}, {"crossings", 1.1e-7}, {"cells", 2.1e-7}}, 65e6, {{"particles", 245}, {"cells", 1.3e3}}};
+    return {0,
+            {{"particles", 0},
+             {"crossings", 1.1e-7},
+             {"cells", 2.1e-7},
+             {"primitive_tests", 2e-7},
+             {"colliding_particles", 1e-7}},
+            65e6,
+            {{"particles", 245}, {"cells", 1.3e3}}};
   if (program == kCoupler)
     return {0,
             {{"exchanges", 0}, {"body_rows", 1.2e-4}, {"field_bytes", 3.5e-8}, {"start:fluid", 1.2},

@@ -1,5 +1,7 @@
 #include "tracker/program/scene_collisions.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cmath>
 
@@ -24,8 +26,8 @@ std::optional<Collisions> read_collisions(const scene::Reader& options, double m
   const bool nearest = r.choice("selection", kSelections, 0) == 1;
   r.finish();
   if (std::abs(mass - species.mass) > 1e-6 * species.mass)
-    r.fail("species", "the particles' mass " + std::to_string(mass) + " kg is not " + name + "'s " +
-                          std::to_string(species.mass) + " kg (particles.mass)");
+    r.fail("species", fmt::format("the particles' mass {:g} kg is not {}'s {:g} kg (particles.mass)", mass, name,
+                                  species.mass));
   return Collisions{dsmc::CollisionModel::from_species(species, model), nearest};
 }
 

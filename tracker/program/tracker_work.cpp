@@ -30,6 +30,24 @@ std::uint64_t crossings(const TrackerScene& setup, std::uint64_t particles) {
   return static_cast<std::uint64_t>(std::llround(static_cast<double>(particles) * per_particle));
 }
 
+// About how many obstacle primitives a step's flights are tested against: each particle
+// computes its next event against every primitive registered in each cell it is in, its own
+// at the start and one more cell per crossing; the cells weighted by their volume, where the
+// particles are. Obstacles bound to bodies count where they start.
+std::uint64_t primitive_tests(const TrackerScene& setup, std::uint64_t particles, std::uint64_t crossed) {
+  const Obstacles& obstacles = setup.obstacles;
+  if (obstacles.empty()) return 0;
+  const Mesh& mesh = *setup.mesh;
+  double weighted = 0, volume = 0;
+  for (Index c = 0; c < mesh.cell_count(); ++c) {
+    std::size_t n = 0;
+    for (int o = 0; o < obstacles.count(); ++o) n += obstacles.cells(o).primitives(obstacles.bounding_cell(c)).size();
+    weighted += static_cast<double>(n) * mesh.volume[static_cast<std::size_t>(c)];
+    volume += mesh.volume[static_cast<std::size_t>(c)];
+  }
+  return static_cast<std::uint64_t>(std::llround(weighted / volume * static_cast<double>(particles + crossed)));
+}
+
 }  // namespace
 
 participant::WorkReport tracker_work(const scene::Scene& scene, const TrackerScene& setup) {
@@ -46,8 +64,14 @@ participant::WorkReport tracker_work(const scene::Scene& scene, const TrackerSce
   }
   const bool grows =
       std::any_of(setup.inflows.begin(), setup.inflows.end(), [](const Inflow& i) { return i.rate() > 0; });
+  const std::uint64_t crossed = crossings(setup, particles);
   return {.program = "tracker",
-          .per_step = {{"particles", particles}, {"crossings", crossings(setup, particles)}, {"cells", cells}},
+          .per_step = {{"particles", particles},
+                       {"crossings", crossed},
+                       {"cells", cells},
+                       {"primitive_tests", primitive_tests(setup, particles, crossed)},
+                       // DSMC collisions cost per particle on top of its flight.
+                       {"colliding_particles", setup.collisions ? particles : 0}},
           .held = {{"particles", particles}, {"cells", cells}},
           .frame_bytes = static_cast<std::uint64_t>(std::llround(bytes)),
           // Simulation::state: position, velocity and cell per particle and one value per

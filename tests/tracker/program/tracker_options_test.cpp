@@ -178,6 +178,8 @@ TEST(TrackerOptions, ParticleMistakesNameTheKey) {
   EXPECT_ERROR(walls + kParticles + "      balance: {every: -1}\n", "balance.every = -1");
   EXPECT_ERROR(walls + kParticles + "      balance: {threshold: 0.9}\n", "balance.threshold = 0.9");
   EXPECT_ERROR(walls + kParticles + "      balance: {often: 3}\n", "balance.often = 3: unknown key");
+  EXPECT_ERROR(walls + "      particles: {total: 9, temperature: 1, mass: 1.0e-25}\n      collisions: {species: Ar, model: vss}\n",
+               "collisions.species = Ar: the particles' mass 1e-25 kg is not Ar's 6.63");
 }
 
 TEST(TrackerOptions, ParticleOutputDefaultsToEveryFieldWriteOfAllParticles) {

@@ -64,7 +64,11 @@ TEST(TrackerWork, ABoxWithoutObstaclesSeedsEveryCell) {
   EXPECT_EQ(w.program, "tracker");
   // 600 particles at the mean thermal speed sqrt(8 k T / (pi m)) = sqrt(8 / pi) fly 0.01 of
   // it per step through cells 120^(-1/3) wide: 47 faces crossed.
-  EXPECT_EQ(w.per_step, (participant::WorkUnits{{"particles", 600}, {"crossings", 47}, {"cells", 120}}));
+  EXPECT_EQ(w.per_step, (participant::WorkUnits{{"particles", 600},
+                                                {"crossings", 47},
+                                                {"cells", 120},
+                                                {"primitive_tests", 0},
+                                                {"colliding_particles", 0}}));
   EXPECT_EQ(w.held, (participant::WorkUnits{{"particles", 600}, {"cells", 120}}));
   EXPECT_EQ(gas_seeded(text), 600u);
   // count, mean_count, density, velocity (3), temperature, pressure per cell.
@@ -83,6 +87,34 @@ TEST(TrackerWork, CrossingsGrowWithTheFlightOverTheCellWidth) {
   const double finer = unit(work_of(box_text("      mesh: {type: box, cells: [12, 10, 8]}\n", "{per_cell: 5")).per_step,
                             "crossings");
   EXPECT_NEAR(finer / still, 8 * 2, 0.5);  // eight times the particles, each crossing twice as many faces
+}
+
+// Each flight is tested against the primitives registered in the cells it passes: one ball
+// is one primitive in the cells near its surface (and none elsewhere), a lattice of eight
+// smaller balls more primitives in more cells.
+TEST(TrackerWork, PrimitiveTestsFollowTheObstaclesPrimitivesPerCell) {
+  const auto per_flight = [](const std::string& obstacles) {
+    const participant::WorkReport w = work_of(box_text(kHexahedra + obstacles));
+    return static_cast<double>(unit(w.per_step, "primitive_tests")) /
+           static_cast<double>(unit(w.per_step, "particles") + unit(w.per_step, "crossings"));
+  };
+  const double ball = per_flight(kBall);
+  EXPECT_GT(ball, 0.1);
+  EXPECT_LE(ball, 1.0);
+  const double lattice = per_flight(
+      "      obstacles:\n        - {name: balls, shape: {lattice: {shape: {ball: {centre: [0.25, 0.25, 0.25], "
+      "radius: 0.15}}, spacing: [0.5, 0.5, 0.5], count: [2, 2, 2]}}}\n");
+  EXPECT_GT(lattice, ball);
+  EXPECT_LE(lattice, 8.0);
+}
+
+// DSMC collisions cost per particle beside its flight.
+TEST(TrackerWork, CollisionsMakeEveryParticleACollidingOne) {
+  std::string text = box_text(kHexahedra + "      collisions: {species: Ar, model: vss}\n", "{per_cell: 5, weight: 1.0e10");
+  text.replace(text.find("1.380649e-23"), 12, "6.63e-26");  // argon's mass
+  const participant::WorkReport w = work_of(text);
+  EXPECT_EQ(unit(w.per_step, "colliding_particles"), unit(w.per_step, "particles"));
+  EXPECT_GT(unit(w.per_step, "particles"), 0u);
 }
 
 // Draws inside a wall are dropped: the count is the seeding's own, in the cells the ball
