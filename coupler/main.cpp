@@ -6,6 +6,8 @@
 //                                   run it at the cheapest resolution whose error in NAME meets
 //                                   TOL (docs/study.md)
 //   cosim calibrate                 measure this host's costs for the estimates (docs/cost.md)
+//   cosim repair f.h5               finish a write a kill cut off, for readers without cosim's
+//                                   journal (h5py, ParaView)
 //   cosim study scene.yaml --vary KEY=V1,V2,V3 --measure NAME=EXPR
 //                                   run the scene at several resolutions: each quantity's value,
 //                                   observed order, extrapolate and GCI against the runs' cost
@@ -21,6 +23,7 @@
 #include "coupler/estimate/estimate.hpp"
 #include "coupler/estimate/program_work.hpp"
 #include "coupler/launcher/command.hpp"
+#include "coupler/output/run_file.hpp"
 #include "coupler/run/coupler.hpp"
 #include "coupler/scene/error.hpp"
 #include "coupler/scene/plan.hpp"
@@ -59,6 +62,14 @@ int check(const std::string& file) {
   for (const auto& s : plan.skipped) std::cout << "  not started: " << s << "\n";
   for (const auto& m : measures) std::cout << "  study measure " << m.name << ": " << m.text << "\n";
   std::cout << cosim::estimate::estimate_here(scene, plan.start, sections.work, COSIM_GIT_HASH) << "\n";
+  return 0;
+}
+
+int repair(const std::string& file) {
+  if (cosim::output::RunFile::finish_commit(file))
+    std::cout << file << ": finished the write a kill cut off and removed its journal\n";
+  else
+    std::cout << file << ": no write was cut off; nothing to finish\n";
   return 0;
 }
 
@@ -127,6 +138,11 @@ int main(int argc, char** argv) {
   calibrate_cmd->add_option("--scale", calibrate_scale, "Make each calibration run this many times longer")
       ->check(CLI::Range(0.1, 100.0));
 
+  std::string repair_file;
+  auto* repair_cmd = app.add_subcommand(
+      "repair", "Finish a write a kill cut off (<file>.journal), so that h5py and ParaView read the run file whole");
+  repair_cmd->add_option("run_file", repair_file, "Run file (HDF5)")->required();
+
   cosim::study::Request study_request;
   auto* study_cmd = app.add_subcommand("study", "Run a scene at several resolutions: what accuracy costs in time");
   study_cmd->add_option("scene", study_request.scene, "Scene file (YAML)")->required();
@@ -169,6 +185,7 @@ int main(int argc, char** argv) {
 
   return cosim::scene::exit_code("cosim", [&] {
     if (*check_cmd) return check(check_file);
+    if (*repair_cmd) return repair(repair_file);
     if (*calibrate_cmd) return cosim::estimate::calibrate(cosim::launcher::own_directory() / "cosim", calibrate_scale);
     if (*study_cmd) {
       study_request.command = command_line(argc, argv);

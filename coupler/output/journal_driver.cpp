@@ -418,4 +418,13 @@ std::filesystem::path journal_of(const std::filesystem::path& file) {
   return journal;
 }
 
+bool commit_pending(const std::filesystem::path& file) {
+  const int fd = open(journal_of(file).c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  char magic[sizeof kMagic] = {};
+  const bool pending = read_all(fd, magic, sizeof magic, 0) && std::equal(kMagic, kMagic + sizeof kMagic, magic);
+  close(fd);
+  return pending;
+}
+
 }  // namespace cosim::output

@@ -30,5 +30,8 @@ namespace cosim::output {
 Handle journaled_access();
 // Where the driver keeps the journal of `file`.
 std::filesystem::path journal_of(const std::filesystem::path& file);
+// Whether `file`'s journal holds a commit under way or cut off by a kill (its header's magic
+// set): what the next open of `file` with this driver finishes.
+bool commit_pending(const std::filesystem::path& file);
 
 }  // namespace cosim::output

@@ -142,6 +142,13 @@ RunSummary RunFile::peek(const std::filesystem::path& path) {
   });
 }
 
+bool RunFile::finish_commit(const std::filesystem::path& path) {
+  const bool pending = commit_pending(path);
+  // Opening for writing finishes the commit in the file; closing removes the journal.
+  in_file(path, [&] { open_run_file(path, H5F_ACC_RDWR); });
+  return pending;
+}
+
 RunFile RunFile::resume(const std::filesystem::path& path, const std::string& git_hash) {
   return in_file(path, [&] {
     auto impl = std::make_unique<Impl>();

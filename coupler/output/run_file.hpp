@@ -142,6 +142,11 @@ class RunFile {
   // "running" and appends git_hash (the resuming build's) to resumed_by. Field steps after
   // the checkpoint's window are unlinked too and the sidecar rewritten without them.
   static RunFile resume(const std::filesystem::path& path, const std::string& git_hash);
+  // Finishes in the file a commit a kill cut off (what <file>.journal holds,
+  // journal_driver.hpp) and removes the journal, so that readers without the journal driver
+  // (h5py, ParaView) see the file whole; changes nothing else. Returns whether there was
+  // such a commit. Throws as peek() does.
+  static bool finish_commit(const std::filesystem::path& path);
 
   RunFile(RunFile&&) noexcept;
   RunFile& operator=(RunFile&&) noexcept;
