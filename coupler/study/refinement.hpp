@@ -15,7 +15,8 @@ struct Ratios {
 
 // Values that shrink from level to level are steps or windows: r = coarse / fine. Values that
 // grow are counts, such as cells: r = fine / coarse. A list (cells per axis) counts by the
-// geometric mean of its entries, Celik et al.'s h = (1 / N)^(1/d) for N cells in d dimensions.
+// geometric mean of the entries that change between levels, Celik et al.'s h = (1 / N)^(1/d)
+// for N cells in the d dimensions refined.
 Ratios refinement_ratios(const Varied& key);
 
 }  // namespace cosim::study

@@ -1,11 +1,13 @@
-// `cosim study` end to end: the partitioned oscillator over three levels of window and
-// steps, against its exact answer, and the refusals of bad arguments.
+// `cosim study` end to end against exact answers: the partitioned oscillator over three
+// levels of window and steps, a rigid body's free fall over its step, a channel flow
+// starting from rest over the fluid's step and grid; and the refusals of bad arguments.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <numbers>
 #include <sstream>
 
 #include "tests/integration/cosim_process.hpp"
@@ -16,14 +18,21 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// results.csv as rows of column name -> text (the measured expressions hold no commas).
+// results.csv as rows of column name -> text; a field in double quotes (a list of cells, an
+// expression) may hold commas.
 std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::path& file) {
   std::istringstream in(read_file(file));
   const auto split = [](const std::string& line) {
-    std::vector<std::string> fields;
-    std::istringstream s(line);
-    for (std::string f; std::getline(s, f, ',');) fields.push_back(f);
-    if (!line.empty() && line.back() == ',') fields.emplace_back();
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (const char c : line) {
+      if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted)
+        fields.emplace_back();
+      else
+        fields.back() += c;
+    }
     return fields;
   };
   std::string line;
@@ -72,6 +81,109 @@ TEST(Study, OscillatorShowsTheSchemesOrderAndTheExtrapolateBeatsTheFinestLevel) 
   EXPECT_THAT(report, HasSubstr("| level | coupling.window | participants.mass.dt | participants.spring.dt | value |"));
   EXPECT_THAT(report, HasSubstr("Set on every level: time.end = 1.0."));
   for (const char* f : {"level_1.yaml", "level_3.h5", "level_2.log"}) EXPECT_TRUE(std::filesystem::exists(dir / "study" / f)) << f;
+}
+
+// The finest level's row of a study of `scene`, after checking it ran.
+std::map<std::string, std::string> finest_row(const std::filesystem::path& dir, const std::string& scene,
+                                              const std::vector<std::string>& arguments) {
+  write_file(dir / "scene.yaml", scene);
+  std::vector<std::string> args{"study", (dir / "scene.yaml").string(), "--out", (dir / "study").string()};
+  args.insert(args.end(), arguments.begin(), arguments.end());
+  const auto r = run_cosim(args);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  std::cout << r.output;
+  const auto rows = read_csv(dir / "study" / "results.csv");
+  return rows.empty() ? std::map<std::string, std::string>{} : rows.back();
+}
+
+// cosim-rigidbody's symplectic Euler drops a free body by g dt^2 n (n + 1) / 2 after n steps:
+// its error, g t dt / 2, is exactly first order in dt, so the extrapolate is exact.
+TEST(Study, FreeFallShowsTheRigidIntegratorsFirstOrder) {
+  const auto finest = finest_row(scratch_dir("study_free_fall"), R"(time: {end: 0.4}
+coupling: {window: 0.04, scheme: serial-explicit}
+output: {file: run.h5}
+gravity: [0, 0, -9.81]
+domain: {min: [-1, -1, -2], max: [1, 1, 1]}
+effects: [gravity]
+bodies:
+  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 1000}, position: [0, 0, 0]}
+participants:
+  rigidbody: {dt: 0.01}
+)",
+                                 {"--vary", "participants.rigidbody.dt=0.01,0.005,0.0025", "--measure",
+                                  "z=final(body:ball:position.z)", "--order", "1"});
+  ASSERT_FALSE(finest.empty());
+  const double exact = -0.5 * 9.81 * 0.4 * 0.4;
+  EXPECT_NEAR(std::stod(finest.at("p")), 1.0, 1e-6);
+  EXPECT_NEAR(std::stod(finest.at("extrapolate")), exact, 1e-9);
+  EXPECT_NEAR(std::stod(finest.at("value")) - exact, -0.5 * 9.81 * 0.4 * 0.0025, 1e-9);
+}
+
+// Flow between two walls a height H apart, driven from rest by a body force f: its mean
+// velocity is f H^2 / (12 nu) - sum over odd n of 8 f H^2 / (nu pi^4 n^4) exp(-n^2 pi^2 nu t / H^2).
+double channel_mean_velocity(double t) {
+  double u = 1.0 / 12;  // f = H = nu = 1
+  const double pi2 = std::numbers::pi * std::numbers::pi;
+  for (int n = 1; n < 200; n += 2) u -= 8 / (pi2 * pi2 * std::pow(n, 4)) * std::exp(-n * n * pi2 * t);
+  return u;
+}
+
+const char* kChannel = R"(time: {end: 0.05}
+coupling: {window: 0.0025, scheme: serial-explicit}
+output: {file: run.h5, fields_every: 1}
+domain: {min: [0, 0, 0], max: [0.5, 1, 0.5]}
+effects: [hydrodynamics]
+participants:
+  fluid:
+    dt: 0.0025
+    options:
+      density: 1.0
+      viscosity: {model: newtonian, mu: 1.0}
+      body_force: [1.0, 0, 0]
+      grid: {cells: [4, 128, 4]}
+      dt_initial: 0.0025
+      boundaries:
+        x_min: {type: periodic}
+        x_max: {type: periodic}
+        z_min: {type: periodic}
+        z_max: {type: periodic}
+)";
+
+// Crank-Nicolson is second order in the step: at a fine grid the mean velocity at 0.05 s
+// (half the slowest mode's decay time) shows it, and the extrapolate beats the finest level.
+TEST(Study, ChannelStartUpShowsCrankNicolsonsOrderInTime) {
+  const std::string steps = "=0.0025,0.00125,0.000625";
+  const auto finest = finest_row(scratch_dir("study_channel_time"), kChannel,
+                                 {"--vary", "coupling.window" + steps, "--vary", "participants.fluid.dt" + steps, "--vary",
+                                  "participants.fluid.options.dt_initial" + steps, "--measure",
+                                  "U=final(field:fluid:velocity.x)", "--order", "2"});
+  ASSERT_FALSE(finest.empty());
+  const double exact = channel_mean_velocity(0.05);
+  const double finest_error = std::abs(std::stod(finest.at("value")) - exact);
+  const double extrapolate_error = std::abs(std::stod(finest.at("extrapolate")) - exact);
+  std::cout << "order " << finest.at("p") << "; error of the finest level " << finest_error << ", of the extrapolate "
+            << extrapolate_error << "\n";
+  EXPECT_NEAR(std::stod(finest.at("p")), 2.0, 0.3);
+  EXPECT_LT(extrapolate_error, finest_error / 2);
+}
+
+// Over the grid across the channel (8, 16, 32 cells) at a small step the mean velocity
+// converges at least at the second order of the discretisation (2.9 here), and the
+// extrapolate beats the finest level.
+TEST(Study, ChannelStartUpConvergesWithTheGrid) {
+  const auto finest = finest_row(scratch_dir("study_channel_grid"), kChannel,
+                                 {"--vary", "participants.fluid.options.grid.cells=[4,8,4],[4,16,4],[4,32,4]", "--set",
+                                  "coupling.window=0.0005", "--set", "participants.fluid.dt=0.0005", "--set",
+                                  "participants.fluid.options.dt_initial=0.0005", "--measure",
+                                  "U=final(field:fluid:velocity.x)", "--order", "2"});
+  ASSERT_FALSE(finest.empty());
+  const double exact = channel_mean_velocity(0.05);
+  const double finest_error = std::abs(std::stod(finest.at("value")) - exact);
+  const double extrapolate_error = std::abs(std::stod(finest.at("extrapolate")) - exact);
+  std::cout << "order " << finest.at("p") << "; error of the finest level " << finest_error << ", of the extrapolate "
+            << extrapolate_error << "\n";
+  EXPECT_GT(std::stod(finest.at("p")), 1.7);
+  EXPECT_LT(extrapolate_error, finest_error / 10);
 }
 
 // Nothing runs: each mistake is found first, named with its argument, exit status 2.

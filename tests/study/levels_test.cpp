@@ -154,8 +154,19 @@ TEST(Ratios, StepsShrinkAndCountsGrow) {
   ASSERT_EQ(cells.r.size(), 2u);
   EXPECT_DOUBLE_EQ(cells.r[0], 2);
   EXPECT_DOUBLE_EQ(cells.r[1], std::cbrt(16.0));  // (2 x 2 x 4)^(1/3)
+  // Axes no level refines (a two-dimensional grid's single layer, a channel's periodic
+  // directions) do not count: the ratio is that of the axes refined.
+  const Ratios plane = refinement_ratios(parse_vary("c=[110,21,1],[220,42,1],[440,84,1]"));
+  ASSERT_EQ(plane.r.size(), 2u);
+  EXPECT_NEAR(plane.r[0], 2, 1e-12);
+  EXPECT_NEAR(plane.r[1], 2, 1e-12);
+  const Ratios channel = refinement_ratios(parse_vary("c=[4,8,4],[4,16,4],[4,40,4]"));
+  ASSERT_EQ(channel.r.size(), 2u);
+  EXPECT_NEAR(channel.r[0], 2, 1e-12);
+  EXPECT_NEAR(channel.r[1], 2.5, 1e-12);
   EXPECT_EQ(refinement_ratios(parse_vary("s=iqn-ils,aitken")).why_none,
-            "the values of s are not positive numbers (or lists of them)");
+            "the values of s are not positive numbers (or lists of them of one length)");
+  EXPECT_FALSE(refinement_ratios(parse_vary("c=[4,8],[4,8,16]")).why_none.empty());
   EXPECT_EQ(refinement_ratios(parse_vary("w=0.01,0.005,0.01")).why_none,
             "the values of w neither all grow nor all shrink from level to level");
 }
