@@ -63,13 +63,14 @@ void print_scaling(const std::vector<RunResult>& runs) {
   }
 }
 
-// Each cosim run against a peer's run of the same N (Bullet: at least twice its rate at no
-// larger overlap; LIGGGHTS: at least twice its rate at the same packing within 2 %).
+// Each cosim run against a peer's run of the same N and step (Bullet: at least twice its
+// rate at no larger overlap; LIGGGHTS: at least twice its rate at the same packing within
+// 2 %). Body-steps of different steps do not compare.
 void print_ratios(const std::vector<RunResult>& runs, const std::string& peer) {
   for (const RunResult& other : runs) {
     if (other.engine != peer) continue;
     for (const RunResult& r : runs)
-      if (r.engine != "bullet" && r.engine != "liggghts" && r.bodies == other.bodies)
+      if (r.engine != "bullet" && r.engine != "liggghts" && r.bodies == other.bodies && r.dt == other.dt)
         std::printf("%s / %s at N = %zu: body-steps/s %.2fx, max overlap %.2fx, packing %+.2f %%, memory %.3fx\n",
                     r.engine.c_str(), peer.c_str(), r.bodies, rate(r) / rate(other),
                     r.max_penetration / other.max_penetration,
