@@ -73,7 +73,7 @@ std::optional<RunResult> run_liggghts(const PourScene& scene, const LiggghtsRun&
   const Deck full = run_deck(*liggghts, directory, "pour.in",
                              liggghts_deck(scene, r.steps, r.kinetic_every, "spheres.data", "final.dump"));
   const LiggghtsLog log = read_log(full);
-  read_log(setup);
+  read_log(setup);  // throws unless the set-up run reached its (empty) loop
   if (log.atoms != r.bodies || log.steps != r.steps)
     throw std::runtime_error("liggghts ran " + std::to_string(log.atoms) + " atoms for " + std::to_string(log.steps) +
                              " steps, see " + full.output.string());
