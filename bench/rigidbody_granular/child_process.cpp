@@ -57,7 +57,9 @@ ChildUsage run_child(const std::filesystem::path& program, const std::vector<std
   rusage usage{};
   while (::wait4(pid, &status, 0, &usage) < 0)
     if (errno != EINTR) throw std::system_error(errno, std::generic_category(), "wait4");
-  const auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  const auto seconds = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+  };
   return {.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1,
           .wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
           .cpu_seconds = seconds(usage.ru_utime) + seconds(usage.ru_stime),

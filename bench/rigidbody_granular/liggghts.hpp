@@ -27,8 +27,8 @@ std::string liggghts_deck(const PourScene& scene, int steps, int thermo_every, c
                           const std::string& dump_file);
 
 struct LiggghtsLog {
-  std::string version;         // the banner's first line
-  double loop_seconds = 0;     // "Loop time of X on 1 procs for N steps with M atoms"
+  std::string version;      // the banner's first line
+  double loop_seconds = 0;  // "Loop time of X on 1 procs for N steps with M atoms"
   int steps = 0;
   std::size_t atoms = 0;
   std::vector<double> kinetic_energy;  // translational + rotational, one per thermo line [J]

@@ -23,7 +23,7 @@ std::optional<LiggghtsLog> read_liggghts_log(std::istream& log) {
       result.atoms = std::stoul(m[3]);
       thermo = false;
       found = true;
-    } else if (std::istringstream header(line); (header >> std::ws).peek() == 'S' && line.find("Step") != std::string::npos) {
+    } else if (std::string first; std::istringstream(line) >> first && first == "Step") {
       thermo = true;  // the thermo header: Step Atoms and the energies' names, cut to 8 characters
     } else if (thermo) {
       // step atoms translational rotational; anything else (a warning) is skipped
@@ -32,7 +32,8 @@ std::optional<LiggghtsLog> read_liggghts_log(std::istream& log) {
       std::size_t atoms = 0;
       double translational = 0;
       double rotational = 0;
-      if (row >> step >> atoms >> translational >> rotational) result.kinetic_energy.push_back(translational + rotational);
+      if (row >> step >> atoms >> translational >> rotational)
+        result.kinetic_energy.push_back(translational + rotational);
     }
   }
   if (!found) return std::nullopt;

@@ -47,8 +47,8 @@ void print(const RunResult& r, double radius) {
               r.engine.c_str(), r.bodies, r.steps, r.dt, r.wall_seconds, r.cpu_seconds, rate(r),
               r.pairs_tested / r.cpu_seconds, r.heap_bytes / static_cast<double>(r.bodies),
               r.peak_rss_bytes / static_cast<double>(r.bodies), r.packing_fraction, r.pile_height / radius,
-              r.max_penetration / radius, r.kinetic_energy.empty() ? std::nan("") : r.kinetic_energy.back() / kinetic_peak(r),
-              settling_time(r));
+              r.max_penetration / radius,
+              r.kinetic_energy.empty() ? std::nan("") : r.kinetic_energy.back() / kinetic_peak(r), settling_time(r));
   std::fflush(stdout);
 }
 
@@ -122,7 +122,9 @@ int main(int argc, char** argv) {
   app.add_option("--liggghts-exe", liggghts_run.executable, "LIGGGHTS's executable")->capture_default_str();
   app.add_option("--liggghts-dir", liggghts_run.directory, "keep LIGGGHTS's decks and output here (default: removed)");
   // The DEM engines' material and step (pour.hpp says why these).
-  app.add_option("--dem-dt", defaults.dem_dt, "DEM and LIGGGHTS step [s]")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--dem-dt", defaults.dem_dt, "DEM and LIGGGHTS step [s]")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--young", defaults.hertz.young, "DEM and LIGGGHTS Young's modulus [Pa]")->capture_default_str();
   app.add_option("--poisson", defaults.hertz.poisson, "DEM and LIGGGHTS Poisson's ratio")->capture_default_str();
   app.add_option("--restitution", defaults.hertz.restitution, "DEM and LIGGGHTS coefficient of restitution")

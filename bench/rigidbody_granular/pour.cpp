@@ -31,7 +31,8 @@ double sphere_mass(const PourScene& scene) {
   return scene.density * 4.0 / 3.0 * std::numbers::pi * scene.radius * scene.radius * scene.radius;
 }
 
-double kinetic_energy(const PourScene& scene, const Eigen::Vector3d& velocity, const Eigen::Vector3d& angular_velocity) {
+double kinetic_energy(const PourScene& scene, const Eigen::Vector3d& velocity,
+                      const Eigen::Vector3d& angular_velocity) {
   const double m = sphere_mass(scene);
   return 0.5 * m * velocity.squaredNorm() + 0.2 * m * scene.radius * scene.radius * angular_velocity.squaredNorm();
 }
