@@ -50,7 +50,8 @@ btVector3 bt(const Eigen::Vector3d& v) {
 }  // namespace
 
 RunResult run_bullet(const PourScene& scene) {
-  RunResult r{.engine = "bullet", .bodies = scene.positions.size(), .steps = scene.steps};
+  RunResult r{.engine = "bullet", .bodies = scene.positions.size(), .steps = scene.steps, .dt = scene.dt};
+  r.kinetic_every = kinetic_interval(r.steps);
   // Bullet's tolerances are absolute and tuned for bodies of about a metre (its broad
   // phase fattens every box by 5 cm, which at r = 1 cm pairs each sphere with hundreds of
   // others), so it runs the scene in units where r = 1 m: lengths times k, g times k,
@@ -78,11 +79,23 @@ RunResult run_bullet(const PourScene& scene) {
     spheres.push_back(b);
   }
 
+  const auto sample_energy = [&] {
+    double e = 0;
+    for (const btRigidBody* b : spheres) {
+      const btVector3 v = b->getLinearVelocity() / static_cast<btScalar>(k);
+      const btVector3& omega = b->getAngularVelocity();
+      e += kinetic_energy(scene, {v.x(), v.y(), v.z()}, {omega.x(), omega.y(), omega.z()});
+    }
+    r.kinetic_energy.push_back(e);
+  };
+
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = cpu_time();
-  for (int step = 0; step < scene.steps; ++step) {
+  sample_energy();
+  for (int step = 1; step <= scene.steps; ++step) {
     w->world.stepSimulation(static_cast<btScalar>(scene.dt), 0);
     r.pairs_tested += w->dispatcher.getNumManifolds();
+    if (step % r.kinetic_every == 0) sample_energy();
   }
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.cpu_seconds = cpu_time() - cpu_start;
@@ -94,8 +107,7 @@ RunResult run_bullet(const PourScene& scene) {
     const btVector3& p = b->getWorldTransform().getOrigin();
     centres.push_back(Eigen::Vector3d(p.x(), p.y(), p.z()) / k);
   }
-  r.max_penetration = max_penetration(centres, scene.radius, scene.half_width);
-  for (const auto& c : centres) r.mean_height += c.z() / static_cast<double>(centres.size());
+  measure_pile(r, centres, scene.radius, scene.half_width);
   return r;
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <ctime>
+#include <numbers>
 
 #include "bench/rigidbody_granular/result.hpp"
 #include "rigidbody/broadphase/hash_grid.hpp"
@@ -25,6 +26,17 @@ double max_penetration(const std::vector<Eigen::Vector3d>& centres, double radiu
     deepest = std::max(deepest, radius - walls);
   }
   return deepest;
+}
+
+int kinetic_interval(int steps) { return std::max(1, steps / 100); }
+
+void measure_pile(RunResult& r, const std::vector<Eigen::Vector3d>& centres, double radius, double half_width) {
+  r.max_penetration = max_penetration(centres, radius, half_width);
+  r.mean_height = 0;
+  for (const auto& c : centres) r.mean_height += c.z() / static_cast<double>(centres.size());
+  r.pile_height = 2 * r.mean_height;
+  const double solid = static_cast<double>(centres.size()) * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  r.packing_fraction = solid / (4 * half_width * half_width * r.pile_height);
 }
 
 // Large blocks (vectors of 1e5 bodies) are mapped by mmap, which uordblks leaves out.

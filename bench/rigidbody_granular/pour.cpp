@@ -1,6 +1,7 @@
 #include "bench/rigidbody_granular/pour.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 namespace cosim::bench {
@@ -22,6 +23,18 @@ PourScene pour(std::size_t n) {
     s.velocities.emplace_back(jitter(random), jitter(random), 0.0);
   }
   return s;
+}
+
+int dem_steps(const PourScene& scene) { return static_cast<int>(std::lround(scene.steps * scene.dt / scene.dem_dt)); }
+
+double sphere_mass(const PourScene& scene) {
+  return scene.density * 4.0 / 3.0 * std::numbers::pi * scene.radius * scene.radius * scene.radius;
+}
+
+double kinetic_energy(const PourScene& scene, const Eigen::Vector3d& velocity,
+                      const Eigen::Vector3d& angular_velocity) {
+  const double m = sphere_mass(scene);
+  return 0.5 * m * velocity.squaredNorm() + 0.2 * m * scene.radius * scene.radius * angular_velocity.squaredNorm();
 }
 
 }  // namespace cosim::bench
