@@ -27,13 +27,13 @@ struct TimeStepOptions {
   //   matters where nu dt / h^2 nears one (ten Cate's E1: the settling sphere 3-4 % too
   //   fast on 40 and 41 cells, 6 % on 50 and 51). Nothing fixes the pressure's level at an
   //   outflow but the sum of the updates, and there it adds theta nu div u* of an
-  //   impulsive start (3e-6 of the pressure drop in tests/fluid/test_poiseuille.cpp);
+  //   impulsive start (3e-6 of the pressure drop in tests/fluid/poiseuille_test.cpp);
   // - exact: the implicit viscous step and the pressure solved together (no splitting
   //   error at all, NavierStokes::project_exactly), at a few viscous solves and pressure
   //   solves per step; on the staircase's imposed faces the standard update.
   // Not rotational by default: a face switching between fluid and solid puts its jump of
   // div u* into the pressure too, and the settling test's 50 ms windows then stalled once
-  // (tests/fluid/test_settling.cpp).
+  // (tests/fluid/settling_test.cpp).
   PressureUpdate pressure_update = PressureUpdate::standard;
 };
 

@@ -38,7 +38,7 @@ struct IndicatorOptions {
 // The offset that makes the staircase's drag right on average: Hasimoto's periodic Stokes
 // drag at a/h = 2.4 - 6.4 with the sphere at generic positions lands within -3.3 .. +2.3 %
 // of the reference with it, against -15 .. -18 % without (at a/h = 3.2); see
-// tests/fluid/test_fbm_hasimoto.cpp. A lattice-Boltzmann code calibrates its
+// tests/fluid/hasimoto_test.cpp. A lattice-Boltzmann code calibrates its
 // "hydrodynamic radius" the same way (Ladd 1994; ten Cate et al. 2002).
 inline constexpr double kCalibratedSurfaceOffset = 0.28;
 

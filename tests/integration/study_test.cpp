@@ -49,7 +49,7 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::
 }
 
 // Serial-implicit coupling with Verlet on both sides is second order in the window
-// (test_oscillator's ObservedOrder): windows of 20, 10 and 5 ms with ten steps each are in
+// (oscillator_test.cpp's ObservedOrder): windows of 20, 10 and 5 ms with ten steps each are in
 // its asymptotic range for the first mass's position at the end, x1(1 s).
 TEST(Study, OscillatorShowsTheSchemesOrderAndTheExtrapolateBeatsTheFinestLevel) {
   OscillatorScene s;
