@@ -244,13 +244,6 @@ bool commit_pending(int journal) {
   return pread(journal, magic, sizeof magic, 0) == sizeof magic && std::string(magic, 8) == "cosimjl1";
 }
 
-bool commit_pending_at(const std::filesystem::path& path) {
-  const int journal = open(journal_of(path).c_str(), O_RDONLY);
-  const bool pending = journal >= 0 && commit_pending(journal);
-  if (journal >= 0) close(journal);
-  return pending;
-}
-
 // Kills a writer of checkpoints into `path` after a commit's commit point but before its
 // end (the journal whole, the file half written); returns the last checkpoint the writer
 // reported, or nothing when 20 kills all missed a commit.
@@ -295,7 +288,7 @@ TEST_F(DurabilityTest, SigkillInsideACommitIsFinishedByTheNextOpen) {
   // it (`last + 1`): either way the checkpoint read is whole.
   const std::uint64_t seen = RunFile::peek(path).checkpoint_window;
   EXPECT_TRUE(seen == *last || seen == *last + 1) << seen << " after " << *last;
-  EXPECT_TRUE(commit_pending_at(path)) << "a read-only open changed the file";
+  EXPECT_TRUE(output::commit_pending(path)) << "a read-only open changed the file";
   {
     RunFile run = RunFile::resume(path, "d1e2f3");
     EXPECT_EQ(run.checkpoint().next_window, seen);

@@ -71,13 +71,20 @@ TEST(RigidScenes, NewtonsCradlePassesTheMomentumToTheLastBall) {
   }
 }
 
+// The shipped pyramids' sphere names s<layer>_<i>_<j>, layers first .. end - 1, each one
+// sphere shorter than the layer below along both axes (nx x ny at layer 0).
+std::vector<std::string> pyramid_names(int first, int end, int nx, int ny) {
+  std::vector<std::string> names;
+  for (int layer = first; layer < end; ++layer)
+    for (int i = 0; i < nx - layer; ++i)
+      for (int j = 0; j < ny - layer; ++j)
+        names.push_back("s" + std::to_string(layer) + "_" + std::to_string(i) + "_" + std::to_string(j));
+  return names;
+}
+
 // Guards against: a sphere of the shipped pyramid sinking through the floor in the program.
 TEST(RigidScenes, SpherePyramidStaysOnTheFloor) {
-  std::vector<std::string> spheres;
-  for (int layer = 0; layer < 5; ++layer)
-    for (int i = 0; i < 8 - layer; ++i)
-      for (int j = 0; j < 5 - layer; ++j)
-        spheres.push_back("s" + std::to_string(layer) + "_" + std::to_string(i) + "_" + std::to_string(j));
+  const auto spheres = pyramid_names(0, 5, 8, 5);
   ASSERT_EQ(spheres.size(), 100u);
   const auto runs = run_config("rigid_sphere_pyramid", "0.2", spheres);
   constexpr double r = 0.05;
@@ -95,11 +102,7 @@ TEST(RigidScenes, SpherePyramidStaysOnTheFloor) {
 // (g = 1e-3 r), and rests sqrt(4 r^2 - 2 (r + g)^2) ~ sqrt(2) (r - g) above it: it drops
 // (1 + sqrt(2)) g per layer.
 TEST(RigidScenes, SettledPyramidStandsOnItsFixedLayer) {
-  std::vector<std::string> spheres;
-  for (int layer = 1; layer < 7; ++layer)
-    for (int i = 0; i < 7 - layer; ++i)
-      for (int j = 0; j < 7 - layer; ++j)
-        spheres.push_back("s" + std::to_string(layer) + "_" + std::to_string(i) + "_" + std::to_string(j));
+  const auto spheres = pyramid_names(1, 7, 7, 7);
   ASSERT_EQ(spheres.size(), 91u);
   const auto runs = run_config("rigid_settled_pyramid", "0.2", spheres);
   constexpr double r = 0.05;
