@@ -1,5 +1,5 @@
 // Runs inside a real Slurm allocation (label slurm): a one-machine cluster of Debian's
-// slurm-wlm (slurm_cluster.hpp), the coupled oscillator submitted with sbatch as the README's
+// slurm-wlm (slurm_cluster.hpp), the coupled oscillator submitted with sbatch as docs/scenes.md's
 // script does, its spring started by srun as a step of the job, as a component of a
 // heterogeneous job, on the nodes of a hostfile; a job cancelled mid-run then resumed
 // bit-identically. Skipped, with the reason, where the daemons cannot run.
