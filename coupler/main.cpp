@@ -45,9 +45,8 @@ int check(const std::string& file) {
     std::cerr << "cosim: " << cosim::estimate::refused_message(scene, sections.refused) << "\n";
     return 2;
   }
-  std::cout << file << ": valid; " << scene.bodies.size() << " bodies, " << scene.windows()
-            << " windows of " << scene.coupling.window << " s ("
-            << cosim::scene::to_string(scene.coupling.scheme) << ")\n";
+  std::cout << file << ": valid; " << scene.bodies.size() << " bodies, " << scene.windows() << " windows of "
+            << scene.coupling.window << " s (" << cosim::scene::to_string(scene.coupling.scheme) << ")\n";
   for (const auto& g : scene.generators) {
     const std::string& first = scene.bodies[g.first].name;
     const std::string& last = scene.bodies[g.first + g.count - 1].name;
@@ -78,8 +77,9 @@ std::string command_line(int argc, char** argv) {
   std::string out = "cosim";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                         "0123456789_-+=.,/:") == std::string::npos;
+    const bool plain = !a.empty() && a.find_first_not_of(
+                                         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                         "0123456789_-+=.,/:") == std::string::npos;
     std::string quoted = "'";
     for (char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
     out += " " + (plain ? a : quoted + "'");
@@ -128,8 +128,10 @@ int main(int argc, char** argv) {
       ->add_option("--ratio", target_request.ratio,
                    "With --target: the refinement ratio between the cheap levels (default 1.5)")
       ->needs(target_opt);
-  run_cmd->add_option("--out", target_request.out, "With --target: folder for the levels and the report (default "
-                                                   "runs/target/<scene>)")
+  run_cmd
+      ->add_option("--out", target_request.out,
+                   "With --target: folder for the levels and the report (default "
+                   "runs/target/<scene>)")
       ->needs(target_opt);
 
   double calibrate_scale = 1;
@@ -174,7 +176,8 @@ int main(int argc, char** argv) {
   study_cmd->add_option("--order", study_request.order,
                         "P: the order the scheme should show, to judge the asymptotic range (default: the scene's "
                         "study.order)");
-  study_cmd->add_option("--out", study_request.out, "Folder for the levels and the report (default runs/study/<scene>)");
+  study_cmd->add_option("--out", study_request.out,
+                        "Folder for the levels and the report (default runs/study/<scene>)");
   study_cmd->add_option("--jobs", study_request.jobs,
                         "N: runs side by side (default 1); runs side by side share the cores, which distorts their "
                         "wall times");

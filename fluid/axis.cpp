@@ -7,9 +7,7 @@
 
 namespace cosim::fluid {
 
-Axis Axis::uniform(int cells, double lo, double hi, bool periodic) {
-  return stretched(cells, lo, hi, 0.0, periodic);
-}
+Axis Axis::uniform(int cells, double lo, double hi, bool periodic) { return stretched(cells, lo, hi, 0.0, periodic); }
 
 Axis Axis::stretched(int cells, double lo, double hi, double beta, bool periodic) {
   if (cells < 1) throw std::invalid_argument("axis: need at least one cell");
@@ -26,21 +24,19 @@ Axis Axis::stretched(int cells, double lo, double hi, double beta, bool periodic
 
 Axis Axis::from_faces(std::vector<double> faces, bool periodic) { return Axis(std::move(faces), periodic); }
 
-Axis::Axis(std::vector<double> faces, bool periodic)
-    : cells_(static_cast<int>(faces.size()) - 1), periodic_(periodic) {
+Axis::Axis(std::vector<double> faces, bool periodic) : cells_(static_cast<int>(faces.size()) - 1), periodic_(periodic) {
   if (cells_ < 1) throw std::invalid_argument("axis: need at least two face coordinates");
   for (int i = 0; i < cells_; ++i)
     if (!(faces[static_cast<std::size_t>(i) + 1] > faces[static_cast<std::size_t>(i)]))
-      throw std::invalid_argument("axis: face coordinates must increase strictly (at index " +
-                                  std::to_string(i + 1) + ")");
+      throw std::invalid_argument("axis: face coordinates must increase strictly (at index " + std::to_string(i + 1) +
+                                  ")");
   if (!periodic_ && cells_ < 2)
     throw std::invalid_argument("axis: a bounded axis needs at least two cells for its wall closure");
   const double length = faces.back() - faces.front();
   for (int i = 0; i < cells_; ++i)
     max_width_ = std::max(max_width_, faces[static_cast<std::size_t>(i) + 1] - faces[static_cast<std::size_t>(i)]);
   faces_.resize(faces.size() + 2 * kGhost);
-  for (int i = 0; i <= cells_; ++i)
-    faces_[static_cast<std::size_t>(i + kGhost)] = faces[static_cast<std::size_t>(i)];
+  for (int i = 0; i <= cells_; ++i) faces_[static_cast<std::size_t>(i + kGhost)] = faces[static_cast<std::size_t>(i)];
   for (int g = 1; g <= kGhost; ++g) {
     const auto at = [&](int i) -> double& { return faces_[static_cast<std::size_t>(i + kGhost)]; };
     // Periodic faces repeat with the period (this also covers a single-cell axis); bounded

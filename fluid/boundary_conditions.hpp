@@ -43,9 +43,7 @@ class BoundaryConditions {
   Point velocity(int axis, Side side, const Point& x, double t) const;
 
  private:
-  static std::size_t index(int axis, Side side) {
-    return static_cast<std::size_t>(2 * axis + static_cast<int>(side));
-  }
+  static std::size_t index(int axis, Side side) { return static_cast<std::size_t>(2 * axis + static_cast<int>(side)); }
   const Grid& grid_;
   std::array<Boundary, 6> faces_;
 };

@@ -11,7 +11,7 @@ namespace cosim::fluid {
 struct CellFace {
   int axis = 0;
   Side side = Side::lower;
-  Index face{};          // the velocity unknown of component `axis` on it
+  Index face{};           // the velocity unknown of component `axis` on it
   bool boundary = false;  // on a bounded domain face: no neighbour
   Index neighbour{};
   double area = 0;

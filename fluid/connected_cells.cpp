@@ -12,11 +12,11 @@ namespace {
 // Calls f(face) for the faces of cell m a correction can cross: open interior faces, and
 // outflow faces of the domain (seen as f.boundary).
 template <typename F>
-void for_each_open_face(const Grid& grid, const BoundaryConditions& bc, const ImposedFaces& imposed,
-                        const Index& m, F&& f) {
+void for_each_open_face(const Grid& grid, const BoundaryConditions& bc, const ImposedFaces& imposed, const Index& m,
+                        F&& f) {
   for_each_cell_face(grid, m, [&](const CellFace& cf) {
-    const bool open = cf.boundary ? bc.at(cf.axis, cf.side).kind == BoundaryKind::outflow
-                                  : !imposed.contains(cf.axis, cf.face);
+    const bool open =
+        cf.boundary ? bc.at(cf.axis, cf.side).kind == BoundaryKind::outflow : !imposed.contains(cf.axis, cf.face);
     if (open) f(cf);
   });
 }

@@ -29,8 +29,8 @@ Box control_volumes_meeting(const Grid& grid, int location, const geometry::Aabb
     range.lo[d] = partition_point(within.lo[d], within.hi[d],
                                   [&](PetscInt i) { return control_interval(axis, face_axis, i).hi <= box.min[d]; });
     range.hi[d] = std::max(range.lo[d], partition_point(range.lo[d], within.hi[d], [&](PetscInt i) {
-                                          return control_interval(axis, face_axis, i).lo < box.max[d];
-                                        }));
+                             return control_interval(axis, face_axis, i).lo < box.max[d];
+                           }));
   }
   return range;
 }

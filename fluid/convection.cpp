@@ -5,9 +5,7 @@ namespace cosim::fluid {
 namespace {
 
 // Linear interpolation weight of the upper of two cell centres at face i of an axis.
-double face_weight(const Axis& a, int i) {
-  return (a.face(i) - a.centre(i - 1)) / (a.centre(i) - a.centre(i - 1));
-}
+double face_weight(const Axis& a, int i) { return (a.face(i) - a.centre(i - 1)) / (a.centre(i) - a.centre(i - 1)); }
 
 }  // namespace
 

@@ -173,8 +173,9 @@ int NavierStokes::project_exactly(double dt, const std::array<Vec, 3>& u_star, b
   COSIM_PETSC(KSPSolve(o.ksp, o.b, o.phi));
   KSPConvergedReason reason;
   COSIM_PETSC(KSPGetConvergedReason(o.ksp, &reason));
-  if (reason < 0) throw std::runtime_error("fluid: the exact pressure solve did not converge (" +
-                                           std::string(KSPConvergedReasons[reason]) + ")");
+  if (reason < 0)
+    throw std::runtime_error("fluid: the exact pressure solve did not converge (" +
+                             std::string(KSPConvergedReasons[reason]) + ")");
   PetscInt iterations = 0;
   COSIM_PETSC(KSPGetIterationNumber(o.ksp, &iterations));
   viscous_gradient(dt, o.phi, o.faces);

@@ -112,8 +112,8 @@ FastPoisson::FastPoisson(const Grid& grid, const BoundaryConditions& bc) : grid_
           const fftw_r2r_kind forward[2] = {y.forward, x.forward}, backward[2] = {y.backward, x.backward};
           forward_ = fftw_plan_many_r2r(2, dims, planes, scratch.data(), nullptr, 1, plane, scratch.data(), nullptr, 1,
                                         plane, forward, flags);
-          backward_ = fftw_plan_many_r2r(2, dims, planes, scratch.data(), nullptr, 1, plane, scratch.data(), nullptr,
-                                         1, plane, backward, flags);
+          backward_ = fftw_plan_many_r2r(2, dims, planes, scratch.data(), nullptr, 1, plane, scratch.data(), nullptr, 1,
+                                         plane, backward, flags);
         }
         // Every rank learns whether any failed, so none waits in the scatters' set-up.
         int failed = planes > 0 && (!forward_ || !backward_) ? 1 : 0;

@@ -50,10 +50,10 @@ class FastPoisson {
   const Grid& grid_;
   PetscInt nx_ = 0, ny_ = 0, nz_ = 0;
   SlabTranspose slabs_;
-  std::vector<double> eigen_x_, eigen_y_;  // of the 1D Laplacians, <= 0
-  std::vector<double> eigen_x_pinned_;     // eigen_x_ with the zero replaced: the singular row's sweep
-  double scale_ = 1;                       // of a forward and backward transform together
-  std::vector<double> volume_;             // cell volume per z layer
+  std::vector<double> eigen_x_, eigen_y_;       // of the 1D Laplacians, <= 0
+  std::vector<double> eigen_x_pinned_;          // eigen_x_ with the zero replaced: the singular row's sweep
+  double scale_ = 1;                            // of a forward and backward transform together
+  std::vector<double> volume_;                  // cell volume per z layer
   std::vector<double> lower_, upper_, outlet_;  // z couplings over the cell volume
   bool periodic_z_ = false;
   fftw_plan_s *forward_ = nullptr, *backward_ = nullptr;

@@ -133,14 +133,13 @@ void FastViscous::along_x(const ViscousAxisBasis& b, const std::vector<double>& 
   scratch_.resize(static_cast<std::size_t>(b.size * rows));
   double* block = planes + b.first;
   BLASgemm_("N", "N", &n, &r, &n, &one, matrix.data(), &n, block, &ld, &zero, scratch_.data(), &n);
-  for (PetscInt q = 0; q < rows; ++q)
-    std::copy_n(scratch_.data() + q * b.size, b.size, block + q * nx);
+  for (PetscInt q = 0; q < rows; ++q) std::copy_n(scratch_.data() + q * b.size, b.size, block + q * nx);
 }
 
 // A plane is a column-major matrix nx x ny; its unknown columns (nx x b.size) are
 // multiplied by the transposed matrix from the right.
-void FastViscous::along_y(const ViscousAxisBasis& b, const std::vector<double>& matrix, double* planes,
-                          PetscInt count, PetscInt nx, PetscInt ny) {
+void FastViscous::along_y(const ViscousAxisBasis& b, const std::vector<double>& matrix, double* planes, PetscInt count,
+                          PetscInt nx, PetscInt ny) {
   if (b.size == 0) return;
   const PetscBLASInt n = static_cast<PetscBLASInt>(b.size), m = static_cast<PetscBLASInt>(nx);
   const double one = 1, zero = 0;

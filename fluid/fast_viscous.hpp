@@ -38,10 +38,10 @@ class FastViscous {
  private:
   struct Component {
     std::unique_ptr<SlabTranspose> slabs;
-    std::array<ViscousAxisBasis, 2> basis;             // along x and y
-    std::array<std::vector<double>, 2> eigen;          // per DMDA point, zero on boundary faces
-    std::vector<double> z_below, z_centre, z_above;    // the weights along z per layer
-    std::vector<char> z_boundary;                      // a boundary face's row along z
+    std::array<ViscousAxisBasis, 2> basis;                   // along x and y
+    std::array<std::vector<double>, 2> eigen;                // per DMDA point, zero on boundary faces
+    std::vector<double> z_below, z_centre, z_above;          // the weights along z per layer
+    std::vector<char> z_boundary;                            // a boundary face's row along z
     std::vector<double> z_boundary_below, z_boundary_above;  // its couplings: -1 at an outflow
     bool cyclic = false;
   };

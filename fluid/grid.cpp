@@ -9,9 +9,7 @@
 namespace cosim::fluid {
 
 namespace {
-DMBoundaryType boundary_type(const Axis& a) {
-  return a.periodic() ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_GHOSTED;
-}
+DMBoundaryType boundary_type(const Axis& a) { return a.periodic() ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_GHOSTED; }
 
 using CornersFunction = PetscErrorCode (*)(DM, PetscInt*, PetscInt*, PetscInt*, PetscInt*, PetscInt*, PetscInt*);
 
@@ -36,9 +34,9 @@ void Grid::create() {
   // operator), which keeps it a plain DMDA for the multigrid hierarchy.
   COSIM_PETSC(DMDACreate3d(comm, axes_[0].periodic() ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE,
                            axes_[1].periodic() ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE,
-                           axes_[2].periodic() ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE, DMDA_STENCIL_STAR,
-                           n[0], n[1], n[2], PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, 1, 1, nullptr, nullptr,
-                           nullptr, &pressure_));
+                           axes_[2].periodic() ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE, DMDA_STENCIL_STAR, n[0], n[1],
+                           n[2], PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, 1, 1, nullptr, nullptr, nullptr,
+                           &pressure_));
   COSIM_PETSC(DMSetOptionsPrefix(pressure_, "pressure_"));
   // Cell-centred values: a multigrid hierarchy halves the cell count and interpolates
   // piecewise constant (PETSc's DMDA cannot coarsen a one-cell axis, so geometric
@@ -47,8 +45,8 @@ void Grid::create() {
   COSIM_PETSC(DMSetUp(pressure_));
 
   PetscInt ranks[3];
-  COSIM_PETSC(DMDAGetInfo(pressure_, nullptr, nullptr, nullptr, nullptr, &ranks[0], &ranks[1], &ranks[2],
-                          nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
+  COSIM_PETSC(DMDAGetInfo(pressure_, nullptr, nullptr, nullptr, nullptr, &ranks[0], &ranks[1], &ranks[2], nullptr,
+                          nullptr, nullptr, nullptr, nullptr, nullptr));
   const PetscInt* ranges[3];
   COSIM_PETSC(DMDAGetOwnershipRanges(pressure_, &ranges[0], &ranges[1], &ranges[2]));
 

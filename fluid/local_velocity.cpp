@@ -37,20 +37,18 @@ void LocalVelocity::update(const std::array<Vec, 3>& global, const BoundaryCondi
 
 // Tangential components mirror so that their mean on the face is the boundary value (or
 // equals the inside one at an outflow).
-void LocalVelocity::fill_boundary_ghosts(int c, PetscScalar*** u, const BoundaryConditions& bc,
-                                         double t) const {
+void LocalVelocity::fill_boundary_ghosts(int c, PetscScalar*** u, const BoundaryConditions& bc, double t) const {
   const auto at = [u](const Index& p) -> PetscScalar& { return u[p[2]][p[1]][p[0]]; };
-  for_each_boundary_ghost(grid_, grid_.velocity_dm(c), c,
-                          [&](const Index& g, const Index& in, int d, bool lower) {
-                            const Side side = lower ? Side::lower : Side::upper;
-                            if (bc.at(d, side).kind == BoundaryKind::outflow) {
-                              at(g) = at(in);
-                              return;
-                            }
-                            Point x = grid_.position(c, in);
-                            x[d] = lower ? grid_.axis(d).lo() : grid_.axis(d).hi();
-                            at(g) = 2 * bc.velocity(d, side, x, t)[c] - at(in);
-                          });
+  for_each_boundary_ghost(grid_, grid_.velocity_dm(c), c, [&](const Index& g, const Index& in, int d, bool lower) {
+    const Side side = lower ? Side::lower : Side::upper;
+    if (bc.at(d, side).kind == BoundaryKind::outflow) {
+      at(g) = at(in);
+      return;
+    }
+    Point x = grid_.position(c, in);
+    x[d] = lower ? grid_.axis(d).lo() : grid_.axis(d).hi();
+    at(g) = 2 * bc.velocity(d, side, x, t)[c] - at(in);
+  });
 }
 
 }  // namespace cosim::fluid

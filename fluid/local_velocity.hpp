@@ -20,9 +20,7 @@ class LocalVelocity {
 
   // Scatters the global components (with neighbours' values) and fills boundary ghosts for time t.
   void update(const std::array<Vec, 3>& global, const BoundaryConditions& bc, double t);
-  double operator()(int c, const Index& p) const {
-    return array_[static_cast<std::size_t>(c)][p[2]][p[1]][p[0]];
-  }
+  double operator()(int c, const Index& p) const { return array_[static_cast<std::size_t>(c)][p[2]][p[1]][p[0]]; }
 
  private:
   void fill_boundary_ghosts(int c, PetscScalar*** u, const BoundaryConditions& bc, double t) const;

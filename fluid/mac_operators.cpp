@@ -27,19 +27,18 @@ const PetscScalar*** read_ghosted(DM pdm, Vec global, Vec local) {
 
 double max_divergence(const Grid& grid, const LocalVelocity& u) {
   double local = 0;
-  for_each_index(grid.owned(grid.pressure_dm()),
-                 [&](const Index& cell) {
-                   // Written so that a NaN wins: the callers check the result for a non-finite flow.
-                   const double d = std::abs(divergence(grid, u, cell));
-                   if (!(d <= local)) local = d;
-                 });
+  for_each_index(grid.owned(grid.pressure_dm()), [&](const Index& cell) {
+    // Written so that a NaN wins: the callers check the result for a non-finite flow.
+    const double d = std::abs(divergence(grid, u, cell));
+    if (!(d <= local)) local = d;
+  });
   double global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
   return global;
 }
 
-double face_gradient(const Grid& grid, const BoundaryConditions& bc, const PetscScalar* const* const* q,
-                     int c, const Index& p) {
+double face_gradient(const Grid& grid, const BoundaryConditions& bc, const PetscScalar* const* const* q, int c,
+                     const Index& p) {
   const Axis& a = grid.axis(c);
   if (a.degenerate()) return 0;
   const auto value = [q](const Index& cell) { return q[cell[2]][cell[1]][cell[0]]; };

@@ -16,8 +16,8 @@ double max_divergence(const Grid& grid, const LocalVelocity& u);
 // Gradient along c of a cell-centred field q (ghosted local array of the pressure DM) at
 // face p of component c. Zero on wall and inflow faces, where the velocity is imposed;
 // on an outflow face q is taken as zero on the face.
-double face_gradient(const Grid& grid, const BoundaryConditions& bc, const PetscScalar* const* const* q,
-                     int c, const Index& p);
+double face_gradient(const Grid& grid, const BoundaryConditions& bc, const PetscScalar* const* const* q, int c,
+                     const Index& p);
 
 // `global`, a vector of the pressure DM, with its ghosts in `local`, open for reading;
 // closed by DMDAVecRestoreArrayRead(pdm, local, ...).

@@ -21,24 +21,22 @@ const BoundaryConditions& checked(const BoundaryConditions& bc, const FluidPrope
   for (int d = 0; d < 3; ++d)
     for (Side s : {Side::lower, Side::upper}) inflow = inflow || bc.at(d, s).kind == BoundaryKind::inflow;
   if (inflow && !bc.has_outflow())
-    throw std::invalid_argument(
-        "boundary conditions: fluid entering through an inflow face needs an outflow face");
+    throw std::invalid_argument("boundary conditions: fluid entering through an inflow face needs an outflow face");
   return bc;
 }
 
 }  // namespace
 
-NavierStokes::NavierStokes(const Grid& grid, const BoundaryConditions& bc, FluidProperties fluid,
-                           TimeStepOptions steps)
+NavierStokes::NavierStokes(const Grid& grid, const BoundaryConditions& bc, FluidProperties fluid, TimeStepOptions steps)
     : grid_(grid),
       bc_(checked(bc, fluid)),
       fluid_(fluid),
       controller_(steps),
       local_(grid),
       viscosity_(grid, fluid.viscosity, fluid.density),
-      uniform_weights_(viscosity_.uniform() ? std::optional<UniformViscousWeights>(
-                                                   std::in_place, grid, bc, viscosity_.at_cell({0, 0, 0}))
-                                             : std::nullopt),
+      uniform_weights_(viscosity_.uniform() ? std::optional<UniformViscousWeights>(std::in_place, grid, bc,
+                                                                                   viscosity_.at_cell({0, 0, 0}))
+                                            : std::nullopt),
       viscous_(grid, bc, uniform_weights_ ? &*uniform_weights_ : nullptr),
       pressure_solver_(grid, bc) {
   for (int c = 0; c < 3; ++c)
@@ -69,8 +67,8 @@ void NavierStokes::set_velocity(const std::function<Point(const Point&)>& u0) {
     PetscScalar*** u = nullptr;
     COSIM_PETSC(DMDAVecGetArray(dm, u_[c], &u));
     for_each_index(grid_.owned(dm), [&](const Index& p) {
-      const bool imposed = grid_.on_boundary(c, p) &&
-                           bc_.at(c, p[c] == 0 ? Side::lower : Side::upper).kind != BoundaryKind::outflow;
+      const bool imposed =
+          grid_.on_boundary(c, p) && bc_.at(c, p[c] == 0 ? Side::lower : Side::upper).kind != BoundaryKind::outflow;
       u[p[2]][p[1]][p[0]] = imposed ? boundary_value(c, p, time_) : u0(grid_.position(c, p))[c];
     });
     COSIM_PETSC(DMDAVecRestoreArray(dm, u_[c], &u));
@@ -91,9 +89,7 @@ void NavierStokes::shift_frame(const Point& v) {
 
 // local_ holds u_ at time_ (with boundary ghosts) from set_velocity(), restore() and the end
 // of every step: u_ changes nowhere else.
-double NavierStokes::stable_dt() {
-  return controller_.next(convective_rate(grid_, local_), previous_dt_);
-}
+double NavierStokes::stable_dt() { return controller_.next(convective_rate(grid_, local_), previous_dt_); }
 
 StepReport NavierStokes::step(const StepBodies& bodies) { return step(stable_dt(), bodies); }
 
@@ -111,8 +107,7 @@ StepReport NavierStokes::step(double dt, const StepBodies& bodies) {
   }
   run_stage(Stage::viscous_solve, report.seconds,
             [&] { report.viscous_iterations = viscous_solve(dt, bodies.imposed); });
-  run_stage(Stage::projection, report.seconds,
-            [&] { report.pressure_iterations = project(dt, bodies.imposed, u_); });
+  run_stage(Stage::projection, report.seconds, [&] { report.pressure_iterations = project(dt, bodies.imposed, u_); });
   if (bodies.forcing)
     run_stage(Stage::no_slip, report.seconds,
               [&] { report.no_slip_corrections = enforce_no_slip(dt, *bodies.forcing); });

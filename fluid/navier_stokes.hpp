@@ -48,7 +48,7 @@ struct StepReport {
   int pressure_iterations = 0;
   std::array<int, 3> viscous_iterations{};
   int no_slip_corrections = 0;  // of a body forcing, after the projection
-  StageSeconds seconds;  // wall time of each stage of the step
+  StageSeconds seconds;         // wall time of each stage of the step
 };
 
 class NavierStokes {

@@ -43,18 +43,16 @@ void NavierStokes::right_hand_side(double dt, const ImposedFaces* imposed, const
       }
       conv = convection(grid_, local_, c, p);
       if (!viscosity_.uniform()) conv -= viscous_cross_terms(grid_, local_, viscosity_, c, p);
-      const double extrapolated =
-          have_history ? (1 + ratio / 2) * conv - (ratio / 2) * n_old[p[2]][p[1]][p[0]] : conv;
+      const double extrapolated = have_history ? (1 + ratio / 2) * conv - (ratio / 2) * n_old[p[2]][p[1]][p[0]] : conv;
       // div(nu grad u_c) at t, and its wall part at t_next, which the implicit solve takes.
       std::array<ViscousWeights, 3> w{};  // zero along a degenerate axis
       SevenPoints points{local_(c, p), {}, {}};
       double viscous = 0, next_boundary = 0;
       for (int d = 0; d < 3; ++d) {
         if (grid_.axis(d).degenerate()) continue;
-        w[d] = uniform_weights_
-                   ? uniform_weights_->at(c, d, p[d])
-                   : viscous_axis_weights(grid_, bc_, c, d, static_cast<int>(p[d]), nu_below(viscosity_, c, d, p),
-                                          nu_above(viscosity_, c, d, p));
+        w[d] = uniform_weights_ ? uniform_weights_->at(c, d, p[d])
+                                : viscous_axis_weights(grid_, bc_, c, d, static_cast<int>(p[d]),
+                                                       nu_below(viscosity_, c, d, p), nu_above(viscosity_, c, d, p));
         points.below[d] = local_(c, shifted(p, d, -1));
         points.above[d] = local_(c, shifted(p, d, 1));
         if (w[d].boundary == 0) continue;
@@ -63,8 +61,8 @@ void NavierStokes::right_hand_side(double dt, const ImposedFaces* imposed, const
       }
       viscous += weighted_sum(w[0], w[1], w[2], points);
       const double pressure_gradient = face_gradient(grid_, bc_, p_old, c, p) / fluid_.density;
-      out = local_(c, p) + dt * (-extrapolated + (1 - theta) * viscous + theta * next_boundary +
-                                 fluid_.body_force[c] - pressure_gradient);
+      out = local_(c, p) + dt * (-extrapolated + (1 - theta) * viscous + theta * next_boundary + fluid_.body_force[c] -
+                                 pressure_gradient);
       // The implicit part taken explicitly: the whole viscous term at u^n.
       if (estimate) estimate[p[2]][p[1]][p[0]] = out + theta * dt * (viscous - next_boundary);
     });

@@ -10,10 +10,9 @@ void petsc_check(PetscErrorCode code, const char* file, int line) {
   const char* text = nullptr;
   char* detail = nullptr;
   PetscErrorMessage(code, &text, &detail);
-  throw std::runtime_error(std::string("PETSc error ") + std::to_string(code) + " (" +
-                           (text ? text : "unknown") +
-                           (detail && *detail ? std::string(": ") + detail : std::string()) + ") at " + file +
-                           ":" + std::to_string(line));
+  throw std::runtime_error(std::string("PETSc error ") + std::to_string(code) + " (" + (text ? text : "unknown") +
+                           (detail && *detail ? std::string(": ") + detail : std::string()) + ") at " + file + ":" +
+                           std::to_string(line));
 }
 
 int solve_or_throw(KSP ksp, Vec b, Vec x, const std::string& what) {

@@ -54,10 +54,10 @@ class PressureSolver {
 
   const Grid& grid_;
   const BoundaryConditions& bc_;
-  bool transforms_ = false;             // where they apply and were not declined
-  bool transforms_now_ = false;         // for the faces of the last prepare()
+  bool transforms_ = false;            // where they apply and were not declined
+  bool transforms_now_ = false;        // for the faces of the last prepare()
   std::unique_ptr<FastPoisson> fast_;  // when first needed
-  KSP ksp_ = nullptr;                   // when first needed
+  KSP ksp_ = nullptr;                  // when first needed
   Vec rhs_ = nullptr;
   MatNullSpace constants_ = nullptr;  // a constant on each region no outflow pins, if any
   const ImposedFaces* imposed_ = nullptr;

@@ -44,8 +44,8 @@ class SlabTranspose {
   MPI_Comm comm_;
   PetscInt n_[3] = {0, 0, 0};
   bool serial_ = true;
-  PetscInt k_begin_ = 0, k_end_ = 0;  // this rank's x-y planes
-  PetscInt j_begin_ = 0, j_end_ = 0;  // this rank's z lines: all i, j in range
+  PetscInt k_begin_ = 0, k_end_ = 0;        // this rank's x-y planes
+  PetscInt j_begin_ = 0, j_end_ = 0;        // this rank's z lines: all i, j in range
   Vec planes_ = nullptr, lines_ = nullptr;  // several ranks only
   VecScatter to_planes_ = nullptr, to_lines_ = nullptr;
 };

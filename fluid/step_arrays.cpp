@@ -4,8 +4,7 @@
 
 namespace cosim::fluid {
 
-StepArrays::StepArrays(const Grid& grid, const std::array<Vec, 3>& rhs, bool with_estimate)
-    : grid_(grid), rhs_(rhs) {
+StepArrays::StepArrays(const Grid& grid, const std::array<Vec, 3>& rhs, bool with_estimate) : grid_(grid), rhs_(rhs) {
   for (int c = 0; c < 3; ++c) {
     DM dm = grid_.velocity_dm(c);
     COSIM_PETSC(DMDAVecGetArray(dm, rhs_[c], &arrays_.rhs[c]));

@@ -14,8 +14,8 @@ const LogEvents& log_events() {
     PetscClassId id;
     LogEvents e;
     COSIM_PETSC(PetscClassIdRegister("cosim fluid", &id));
-    const std::array<const char*, kStageNames.size()> names{"FluidMomentumRHS", "FluidBodyForcing",
-                                                            "FluidViscousSolve", "FluidProjection", "FluidNoSlip"};
+    const std::array<const char*, kStageNames.size()> names{"FluidMomentumRHS", "FluidBodyForcing", "FluidViscousSolve",
+                                                            "FluidProjection", "FluidNoSlip"};
     for (std::size_t s = 0; s < names.size(); ++s) COSIM_PETSC(PetscLogEventRegister(names[s], id, &e.stages[s]));
     COSIM_PETSC(PetscLogEventRegister("FluidPressureSolve", id, &e.pressure_solve));
     COSIM_PETSC(PetscLogEventRegister("FluidForcingIteration", id, &e.forcing_iteration));
@@ -25,11 +25,6 @@ const LogEvents& log_events() {
 }
 
 }  // namespace
-
-StageSeconds& StageSeconds::operator+=(const StageSeconds& other) {
-  for (std::size_t s = 0; s < seconds_.size(); ++s) seconds_[s] += other.seconds_[s];
-  return *this;
-}
 
 PetscLogEvent log_event(Stage stage) { return log_events().stages[static_cast<std::size_t>(stage)]; }
 

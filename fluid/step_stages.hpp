@@ -1,30 +1,21 @@
 #pragma once
 // The stages of a fluid step in the order NavierStokes::step runs them, and the wall seconds
-// each took (StepReport::seconds), as Box2D's b2Profile reports its step: where a step's
-// time goes without a profiler. Each stage is a PETSc log event as well, for -log_view.
+// each took (StepReport::seconds, timing/stage_seconds.hpp). Each stage is a PETSc log event
+// as well, for -log_view.
 #include <petsclog.h>
 
 #include <array>
-#include <chrono>
-#include <cstddef>
+#include <utility>
 
 #include "fluid/petsc_check.hpp"
+#include "timing/stage_seconds.hpp"
 
 namespace cosim::fluid {
 
 enum class Stage { right_hand_side, body_forcing, viscous_solve, projection, no_slip };
 inline constexpr std::array kStageNames{"right-hand side", "body forcing", "viscous solve", "projection", "no-slip"};
 
-class StageSeconds {
- public:
-  double& operator[](Stage stage) { return seconds_[static_cast<std::size_t>(stage)]; }
-  double operator[](Stage stage) const { return seconds_[static_cast<std::size_t>(stage)]; }
-  StageSeconds& operator+=(const StageSeconds& other);
-  const std::array<double, kStageNames.size()>& all() const { return seconds_; }  // in kStageNames' order
-
- private:
-  std::array<double, kStageNames.size()> seconds_{};
-};
+using StageSeconds = timing::StageSeconds<Stage, kStageNames.size()>;
 
 // The stage's PETSc event (FluidMomentumRHS, FluidBodyForcing, FluidViscousSolve,
 // FluidProjection, FluidNoSlip), registered at the first call.
@@ -42,10 +33,7 @@ PetscLogEvent forcing_iteration_event();
 template <class F>
 void run_stage(Stage stage, StageSeconds& seconds, F&& f) {
   COSIM_PETSC(PetscLogEventBegin(log_event(stage), 0, 0, 0, 0));
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-  seconds[stage] += took.count();
+  seconds.time(stage, std::forward<F>(f));
   COSIM_PETSC(PetscLogEventEnd(log_event(stage), 0, 0, 0, 0));
 }
 

@@ -22,8 +22,7 @@ double convective_rate(const Grid& grid, const LocalVelocity& u) {
 }
 
 TimeStepController::TimeStepController(TimeStepOptions options) : options_(options) {
-  if (!(options_.cfl > 0) || !(options_.dt_max > 0) || !(options_.dt_initial > 0) ||
-      !(options_.max_growth >= 1))
+  if (!(options_.cfl > 0) || !(options_.dt_max > 0) || !(options_.dt_initial > 0) || !(options_.max_growth >= 1))
     throw std::invalid_argument("time step options: cfl, dt_max, dt_initial must be > 0 and max_growth >= 1");
   if (!(options_.theta >= 0.5 && options_.theta <= 1))
     throw std::invalid_argument("time step options: theta must be in [0.5, 1]");

@@ -15,11 +15,11 @@ namespace cosim::fluid {
 // and super(n - 1) are ignored; with it, row 0 reaches k = n - 1 by sub(0) and row n - 1
 // reaches 0 by super(n - 1). work holds (2 n + 1) nx doubles.
 template <typename Sub, typename Super, typename Diagonal>
-void solve_tridiagonal_lines(double* row, PetscInt n, PetscInt nx, PetscInt k_stride, const Sub& sub, const Super& super,
-                             const Diagonal& diagonal, bool cyclic, std::vector<double>& work) {
+void solve_tridiagonal_lines(double* row, PetscInt n, PetscInt nx, PetscInt k_stride, const Sub& sub,
+                             const Super& super, const Diagonal& diagonal, bool cyclic, std::vector<double>& work) {
   double* w = work.data();
   double* v = work.data() + n * nx;  // Sherman-Morrison's second right-hand side
-  double* gamma = v + n * nx;         // and its free parameter, minus row 0's diagonal
+  double* gamma = v + n * nx;        // and its free parameter, minus row 0's diagonal
   // The corners of a cyclic line: row 0 reaches k = n - 1 (beta), row n - 1 reaches 0 (alpha).
   const double alpha = super(n - 1), beta = sub(0);
   for (PetscInt i = 0; i < nx; ++i) {

@@ -49,8 +49,7 @@ double ViscosityField::at_edge(int c, int d, const Index& p, PetscInt j) const {
   Index cell = p;
   cell[d] = j;
   const Index below_c = shifted(cell, c, -1);
-  return 0.25 * (at_cell(cell) + at_cell(below_c) + at_cell(shifted(cell, d, -1)) +
-                 at_cell(shifted(below_c, d, -1)));
+  return 0.25 * (at_cell(cell) + at_cell(below_c) + at_cell(shifted(cell, d, -1)) + at_cell(shifted(below_c, d, -1)));
 }
 
 double shear_rate(const Grid& grid, const LocalVelocity& u, const Index& cell) {
@@ -70,10 +69,8 @@ double shear_rate(const Grid& grid, const LocalVelocity& u, const Index& cell) {
           q[c] = a;
           q[d] = b;
           const int ia = static_cast<int>(a), ib = static_cast<int>(b);
-          if (!ad.degenerate())
-            shear += (u(c, q) - u(c, shifted(q, d, -1))) / (ad.centre(ib) - ad.centre(ib - 1));
-          if (!ac.degenerate())
-            shear += (u(d, q) - u(d, shifted(q, c, -1))) / (ac.centre(ia) - ac.centre(ia - 1));
+          if (!ad.degenerate()) shear += (u(c, q) - u(c, shifted(q, d, -1))) / (ad.centre(ib) - ad.centre(ib - 1));
+          if (!ac.degenerate()) shear += (u(d, q) - u(d, shifted(q, c, -1))) / (ac.centre(ia) - ac.centre(ia - 1));
         }
       shear *= 0.125;  // mean over four edges of (du_c/dx_d + du_d/dx_c) / 2
       sum += 2 * shear * shear;

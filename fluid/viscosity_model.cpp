@@ -20,8 +20,7 @@ ViscosityModel ViscosityModel::power_law(double consistency, double index, doubl
   return {Kind::power_law, consistency, index, mu_min, mu_max};
 }
 
-ViscosityModel ViscosityModel::carreau(double mu_zero, double mu_infinity, double time_constant,
-                                       double index) {
+ViscosityModel ViscosityModel::carreau(double mu_zero, double mu_infinity, double time_constant, double index) {
   if (!(mu_zero > 0) || !(mu_infinity > 0) || !(time_constant >= 0) || !(index > 0))
     throw std::invalid_argument("Carreau viscosity: need mu_0 > 0, mu_inf > 0, lambda >= 0 and n > 0");
   return {Kind::carreau, mu_zero, mu_infinity, time_constant, index};

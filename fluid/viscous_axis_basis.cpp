@@ -67,7 +67,8 @@ ViscousAxisBasis viscous_axis_basis(const Grid& grid, const BoundaryConditions& 
       if (up * down < 0 || (up == 0) != (down == 0))
         throw std::logic_error("fluid: the 1D viscous operator along axis " + std::to_string(d) +
                                " is not symmetrisable");
-      scale[static_cast<std::size_t>(r)] = scale[static_cast<std::size_t>(r - 1)] * (up == 0 ? 1 : std::sqrt(up / down));
+      scale[static_cast<std::size_t>(r)] =
+          scale[static_cast<std::size_t>(r - 1)] * (up == 0 ? 1 : std::sqrt(up / down));
     }
   std::vector<double> q(size * size);  // S, then its eigenvectors, column-major
   for (PetscInt r = 0; r < n; ++r)

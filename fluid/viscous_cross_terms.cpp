@@ -4,8 +4,7 @@
 
 namespace cosim::fluid {
 
-double viscous_cross_terms(const Grid& grid, const LocalVelocity& u, const ViscosityField& nu, int c,
-                           const Index& p) {
+double viscous_cross_terms(const Grid& grid, const LocalVelocity& u, const ViscosityField& nu, int c, const Index& p) {
   const Axis& own = grid.axis(c);
   if (own.degenerate()) return 0;
   const int i = static_cast<int>(p[c]);

@@ -9,7 +9,6 @@
 namespace cosim::fluid {
 
 // At face p of component c, not a boundary face of c.
-double viscous_cross_terms(const Grid& grid, const LocalVelocity& u, const ViscosityField& nu, int c,
-                           const Index& p);
+double viscous_cross_terms(const Grid& grid, const LocalVelocity& u, const ViscosityField& nu, int c, const Index& p);
 
 }  // namespace cosim::fluid

@@ -45,8 +45,10 @@ ViscousSolver::ViscousSolver(const Grid& grid, const BoundaryConditions& bc, con
   create_or_release(
       [this] {
         std::string obstacle;
-        if (!weights_) obstacle = "needs a uniform (Newtonian) viscosity";
-        else if (!FastViscous::applies(grid_)) obstacle = "needs uniform x and y axes; this grid stretches one";
+        if (!weights_)
+          obstacle = "needs a uniform (Newtonian) viscosity";
+        else if (!FastViscous::applies(grid_))
+          obstacle = "needs uniform x and y axes; this grid stretches one";
         if (use_transforms("viscous", obstacle)) fast_ = std::make_unique<FastViscous>(grid_, bc_, *weights_);
         // The Krylov path too: for solves with imposed faces, and so a bad -viscous_*
         // option fails here either way.

@@ -54,7 +54,7 @@ class ViscousSolver {
   const UniformViscousWeights* weights_;
   std::array<KSP, 3> ksp_{};
   std::array<Mat, 3> matrix_{};  // assembled, or the stencil operator
-  struct Operator {                // what the stencil operator of one component reads
+  struct Operator {              // what the stencil operator of one component reads
     const ViscousSolver* solver = nullptr;
     int c = 0;
     double s = 0;

@@ -40,19 +40,19 @@ bool bounded_side(const Axis& axis, int i, Side side) {
 
 double shear_flux_span(const Axis& axis, int i) {
   if (!axis.periodic() && i == 0) return 0.5 * (axis.centre(0) + axis.centre(1)) - axis.lo();
-  if (!axis.periodic() && i == axis.cells() - 1)
-    return axis.hi() - 0.5 * (axis.centre(i) + axis.centre(i - 1));
+  if (!axis.periodic() && i == axis.cells() - 1) return axis.hi() - 0.5 * (axis.centre(i) + axis.centre(i - 1));
   return 0.5 * (axis.centre(i + 1) - axis.centre(i - 1));
 }
 
-ViscousWeights viscous_axis_weights(const Grid& grid, const BoundaryConditions& bc, int c, int d, int i, double nu_below,
-                                 double nu_above) {
+ViscousWeights viscous_axis_weights(const Grid& grid, const BoundaryConditions& bc, int c, int d, int i,
+                                    double nu_below, double nu_above) {
   const Axis& axis = grid.axis(d);
-  if (d == c) return interior(axis.width(i - 1), axis.width(i), axis.centre(i) - axis.centre(i - 1), nu_below, nu_above);
+  if (d == c)
+    return interior(axis.width(i - 1), axis.width(i), axis.centre(i) - axis.centre(i - 1), nu_below, nu_above);
   const bool lower = bounded_side(axis, i, Side::lower), upper = bounded_side(axis, i, Side::upper);
   if (!lower && !upper)
-    return interior(axis.centre(i) - axis.centre(i - 1), axis.centre(i + 1) - axis.centre(i),
-                    shear_flux_span(axis, i), nu_below, nu_above);
+    return interior(axis.centre(i) - axis.centre(i - 1), axis.centre(i + 1) - axis.centre(i), shear_flux_span(axis, i),
+                    nu_below, nu_above);
   const Side side = lower ? Side::lower : Side::upper;
   const double wall = lower ? axis.lo() : axis.hi();
   const int second = lower ? 1 : i - 1;
@@ -101,8 +101,8 @@ UniformViscousWeights::UniformViscousWeights(const Grid& grid, const BoundaryCon
     }
 }
 
-Stencil viscous_stencil(const Grid& grid, const BoundaryConditions& bc, const ViscosityField& nu, int c,
-                        const Index& p, double t) {
+Stencil viscous_stencil(const Grid& grid, const BoundaryConditions& bc, const ViscosityField& nu, int c, const Index& p,
+                        double t) {
   Stencil s;
   double centre = 0;
   for (int d = 0; d < 3; ++d) {

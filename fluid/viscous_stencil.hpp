@@ -37,8 +37,8 @@ inline double weighted_sum(const ViscousWeights& x, const ViscousWeights& y, con
 // profile is reproduced exactly). i is p's index along d, nu_below and nu_above the
 // viscosities at the flux points below and above p along d. p must not be a boundary face
 // of component c, and d must carry variation.
-ViscousWeights viscous_axis_weights(const Grid& grid, const BoundaryConditions& bc, int c, int d, int i, double nu_below,
-                                 double nu_above);
+ViscousWeights viscous_axis_weights(const Grid& grid, const BoundaryConditions& bc, int c, int d, int i,
+                                    double nu_below, double nu_above);
 
 // The viscosities at p's flux points along d (cell centres along c, edges across).
 double nu_below(const ViscosityField& nu, int c, int d, const Index& p);
@@ -81,7 +81,7 @@ struct Stencil {
 double shear_flux_span(const Axis& axis, int i);
 
 // The axes' weights of p as a stencil over its neighbours.
-Stencil viscous_stencil(const Grid& grid, const BoundaryConditions& bc, const ViscosityField& nu, int c,
-                        const Index& p, double t);
+Stencil viscous_stencil(const Grid& grid, const BoundaryConditions& bc, const ViscosityField& nu, int c, const Index& p,
+                        double t);
 
 }  // namespace cosim::fluid

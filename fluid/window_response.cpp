@@ -51,7 +51,8 @@ WindowResponse window_response(const Grid& grid, const RigidBody& body, const Fl
   int flat = -1;
   for (int d = 0; d < 3; ++d)
     if (grid.axis(d).degenerate()) flat = d;
-  Grid box(PETSC_COMM_SELF, box_around(0.5 * (extent.max - extent.min), h, flat, flat < 0 ? 0 : grid.axis(flat).width(0)));
+  Grid box(PETSC_COMM_SELF,
+           box_around(0.5 * (extent.max - extent.min), h, flat, flat < 0 ? 0 : grid.axis(flat).width(0)));
   BoundaryConditions bc(box);
   Eigen::Vector3d centre = h * Eigen::Vector3d(0.137, 0.291, 0.413);
   if (flat >= 0) centre[flat] = 0;
@@ -70,11 +71,14 @@ WindowResponse window_response(const Grid& grid, const RigidBody& body, const Fl
     flow.restore(rest);
     bodies->restore(held);
     const auto place = [&](double s) {
-      const double ramp = std::min(s, window) / window, travelled = s <= window ? 0.5 * s * s / window : s - 0.5 * window;
+      const double ramp = std::min(s, window) / window,
+                   travelled = s <= window ? 0.5 * s * s / window : s - 0.5 * window;
       const Eigen::Vector3d turned = travelled * unit.tail<3>();
-      const Eigen::Quaterniond q = turned.norm() > 0 ? Eigen::Quaterniond(Eigen::AngleAxisd(turned.norm(), turned.normalized()))
-                                                     : Eigen::Quaterniond::Identity();
-      bodies->move(0, geometry::Pose(centre + travelled * unit.head<3>(), q), ramp * unit.head<3>(), ramp * unit.tail<3>());
+      const Eigen::Quaterniond q = turned.norm() > 0
+                                       ? Eigen::Quaterniond(Eigen::AngleAxisd(turned.norm(), turned.normalized()))
+                                       : Eigen::Quaterniond::Identity();
+      bodies->move(0, geometry::Pose(centre + travelled * unit.head<3>(), q), ramp * unit.head<3>(),
+                   ramp * unit.tail<3>());
     };
     std::vector<Vector6d> out(kResponseWindows, Vector6d::Zero());
     for (int k = 0; k < kResponseWindows; ++k)

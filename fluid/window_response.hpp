@@ -44,7 +44,7 @@ inline constexpr int kResponseWindows = 16;
 
 struct WindowResponse {
   using Matrix6d = Eigen::Matrix<double, 6, 6>;
-  std::vector<Matrix6d> kernel;                // K_0 .. K_(kResponseWindows - 1)
+  std::vector<Matrix6d> kernel;               // K_0 .. K_(kResponseWindows - 1)
   Matrix6d added_mass = Matrix6d::Zero();     // A: kg, kg m, kg m^2
   Matrix6d added_damping = Matrix6d::Zero();  // B: N s / m, N s, N m s
 };

@@ -35,10 +35,8 @@ inline protocol::Array payload(std::size_t doubles) {
   std::vector<double> v(doubles);
   for (std::size_t i = 0; i < doubles; ++i) v[i] = 1.0 + 1e-3 * static_cast<double>(i % 1000);
   if (doubles % 6 == 0)
-    return protocol::Array::of(protocol::Tag::Forces, static_cast<std::uint32_t>(doubles / 6), 6,
-                               std::move(v));
-  return protocol::Array::of(protocol::Tag::State, 1, static_cast<std::uint32_t>(doubles),
-                             std::move(v));
+    return protocol::Array::of(protocol::Tag::Forces, static_cast<std::uint32_t>(doubles / 6), 6, std::move(v));
+  return protocol::Array::of(protocol::Tag::State, 1, static_cast<std::uint32_t>(doubles), std::move(v));
 }
 
 // What a participant computes in both benchmarks, so that neither just echoes its input:

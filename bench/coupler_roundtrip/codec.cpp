@@ -11,8 +11,7 @@ protocol::Message result(std::size_t doubles) {
 }
 
 void count_bytes(benchmark::State& state, std::size_t doubles) {
-  state.SetBytesProcessed(
-      static_cast<std::int64_t>(state.iterations() * doubles * sizeof(double)));
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * doubles * sizeof(double)));
 }
 
 }  // namespace

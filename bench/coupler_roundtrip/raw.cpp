@@ -29,8 +29,7 @@ void peer(const std::string& endpoint, const std::string& name, std::size_t doub
     (void)zmq::recv_multipart(socket, std::back_inserter(in));
     if (in.size() != 2) break;
     answer(in[0].data(), in[1].data(), outputs);
-    socket.send(zmq::message_t(outputs.data(), outputs.size() * sizeof(double)),
-                zmq::send_flags::none);
+    socket.send(zmq::message_t(outputs.data(), outputs.size() * sizeof(double)), zmq::send_flags::none);
   }
 }
 
@@ -53,8 +52,7 @@ void raw(benchmark::State& state, Case c) {
 
   std::vector<std::jthread> threads;
   for (const auto& name : names)
-    threads.emplace_back(peer, endpoint, name, c.doubles,
-                         keys ? std::optional(keys->peers.at(name)) : std::nullopt);
+    threads.emplace_back(peer, endpoint, name, c.doubles, keys ? std::optional(keys->peers.at(name)) : std::nullopt);
   std::vector<zmq::message_t> frames;
   std::vector<std::string> ids;
   for (int i = 0; i < c.participants; ++i) {
@@ -75,8 +73,7 @@ void raw(benchmark::State& state, Case c) {
     for (int i = 0; i < c.participants; ++i) {
       frames.clear();
       (void)zmq::recv_multipart(router, std::back_inserter(frames));
-      if (frames.size() != 2 || frames[1].size() != bytes)
-        throw std::runtime_error("raw reply of the wrong size");
+      if (frames.size() != 2 || frames[1].size() != bytes) throw std::runtime_error("raw reply of the wrong size");
     }
   }
 

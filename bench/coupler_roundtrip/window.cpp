@@ -17,8 +17,7 @@ constexpr std::chrono::seconds kTimeout(30);
 
 // Answers every Advance as a solver would after its substeps: its outputs, computed into a
 // buffer of its own, and its Stats.
-void participant(const std::string& endpoint, const std::string& name,
-                 const std::optional<curve::ClientKeys>& keys) {
+void participant(const std::string& endpoint, const std::string& name, const std::optional<curve::ClientKeys>& keys) {
   Client client(endpoint, name, keys);
   client.hello(0, 0);
   std::vector<double> outputs;
@@ -31,9 +30,9 @@ void participant(const std::string& endpoint, const std::string& name,
     outputs.resize(start.values.size());
     answer(start.values.data(), in.arrays[1].values.data(), outputs);
     // Copies the outputs into the message, as run_participant does with a solver's.
-    client.reply(messages::result(in.header.window, in.header.iteration,
-                                  {Array::of(start.tag, start.rows, start.cols, outputs),
-                                   Array::of(Tag::Stats, 1, kStatsWidth, {1.0, 0.0})}));
+    client.reply(messages::result(
+        in.header.window, in.header.iteration,
+        {Array::of(start.tag, start.rows, start.cols, outputs), Array::of(Tag::Stats, 1, kStatsWidth, {1.0, 0.0})}));
   }
   client.reply(messages::bye());
 }
@@ -42,8 +41,7 @@ Message expect(Server& server, Type type) {
   auto m = server.receive(kTimeout);
   if (!m) throw std::runtime_error(std::string("no ") + to_string(type) + " within the timeout");
   if (m->header.type != type)
-    throw std::runtime_error(std::string("expected ") + to_string(type) + ", received " +
-                             to_string(m->header.type));
+    throw std::runtime_error(std::string("expected ") + to_string(type) + ", received " + to_string(m->header.type));
   return std::move(*m);
 }
 

@@ -65,8 +65,7 @@ void print_row(const Run& r) {
   std::printf("%-5s %4.0f %6.3f %7.3f %9zu %7d %8.2f %7.2f %+7.2f%% +- %4.2f%% %+8.2f%% %+7.2f%% +- %4.2f%%\n",
               r.sweep.c_str(), r.spec.particles_per_cell, r.cell_over_lambda(), r.spec.dt_over_collision_time,
               r.result.particles, r.steps(), r.result.wall_seconds, r.result.cpu_seconds, 100 * (v.mean - 1),
-              100 * v.error,
-              100 * viscosity_error(r.spec), 100 * r.shear_error(), 100 * shear_sigma);
+              100 * v.error, 100 * viscosity_error(r.spec), 100 * r.shear_error(), 100 * shear_sigma);
   std::fflush(stdout);
 }
 
@@ -103,17 +102,18 @@ int main(int argc, char** argv) {
   const std::vector<Case> all =
       quick && sweep.empty()
           ? std::vector<Case>{{"ref", 20, 1.0 / 3, 0.25}, {"cell", 20, 1.0, 0.25}, {"dt", 20, 1.0 / 3, 1.0}}
-          : std::vector<Case>{{"ppc", 5, 1.0 / 3, 0.25},   {"ppc", 10, 1.0 / 3, 0.25}, {"ppc", 20, 1.0 / 3, 0.25},
-                              {"ppc", 40, 1.0 / 3, 0.25},  {"cell", 20, 2.0 / 3, 0.25}, {"cell", 20, 1.0, 0.25},
-                              {"cell", 20, 1.5, 0.25},     {"cell", 20, 2.0, 0.25},     {"dt", 20, 1.0 / 3, 0.5},
-                              {"dt", 20, 1.0 / 3, 1.0},    {"dt", 20, 1.0 / 3, 1.5},    {"dt", 20, 1.0 / 3, 2.0}};
+          : std::vector<Case>{{"ppc", 5, 1.0 / 3, 0.25},  {"ppc", 10, 1.0 / 3, 0.25},  {"ppc", 20, 1.0 / 3, 0.25},
+                              {"ppc", 40, 1.0 / 3, 0.25}, {"cell", 20, 2.0 / 3, 0.25}, {"cell", 20, 1.0, 0.25},
+                              {"cell", 20, 1.5, 0.25},    {"cell", 20, 2.0, 0.25},     {"dt", 20, 1.0 / 3, 0.5},
+                              {"dt", 20, 1.0 / 3, 1.0},   {"dt", 20, 1.0 / 3, 1.5},    {"dt", 20, 1.0 / 3, 2.0}};
   std::vector<Case> cases;
   for (const Case& c : all)
     if (sweep.empty() || sweep == c.sweep) cases.push_back(c);
   const double batch_times = quick ? 50.0 : 1000.0;  // mean collision times per batch
-  std::printf("Couette flow, hard-sphere argon, Kn = %.2f, U = %.0f m/s, 20 batches of %.0f mean collision times; "
-              "mu from the plates' shear over du/dy in the bulk, against Chapman-Enskog\n",
-              kKnudsen, kWallSpeed, batch_times);
+  std::printf(
+      "Couette flow, hard-sphere argon, Kn = %.2f, U = %.0f m/s, 20 batches of %.0f mean collision times; "
+      "mu from the plates' shear over du/dy in the bulk, against Chapman-Enskog\n",
+      kKnudsen, kWallSpeed, batch_times);
   print_header();
   std::vector<Run> runs;
   bool ok = true;

@@ -72,9 +72,9 @@ FluidRun dfg_cylinder(int cells_per_diameter, const BodyOptions& method, const E
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(1e-3), {0, 0, 0}},
                     {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 1e-3});
   const auto bodies = make_bodies(grid, method);
-  const auto body = bodies->add({geometry::Cylinder(D / 2, 3 * T),
-                                 geometry::Pose({0.2 + shift.x() * h, 0.2 + shift.y() * h, T / 2},
-                                                Eigen::Quaterniond::Identity())});
+  const auto body =
+      bodies->add({geometry::Cylinder(D / 2, 3 * T),
+                   geometry::Pose({0.2 + shift.x() * h, 0.2 + shift.y() * h, T / 2}, Eigen::Quaterniond::Identity())});
   flow.set_velocity(parabola);
   const double to_coefficient = 2 / (D * T * Umean * Umean);
   FluidRun run{"DFG 2D-1 C_D", "D/h=" + std::to_string(cells_per_diameter), label(method)};
@@ -318,7 +318,8 @@ namespace {
 
 // The case's step with `stepping`'s theta and pressure update.
 TimeStepOptions fixed_step(double dt, const TimeStepOptions& stepping) {
-  return {.cfl = 10, .dt_max = dt, .dt_initial = dt, .theta = stepping.theta, .pressure_update = stepping.pressure_update};
+  return {
+      .cfl = 10, .dt_max = dt, .dt_initial = dt, .theta = stepping.theta, .pressure_update = stepping.pressure_update};
 }
 
 }  // namespace
@@ -339,8 +340,7 @@ Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cel
   out.cells_per_step = cells_per_step;
   const double dt = cells_per_step * h / U;
   out.viscous_number = nu * dt / (h * h);
-  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(nu), {0, 0, 0}},
-                    fixed_step(dt, stepping));
+  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(nu), {0, 0, 0}}, fixed_step(dt, stepping));
   const auto bodies = make_bodies(grid, method);
   const Eigen::Vector3d velocity(0, 0, -U);
   // Off the cells' centres and faces by a generic amount.
@@ -348,12 +348,15 @@ Towed towed_sphere(const BodyOptions& method, int cells_per_diameter, double cel
   bodies->add({geometry::Sphere(d / 2), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   std::vector<double> heights, drags;
-  const Towing towing = tow(*bodies, flow, start, velocity, dt, [&](int k, const Eigen::Vector3d& at) {
-    out.steps = k;
-    heights.push_back(at.z());
-    drags.push_back(bodies->loads(flow)[0].force.z());
-    return at.z() > z_measure;
-  }, SpeedRise{rise * d / U});
+  const Towing towing = tow(
+      *bodies, flow, start, velocity, dt,
+      [&](int k, const Eigen::Vector3d& at) {
+        out.steps = k;
+        heights.push_back(at.z());
+        drags.push_back(bodies->loads(flow)[0].force.z());
+        return at.z() > z_measure;
+      },
+      SpeedRise{rise * d / U});
   out.drag = mean_between(heights, drags, z_measure + h, z_measure);
   out.corrections = static_cast<double>(towing.corrections) / out.steps;
   out.seconds = MPI_Wtime() - start_time;
@@ -372,8 +375,7 @@ WallApproach sphere_approaching_a_wall(const BodyOptions& method, int cells_per_
   WallApproach out;
   const double dt = viscous_number * h * h / nu;
   out.cells_per_step = U * dt / h;
-  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(nu), {0, 0, 0}},
-                    fixed_step(dt, stepping));
+  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(nu), {0, 0, 0}}, fixed_step(dt, stepping));
   const auto bodies = make_bodies(grid, method);
   const Eigen::Vector3d velocity(0, 0, -U);
   // Off the cells' centres and faces by a generic amount.
@@ -448,8 +450,8 @@ DuctDrag sphere_in_sliding_duct(const BodyOptions& method, int cells_per_diamete
   DuctDrag out;
   // Steady: the drag moves by less than 1e-5 of itself over one d / U (at most 200).
   double drag = 0;
-  out.steps = run_to_steady(flow, bodies->for_step(), 1, 200, 1e-5,
-                            [&] { return drag = bodies->loads(flow)[0].force.z(); });
+  out.steps =
+      run_to_steady(flow, bodies->for_step(), 1, 200, 1e-5, [&] { return drag = bodies->loads(flow)[0].force.z(); });
   out.factor = drag / (3 * std::numbers::pi * nu * U * d);
   out.cells = static_cast<long>(across) * across * along;
   out.seconds = MPI_Wtime() - start_time;

@@ -72,23 +72,23 @@ Towed towed_sphere(const fluid::BodyOptions& method, int cells_per_diameter, dou
 // A sphere driven towards a no-slip wall: a sphere of `cells_per_diameter` cells across in
 // a closed cube `box.diameters` wide (by default ten Cate's tank's width, 6.7), moved at
 // constant speed U straight down from rest, `box.start_gap` radii above the floor, at
-// Reynolds number U d / nu, with fluid steps of nu dt / h^2 = `viscous_number`. Its drag over Stokes's 6 pi mu a U as the
-// gap to the floor passes each of `gaps` (in radii, falling), linear between the two steps
-// around it; and at the end of every step.
+// Reynolds number U d / nu, with fluid steps of nu dt / h^2 = `viscous_number`. Its drag over Stokes's 6 pi mu a U as
+// the gap to the floor passes each of `gaps` (in radii, falling), linear between the two steps around it; and at the
+// end of every step.
 struct WallApproach {
   double cells_per_step = 0, seconds = 0;
   double corrections = 0;  // the immersed boundary's no-slip corrections per step
   int steps = 0;
-  std::vector<double> factors;  // F / (6 pi mu a U) at each gap
+  std::vector<double> factors;                        // F / (6 pi mu a U) at each gap
   std::vector<double> sampled_gaps, sampled_factors;  // after each step
-  fluid::StageSeconds stages;  // wall seconds per stage, all steps
+  fluid::StageSeconds stages;                         // wall seconds per stage, all steps
 };
 struct WallApproachBox {
   double diameters = 6.7;  // the cube's width
   double start_gap = 3;    // in radii, raised by 0.42 h off the cells' faces
 };
-WallApproach sphere_approaching_a_wall(const fluid::BodyOptions& method, int cells_per_diameter,
-                                       double viscous_number, double reynolds, const std::vector<double>& gaps,
+WallApproach sphere_approaching_a_wall(const fluid::BodyOptions& method, int cells_per_diameter, double viscous_number,
+                                       double reynolds, const std::vector<double>& gaps,
                                        const fluid::TimeStepOptions& stepping, const WallApproachBox& box = {});
 
 // The relative error of `run`'s drag against `finest`'s at `gap`: at the two steps of `run`

@@ -28,8 +28,8 @@ std::vector<double> smoothed(const std::vector<double>& time, const std::vector<
 
 namespace {
 
-Spurious spurious(const std::vector<double>& time, const std::vector<double>& value,
-                  const std::vector<double>& smooth, double from) {
+Spurious spurious(const std::vector<double>& time, const std::vector<double>& value, const std::vector<double>& smooth,
+                  double from) {
   Spurious s;
   int n = 0;
   for (std::size_t i = 0; i < time.size(); ++i)

@@ -135,8 +135,8 @@ double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, const Settings& s
 // and put the line through them by hand to use both cores).
 void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ibm, const Settings& s) {
   if (boxes.size() == 1) {
-    PetscPrintf(PETSC_COMM_WORLD, "zeroing retraction for %s at d/h %.1f: %.4f\n", std::string(name(ibm.kernel)).c_str(),
-                0.4 * boxes[0], zeroing_retraction(boxes[0], ibm, s));
+    PetscPrintf(PETSC_COMM_WORLD, "zeroing retraction for %s at d/h %.1f: %.4f\n",
+                std::string(name(ibm.kernel)).c_str(), 0.4 * boxes[0], zeroing_retraction(boxes[0], ibm, s));
     return;
   }
   if (boxes.size() != 2) throw std::invalid_argument("--calibrate needs one or two --boxes");
@@ -161,7 +161,8 @@ void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, int cell
               "steps", "wall [s]", "drag", "vs finest", "order", "corr/step");
   for (const auto& method : methods) {
     std::vector<Towed> runs;
-    for (double c : cells_per_step) runs.push_back(towed_sphere(method, cells_per_diameter, c, reynolds, rise, stepping));
+    for (double c : cells_per_step)
+      runs.push_back(towed_sphere(method, cells_per_diameter, c, reynolds, rise, stepping));
     const double finest = runs.back().drag;
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const Towed& r = runs[i];
@@ -248,7 +249,8 @@ void wall_approach_study(const std::vector<cosim::fluid::BodyOptions>& methods, 
     PetscPrintf(PETSC_COMM_WORLD, " at each nu dt / h^2\n");
     for (std::size_t i = 0; i < runs.size(); ++i) {
       PetscPrintf(PETSC_COMM_WORLD, "  %6.3f:", viscous_numbers[i]);
-      for (double seconds : runs[i].stages.all()) PetscPrintf(PETSC_COMM_WORLD, " %8.2f", 1e3 * seconds / runs[i].steps);
+      for (double seconds : runs[i].stages.all())
+        PetscPrintf(PETSC_COMM_WORLD, " %8.2f", 1e3 * seconds / runs[i].steps);
       PetscPrintf(PETSC_COMM_WORLD, "\n");
     }
   }
@@ -299,8 +301,10 @@ void study(const Settings& s, const std::string& csv) {
       double mean = 0;
       for (double e : errors) mean += e / static_cast<double>(errors.size());
       const auto [lo, hi] = std::minmax_element(errors.begin(), errors.end());
-      PetscPrintf(PETSC_COMM_WORLD, "  Hasimoto d/h %.1f, %s: mean error %+.3f %%, spread over %d positions %.3f %% (%+.3f .. %+.3f)\n",
-                  0.4 * n, label(method).c_str(), 100 * mean, s.positions.count, 100 * (*hi - *lo), 100 * *lo, 100 * *hi);
+      PetscPrintf(PETSC_COMM_WORLD,
+                  "  Hasimoto d/h %.1f, %s: mean error %+.3f %%, spread over %d positions %.3f %% (%+.3f .. %+.3f)\n",
+                  0.4 * n, label(method).c_str(), 100 * mean, s.positions.count, 100 * (*hi - *lo), 100 * *lo,
+                  100 * *hi);
       // The observed order of the mean error; meaningless where a calibration makes it cross zero.
       if (last_n > 0)
         PetscPrintf(PETSC_COMM_WORLD, "  observed order of the mean error from d/h %.1f to %.1f: %.2f\n", 0.4 * last_n,
@@ -334,15 +338,17 @@ int main(int argc, char** argv) {
                "over 1.25 periods)");
   app.add_flag("--oscillating", oscillating, "The oscillating cylinder (D/h 5, 10, 20, two periods) instead");
   std::vector<double> towed;
-  app.add_option("--towed", towed,
-                 "The towed sphere (--diameter cells across) instead, at these time steps in cells the body moves per step");
+  app.add_option(
+      "--towed", towed,
+      "The towed sphere (--diameter cells across) instead, at these time steps in cells the body moves per step");
   double rise = 0;
   app.add_option("--rise", rise, "The towed sphere's speed rises from rest over this time, in d / U (0: at once)")
       ->check(CLI::NonNegativeNumber);
   double reynolds = 1.5;
-  app.add_option("--reynolds", reynolds,
-                 "The towed sphere's and the wall approach's Reynolds number (ten Cate E1 1.5, E4 32); with --moving-frame Hasimoto's, "
-                 "estimated from Stokes drag");
+  app.add_option(
+      "--reynolds", reynolds,
+      "The towed sphere's and the wall approach's Reynolds number (ten Cate E1 1.5, E4 32); with --moving-frame Hasimoto's, "
+      "estimated from Stokes drag");
   app.add_option("--method", method, "ibm, staircase or both")->check(CLI::IsMember({"ibm", "staircase", "both"}));
   app.add_option("--kernel", kernel, "IBM kernel")->check(CLI::IsMember({"roma3", "peskin4", "bao6"}));
   double retraction = -1, curvature = 0;
@@ -387,7 +393,8 @@ int main(int argc, char** argv) {
   std::vector<double> gaps{2, 1, 0.5, 0.25};
   app.add_option("--gaps", gaps, "The wall approach's gaps to the wall in radii (below 3, where it starts)");
   int diameter = 6;
-  app.add_option("--diameter", diameter, "The towed sphere's and the wall approach's cells per diameter")->check(CLI::Range(2, 32));
+  app.add_option("--diameter", diameter, "The towed sphere's and the wall approach's cells per diameter")
+      ->check(CLI::Range(2, 32));
   std::vector<int> duct;
   app.add_option("--duct", duct,
                  "ten Cate's tank seen from the sphere instead (held in a square duct whose walls slide past, at "
@@ -395,8 +402,9 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (theta) s.stepping.theta = moving_steps.theta = *theta;
   if (retraction >= 0) ibm.retraction = cosim::fluid::Retraction{retraction, curvature};
-  ibm.kernel = kernel == "roma3" ? cosim::fluid::DeltaKernel::roma3
-               : kernel == "peskin4" ? cosim::fluid::DeltaKernel::peskin4 : cosim::fluid::DeltaKernel::bao6;
+  ibm.kernel = kernel == "roma3"     ? cosim::fluid::DeltaKernel::roma3
+               : kernel == "peskin4" ? cosim::fluid::DeltaKernel::peskin4
+                                     : cosim::fluid::DeltaKernel::bao6;
   if (method != "staircase") s.methods.push_back(ibm);
   if (method != "ibm") s.methods.push_back(cosim::fluid::FbmOptions{.offset = cosim::fluid::kCalibratedSurfaceOffset});
   s.hasimoto = !only_dfg;

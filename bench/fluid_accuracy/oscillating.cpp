@@ -21,8 +21,8 @@ OscillatingRun oscillating_cylinder(int cells_per_diameter, double periods, cons
                     {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 1e-3});
   const auto bodies = make_bodies(grid, method);
   const auto body = bodies->add({geometry::Cylinder(D / 2, 3 * T),
-                             geometry::Pose({x0, y0, T / 2}, Eigen::Quaterniond::Identity()),
-                             {kOscillationAmplitude * omega, 0, 0}});
+                                 geometry::Pose({x0, y0, T / 2}, Eigen::Quaterniond::Identity()),
+                                 {kOscillationAmplitude * omega, 0, 0}});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
 
   OscillatingRun run;
@@ -37,9 +37,10 @@ OscillatingRun oscillating_cylinder(int cells_per_diameter, double periods, cons
   // next step's end.
   const auto steps = flow.advance_to(periods / kOscillationFrequency, bodies->for_step(), [&](double t) {
     if (flow.time() > 0) record();
-    bodies->move(body, geometry::Pose({x0 + kOscillationAmplitude * std::sin(omega * t), y0, T / 2},
-                                  Eigen::Quaterniond::Identity()),
-             {kOscillationAmplitude * omega * std::cos(omega * t), 0, 0}, Eigen::Vector3d::Zero());
+    bodies->move(
+        body,
+        geometry::Pose({x0 + kOscillationAmplitude * std::sin(omega * t), y0, T / 2}, Eigen::Quaterniond::Identity()),
+        {kOscillationAmplitude * omega * std::cos(omega * t), 0, 0}, Eigen::Vector3d::Zero());
   });
   record();
   const auto n = grid.cells();

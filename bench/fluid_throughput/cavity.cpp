@@ -60,7 +60,8 @@ std::vector<double> centre_line(const NavierStokes& flow) {
 std::unique_ptr<BodyTreatment> sphere(const Grid& grid, CavityBody body) {
   if (body == CavityBody::none) return nullptr;
   auto bodies = body == CavityBody::ibm ? make_bodies(grid, IbmOptions{}) : make_bodies(grid, FbmOptions{});
-  bodies->add({geometry::Sphere(0.125), geometry::Pose({0.5, 0.3, 0.45}, Eigen::Quaterniond::Identity()),
+  bodies->add({geometry::Sphere(0.125),
+               geometry::Pose({0.5, 0.3, 0.45}, Eigen::Quaterniond::Identity()),
                {0, 0.25 * Cavity::kLidVelocity, 0}});
   return bodies;
 }
@@ -70,9 +71,9 @@ std::unique_ptr<BodyTreatment> sphere(const Grid& grid, CavityBody body) {
 ThroughputRun run_cavity(const Cavity& cavity) {
   const MPI_Comm comm = PETSC_COMM_WORLD;
   ThroughputRun run;
-  run.solver = cavity.body == CavityBody::none ? "cosim_fluid"
+  run.solver = cavity.body == CavityBody::none  ? "cosim_fluid"
                : cavity.body == CavityBody::ibm ? "+ibm sphere"
-                                                 : "+staircase";
+                                                : "+staircase";
   run.cavity = cavity;
   MPI_Comm_size(comm, &run.ranks);
   const PeakMemory memory(comm);

@@ -54,7 +54,7 @@ struct ThroughputRun {
   double pressure_seconds_per_step = kNotMeasured;  // wall, slowest rank
   double pressure_iterations_per_step = kNotMeasured;
   double forcing_seconds_per_step = kNotMeasured;  // the immersed boundary's, wall, slowest rank
-  double max_divergence = kNotMeasured;  // over all steps
+  double max_divergence = kNotMeasured;            // over all steps
   MemoryUse memory{kNotMeasured, kNotMeasured};
   std::vector<double> centre_line;  // u(0.5, 0.5, z) at the n cell-centre heights, at the end
   double cell_updates_per_second() const { return static_cast<double>(cavity.cells()) / seconds_per_step; }

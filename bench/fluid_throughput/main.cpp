@@ -21,7 +21,7 @@ using namespace cosim::bench;
 namespace {
 
 constexpr double kGoalBytesPerCell = 0.6 * 1024;  // net of the process baseline
-constexpr double kGoalSpeedup = 2;          // cell-updates per CPU second against OpenFOAM's
+constexpr double kGoalSpeedup = 2;                // cell-updates per CPU second against OpenFOAM's
 
 int rank() {
   int r = 0;

@@ -4,9 +4,7 @@
 
 namespace cosim::bench {
 
-double kinetic_energy(const world::World& world) {
-  return dynamics::kinetic_energy(world.states(), world.inertias());
-}
+double kinetic_energy(const world::World& world) { return dynamics::kinetic_energy(world.states(), world.inertias()); }
 
 double potential_energy(const world::World& world) {
   const auto& forces = world.settings().body_forces;

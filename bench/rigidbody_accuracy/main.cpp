@@ -18,15 +18,19 @@ int main(int argc, char** argv) {
   bool quick = false;
   bool hard = false;
   std::string csv;
-  app.add_flag("--quick", quick, "One run per solver and scene: SI at its defaults, PGS and Jacobi at 20 iterations (seconds)");
-  app.add_flag("--hard", hard, "The stability suite's hard cases (mass and size ratios, pyramids at friction 5, a 20-box tower), 10 s each, soft / SI / PGS / DEM side by side");
+  app.add_flag("--quick", quick,
+               "One run per solver and scene: SI at its defaults, PGS and Jacobi at 20 iterations (seconds)");
+  app.add_flag(
+      "--hard", hard,
+      "The stability suite's hard cases (mass and size ratios, pyramids at friction 5, a 20-box tower), 10 s each, soft / SI / PGS / DEM side by side");
   app.add_option("--csv", csv, "Also write the table to this CSV file");
   CLI11_PARSE(app, argc, argv);
 
   try {
     std::vector<Run> runs;
     print_header();
-    const std::vector<SceneBuilder> scenes = hard ? hard_scenes() : std::vector<SceneBuilder>{build_pyramid, build_box_stack};
+    const std::vector<SceneBuilder> scenes =
+        hard ? hard_scenes() : std::vector<SceneBuilder>{build_pyramid, build_box_stack};
     for (const SceneBuilder& scene : scenes) {
       // A scene at rest is compared with its start; the settling pyramid has no exact end
       // state, so the full sweep compares it with a reference run (quick: no error).

@@ -77,8 +77,10 @@ Run run(const RunSpec& spec, const std::vector<Eigen::Vector3d>& reference) {
   m.drift /= size;
   m.energy_rise /= energy_scale;
   m.kinetic_end = kinetic_energy(world) / energy_scale;
-  if (!reference.empty()) m.error = largest_distance(world.states(), reference) / size;
-  else if (out.scene.at_rest) m.error = largest_distance(world.states(), start) / size;
+  if (!reference.empty())
+    m.error = largest_distance(world.states(), reference) / size;
+  else if (out.scene.at_rest)
+    m.error = largest_distance(world.states(), start) / size;
   m.converged = static_cast<double>(converged) / steps;
   m.mean_iterations = static_cast<double>(iterations) / steps;
   if (settings.solver == world::SolverKind::dem) read_dem_log(dem_log.str(), steps, m);

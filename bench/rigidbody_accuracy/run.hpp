@@ -18,18 +18,18 @@ struct RunSpec {
 // Lengths in units of Scene::size, energies in units of the initial potential energy
 // (floor at z = 0).
 struct Metrics {
-  double penetration = 0.0;   // deepest contact point over the run
-  double drift = 0.0;         // largest horizontal displacement of any body over the run
+  double penetration = 0.0;  // deepest contact point over the run
+  double drift = 0.0;        // largest horizontal displacement of any body over the run
   // Largest distance of a body's end position from the reference's (the start state for a
   // scene at rest); nullopt without a reference.
   std::optional<double> error;
-  double energy_rise = 0.0;   // largest rise of kinetic + potential energy above its running minimum
-  double kinetic_end = 0.0;   // kinetic energy at the end
-  double converged = 0.0;     // fraction of steps whose solve met the tolerance
+  double energy_rise = 0.0;  // largest rise of kinetic + potential energy above its running minimum
+  double kinetic_end = 0.0;  // kinetic energy at the end
+  double converged = 0.0;    // fraction of steps whose solve met the tolerance
   double mean_iterations = 0.0;
-  double dem_warned = 0.0;    // fraction of steps the DEM solver called its dt unstable
+  double dem_warned = 0.0;              // fraction of steps the DEM solver called its dt unstable
   std::optional<double> dem_stable_dt;  // the DEM solver's smallest stable estimate, when it warned
-  double wall_seconds = 0.0;  // stepping only, measurements excluded
+  double wall_seconds = 0.0;            // stepping only, measurements excluded
   double body_steps_per_second = 0.0;
 };
 

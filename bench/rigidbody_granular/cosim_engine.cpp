@@ -38,9 +38,12 @@ solver::DemOptions hertz_mindlin(const PourScene& scene) {
 
 const char* name(world::SolverKind solver) {
   switch (solver) {
-    case world::SolverKind::soft: return "soft";
-    case world::SolverKind::dem: return "DEM";
-    default: return "SI";
+    case world::SolverKind::soft:
+      return "soft";
+    case world::SolverKind::dem:
+      return "DEM";
+    default:
+      return "SI";
   }
 }
 

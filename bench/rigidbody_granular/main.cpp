@@ -74,8 +74,8 @@ void print_ratios(const std::vector<RunResult>& runs, const std::string& peer) {
       if (r.engine != "bullet" && r.engine != "liggghts" && r.bodies == other.bodies && r.dt == other.dt)
         std::printf("%s / %s at N = %zu: body-steps/s %.2fx, max overlap %.2fx, packing %+.2f %%, memory %.3fx\n",
                     r.engine.c_str(), peer.c_str(), r.bodies, rate(r) / rate(other),
-                    r.max_penetration / other.max_penetration,
-                    100 * (r.packing_fraction / other.packing_fraction - 1), r.heap_bytes / other.heap_bytes);
+                    r.max_penetration / other.max_penetration, 100 * (r.packing_fraction / other.packing_fraction - 1),
+                    r.heap_bytes / other.heap_bytes);
   }
 }
 

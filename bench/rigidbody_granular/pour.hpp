@@ -13,22 +13,22 @@ namespace cosim::bench {
 // modulus is glass's 63 GPa reduced by four orders, as DEM practice does: its contact
 // time (about 3 ms at 1 m/s) then spans tens of steps of 0.1 ms.
 struct HertzMaterial {
-  double young = 5e6;       // [Pa]
+  double young = 5e6;  // [Pa]
   double poisson = 0.25;
   double restitution = 0.5;  // normal coefficient; friction is the scene's
 };
 
 struct PourScene {
-  double radius = 0.01;    // [m]
-  double density = 2500;   // [kg/m^3], glass beads
+  double radius = 0.01;   // [m]
+  double density = 2500;  // [kg/m^3], glass beads
   double friction = 0.5;
-  double dt = 1e-3;        // [s]
-  int steps = 500;         // of dt; the DEM engines cover the same time in steps of dem_dt
-  int iterations = 10;     // contact-solver iterations per step (both engines)
-  double margin = 0.002;   // [m]: pairs closer than this are contact candidates (both engines)
-  double half_width = 0;   // the box is [-w, w]^2 x [0, inf)
-  HertzMaterial hertz{};   // the DEM engines' contacts
-  double dem_dt = 1e-4;    // [s]: the DEM engines' step, over the same time (steps * dt)
+  double dt = 1e-3;       // [s]
+  int steps = 500;        // of dt; the DEM engines cover the same time in steps of dem_dt
+  int iterations = 10;    // contact-solver iterations per step (both engines)
+  double margin = 0.002;  // [m]: pairs closer than this are contact candidates (both engines)
+  double half_width = 0;  // the box is [-w, w]^2 x [0, inf)
+  HertzMaterial hertz{};  // the DEM engines' contacts
+  double dem_dt = 1e-4;   // [s]: the DEM engines' step, over the same time (steps * dt)
   std::vector<Eigen::Vector3d> positions;
   std::vector<Eigen::Vector3d> velocities;
 };

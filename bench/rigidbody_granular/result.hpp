@@ -18,11 +18,11 @@ struct RunResult {
   double wall_seconds = 0;
   // Processor time of the run: on a shared machine the rates use it, not the wall's.
   double cpu_seconds = 0;
-  double pairs_tested = 0;   // narrow-phase pair tests over the run
+  double pairs_tested = 0;  // narrow-phase pair tests over the run
   // Live heap held by the engine at the end (malloc's count, mmapped blocks too); for
   // LIGGGHTS, which runs in a child process: its peak resident set above an empty deck's.
   double heap_bytes = 0;
-  double peak_rss_bytes = 0; // of the process so far (LIGGGHTS: of its child process)
+  double peak_rss_bytes = 0;   // of the process so far (LIGGGHTS: of its child process)
   double max_penetration = 0;  // deepest sphere/sphere or sphere/wall overlap at the end [m]
   double mean_height = 0;      // of the sphere centres at the end [m]: did it pack?
   // Height of a uniform bed with the same centre of mass (twice the mean centre height),

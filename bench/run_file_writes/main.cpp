@@ -11,7 +11,9 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double micros(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::micro>(b - a).count(); }
+double micros(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::micro>(b - a).count();
+}
 
 }  // namespace
 
@@ -25,7 +27,8 @@ int main(int argc, char** argv) {
   field::RectilinearGrid grid;
   for (auto& axis : grid.nodes)
     for (int i = 0; i <= 32; ++i) axis.push_back(i);
-  const field::FieldFrame frame{grid, {{"p", 1, std::vector<double>(32768, 1.0)}, {"u", 3, std::vector<double>(3 * 32768, 2.0)}}};
+  const field::FieldFrame frame{
+      grid, {{"p", 1, std::vector<double>(32768, 1.0)}, {"u", 3, std::vector<double>(3 * 32768, 2.0)}}};
   double append = 0, checkpoint = 0, fields = 0;
   int checkpoints = 0, steps = 0;
   for (int k = 0; k < kWindows; ++k) {

@@ -67,7 +67,8 @@ double faces_per_cell(const Mesh& mesh) { return static_cast<double>(mesh.face_c
 // Every algorithm moves its own copy of the same flights, `repeats` times; the fastest repeat
 // is kept, since the machine is shared.
 std::vector<Row> race(const std::string& label, const Mesh& mesh, const std::vector<Flight>& flights, int repeats) {
-  const Domain domain(mesh, {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 0.0});
+  const Domain domain(mesh,
+                      {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 0.0});
   std::vector<Row> rows;
   for (Algorithm algorithm : kAlgorithms) {
     Row row;
@@ -81,7 +82,8 @@ std::vector<Row> race(const std::string& label, const Mesh& mesh, const std::vec
       MoveTally tally;
       const auto start = std::chrono::steady_clock::now();
       for (Flight flight : flights) tally.add(move(algorithm, domain, flight.particle, flight.dt, random));
-      row.seconds = std::min(row.seconds, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      row.seconds =
+          std::min(row.seconds, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       row.tally = tally;
     }
     rows.push_back(row);
@@ -100,13 +102,14 @@ void print_losses(const std::vector<Row>& rows) {
 }
 
 const Row& find(const std::vector<Row>& rows, const std::string& mesh, Algorithm algorithm) {
-  return *std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.mesh == mesh && r.algorithm == algorithm; });
+  return *std::find_if(rows.begin(), rows.end(),
+                       [&](const Row& r) { return r.mesh == mesh && r.algorithm == algorithm; });
 }
 
 void print_speed(const std::vector<Row>& rows, const std::vector<std::string>& meshes, int repeats) {
   std::printf("\nSpeed on unperturbed meshes (straight traversals, same flights for all; fastest of %d)\n", repeats);
-  std::printf("%-22s %6s %6s %8s %11s %11s %11s %6s %14s %20s\n", "mesh", "cells", "faces", "cross/mv", "ours M cr/s", "stoll M cr/s",
-              "hasel M cr/s", "lost", "hasel/stoll-1", "published (S&G)");
+  std::printf("%-22s %6s %6s %8s %11s %11s %11s %6s %14s %20s\n", "mesh", "cells", "faces", "cross/mv", "ours M cr/s",
+              "stoll M cr/s", "hasel M cr/s", "lost", "hasel/stoll-1", "published (S&G)");
   for (const std::string& mesh : meshes) {
     const Row &ours = find(rows, mesh, Algorithm::event_driven), &stoll = find(rows, mesh, Algorithm::stollmeier),
               &hasel = find(rows, mesh, Algorithm::haselbacher);

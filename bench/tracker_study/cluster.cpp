@@ -23,9 +23,8 @@ std::vector<Ball> sphere_cluster(int count, double diameter, double packing, uns
     const double radius = size(random);
     if (offset.norm() * region + radius > region) continue;
     const Ball ball{centre + region * offset, radius};
-    if (std::none_of(balls.begin(), balls.end(), [&](const Ball& b) {
-          return (b.centre - ball.centre).norm() < b.radius + ball.radius;
-        }))
+    if (std::none_of(balls.begin(), balls.end(),
+                     [&](const Ball& b) { return (b.centre - ball.centre).norm() < b.radius + ball.radius; }))
       balls.push_back(ball);
   }
   return balls;
@@ -46,7 +45,8 @@ std::uint64_t morton(const Eigen::Vector3d& x) {
 }  // namespace
 
 std::vector<std::vector<Ball>> groups_of(std::vector<Ball> balls, int size) {
-  std::sort(balls.begin(), balls.end(), [](const Ball& a, const Ball& b) { return morton(a.centre) < morton(b.centre); });
+  std::sort(balls.begin(), balls.end(),
+            [](const Ball& a, const Ball& b) { return morton(a.centre) < morton(b.centre); });
   std::vector<std::vector<Ball>> groups;
   for (std::size_t i = 0; i < balls.size(); i += static_cast<std::size_t>(size))
     groups.emplace_back(balls.begin() + static_cast<long>(i),

@@ -32,9 +32,9 @@ struct Published {
 // Generated: a primitive's next event computed; executed: a state changed or a wall hit.
 constexpr double published_particle_steps = 25.2e6;
 constexpr Published published[] = {
-    {"none", 790, 3.79e10, 7.93e4, 1.0, 790},   {"2^3", 228, 1.09e10, 7.93e4, 3.21, 294},
-    {"4^3", 29.1, 1.20e9, 7.93e4, 17.4, 236},   {"8^3", 4.80, 1.74e8, 7.93e4, 35.8, 86},
-    {"16^3", 1.02, 3.14e7, 7.93e4, 42.2, 27},   {"32^3", 0.291, 7.54e6, 7.93e4, 43.6, 12},
+    {"none", 790, 3.79e10, 7.93e4, 1.0, 790}, {"2^3", 228, 1.09e10, 7.93e4, 3.21, 294},
+    {"4^3", 29.1, 1.20e9, 7.93e4, 17.4, 236}, {"8^3", 4.80, 1.74e8, 7.93e4, 35.8, 86},
+    {"16^3", 1.02, 3.14e7, 7.93e4, 42.2, 27}, {"32^3", 0.291, 7.54e6, 7.93e4, 43.6, 12},
     {"64^3", 0.122, 2.70e6, 7.93e4, 44.5, 8},
 };
 
@@ -49,7 +49,8 @@ std::vector<tracker::Obstacle> cluster_walls() {
   for (const std::vector<Ball>& group : groups_of(sphere_cluster(), 64)) {
     std::vector<csg::Expression> parts;
     for (const Ball& b : group) parts.push_back(csg::ball(b.centre, b.radius));
-    walls.push_back({"cluster part " + std::to_string(walls.size()), csg::Tree(csg::Expression::unite(parts)), false, {}});
+    walls.push_back(
+        {"cluster part " + std::to_string(walls.size()), csg::Tree(csg::Expression::unite(parts)), false, {}});
   }
   return walls;
 }
@@ -110,10 +111,11 @@ Row run_grid(const tracker::Mesh& mesh, const std::vector<tracker::Obstacle>& wa
 int run_pruning(const PruningOptions& o) {
   const tracker::Mesh mesh = unit_box(o.cells);
   const std::vector<tracker::Obstacle> walls = cluster_walls();
-  std::printf("Table 1 (Strobl, Bannerman & Poeschel): 790 balls (diameter 0.035, +-5 %%) in a cluster, as %zu walls "
-              "of <= 64 balls;\n%d^3 tracking cells, %ld particles, %d steps of 3/4 cell; events per particle-step "
-              "(published: per step / 25.2e6 particles)\n\n",
-              walls.size(), o.cells, o.particles, o.steps);
+  std::printf(
+      "Table 1 (Strobl, Bannerman & Poeschel): 790 balls (diameter 0.035, +-5 %%) in a cluster, as %zu walls "
+      "of <= 64 balls;\n%d^3 tracking cells, %ld particles, %d steps of 3/4 cell; events per particle-step "
+      "(published: per step / 25.2e6 particles)\n\n",
+      walls.size(), o.cells, o.particles, o.steps);
   std::printf("%-6s %18s %16s %12s %12s %12s %12s %9s %9s %8s %10s\n", "grid", "prims/cell (max)", "published",
               "generated", "published", "executed", "published", "speed-up", "published", "setup s", "moves/s");
   std::vector<Row> rows;
@@ -121,8 +123,9 @@ int run_pruning(const PruningOptions& o) {
     rows.push_back(run_grid(mesh, walls, n, o));
     const Row& r = rows.back();
     const double steps = static_cast<double>(r.tally.moves);
-    const auto p = std::find_if(std::begin(published), std::end(published),
-                                [&](const Published& q) { return q.grid == (n == 1 ? std::string("none") : std::to_string(n) + "^3"); });
+    const auto p = std::find_if(std::begin(published), std::end(published), [&](const Published& q) {
+      return q.grid == (n == 1 ? std::string("none") : std::to_string(n) + "^3");
+    });
     const bool has = p != std::end(published);
     std::printf("%-6s %11.3g (%4d) %9.3g (%4d) %12.3e %12.3e %12.3e %12.3e %9.1f %9.1f %8.2f %10.3g\n",
                 n == 1 ? "none" : (std::to_string(n) + "^3").c_str(), r.primitives, r.max_primitives,
@@ -166,6 +169,5 @@ int pruning_part(const StudyOptions& options) {
   if (!options.csv.empty()) o.csv = options.csv + "_pruning.csv";
   return run_pruning(o);
 }
-
 
 }  // namespace cosim::bench

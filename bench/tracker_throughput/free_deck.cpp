@@ -12,7 +12,8 @@ using namespace cosim::tracker;
 
 FreeBox::FreeBox(const FreeDeck& deck) {
   BoxSpec spec;
-  for (AxisSpacing& axis : spec.axes) axis = {.min = 0.0, .max = deck.cells * FreeDeck::kCellWidth, .cells = deck.cells};
+  for (AxisSpacing& axis : spec.axes)
+    axis = {.min = 0.0, .max = deck.cells * FreeDeck::kCellWidth, .cells = deck.cells};
   mesh = box_mesh(spec);
   const Boundaries walls{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}),
                          FreeDeck::kMass};

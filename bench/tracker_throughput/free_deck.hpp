@@ -11,11 +11,11 @@
 namespace cosim::bench {
 
 struct FreeDeck {
-  static constexpr double kCellWidth = 1e-5;     // m
-  static constexpr double kMass = 6.63e-26;      // kg, argon
-  static constexpr double kTemperature = 273.15; // K
-  static constexpr double kUnsortDt = 7e-8;      // s, 30 steps of about 2.7 cells each
-  static constexpr double kTimedDt = 7e-9;       // s, about 0.27 cells per step
+  static constexpr double kCellWidth = 1e-5;      // m
+  static constexpr double kMass = 6.63e-26;       // kg, argon
+  static constexpr double kTemperature = 273.15;  // K
+  static constexpr double kUnsortDt = 7e-8;       // s, 30 steps of about 2.7 cells each
+  static constexpr double kTimedDt = 7e-9;        // s, about 0.27 cells per step
   static constexpr int kUnsortSteps = 30;
   static constexpr double kCollideWeight = 7.07e6;  // SPARTA's collide deck: nrho 7.07e22 at 10 per cell
 

@@ -41,27 +41,30 @@ bool check_sphere(const SphereResult& r) {
 }
 
 void print_sphere(const SphereBox& box, const SphereDeck& deck, const SphereResult& r) {
-  std::printf("sphere deck: %d^3 cells of %g m, argon at %g m/s and %g K, n %g m^-3, fnum %g, ball of radius %g "
-              "(diffuse at %g K), %d untimed + %d timed steps of %g s, 1 core\n",
-              SphereDeck::kCells, 2 * SphereDeck::kHalfSide / SphereDeck::kCells, SphereDeck::kSpeed, SphereDeck::kTemperature,
-              SphereDeck::kDensity, SphereDeck::kWeight, SphereDeck::kRadius, SphereDeck::kTemperature, deck.warm_up, deck.steps,
-              SphereDeck::kDt);
-  std::printf("  particles: seeded %lld, %lld when the timing starts, %lld at the end (n (V - V_ball) / fnum = %.0f: "
-              "%+.2f %%), lost %lld, outside %lld\n",
-              r.seeded, r.timed_from, r.particles, SphereBox::stream_count(), 100.0 * (r.particles / SphereBox::stream_count() - 1.0), r.lost,
-              r.outside);
+  std::printf(
+      "sphere deck: %d^3 cells of %g m, argon at %g m/s and %g K, n %g m^-3, fnum %g, ball of radius %g "
+      "(diffuse at %g K), %d untimed + %d timed steps of %g s, 1 core\n",
+      SphereDeck::kCells, 2 * SphereDeck::kHalfSide / SphereDeck::kCells, SphereDeck::kSpeed, SphereDeck::kTemperature,
+      SphereDeck::kDensity, SphereDeck::kWeight, SphereDeck::kRadius, SphereDeck::kTemperature, deck.warm_up,
+      deck.steps, SphereDeck::kDt);
+  std::printf(
+      "  particles: seeded %lld, %lld when the timing starts, %lld at the end (n (V - V_ball) / fnum = %.0f: "
+      "%+.2f %%), lost %lld, outside %lld\n",
+      r.seeded, r.timed_from, r.particles, SphereBox::stream_count(),
+      100.0 * (r.particles / SphereBox::stream_count() - 1.0), r.lost, r.outside);
   std::printf("  %.2f M particle-steps/s (%.2f M per CPU s), %.4f collisions per particle-step\n",
               r.moves_per_second() / 1e6, r.moves_per_cpu_second() / 1e6, r.collisions_per_move());
   // Kn about 0.1: collisions shield the ball, so the drag comes out below the free-molecular one.
-  std::printf("  drag %.2f N (free-molecular closed form %.2f N, ratio %.3f), side force %.2f N, %lld hits: %s\n", r.drag,
-              box.free_molecular_drag(), r.drag / box.free_molecular_drag(),
+  std::printf("  drag %.2f N (free-molecular closed form %.2f N, ratio %.3f), side force %.2f N, %lld hits: %s\n",
+              r.drag, box.free_molecular_drag(), r.drag / box.free_molecular_drag(),
               r.sphere.impulse.tail<2>().norm() * box.mass * SphereDeck::kWeight / (deck.steps * SphereDeck::kDt),
               r.sphere.hits, check_sphere(r) ? "ok" : "FAILED");
 }
 
 void print(const RunResult& r) {
-  std::printf("%-13s %-20s %5d %8.2f %8.2f %7.0f %10.3f %6lld %7lld %9.1e  %s\n", std::string(name(r.options.algorithm)).c_str(),
-              label(r.options).c_str(), r.options.sort_every, r.moves_per_second() / 1e6, r.moves_per_cpu_second() / 1e6, r.bytes_per_particle,
+  std::printf("%-13s %-20s %5d %8.2f %8.2f %7.0f %10.3f %6lld %7lld %9.1e  %s\n",
+              std::string(name(r.options.algorithm)).c_str(), label(r.options).c_str(), r.options.sort_every,
+              r.moves_per_second() / 1e6, r.moves_per_cpu_second() / 1e6, r.bytes_per_particle,
               static_cast<double>(r.tally.faces_crossed + r.tally.boundary_hits) / r.tally.moves, r.lost, r.outside,
               r.energy_drift, check(r) ? "ok" : "FAILED");
 }
@@ -73,7 +76,8 @@ void write_csv(const std::string& path, const FreeDeck& deck, const std::vector<
   for (const RunResult& r : runs)
     out << deck.cells << ',' << deck.per_cell << ',' << r.particles << ',' << r.options.steps << ','
         << name(r.options.algorithm) << ',' << (r.options.storage == Storage::particle ? "particle" : "compact") << ','
-        << r.options.sort_every << ',' << r.moves_per_second() << ',' << r.moves_per_cpu_second() << ',' << r.bytes_per_particle << ','
+        << r.options.sort_every << ',' << r.moves_per_second() << ',' << r.moves_per_cpu_second() << ','
+        << r.bytes_per_particle << ','
         << static_cast<double>(r.tally.faces_crossed + r.tally.boundary_hits) / r.tally.moves << ',' << r.lost << ','
         << r.outside << ',' << r.energy_drift << '\n';
 }
@@ -92,12 +96,13 @@ bool run_free_deck(const FreeDeck& deck, int steps, int sort_every, const std::s
   std::vector<cosim::tracker::Particle> particles = fill(deck, random);
   // Unsort: the particles leave the cells they were created in, in array order.
   for (int step = 0; step < FreeDeck::kUnsortSteps; ++step)
-    for (cosim::tracker::Particle& p : particles) move(Algorithm::event_driven, *box.domain, p, FreeDeck::kUnsortDt, random);
+    for (cosim::tracker::Particle& p : particles)
+      move(Algorithm::event_driven, *box.domain, p, FreeDeck::kUnsortDt, random);
 
   std::printf("free deck: %d^3 cells of %g m, %lld particles (%d per cell), %d timed steps of %g s, 1 core\n",
               deck.cells, FreeDeck::kCellWidth, deck.particle_count(), deck.per_cell, steps, FreeDeck::kTimedDt);
-  std::printf("%-13s %-20s %5s %8s %8s %7s %10s %6s %7s %9s\n", "algorithm", "storage", "sort", "M mv/s", "M mv/cpu", "B/part",
-              "cross/move", "lost", "outside", "dE/E");
+  std::printf("%-13s %-20s %5s %8s %8s %7s %10s %6s %7s %9s\n", "algorithm", "storage", "sort", "M mv/s", "M mv/cpu",
+              "B/part", "cross/move", "lost", "outside", "dE/E");
   const std::vector<RunOptions> plan = {
       {Algorithm::event_driven, Storage::particle, steps, 0},
       {Algorithm::stollmeier, Storage::particle, steps, 0},
@@ -122,9 +127,10 @@ bool run_free_deck(const FreeDeck& deck, int steps, int sort_every, const std::s
     if (r.options.collide)
       std::printf("collide deck: %.2f M particle-steps/s per core, %.4f collisions per particle-step\n",
                   r.moves_per_second() / 1e6, static_cast<double>(r.collisions) / static_cast<double>(r.tally.moves));
-  std::printf("goal: <= %.0f bytes per particle plus the logical state: Swarm %zu + 8 per obstacle (Particle %zu; "
-              "a sorted swarm keeps a second copy as scratch)\n",
-              kGoalBytesPerParticle, sizeof(cosim::tracker::StoredParticle), sizeof(cosim::tracker::Particle));
+  std::printf(
+      "goal: <= %.0f bytes per particle plus the logical state: Swarm %zu + 8 per obstacle (Particle %zu; "
+      "a sorted swarm keeps a second copy as scratch)\n",
+      kGoalBytesPerParticle, sizeof(cosim::tracker::StoredParticle), sizeof(cosim::tracker::Particle));
   if (!csv.empty()) write_csv(csv, deck, runs);
   return ok;
 }
@@ -140,16 +146,21 @@ int main(int argc, char** argv) {
   std::string csv, only, storage, decks;
   app.add_option("--cells", deck.cells, "free deck: cells per side of the box")->check(CLI::Range(2, 400));
   app.add_option("--per-cell", deck.per_cell, "free deck: particles per cell")->check(CLI::Range(1, 1000));
-  app.add_option("--steps", steps, "timed steps (default 100 at dt 7e-9 s in the free deck, 1000 at 1e-5 s in the sphere deck)")
+  app.add_option("--steps", steps,
+                 "timed steps (default 100 at dt 7e-9 s in the free deck, 1000 at 1e-5 s in the sphere deck)")
       ->check(CLI::Range(1, 100000));
-  app.add_option("--warm-up", sphere.warm_up, "sphere deck: untimed steps after seeding the stream")->check(CLI::Range(0, 100000));
-  app.add_option("--sort-every", sort_every, "steps between sorts by cell in the sorted runs")->check(CLI::Range(1, 100000));
+  app.add_option("--warm-up", sphere.warm_up, "sphere deck: untimed steps after seeding the stream")
+      ->check(CLI::Range(0, 100000));
+  app.add_option("--sort-every", sort_every, "steps between sorts by cell in the sorted runs")
+      ->check(CLI::Range(1, 100000));
   app.add_flag("--quick", quick, "free deck 24^3 cells and 5 steps, sphere deck 20 + 20 steps: the ctest");
   app.add_option("--deck", decks, "run only this deck (free, sphere)")->check(CLI::IsMember({"free", "sphere"}));
-  app.add_option("--algorithm", only, "free deck: run only this algorithm's rows (event-driven, stollmeier, haselbacher)");
-  app.add_option("--storage", storage,
-                 "free deck: run only this storage's rows (particle, swarm), or one Swarm row (unsorted, sorted, cluster, "
-                 "collisions)")
+  app.add_option("--algorithm", only,
+                 "free deck: run only this algorithm's rows (event-driven, stollmeier, haselbacher)");
+  app.add_option(
+         "--storage", storage,
+         "free deck: run only this storage's rows (particle, swarm), or one Swarm row (unsorted, sorted, cluster, "
+         "collisions)")
       ->check(CLI::IsMember({"particle", "swarm", "unsorted", "sorted", "cluster", "collisions"}));
   app.add_option("--csv", csv, "also write the free deck's rows to this file");
   CLI11_PARSE(app, argc, argv);
@@ -170,7 +181,8 @@ int main(int argc, char** argv) {
     ok = check_sphere(r) && ok;
   }
   if (!ok)
-    std::printf("FAILED: event-driven lost particles, the kinetic energy drifted, the cluster was never hit, or the sphere "
-                "deck failed its checks\n");
+    std::printf(
+        "FAILED: event-driven lost particles, the kinetic energy drifted, the cluster was never hit, or the sphere "
+        "deck failed its checks\n");
   return ok ? 0 : 1;
 }

@@ -79,8 +79,9 @@ RunResult run(const FreeBox& box, const std::vector<Particle>& particles, const 
     }
     if (options.sort_every > 0 && step % options.sort_every == 0) swarm.sort_by_cell(box.mesh.cell_count());
     if (collider) result.collisions += collider->collide(swarm, FreeDeck::kTimedDt);
-    swarm.move_all({.domain = domain, .obstacles = obstacles, .random = random, .moves = result.tally, .tallies = tallies},
-                   FreeDeck::kTimedDt);
+    swarm.move_all(
+        {.domain = domain, .obstacles = obstacles, .random = random, .moves = result.tally, .tallies = tallies},
+        FreeDeck::kTimedDt);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;

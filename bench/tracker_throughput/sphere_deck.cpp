@@ -20,7 +20,8 @@ using namespace cosim::tracker;
 namespace {
 
 const Vec3 kStreamVelocity(SphereDeck::kSpeed, 0.0, 0.0);
-constexpr double kBallVolume = 4.0 / 3.0 * std::numbers::pi * SphereDeck::kRadius * SphereDeck::kRadius * SphereDeck::kRadius;
+constexpr double kBallVolume =
+    4.0 / 3.0 * std::numbers::pi * SphereDeck::kRadius * SphereDeck::kRadius * SphereDeck::kRadius;
 
 }  // namespace
 
@@ -35,7 +36,9 @@ SphereBox::SphereBox()
   mesh = box_mesh(spec);
   domain = std::make_unique<Domain>(
       mesh, Boundaries{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::open}), mass});
-  sphere = Obstacles(mesh, {{"sphere", csg::Tree(csg::ball(Vec3::Zero(), SphereDeck::kRadius)), false,
+  sphere = Obstacles(mesh, {{"sphere",
+                             csg::Tree(csg::ball(Vec3::Zero(), SphereDeck::kRadius)),
+                             false,
                              {.kind = BoundaryKind::diffuse, .temperature = SphereDeck::kTemperature}}});
   std::vector<Index> all(mesh.patches.size());
   for (std::size_t p = 0; p < all.size(); ++p) all[p] = static_cast<Index>(p);
@@ -53,7 +56,8 @@ double SphereBox::stream_count() {
 }
 
 double SphereBox::free_molecular_drag() const {
-  return dsmc::sphere_drag(SphereDeck::kDensity, mass, SphereDeck::kSpeed, SphereDeck::kTemperature, SphereDeck::kRadius);
+  return dsmc::sphere_drag(SphereDeck::kDensity, mass, SphereDeck::kSpeed, SphereDeck::kTemperature,
+                           SphereDeck::kRadius);
 }
 
 SphereResult run_sphere(const SphereBox& box, const SphereDeck& deck) {

@@ -13,13 +13,13 @@
 namespace cosim::bench {
 
 struct SphereDeck {
-  static constexpr double kHalfSide = 5.0;      // m
-  static constexpr int kCells = 22;             // per side
-  static constexpr double kRadius = 1.0;        // m, at the origin
-  static constexpr double kSpeed = 2500.0;      // m/s along +x
-  static constexpr double kTemperature = 300.0; // K, the stream's and the wall's
-  static constexpr double kDensity = 7.03e18;   // m^-3
-  static constexpr double kDt = 1e-5;           // s
+  static constexpr double kHalfSide = 5.0;       // m
+  static constexpr int kCells = 22;              // per side
+  static constexpr double kRadius = 1.0;         // m, at the origin
+  static constexpr double kSpeed = 2500.0;       // m/s along +x
+  static constexpr double kTemperature = 300.0;  // K, the stream's and the wall's
+  static constexpr double kDensity = 7.03e18;    // m^-3
+  static constexpr double kDt = 1e-5;            // s
   // Real molecules per simulator, chosen for SPARTA's 106,000 simulators in the steady flow.
   // The undisturbed stream would hold n (V_box - V_ball) / fnum = 102,000 of them; the flow
   // around the ball holds about 4 % more (molecules re-emitted at 300 K linger in front of
@@ -53,11 +53,11 @@ struct SphereBox {
 
 struct SphereResult {
   long long seeded = 0, timed_from = 0, particles = 0;  // at the start of the warm-up, of the timed steps, at the end
-  double seconds = 0.0, cpu_seconds = 0.0;  // the timed steps: sort, collisions, moves, inflow
-  tracker::MoveTally tally;  // the timed steps (the inflow's partial moves included)
-  long long collisions = 0;  // the timed steps'
-  long long lost = 0;        // is_lost at the end, plus those the tracking counted lost in any step
-  long long outside = 0;     // outside their cell by more than the tolerance at the end
+  double seconds = 0.0, cpu_seconds = 0.0;              // the timed steps: sort, collisions, moves, inflow
+  tracker::MoveTally tally;                             // the timed steps (the inflow's partial moves included)
+  long long collisions = 0;                             // the timed steps'
+  long long lost = 0;             // is_lost at the end, plus those the tracking counted lost in any step
+  long long outside = 0;          // outside their cell by more than the tolerance at the end
   tracker::ObstacleTally sphere;  // the timed steps'
   double drag = 0.0;              // N along the stream over the timed steps
 

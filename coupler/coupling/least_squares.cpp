@@ -7,8 +7,7 @@ namespace cosim::coupling {
 // Gram-Schmidt builds the QR one column at a time, which is what lets a column be judged
 // against exactly the columns kept before it. Orthogonalising twice ("twice is enough",
 // Giraud et al. 2005) keeps Q as orthogonal as Householder would.
-LeastSquares filtered_least_squares(const Eigen::MatrixXd& v, const Eigen::VectorXd& b,
-                                    double eps) {
+LeastSquares filtered_least_squares(const Eigen::MatrixXd& v, const Eigen::VectorXd& b, double eps) {
   const Eigen::Index n = v.cols();
   if (n == 0) return {Eigen::VectorXd(0), 0};
   const double threshold = eps * v.colwise().norm().maxCoeff();
@@ -32,8 +31,7 @@ LeastSquares filtered_least_squares(const Eigen::MatrixXd& v, const Eigen::Vecto
     kept.push_back(j);
   }
   const Eigen::Index p = static_cast<Eigen::Index>(kept.size());
-  const Eigen::VectorXd y =
-      r.topLeftCorner(p, p).triangularView<Eigen::Upper>().solve(q.leftCols(p).transpose() * b);
+  const Eigen::VectorXd y = r.topLeftCorner(p, p).triangularView<Eigen::Upper>().solve(q.leftCols(p).transpose() * b);
   LeastSquares fit{Eigen::VectorXd::Zero(n), p};
   for (Eigen::Index i = 0; i < p; ++i) fit.alpha(kept[static_cast<std::size_t>(i)]) = y(i);
   return fit;

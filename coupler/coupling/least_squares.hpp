@@ -8,8 +8,8 @@
 namespace cosim::coupling {
 
 struct LeastSquares {
-  Eigen::VectorXd alpha;   // one coefficient per column of V
-  Eigen::Index rank = 0;   // how many columns survived the filter
+  Eigen::VectorXd alpha;  // one coefficient per column of V
+  Eigen::Index rank = 0;  // how many columns survived the filter
 };
 
 // Returns alpha minimising |V alpha - b| over the columns of V that survive the filter
@@ -18,7 +18,6 @@ struct LeastSquares {
 // the QR of the kept columns, is at most eps times the largest column norm of V. Measuring
 // against the largest column rather than R_00 keeps the test meaningful when the first
 // column is itself zero.
-LeastSquares filtered_least_squares(const Eigen::MatrixXd& v, const Eigen::VectorXd& b,
-                                    double eps);
+LeastSquares filtered_least_squares(const Eigen::MatrixXd& v, const Eigen::VectorXd& b, double eps);
 
 }  // namespace cosim::coupling

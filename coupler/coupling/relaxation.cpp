@@ -15,9 +15,7 @@ class Constant final : public Accelerator {
  public:
   explicit Constant(double w) : w_(w) {}
   void new_window() override {}
-  Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& hx) override {
-    return x + w_ * (hx - x);
-  }
+  Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& hx) override { return x + w_ * (hx - x); }
 
  private:
   double w_;

@@ -51,7 +51,8 @@ Eigen::VectorXd non_negative_least_squares(const Eigen::MatrixXd& a, const Eigen
 
 // Fits `constant` + sum of per-unit coefficients: rows are the observations' counts over
 // their measured value (`measured` > 0 only), then the prior's rows.
-void fit_linear(const std::vector<Observation>& observations, const std::function<const Units&(const Observation&)>& counts,
+void fit_linear(const std::vector<Observation>& observations,
+                const std::function<const Units&(const Observation&)>& counts,
                 const std::function<double(const Observation&)>& measured, double prior_constant, const Units& prior,
                 double prior_weight, double& constant, Units& coefficients) {
   std::vector<std::string> units;

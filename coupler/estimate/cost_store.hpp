@@ -19,13 +19,13 @@ namespace cosim::estimate {
 inline constexpr const char* kCoupler = "coupler";
 
 struct RunRecord {
-  std::string scene;             // the scene as scene_key() names it (run_record.hpp)
-  std::string build;             // git hash of the build that ran it
-  bool calibration = false;      // run by `cosim calibrate`
+  std::string scene;         // the scene as scene_key() names it (run_record.hpp)
+  std::string build;         // git hash of the build that ran it
+  bool calibration = false;  // run by `cosim calibrate`
   double windows = 0;
-  double iterations = 0;         // over all windows
+  double iterations = 0;  // over all windows
   double wall_seconds = 0;
-  double disk_bytes = 0;         // the run file's size at the end
+  double disk_bytes = 0;  // the run file's size at the end
   // Per program; kCoupler's: steps 1, per_step what coupler_work() counts (estimate.hpp),
   // seconds what the wall time leaves after the programs' steps.
   std::map<std::string, Observation> programs;

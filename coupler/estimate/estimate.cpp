@@ -15,7 +15,8 @@ namespace {
 // `cosim calibrate` on the 2-core development machine (bench/estimate/README.md). Their
 // weight in a fit is small, so the first measured runs here replace them.
 Coefficients prior(const std::string& program) {
-  if (program == "fluid") return {2.3e-4, {{"cells", 7.6e-7}, {"markers", 1.1e-5}}, 55e6, {{"cells", 670}, {"markers", 6.6e3}}};
+  if (program == "fluid")
+    return {2.3e-4, {{"cells", 7.6e-7}, {"markers", 1.1e-5}}, 55e6, {{"cells", 670}, {"markers", 6.6e3}}};
   if (program == "rigidbody") return {1.5e-6, {{"bodies", 6e-7}}, 18e6, {{"bodies", 1.15e5}}};
   if (program == "tracker")
     return {0,
@@ -28,8 +29,12 @@ Coefficients prior(const std::string& program) {
             {{"particles", 245}, {"cells", 1.3e3}}};
   if (program == kCoupler)
     return {0,
-            {{"exchanges", 0}, {"body_rows", 1.2e-4}, {"field_bytes", 3.5e-8}, {"start:fluid", 1.2},
-             {"start:rigidbody", 0}, {"start:tracker", 1.0}},
+            {{"exchanges", 0},
+             {"body_rows", 1.2e-4},
+             {"field_bytes", 3.5e-8},
+             {"start:fluid", 1.2},
+             {"start:rigidbody", 0},
+             {"start:tracker", 1.0}},
             0,
             {}};
   return {};  // an external program: only what it measured
@@ -47,8 +52,7 @@ bool empty(const Coefficients& c) {
 // counted), or the window over its fixed step rounded up to whole steps.
 double steps_per_exchange(const scene::Scene& scene, const scene::Participant& p, const ProgramWork* work,
                           const RunRecord* last) {
-  if (last != nullptr && last->programs.contains(p.name) && last->iterations > 0 &&
-      last->programs.at(p.name).steps > 0)
+  if (last != nullptr && last->programs.contains(p.name) && last->iterations > 0 && last->programs.at(p.name).steps > 0)
     return last->programs.at(p.name).steps / last->iterations;
   if (work != nullptr && work->dt > 0 && (!(p.dt > 0) || work->dt < p.dt))
     return std::max(1.0, scene.coupling.window / work->dt);
@@ -165,7 +169,8 @@ Estimate estimate(const scene::Scene& scene, const std::vector<scene::Participan
   // With nobody on one side of the exchange, an implicit scheme has no loop to close and
   // takes one pass per window (coupler/run/window.cpp).
   const auto provides = [&](scene::Data d) {
-    return std::any_of(start.begin(), start.end(), [&](const scene::Participant& p) { return scene::has(p.provides, d); });
+    return std::any_of(start.begin(), start.end(),
+                       [&](const scene::Participant& p) { return scene::has(p.provides, d); });
   };
   const bool implicit =
       scene::is_implicit(scene.coupling.scheme) && provides(scene::Data::Poses) && provides(scene::Data::Forces);
@@ -220,9 +225,9 @@ std::string estimate_line(const Estimate& e) {
   if (top != e.programs.end() && top->seconds > 0 && e.wall_seconds > 0) {
     const double share = 100 * top->seconds / e.wall_seconds;
     line += fmt::format(" ({} {:.0f} %: ", top->name, std::min(share, 100.0));
-    line += top->largest_unit.empty() ? fmt::format("{} steps)", count(top->steps))
-                                      : fmt::format("{} {} x {} steps)", count(top->largest_count), top->largest_unit,
-                                                    count(top->steps));
+    line += top->largest_unit.empty()
+                ? fmt::format("{} steps)", count(top->steps))
+                : fmt::format("{} {} x {} steps)", count(top->largest_count), top->largest_unit, count(top->steps));
   }
   std::string memory, unknown;
   for (const auto& p : e.programs) {

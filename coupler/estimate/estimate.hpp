@@ -21,19 +21,19 @@ struct ProgramEstimate {
   double peak_bytes = 0;     // its largest process
   std::string largest_unit;  // what its step's cost grows with most ("cells"), empty if nothing
   double largest_count = 0;
-  bool modelled = true;      // false: nothing measured and no prior (an external program)
-  bool grows = false;        // an inflow adds to the counts it was estimated from
+  bool modelled = true;  // false: nothing measured and no prior (an external program)
+  bool grows = false;    // an inflow adds to the counts it was estimated from
 };
 
 struct Estimate {
   double wall_seconds = 0;
   double disk_bytes = 0;
   double iterations_per_window = 1;
-  bool iterations_measured = false;  // from this scene's last run, not assumed
+  bool iterations_measured = false;       // from this scene's last run, not assumed
   std::vector<ProgramEstimate> programs;  // the participants the run starts
-  std::size_t runs_measured = 0;     // records of this build the models were fitted to
-  std::size_t runs_other_builds = 0; // records of other builds, used where this build has none
-  bool scene_measured = false;       // scaled by this scene's own last run
+  std::size_t runs_measured = 0;          // records of this build the models were fitted to
+  std::size_t runs_other_builds = 0;      // records of other builds, used where this build has none
+  bool scene_measured = false;            // scaled by this scene's own last run
 };
 
 // Coupling iterations per window assumed for an implicit scheme before a scene has run:

@@ -34,7 +34,8 @@ std::string refused_message(const scene::Scene& scene, const std::vector<std::st
 
 SectionsRead read_sections(const scene::Scene& scene, const std::vector<scene::Participant>& start) {
   std::string pattern = (fs::temp_directory_path() / "cosim-work-XXXXXX").string();
-  if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot create a folder in " + fs::temp_directory_path().string());
+  if (mkdtemp(pattern.data()) == nullptr)
+    throw std::runtime_error("cannot create a folder in " + fs::temp_directory_path().string());
   const fs::path dir = pattern;
   SectionsRead out;
   try {

@@ -12,7 +12,7 @@
 namespace cosim::estimate {
 
 struct SectionsRead {
-  std::vector<std::string> refused;           // programs that refused their section (each said why)
+  std::vector<std::string> refused;         // programs that refused their section (each said why)
   std::map<std::string, ProgramWork> work;  // the others' reports, by participant name
 };
 

@@ -18,8 +18,8 @@ std::string scene_key(const scene::Scene& scene) {
   return fmt::format("{} {:016x}", std::filesystem::absolute(scene.file).lexically_normal().string(), hash);
 }
 
-RunRecord run_record(const scene::Scene& scene, const std::map<std::string, ProgramWork>& work,
-                     const RunTotals& totals, const std::string& build) {
+RunRecord run_record(const scene::Scene& scene, const std::map<std::string, ProgramWork>& work, const RunTotals& totals,
+                     const std::string& build) {
   RunRecord r;
   r.scene = scene_key(scene);
   r.build = build;

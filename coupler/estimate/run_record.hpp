@@ -29,7 +29,7 @@ inline constexpr const char* kCalibrationEnv = "COSIM_CALIBRATION";
 // an edited scene (another grid, step or window) is not estimated from its former runs.
 std::string scene_key(const scene::Scene& scene);
 
-RunRecord run_record(const scene::Scene& scene, const std::map<std::string, ProgramWork>& work,
-                     const RunTotals& totals, const std::string& build);
+RunRecord run_record(const scene::Scene& scene, const std::map<std::string, ProgramWork>& work, const RunTotals& totals,
+                     const std::string& build);
 
 }  // namespace cosim::estimate

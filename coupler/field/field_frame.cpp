@@ -67,9 +67,8 @@ std::string attribute_problem(const PointSet& set, const PointAttribute& a) {
 
 bool dataset_name(const std::string& name) {
   // "a/b" would nest and "." is the group itself; NUL would end HDF5's C string too.
-  return !name.empty() && name != "." && std::none_of(name.begin(), name.end(), [](char c) {
-    return c == '/' || control(c);
-  });
+  return !name.empty() && name != "." &&
+         std::none_of(name.begin(), name.end(), [](char c) { return c == '/' || control(c); });
 }
 
 std::size_t cell_count(const Grid& grid) {
@@ -110,8 +109,8 @@ std::string block_problem(const CellBlock& b, const std::array<std::size_t, 3>& 
   std::size_t n = 1;
   for (std::size_t a = 0; a < 3; ++a) {
     if (!(b.lo[a] <= b.hi[a] && b.hi[a] <= cells[a]))
-      return "a block of cells [" + std::to_string(b.lo[a]) + ", " + std::to_string(b.hi[a]) + ") along " +
-             "xyz"[a] + ", where the grid has " + std::to_string(cells[a]);
+      return "a block of cells [" + std::to_string(b.lo[a]) + ", " + std::to_string(b.hi[a]) + ") along " + "xyz"[a] +
+             ", where the grid has " + std::to_string(cells[a]);
     n *= b.hi[a] - b.lo[a];
   }
   if (b.fields.size() != fields.size()) return "a block of " + std::to_string(b.fields.size()) + " fields";
@@ -141,8 +140,9 @@ void place(const CellBlock& b, const std::array<std::size_t, 3>& cells, std::vec
     const double* from = b.fields[k].values.data();
     for (std::size_t z = b.lo[2]; z < b.hi[2]; ++z)
       for (std::size_t y = b.lo[1]; y < b.hi[1]; ++y, from += row)
-        std::copy_n(from, row,
-                    whole[k].values.begin() + static_cast<std::ptrdiff_t>(width * ((z * cells[1] + y) * cells[0] + b.lo[0])));
+        std::copy_n(
+            from, row,
+            whole[k].values.begin() + static_cast<std::ptrdiff_t>(width * ((z * cells[1] + y) * cells[0] + b.lo[0])));
   }
 }
 

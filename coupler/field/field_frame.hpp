@@ -16,9 +16,7 @@ namespace cosim::field {
 struct RectilinearGrid {
   std::array<std::vector<double>, 3> nodes;  // x, y, z
   // Cells along each axis: one fewer than nodes.
-  std::array<std::size_t, 3> cells() const {
-    return {nodes[0].size() - 1, nodes[1].size() - 1, nodes[2].size() - 1};
-  }
+  std::array<std::size_t, 3> cells() const { return {nodes[0].size() - 1, nodes[1].size() - 1, nodes[2].size() - 1}; }
 };
 
 // Unstructured convex polyhedra (the tracker's meshes) as XDMF reads them: a "Mixed"

@@ -16,9 +16,7 @@ namespace cosim::launcher {
 namespace fs = std::filesystem;
 namespace {
 
-bool executable(const fs::path& p) {
-  return fs::is_regular_file(p) && access(p.c_str(), X_OK) == 0;
-}
+bool executable(const fs::path& p) { return fs::is_regular_file(p) && access(p.c_str(), X_OK) == 0; }
 
 }  // namespace
 
@@ -33,28 +31,25 @@ std::optional<fs::path> find_program(const std::string& program, const fs::path&
   return std::nullopt;
 }
 
-std::vector<std::string> participant_command(const scene::Scene& scene,
-                                             const scene::Participant& p,
+std::vector<std::string> participant_command(const scene::Scene& scene, const scene::Participant& p,
                                              const fs::path& programs_dir) {
   std::vector<std::string> command = p.command;
   if (command.empty() && scene::is_builtin(p.name)) command = {"cosim-" + p.name};
   const std::string key = "participants." + p.name + ".command";
-  if (command.empty())
-    throw scene::SceneError(scene.file.string(), p.line, key, "", "no command to start it");
+  if (command.empty()) throw scene::SceneError(scene.file.string(), p.line, key, "", "no command to start it");
   const auto program = find_program(command[0], programs_dir);
   if (!program)
     throw scene::SceneError(scene.file.string(), p.line, key, command[0],
-                            "program not found next to cosim (" + programs_dir.string() +
-                                ") nor on PATH");
+                            "program not found next to cosim (" + programs_dir.string() + ") nor on PATH");
   command[0] = program->string();
   if (!p.placement.local())
-    return placed_command(scene, p, std::move(command), programs_dir,
-                          {protocol::kEndpointEnv, protocol::kParticipantEnv, protocol::kHeartbeatEnv,
-                           protocol::curve::kServerKeyEnv,
-                           protocol::curve::kPublicKeyEnv, protocol::curve::kSecretKeyEnv});
+    return placed_command(
+        scene, p, std::move(command), programs_dir,
+        {protocol::kEndpointEnv, protocol::kParticipantEnv, protocol::kHeartbeatEnv, protocol::curve::kServerKeyEnv,
+         protocol::curve::kPublicKeyEnv, protocol::curve::kSecretKeyEnv});
   if (p.ranks > 1)
-    command.insert(command.begin(), {launcher_path(scene, p, "mpirun", programs_dir, "participants." + p.name + ".ranks",
-                                                   std::to_string(p.ranks)),
+    command.insert(command.begin(), {launcher_path(scene, p, "mpirun", programs_dir,
+                                                   "participants." + p.name + ".ranks", std::to_string(p.ranks)),
                                      "-n", std::to_string(p.ranks)});
   return command;
 }

@@ -18,8 +18,7 @@ namespace cosim::launcher {
 // on other hosts, under mpirun or srun as placed_command() says.
 // Throws scene::SceneError naming participants.<name>.command when it cannot be found,
 // so a wrong scene fails before any process starts.
-std::vector<std::string> participant_command(const scene::Scene& scene,
-                                             const scene::Participant& p,
+std::vector<std::string> participant_command(const scene::Scene& scene, const scene::Participant& p,
                                              const std::filesystem::path& programs_dir);
 
 // `program` as found next to cosim (programs_dir) or on PATH; a path with a '/' is taken as

@@ -17,7 +17,8 @@ std::string joined(const std::vector<std::string>& items) {
 // The key that placed the participant, for errors.
 std::string placement_key(const scene::Participant& p) {
   const auto& pl = p.placement;
-  return "participants." + p.name + "." + (pl.hostfile.empty() ? pl.het_group >= 0 ? "het_group" : "hosts" : "hostfile");
+  return "participants." + p.name + "." +
+         (pl.hostfile.empty() ? pl.het_group >= 0 ? "het_group" : "hosts" : "hostfile");
 }
 
 std::string placement_value(const scene::Participant& p) {
@@ -49,8 +50,8 @@ std::vector<std::string> placed_command(const scene::Scene& scene, const scene::
     // one allocation run side by side instead of waiting for each other.
     command = {launcher_path(scene, p, "srun", programs_dir, placement_key(p), placement_value(p))};
     if (!pl.hosts.empty())
-      command.insert(command.end(), {"--nodelist=" + joined(pl.hosts),
-                                     "--nodes=" + std::to_string(pl.hosts.size()), tasks, "--exact"});
+      command.insert(command.end(), {"--nodelist=" + joined(pl.hosts), "--nodes=" + std::to_string(pl.hosts.size()),
+                                     tasks, "--exact"});
     else if (!pl.hostfile.empty())
       command.insert(command.end(), {"--nodefile=" + pl.hostfile.string(), tasks, "--exact"});
     else if (pl.het_group >= 0)

@@ -28,8 +28,7 @@ std::string describe(int status) {
 
 }  // namespace
 
-Process::Process(std::string name, const std::vector<std::string>& argv,
-                 const std::map<std::string, std::string>& env)
+Process::Process(std::string name, const std::vector<std::string>& argv, const std::map<std::string, std::string>& env)
     : name_(std::move(name)) {
   if (argv.empty()) throw std::invalid_argument("participant '" + name_ + "': empty command");
   // Everything the child needs is prepared before fork: after it only async-signal-safe
@@ -94,8 +93,7 @@ void Process::ended(int status, const rusage& usage) {
 void Process::stop(std::chrono::milliseconds grace) {
   using clock = std::chrono::steady_clock;
   const auto wait_until = [this](clock::time_point deadline) {
-    while (!poll() && clock::now() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    while (!poll() && clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     return poll().has_value();
   };
   if (pid_ <= 0) return;

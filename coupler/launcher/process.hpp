@@ -18,8 +18,7 @@ namespace cosim::launcher {
 class Process {
  public:
   // Starts argv[0] (resolved with PATH) with `env` added to this process's environment.
-  Process(std::string name, const std::vector<std::string>& argv,
-          const std::map<std::string, std::string>& env);
+  Process(std::string name, const std::vector<std::string>& argv, const std::map<std::string, std::string>& env);
   Process(Process&&) noexcept;
   Process& operator=(Process&&) = delete;
   ~Process();  // kills the group if still running

@@ -22,8 +22,7 @@ constexpr hsize_t kMaxChunkBytes = 256 << 10;
 
 hsize_t chunk_rows(hsize_t rows, hsize_t columns) {
   const hsize_t row_bytes = columns * sizeof(double);
-  return std::max<hsize_t>(1, std::clamp(rows, kMinChunkBytes / row_bytes,
-                                         kMaxChunkBytes / row_bytes));
+  return std::max<hsize_t>(1, std::clamp(rows, kMinChunkBytes / row_bytes, kMaxChunkBytes / row_bytes));
 }
 
 // {rows, columns} of a 1-d (columns 1) or 2-d dataset.
@@ -45,28 +44,24 @@ FirstRows first_rows(hid_t ds, hsize_t rows, hsize_t columns, const std::string&
   const hsize_t start[2] = {0, 0};
   const hsize_t count[2] = {rows, columns};
   Handle file(H5Dget_space(ds), H5Sclose, "dataspace of " + where);
-  check(H5Sselect_hyperslab(file.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
-        "select rows of " + where);
-  Handle memory(H5Screate_simple(H5Sget_simple_extent_ndims(file.get()), count, nullptr),
-                H5Sclose, "make memory dataspace for " + where);
+  check(H5Sselect_hyperslab(file.get(), H5S_SELECT_SET, start, nullptr, count, nullptr), "select rows of " + where);
+  Handle memory(H5Screate_simple(H5Sget_simple_extent_ndims(file.get()), count, nullptr), H5Sclose,
+                "make memory dataspace for " + where);
   return {std::move(file), std::move(memory)};
 }
 
 // Overwrites the array `name` (rows x columns doubles, row-major; 1-d if columns == 1) in
 // place, creating it on first use. It is only ever grown: shrinking a chunked dataset frees
 // its chunks, so a shorter value leaves the rows after it and says its length in `length`.
-void write_rows(hid_t group, const std::string& name, const std::vector<double>& values,
-                 hsize_t columns) {
+void write_rows(hid_t group, const std::string& name, const std::vector<double>& values, hsize_t columns) {
   const std::string where = "dataset " + child_path(group, name);
   const hsize_t rows = values.size() / columns;
   Handle ds = has_link(group, name)
                   ? Handle(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where)
-                  : create_extendible(group, name, H5T_NATIVE_DOUBLE, columns,
-                                      chunk_rows(rows, columns));
+                  : create_extendible(group, name, H5T_NATIVE_DOUBLE, columns, chunk_rows(rows, columns));
   std::array<hsize_t, 2> dims = extent(ds.get(), where);
   if (dims[1] != columns) {
-    throw ObjectError(where + " has rows of " + std::to_string(dims[1]) + " values, not " +
-                      std::to_string(columns));
+    throw ObjectError(where + " has rows of " + std::to_string(dims[1]) + " values, not " + std::to_string(columns));
   }
   if (rows > dims[0]) {
     dims[0] = rows;
@@ -74,8 +69,7 @@ void write_rows(hid_t group, const std::string& name, const std::vector<double>&
   }
   if (rows > 0) {
     const FirstRows sel = first_rows(ds.get(), rows, columns, where);
-    check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, sel.memory.get(), sel.file.get(), H5P_DEFAULT,
-                   values.data()),
+    check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, sel.memory.get(), sel.file.get(), H5P_DEFAULT, values.data()),
           "write " + where);
   }
   write_attribute(ds.get(), kLength, std::uint64_t{rows});
@@ -87,14 +81,12 @@ std::vector<double> read_rows(hid_t group, const std::string& name) {
   const std::array<hsize_t, 2> dims = extent(ds.get(), where);
   const auto rows = read_attribute<std::uint64_t>(ds.get(), kLength);
   if (rows > dims[0]) {
-    throw ObjectError(where + ": length " + std::to_string(rows) + " exceeds its " +
-                      std::to_string(dims[0]) + " rows");
+    throw ObjectError(where + ": length " + std::to_string(rows) + " exceeds its " + std::to_string(dims[0]) + " rows");
   }
   std::vector<double> values(rows * dims[1]);
   if (!values.empty()) {
     const FirstRows sel = first_rows(ds.get(), rows, dims[1], where);
-    check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, sel.memory.get(), sel.file.get(), H5P_DEFAULT,
-                  values.data()),
+    check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, sel.memory.get(), sel.file.get(), H5P_DEFAULT, values.data()),
           "read " + where);
   }
   return values;
@@ -147,8 +139,7 @@ void write_checkpoint(hid_t file, const Checkpoint& c, std::size_t bodies,
   flush(file);
 }
 
-std::optional<Checkpoint> read_checkpoint(hid_t file,
-                                          const std::vector<std::string>& participants) {
+std::optional<Checkpoint> read_checkpoint(hid_t file, const std::vector<std::string>& participants) {
   if (!has_link(file, kGroup)) return std::nullopt;
   Handle group = open_group(file, kGroup);
   if (!has_attribute(group.get(), kCurrent)) return std::nullopt;

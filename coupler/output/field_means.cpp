@@ -55,7 +55,8 @@ FieldMeans field_means(const std::filesystem::path& path, const std::string& par
       const Handle frame = open_group(group.get(), name);
       const std::vector<hsize_t> dims = array_dims(frame.get(), field);
       const std::string where = "/fields/" + participant + "/" + name + "/" + field;
-      if ((dims.size() != 3 && dims.size() != 4) || dims[0] != dz.size() || dims[1] != dy.size() || dims[2] != dx.size())
+      if ((dims.size() != 3 && dims.size() != 4) || dims[0] != dz.size() || dims[1] != dy.size() ||
+          dims[2] != dx.size())
         fail(where + ": its shape is not the grid's (nz, ny, nx) or (nz, ny, nx, c)");
       const std::size_t columns = dims.size() == 4 ? dims[3] : 1;
       const std::vector<double> values = read_array(frame.get(), field);

@@ -145,9 +145,8 @@ XdmfSeries stored_series(hid_t participant_group, const std::string& participant
 
 FieldWriter::FieldWriter(std::filesystem::path h5_path) : h5_path_(std::move(h5_path)) {}
 
-std::pair<Handle, XdmfStep> FieldWriter::open_step(hid_t file, const std::string& participant,
-                                                   std::uint64_t window, double time,
-                                                   const field::FieldFrame& frame) {
+std::pair<Handle, XdmfStep> FieldWriter::open_step(hid_t file, const std::string& participant, std::uint64_t window,
+                                                   double time, const field::FieldFrame& frame) {
   Handle fields = open_or_create_group(file, "fields");
   Handle group = open_or_create_group(fields.get(), participant);
   const XdmfSeries shape = series_of(participant, frame.grid);

@@ -52,8 +52,8 @@ class FieldWriter {
  private:
   // The step's group, with its attribute time, on the participant's grid (written with the
   // first step), and its entry in the participant's series.
-  std::pair<Handle, XdmfStep> open_step(hid_t file, const std::string& participant, std::uint64_t window,
-                                        double time, const field::FieldFrame& frame);
+  std::pair<Handle, XdmfStep> open_step(hid_t file, const std::string& participant, std::uint64_t window, double time,
+                                        const field::FieldFrame& frame);
 
   std::filesystem::path h5_path_;
   std::map<std::string, XdmfSeries> series_;  // by participant

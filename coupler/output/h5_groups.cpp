@@ -3,8 +3,7 @@
 namespace cosim::output {
 Handle create_group(hid_t parent, const std::string& name) {
   const std::string where = "group " + child_path(parent, name);
-  return Handle(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
-                "create " + where);
+  return Handle(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create " + where);
 }
 
 Handle open_group(hid_t parent, const std::string& name) {

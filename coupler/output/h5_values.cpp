@@ -15,9 +15,7 @@ std::string attribute_where(hid_t object, const std::string& name) {
   return "attribute " + name + " of " + path_of(object);
 }
 
-std::string dataset_where(hid_t group, const std::string& name) {
-  return "dataset " + child_path(group, name);
-}
+std::string dataset_where(hid_t group, const std::string& name) { return "dataset " + child_path(group, name); }
 
 Handle simple_space(const std::vector<hsize_t>& dims, const std::string& where) {
   return Handle(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose,
@@ -60,8 +58,7 @@ bool fits_in_place(hid_t attr, hid_t type, hid_t space, const std::string& where
 
 // An in-place overwrite where possible: deleting an attribute and creating it again can
 // move or free object header space, and the checkpoint relies on writes that free nothing.
-void write_attribute_raw(hid_t object, const std::string& name, hid_t type, hid_t space,
-                         const void* data) {
+void write_attribute_raw(hid_t object, const std::string& name, hid_t type, hid_t space, const void* data) {
   const std::string where = attribute_where(object, name);
   if (has_attribute(object, name)) {
     {
@@ -73,14 +70,12 @@ void write_attribute_raw(hid_t object, const std::string& name, hid_t type, hid_
     }
     check(H5Adelete(object, name.c_str()), "replace " + where);
   }
-  Handle attr(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
-              "create " + where);
+  Handle attr(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, "create " + where);
   check(H5Awrite(attr.get(), type, data), "write " + where);
 }
 
 // Copies HDF5-allocated variable-length strings and hands their memory back to HDF5.
-std::vector<std::string> take_strings(std::vector<char*>& raw, hid_t type,
-                                      const std::string& where) {
+std::vector<std::string> take_strings(std::vector<char*>& raw, hid_t type, const std::string& where) {
   std::vector<std::string> out;
   out.reserve(raw.size());
   for (const char* s : raw) out.emplace_back(s != nullptr ? s : "");
@@ -95,8 +90,8 @@ std::vector<std::string> take_strings(std::vector<char*>& raw, hid_t type,
 template <class T>
 void write_whole(hid_t group, const std::string& name, const std::vector<hsize_t>& dims, const T* values) {
   const std::string where = dataset_where(group, name);
-  Handle ds(H5Dcreate2(group, name.c_str(), native_type<T>(), simple_space(dims, where).get(), H5P_DEFAULT,
-                       H5P_DEFAULT, H5P_DEFAULT),
+  Handle ds(H5Dcreate2(group, name.c_str(), native_type<T>(), simple_space(dims, where).get(), H5P_DEFAULT, H5P_DEFAULT,
+                       H5P_DEFAULT),
             H5Dclose, "create " + where);
   check(H5Dwrite(ds.get(), native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values), "write " + where);
 }
@@ -120,23 +115,19 @@ void write_attribute(hid_t object, const std::string& name, const std::string& v
   write_attribute_raw(object, name, utf8_string_type().get(), scalar_space(name).get(), &data);
 }
 
-void write_attribute(hid_t object, const std::string& name,
-                     const std::vector<std::string>& values) {
+void write_attribute(hid_t object, const std::string& name, const std::vector<std::string>& values) {
   std::vector<const char*> data;
   for (const auto& v : values) data.push_back(v.c_str());
   // An empty list still needs a valid buffer pointer.
   if (data.empty()) data.push_back(nullptr);
-  write_attribute_raw(object, name, utf8_string_type().get(),
-                      simple_space({values.size()}, name).get(), data.data());
+  write_attribute_raw(object, name, utf8_string_type().get(), simple_space({values.size()}, name).get(), data.data());
 }
 
-void write_fixed_string_attribute(hid_t object, const std::string& name,
-                                  const std::string& value) {
+void write_fixed_string_attribute(hid_t object, const std::string& name, const std::string& value) {
   if (value.empty()) {
     throw ObjectError(attribute_where(object, name) + ": a fixed-length string cannot be empty");
   }
-  write_attribute_raw(object, name, fixed_string_type(value.size()).get(),
-                      scalar_space(name).get(), value.data());
+  write_attribute_raw(object, name, fixed_string_type(value.size()).get(), scalar_space(name).get(), value.data());
 }
 
 template <class T>
@@ -176,15 +167,14 @@ template double read_attribute<double>(hid_t, const std::string&);
 template int read_attribute<int>(hid_t, const std::string&);
 template std::uint64_t read_attribute<std::uint64_t>(hid_t, const std::string&);
 template std::string read_attribute<std::string>(hid_t, const std::string&);
-template std::vector<std::string> read_attribute<std::vector<std::string>>(hid_t,
-                                                                          const std::string&);
+template std::vector<std::string> read_attribute<std::vector<std::string>>(hid_t, const std::string&);
 
 void write_text(hid_t group, const std::string& name, const std::string& text) {
   const std::string where = dataset_where(group, name);
   Handle type = utf8_string_type();
-  Handle ds(H5Dcreate2(group, name.c_str(), type.get(), scalar_space(where).get(), H5P_DEFAULT,
-                       H5P_DEFAULT, H5P_DEFAULT),
-            H5Dclose, "create " + where);
+  Handle ds(
+      H5Dcreate2(group, name.c_str(), type.get(), scalar_space(where).get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      H5Dclose, "create " + where);
   const char* data = text.c_str();
   check(H5Dwrite(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &data), "write " + where);
 }
@@ -196,18 +186,15 @@ std::string read_text(hid_t group, const std::string& name) {
   if (points(space.get(), where) != 1) throw ObjectError(where + " is not a single string");
   Handle type = utf8_string_type();
   std::vector<char*> raw(1);
-  check(H5Dread(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()),
-        "read " + where);
+  check(H5Dread(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()), "read " + where);
   return take_strings(raw, type.get(), where).front();
 }
 
-void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims,
-                 const double* values) {
+void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims, const double* values) {
   write_whole(group, name, dims, values);
 }
 
-void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims,
-                 const std::int64_t* values) {
+void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims, const std::int64_t* values) {
   write_whole(group, name, dims, values);
 }
 
@@ -226,7 +213,8 @@ void write_block(hid_t group, const std::string& name, const std::vector<hsize_t
   const std::string where = dataset_where(group, name);
   const std::vector<hsize_t> dims = array_dims(group, name);
   bool inside = start.size() == dims.size() && count.size() == dims.size();
-  for (std::size_t d = 0; inside && d < dims.size(); ++d) inside = count[d] <= dims[d] && start[d] <= dims[d] - count[d];
+  for (std::size_t d = 0; inside && d < dims.size(); ++d)
+    inside = count[d] <= dims[d] && start[d] <= dims[d] - count[d];
   if (!inside) {
     const auto list = [](const std::vector<hsize_t>& v) {
       std::string text;
@@ -267,7 +255,8 @@ std::vector<double> read_array(hid_t group, const std::string& name) {
   std::vector<double> values(size);
   const std::string where = dataset_where(group, name);
   Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open " + where);
-  if (size > 0) check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + where);
+  if (size > 0)
+    check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + where);
   return values;
 }
 
@@ -284,11 +273,9 @@ void append_text(hid_t group, const std::string& name, const std::string& text) 
   const hsize_t grown = start + 1;
   check(H5Dset_extent(ds.get(), &grown), "extend " + where);
   space = Handle(H5Dget_space(ds.get()), H5Sclose, "dataspace of " + where);
-  check(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, &start, nullptr, &one, nullptr),
-        "select end of " + where);
+  check(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, &start, nullptr, &one, nullptr), "select end of " + where);
   const char* data = text.c_str();
-  check(H5Dwrite(ds.get(), utf8_string_type().get(), simple_space({1}, where).get(), space.get(),
-                 H5P_DEFAULT, &data),
+  check(H5Dwrite(ds.get(), utf8_string_type().get(), simple_space({1}, where).get(), space.get(), H5P_DEFAULT, &data),
         "write " + where);
 }
 
@@ -299,8 +286,7 @@ std::vector<std::string> read_text_list(hid_t group, const std::string& name) {
   Handle type = utf8_string_type();
   std::vector<char*> raw(points(space.get(), where));
   if (!raw.empty()) {
-    check(H5Dread(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()),
-          "read " + where);
+    check(H5Dread(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()), "read " + where);
   }
   return take_strings(raw, type.get(), where);
 }

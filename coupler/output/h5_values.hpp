@@ -21,8 +21,7 @@ void write_attribute(hid_t object, const std::string& name, const std::string& v
 void write_attribute(hid_t object, const std::string& name, const std::vector<std::string>& values);
 // Fixed-length ASCII of value.size() bytes, held in the object header itself, so writing
 // another value of the same length is an in-place overwrite of those bytes.
-void write_fixed_string_attribute(hid_t object, const std::string& name,
-                                  const std::string& value);
+void write_fixed_string_attribute(hid_t object, const std::string& name, const std::string& value);
 
 // T is double, int, std::uint64_t, std::string (variable or fixed length) or
 // std::vector<std::string>.
@@ -34,11 +33,9 @@ void write_text(hid_t group, const std::string& name, const std::string& text);
 std::string read_text(hid_t group, const std::string& name);
 
 // A contiguous float64 dataset of shape dims (row-major), written whole: grid fields.
-void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims,
-                 const double* values);
+void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims, const double* values);
 // The same in int64: a polyhedral grid's topology.
-void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims,
-                 const std::int64_t* values);
+void write_array(hid_t group, const std::string& name, const std::vector<hsize_t>& dims, const std::int64_t* values);
 
 // A float64 dataset of shape dims written in blocks, for a writer that never holds all its
 // values: create_array() makes it, not filled (the writer writes every value once), and

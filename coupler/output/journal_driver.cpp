@@ -136,7 +136,8 @@ void hold(State& s, haddr_t at, const unsigned char* data, std::size_t n) {
     hi = std::max<haddr_t>(hi, last->first + last->second.size());
   }
   Bytes merged(hi - lo);
-  for (auto it = first; it != last; ++it) std::copy(it->second.begin(), it->second.end(), merged.begin() + (it->first - lo));
+  for (auto it = first; it != last; ++it)
+    std::copy(it->second.begin(), it->second.end(), merged.begin() + (it->first - lo));
   std::copy(data, data + n, merged.begin() + (at - lo));
   s.held.erase(first, last);
   s.held[lo] = std::move(merged);
@@ -224,8 +225,8 @@ herr_t recover(State& s) {
   // Shorter than a header: made by a commit that was killed before its first header.
   Header header{};
   Bytes body;
-  const bool pending = read_all(fd, &header, sizeof header, 0) &&
-                       std::equal(kMagic, kMagic + sizeof kMagic, header.magic);
+  const bool pending =
+      read_all(fd, &header, sizeof header, 0) && std::equal(kMagic, kMagic + sizeof kMagic, header.magic);
   bool ok = true;
   if (pending) {
     body.resize(header.body);
@@ -392,15 +393,38 @@ herr_t unlock(H5FD_t* f) {
   return flock(s.fd, LOCK_UN) == 0 ? 0 : error(H5E_CANTUNLOCKFILE, "unlock " + s.path);
 }
 
-const H5FD_class_t kDriver = {
-    "cosim_journal", kMaxAddr, H5F_CLOSE_WEAK, nullptr,  // terminate
-    nullptr, nullptr, nullptr,                           // superblock: none of its own
-    0, nullptr, nullptr, nullptr,                        // no access properties
-    0, nullptr, nullptr,                                 // no transfer properties
-    open_file, close_file, compare, query, nullptr,      // type map: the default
-    nullptr, nullptr,                                    // alloc and free: HDF5's own
-    get_eoa, set_eoa, get_eof, get_handle, read_at, write_at, flush, truncate, lock, unlock,
-    H5FD_FLMAP_DICHOTOMY};
+const H5FD_class_t kDriver = {"cosim_journal",
+                              kMaxAddr,
+                              H5F_CLOSE_WEAK,
+                              nullptr,  // terminate
+                              nullptr,
+                              nullptr,
+                              nullptr,  // superblock: none of its own
+                              0,
+                              nullptr,
+                              nullptr,
+                              nullptr,  // no access properties
+                              0,
+                              nullptr,
+                              nullptr,  // no transfer properties
+                              open_file,
+                              close_file,
+                              compare,
+                              query,
+                              nullptr,  // type map: the default
+                              nullptr,
+                              nullptr,  // alloc and free: HDF5's own
+                              get_eoa,
+                              set_eoa,
+                              get_eof,
+                              get_handle,
+                              read_at,
+                              write_at,
+                              flush,
+                              truncate,
+                              lock,
+                              unlock,
+                              H5FD_FLMAP_DICHOTOMY};
 
 }  // namespace
 

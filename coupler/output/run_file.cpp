@@ -89,8 +89,7 @@ RunFile::RunFile(RunFile&&) noexcept = default;
 RunFile& RunFile::operator=(RunFile&&) noexcept = default;
 RunFile::~RunFile() = default;
 
-RunFile RunFile::create(const std::filesystem::path& path, const RunInfo& info,
-                        const std::vector<std::string>& bodies,
+RunFile RunFile::create(const std::filesystem::path& path, const RunInfo& info, const std::vector<std::string>& bodies,
                         const std::vector<std::string>& participants) {
   return in_file(path, [&] {
     check_names(bodies, "body");
@@ -105,8 +104,8 @@ RunFile RunFile::create(const std::filesystem::path& path, const RunInfo& info,
     std::filesystem::path partial = path;
     partial += ".tmp";
     {
-      const Handle file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, journaled_access().get()),
-                        H5Fclose, "create file");
+      const Handle file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, journaled_access().get()), H5Fclose,
+                        "create file");
       {
         Handle run = create_group(file.get(), "run");
         write_text(run.get(), "scene_text", info.scene_text);

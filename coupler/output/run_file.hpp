@@ -107,31 +107,30 @@ struct RunSummary {
 // One committed window, as the coupler writes it.
 struct WindowRecord {
   std::uint64_t window = 0;
-  double time = 0.0;                      // end of the window
+  double time = 0.0;  // end of the window
   int iterations = 0;
   double residual = 0.0;
   double wall_seconds = 0.0;
-  std::vector<double> poses;              // bodies x 13, row-major (scene body order)
-  std::vector<double> forces;             // bodies x 6
+  std::vector<double> poses;   // bodies x 13, row-major (scene body order)
+  std::vector<double> forces;  // bodies x 6
   std::map<std::string, double> participant_wall_seconds;
   std::map<std::string, double> participant_substeps;
   std::map<std::string, double> participant_field_bytes;
 };
 
 struct Checkpoint {
-  std::uint64_t next_window = 0;          // the window to run next
-  double time = 0.0;                      // its start time
-  std::vector<double> poses;              // bodies x 13 at `time`
-  std::vector<double> forces;             // bodies x 6 at `time`
+  std::uint64_t next_window = 0;                      // the window to run next
+  double time = 0.0;                                  // its start time
+  std::vector<double> poses;                          // bodies x 13 at `time`
+  std::vector<double> forces;                         // bodies x 6 at `time`
   std::map<std::string, std::vector<double>> states;  // participant -> opaque state
-  std::vector<double> responses;          // bodies x 78 with those forces, or none
+  std::vector<double> responses;                      // bodies x 78 with those forces, or none
 };
 
 class RunFile {
  public:
   // Creates (truncates) path and writes /run.
-  static RunFile create(const std::filesystem::path& path, const RunInfo& info,
-                        const std::vector<std::string>& bodies,
+  static RunFile create(const std::filesystem::path& path, const RunInfo& info, const std::vector<std::string>& bodies,
                         const std::vector<std::string>& participants);
   // Reads /run and the checkpoint's window without changing the file (opened read-only),
   // so that --resume can validate what it found before resume() writes anything. Throws
@@ -155,11 +154,10 @@ class RunFile {
   const RunInfo& info() const;
   const Checkpoint& checkpoint() const;  // resume(): what was read; throws if none
 
-  void append(const WindowRecord& w);    // writes one row everywhere and flushes
+  void append(const WindowRecord& w);  // writes one row everywhere and flushes
   // Writes the frame as window `window`'s fields of `participant` at `time`, flushes and
   // rewrites the sidecar.
-  void write_fields(const std::string& participant, std::uint64_t window, double time,
-                    const field::FieldFrame& frame);
+  void write_fields(const std::string& participant, std::uint64_t window, double time, const field::FieldFrame& frame);
   // Replaces the checkpoint: writes the other slot, flushes, switches `current`, flushes.
   void write_checkpoint(const Checkpoint& c);
   // wall_seconds: this session's; the file stores it added to the earlier sessions' total.

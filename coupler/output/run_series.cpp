@@ -37,12 +37,10 @@ struct Slice {
   bool of_forces;
   std::size_t offset;
 };
-constexpr Slice kBodySlices[] = {{{"position", 3, &native_type<double>}, false, 0},
-                                 {{"orientation", 4, &native_type<double>}, false, 3},
-                                 {{"velocity", 3, &native_type<double>}, false, 7},
-                                 {{"angular_velocity", 3, &native_type<double>}, false, 10},
-                                 {{"force", 3, &native_type<double>}, true, 0},
-                                 {{"torque", 3, &native_type<double>}, true, 3}};
+constexpr Slice kBodySlices[] = {
+    {{"position", 3, &native_type<double>}, false, 0}, {{"orientation", 4, &native_type<double>}, false, 3},
+    {{"velocity", 3, &native_type<double>}, false, 7}, {{"angular_velocity", 3, &native_type<double>}, false, 10},
+    {{"force", 3, &native_type<double>}, true, 0},     {{"torque", 3, &native_type<double>}, true, 3}};
 
 Handle group(hid_t parent, const std::string& name, bool create) {
   return create ? create_group(parent, name) : open_group(parent, name);
@@ -52,8 +50,8 @@ Series series(hid_t group, const Spec& spec, bool create) {
   if (create) return Series::create(group, spec.name, spec.columns, spec.type());
   Series s = Series::open(group, spec.name);
   if (s.columns() != spec.columns) {
-    throw ObjectError("series " + s.path() + " has " + std::to_string(s.columns()) +
-                      " columns, expected " + std::to_string(spec.columns));
+    throw ObjectError("series " + s.path() + " has " + std::to_string(s.columns()) + " columns, expected " +
+                      std::to_string(spec.columns));
   }
   return s;
 }
@@ -124,8 +122,7 @@ void RunSeries::append(const WindowRecord& w) {
     bodies_[b].time.append(&w.time);
     for (std::size_t k = 0; k < std::size(kBodySlices); ++k) {
       const Slice& slice = kBodySlices[k];
-      const double* row = slice.of_forces ? &w.forces[b * kForceWidth]
-                                          : &w.poses[b * kPoseWidth];
+      const double* row = slice.of_forces ? &w.forces[b * kForceWidth] : &w.poses[b * kPoseWidth];
       bodies_[b].slices[k].append(row + slice.offset);
     }
   }

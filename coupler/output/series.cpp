@@ -16,8 +16,8 @@ int rank_for(hsize_t columns, bool table) { return table || columns > 1 ? 2 : 1;
 Series::Series(Handle dataset, std::string path, hsize_t rows, hsize_t columns, int rank)
     : dataset_(std::move(dataset)), path_(std::move(path)), rows_(rows), columns_(columns), rank_(rank) {}
 
-Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize_t columns,
-                         hsize_t chunk_rows, bool table) {
+Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize_t columns, hsize_t chunk_rows,
+                         bool table) {
   const std::string where = "dataset " + child_path(group, name);
   const hsize_t dims[2] = {0, columns};
   const hsize_t max_dims[2] = {H5S_UNLIMITED, columns};
@@ -26,9 +26,8 @@ Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize
   Handle space(H5Screate_simple(rank, dims, max_dims), H5Sclose, "make dataspace for " + where);
   Handle props(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "make properties for " + where);
   check(H5Pset_chunk(props.get(), rank, chunk), "set chunks of " + where);
-  return Handle(H5Dcreate2(group, name.c_str(), type, space.get(), H5P_DEFAULT, props.get(),
-                           H5P_DEFAULT),
-                H5Dclose, "create " + where);
+  return Handle(H5Dcreate2(group, name.c_str(), type, space.get(), H5P_DEFAULT, props.get(), H5P_DEFAULT), H5Dclose,
+                "create " + where);
 }
 
 Series Series::create(hid_t group, const std::string& name, hsize_t columns, hid_t type) {
@@ -62,8 +61,7 @@ void Series::append_raw(const void* row, hid_t type) {
   const hsize_t dims[2] = {rows_ + 1, columns_};
   check(H5Dset_extent(dataset_.get(), dims), "extend series " + path_);
   const auto [file_space, row_space] = row_spaces(rows_);
-  check(H5Dwrite(dataset_.get(), type, row_space.get(), file_space.get(), H5P_DEFAULT, row),
-        "write series " + path_);
+  check(H5Dwrite(dataset_.get(), type, row_space.get(), file_space.get(), H5P_DEFAULT, row), "write series " + path_);
   ++rows_;
 }
 
@@ -73,15 +71,14 @@ std::pair<Handle, Handle> Series::row_spaces(hsize_t row) const {
   const hsize_t count[2] = {1, columns_};
   check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
         "select row " + std::to_string(row) + " of series " + path_);
-  Handle row_space(H5Screate_simple(rank_, count, nullptr), H5Sclose,
-                   "make row dataspace for series " + path_);
+  Handle row_space(H5Screate_simple(rank_, count, nullptr), H5Sclose, "make row dataspace for series " + path_);
   return {std::move(file_space), std::move(row_space)};
 }
 
 void Series::truncate(hsize_t rows) {
   if (rows > rows_) {
-    throw ObjectError("series " + path_ + " has " + std::to_string(rows_) +
-                    " rows, cannot cut it to " + std::to_string(rows));
+    throw ObjectError("series " + path_ + " has " + std::to_string(rows_) + " rows, cannot cut it to " +
+                      std::to_string(rows));
   }
   const hsize_t dims[2] = {rows, columns_};
   check(H5Dset_extent(dataset_.get(), dims), "truncate series " + path_);
@@ -91,8 +88,7 @@ void Series::truncate(hsize_t rows) {
 std::vector<double> Series::read_all() const {
   std::vector<double> values(rows_ * columns_);
   if (!values.empty()) {
-    check(H5Dread(dataset_.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                  values.data()),
+    check(H5Dread(dataset_.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
           "read series " + path_);
   }
   return values;
@@ -100,13 +96,11 @@ std::vector<double> Series::read_all() const {
 
 std::vector<double> Series::read_row(hsize_t row) const {
   if (row >= rows_) {
-    throw ObjectError("series " + path_ + " has " + std::to_string(rows_) + " rows, no row " +
-                      std::to_string(row));
+    throw ObjectError("series " + path_ + " has " + std::to_string(rows_) + " rows, no row " + std::to_string(row));
   }
   std::vector<double> values(columns_);
   const auto [file_space, row_space] = row_spaces(row);
-  check(H5Dread(dataset_.get(), H5T_NATIVE_DOUBLE, row_space.get(), file_space.get(), H5P_DEFAULT,
-                values.data()),
+  check(H5Dread(dataset_.get(), H5T_NATIVE_DOUBLE, row_space.get(), file_space.get(), H5P_DEFAULT, values.data()),
         "read row " + std::to_string(row) + " of series " + path_);
   return values;
 }

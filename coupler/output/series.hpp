@@ -16,8 +16,8 @@ namespace cosim::output {
 // A chunked dataset of 0 rows of `columns` values (1-d when columns == 1, unless `table`)
 // with an unlimited first dimension, so rows can be added later without moving what is
 // written.
-Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize_t columns,
-                         hsize_t chunk_rows, bool table = false);
+Handle create_extendible(hid_t group, const std::string& name, hid_t type, hsize_t columns, hsize_t chunk_rows,
+                         bool table = false);
 
 class Series {
  public:

@@ -11,10 +11,10 @@
 namespace cosim::output {
 namespace {
 
-void data_item(std::ostream& out, const std::string& dims, const std::string& h5_file,
-               const std::string& dataset, const std::string& pad, const char* type = "Float") {
-  out << pad << "<DataItem Dimensions=\"" << dims << "\" NumberType=\"" << type
-      << "\" Precision=\"8\" Format=\"HDF\">" << xml_escaped(h5_file + ":" + dataset) << "</DataItem>\n";
+void data_item(std::ostream& out, const std::string& dims, const std::string& h5_file, const std::string& dataset,
+               const std::string& pad, const char* type = "Float") {
+  out << pad << "<DataItem Dimensions=\"" << dims << "\" NumberType=\"" << type << "\" Precision=\"8\" Format=\"HDF\">"
+      << xml_escaped(h5_file + ":" + dataset) << "</DataItem>\n";
 }
 
 // The grid's topology and geometry, indented by `pad`; returns the dimensions of a cell field.
@@ -103,8 +103,8 @@ std::string xdmf_document(const std::string& h5_file, const std::vector<XdmfSeri
       << "  <Domain>\n";
   for (const XdmfSeries& s : series) {
     out << "    <Grid Name=\"" << xml_escaped(s.name) << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    const bool spatial = std::any_of(s.steps.begin(), s.steps.end(),
-                                     [](const XdmfStep& step) { return !step.point_sets.empty(); });
+    const bool spatial =
+        std::any_of(s.steps.begin(), s.steps.end(), [](const XdmfStep& step) { return !step.point_sets.empty(); });
     for (const XdmfStep& step : s.steps) write_step(out, h5_file, s, step, spatial);
     out << "    </Grid>\n";
   }

@@ -18,9 +18,9 @@ ResponseRow response_at(const double* r) {
 
 void append(std::vector<double>& poses, const PoseRow& r) {
   const Eigen::Quaterniond& q = r.orientation;
-  poses.insert(poses.end(), {r.position.x(), r.position.y(), r.position.z(), q.w(), q.x(), q.y(), q.z(),
-                             r.velocity.x(), r.velocity.y(), r.velocity.z(), r.angular_velocity.x(),
-                             r.angular_velocity.y(), r.angular_velocity.z()});
+  poses.insert(poses.end(), {r.position.x(), r.position.y(), r.position.z(), q.w(), q.x(), q.y(), q.z(), r.velocity.x(),
+                             r.velocity.y(), r.velocity.z(), r.angular_velocity.x(), r.angular_velocity.y(),
+                             r.angular_velocity.z()});
 }
 
 void append(std::vector<double>& forces, const ForceRow& r) {

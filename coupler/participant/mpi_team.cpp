@@ -186,9 +186,7 @@ LeadSolver::~LeadSolver() {
   if (!finished_) finish(1);
 }
 
-void LeadSolver::announce(int call) const {
-  MPI_Bcast(&call, 1, MPI_INT, 0, comm_);
-}
+void LeadSolver::announce(int call) const { MPI_Bcast(&call, 1, MPI_INT, 0, comm_); }
 
 Outputs LeadSolver::initialise(const scene::Scene& scene, const std::string& name, const std::vector<PoseRow>& poses,
                                const std::vector<double>& state) {

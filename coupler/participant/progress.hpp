@@ -13,7 +13,8 @@ namespace cosim::participant {
 
 class Progress {
  public:
-  Progress(std::uint64_t windows, double end_time) : windows_(windows), end_(end_time), enabled_(isatty(STDERR_FILENO)) {}
+  Progress(std::uint64_t windows, double end_time)
+      : windows_(windows), end_(end_time), enabled_(isatty(STDERR_FILENO)) {}
 
   // After `window` of the windows, at `time`; `extra` (if any) follows the window count.
   void update(std::uint64_t window, double time, const std::string& extra) {

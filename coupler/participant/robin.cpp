@@ -28,9 +28,7 @@ Vector6d of(const ForceRow& f) { return (Vector6d() << f.force, f.torque).finish
 
 }  // namespace
 
-Carried carried(const ResponseRow& response) {
-  return {simpler(response.added_mass), simpler(response.added_damping)};
-}
+Carried carried(const ResponseRow& response) { return {simpler(response.added_mass), simpler(response.added_damping)}; }
 
 Vector6d robin_wrench(const ResponseRow& response, const Vector6d& v0) {
   return of(response.hold) + carried(response).added_damping * v0;

@@ -54,8 +54,7 @@ std::vector<Array> output_arrays(const Outputs& out, std::uint32_t provides, dou
   return arrays;
 }
 
-int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std::uint32_t needs,
-          std::uint32_t ranks) {
+int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std::uint32_t needs, std::uint32_t ranks) {
   const Message init = client.hello(provides, needs, ranks);
   const auto texts = init.all(Tag::Text);
   if (texts.size() != 2) throw protocol::ProtocolError("Init must carry the scene file and text");
@@ -105,14 +104,18 @@ int serve(protocol::Client& client, Solver& solver, std::uint32_t provides, std:
 
 Inputs inputs_of(Message m) {
   std::vector<Array> fields = protocol::take_field_arrays(m.arrays);
-  Inputs in{poses_of(m, 0), poses_of(m, 1), forces_of(m, 0), forces_of(m, 1),
-            response_rows(row_values(m, Tag::Responses, 0, protocol::kResponseWidth)), std::nullopt};
+  Inputs in{poses_of(m, 0),
+            poses_of(m, 1),
+            forces_of(m, 0),
+            forces_of(m, 1),
+            response_rows(row_values(m, Tag::Responses, 0, protocol::kResponseWidth)),
+            std::nullopt};
   if (!fields.empty()) in.fields = protocol::field_frame(std::move(fields), "the fields in Advance");
   return in;
 }
 
-int run_participant(protocol::Client& client, Solver& solver, std::uint32_t provides,
-                    std::uint32_t needs, std::uint32_t ranks) {
+int run_participant(protocol::Client& client, Solver& solver, std::uint32_t provides, std::uint32_t needs,
+                    std::uint32_t ranks) {
   try {
     return serve(client, solver, provides, needs, ranks);
   } catch (const protocol::Aborted& e) {

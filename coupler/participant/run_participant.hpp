@@ -14,8 +14,8 @@ namespace cosim::participant {
 // Field requests are answered with solver.fields() (field_message.hpp).
 // A participant that needs fields names the ones it uses (solver.wanted_fields()) in Text
 // arrays of its Ready.
-int run_participant(protocol::Client& client, Solver& solver, std::uint32_t provides,
-                    std::uint32_t needs, std::uint32_t ranks = 1);
+int run_participant(protocol::Client& client, Solver& solver, std::uint32_t provides, std::uint32_t needs,
+                    std::uint32_t ranks = 1);
 
 // An Advance's inputs: the rows of each tag in order (start, then end), and the field
 // frame after them (field_message.hpp). ProtocolError for Poses or Forces arrays whose

@@ -57,8 +57,8 @@ class Solver {
   virtual ~Solver() = default;
   // Set up from the scene (its own section: scene.participant(name)); `state` is
   // non-empty when resuming a run. Returns the outputs at the start time.
-  virtual Outputs initialise(const scene::Scene& scene, const std::string& name,
-                             const std::vector<PoseRow>& poses, const std::vector<double>& state) = 0;
+  virtual Outputs initialise(const scene::Scene& scene, const std::string& name, const std::vector<PoseRow>& poses,
+                             const std::vector<double>& state) = 0;
   // From the state at w.t0, subcycle to exactly w.t1.
   virtual Outputs advance(const Window& w, const Inputs& in) = 0;
   // Everything needed to continue from here: used for rollback and checkpoints.

@@ -26,8 +26,8 @@ class RunFileRecorder final : public Recorder {
       : scene_(scene),
         solver_(solver),
         name_(name),
-        file_(output::RunFile::create(
-            path, output::RunInfo::of_this_build(scene.text, scene.file.string()), scene.body_names(), {name})) {}
+        file_(output::RunFile::create(path, output::RunInfo::of_this_build(scene.text, scene.file.string()),
+                                      scene.body_names(), {name})) {}
 
   void record(std::uint64_t done, double time, const Outputs& out, double seconds) override {
     const std::uint64_t n = scene_.windows();
@@ -59,8 +59,8 @@ class RunFileRecorder final : public Recorder {
 
 }  // namespace
 
-void run_standalone(const scene::Scene& scene, Solver& solver, const std::string& name,
-                    std::filesystem::path output, const MakeRecorder& make) {
+void run_standalone(const scene::Scene& scene, Solver& solver, const std::string& name, std::filesystem::path output,
+                    const MakeRecorder& make) {
   const auto started = clock::now();
   const Outputs initial = solver.initialise(scene, name, {}, {});
 

@@ -41,7 +41,7 @@ using MakeRecorder = std::function<std::unique_ptr<Recorder>(const std::filesyst
 // rank runs it with collective solver calls and the recorder writes on one (cosim-tracker).
 // Throws SceneError for a bad scene, std::runtime_error otherwise; what a window throws,
 // after the recorder's set_status("failed: ...").
-void run_standalone(const scene::Scene& scene, Solver& solver, const std::string& name,
-                    std::filesystem::path output, const MakeRecorder& make = {});
+void run_standalone(const scene::Scene& scene, Solver& solver, const std::string& name, std::filesystem::path output,
+                    const MakeRecorder& make = {});
 
 }  // namespace cosim::participant

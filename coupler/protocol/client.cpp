@@ -46,8 +46,7 @@ Client::Client(const std::string& endpoint, const std::string& name, const std::
   try {
     socket_.connect(endpoint);
   } catch (const zmq::error_t& e) {
-    throw ProtocolError("participant '" + name + "' cannot connect to '" + endpoint +
-                        "': " + e.what());
+    throw ProtocolError("participant '" + name + "' cannot connect to '" + endpoint + "': " + e.what());
   }
 }
 
@@ -56,9 +55,8 @@ std::optional<Client> Client::from_environment() {
   const char* name = std::getenv(kParticipantEnv);
   if (!endpoint && !name) return std::nullopt;
   if (!endpoint || !name)
-    throw ProtocolError(std::string(endpoint ? kEndpointEnv : kParticipantEnv) +
-                        " is set but " + (endpoint ? kParticipantEnv : kEndpointEnv) +
-                        " is not");
+    throw ProtocolError(std::string(endpoint ? kEndpointEnv : kParticipantEnv) + " is set but " +
+                        (endpoint ? kParticipantEnv : kEndpointEnv) + " is not");
   std::chrono::milliseconds heartbeat(0);
   if (const char* seconds = std::getenv(kHeartbeatEnv)) {
     char* end = nullptr;
@@ -99,16 +97,16 @@ Message Client::wait_for(std::initializer_list<Type> types, std::chrono::millise
     const Array* why = m.find(Tag::Text);
     throw Aborted("the coupler aborted the run" + (why ? ": " + why->bytes : std::string()));
   }
-  throw ProtocolError("participant '" + name_ + "' expected " + one_of(types) +
-                      " from the coupler and received " + to_string(m.header.type));
+  throw ProtocolError("participant '" + name_ + "' expected " + one_of(types) + " from the coupler and received " +
+                      to_string(m.header.type));
 }
 
 void Client::check_connection() {
   const auto event = events_->next();
   if (!event) return;
   if (const auto* refused = std::get_if<HandshakeFailed>(&*event))
-    throw ProtocolError("participant '" + name_ + "': the coupler at " + endpoint_ +
-                        " refused its handshake (" + refused->why + ")");
+    throw ProtocolError("participant '" + name_ + "': the coupler at " + endpoint_ + " refused its handshake (" +
+                        refused->why + ")");
   std::string heartbeat;
   if (heartbeat_.count() > 0) {
     char text[96];
@@ -116,8 +114,8 @@ void Client::check_connection() {
                   static_cast<long>(heartbeat_.count() / 2), heartbeat_.count() / 1000.0);
     heartbeat = text;
   }
-  throw ProtocolError("participant '" + name_ + "' lost the coupler at " + endpoint_ +
-                      ": the connection closed" + heartbeat);
+  throw ProtocolError("participant '" + name_ + "' lost the coupler at " + endpoint_ + ": the connection closed" +
+                      heartbeat);
 }
 
 void Client::reply(Message m) {

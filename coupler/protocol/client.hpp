@@ -49,8 +49,7 @@ class Client {
   // unexpected type, a silent coupler (timeout), a connection to the coupler that ended
   // (closed, or its heartbeat unanswered: the coupler or its host is gone) and a handshake
   // the coupler refused throw ProtocolError naming the coupler's endpoint.
-  Message wait_for(std::initializer_list<Type> types,
-                   std::chrono::milliseconds timeout = std::chrono::hours(24));
+  Message wait_for(std::initializer_list<Type> types, std::chrono::milliseconds timeout = std::chrono::hours(24));
   // Sends m with the participant name filled in.
   void reply(Message m);
   // Reports a failure the coupler will show the user, naming this participant.

@@ -16,8 +16,9 @@ namespace cosim::protocol::curve {
 
 void require() {
   if (zmq_has("curve") == 0)
-    throw ProtocolError("this libzmq was built without CURVE (libsodium), which tcp transport needs to "
-                        "encrypt and authenticate connections; install a libzmq built with libsodium");
+    throw ProtocolError(
+        "this libzmq was built without CURVE (libsodium), which tcp transport needs to "
+        "encrypt and authenticate connections; install a libzmq built with libsodium");
 }
 
 void set_key(zmq::socket_t& socket, int option, const std::string& z85) {
@@ -56,15 +57,12 @@ std::optional<ClientKeys> from_environment() {
   for (std::size_t i = 0; i < names.size(); ++i) set += (values[i] = std::getenv(names[i])) != nullptr;
   if (set == 0) return std::nullopt;
   for (std::size_t i = 0; i < names.size(); ++i)
-    if (values[i] == nullptr)
-      throw ProtocolError(std::string(names[i]) + " is not set, but other CURVE keys are");
+    if (values[i] == nullptr) throw ProtocolError(std::string(names[i]) + " is not set, but other CURVE keys are");
   return ClientKeys{values[0], {values[1], values[2]}};
 }
 
 std::map<std::string, std::string> environment(const ClientKeys& keys) {
-  return {{kServerKeyEnv, keys.server_key},
-          {kPublicKeyEnv, keys.own.public_key},
-          {kSecretKeyEnv, keys.own.secret_key}};
+  return {{kServerKeyEnv, keys.server_key}, {kPublicKeyEnv, keys.own.public_key}, {kSecretKeyEnv, keys.own.secret_key}};
 }
 
 }  // namespace cosim::protocol::curve

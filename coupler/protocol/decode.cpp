@@ -20,18 +20,15 @@ std::string hex(std::uint32_t v) {
 // protocol version is named as such, whatever its length.
 void check_preamble(Bytes head) {
   if (head.size() < L::kType)  // magic and version
-    throw ProtocolError("header frame of " + std::to_string(head.size()) +
-                        " bytes is too short for a cosim message");
+    throw ProtocolError("header frame of " + std::to_string(head.size()) + " bytes is too short for a cosim message");
   if (const auto magic = L::get<std::uint32_t>(head.data(), L::kMagic); magic != kMagic)
-    throw ProtocolError("not a cosim message (magic " + hex(magic) + ", expected " +
-                        hex(kMagic) + ")");
+    throw ProtocolError("not a cosim message (magic " + hex(magic) + ", expected " + hex(kMagic) + ")");
   if (const auto version = L::get<std::uint16_t>(head.data(), L::kVersion); version != kVersion)
-    throw ProtocolError("protocol version " + std::to_string(version) +
-                        ", this build speaks " + std::to_string(kVersion));
+    throw ProtocolError("protocol version " + std::to_string(version) + ", this build speaks " +
+                        std::to_string(kVersion));
   if (head.size() < L::kFixedSize)
-    throw ProtocolError("header frame of " + std::to_string(head.size()) +
-                        " bytes is too short, protocol version " + std::to_string(kVersion) +
-                        " needs at least " + std::to_string(L::kFixedSize));
+    throw ProtocolError("header frame of " + std::to_string(head.size()) + " bytes is too short, protocol version " +
+                        std::to_string(kVersion) + " needs at least " + std::to_string(L::kFixedSize));
 }
 
 // NUL padding is required all the way so that every valid header has one encoding.
@@ -66,8 +63,7 @@ Array read_descriptor(std::size_t index, const std::byte* d, Bytes payload) {
   const auto rows = L::get<std::uint32_t>(d, L::kRows);
   const auto cols = L::get<std::uint32_t>(d, L::kCols);
   const std::string label = "array " + std::to_string(index);
-  if (dtype != static_cast<std::uint16_t>(DType::Float64) &&
-      dtype != static_cast<std::uint16_t>(DType::Bytes))
+  if (dtype != static_cast<std::uint16_t>(DType::Float64) && dtype != static_cast<std::uint16_t>(DType::Bytes))
     throw ProtocolError(label + " has unknown dtype " + std::to_string(dtype));
   rules::check_shape(index, tag, rows, cols);
   if (static_cast<DType>(dtype) != rules::dtype_of(tag))
@@ -77,9 +73,9 @@ Array read_descriptor(std::size_t index, const std::byte* d, Bytes payload) {
   const std::uint64_t width = static_cast<DType>(dtype) == DType::Bytes ? 1 : sizeof(double);
   const std::uint64_t expected = std::uint64_t{rows} * cols * width;
   if (payload.size() != expected)
-    throw ProtocolError(label + " (" + to_string(tag) + ") of " + std::to_string(rows) + " x " +
-                        std::to_string(cols) + " needs " + std::to_string(expected) +
-                        " bytes, its frame has " + std::to_string(payload.size()));
+    throw ProtocolError(label + " (" + to_string(tag) + ") of " + std::to_string(rows) + " x " + std::to_string(cols) +
+                        " needs " + std::to_string(expected) + " bytes, its frame has " +
+                        std::to_string(payload.size()));
   return Array{.tag = tag, .rows = rows, .cols = cols, .values = {}, .bytes = {}};
 }
 
@@ -106,21 +102,18 @@ Message decode(std::span<const Bytes> frames) {
   Message m{.header = read_header(p), .arrays = {}};
   const auto n = L::get<std::uint32_t>(p, L::kArrayCount);
   if (n > kMaxArrays)
-    throw ProtocolError("header announces " + std::to_string(n) + " arrays, at most " +
-                        std::to_string(kMaxArrays) + " are allowed");
+    throw ProtocolError("header announces " + std::to_string(n) + " arrays, at most " + std::to_string(kMaxArrays) +
+                        " are allowed");
   if (head.size() != L::header_size(n))
-    throw ProtocolError("header frame of " + std::to_string(head.size()) +
-                        " bytes does not fit its " + std::to_string(n) + " arrays (" +
-                        std::to_string(L::header_size(n)) + " bytes)");
+    throw ProtocolError("header frame of " + std::to_string(head.size()) + " bytes does not fit its " +
+                        std::to_string(n) + " arrays (" + std::to_string(L::header_size(n)) + " bytes)");
   if (frames.size() != 1 + std::size_t{n})
-    throw ProtocolError("message has " + std::to_string(frames.size()) +
-                        " frames, its header announces " + std::to_string(n) +
-                        " arrays and so " + std::to_string(1 + n) + " frames");
+    throw ProtocolError("message has " + std::to_string(frames.size()) + " frames, its header announces " +
+                        std::to_string(n) + " arrays and so " + std::to_string(1 + n) + " frames");
 
   // Every size is checked before any payload is copied.
   m.arrays.reserve(n);
-  for (std::size_t i = 0; i < n; ++i)
-    m.arrays.push_back(read_descriptor(i, p + L::header_size(i), frames[1 + i]));
+  for (std::size_t i = 0; i < n; ++i) m.arrays.push_back(read_descriptor(i, p + L::header_size(i), frames[1 + i]));
   for (std::size_t i = 0; i < n; ++i) fill(i, m.arrays[i], frames[1 + i]);
   return m;
 }

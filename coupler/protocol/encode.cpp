@@ -14,9 +14,8 @@ std::span<const std::byte> payload(std::size_t index, const Array& a) {
   const bool text = rules::dtype_of(a.tag) == DType::Bytes;
   const std::uint64_t held = text ? a.bytes.size() : a.values.size();
   if (held != std::uint64_t{a.rows} * a.cols)
-    throw ProtocolError("array " + std::to_string(index) + " (" + to_string(a.tag) + ") of " +
-                        std::to_string(a.rows) + " x " + std::to_string(a.cols) + " holds " +
-                        std::to_string(held) + " elements");
+    throw ProtocolError("array " + std::to_string(index) + " (" + to_string(a.tag) + ") of " + std::to_string(a.rows) +
+                        " x " + std::to_string(a.cols) + " holds " + std::to_string(held) + " elements");
   if (text) return std::as_bytes(std::span(a.bytes));
   rules::check_values(index, a.tag, a.cols, a.values);
   return std::as_bytes(std::span(a.values));
@@ -53,8 +52,8 @@ zmq::message_t header_frame(const Header& h, std::span<const Array> arrays) {
 std::vector<zmq::message_t> encode(const Header& header, std::span<const Array> arrays) {
   rules::check_header(header);
   if (arrays.size() > kMaxArrays)
-    throw ProtocolError("message has " + std::to_string(arrays.size()) +
-                        " arrays, at most " + std::to_string(kMaxArrays) + " are allowed");
+    throw ProtocolError("message has " + std::to_string(arrays.size()) + " arrays, at most " +
+                        std::to_string(kMaxArrays) + " are allowed");
   std::vector<std::span<const std::byte>> payloads;
   payloads.reserve(arrays.size());
   for (std::size_t i = 0; i < arrays.size(); ++i) payloads.push_back(payload(i, arrays[i]));

@@ -116,8 +116,8 @@ field::FieldFrame field_frame(std::vector<Array> arrays, const std::string& who)
     const Array& name = arrays[i];
     Array& values = arrays[i + 1];
     if (values.rows != cells)
-      throw ProtocolError(who + ": field " + name.bytes + " has " + std::to_string(values.rows) + " rows, the grid has " +
-                          std::to_string(cells) + " cells");
+      throw ProtocolError(who + ": field " + name.bytes + " has " + std::to_string(values.rows) +
+                          " rows, the grid has " + std::to_string(cells) + " cells");
     frame.fields.push_back({name.bytes, static_cast<int>(values.cols), std::move(values.values)});
   }
   return frame;

@@ -14,10 +14,10 @@ namespace cosim::protocol::layout {
 static_assert(std::endian::native == std::endian::little,
               "the wire format is little-endian and is copied without byte swapping");
 
-inline constexpr std::size_t kMagic = 0;        // u32
-inline constexpr std::size_t kVersion = 4;      // u16
-inline constexpr std::size_t kType = 6;         // u16
-inline constexpr std::size_t kName = 8;         // char[kNameSize]
+inline constexpr std::size_t kMagic = 0;                   // u32
+inline constexpr std::size_t kVersion = 4;                 // u16
+inline constexpr std::size_t kType = 6;                    // u16
+inline constexpr std::size_t kName = 8;                    // char[kNameSize]
 inline constexpr std::size_t kWindow = kName + kNameSize;  // u64
 inline constexpr std::size_t kIteration = kWindow + 8;     // u32
 inline constexpr std::size_t kProvides = kIteration + 4;   // u32
@@ -30,15 +30,13 @@ inline constexpr std::size_t kFixedSize = kArrayCount + 4;
 static_assert(kFixedSize == 84);
 
 // Followed by one descriptor per array.
-inline constexpr std::size_t kTag = 0;          // u16
-inline constexpr std::size_t kDType = 2;        // u16
-inline constexpr std::size_t kRows = 4;         // u32
-inline constexpr std::size_t kCols = 8;         // u32
+inline constexpr std::size_t kTag = 0;    // u16
+inline constexpr std::size_t kDType = 2;  // u16
+inline constexpr std::size_t kRows = 4;   // u32
+inline constexpr std::size_t kCols = 8;   // u32
 inline constexpr std::size_t kDescriptorSize = 12;
 
-constexpr std::size_t header_size(std::size_t n_arrays) {
-  return kFixedSize + n_arrays * kDescriptorSize;
-}
+constexpr std::size_t header_size(std::size_t n_arrays) { return kFixedSize + n_arrays * kDescriptorSize; }
 
 template <class T>
 void put(std::byte* frame, std::size_t offset, T value) {

@@ -27,7 +27,8 @@ bool known(Type type) {
 
 std::string printable(std::string_view name) {
   std::string out(name);
-  std::ranges::replace_if(out, [](char c) { return c < ' ' || c > '~'; }, '?');
+  std::ranges::replace_if(
+      out, [](char c) { return c < ' ' || c > '~'; }, '?');
   return out;
 }
 
@@ -49,24 +50,20 @@ DType dtype_of(Tag tag) {
 }
 
 void check_header(const Header& h) {
-  if (!known(h.type))
-    throw ProtocolError("unknown message type " +
-                        std::to_string(static_cast<unsigned>(h.type)));
+  if (!known(h.type)) throw ProtocolError("unknown message type " + std::to_string(static_cast<unsigned>(h.type)));
   check_participant_name(h.participant);
   if (!std::isfinite(h.t0) || !std::isfinite(h.t1) || h.t1 < h.t0)
     throw ProtocolError(std::string(to_string(h.type)) + " message of '" + h.participant +
-                        "' has an invalid time span [" + number(h.t0) + ", " + number(h.t1) +
-                        "]");
-  if (h.type == Type::Hello && h.ranks < 1)
-    throw ProtocolError("Hello from '" + h.participant + "' announces 0 ranks");
+                        "' has an invalid time span [" + number(h.t0) + ", " + number(h.t1) + "]");
+  if (h.type == Type::Hello && h.ranks < 1) throw ProtocolError("Hello from '" + h.participant + "' announces 0 ranks");
 }
 
 void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t cols) {
   dtype_of(tag);  // rejects unknown tags
   const auto need_cols = [&](std::uint32_t n) {
     if (cols != n)
-      throw ProtocolError(array_label(index, tag) + " has " + std::to_string(cols) +
-                          " columns, expected " + std::to_string(n));
+      throw ProtocolError(array_label(index, tag) + " has " + std::to_string(cols) + " columns, expected " +
+                          std::to_string(n));
   };
   if (tag == Tag::Poses) need_cols(kPoseWidth);
   if (tag == Tag::Forces) need_cols(kForceWidth);
@@ -74,26 +71,22 @@ void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t c
   if (tag == Tag::Points) need_cols(3);
   if (tag == Tag::Stats) {
     need_cols(kStatsWidth);
-    if (rows != 1)
-      throw ProtocolError(array_label(index, tag) + " has " + std::to_string(rows) + " rows, expected 1");
+    if (rows != 1) throw ProtocolError(array_label(index, tag) + " has " + std::to_string(rows) + " rows, expected 1");
   }
   if (tag == Tag::Text && rows != 1)
     throw ProtocolError(array_label(index, tag) + " has " + std::to_string(rows) +
                         " rows, text is a single row of bytes");
   if (std::uint64_t{rows} * cols > kMaxElements)
-    throw ProtocolError(array_label(index, tag) + " of " + std::to_string(rows) + " x " +
-                        std::to_string(cols) + " elements is larger than the limit of " +
-                        std::to_string(kMaxElements));
+    throw ProtocolError(array_label(index, tag) + " of " + std::to_string(rows) + " x " + std::to_string(cols) +
+                        " elements is larger than the limit of " + std::to_string(kMaxElements));
 }
 
-void check_values(std::size_t index, Tag tag, std::uint32_t cols,
-                  std::span<const double> values) {
+void check_values(std::size_t index, Tag tag, std::uint32_t cols, std::span<const double> values) {
   if (tag != Tag::Poses && tag != Tag::Forces && tag != Tag::Responses && tag != Tag::Stats) return;
   for (std::size_t i = 0; i < values.size(); ++i)
     if (!std::isfinite(values[i]))
-      throw ProtocolError(array_label(index, tag) + " holds " + number(values[i]) +
-                          " at row " + std::to_string(i / cols) + ", column " +
-                          std::to_string(i % cols));
+      throw ProtocolError(array_label(index, tag) + " holds " + number(values[i]) + " at row " +
+                          std::to_string(i / cols) + ", column " + std::to_string(i % cols));
 }
 
 }  // namespace cosim::protocol::rules

@@ -26,7 +26,6 @@ void check_header(const Header& header);
 // Tag, shape and size of array number `index`.
 void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t cols);
 // NaN/Inf where physics is expected (Poses, Forces, Stats).
-void check_values(std::size_t index, Tag tag, std::uint32_t cols,
-                  std::span<const double> values);
+void check_values(std::size_t index, Tag tag, std::uint32_t cols, std::span<const double> values);
 
 }  // namespace cosim::protocol::rules

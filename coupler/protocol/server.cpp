@@ -20,9 +20,7 @@ constexpr std::chrono::milliseconds kLinger(1000);
 }  // namespace
 
 Server::Server(const std::string& endpoint, ServerOptions options)
-    : options_(std::move(options)),
-      socket_(context_, zmq::socket_type::router),
-      events_(context_, socket_) {
+    : options_(std::move(options)), socket_(context_, zmq::socket_type::router), events_(context_, socket_) {
   // Sending to a name nobody connected under fails loudly instead of vanishing.
   socket_.set(zmq::sockopt::router_mandatory, true);
   socket::configure(socket_, kLinger);
@@ -39,8 +37,7 @@ Server::Server(const std::string& endpoint, ServerOptions options)
     socket_.set(zmq::sockopt::heartbeat_ivl, half);
     socket_.set(zmq::sockopt::heartbeat_timeout, half);
   }
-  if (endpoint.starts_with("tcp://") && endpoint.find('[') != std::string::npos)
-    socket_.set(zmq::sockopt::ipv6, true);
+  if (endpoint.starts_with("tcp://") && endpoint.find('[') != std::string::npos) socket_.set(zmq::sockopt::ipv6, true);
   try {
     socket_.bind(endpoint);
   } catch (const zmq::error_t& e) {
@@ -68,8 +65,8 @@ bool Server::wait(std::chrono::milliseconds timeout) {
     std::vector<zmq::pollitem_t> items{{socket_.handle(), 0, ZMQ_POLLIN, 0},
                                        {events_.socket().handle(), 0, ZMQ_POLLIN, 0}};
     if (zap_) items.push_back({zap_->socket().handle(), 0, ZMQ_POLLIN, 0});
-    const auto left = std::max(std::chrono::milliseconds(0),
-                               std::chrono::ceil<std::chrono::milliseconds>(deadline - clock::now()));
+    const auto left =
+        std::max(std::chrono::milliseconds(0), std::chrono::ceil<std::chrono::milliseconds>(deadline - clock::now()));
     try {
       zmq::poll(items, left);
     } catch (const zmq::error_t& e) {
@@ -96,8 +93,8 @@ bool Server::wait(std::chrono::milliseconds timeout) {
 std::optional<Message> Server::receive(std::chrono::milliseconds timeout) {
   const auto deadline = clock::now() + timeout;
   for (;;) {
-    const auto left = std::max(std::chrono::milliseconds(0),
-                               std::chrono::ceil<std::chrono::milliseconds>(deadline - clock::now()));
+    const auto left =
+        std::max(std::chrono::milliseconds(0), std::chrono::ceil<std::chrono::milliseconds>(deadline - clock::now()));
     if (!wait(left)) return std::nullopt;
     auto frames = socket::receive(socket_);
     // ROUTER puts the sender's identity first: the name it connected under.

@@ -21,9 +21,7 @@ namespace cosim::protocol {
 // a valid message. what() = "participant '<peer>' <problem>".
 struct PeerError : ProtocolError {
   PeerError(std::string peer, std::string problem)
-      : ProtocolError("participant '" + peer + "' " + problem),
-        peer(std::move(peer)),
-        problem(std::move(problem)) {}
+      : ProtocolError("participant '" + peer + "' " + problem), peer(std::move(peer)), problem(std::move(problem)) {}
   std::string peer;
   std::string problem;
 };

@@ -26,13 +26,12 @@ std::string protocol_error(std::uint32_t code) {
 
 }  // namespace
 
-SocketEvents::SocketEvents(zmq::context_t& context, zmq::socket_t& watched)
-    : socket_(context, zmq::socket_type::pair) {
+SocketEvents::SocketEvents(zmq::context_t& context, zmq::socket_t& watched) : socket_(context, zmq::socket_type::pair) {
   // Unique per watched socket: a process may hold several servers (tests, benchmarks).
   char address[64];
   std::snprintf(address, sizeof address, "inproc://cosim.events.%p", watched.handle());
-  const int events = ZMQ_EVENT_DISCONNECTED | ZMQ_EVENT_HANDSHAKE_FAILED_NO_DETAIL |
-                     ZMQ_EVENT_HANDSHAKE_FAILED_PROTOCOL;
+  const int events =
+      ZMQ_EVENT_DISCONNECTED | ZMQ_EVENT_HANDSHAKE_FAILED_NO_DETAIL | ZMQ_EVENT_HANDSHAKE_FAILED_PROTOCOL;
   if (zmq_socket_monitor(watched.handle(), address, events) != 0) throw zmq::error_t();
   socket_.set(zmq::sockopt::linger, 0);
   socket_.connect(address);

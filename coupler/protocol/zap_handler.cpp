@@ -42,15 +42,16 @@ std::optional<std::string> ZapHandler::answer() {
   } else if (auto it = keys_.participants.find(z85(request[kKey])); it != keys_.participants.end()) {
     name = it->second;
   } else {
-    refusal = "refused a connection from " + rules::printable(frame(kAddress)) +
-              ": its key is not one of this run's";
+    refusal = "refused a connection from " + rules::printable(frame(kAddress)) + ": its key is not one of this run's";
   }
   // The reply: version, request id, status code and text, user id, metadata.
   const std::string request_id = request.size() > kRequestId ? request[kRequestId].to_string() : std::string();
-  const std::array<zmq::const_buffer, 6> reply{zmq::str_buffer("1.0"), zmq::buffer(request_id),
+  const std::array<zmq::const_buffer, 6> reply{zmq::str_buffer("1.0"),
+                                               zmq::buffer(request_id),
                                                refusal ? zmq::str_buffer("400") : zmq::str_buffer("200"),
                                                refusal ? zmq::str_buffer("unknown key") : zmq::str_buffer("OK"),
-                                               zmq::buffer(name), zmq::const_buffer()};
+                                               zmq::buffer(name),
+                                               zmq::const_buffer()};
   zmq::send_multipart(socket_, reply);
   return refusal;
 }

@@ -63,8 +63,7 @@ int run(const RunRequest& request) {
     // Validate what the file holds before resume() writes anything to it.
     path = *request.resume;
     const auto summary = output::RunFile::peek(path);
-    if (!summary.has_checkpoint)
-      throw std::runtime_error(path.string() + " has no checkpoint: it cannot be resumed");
+    if (!summary.has_checkpoint) throw std::runtime_error(path.string() + " has no checkpoint: it cannot be resumed");
     session.emplace(scene::load_scene_from_string(summary.info.scene_text, summary.info.scene_file));
     auto file = output::RunFile::resume(path, COSIM_GIT_HASH);
     auto from = file.checkpoint();
@@ -78,22 +77,25 @@ int run(const RunRequest& request) {
     work = std::move(*read);
     path = request.output.empty() ? fs::path(scene.output.file) : request.output;
     if (path.has_parent_path()) fs::create_directories(path.parent_path());
-    session->attach(output::RunFile::create(path, output::RunInfo::of_this_build(scene.text, scene.file.string()), scene.body_names(), session->participant_names()),
-                std::nullopt, request.progress);
+    session->attach(output::RunFile::create(path, output::RunInfo::of_this_build(scene.text, scene.file.string()),
+                                            scene.body_names(), session->participant_names()),
+                    std::nullopt, request.progress);
   }
 
   const auto resume_hint = [&] {
     const auto from = session->checkpointed();
     if (from)
-      return fmt::format("the run file {} keeps {} committed windows; continue from its checkpoint at "
-                         "window {} with: cosim run --resume {}",
-                         path.string(), session->committed(), *from, path.string());
+      return fmt::format(
+          "the run file {} keeps {} committed windows; continue from its checkpoint at "
+          "window {} with: cosim run --resume {}",
+          path.string(), session->committed(), *from, path.string());
     if (session->committed() == 0)
-      return fmt::format("no window was committed, so there is nothing to resume: fix the cause and run the "
-                         "scene again ({} records the error)",
-                         path.string());
-    return fmt::format("the run file {} keeps {} committed windows but no checkpoint to resume from",
-                       path.string(), session->committed());
+      return fmt::format(
+          "no window was committed, so there is nothing to resume: fix the cause and run the "
+          "scene again ({} records the error)",
+          path.string());
+    return fmt::format("the run file {} keeps {} committed windows but no checkpoint to resume from", path.string(),
+                       session->committed());
   };
   try {
     session->execute();

@@ -41,16 +41,13 @@ Eigen::VectorXd initial_poses(const scene::Scene& scene) {
 namespace {
 
 protocol::Array array_of(protocol::Tag tag, const Eigen::VectorXd& v, int cols) {
-  return protocol::Array::of(tag, static_cast<std::uint32_t>(v.size() / cols),
-                             static_cast<std::uint32_t>(cols),
+  return protocol::Array::of(tag, static_cast<std::uint32_t>(v.size() / cols), static_cast<std::uint32_t>(cols),
                              std::vector<double>(v.data(), v.data() + v.size()));
 }
 
 }  // namespace
 
-protocol::Array poses_array(const Eigen::VectorXd& poses) {
-  return array_of(protocol::Tag::Poses, poses, kPoseSize);
-}
+protocol::Array poses_array(const Eigen::VectorXd& poses) { return array_of(protocol::Tag::Poses, poses, kPoseSize); }
 
 protocol::Array forces_array(const Eigen::VectorXd& forces) {
   return array_of(protocol::Tag::Forces, forces, kForceSize);
@@ -60,8 +57,7 @@ protocol::Array responses_array(const Eigen::VectorXd& responses) {
   return array_of(protocol::Tag::Responses, responses, kResponseSize);
 }
 
-Eigen::VectorXd take(const protocol::Message& m, protocol::Tag tag, Eigen::Index size,
-                     const std::string& when) {
+Eigen::VectorXd take(const protocol::Message& m, protocol::Tag tag, Eigen::Index size, const std::string& when) {
   const auto* a = m.find(tag);
   const auto* name = protocol::to_string(tag);
   if (a == nullptr)
@@ -69,8 +65,7 @@ Eigen::VectorXd take(const protocol::Message& m, protocol::Tag tag, Eigen::Index
                              fmt::format("sent {} without {}", protocol::to_string(m.header.type), name), when);
   if (static_cast<Eigen::Index>(a->values.size()) != size)
     throw ParticipantFailure(m.header.participant,
-                             fmt::format("sent {} with {} values, expected {}", name, a->values.size(), size),
-                             when);
+                             fmt::format("sent {} with {} values, expected {}", name, a->values.size(), size), when);
   return Eigen::Map<const Eigen::VectorXd>(a->values.data(), size);
 }
 

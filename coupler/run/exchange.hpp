@@ -44,7 +44,6 @@ protocol::Array forces_array(const Eigen::VectorXd& forces);
 protocol::Array responses_array(const Eigen::VectorXd& responses);
 // The `tag` array of a participant's message, which must hold exactly `size` values;
 // anything else is that participant's failure.
-Eigen::VectorXd take(const protocol::Message& m, protocol::Tag tag, Eigen::Index size,
-                     const std::string& when);
+Eigen::VectorXd take(const protocol::Message& m, protocol::Tag tag, Eigen::Index size, const std::string& when);
 
 }  // namespace cosim::run

@@ -13,7 +13,7 @@ Listening listening(const scene::Coupling& coupling, const std::vector<std::stri
     return l;
   }
   const std::string& at = coupling.interface;
-  l.endpoint = at.empty() ? "tcp://127.0.0.1:*"
+  l.endpoint = at.empty()                          ? "tcp://127.0.0.1:*"
                : at.find(':') != std::string::npos ? "tcp://[" + at + "]:*"  // an IPv6 address
                                                    : "tcp://" + at + ":*";
   // Even on 127.0.0.1 another user of this host could connect: every tcp run has keys.

@@ -53,8 +53,7 @@ void Peers::fail(const std::string& name, const std::string& problem, const std:
   auto it = processes_.find(name);
   if (it != processes_.end()) {
     const auto deadline = clock::now() + std::chrono::milliseconds(200);
-    while (!it->second.poll() && clock::now() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    while (!it->second.poll() && clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     if (auto ended = it->second.poll()) throw ParticipantFailure(name, *ended, when);
   }
   throw ParticipantFailure(name, problem, when);
@@ -68,9 +67,10 @@ void Peers::watch_connections() {
 }
 
 std::string Peers::lost_connection() const {
-  return fmt::format("lost its connection to the coupler (closed, or no answer to heartbeats for {} s: "
-                     "coupling.heartbeat)",
-                     heartbeat_.count() / 1000.0);
+  return fmt::format(
+      "lost its connection to the coupler (closed, or no answer to heartbeats for {} s: "
+      "coupling.heartbeat)",
+      heartbeat_.count() / 1000.0);
 }
 
 void Peers::check_connections(const std::string& when) {
@@ -87,8 +87,7 @@ void Peers::send(const std::string& name, protocol::Message m, const std::string
   }
 }
 
-std::map<std::string, protocol::Message> Peers::gather(const std::vector<std::string>& names,
-                                                       protocol::Type type,
+std::map<std::string, protocol::Message> Peers::gather(const std::vector<std::string>& names, protocol::Type type,
                                                        const std::string& when) {
   std::set<std::string> pending(names.begin(), names.end());
   std::map<std::string, protocol::Message> replies;
@@ -126,8 +125,7 @@ std::map<std::string, protocol::Message> Peers::gather(const std::vector<std::st
       continue;
     }
     for (auto& [name, p] : processes_)
-      if (auto ended = p.poll(); ended && !said_bye_.contains(name))
-        throw ParticipantFailure(name, *ended, when);
+      if (auto ended = p.poll(); ended && !said_bye_.contains(name)) throw ParticipantFailure(name, *ended, when);
     // Only now, with no message waiting: what a participant sent before its connection
     // ended has been read.
     check_connections(when);
@@ -140,9 +138,8 @@ std::map<std::string, protocol::Message> Peers::gather(const std::vector<std::st
   return replies;
 }
 
-std::map<std::string, protocol::Message> Peers::exchange(
-    std::map<std::string, protocol::Message> requests, protocol::Type reply,
-    const std::string& when) {
+std::map<std::string, protocol::Message> Peers::exchange(std::map<std::string, protocol::Message> requests,
+                                                         protocol::Type reply, const std::string& when) {
   std::vector<std::string> names;
   for (auto& [name, m] : requests) {
     send(name, std::move(m), when);

@@ -30,12 +30,11 @@ class Peers {
 
   void send(const std::string& name, protocol::Message m, const std::string& when);
   // One message of `type` from each of `names`.
-  std::map<std::string, protocol::Message> gather(const std::vector<std::string>& names,
-                                                  protocol::Type type, const std::string& when);
+  std::map<std::string, protocol::Message> gather(const std::vector<std::string>& names, protocol::Type type,
+                                                  const std::string& when);
   // Send one message to each, then gather the replies of `reply` type.
-  std::map<std::string, protocol::Message> exchange(
-      std::map<std::string, protocol::Message> requests, protocol::Type reply,
-      const std::string& when);
+  std::map<std::string, protocol::Message> exchange(std::map<std::string, protocol::Message> requests,
+                                                    protocol::Type reply, const std::string& when);
 
   // Stop (answered by Bye) to all, then wait for the processes; anything left is killed.
   void stop_all();
@@ -45,8 +44,7 @@ class Peers {
   void abort_all(const std::string& reason);
 
  private:
-  [[noreturn]] void fail(const std::string& name, const std::string& problem,
-                         const std::string& when);
+  [[noreturn]] void fail(const std::string& name, const std::string& problem, const std::string& when);
   // Logs what the server refused (at most once a second: warning_rate.hpp), notes whom it
   // lost.
   void watch_connections();

@@ -54,20 +54,21 @@ std::string field_source(const scene::Scene& scene, const scene::Plan& plan, con
     if (p.name != consumer.name && scene::has(p.provides, scene::Data::Fields)) others.push_back(p.name);
   if (others.size() != 1)
     throw scene::SceneError(scene.file.string(), consumer.line, "participants." + consumer.name, "",
-                            others.empty() ? "needs fields, but no other participant provides them"
-                                           : "needs fields from one participant, but " + join(others) + " provide them");
+                            others.empty()
+                                ? "needs fields, but no other participant provides them"
+                                : "needs fields from one participant, but " + join(others) + " provide them");
   return others.front();
 }
 
 // The frame with only the `wanted` fields, in that order (all if none are named, and only
 // then its point sets: a consumer that names fields uses those), copied out of the source's.
 field::FieldFrame pick(const field::FieldFrame& frame, const std::vector<std::string>& wanted,
-                        const std::string& source, const std::string& consumer, const std::string& when) {
+                       const std::string& source, const std::string& consumer, const std::string& when) {
   if (wanted.empty()) return frame;
   field::FieldFrame out{frame.grid, {}};
   for (const auto& name : wanted) {
-    const auto f = std::find_if(frame.fields.begin(), frame.fields.end(),
-                                [&](const auto& field) { return field.name == name; });
+    const auto f =
+        std::find_if(frame.fields.begin(), frame.fields.end(), [&](const auto& field) { return field.name == name; });
     if (f == frame.fields.end())
       throw ParticipantFailure(source, "sends no field '" + name + "', which '" + consumer + "' needs", when);
     out.fields.push_back(*f);
@@ -134,8 +135,8 @@ void Session::announce() const {
   std::vector<std::string> effects, started;
   for (auto e : scene_.effects) effects.emplace_back(scene::to_string(e));
   for (const auto& p : plan_.start)
-    started.push_back(p.name + " (provides " + scene::describe(p.provides) + ", needs " +
-                      scene::describe(p.needs) + ")");
+    started.push_back(p.name + " (provides " + scene::describe(p.provides) + ", needs " + scene::describe(p.needs) +
+                      ")");
   spdlog::info("effects: {}", effects.empty() ? "none" : join(effects));
   spdlog::info("participants: {}", join(started));
   for (const auto& s : plan_.skipped) spdlog::info("not started: {}", s);
@@ -146,16 +147,14 @@ void Session::announce() const {
 
 std::uint64_t Session::first_window() const { return resume_ ? resume_->next_window : 0; }
 
-double Session::window_start(std::uint64_t k) const {
-  return static_cast<double>(k) * scene_.coupling.window;
-}
+double Session::window_start(std::uint64_t k) const { return static_cast<double>(k) * scene_.coupling.window; }
 
 void Session::handshake(Peers& peers) {
   const auto w = first_window();
   const std::string when = "during start-up";
   for (const auto& [name, hello] : peers.gather(roles_.all(), protocol::Type::Hello, when)) {
-    const auto& planned = *std::find_if(plan_.start.begin(), plan_.start.end(),
-                                        [&](const auto& s) { return s.name == name; });
+    const auto& planned =
+        *std::find_if(plan_.start.begin(), plan_.start.end(), [&](const auto& s) { return s.name == name; });
     // Hello says what a program can exchange; the scene decides what it will. A program
     // announces its roles before it has seen the scene, so the planned roles must only be
     // within what it can do (the rigid bodies can take forces even when no one sends any).
@@ -164,13 +163,12 @@ void Session::handshake(Peers& peers) {
       throw ParticipantFailure(name,
                                "can provide " + scene::describe(hello.header.provides) + " and take " +
                                    scene::describe(hello.header.needs) + ", but the scene needs it to provide " +
-                                   scene::describe(planned.provides) + " and take " +
-                                   scene::describe(planned.needs),
+                                   scene::describe(planned.provides) + " and take " + scene::describe(planned.needs),
                                when);
     if (static_cast<int>(hello.header.ranks) != planned.ranks)
       throw ParticipantFailure(name,
-                               "runs on " + std::to_string(hello.header.ranks) +
-                                   " ranks, the scene asks for " + std::to_string(planned.ranks),
+                               "runs on " + std::to_string(hello.header.ranks) + " ranks, the scene asks for " +
+                                   std::to_string(planned.ranks),
                                when);
   }
 
@@ -223,18 +221,16 @@ void Session::windows(Peers& peers) {
     for (const auto& [name, bytes] : r.field_bytes) forwarded_bytes_ += bytes;
     count(r);
     if (!r.converged)
-      spdlog::warn("window {} (t = {} s): not converged after {} iterations, residual {:.3g}",
-                   k, t1, r.iterations, r.residual);
+      spdlog::warn("window {} (t = {} s): not converged after {} iterations, residual {:.3g}", k, t1, r.iterations,
+                   r.residual);
     const protocol::Message commit = protocol::messages::commit(k);
     for (const auto& name : roles_.all()) peers.send(name, commit, in_window(k, window_start(k), t1));
     current_ = r.end;
     committed_ = k + 1;
     const double wall = std::chrono::duration<double>(clock::now() - started).count();
-    if (scene_.output.row_at(k + 1, n))
-      record(k + 1, t1, r, wall);
+    if (scene_.output.row_at(k + 1, n)) record(k + 1, t1, r, wall);
     write_fields(peers, k + 1);
-    if (scene_.output.checkpoint_at(k + 1, n))
-      checkpoint(peers, k + 1);
+    if (scene_.output.checkpoint_at(k + 1, n)) checkpoint(peers, k + 1);
     progress.update(k, t1, r.iterations);
   }
   progress.finish();
@@ -267,9 +263,8 @@ void Session::record(std::uint64_t window, double time, const WindowResult& r, d
   file_->append(rec);
 }
 
-std::map<std::string, field::FieldFrame> Session::request_fields(Peers& peers,
-                                                                  const std::set<std::string>& providers,
-                                                                  std::uint64_t window, const std::string& when) {
+std::map<std::string, field::FieldFrame> Session::request_fields(Peers& peers, const std::set<std::string>& providers,
+                                                                 std::uint64_t window, const std::string& when) {
   std::map<std::string, protocol::Message> requests;
   for (const auto& name : providers)
     requests.emplace(name, protocol::messages::field_request(window, window_start(window)));
@@ -309,7 +304,8 @@ FieldArrays Session::forwarded_fields(Peers& peers, std::uint64_t window) {
   auto frames = request_fields(peers, sources, window, when);
   if (written) frames.insert(written_fields_.frames.begin(), written_fields_.frames.end());
   for (const auto& [consumer, source] : field_source_)
-    out.emplace(consumer, protocol::field_arrays(pick(frames.at(source), wanted_fields_[consumer], source, consumer, when)));
+    out.emplace(consumer,
+                protocol::field_arrays(pick(frames.at(source), wanted_fields_[consumer], source, consumer, when)));
   return out;
 }
 

@@ -51,7 +51,7 @@ class Session {
   void count(const WindowResult& r);  // into totals_
   // The fields of `providers` at the start of `window` (their committed state).
   std::map<std::string, field::FieldFrame> request_fields(Peers& peers, const std::set<std::string>& providers,
-                                                           std::uint64_t window, const std::string& when);
+                                                          std::uint64_t window, const std::string& when);
   // At the scene's fields times, every participant that provides fields sends them.
   void write_fields(Peers& peers, std::uint64_t windows_done);
   // What each participant that needs fields takes in `window`: its source's fields now,
@@ -62,8 +62,8 @@ class Session {
   scene::Scene scene_;
   scene::Plan plan_;
   Roles roles_;
-  std::vector<std::vector<std::string>> commands_;  // per plan_.start
-  std::map<std::string, std::string> field_source_;  // participant that needs fields -> who sends them
+  std::vector<std::vector<std::string>> commands_;                 // per plan_.start
+  std::map<std::string, std::string> field_source_;                // participant that needs fields -> who sends them
   std::map<std::string, std::vector<std::string>> wanted_fields_;  // by name, as its Ready said; none: all
   // The frames write_fields took last, kept for forwarding at the same instant.
   struct WrittenFields {

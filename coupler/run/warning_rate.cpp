@@ -27,7 +27,8 @@ std::optional<std::string> WarningRate::admit(const std::string& text, clock::ti
 std::vector<std::string> WarningRate::held_back() {
   std::vector<std::string> out;
   for (auto& [text, s] : seen_)
-    if (s.held > 0) out.push_back(fmt::format("{} ({} since it was last shown)", text, repeats(std::exchange(s.held, 0))));
+    if (s.held > 0)
+      out.push_back(fmt::format("{} ({} since it was last shown)", text, repeats(std::exchange(s.held, 0))));
   return out;
 }
 

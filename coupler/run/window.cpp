@@ -53,7 +53,8 @@ participant::Vector6d velocity_of(const Eigen::VectorXd& poses, Eigen::Index bod
 }
 
 participant::ResponseRow response_of(const Eigen::VectorXd& responses, Eigen::Index body) {
-  return participant::response_rows({responses.data() + kResponseSize * body, static_cast<std::size_t>(kResponseSize)})[0];
+  return participant::response_rows(
+      {responses.data() + kResponseSize * body, static_cast<std::size_t>(kResponseSize)})[0];
 }
 
 participant::ForceRow force_of(const Eigen::VectorXd& forces, Eigen::Index body) {
@@ -65,7 +66,8 @@ participant::ForceRow force_of(const Eigen::VectorXd& forces, Eigen::Index body)
 Eigen::VectorXd next_window_wrenches(const Exchange& start) {
   Eigen::VectorXd out(start.forces.size());
   for (Eigen::Index b = 0; b < out.size() / kForceSize; ++b)
-    out.segment<6>(kForceSize * b) = participant::robin_wrench(response_of(start.responses, b), velocity_of(start.poses, b));
+    out.segment<6>(kForceSize * b) =
+        participant::robin_wrench(response_of(start.responses, b), velocity_of(start.poses, b));
   return out;
 }
 
@@ -75,8 +77,9 @@ Eigen::VectorXd repeat_wrenches(const Exchange& start, const Eigen::VectorXd& fo
                                 double length) {
   Eigen::VectorXd out(forces.size());
   for (Eigen::Index b = 0; b < out.size() / kForceSize; ++b)
-    out.segment<6>(kForceSize * b) = participant::robin_wrench(response_of(start.responses, b), force_of(forces, b),
-                                                               velocity_of(start.poses, b), velocity_of(poses, b), length);
+    out.segment<6>(kForceSize * b) =
+        participant::robin_wrench(response_of(start.responses, b), force_of(forces, b), velocity_of(start.poses, b),
+                                  velocity_of(poses, b), length);
   return out;
 }
 
@@ -88,14 +91,16 @@ WindowRunner::WindowRunner(Peers& peers, Roles roles, const scene::Coupling& cou
       coupling_(coupling),
       accelerator_(coupling::make_accelerator(coupling.acceleration, coupling.relaxation)) {}
 
-WindowResult WindowRunner::advance(std::uint64_t window, double t0, double t1,
-                                   const Exchange& start, const FieldArrays& fields) {
+WindowResult WindowRunner::advance(std::uint64_t window, double t0, double t1, const Exchange& start,
+                                   const FieldArrays& fields) {
   const Span s{window, t0, t1, in_window(window, t0, t1), fields};
   // With nobody on one side there is no loop to close: one pass is exact.
   const bool closed = !roles_.pose_providers.empty() && !roles_.force_providers.empty();
   switch (coupling_.scheme) {
-    case scene::Scheme::SerialExplicit: return serial_explicit(s, start);
-    case scene::Scheme::ParallelExplicit: return parallel_explicit(s, start);
+    case scene::Scheme::SerialExplicit:
+      return serial_explicit(s, start);
+    case scene::Scheme::ParallelExplicit:
+      return parallel_explicit(s, start);
     case scene::Scheme::SerialImplicit:
       return closed ? serial_implicit(s, start) : serial_explicit(s, start);
     case scene::Scheme::ParallelImplicit:
@@ -104,8 +109,8 @@ WindowResult WindowRunner::advance(std::uint64_t window, double t0, double t1,
   return {};
 }
 
-Exchange WindowRunner::call(const std::vector<std::string>& names, const Span& s, int iteration,
-                            const Exchange& start, const Exchange& end, WindowResult& r) {
+Exchange WindowRunner::call(const std::vector<std::string>& names, const Span& s, int iteration, const Exchange& start,
+                            const Exchange& end, WindowResult& r) {
   std::map<std::string, protocol::Message> requests;
   for (const auto& name : names) {
     std::vector<protocol::Array> inputs;
@@ -224,8 +229,7 @@ WindowResult WindowRunner::parallel_implicit(const Span& s, const Exchange& star
     r.residual = std::max(poses, forces);
     if (poses <= coupling_.tolerance && converged(forces, r.end.forces - guess.forces)) return r;
     if (it == 1) weights = block_weights(r.end);
-    const Eigen::VectorXd next =
-        accelerator_->next(x.cwiseProduct(weights), stack(r.end).cwiseProduct(weights));
+    const Eigen::VectorXd next = accelerator_->next(x.cwiseProduct(weights), stack(r.end).cwiseProduct(weights));
     x = next.cwiseQuotient(weights);
   }
   r.converged = false;

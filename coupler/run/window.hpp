@@ -54,8 +54,8 @@ class WindowRunner {
   };
   // Advance `names` over the span with inputs interpolated from start to end; returns
   // `end` with the outputs of those participants in place, and adds their stats to r.
-  Exchange call(const std::vector<std::string>& names, const Span& s, int iteration,
-                const Exchange& start, const Exchange& end, WindowResult& r);
+  Exchange call(const std::vector<std::string>& names, const Span& s, int iteration, const Exchange& start,
+                const Exchange& end, WindowResult& r);
   WindowResult serial_explicit(const Span& s, const Exchange& start);
   WindowResult parallel_explicit(const Span& s, const Exchange& start);
   WindowResult serial_implicit(const Span& s, const Exchange& start);

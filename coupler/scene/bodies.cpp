@@ -125,9 +125,10 @@ void check_overlaps(const std::vector<Reader>& items, const std::vector<Body>& b
                             a.shape.radius + b.shape.radius -
                                 std::hypot(a.position[0] - b.position[0], a.position[1] - b.position[1],
                                            a.position[2] - b.position[2]))
-              : fmt::format("body '{}' at {} may overlap body '{}' of bodies[{}]: their bounding spheres and boxes "
-                            "cut into each other",
-                            b.name, text(b.position), a.name, entry_of[i]);
+              : fmt::format(
+                    "body '{}' at {} may overlap body '{}' of bodies[{}]: their bounding spheres and boxes "
+                    "cut into each other",
+                    b.name, text(b.position), a.name, entry_of[i]);
       items[entry_of[j]].fail(generated[j] ? "generate" : "position", problem);
     }
     grid.add(solids[n]);

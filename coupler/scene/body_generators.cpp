@@ -71,7 +71,7 @@ LatticeAxis lattice_axis(const Reader& r, int k, double lo, double hi, double ex
   const char* axis = axis_names[static_cast<std::size_t>(k)];
   const double width = hi - lo;
   const double need = extent + 2 * jitter;  // a body's room, and the least spacing that keeps two apart
-  const double room = width - need;        // for the centres' span
+  const double room = width - need;         // for the centres' span
   if (room < -fit * width)
     r.fail("region", fmt::format("is {:g} wide on {}, less than a body and its jitter take ({:g})", width, axis, need));
   LatticeAxis a;
@@ -131,9 +131,9 @@ std::vector<Vec3> random_centres(const Reader& r, const Body& common, const Gene
   const double body_volume = volume(common.shape);
   const bool has_count = r.has("count"), has_fraction = r.has("solid_fraction");
   if (has_count == has_fraction)
-    r.fail(has_count ? "solid_fraction" : "count",
-           has_count ? "give count or solid_fraction, not both"
-                     : "missing: random addition needs count or solid_fraction");
+    r.fail(has_count ? "solid_fraction" : "count", has_count
+                                                       ? "give count or solid_fraction, not both"
+                                                       : "missing: random addition needs count or solid_fraction");
   const std::string key = has_count ? "count" : "solid_fraction";
   std::size_t count = 0;
   if (has_count) {

@@ -13,8 +13,8 @@ namespace cosim::scene {
 
 struct GeneratorContext {
   Domain domain;
-  std::filesystem::path dir;     // the scene's folder, against which `file` is resolved
-  std::filesystem::path output;  // the scene's output.file, which a run overwrites
+  std::filesystem::path dir;      // the scene's folder, against which `file` is resolved
+  std::filesystem::path output;   // the scene's output.file, which a run overwrites
   std::span<const Body> earlier;  // bodies of the entries before: random addition keeps clear of them
 };
 

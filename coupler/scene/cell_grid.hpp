@@ -25,8 +25,7 @@ class CellGrid {
 
   // The smallest index of a solid added before that overlaps `s` (solid.hpp) and that
   // `counts` accepts (all of them without it); nullopt if there is none.
-  std::optional<std::size_t> first_overlap(const Solid& s,
-                                           const std::function<bool(std::size_t)>& counts = {}) const;
+  std::optional<std::size_t> first_overlap(const Solid& s, const std::function<bool(std::size_t)>& counts = {}) const;
 
  private:
   using Cell = std::array<std::int64_t, 3>;

@@ -17,9 +17,7 @@ constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 }  // namespace
 
 FreeCells::FreeCells(const Domain& box, double edge) : origin_(box.min) {
-  const auto cells_along = [&](int k, double e) {
-    return std::max(1.0, std::ceil((box.max[k] - box.min[k]) / e));
-  };
+  const auto cells_along = [&](int k, double e) { return std::max(1.0, std::ceil((box.max[k] - box.min[k]) / e)); };
   const double cells = cells_along(0, edge) * cells_along(1, edge) * cells_along(2, edge);
   if (cells > max_cells) edge *= std::cbrt(cells / max_cells) * (1 + 1e-9);
   std::size_t total = 1;

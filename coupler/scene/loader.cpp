@@ -112,7 +112,8 @@ Domain read_box(const Reader& r) {
 
 Scene load_scene(const fs::path& file) {
   if (!fs::is_regular_file(file))
-    throw SceneError(file.string(), 0, "", "", fs::exists(file) ? "not a file (a scene is a YAML file)" : "no such scene file");
+    throw SceneError(file.string(), 0, "", "",
+                     fs::exists(file) ? "not a file (a scene is a YAML file)" : "no such scene file");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw SceneError(file.string(), 0, "", "", "cannot open the scene file");
   std::ostringstream text;

@@ -24,9 +24,8 @@ std::vector<std::string> read_command(const Reader& r) {
 }
 
 bool is_host_name(const std::string& s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) {
-    return std::isalnum(c) || c == '.' || c == '-' || c == '_';
-  });
+  return !s.empty() && std::all_of(s.begin(), s.end(),
+                                   [](unsigned char c) { return std::isalnum(c) || c == '.' || c == '-' || c == '_'; });
 }
 
 // At most one of hosts, hostfile and het_group. Ranks elsewhere reach the coupler only on a
@@ -54,8 +53,9 @@ Placement read_placement(const Reader& r, const Coupling& coupling, const std::f
     p.het_group = r.integer("het_group", Range::at_least(0));
   }
   if (coupling.transport != Transport::Tcp || coupling.interface.empty())
-    r.fail(key, "ranks on other hosts reach the coupler only over a network: set coupling.transport: tcp and "
-                "coupling.interface");
+    r.fail(key,
+           "ranks on other hosts reach the coupler only over a network: set coupling.transport: tcp and "
+           "coupling.interface");
   return p;
 }
 
@@ -94,7 +94,8 @@ Participant read_participant(const Reader& r, const std::string& name, int line,
 
 }  // namespace
 
-std::vector<Participant> read_participants(const Reader& r, const Coupling& coupling, const std::filesystem::path& dir) {
+std::vector<Participant> read_participants(const Reader& r, const Coupling& coupling,
+                                           const std::filesystem::path& dir) {
   std::vector<Participant> participants;
   for (const std::string& name : r.keys()) {
     if (!is_name(name)) r.fail(name, name_rule);

@@ -59,7 +59,7 @@ class Reader {
   Vec3 vec3(const std::string& key, const Range& range = {}) const;
   Vec3 vec3(const std::string& key, const Vec3& fallback, const Range& range = {}) const;
   void numbers(const std::string& key, std::span<double> out, const Range& range = {}) const;  // exactly out.size()
-  void integers(const std::string& key, std::span<int> out, const Range& range = {}) const;  // exactly out.size()
+  void integers(const std::string& key, std::span<int> out, const Range& range = {}) const;    // exactly out.size()
   std::vector<std::string> strings(const std::string& key) const;
   // One of `names`, returned as its index (enum tables index by value).
   std::size_t choice(const std::string& key, std::span<const char* const> names) const;
@@ -70,7 +70,7 @@ class Reader {
   std::vector<Reader> maps(const std::string& key) const;  // a list of mappings: "bodies[2]"
   YAML::Node node(const std::string& key) const;           // raw, required
 
-  int line(const std::string& key) const;  // 1-based line of the key, or of this mapping if absent
+  int line(const std::string& key) const;           // 1-based line of the key, or of this mapping if absent
   std::string where(const std::string& key) const;  // "file:line: path.key", for warnings
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
   // Throws for the first key (in file order) present but never read:

@@ -38,12 +38,13 @@ struct Time {
 };
 
 struct Coupling {
-  double window = 0.0;                     // coupling window length W [s]
+  double window = 0.0;  // coupling window length W [s]
   Scheme scheme = Scheme::SerialImplicit;
   Acceleration acceleration = Acceleration::IqnIls;
-  double relaxation = 0.5;                 // constant factor, or Aitken's first factor
+  double relaxation = 0.5;  // constant factor, or Aitken's first factor
   int max_iterations = 50;
-  double tolerance = 1e-6;                 // change of the exchanged data per iteration, relative to the larger of their start and end values
+  double tolerance =
+      1e-6;  // change of the exchanged data per iteration, relative to the larger of their start and end values
   // [N and N m] converged too when the forces change by at most this much: bodies at rest
   // feel forces that fade towards the fluid solver's round-off. 0: the relative test only.
   double force_tolerance = 0.0;
@@ -51,17 +52,17 @@ struct Coupling {
   // tcp: the network interface ("ib0") or local address the coupler listens on, so that
   // participants on other hosts reach it; empty: 127.0.0.1.
   std::string interface;
-  double timeout = 60.0;                   // seconds a participant may take to answer
+  double timeout = 60.0;  // seconds a participant may take to answer
   // Seconds without an answer to ZMTP heartbeats after which a participant's connection
   // counts as lost: a host that died leaves no process to watch.
   double heartbeat = 10.0;
 };
 
 struct Output {
-  std::string file = "run.h5";             // relative to the working directory
-  int every = 1;                           // write body series every N windows
-  int checkpoint_every = 10;               // checkpoint every N windows
-  int fields_every = 10;                   // grid fields at t = 0, every N windows and the last; 0: none
+  std::string file = "run.h5";  // relative to the working directory
+  int every = 1;                // write body series every N windows
+  int checkpoint_every = 10;    // checkpoint every N windows
+  int fields_every = 10;        // grid fields at t = 0, every N windows and the last; 0: none
   // Whether the state after `done` of `windows` windows is written: every N-th and the last
   // (done = 0, the start, is a multiple of every N).
   bool row_at(std::uint64_t done, std::uint64_t windows) const { return at(every, done, windows); }
@@ -85,19 +86,19 @@ enum class ShapeType { Sphere, Ellipsoid, Box, Cylinder, Capsule, Plane, Mesh };
 
 struct Shape {
   ShapeType type = ShapeType::Sphere;
-  double radius = 0.0;                     // sphere, cylinder, capsule
-  Vec3 radii{};                            // ellipsoid semi-axes
-  Vec3 half_extents{};                     // box
-  double height = 0.0;                     // cylinder, capsule: length of the axis (body z)
-  Vec3 normal{0, 0, 1};                    // plane: outward normal, through the body position
-  std::filesystem::path file;              // mesh: STL or OBJ, resolved against the scene dir
+  double radius = 0.0;         // sphere, cylinder, capsule
+  Vec3 radii{};                // ellipsoid semi-axes
+  Vec3 half_extents{};         // box
+  double height = 0.0;         // cylinder, capsule: length of the axis (body z)
+  Vec3 normal{0, 0, 1};        // plane: outward normal, through the body position
+  std::filesystem::path file;  // mesh: STL or OBJ, resolved against the scene dir
   bool operator==(const Shape&) const = default;
 };
 
 struct Material {
-  double density = 0.0;                    // kg/m^3
+  double density = 0.0;  // kg/m^3
   double restitution = 0.0;
-  double friction = 0.0;                   // Coulomb coefficient
+  double friction = 0.0;  // Coulomb coefficient
 };
 
 struct Body {
@@ -109,7 +110,7 @@ struct Body {
   Quat orientation{1, 0, 0, 0};
   Vec3 velocity{};
   Vec3 angular_velocity{};
-  int material_line = 0;                   // 1-based line of `material` (of the entry if absent), for warnings
+  int material_line = 0;  // 1-based line of `material` (of the entry if absent), for warnings
 };
 
 enum class Generator { Lattice, Random, File };
@@ -117,19 +118,19 @@ enum class Generator { Lattice, Random, File };
 // An entry of `bodies` that made its bodies by a rule (`generate:`) instead of naming one,
 // for reports such as `cosim check`.
 struct BodyGenerator {
-  std::size_t entry = 0;                   // index in the scene file's `bodies` list
+  std::size_t entry = 0;  // index in the scene file's `bodies` list
   Generator kind = Generator::Lattice;
-  std::size_t first = 0;                   // its bodies: bodies[first] to bodies[first + count - 1]
+  std::size_t first = 0;  // its bodies: bodies[first] to bodies[first + count - 1]
   std::size_t count = 0;
 };
 
 // Where a participant's ranks run. None given: on the coupler's host. Any of them starts
 // the ranks with mpirun or, inside a Slurm allocation, srun (launcher/placement.hpp).
 struct Placement {
-  std::vector<std::string> hosts;          // on these hosts
-  std::filesystem::path hostfile;          // on the hosts this file lists (resolved against the scene dir)
-  int het_group = -1;                      // in this component of a Slurm heterogeneous job
-  bool scheduler = false;                  // wherever the batch scheduler puts them (hosts: scheduler)
+  std::vector<std::string> hosts;  // on these hosts
+  std::filesystem::path hostfile;  // on the hosts this file lists (resolved against the scene dir)
+  int het_group = -1;              // in this component of a Slurm heterogeneous job
+  bool scheduler = false;          // wherever the batch scheduler puts them (hosts: scheduler)
   bool local() const { return hosts.empty() && hostfile.empty() && het_group < 0 && !scheduler; }
 };
 
@@ -139,14 +140,14 @@ struct Placement {
 // it through the same Reader (so its errors name file, line and key too).
 struct Participant {
   std::string name;
-  std::vector<std::string> command;        // empty: the built-in program of that name
-  int ranks = 1;                           // > 1: started under mpirun -n ranks
+  std::vector<std::string> command;  // empty: the built-in program of that name
+  int ranks = 1;                     // > 1: started under mpirun -n ranks
   Placement placement;
-  double dt = 0.0;                         // its own time step; subcycles to the window end
+  double dt = 0.0;  // its own time step; subcycles to the window end
   DataSet provides = 0;
   DataSet needs = 0;
-  YAML::Node options;                      // program-specific keys
-  int line = 0;                            // 1-based line of the section in the scene file
+  YAML::Node options;  // program-specific keys
+  int line = 0;        // 1-based line of the section in the scene file
 };
 
 // A quantity `cosim study` measures on every level (docs/study.md), as written: the
@@ -154,37 +155,37 @@ struct Participant {
 struct StudyMeasure {
   std::string name;
   std::string expression;
-  int line = 0;                            // 1-based line of the name, for errors about the expression
+  int line = 0;  // 1-based line of the name, for errors about the expression
 };
 
 // `study:`, read by `cosim study` only.
 struct Study {
-  std::vector<StudyMeasure> measures;      // in file order
-  std::optional<double> order;             // the order the scene's resolution is expected to converge with
+  std::vector<StudyMeasure> measures;  // in file order
+  std::optional<double> order;         // the order the scene's resolution is expected to converge with
 };
 
 struct Scene {
-  std::filesystem::path file;              // where it was read from ("<string>" if not a file)
+  std::filesystem::path file;  // where it was read from ("<string>" if not a file)
   // Where relative file names in the scene (meshes, balls, tracer fields, hostfiles) are
   // found: the key `folder` (relative to the scene file's folder), or the scene file's
   // folder. `cosim study` sets it in the levels it writes elsewhere.
   std::filesystem::path folder;
-  std::string text;                        // the YAML exactly as read, stored in every run file
+  std::string text;  // the YAML exactly as read, stored in every run file
   Time time;
   Coupling coupling;
   Output output;
   Vec3 gravity{0, 0, -9.81};
   Domain domain;
   std::vector<Body> bodies;
-  std::vector<BodyGenerator> generators;   // in file order
+  std::vector<BodyGenerator> generators;  // in file order
   std::vector<Effect> effects;
-  int effects_line = 0;                    // 1-based line of `effects`: plan errors about effects point here
-  std::vector<Participant> participants;   // in file order
+  int effects_line = 0;                   // 1-based line of `effects`: plan errors about effects point here
+  std::vector<Participant> participants;  // in file order
   Study study;
 
   bool has_effect(Effect e) const;
   const Participant* participant(const std::string& name) const;
-  std::size_t windows() const;             // time.end / coupling.window, exact by validation
+  std::size_t windows() const;                  // time.end / coupling.window, exact by validation
   std::vector<std::string> body_names() const;  // in body order, as the run file's rows
 };
 

@@ -25,10 +25,14 @@ std::optional<double> fixed_point_order(double ratio, double s, double r21, doub
 
 const char* to_string(Convergence c) {
   switch (c) {
-    case Convergence::Monotonic: return "monotonic convergence";
-    case Convergence::Oscillatory: return "oscillatory convergence";
-    case Convergence::Diverging: return "diverging";
-    case Convergence::Unchanged: return "unchanged";
+    case Convergence::Monotonic:
+      return "monotonic convergence";
+    case Convergence::Oscillatory:
+      return "oscillatory convergence";
+    case Convergence::Diverging:
+      return "diverging";
+    case Convergence::Unchanged:
+      return "unchanged";
   }
   return "?";
 }

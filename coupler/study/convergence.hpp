@@ -23,11 +23,11 @@ struct Estimate {
   // The apparent order p, solved by the paper's fixed-point iteration; none when diverging,
   // unchanged, or when the iteration does not settle.
   std::optional<double> order;
-  double extrapolate = 0;  // phi_ext^21 (phi1 without an order)
-  double e_a21 = 0;        // |phi1 - phi2| / |phi1|, approximate relative error
-  double e_ext21 = 0;      // |phi_ext - phi1| / |phi_ext|, extrapolated relative error
-  double gci_fine = 0;     // 1.25 e_a21 / (r21^p - 1), relative to phi1
-  double gci_fine_abs = 0; // the same in the quantity's unit: 1.25 |phi1 - phi2| / (r21^p - 1)
+  double extrapolate = 0;   // phi_ext^21 (phi1 without an order)
+  double e_a21 = 0;         // |phi1 - phi2| / |phi1|, approximate relative error
+  double e_ext21 = 0;       // |phi_ext - phi1| / |phi_ext|, extrapolated relative error
+  double gci_fine = 0;      // 1.25 e_a21 / (r21^p - 1), relative to phi1
+  double gci_fine_abs = 0;  // the same in the quantity's unit: 1.25 |phi1 - phi2| / (r21^p - 1)
 };
 
 Estimate estimate(double phi1, double phi2, double phi3, double r21, double r32);

@@ -19,7 +19,8 @@ std::vector<std::string> steps_of(const std::string& path, const std::string& ar
     const std::size_t dot = path.find('.', start);
     steps.push_back(path.substr(start, dot - start));
     if (steps.back().empty())
-      throw ArgumentError(fmt::format("{}: '{}' is not a key path (keys joined by dots: coupling.window)", argument, path));
+      throw ArgumentError(
+          fmt::format("{}: '{}' is not a key path (keys joined by dots: coupling.window)", argument, path));
     if (dot == std::string::npos) return steps;
     start = dot + 1;
   }
@@ -60,11 +61,12 @@ void set_at(YAML::Node root, const std::string& path, const YAML::Node& value, c
       }
       const YAML::Node child = std::as_const(node)[step];
       if (!child.IsDefined())
-        throw ArgumentError(fmt::format("{}: {} has no key '{}' (it has: {})", argument, walked, step,
-                                        fmt::join(keys_of(node), ", ")));
+        throw ArgumentError(
+            fmt::format("{}: {} has no key '{}' (it has: {})", argument, walked, step, fmt::join(keys_of(node), ", ")));
       node.reset(child);
     } else {
-      throw ArgumentError(fmt::format("{}: {} is a value, not a mapping or list: no '{}' in it", argument, walked, step));
+      throw ArgumentError(
+          fmt::format("{}: {} is a value, not a mapping or list: no '{}' in it", argument, walked, step));
     }
     walked = fmt::format("{}", fmt::join(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(i) + 1, "."));
   }

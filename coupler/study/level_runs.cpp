@@ -22,8 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void write_variant(const YAML::Node& document, const std::vector<Varied>& varied, std::size_t level,
-                   const Level& l) {
+void write_variant(const YAML::Node& document, const std::vector<Varied>& varied, std::size_t level, const Level& l) {
   std::vector<std::string> set;
   for (std::size_t i = 0; i < varied.size(); ++i) set.push_back(varied[i].key + " = " + l.values[i]);
   YAML::Emitter out;
@@ -35,7 +34,8 @@ void write_variant(const YAML::Node& document, const std::vector<Varied>& varied
 }
 
 // Everything `cosim check` finds wrong with a level, before any level runs.
-void check_level(const Level& l, std::size_t level, const std::vector<Measure>& measures, const std::string& arguments) {
+void check_level(const Level& l, std::size_t level, const std::vector<Measure>& measures,
+                 const std::string& arguments) {
   scene::Scene s;
   try {
     s = scene::load_scene(l.scene);
@@ -109,8 +109,14 @@ bool run_levels(std::vector<Level>& levels, std::size_t first, const std::vector
 
 Quantity measure_quantity(const Measure& m, const Results& r) {
   const std::size_t n = r.levels.size();
-  Quantity q{m, std::vector<std::optional<double>>(n), std::vector<std::string>(n),
-             std::vector<std::optional<Estimate>>(n), {}, false, {}, {}};
+  Quantity q{m,
+             std::vector<std::optional<double>>(n),
+             std::vector<std::string>(n),
+             std::vector<std::optional<Estimate>>(n),
+             {},
+             false,
+             {},
+             {}};
   for (std::size_t k = 0; k < n; ++k) {
     if (!r.levels[k].usage.ended.empty()) {
       q.problems[k] = "the run failed";
@@ -126,7 +132,8 @@ Quantity measure_quantity(const Measure& m, const Results& r) {
   if (!r.ratios.r.empty())
     for (std::size_t k = 2; k < n; ++k)
       if (q.values[k] && q.values[k - 1] && q.values[k - 2])
-        q.estimates[k] = estimate(*q.values[k], *q.values[k - 1], *q.values[k - 2], r.ratios.r[k - 1], r.ratios.r[k - 2]);
+        q.estimates[k] =
+            estimate(*q.values[k], *q.values[k - 1], *q.values[k - 2], r.ratios.r[k - 1], r.ratios.r[k - 2]);
   const auto& last = q.estimates[n - 1];
   if (last && last->order) {
     q.reference = last->extrapolate;
@@ -154,6 +161,5 @@ void set_plots(Results& r, const fs::path& csv) {
       q.plot = "No plot: " + (why.empty() ? "the plot script wrote no " + png.filename().string() : why) + ".";
   }
 }
-
 
 }  // namespace cosim::study

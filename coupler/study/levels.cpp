@@ -68,8 +68,8 @@ std::vector<Varied> scaled(const scene::Scene& scene, const std::vector<double>&
   const YAML::Node options = fluid != nullptr && fluid->options.IsMap() ? fluid->options : YAML::Node();
   const YAML::Node first = options.IsDefined() ? options["dt_initial"] : YAML::Node();
   if (first.IsDefined() && first.IsScalar())
-    out.push_back({"participants.fluid.options.dt_initial", each(end, scene.coupling.window / first.as<double>()),
-                   argument});
+    out.push_back(
+        {"participants.fluid.options.dt_initial", each(end, scene.coupling.window / first.as<double>()), argument});
   // Field frames at the same times on every level, as far as whole windows allow, so that a
   // field measure reads the same instants and each level writes as many frames.
   const YAML::Node written = YAML::Load(scene.text)["output"];

@@ -30,7 +30,6 @@ struct Setting {
 };
 Setting parse_set(const std::string& argument);
 
-
 // The scene at each resolution scale s of `scales` (1: as written; 2: twice as fine), from
 // its own values: the number of windows multiplied by s and rounded to a whole number (so
 // that time.end stays a whole number of windows), each participant's dt and the fluid's

@@ -54,7 +54,8 @@ class Parser {
       expect(':');
       return field();
     }
-    const auto f = std::find_if(kFunctions.begin(), kFunctions.end(), [&](const Function& f) { return word == f.name; });
+    const auto f =
+        std::find_if(kFunctions.begin(), kFunctions.end(), [&](const Function& f) { return word == f.name; });
     if (f == kFunctions.end())
       fail(start, word.empty() ? "expected max, min, final, mean, abs, body:NAME:DATASET.COMPONENT or "
                                  "field:PARTICIPANT:FIELD[.COMPONENT]"
@@ -89,8 +90,8 @@ class Parser {
   // A body's or a participant's name: letters, digits, '_' and '-'.
   std::string name_after(const char* what) {
     const std::size_t start = pos_;
-    while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_' ||
-                                   text_[pos_] == '-'))
+    while (pos_ < text_.size() &&
+           (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_' || text_[pos_] == '-'))
       ++pos_;
     if (pos_ == start) fail(start, fmt::format("expected a {}", what));
     return text_.substr(start, pos_ - start);
@@ -182,8 +183,7 @@ class Parser {
 
   void expect(char c) {
     skip_space();
-    if (pos_ >= text_.size() || text_[pos_] != c)
-      fail(pos_, fmt::format("expected '{}'", c));
+    if (pos_ >= text_.size() || text_[pos_] != c) fail(pos_, fmt::format("expected '{}'", c));
     ++pos_;
   }
 
@@ -216,10 +216,12 @@ Samples samples(const Expression& e, const std::filesystem::path& file) {
     if (e.column < 0 && means.columns != 1)
       throw std::runtime_error(fmt::format("{} has {} components: name one (.x, .y, .z)", where, means.columns));
     if (e.column >= 0 && static_cast<std::size_t>(e.column) >= means.columns)
-      throw std::runtime_error(fmt::format("{} has {} component{}", where, means.columns, means.columns > 1 ? "s" : ""));
+      throw std::runtime_error(
+          fmt::format("{} has {} component{}", where, means.columns, means.columns > 1 ? "s" : ""));
     Samples s{means.time, {}};
     const auto column = static_cast<std::size_t>(std::max(e.column, 0));
-    for (std::size_t row = 0; row < means.time.size(); ++row) s.value.push_back(means.values[row * means.columns + column]);
+    for (std::size_t row = 0; row < means.time.size(); ++row)
+      s.value.push_back(means.values[row * means.columns + column]);
     return s;
   }
   const output::BodySeries series = output::body_series(file, e.body, e.dataset);
@@ -286,7 +288,8 @@ double latest_time(const Expression& e) {
 
 double evaluate(const Expression& e, const std::filesystem::path& run_file) {
   switch (e.op) {
-    case Op::Abs: return std::abs(evaluate(*e.arg, run_file));
+    case Op::Abs:
+      return std::abs(evaluate(*e.arg, run_file));
     case Op::Max: {
       const Samples s = samples(*e.arg, run_file);
       return *std::max_element(s.value.begin(), s.value.end());
@@ -295,9 +298,12 @@ double evaluate(const Expression& e, const std::filesystem::path& run_file) {
       const Samples s = samples(*e.arg, run_file);
       return *std::min_element(s.value.begin(), s.value.end());
     }
-    case Op::Final: return samples(*e.arg, run_file).value.back();
-    case Op::Mean: return mean(samples(*e.arg, run_file), e.t0, e.t1, run_file);
-    case Op::Series: break;
+    case Op::Final:
+      return samples(*e.arg, run_file).value.back();
+    case Op::Mean:
+      return mean(samples(*e.arg, run_file), e.t0, e.t1, run_file);
+    case Op::Series:
+      break;
   }
   throw std::logic_error("a series has no single value");  // parse_measure() refuses one
 }

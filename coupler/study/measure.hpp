@@ -32,8 +32,8 @@ struct Expression {
   std::string participant;
   std::string dataset;
   int column = 0;
-  output::Region region;  // a field's: where its mean is taken
-  double t0 = 0, t1 = 0;  // Mean
+  output::Region region;                  // a field's: where its mean is taken
+  double t0 = 0, t1 = 0;                  // Mean
   std::shared_ptr<const Expression> arg;  // all but Series
   bool is_series() const;
 };

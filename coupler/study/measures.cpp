@@ -19,7 +19,9 @@ std::string mismatch(const Measure& m, const scene::Scene& scene) {
     const std::size_t shown = std::min<std::size_t>(names.size(), 8);
     return fmt::format("no body '{}' in the scene (its bodies: {}{})", body,
                        fmt::join(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(shown), ", "),
-                       names.size() > shown ? ", ..." : names.empty() ? "none" : "");
+                       names.size() > shown ? ", ..."
+                       : names.empty()      ? "none"
+                                            : "");
   }
   for (const std::string& p : participants_of(m.expression)) {
     if (scene.participant(p) == nullptr) {
@@ -46,7 +48,8 @@ std::vector<Measure> measures_of(const scene::Scene& scene, const std::vector<st
   std::vector<Measure> out;
   for (const scene::StudyMeasure& given : scene.study.measures) {
     const auto fail = [&](const std::string& problem) {
-      throw scene::SceneError(scene.file.string(), given.line, "study.measure." + given.name, given.expression, problem);
+      throw scene::SceneError(scene.file.string(), given.line, "study.measure." + given.name, given.expression,
+                              problem);
     };
     try {
       out.push_back(parse_measure(given.name, given.expression));

@@ -57,7 +57,8 @@ std::vector<double> sizes_of(const std::vector<YAML::Node>& values) {
 
 Ratios refinement_ratios(const Varied& key) {
   const std::vector<double> sizes = sizes_of(key.values);
-  if (sizes.empty()) return {{}, "the values of " + key.key + " are not positive numbers (or lists of them of one length)"};
+  if (sizes.empty())
+    return {{}, "the values of " + key.key + " are not positive numbers (or lists of them of one length)"};
   std::vector<double> growth;
   for (std::size_t k = 0; k + 1 < sizes.size(); ++k) growth.push_back(sizes[k + 1] / sizes[k]);
   bool grows = true, shrinks = true;
@@ -65,7 +66,8 @@ Ratios refinement_ratios(const Varied& key) {
     grows = grows && g > 1;
     shrinks = shrinks && g < 1;
   }
-  if (!grows && !shrinks) return {{}, "the values of " + key.key + " neither all grow nor all shrink from level to level"};
+  if (!grows && !shrinks)
+    return {{}, "the values of " + key.key + " neither all grow nor all shrink from level to level"};
   Ratios out;
   for (double g : growth) out.r.push_back(grows ? g : 1 / g);
   return out;

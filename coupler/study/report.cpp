@@ -37,7 +37,8 @@ std::string table(const Results& r, const Quantity& q) {
   std::vector<std::string> header{"level"};
   header.insert(header.end(), r.keys.begin(), r.keys.end());
   header.insert(header.end(), {"value", error_header(r, q), "p", "wall s", "CPU s", "peak MB"});
-  std::string out = fmt::format("| {} |\n|{}\n", fmt::join(header, " | "), fmt::join(std::vector<std::string>(header.size(), "---|"), ""));
+  std::string out = fmt::format("| {} |\n|{}\n", fmt::join(header, " | "),
+                                fmt::join(std::vector<std::string>(header.size(), "---|"), ""));
   for (std::size_t k = 0; k < r.levels.size(); ++k) {
     const Level& l = r.levels[k];
     std::vector<std::string> row{std::to_string(k + 1)};
@@ -60,7 +61,8 @@ std::string findings(const Results& r, const Quantity& q) {
   if (last && last->order) {
     out += fmt::format("- observed order p = {:.3g}, from levels {}, {} and {} (r21 = {:.4g}, r32 = {:.4g})\n",
                        *last->order, n - 2, n - 1, n, r.ratios.r[n - 2], r.ratios.r[n - 3]);
-    out += fmt::format("- extrapolate {:.8g} (Richardson, from levels {} and {} with p)\n", last->extrapolate, n - 1, n);
+    out +=
+        fmt::format("- extrapolate {:.8g} (Richardson, from levels {} and {} with p)\n", last->extrapolate, n - 1, n);
     out += fmt::format("- GCI_fine {:.3g}", last->gci_fine_abs);
     if (std::isfinite(last->gci_fine)) out += fmt::format(" ({:.3g} % of level {}'s value)", 100 * last->gci_fine, n);
     out += "\n";
@@ -116,8 +118,7 @@ std::string quantity_sections(const Results& r, bool plots) {
 void write_report(const Results& r, const fs::path& file) {
   std::ofstream out(file);
   out << fmt::format("# Study of {}\n\n```\n{}\n```\n\n", r.scene.string(), r.command);
-  out << fmt::format("{} levels, level 1 the coarsest, varying {}.", r.levels.size(),
-                     fmt::join(r.keys, ", "));
+  out << fmt::format("{} levels, level 1 the coarsest, varying {}.", r.levels.size(), fmt::join(r.keys, ", "));
   if (!r.ratios.r.empty())
     out << fmt::format(" Refinement ratios from level to level: {:.4g}, from {}{}.", fmt::join(r.ratios.r, ", "),
                        r.keys.front(), r.keys.size() > 1 ? " (the first varied key)" : "");

@@ -21,7 +21,8 @@ namespace fs = std::filesystem;
 
 std::vector<Varied> varied_of(const Request& request, const scene::Scene& scene) {
   if (request.refine) {
-    if (!(*request.refine > 1)) throw ArgumentError(fmt::format("--refine {}: the factor must be > 1", *request.refine));
+    if (!(*request.refine > 1))
+      throw ArgumentError(fmt::format("--refine {}: the factor must be > 1", *request.refine));
     if (request.levels < 2) throw ArgumentError(fmt::format("--levels {}: a study needs at least 2", request.levels));
     return refine(scene, *request.refine, request.levels);
   }
@@ -59,8 +60,8 @@ std::pair<YAML::Node, scene::Scene> with_settings(const Request& request, std::v
   try {
     scene = scene::load_scene_from_string(out.c_str(), request.scene);
   } catch (const scene::SceneError& e) {
-    throw ArgumentError(fmt::format("--set {}: the scene is no longer valid: {}", fmt::join(request.set, " --set "),
-                                    e.what()));
+    throw ArgumentError(
+        fmt::format("--set {}: the scene is no longer valid: {}", fmt::join(request.set, " --set "), e.what()));
   }
   return {document, scene};
 }
@@ -97,8 +98,8 @@ int study(const Request& request) {
   write_csv(r, csv);
   set_plots(r, csv);
   write_report(r, dir / "report.md");
-  std::cout << quantity_sections(r, false) << fmt::format("\nwrote {}, {} and the plots beside them\n",
-                                                          (dir / "report.md").string(), csv.string());
+  std::cout << quantity_sections(r, false)
+            << fmt::format("\nwrote {}, {} and the plots beside them\n", (dir / "report.md").string(), csv.string());
   return failed ? 1 : 0;
 }
 

@@ -18,15 +18,15 @@ namespace cosim::study {
 
 struct Request {
   std::filesystem::path scene;
-  std::vector<std::string> vary;      // KEY=V1,V2,...
-  std::vector<std::string> set;       // KEY=VALUE, the same on every level
-  std::optional<double> refine;       // or: the factor, with `levels`
+  std::vector<std::string> vary;  // KEY=V1,V2,...
+  std::vector<std::string> set;   // KEY=VALUE, the same on every level
+  std::optional<double> refine;   // or: the factor, with `levels`
   int levels = 3;
   std::vector<std::string> measures;  // NAME=EXPR, added to (or replacing by name) the scene's study.measure
   std::optional<double> order;        // expected order; the scene's study.order otherwise
   std::filesystem::path out;          // default runs/study/<scene stem>
   int jobs = 1;
-  std::string command;                // the command line, for the report
+  std::string command;  // the command line, for the report
 };
 
 struct Level {
@@ -37,13 +37,13 @@ struct Level {
 
 struct Quantity {
   Measure measure;
-  std::vector<std::optional<double>> values;      // per level; none where it could not be read
-  std::vector<std::string> problems;              // per level: why there is no value
-  std::vector<std::optional<Estimate>> estimates; // per level: from it and the two levels before
-  std::optional<double> reference;  // what the errors are against: the extrapolate, or the finest value
+  std::vector<std::optional<double>> values;       // per level; none where it could not be read
+  std::vector<std::string> problems;               // per level: why there is no value
+  std::vector<std::optional<Estimate>> estimates;  // per level: from it and the two levels before
+  std::optional<double> reference;                 // what the errors are against: the extrapolate, or the finest value
   bool against_extrapolate = false;
-  std::string finding;              // the verdict on the finest three levels, or why there is none
-  std::string plot;                 // Markdown: its image of error against wall time, or why there is none
+  std::string finding;  // the verdict on the finest three levels, or why there is none
+  std::string plot;     // Markdown: its image of error against wall time, or why there is none
 };
 
 struct Results {

@@ -41,9 +41,9 @@ inline constexpr double kSafety = 1.25;
 struct Prediction {
   double order = 0;
   double extrapolate = 0;
-  double tolerance = 0;      // absolute
-  double finest_error = 0;   // |phi1 - phi_ext|, of the finest of the three levels
-  double scale = 0;          // the resolution scale at which kSafety x error = tolerance
+  double tolerance = 0;     // absolute
+  double finest_error = 0;  // |phi1 - phi_ext|, of the finest of the three levels
+  double scale = 0;         // the resolution scale at which kSafety x error = tolerance
 };
 
 // From the finest three levels' estimate (e: phi1 the finest, at scale s1), or why there is

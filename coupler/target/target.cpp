@@ -52,10 +52,10 @@ study::Measure measure_named(const scene::Scene& scene, const Request& request, 
     if (m.name == name) return m;
   std::vector<std::string> names;
   for (const study::Measure& m : measures) names.push_back(m.name);
-  throw ArgumentError(fmt::format("--target {}: no measure {} ({}); give --measure {}=EXPRESSION", request.target, name,
-                                  names.empty() ? "the scene has no study.measure"
-                                                : fmt::format("the measures are {}", fmt::join(names, ", ")),
-                                  name));
+  throw ArgumentError(fmt::format(
+      "--target {}: no measure {} ({}); give --measure {}=EXPRESSION", request.target, name,
+      names.empty() ? "the scene has no study.measure" : fmt::format("the measures are {}", fmt::join(names, ", ")),
+      name));
 }
 
 // The bytes the host could give a run now: MemAvailable of /proc/meminfo, 0 if unknown.
@@ -69,7 +69,9 @@ double available_bytes() {
 }
 
 std::string seconds_text(double s) {
-  return s < 120 ? fmt::format("{:.1f} s", s) : s < 7200 ? fmt::format("{:.1f} min", s / 60) : fmt::format("{:.1f} h", s / 3600);
+  return s < 120    ? fmt::format("{:.1f} s", s)
+         : s < 7200 ? fmt::format("{:.1f} min", s / 60)
+                    : fmt::format("{:.1f} h", s / 3600);
 }
 
 // The level's values, for a line about it: "window 0.0025, cells [40, 40, 64]".
@@ -155,8 +157,8 @@ int run_to_target(const Request& request) {
     results.levels.push_back(study::write_level(dir, document, varied, k, {measure}, argument));
   const std::vector<double> cheap_scales = study::scales_of(scene, varied);
   if (!(cheap_scales[0] < cheap_scales[1] && cheap_scales[1] < cheap_scales[2]))
-    throw ArgumentError(fmt::format("{}: the scene's {} windows are too few to coarsen by {} twice", argument,
-                                    scene.windows(), r));
+    throw ArgumentError(
+        fmt::format("{}: the scene's {} windows are too few to coarsen by {} twice", argument, scene.windows(), r));
 
   Story story;
   const std::string heading = fmt::format("Target: {} within {}", target.name, target.tolerance.text);
@@ -173,7 +175,8 @@ int run_to_target(const Request& request) {
   }
   const study::Quantity cheap = measured();
   const auto& e = cheap.estimates[kCheap - 1];
-  const Fit fit = e ? predict(*e, *cheap.values[kCheap - 1], 1, target.tolerance) : Fit{std::nullopt, "a level has no value"};
+  const Fit fit =
+      e ? predict(*e, *cheap.values[kCheap - 1], 1, target.tolerance) : Fit{std::nullopt, "a level has no value"};
   if (!fit.prediction) {
     story.say(fmt::format("no level can be chosen: {}. `cosim study` over finer levels shows where convergence sets in",
                           fit.why_none));
@@ -181,22 +184,23 @@ int run_to_target(const Request& request) {
     return 1;
   }
   const Prediction& p = *fit.prediction;
-  story.say(fmt::format("the three cheap levels give order {:.3g} and extrapolate {:.8g}; the tolerance is {:.3g} in "
-                        "{}'s unit; the scene as written is modelled {:.3g} off (x {} safety: {:.3g})",
-                        p.order, p.extrapolate, p.tolerance, target.name, p.finest_error, kSafety,
-                        kSafety * p.finest_error));
+  story.say(
+      fmt::format("the three cheap levels give order {:.3g} and extrapolate {:.8g}; the tolerance is {:.3g} in "
+                  "{}'s unit; the scene as written is modelled {:.3g} off (x {} safety: {:.3g})",
+                  p.order, p.extrapolate, p.tolerance, target.name, p.finest_error, kSafety, kSafety * p.finest_error));
   if (scene.study.order && std::abs(p.order - *scene.study.order) > study::kOrderTolerance * *scene.study.order)
-    story.say(fmt::format("the observed order {:.3g} is not the scene's study.order {:g}: the cheap levels may not be "
-                          "in the asymptotic range, and the prediction is uncertain",
-                          p.order, *scene.study.order));
+    story.say(
+        fmt::format("the observed order {:.3g} is not the scene's study.order {:g}: the cheap levels may not be "
+                    "in the asymptotic range, and the prediction is uncertain",
+                    p.order, *scene.study.order));
   for (std::size_t k = 0; k < kCheap; ++k)
     if (kSafety * std::abs(*cheap.values[k] - p.extrapolate) <= p.tolerance) {
-      story.say(fmt::format("level {} ({}) already meets the target: {} = {:.8g}, {:.3g} from the extrapolate, {:.3g} "
-                            "with the factor of safety, within {:.3g}; it took {}",
-                            k + 1, level_text(results, k), target.name, *cheap.values[k],
-                            std::abs(*cheap.values[k] - p.extrapolate),
-                            kSafety * std::abs(*cheap.values[k] - p.extrapolate), p.tolerance,
-                            seconds_text(results.levels[k].usage.wall_seconds)));
+      story.say(
+          fmt::format("level {} ({}) already meets the target: {} = {:.8g}, {:.3g} from the extrapolate, {:.3g} "
+                      "with the factor of safety, within {:.3g}; it took {}",
+                      k + 1, level_text(results, k), target.name, *cheap.values[k],
+                      std::abs(*cheap.values[k] - p.extrapolate), kSafety * std::abs(*cheap.values[k] - p.extrapolate),
+                      p.tolerance, seconds_text(results.levels[k].usage.wall_seconds)));
       story.write(results, dir, heading);
       return 0;
     }
@@ -218,15 +222,16 @@ int run_to_target(const Request& request) {
     story.write(results, dir, heading);
     return 1;
   }
-  story.say(fmt::format("level 4 ({}), {:.3g} times as fine as the scene, is the cheapest the model says reaches it: "
-                        "modelled error {:.3g} with the safety factor, within {:.3g}",
-                        level_text(results, kCheap), scale, modelled_error(p, 1, scale), p.tolerance));
+  story.say(
+      fmt::format("level 4 ({}), {:.3g} times as fine as the scene, is the cheapest the model says reaches it: "
+                  "modelled error {:.3g} with the safety factor, within {:.3g}",
+                  level_text(results, kCheap), scale, modelled_error(p, 1, scale), p.tolerance));
   story.say(estimate::estimate_line(cost.estimate));
   const double available = available_bytes();
   std::string refused;
   if (available > 0 && cost.memory_bytes > available)
-    refused = fmt::format("it would need about {:.0f} MB, and this host has {:.0f} MB available", cost.memory_bytes / 1e6,
-                          available / 1e6);
+    refused = fmt::format("it would need about {:.0f} MB, and this host has {:.0f} MB available",
+                          cost.memory_bytes / 1e6, available / 1e6);
   else if (request.budget && cost.estimate.wall_seconds > *request.budget)
     refused = fmt::format("it is estimated at {}, over --budget {}", seconds_text(cost.estimate.wall_seconds),
                           seconds_text(*request.budget));

@@ -14,8 +14,7 @@ using namespace cosim;
 class Drag final : public participant::Solver {
  public:
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
-                                  const std::vector<participant::PoseRow>& poses,
-                                  const std::vector<double>&) override {
+                                  const std::vector<participant::PoseRow>& poses, const std::vector<double>&) override {
     // The same reader as the built-ins': a bad or unknown key is refused naming file and line.
     const scene::Reader options = scene::options_of(scene, *scene.participant(name));
     c_ = options.number("coefficient", scene::Range::above(0));
@@ -37,8 +36,7 @@ class Drag final : public participant::Solver {
   std::vector<participant::ForceRow> drag(const std::vector<participant::PoseRow>& start,
                                           const std::vector<participant::PoseRow>& end) const {
     std::vector<participant::ForceRow> forces(start.size());
-    for (std::size_t b = 0; b < start.size(); ++b)
-      forces[b].force = -c_ * 0.5 * (start[b].velocity + end[b].velocity);
+    for (std::size_t b = 0; b < start.size(); ++b) forces[b].force = -c_ * 0.5 * (start[b].velocity + end[b].velocity);
     return forces;
   }
 

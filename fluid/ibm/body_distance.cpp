@@ -75,8 +75,8 @@ void BodyDistance::operator()(const RigidBody& body, std::span<const Eigen::Vect
     // Along the nearest point's normal: exact for a straight piece of boundary, and never
     // more than the sample spacing short of the distance to the point itself.
     const Eigen::Vector3d offset = x - points_[static_cast<std::size_t>(nearest)];
-    out[i] = sign * std::max(std::abs(offset.dot(normals_[static_cast<std::size_t>(nearest)])),
-                             offset.norm() - cell_ / 6);
+    out[i] =
+        sign * std::max(std::abs(offset.dot(normals_[static_cast<std::size_t>(nearest)])), offset.norm() - cell_ / 6);
   }
 }
 

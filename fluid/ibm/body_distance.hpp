@@ -35,7 +35,7 @@ class BodyDistance {
 
   static constexpr int kReach = 2;  // cells
   int flat_axis_ = -1;
-  double cell_ = 0;  // of the hash grid over the section's points
+  double cell_ = 0;                                // of the hash grid over the section's points
   std::vector<Eigen::Vector3d> points_, normals_;  // body frame
   std::unordered_map<std::int64_t, std::vector<int>> near_;
 };

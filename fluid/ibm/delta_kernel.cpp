@@ -36,9 +36,12 @@ double bao6(double r) {
                            5.0 / 18 * s3 * s3);
   const double outer = (-b + std::sqrt(std::max(0.0, b * b - 112 * c))) / 56;  // phi(s - 3)
   switch (piece) {
-    case 0: return 2 * outer + 5.0 / 8 - 0.25 * (k + s2);
-    case 1: return -3 * outer + 0.25 - (4 - 3 * k) / 6 * s + s3 / 6;
-    default: return outer - 1.0 / 16 + (k + s2) / 8 - (3 * k - 1) / 12 * s - s3 / 12;
+    case 0:
+      return 2 * outer + 5.0 / 8 - 0.25 * (k + s2);
+    case 1:
+      return -3 * outer + 0.25 - (4 - 3 * k) / 6 * s + s3 / 6;
+    default:
+      return outer - 1.0 / 16 + (k + s2) / 8 - (3 * k - 1) / 12 * s - s3 / 12;
   }
 }
 
@@ -46,24 +49,32 @@ double bao6(double r) {
 
 std::string_view name(DeltaKernel kernel) {
   switch (kernel) {
-    case DeltaKernel::roma3: return "roma3";
-    case DeltaKernel::peskin4: return "peskin4";
-    default: return "bao6";
+    case DeltaKernel::roma3:
+      return "roma3";
+    case DeltaKernel::peskin4:
+      return "peskin4";
+    default:
+      return "bao6";
   }
 }
 
 double support_radius(DeltaKernel kernel) {
   switch (kernel) {
-    case DeltaKernel::roma3: return 1.5;
-    case DeltaKernel::peskin4: return 2;
-    default: return 3;
+    case DeltaKernel::roma3:
+      return 1.5;
+    case DeltaKernel::peskin4:
+      return 2;
+    default:
+      return 3;
   }
 }
 
 double sum_of_squares(DeltaKernel kernel) {
   switch (kernel) {
-    case DeltaKernel::roma3: return 0.5;
-    case DeltaKernel::peskin4: return 3.0 / 8;
+    case DeltaKernel::roma3:
+      return 0.5;
+    case DeltaKernel::peskin4:
+      return 3.0 / 8;
     default: {
       // The weights at offset 0 (0, K/8 - 1/16, 1/4, 5/8 - K/4, 1/4, K/8 - 1/16) squared.
       const double k = bao6_second_moment();
@@ -75,9 +86,12 @@ double sum_of_squares(DeltaKernel kernel) {
 double phi(DeltaKernel kernel, double r) {
   r = std::abs(r);
   switch (kernel) {
-    case DeltaKernel::roma3: return roma3(r);
-    case DeltaKernel::peskin4: return peskin4(r);
-    default: return bao6(r);
+    case DeltaKernel::roma3:
+      return roma3(r);
+    case DeltaKernel::peskin4:
+      return peskin4(r);
+    default:
+      return bao6(r);
   }
 }
 

@@ -15,8 +15,8 @@ PetscInt roots_by_body(MPI_Comm comm, std::span<const std::size_t> first_marker)
   // Rank r's first value: that of the first body starting at or after r / size of them.
   const auto start = [&](int r) -> std::size_t {
     if (r >= size || first_marker.empty()) return 3 * markers;
-    const std::size_t even = (markers * static_cast<std::size_t>(r) + static_cast<std::size_t>(size) - 1) /
-                             static_cast<std::size_t>(size);
+    const std::size_t even =
+        (markers * static_cast<std::size_t>(r) + static_cast<std::size_t>(size) - 1) / static_cast<std::size_t>(size);
     return 3 * *std::lower_bound(first_marker.begin(), first_marker.end(), even);
   };
   return static_cast<PetscInt>(start(rank + 1) - start(rank));

@@ -22,7 +22,7 @@ namespace cosim::fluid {
 namespace {
 
 constexpr std::size_t kInnerWidth = 6;  // momentum and angular momentum
-constexpr double kSamplingGap = 0.8;     // geometry::sample_surface's least distance, in spacings
+constexpr double kSamplingGap = 0.8;    // geometry::sample_surface's least distance, in spacings
 
 // The only axis of one periodic cell (a two-dimensional grid), or -1.
 int flat_axis(const Axes& axes) {
@@ -51,8 +51,7 @@ bool near(const Grid& grid, const Box& cells, const geometry::Aabb& box, double 
     const double hi = axis.face(static_cast<int>(cells.hi[d])) + margin;
     const double period = axis.periodic() ? axis.hi() - axis.lo() : 0;
     bool meets = false;
-    for (double shift : {0.0, -period, period})
-      meets = meets || (box.min[d] + shift <= hi && box.max[d] + shift >= lo);
+    for (double shift : {0.0, -period, period}) meets = meets || (box.min[d] + shift <= hi && box.max[d] + shift >= lo);
     if (!meets) return false;
   }
   return true;
@@ -66,7 +65,8 @@ constexpr double kLargestCurvature = 1.0;  // times 1 / h
 
 // kappa_1 + kappa_2 at surface point x: the Laplacian of the signed distance, by central
 // differences a quarter cell wide.
-double curvature_in_space(const geometry::Shape& shape, const geometry::Pose& pose, const Eigen::Vector3d& x, double h) {
+double curvature_in_space(const geometry::Shape& shape, const geometry::Pose& pose, const Eigen::Vector3d& x,
+                          double h) {
   const double e = h / 4;
   double laplacian = 0;
   for (int d = 0; d < 3; ++d) {
@@ -98,8 +98,8 @@ double curvature_in_plane(const std::vector<geometry::SurfaceSample>& curve, std
   if (a == i || b == i) return 0;
   const Eigen::Vector3d u = curve[a].point - curve[i].point, v = curve[b].point - curve[i].point;
   const double chord = (u - v).norm(), area2 = u.cross(v).norm();  // twice the triangle's area
-  const double kappa = 2 * area2 / (u.norm() * v.norm() * chord);    // 1 / circumradius
-  const bool convex = (u + v).dot(curve[i].normal) < 0;              // the neighbours fall behind the normal
+  const double kappa = 2 * area2 / (u.norm() * v.norm() * chord);  // 1 / circumradius
+  const bool convex = (u + v).dot(curve[i].normal) < 0;            // the neighbours fall behind the normal
   return std::clamp(convex ? kappa : -kappa, -kLargestCurvature / h, kLargestCurvature / h);
 }
 
@@ -156,9 +156,12 @@ IbmOptions resolved(IbmOptions options) {
 
 Retraction calibrated_retraction(DeltaKernel kernel) {
   switch (kernel) {
-    case DeltaKernel::roma3: return {0.2985, 0.2274};
-    case DeltaKernel::peskin4: return {0.4363, 0.4458};
-    default: return {0.3969, 0.8484};
+    case DeltaKernel::roma3:
+      return {0.2985, 0.2274};
+    case DeltaKernel::peskin4:
+      return {0.4363, 0.4458};
+    default:
+      return {0.3969, 0.8484};
   }
 }
 
@@ -353,14 +356,16 @@ void ImmersedBoundary::collect_active_markers() {
       for (int c = 0; c < 3; ++c) {
         a.stencil[static_cast<std::size_t>(c)] = kernel_stencil(grid_, c, options_.kernel, x);
         empty = empty || a.stencil[static_cast<std::size_t>(c)].empty();
-        a.local[static_cast<std::size_t>(c)] = a.stencil[static_cast<std::size_t>(c)].meets(owned[static_cast<std::size_t>(c)]);
+        a.local[static_cast<std::size_t>(c)] =
+            a.stencil[static_cast<std::size_t>(c)].meets(owned[static_cast<std::size_t>(c)]);
       }
       if (empty || !(a.local[0] || a.local[1] || a.local[2])) continue;
       a.id = first_marker_[b] + k;
       // dV = area times the width across the surface.
       const Eigen::Vector3d normal = body.pose.direction_to_world(m.normal);
       double across = 0;
-      for (int d = 0; d < 3; ++d) across += normal[d] * normal[d] * a.stencil[0].axes[static_cast<std::size_t>(d)].width;
+      for (int d = 0; d < 3; ++d)
+        across += normal[d] * normal[d] * a.stencil[0].axes[static_cast<std::size_t>(d)].width;
       a.volume = m.area * across;
       a.target = body.velocity_at(a.position);
       active_.push_back(a);

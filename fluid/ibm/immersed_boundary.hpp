@@ -16,11 +16,10 @@
 // linear system (symmetric in the impulses dt F_l dV_l) is assembled from the markers'
 // kernels and solved by conjugate gradients with each body's block solved exactly
 // (forcing_system.hpp), until the markers' velocity is met to `tolerance`. Each step
-// starts from the forces of the last one, so a steady flow needs no iteration at all. A marker takes part on the ranks whose faces its kernel touches, its
-// interpolated velocity summed over them (marker_sharing.hpp), so a rank's forcing work
-// grows with the bodies near it and no ghost layer is needed whatever the kernel's width.
-// The projection then runs over the whole domain with the fluid's own, never-changing
-// operators.
+// starts from the forces of the last one, so a steady flow needs no iteration at all. A marker takes part on the ranks
+// whose faces its kernel touches, its interpolated velocity summed over them (marker_sharing.hpp), so a rank's forcing
+// work grows with the bodies near it and no ghost layer is needed whatever the kernel's width. The projection then runs
+// over the whole domain with the fluid's own, never-changing operators.
 //
 // Load on a body: the reaction to the forcing plus the rate of change of the momentum of the
 // fluid inside it, whose inertia is then the fluid's own (Kempe & Froehlich):
@@ -68,7 +67,7 @@ Retraction calibrated_retraction(DeltaKernel kernel);
 
 struct IbmOptions {
   DeltaKernel kernel = DeltaKernel::roma3;
-  int sweeps = 50;          // iterations of the forcing system per solve, at most
+  int sweeps = 50;  // iterations of the forcing system per solve, at most
   // Largest slip at a marker, of the largest velocity there. The load moves with it by
   // steps as the iteration count changes, so implicit coupling, which iterates to 1e-4 of the
   // load, needs it well below that (at 1e-4 a window stalled at 1.6e-4).
@@ -139,7 +138,7 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
     Eigen::Vector3d position, normal;  // body frame
     double area = 0;
     Eigen::Vector3d force = Eigen::Vector3d::Zero();  // F_l of the last step, world frame
-    bool known = false;  // this rank held it in the last step, so `force` is that step's
+    bool known = false;                               // this rank held it in the last step, so `force` is that step's
   };
   struct Entry {
     Entry(const Grid& grid, RigidBody b) : body(std::move(b)), distance(grid, body) {}
@@ -173,10 +172,10 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   const Grid& grid_;
   IbmOptions options_;
   std::vector<Entry> bodies_;
-  geometry::SampledShapes sampled_;  // the bodies' shapes, sampled once each
-  std::vector<ActiveMarker> active_;  // the markers taking part in the current step here
-  std::optional<MarkerStencils> stencils_;  // their kernels, made by force() for the step
-  std::optional<ForcingSystem> system_;     // and their forcing system
+  geometry::SampledShapes sampled_;           // the bodies' shapes, sampled once each
+  std::vector<ActiveMarker> active_;          // the markers taking part in the current step here
+  std::optional<MarkerStencils> stencils_;    // their kernels, made by force() for the step
+  std::optional<ForcingSystem> system_;       // and their forcing system
   std::vector<std::size_t> first_marker_{0};  // body b's markers are numbered from first_marker_[b]
   // The markers whose forces this rank holds from the last step (every marker after restore()).
   std::vector<std::pair<std::size_t, std::size_t>> held_;

@@ -65,7 +65,8 @@ bool KernelStencil::meets(const Box& box) const {
 
 KernelStencil kernel_stencil(const Grid& grid, int component, DeltaKernel kernel, const Point& x) {
   KernelStencil s;
-  for (int d = 0; d < 3; ++d) s.axes[static_cast<std::size_t>(d)] = axis_weights(grid.axis(d), d == component, kernel, x[d]);
+  for (int d = 0; d < 3; ++d)
+    s.axes[static_cast<std::size_t>(d)] = axis_weights(grid.axis(d), d == component, kernel, x[d]);
   return s;
 }
 

@@ -13,8 +13,8 @@ MarkerSharing::MarkerSharing(MPI_Comm comm, std::span<const PetscInt> ids, Petsc
   COSIM_PETSC(PetscLayoutCreateFromSizes(comm, roots, PETSC_DECIDE, 1, &layout));
   COSIM_PETSC(PetscLayoutGetRange(layout, &first_root_, nullptr));
   COSIM_PETSC(PetscSFCreate(comm, &sf_));
-  COSIM_PETSC(PetscSFSetGraphLayout(sf_, layout, static_cast<PetscInt>(ids.size()), nullptr, PETSC_COPY_VALUES,
-                                    ids.data()));
+  COSIM_PETSC(
+      PetscSFSetGraphLayout(sf_, layout, static_cast<PetscInt>(ids.size()), nullptr, PETSC_COPY_VALUES, ids.data()));
   COSIM_PETSC(PetscLayoutDestroy(&layout));
   COSIM_PETSC(PetscSFSetUp(sf_));
   once_.assign(ids.size(), 1.0);

@@ -4,8 +4,8 @@
 // several ranks is held by each (a leaf of a PETSc star forest) and its interpolated
 // velocity is the sum of their parts, joined through one root per value: the values'
 // global numbers laid out over the ranks in ranges the caller chooses (whole bodies each,
-// about evenly: forcing_system.hpp), so the messages, too, go with a rank's own markers. Every holder then holds the same values and runs the same arithmetic on them;
-// sums over the markers count each once.
+// about evenly: forcing_system.hpp), so the messages, too, go with a rank's own markers. Every holder then holds the
+// same values and runs the same arithmetic on them; sums over the markers count each once.
 #include <petscsf.h>
 #include <petscvec.h>
 

@@ -68,8 +68,8 @@ std::vector<MarkerStencils::Product> MarkerStencils::products() const {
   std::array<std::vector<std::ptrdiff_t>, 3> head;
   for (std::size_t c = 0; c < 3; ++c) {
     const Box& b = owned_[c];
-    head[c].assign(static_cast<std::size_t>(std::max<PetscInt>(0, (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) *
-                                                                      (b.hi[2] - b.lo[2]))),
+    head[c].assign(static_cast<std::size_t>(
+                       std::max<PetscInt>(0, (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]))),
                    -1);
   }
   std::vector<std::ptrdiff_t> next(touches_.size());

@@ -20,7 +20,7 @@ namespace cosim::fluid {
 
 struct ActiveMarker {
   std::size_t body = 0, marker = 0;
-  std::size_t id = 0;  // its number among all bodies' markers
+  std::size_t id = 0;                // its number among all bodies' markers
   Eigen::Vector3d position, target;  // where it is, and the body's velocity there
   double volume = 0;
   std::array<KernelStencil, 3> stencil;

@@ -113,8 +113,8 @@ participant::Outputs FluidSolver::advance(const participant::Window& w, const pa
           responses(start, mean)};
 }
 
-std::vector<participant::PoseRow> FluidSolver::poses_at(const participant::Window& w,
-                                                        const participant::Inputs& in, double t) const {
+std::vector<participant::PoseRow> FluidSolver::poses_at(const participant::Window& w, const participant::Inputs& in,
+                                                        double t) const {
   if (prescribed_) return program::poses_at(setup_.motions, t);
   if (in.poses_start.empty()) return poses_;
   return participant::poses_at(in, w, t);
@@ -136,11 +136,12 @@ std::vector<participant::ForceRow> FluidSolver::forces() const {
 }
 
 std::vector<participant::ResponseRow> FluidSolver::responses(const std::vector<participant::PoseRow>& start,
-                                                              const std::vector<participant::ForceRow>& loads) {
+                                                             const std::vector<participant::ForceRow>& loads) {
   if (!flow_->responses) return {};
   const auto velocities = [](const std::vector<participant::PoseRow>& poses) {
     std::vector<BodyResponses::Vector6d> out;
-    for (const participant::PoseRow& p : poses) out.push_back((BodyResponses::Vector6d() << p.velocity, p.angular_velocity).finished());
+    for (const participant::PoseRow& p : poses)
+      out.push_back((BodyResponses::Vector6d() << p.velocity, p.angular_velocity).finished());
     return out;
   };
   std::vector<Eigen::Quaterniond> orientations;

@@ -67,9 +67,9 @@ double peak_rate(const FluidSetup& setup, const scene::Scene& scene) {
     flow = std::max(flow, rate(held.velocity));
     if (body.fixed || !falling) continue;
     const double diameter = std::cbrt(6 * geometry::volume(held.shape) / std::numbers::pi);
-    flow = std::max(flow, rate(g.normalized() * settling_speed(diameter, body.material.density,
-                                                               setup.properties.density,
-                                                               setup.properties.viscosity, g.norm())));
+    flow =
+        std::max(flow, rate(g.normalized() * settling_speed(diameter, body.material.density, setup.properties.density,
+                                                            setup.properties.viscosity, g.norm())));
   }
   return flow;
 }

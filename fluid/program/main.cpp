@@ -32,10 +32,9 @@ int coupled() {
     MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
     auto client = cosim::protocol::Client::from_environment();
     // Able to take poses and give forces and fields; the coupler's plan decides what flows.
-    return cosim::participant::run_participant(*client, lead,
-                                               static_cast<std::uint32_t>(Data::Forces) |
-                                                   static_cast<std::uint32_t>(Data::Fields),
-                                               static_cast<std::uint32_t>(Data::Poses), static_cast<std::uint32_t>(ranks));
+    return cosim::participant::run_participant(
+        *client, lead, static_cast<std::uint32_t>(Data::Forces) | static_cast<std::uint32_t>(Data::Fields),
+        static_cast<std::uint32_t>(Data::Poses), static_cast<std::uint32_t>(ranks));
   });
 }
 
@@ -60,7 +59,8 @@ int main(int argc, char** argv) {
   spdlog::set_pattern("cosim-fluid: %^%l%$: %v");
   if (std::getenv(cosim::protocol::kEndpointEnv) != nullptr) return with_petsc({argv + 1, argv + argc}, coupled);
 
-  CLI::App app{"cosim-fluid: Navier-Stokes with rigid bodies inside (immersed boundary or staircase); coupled through cosim run, or --standalone"};
+  CLI::App app{
+      "cosim-fluid: Navier-Stokes with rigid bodies inside (immersed boundary or staircase); coupled through cosim run, or --standalone"};
   app.allow_extras();
   cosim::participant::ProgramArgs args;
   cosim::participant::add_program_args(app, args, "Run this scene with the bodies in prescribed motion",

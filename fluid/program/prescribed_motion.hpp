@@ -16,9 +16,9 @@ struct Motion {
   Kind kind = Kind::fixed;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // centre of mass at t = 0
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // constant
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // constant
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // constant, world frame
-  Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();  // sinusoidal: x0 + A sin(2 pi f t)
+  Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();         // sinusoidal: x0 + A sin(2 pi f t)
   // Sinusoidal: the rotation vector theta0 sin(2 pi f t) (rad, world frame) applied to the
   // initial orientation, so the body swings about the fixed axis theta0 / |theta0|.
   Eigen::Vector3d angular_amplitude = Eigen::Vector3d::Zero();

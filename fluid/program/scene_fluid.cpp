@@ -49,7 +49,9 @@ std::array<int, 3> cells(const Reader& grid) {
 fluid::ViscosityModel viscosity(const Reader& r) {
   fluid::ViscosityModel model = fluid::ViscosityModel::newtonian(1);
   switch (r.choice("model", viscosity_names)) {
-    case 0: model = fluid::ViscosityModel::newtonian(r.number("mu", Range::above(0))); break;
+    case 0:
+      model = fluid::ViscosityModel::newtonian(r.number("mu", Range::above(0)));
+      break;
     case 1: {
       const double k = r.number("consistency", Range::above(0)), n = r.number("index", Range::above(0));
       const double lo = r.number("mu_min", Range::above(0)), hi = r.number("mu_max", Range::above(0));
@@ -83,8 +85,7 @@ fluid::VelocityFunction inflow(fluid::Point u, bool parabolic, int axis, const s
 }
 
 // Faces not listed are no-slip walls; periodic must hold for both faces of an axis.
-void read_boundaries(const Reader& options, const scene::Domain& domain, FluidSetup& s,
-                     std::array<bool, 3>& periodic) {
+void read_boundaries(const Reader& options, const scene::Domain& domain, FluidSetup& s, std::array<bool, 3>& periodic) {
   s.boundaries.fill(Boundary::no_slip());
   if (!options.has("boundaries")) return;
   std::array<std::size_t, 6> kind{};
@@ -102,15 +103,20 @@ void read_boundaries(const Reader& options, const scene::Domain& domain, FluidSe
     r.choice("type", boundary_names);
     const int axis = static_cast<int>(f / 2);
     switch (kind[f]) {
-      case 0: s.boundaries[f] = Boundary::moving_wall(point(r.vec3("velocity", {0, 0, 0}))); break;
+      case 0:
+        s.boundaries[f] = Boundary::moving_wall(point(r.vec3("velocity", {0, 0, 0})));
+        break;
       case 1: {
         const fluid::Point u = point(r.vec3("velocity"));
         const bool parabolic = r.choice("profile", profile_names, 0) == 1;
         s.boundaries[f] = Boundary::inflow(inflow(u, parabolic, axis, domain, periodic));
         break;
       }
-      case 2: s.boundaries[f] = Boundary::outflow(); break;
-      default: s.boundaries[f] = Boundary::periodic();
+      case 2:
+        s.boundaries[f] = Boundary::outflow();
+        break;
+      default:
+        s.boundaries[f] = Boundary::periodic();
     }
     r.finish();
   }
@@ -205,11 +211,14 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   s.steps.cfl = options.number("cfl", s.steps.cfl, Range::above(0));
   s.steps.dt_initial = options.number("dt_initial", std::min(s.steps.dt_initial, p.dt), Range::left_open(0, p.dt));
   s.steps.theta = options.number("theta", s.steps.theta, Range::closed(0.5, 1));
-  s.steps.pressure_update = static_cast<fluid::PressureUpdate>(options.choice("pressure_update", pressure_update_names, 0));
+  s.steps.pressure_update =
+      static_cast<fluid::PressureUpdate>(options.choice("pressure_update", pressure_update_names, 0));
   s.body_method = read_body_method(options);
-  if (s.steps.pressure_update == fluid::PressureUpdate::exact && std::holds_alternative<fluid::FbmOptions>(s.body_method))
-    options.fail("pressure_update", "exact needs bodies: {method: ibm}: the staircase's imposed faces take the "
-                                    "standard projection");
+  if (s.steps.pressure_update == fluid::PressureUpdate::exact &&
+      std::holds_alternative<fluid::FbmOptions>(s.body_method))
+    options.fail("pressure_update",
+                 "exact needs bodies: {method: ibm}: the staircase's imposed faces take the "
+                 "standard projection");
   try {
     s.petsc = parse_petsc_flags(options.string("petsc", ""));
   } catch (const std::invalid_argument& e) {

@@ -22,8 +22,8 @@ std::size_t FictitiousBoundary::add(RigidBody body) {
 void FictitiousBoundary::move(std::size_t i, const geometry::Pose& pose, const Eigen::Vector3d& velocity,
                               const Eigen::Vector3d& angular_velocity) {
   Entry& e = bodies_.at(i);
-  const bool moved = pose.position() != e.body.pose.position() ||
-                     pose.orientation().coeffs() != e.body.pose.orientation().coeffs();
+  const bool moved =
+      pose.position() != e.body.pose.position() || pose.orientation().coeffs() != e.body.pose.orientation().coeffs();
   // A body placed where it is, at the velocity it has (a fixed one: every step), changes
   // neither its indicator nor the imposed values. Every rank gets the same poses, so all
   // skip the collective collect_imposed_faces() together.

@@ -30,12 +30,8 @@ inline Cell cell_of(const Eigen::Vector3d& p, double inv_size) {
 
 // Field by field: std::array's == calls memcmp, a library call per candidate in the pair
 // search.
-inline bool same_cell(const Cell& a, const Cell& b) {
-  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
-}
+inline bool same_cell(const Cell& a, const Cell& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
 
-inline Cell operator+(const Cell& a, const Cell& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
+inline Cell operator+(const Cell& a, const Cell& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 }  // namespace cosim::broadphase

@@ -32,8 +32,7 @@ const char* defect(const Object& o) {
     return o.half_space->normal.squaredNorm() > 0.0 ? nullptr : "half-space normal is zero";
   }
   if (!o.centre.allFinite()) return "centre is not finite";
-  return std::isfinite(o.radius) && o.radius >= 0.0 ? nullptr
-                                                     : "radius must be finite and >= 0";
+  return std::isfinite(o.radius) && o.radius >= 0.0 ? nullptr : "radius must be finite and >= 0";
 }
 
 void check(const Object& o) {
@@ -44,19 +43,16 @@ void check(const Object& o) {
 
 HashGridConfig checked(const HashGridConfig& c) {
   require(std::isfinite(c.margin) && c.margin >= 0.0, "margin must be finite and >= 0");
-  require(std::isfinite(c.base_cell_size) && c.base_cell_size >= 0.0,
-          "base cell size must be finite and >= 0");
+  require(std::isfinite(c.base_cell_size) && c.base_cell_size >= 0.0, "base cell size must be finite and >= 0");
   require(std::isfinite(c.level_factor) && c.level_factor > 1.0, "level factor must be > 1");
-  require(std::isfinite(c.safety) && c.safety >= kMinSafety,
-          "safety factor must be >= " + std::to_string(kMinSafety));
+  require(std::isfinite(c.safety) && c.safety >= kMinSafety, "safety factor must be >= " + std::to_string(kMinSafety));
   return c;
 }
 
 }  // namespace
 
 HashGrid::HashGrid(const HashGridConfig& config)
-    : config_(checked(config)),
-      levels_(config.level_factor, config.safety, config.margin) {}
+    : config_(checked(config)), levels_(config.level_factor, config.safety, config.margin) {}
 
 void HashGrid::update(std::span<const Object> objects) {
   require(objects.size() < std::numeric_limits<std::uint32_t>::max(), "too many objects");
@@ -120,16 +116,14 @@ void HashGrid::sort_by_bucket(std::span<const Object> objects, std::size_t finit
     const Object& o = objects[n];
     if (o.infinite) continue;
     const Slot slot = slots_[n];
-    entries_[--start_[slot.bucket]] = {o.centre, o.radius, cell_of_slot(o, slot), o.id,
-                                       slot.level, o.fixed};
+    entries_[--start_[slot.bucket]] = {o.centre, o.radius, cell_of_slot(o, slot), o.id, slot.level, o.fixed};
   }
 }
 
 std::size_t HashGrid::memory_bytes() const {
   return entries_.capacity() * sizeof(Entry) + start_.capacity() * sizeof(std::uint32_t) +
          slots_.capacity() * sizeof(Slot) + per_level_.capacity() * sizeof(PerLevel) +
-         occupied_.capacity() * sizeof(std::uint32_t) + walls_.capacity() * sizeof(Object) +
-         levels_.memory_bytes();
+         occupied_.capacity() * sizeof(std::uint32_t) + walls_.capacity() * sizeof(Object) + levels_.memory_bytes();
 }
 
 }  // namespace cosim::broadphase

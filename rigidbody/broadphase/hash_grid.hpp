@@ -78,17 +78,14 @@ class HashGrid {
   std::uint32_t bucket_of(std::uint32_t level, const Cell& cell) const {
     return static_cast<std::uint32_t>(per_level_[level].layout.index(cell) & mask_);
   }
-  Cell cell_of_slot(const Object& o, const Slot& slot) const {
-    return cell_of(o.centre, levels_.inv_size(slot.level));
-  }
+  Cell cell_of_slot(const Object& o, const Slot& slot) const { return cell_of(o.centre, levels_.inv_size(slot.level)); }
   void assign_levels(std::span<const Object> objects);
   void sort_by_bucket(std::span<const Object> objects, std::size_t finite);
   // Pairs of a with the objects of a level in the cells around a that can hold a partner;
   // half: only the half neighbourhood (for a's own level).
   void visit(const Entry& a, std::uint32_t level, bool half, std::vector<Pair>& out) const;
   // Pairs of a with the objects in one cell, from entry `first` of its bucket on.
-  void scan(const Entry& a, std::uint32_t level, const Cell& cell, std::uint32_t first,
-            std::vector<Pair>& out) const;
+  void scan(const Entry& a, std::uint32_t level, const Cell& cell, std::uint32_t first, std::vector<Pair>& out) const;
 
   HashGridConfig config_;
   Levels levels_;

@@ -26,8 +26,7 @@ void HashGrid::scan(const Entry& a, std::uint32_t level, const Cell& cell, std::
   }
 }
 
-void HashGrid::visit(const Entry& a, std::uint32_t level, bool half,
-                     std::vector<Pair>& out) const {
+void HashGrid::visit(const Entry& a, std::uint32_t level, bool half, std::vector<Pair>& out) const {
   const double reach = a.radius + config_.margin + per_level_[level].max_radius;
   for_each_cell(block_within(a.centre, levels_.inv_size(level), reach), half,
                 [&](const Cell& cell) { scan(a, level, cell, 0, out); });

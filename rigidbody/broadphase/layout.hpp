@@ -44,17 +44,14 @@ class Layout {
 
   // For a cell inside the box. Unsigned arithmetic wraps, which is what folding wants.
   std::uint64_t index(const Cell& cell) const {
-    return offset_ + from_lo(cell, 0) + stride_y_ * from_lo(cell, 1) +
-           stride_z_ * from_lo(cell, 2);
+    return offset_ + from_lo(cell, 0) + stride_y_ * from_lo(cell, 1) + stride_z_ * from_lo(cell, 2);
   }
 
  private:
   std::uint64_t from_lo(const Cell& cell, int axis) const {
     return static_cast<std::uint64_t>(std::int64_t{cell[axis]} - lo_[axis]);
   }
-  std::uint64_t extent(int axis) const {
-    return static_cast<std::uint64_t>(std::int64_t{hi_[axis]} - lo_[axis] + 1);
-  }
+  std::uint64_t extent(int axis) const { return static_cast<std::uint64_t>(std::int64_t{hi_[axis]} - lo_[axis] + 1); }
 
   Cell lo_ = {std::numeric_limits<std::int32_t>::max(), std::numeric_limits<std::int32_t>::max(),
               std::numeric_limits<std::int32_t>::max()};

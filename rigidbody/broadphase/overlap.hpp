@@ -9,16 +9,14 @@ namespace cosim::broadphase {
 inline Pair ordered_pair(Id a, Id b) { return a < b ? Pair{a, b} : Pair{b, a}; }
 
 // Bounding spheres at most margin apart; touching spheres are candidates.
-inline bool spheres_near(const Eigen::Vector3d& ca, double ra, const Eigen::Vector3d& cb,
-                         double rb, double margin) {
+inline bool spheres_near(const Eigen::Vector3d& ca, double ra, const Eigen::Vector3d& cb, double rb, double margin) {
   const double reach = ra + rb + margin;
   return (ca - cb).squaredNorm() <= reach * reach;
 }
 
 // A sphere at most margin outside the half-space, or anywhere inside it. Comparing with the
 // scaled reach avoids normalising the normal.
-inline bool sphere_near_half_space(const HalfSpace& h, const Eigen::Vector3d& c, double r,
-                                   double margin) {
+inline bool sphere_near_half_space(const HalfSpace& h, const Eigen::Vector3d& c, double r, double margin) {
   return h.normal.dot(c) - h.offset <= (r + margin) * h.normal.norm();
 }
 

@@ -16,14 +16,12 @@
 namespace cosim::dynamics {
 
 struct AddedInertia {
-  double mass = 0.0;                                      // kg, the same along every axis
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();      // kg m^2, world frame, about the centre of mass
-  double damping = 0.0;                                   // N s / m
+  double mass = 0.0;                                             // kg, the same along every axis
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();             // kg m^2, world frame, about the centre of mass
+  double damping = 0.0;                                          // N s / m
   Eigen::Matrix3d rotational_damping = Eigen::Matrix3d::Zero();  // N m s, world frame
 
-  bool empty() const {
-    return mass == 0.0 && damping == 0.0 && inertia.isZero(0.0) && rotational_damping.isZero(0.0);
-  }
+  bool empty() const { return mass == 0.0 && damping == 0.0 && inertia.isZero(0.0) && rotational_damping.isZero(0.0); }
 };
 
 // The body as it moves with the liquid: mass m + added mass, inertia I + added inertia

@@ -7,7 +7,7 @@
 namespace cosim::dynamics {
 
 struct BodyState {
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();        // of the centre of mass
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // of the centre of mass
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // world frame
@@ -16,7 +16,7 @@ struct BodyState {
 // Inverse quantities, so a fixed body is simply zero everywhere and needs no special case.
 struct BodyInertia {
   double inverse_mass = 0.0;
-  Eigen::Matrix3d inertia_body = Eigen::Matrix3d::Zero();          // about the COM, body frame
+  Eigen::Matrix3d inertia_body = Eigen::Matrix3d::Zero();  // about the COM, body frame
   Eigen::Matrix3d inverse_inertia_body = Eigen::Matrix3d::Zero();
   bool rotates = true;  // false: translation only (angular velocity stays as it is)
   // Mean density mass / volume. Only buoyancy needs it: -rho_f V g = -(rho_f / density) m g,

@@ -14,8 +14,7 @@ Wrench WindowWrench::at(double t0, double t1, double s) const {
 Eigen::Vector3d BodyForces::acceleration(const BodyInertia& body) const {
   double factor = gravity ? 1.0 : 0.0;
   if (buoyancy) {
-    if (!(body.density > 0.0))
-      throw std::invalid_argument("buoyancy needs a positive body density");
+    if (!(body.density > 0.0)) throw std::invalid_argument("buoyancy needs a positive body density");
     factor -= fluid_density / body.density;
   }
   return body.own_mass_fraction * factor * g;

@@ -12,10 +12,9 @@
 namespace cosim::dynamics {
 namespace {
 
-void check(std::span<BodyState> states, std::span<const BodyInertia> inertia,
-           std::span<const WindowWrench> external, double t0, double t1, double dt) {
-  if (inertia.size() != states.size())
-    throw std::invalid_argument("advance: one inertia per body state is needed");
+void check(std::span<BodyState> states, std::span<const BodyInertia> inertia, std::span<const WindowWrench> external,
+           double t0, double t1, double dt) {
+  if (inertia.size() != states.size()) throw std::invalid_argument("advance: one inertia per body state is needed");
   if (!external.empty() && external.size() != states.size())
     throw std::invalid_argument("advance: external wrenches must be one per body or none");
   if (!(t1 >= t0)) throw std::invalid_argument("advance: t1 must not be before t0");
@@ -25,9 +24,7 @@ void check(std::span<BodyState> states, std::span<const BodyInertia> inertia,
 // dt is the longest substep: a span that is not a whole number of them takes one more,
 // shorter, so nothing stepped at dt (the soft step's springs, capped by the substep) is
 // stepped longer. The tolerance keeps a whole number from gaining one by round-off.
-long substep_count(double span, double dt) {
-  return std::max(1L, static_cast<long>(std::ceil(span / dt - 1e-9)));
-}
+long substep_count(double span, double dt) { return std::max(1L, static_cast<long>(std::ceil(span / dt - 1e-9))); }
 
 // The liquid's damping over h, implicitly: m (v' - v) = -h c v', and likewise for omega in
 // the body frame with I and the rotational damping. Implicit, so a damping far above m / h
@@ -97,8 +94,8 @@ void Substeps::integrate_positions() {
   }
 }
 
-void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia,
-             std::span<const WindowWrench> external, double t0, double t1, const IntegratorSettings& settings) {
+void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia, std::span<const WindowWrench> external,
+             double t0, double t1, const IntegratorSettings& settings) {
   Substeps substeps(states, inertia, external, t0, t1, settings);
   for (long k = 0; k < substeps.count(); ++k) {
     substeps.integrate_velocities(k);

@@ -58,7 +58,7 @@ class Substeps {
 
 // Moves `states` from t0 to t1 with nothing between the halves: free flight under the
 // body forces and `external`. Throws as Substeps does.
-void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia,
-             std::span<const WindowWrench> external, double t0, double t1, const IntegratorSettings& settings);
+void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia, std::span<const WindowWrench> external,
+             double t0, double t1, const IntegratorSettings& settings);
 
 }  // namespace cosim::dynamics

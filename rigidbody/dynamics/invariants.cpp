@@ -14,8 +14,8 @@ Eigen::Vector3d spin_angular_momentum(const BodyState& state, const BodyInertia&
 }
 
 double kinetic_energy(const BodyState& state, const BodyInertia& body) {
-  return 0.5 * (mass(body) * state.velocity.squaredNorm() +
-                state.angular_velocity.dot(spin_angular_momentum(state, body)));
+  return 0.5 *
+         (mass(body) * state.velocity.squaredNorm() + state.angular_velocity.dot(spin_angular_momentum(state, body)));
 }
 
 double kinetic_energy(std::span<const BodyState> states, std::span<const BodyInertia> inertia) {

@@ -21,7 +21,7 @@ Eigen::Quaterniond free_rotation(const Eigen::Quaterniond& q, const Eigen::Matri
   const Eigen::Vector3d moments = eigen.eigenvalues();
   const Eigen::Quaterniond to_principal(axes);
 
-  Eigen::Quaterniond p = q * to_principal;  // principal frame -> world
+  Eigen::Quaterniond p = q * to_principal;                // principal frame -> world
   Eigen::Vector3d pi = p.conjugate() * angular_momentum;  // in the principal frame
   const auto flow = [&](int k, double tau) {
     const double angle = tau * pi[k] / moments[k];

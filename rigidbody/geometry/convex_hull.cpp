@@ -25,7 +25,8 @@ namespace {
 
 // qhull lists a merged facet's vertices in no particular order: sort them by angle about
 // the facet centroid, counter-clockwise about the outward normal.
-void order_loop(std::vector<std::uint32_t>& loop, const std::vector<Eigen::Vector3d>& v, const Eigen::Vector3d& normal) {
+void order_loop(std::vector<std::uint32_t>& loop, const std::vector<Eigen::Vector3d>& v,
+                const Eigen::Vector3d& normal) {
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (std::uint32_t i : loop) c += v[i];
   c /= static_cast<double>(loop.size());
@@ -77,9 +78,9 @@ ConvexHull::ConvexHull(std::span<const Eigen::Vector3d> points) {
   for (const auto& loop : faces) planes.push_back(plane_of(loop, vertices));
   std::vector<std::uint32_t> all(vertices.size());
   std::iota(all.begin(), all.end(), 0u);
-  data_ = std::make_shared<const Data>(Data{std::move(faces), std::move(planes), mass.center, mass.volume,
-                                            mass.inertia,
-                                            detail::MeshCore(std::move(vertices), std::move(triangles), std::move(all))});
+  data_ =
+      std::make_shared<const Data>(Data{std::move(faces), std::move(planes), mass.center, mass.volume, mass.inertia,
+                                        detail::MeshCore(std::move(vertices), std::move(triangles), std::move(all))});
 }
 
 const std::vector<Eigen::Vector3d>& ConvexHull::vertices() const { return data_->core.vertices(); }

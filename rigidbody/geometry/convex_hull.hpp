@@ -28,11 +28,11 @@ class ConvexHull {
   // Throws std::invalid_argument for fewer than 4 points or points in a plane.
   explicit ConvexHull(std::span<const Eigen::Vector3d> points);
 
-  const std::vector<Eigen::Vector3d>& vertices() const;           // body frame
-  const std::vector<std::vector<std::uint32_t>>& faces() const;   // vertex loops, CCW seen from outside
-  const std::vector<Plane>& planes() const;                       // one per face
-  const std::vector<Triangle>& triangles() const;                 // faces split into fans
-  const Eigen::Vector3d& com_shift() const;                       // see TriangleMesh::com_shift
+  const std::vector<Eigen::Vector3d>& vertices() const;          // body frame
+  const std::vector<std::vector<std::uint32_t>>& faces() const;  // vertex loops, CCW seen from outside
+  const std::vector<Plane>& planes() const;                      // one per face
+  const std::vector<Triangle>& triangles() const;                // faces split into fans
+  const Eigen::Vector3d& com_shift() const;                      // see TriangleMesh::com_shift
 
   double volume() const;
   const Eigen::Matrix3d& unit_inertia() const;

@@ -26,18 +26,18 @@ class DistanceMap {
   DistanceMap(const Shape& shape, double spacing, double margin);
 
   const GridSpec& grid() const { return grid_; }
-  double shape_volume() const { return shape_volume_; }  // exact, of the shape sampled
+  double shape_volume() const { return shape_volume_; }       // exact, of the shape sampled
   std::span<const double> values() const { return values_; }  // exact, at grid.index(i, j, k)
-  double error_bound() const;                                  // (sqrt(3)/2) h, see above
+  double error_bound() const;                                 // (sqrt(3)/2) h, see above
 
   double signed_distance(const Eigen::Vector3d& p) const;
   SurfacePoint closest(const Eigen::Vector3d& p) const;  // point = p - distance * normal
 
  private:
   struct Cell {
-    std::size_t base;   // index of the lower corner node
-    Eigen::Array3d t;   // position inside the cell, in [0, 1]^3
-    double outside;     // distance from p to the grid box
+    std::size_t base;  // index of the lower corner node
+    Eigen::Array3d t;  // position inside the cell, in [0, 1]^3
+    double outside;    // distance from p to the grid box
   };
   Cell locate(const Eigen::Vector3d& p) const;
   template <class T>

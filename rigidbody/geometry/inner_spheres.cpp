@@ -35,7 +35,8 @@ InnerSphereSet inner_spheres(const DistanceMap& map, double fraction) {
   // Not counted on the nodes: every candidate is centred on one, so a sphere much thinner
   // than a cell would be credited with a whole cell.
   const double h = nodes.spacing;
-  const GridSpec cells{nodes.origin + Eigen::Vector3d::Constant(0.5 * h), h,
+  const GridSpec cells{nodes.origin + Eigen::Vector3d::Constant(0.5 * h),
+                       h,
                        {nodes.count[0] - 1, nodes.count[1] - 1, nodes.count[2] - 1}};
   const double cell_volume = h * h * h;
   const double target = fraction * map.shape_volume();
@@ -44,8 +45,10 @@ InnerSphereSet inner_spheres(const DistanceMap& map, double fraction) {
   std::vector<std::size_t> candidates;
   for (std::size_t n = 0; n < values.size(); ++n)
     if (-values[n] >= 0.5 * std::sqrt(3.0) * h) candidates.push_back(n);
-  if (candidates.empty()) throw std::invalid_argument("inner spheres: no node is a cell deep inside; use a finer spacing");
-  std::stable_sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+  if (candidates.empty())
+    throw std::invalid_argument("inner spheres: no node is a cell deep inside; use a finer spacing");
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
 
   std::vector<std::uint8_t> covered(cells.size(), 0);
   // depth[n]: how far node n lies inside the deepest taken sphere (-inf: in none).

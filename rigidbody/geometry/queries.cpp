@@ -8,7 +8,9 @@ namespace cosim::geometry {
 namespace {
 
 template <class S>
-concept Hinted = requires(const S& s, const Eigen::Vector3d& p, std::uint32_t& hint) { s.closest(p, hint); };
+concept Hinted = requires(const S& s, const Eigen::Vector3d& p, std::uint32_t& hint) {
+  s.closest(p, hint);
+};
 
 // The queries of one shape type, carrying the mesh search hint from one point to the next.
 template <class S>
@@ -104,27 +106,32 @@ bool contains(const Shape& shape, const Pose& pose, const Eigen::Vector3d& p) {
 
 void signed_distances(const Shape& shape, const Pose& pose, std::span<const Eigen::Vector3d> points,
                       std::span<double> out) {
-  batch(shape, pose, points.size(), [&](std::size_t i) { return points[i]; }, out, distance_of);
+  batch(
+      shape, pose, points.size(), [&](std::size_t i) { return points[i]; }, out, distance_of);
 }
 
 void closest_points(const Shape& shape, const Pose& pose, std::span<const Eigen::Vector3d> points,
                     std::span<SurfacePoint> out) {
-  batch(shape, pose, points.size(), [&](std::size_t i) { return points[i]; }, out,
-        [frame = Frame(pose)](auto& q, const Eigen::Vector3d& p) { return frame.to_world(q.closest(p)); });
+  batch(
+      shape, pose, points.size(), [&](std::size_t i) { return points[i]; }, out,
+      [frame = Frame(pose)](auto& q, const Eigen::Vector3d& p) { return frame.to_world(q.closest(p)); });
 }
 
 void contains(const Shape& shape, const Pose& pose, std::span<const Eigen::Vector3d> points,
               std::span<std::uint8_t> out) {
-  batch(shape, pose, points.size(), [&](std::size_t i) { return points[i]; }, out, inside_of);
+  batch(
+      shape, pose, points.size(), [&](std::size_t i) { return points[i]; }, out, inside_of);
 }
 
 void signed_distances(const Shape& shape, const Pose& pose, const GridSpec& grid, std::span<double> out) {
-  batch(shape, pose, grid.size(), [&](std::size_t i) { return grid.node(i); }, out, distance_of);
+  batch(
+      shape, pose, grid.size(), [&](std::size_t i) { return grid.node(i); }, out, distance_of);
 }
 
 void closest_points(const Shape& shape, const Pose& pose, const GridSpec& grid, std::span<SurfacePoint> out) {
-  batch(shape, pose, grid.size(), [&](std::size_t i) { return grid.node(i); }, out,
-        [frame = Frame(pose)](auto& q, const Eigen::Vector3d& p) { return frame.to_world(q.closest(p)); });
+  batch(
+      shape, pose, grid.size(), [&](std::size_t i) { return grid.node(i); }, out,
+      [frame = Frame(pose)](auto& q, const Eigen::Vector3d& p) { return frame.to_world(q.closest(p)); });
 }
 
 }  // namespace cosim::geometry

@@ -22,7 +22,8 @@ auto visit_bounded(const Shape& shape, const char* what, F f) {
   return std::visit(
       [&](const auto& s) -> Result {
         if constexpr (std::is_same_v<std::decay_t<decltype(s)>, HalfSpace>)
-          throw std::invalid_argument(std::string("half-space: infinite, it has no ") + what + "; make it a fixed body");
+          throw std::invalid_argument(std::string("half-space: infinite, it has no ") + what +
+                                      "; make it a fixed body");
         else
           return f(s);
       },
@@ -33,14 +34,22 @@ auto visit_bounded(const Shape& shape, const char* what, F f) {
 
 std::string_view name(ShapeKind kind) {
   switch (kind) {
-    case ShapeKind::Sphere: return "sphere";
-    case ShapeKind::Ellipsoid: return "ellipsoid";
-    case ShapeKind::Box: return "box";
-    case ShapeKind::Cylinder: return "cylinder";
-    case ShapeKind::Capsule: return "capsule";
-    case ShapeKind::HalfSpace: return "half-space";
-    case ShapeKind::ConvexHull: return "convex hull";
-    case ShapeKind::TriangleMesh: return "triangle mesh";
+    case ShapeKind::Sphere:
+      return "sphere";
+    case ShapeKind::Ellipsoid:
+      return "ellipsoid";
+    case ShapeKind::Box:
+      return "box";
+    case ShapeKind::Cylinder:
+      return "cylinder";
+    case ShapeKind::Capsule:
+      return "capsule";
+    case ShapeKind::HalfSpace:
+      return "half-space";
+    case ShapeKind::ConvexHull:
+      return "convex hull";
+    case ShapeKind::TriangleMesh:
+      return "triangle mesh";
   }
   return "unknown shape";
 }

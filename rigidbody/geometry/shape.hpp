@@ -33,7 +33,7 @@ bool is_bounded(const Shape& shape);  // every kind but HalfSpace: has volume, m
 double volume(const Shape& shape);
 Eigen::Matrix3d unit_inertia(const Shape& shape);  // about the centre of mass, density 1
 
-double bounding_radius(const Shape& shape);      // about the body origin; +infinity for a half-space
+double bounding_radius(const Shape& shape);             // about the body origin; +infinity for a half-space
 Aabb world_aabb(const Shape& shape, const Pose& pose);  // tight for every kind
 
 // Support mapping for GJK/EPA: a point of the shape farthest along `direction` (any point

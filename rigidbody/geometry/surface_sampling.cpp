@@ -141,8 +141,8 @@ std::vector<Candidate> candidates(const Shape& shape, const Pose& pose, const La
         for (int ck = 0; ck < corner_count[2]; ++ck)
           for (int cj = 0; cj < corner_count[1]; ++cj)
             for (int ci = 0; ci < corner_count[0]; ++ci) {
-              const std::size_t at = static_cast<std::size_t>(
-                  i + ci + nodes_count[0] * (j + cj + nodes_count[1] * (k + ck)));
+              const std::size_t at =
+                  static_cast<std::size_t>(i + ci + nodes_count[0] * (j + cj + nodes_count[1] * (k + ck)));
               closest = std::min(closest, std::abs(phi[at]));
             }
         if (closest <= near) cell_candidates(shape, pose, lattice, {i, j, k}, out);

@@ -24,9 +24,9 @@
 namespace cosim::geometry {
 
 struct SurfaceSample {
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();   // on the surface, world frame
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // on the surface, world frame
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // outward unit normal
-  double area = 0;                                   // on a section: the length of curve
+  double area = 0;                                    // on a section: the length of curve
 };
 
 // The whole surface of `shape` at `pose`. Throws std::invalid_argument for a half-space or

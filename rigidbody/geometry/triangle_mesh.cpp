@@ -29,8 +29,8 @@ TriangleMesh::TriangleMesh(std::vector<Eigen::Vector3d> vertices, std::vector<Tr
   try {
     detail::WeldedMesh welded = detail::weld(vertices, triangles);
     detail::require_nondegenerate(welded.vertices, welded.triangles);
-    const auto flipped =
-        detail::orient_outward(welded.vertices, welded.triangles, detail::edge_neighbors(welded.vertices, welded.triangles));
+    const auto flipped = detail::orient_outward(welded.vertices, welded.triangles,
+                                                detail::edge_neighbors(welded.vertices, welded.triangles));
 
     MeshReport report{welded.merged_vertices, welded.dropped_triangles, flipped.size(), 0};
     for (std::size_t n : flipped) report.flipped_triangles += n;
@@ -38,9 +38,9 @@ TriangleMesh::TriangleMesh(std::vector<Eigen::Vector3d> vertices, std::vector<Tr
     const detail::PolyhedronMass mass = detail::polyhedral_mass(welded.vertices, welded.triangles);
     for (auto& v : welded.vertices) v -= mass.center;
     auto hull = detail::qhull_convex_hull(welded.vertices).vertices;
-    data_ = std::make_shared<const Data>(Data{source, mass.center, report, mass.volume, mass.inertia,
-                                              detail::MeshCore(std::move(welded.vertices), std::move(welded.triangles),
-                                                               std::move(hull))});
+    data_ = std::make_shared<const Data>(
+        Data{source, mass.center, report, mass.volume, mass.inertia,
+             detail::MeshCore(std::move(welded.vertices), std::move(welded.triangles), std::move(hull))});
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(source + ": " + e.what());
   }

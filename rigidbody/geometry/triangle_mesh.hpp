@@ -20,12 +20,12 @@ class MeshCore;
 
 // What construction had to repair; nothing here changes the solid the mesh describes.
 struct MeshReport {
-  std::size_t merged_vertices = 0;       // exact duplicates welded (STL repeats every corner)
-  std::size_t dropped_triangles = 0;     // collapsed to an edge or a point by welding
-  std::size_t flipped_components = 0;    // closed components turned to face outward
+  std::size_t merged_vertices = 0;     // exact duplicates welded (STL repeats every corner)
+  std::size_t dropped_triangles = 0;   // collapsed to an edge or a point by welding
+  std::size_t flipped_components = 0;  // closed components turned to face outward
   std::size_t flipped_triangles = 0;
   bool flipped() const { return flipped_components > 0; }
-  std::string summary() const;           // one line, for logs
+  std::string summary() const;  // one line, for logs
 };
 
 // A closed triangle surface (possibly non-convex, several components, cavities), immutable

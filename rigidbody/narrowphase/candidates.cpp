@@ -17,7 +17,7 @@ void keep_spread(std::vector<contact::ContactPoint>& points) {
   std::vector<contact::ContactPoint> kept;
   const auto best = [&](auto score) {
     auto it = std::max_element(points.begin(), points.end(),
-                                [&](const auto& p, const auto& q) { return score(p) < score(q); });
+                               [&](const auto& p, const auto& q) { return score(p) < score(q); });
     kept.push_back(*it);
     points.erase(it);
   };

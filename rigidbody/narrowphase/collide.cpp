@@ -11,8 +11,8 @@ using namespace detail;
 // Runs the pair function for (a, b), or for (b, a) and returns true (the caller flips the
 // normals), falling back on the general mesh and convex paths.
 template <class A, class B>
-bool run(const A& a, const Pose& pa, const B& b, const Pose& pb, const Shape& sa, const Shape& sb,
-         MeshMaps& maps, Candidates& out) {
+bool run(const A& a, const Pose& pa, const B& b, const Pose& pb, const Shape& sa, const Shape& sb, MeshMaps& maps,
+         Candidates& out) {
   if constexpr (requires { pair(a, pa, b, pb, out); }) {
     pair(a, pa, b, pb, out);
   } else if constexpr (requires { pair(b, pb, a, pa, out); }) {
@@ -44,8 +44,8 @@ bool precedes(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb) {
 
 MeshMaps::MeshMaps(double resolution) : resolution_(resolution) {}
 
-bool collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin,
-             contact::Manifold& out, MeshMaps& maps) {
+bool collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin, contact::Manifold& out,
+             MeshMaps& maps) {
   if (precedes(b, pb, a, pa)) {
     const bool found = collide(b, pb, a, pa, margin, out, maps);
     for (int i = 0; i < out.count; ++i) out.points[i].normal = -out.points[i].normal;
@@ -53,8 +53,8 @@ bool collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, dou
   }
   Candidates found;
   found.margin = margin;
-  const bool swapped = std::visit(
-      [&](const auto& x, const auto& y) { return run(x, pa, y, pb, a, b, maps, found); }, a, b);
+  const bool swapped =
+      std::visit([&](const auto& x, const auto& y) { return run(x, pa, y, pb, a, b, maps, found); }, a, b);
   keep_spread(found.points);
   out.count = 0;
   for (auto& p : found.points) {
@@ -64,8 +64,7 @@ bool collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, dou
   return out.count > 0;
 }
 
-bool collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin,
-             contact::Manifold& out) {
+bool collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin, contact::Manifold& out) {
   static MeshMaps maps;
   return collide(a, pa, b, pb, margin, out, maps);
 }

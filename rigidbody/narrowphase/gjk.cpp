@@ -117,16 +117,22 @@ GjkResult gjk_distance(const geometry::Shape& a, const geometry::Pose& pa, const
     }
     const Vertex w = support(-v);
     // |v| - v.w/|v| bounds the error of the distance; a repeated vertex means no progress.
-    const bool repeated = std::any_of(simplex.begin(), simplex.begin() + size,
-                                      [&](const Vertex& s) { return s.w == w.w; });
+    const bool repeated =
+        std::any_of(simplex.begin(), simplex.begin() + size, [&](const Vertex& s) { return s.w == w.w; });
     if (distance - v.dot(w.w) / distance <= tolerance || repeated) break;
     simplex[size++] = w;
     bool inside = false;
     Nearest next;
     switch (size) {
-      case 2: next = on_segment(simplex, 0, 1); break;
-      case 3: next = on_triangle(simplex, 0, 1, 2); break;
-      default: next = on_tetrahedron(simplex, inside); break;
+      case 2:
+        next = on_segment(simplex, 0, 1);
+        break;
+      case 3:
+        next = on_triangle(simplex, 0, 1, 2);
+        break;
+      default:
+        next = on_tetrahedron(simplex, inside);
+        break;
     }
     if (inside) {
       result.overlap = true;

@@ -17,7 +17,8 @@ const geometry::DistanceMap& MeshMaps::get(const geometry::TriangleMesh& mesh) {
   if (it == entries_.end()) {
     // The margin keeps the centres of inner spheres and samples near the surface on the grid.
     const double radius = mesh.bounding_radius();
-    auto map = std::make_unique<const geometry::DistanceMap>(geometry::Shape(mesh), radius / resolution_, 0.25 * radius);
+    auto map =
+        std::make_unique<const geometry::DistanceMap>(geometry::Shape(mesh), radius / resolution_, 0.25 * radius);
     it = entries_.emplace(key, Entry{mesh, std::move(map)}).first;
   }
   return *it->second.map;
@@ -57,8 +58,7 @@ std::vector<Sample> samples(const Shape& shape) {
         } else if constexpr (std::is_same_v<T, Capsule>) {
           // Balls along the axis, at most a radius apart, so the union hugs the capsule.
           const int n = 1 + static_cast<int>(std::ceil(x.height() / x.radius()));
-          for (int i = 0; i <= n; ++i)
-            s.push_back({Vec3(0.0, 0.0, x.height() * (double(i) / n - 0.5)), x.radius()});
+          for (int i = 0; i <= n; ++i) s.push_back({Vec3(0.0, 0.0, x.height() * (double(i) / n - 0.5)), x.radius()});
         } else if constexpr (std::is_same_v<T, Box>) {
           for (int i = 0; i < 8; ++i)
             s.push_back({x.half_extents().cwiseProduct(Vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1)), 0.0});
@@ -90,8 +90,7 @@ void samples_in_map(const geometry::DistanceMap& map, const Pose& pa, const std:
 
 }  // namespace
 
-void mesh_pair(const TriangleMesh& a, const Pose& pa, const Shape& b, const Pose& pb, MeshMaps& maps,
-               Candidates& out) {
+void mesh_pair(const TriangleMesh& a, const Pose& pa, const Shape& b, const Pose& pb, MeshMaps& maps, Candidates& out) {
   samples_in_map(maps.get(a), pa, samples(b), pb, 0, out);
   // a's vertices against b, with normals turned to point from a to b.
   std::vector<Sample> vertices;

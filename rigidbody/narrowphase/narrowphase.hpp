@@ -40,11 +40,11 @@ class MeshMaps {
 // with flipped normals. Every pair gives a full manifold (up to 4 points): general convex
 // pairs clip the features facing each other along the GJK / libccd EPA normal. Two
 // half-spaces never collide.
-bool collide(const geometry::Shape& a, const geometry::Pose& pa, const geometry::Shape& b,
-             const geometry::Pose& pb, double margin, contact::Manifold& out, MeshMaps& maps);
+bool collide(const geometry::Shape& a, const geometry::Pose& pa, const geometry::Shape& b, const geometry::Pose& pb,
+             double margin, contact::Manifold& out, MeshMaps& maps);
 
 // The same with a process-wide MeshMaps of default resolution.
-bool collide(const geometry::Shape& a, const geometry::Pose& pa, const geometry::Shape& b,
-             const geometry::Pose& pb, double margin, contact::Manifold& out);
+bool collide(const geometry::Shape& a, const geometry::Pose& pa, const geometry::Shape& b, const geometry::Pose& pb,
+             double margin, contact::Manifold& out);
 
 }  // namespace cosim::narrowphase

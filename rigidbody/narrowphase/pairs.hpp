@@ -27,9 +27,10 @@ void pair(const Sphere& a, const Pose& pa, const Sphere& b, const Pose& pb, Cand
 // A sphere against any bounded convex shape is the shape's exact closest point to the
 // centre (box, cylinder, capsule analytic; ellipsoid by Eberly's root; hull by faces).
 template <class Convex>
-  requires(std::same_as<Convex, Box> || std::same_as<Convex, Cylinder> || std::same_as<Convex, Capsule> ||
-           std::same_as<Convex, Ellipsoid> || std::same_as<Convex, ConvexHull>)
-void pair(const Convex& a, const Pose& pa, const Sphere& b, const Pose& pb, Candidates& out) {
+requires(std::same_as<Convex, Box> || std::same_as<Convex, Cylinder> || std::same_as<Convex, Capsule> ||
+         std::same_as<Convex, Ellipsoid> || std::same_as<Convex, ConvexHull>) void pair(const Convex& a, const Pose& pa,
+                                                                                        const Sphere& b, const Pose& pb,
+                                                                                        Candidates& out) {
   const auto c = a.closest(pa.to_body(pb.position()));
   const Vec3 normal = pa.direction_to_world(c.normal);
   out.add(pa.to_world(c.point), normal, c.distance - b.radius(), 0);
@@ -51,7 +52,6 @@ void pair(const HalfSpace& a, const Pose& pa, const TriangleMesh& b, const Pose&
 void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Candidates& out);
 
 // A mesh against any bounded shape (another mesh included), through distance maps.
-void mesh_pair(const TriangleMesh& a, const Pose& pa, const Shape& b, const Pose& pb, MeshMaps& maps,
-               Candidates& out);
+void mesh_pair(const TriangleMesh& a, const Pose& pa, const Shape& b, const Pose& pb, MeshMaps& maps, Candidates& out);
 
 }  // namespace cosim::narrowphase::detail

@@ -17,7 +17,8 @@ namespace {
 // so each acts constant over its window: the newest one the scheme has, the end value.
 // Empty forces: nobody sends any in this run, so the bodies feel only their own effects.
 // The world's bodies after the scene's (the walls) get none.
-std::vector<dynamics::WindowWrench> wrenches(const participant::Inputs& in, std::size_t bodies, std::size_t world_size) {
+std::vector<dynamics::WindowWrench> wrenches(const participant::Inputs& in, std::size_t bodies,
+                                             std::size_t world_size) {
   const auto& mean = in.forces_end.empty() ? in.forces_start : in.forces_end;
   if (mean.empty()) return {};
   if (mean.size() != bodies)
@@ -59,8 +60,9 @@ participant::Outputs RigidSolver::advance(const participant::Window& w, const pa
   if (!in.responses.empty()) {
     // The forces are the coupler's Robin wrenches; the bodies carry the responses.
     if (virtual_mass_.active() && !warned_virtual_mass_) {
-      spdlog::warn("participants.rigidbody.options.virtual_mass is ignored: the fluid sends its response tensors, "
-                   "and the bodies move with those");
+      spdlog::warn(
+          "participants.rigidbody.options.virtual_mass is ignored: the fluid sends its response tensors, "
+          "and the bodies move with those");
       warned_virtual_mass_ = true;
     }
     if (in.responses.size() != scene_.bodies.size())

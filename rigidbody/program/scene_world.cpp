@@ -19,7 +19,8 @@ using Eigen::Vector3d;
 const scene::Participant& section(const scene::Scene& scene) {
   const auto* p = scene.participant("rigidbody");
   if (p == nullptr)
-    throw scene::SceneError(scene.file.string(), 0, "participants.rigidbody", "", "missing: cosim-rigidbody reads its dt and options there");
+    throw scene::SceneError(scene.file.string(), 0, "participants.rigidbody", "",
+                            "missing: cosim-rigidbody reads its dt and options there");
   return *p;
 }
 
@@ -80,7 +81,8 @@ constexpr double kResolvedFilmCellsIbm = 0.4, kResolvedFilmCellsStaircase = 1.0;
 solver::LubricationOptions lubrication_of_the_fluid(const scene::Scene& scene, const scene::Reader& options) {
   const scene::Participant* fluid = scene.participant("fluid");
   if (fluid == nullptr)
-    options.fail("lubrication", "auto takes the viscosity and the cell size from participants.fluid, which this scene lacks");
+    options.fail("lubrication",
+                 "auto takes the viscosity and the cell size from participants.fluid, which this scene lacks");
   const scene::Reader fluid_options = scene::options_of(scene, *fluid);
   const scene::Reader viscosity = fluid_options.map("viscosity");
   if (viscosity.string("model") != "newtonian")
@@ -117,7 +119,8 @@ solver::LubricationOptions lubrication(const scene::Scene& scene, const scene::R
   }
   // The film acts on the pairs the contact pipeline finds; without it there are none.
   if (!contact) {
-    spdlog::warn("{}: no contact effect in effects, so the lubrication force is not applied", options.where("lubrication"));
+    spdlog::warn("{}: no contact effect in effects, so the lubrication force is not applied",
+                 options.where("lubrication"));
     return {};
   }
   return l;
@@ -131,12 +134,14 @@ void soft_step_options(const scene::Reader& options, world::Settings& s) {
   s.soft.hertz = options.number("contact_hertz", s.soft.hertz, scene::Range::above(0));
   if (const double runs = s.soft.spring_hertz(s.dt / s.soft.substeps);
       s.solver == world::SolverKind::soft && options.has("contact_hertz") && runs < s.soft.hertz)
-    spdlog::warn("{}: {} Hz is stiffer than {} substeps of dt = {} s resolve; the springs run at {} Hz (a quarter of "
-                 "the substep rate)",
-                 options.where("contact_hertz"), s.soft.hertz, s.soft.substeps, s.dt, runs);
+    spdlog::warn(
+        "{}: {} Hz is stiffer than {} substeps of dt = {} s resolve; the springs run at {} Hz (a quarter of "
+        "the substep rate)",
+        options.where("contact_hertz"), s.soft.hertz, s.soft.substeps, s.dt, runs);
   if (s.solver == world::SolverKind::soft) return;
   for (const char* key : {"substeps", "relax_iterations", "contact_hertz"})
-    if (options.has(key)) spdlog::warn("{}: only the soft step uses it, so it is ignored with this solver", options.where(key));
+    if (options.has(key))
+      spdlog::warn("{}: only the soft step uses it, so it is ignored with this solver", options.where(key));
 }
 
 }  // namespace
@@ -201,13 +206,16 @@ world::BodyDesc body_of(const scene::Body& b, bool friction, bool convex_hull) {
   return d;
 }
 
-std::unique_ptr<world::World> make_world(const scene::Scene& scene) { return make_world(scene, program_options(scene)); }
+std::unique_ptr<world::World> make_world(const scene::Scene& scene) {
+  return make_world(scene, program_options(scene));
+}
 
 std::unique_ptr<world::World> make_world(const scene::Scene& scene, const ProgramOptions& options) {
   auto w = std::make_unique<world::World>(options.settings);
   const bool friction = scene.has_effect(scene::Effect::Friction);
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    const bool hull = std::find(options.convex_hulls.begin(), options.convex_hulls.end(), i) != options.convex_hulls.end();
+    const bool hull =
+        std::find(options.convex_hulls.begin(), options.convex_hulls.end(), i) != options.convex_hulls.end();
     w->add(body_of(scene.bodies[i], friction, hull));
   }
   for (const world::BodyDesc& wall : options.walls) w->add(wall);

@@ -48,8 +48,7 @@ void ContactBlock::factorize(const std::vector<int>& active) {
   const auto k = static_cast<Eigen::Index>(active.size());
   Eigen::MatrixXd m(k, k);
   for (Eigen::Index i = 0; i < k; ++i)
-    for (Eigen::Index j = 0; j < k; ++j)
-      m(i, j) = w_(active[i], active[j]) + (i == j ? compliance_[active[i]] : 0.0);
+    for (Eigen::Index j = 0; j < k; ++j) m(i, j) = w_(active[i], active[j]) + (i == j ? compliance_[active[i]] : 0.0);
   ldlt_.compute(m);
   factorized_ = active;
 }
@@ -84,7 +83,8 @@ void ContactBlock::solve(std::span<const double> u, std::span<const double> targ
     Eigen::Index blocking = -1;
     double step = 1.0;
     for (const int i : free)
-      if (bounded(i) && z[i] <= 0.0 && x[i] - z[i] > 0.0 && x[i] / (x[i] - z[i]) < step) step = x[blocking = i] / (x[i] - z[i]);
+      if (bounded(i) && z[i] <= 0.0 && x[i] - z[i] > 0.0 && x[i] / (x[i] - z[i]) < step)
+        step = x[blocking = i] / (x[i] - z[i]);
     x += step * (z - x);
     if (blocking >= 0) {
       x[blocking] = 0.0;

@@ -37,7 +37,7 @@ class ContactBlock {
   Eigen::VectorXd free_solution(const std::vector<int>& free, const Eigen::VectorXd& q);
 
   int axes_ = 1;
-  Eigen::MatrixXd w_;           // W
+  Eigen::MatrixXd w_;  // W
   Eigen::VectorXd compliance_;
   std::vector<int> factorized_;  // the active set ldlt_ holds
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;

@@ -20,8 +20,7 @@ Eigen::Matrix3d point_response(const Mobility& m, const Eigen::Vector3d& r) {
 }
 
 Eigen::Vector3d any_tangent(const Eigen::Vector3d& n) {
-  const Eigen::Vector3d helper =
-      std::abs(n.x()) < 0.57735 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d helper = std::abs(n.x()) < 0.57735 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
   return n.cross(helper).normalized();
 }
 

@@ -19,9 +19,8 @@ struct DisjointSets {
 
 }  // namespace
 
-std::vector<std::vector<std::uint32_t>> contact_groups(
-    std::span<const dynamics::BodyInertia> inertias,
-    std::span<const contact::PairContacts> pairs) {
+std::vector<std::vector<std::uint32_t>> contact_groups(std::span<const dynamics::BodyInertia> inertias,
+                                                       std::span<const contact::PairContacts> pairs) {
   DisjointSets sets(inertias.size());
   for (const auto& m : pairs)
     if (!inertias[m.a].is_fixed() && !inertias[m.b].is_fixed()) sets.join(m.a, m.b);

@@ -50,9 +50,7 @@ void ContactMemory::save(std::vector<double>& out) const {
 }
 
 void ContactMemory::load(std::span<const double> in) {
-  const auto fail = [](const std::string& problem) {
-    throw std::invalid_argument("saved contact memory: " + problem);
-  };
+  const auto fail = [](const std::string& problem) { throw std::invalid_argument("saved contact memory: " + problem); };
   const auto index = [&](double v) {
     if (!(v >= 0.0 && v <= 4294967295.0 && v == std::floor(v))) fail("bad count or index " + std::to_string(v));
     return static_cast<std::uint32_t>(v);
@@ -61,8 +59,8 @@ void ContactMemory::load(std::span<const double> in) {
   const std::size_t pairs = index(in[0]);
   const std::size_t points = index(in[1]);
   if (in.size() != 2 + 3 * pairs + 5 * points)
-    fail(std::to_string(in.size()) + " values for " + std::to_string(pairs) + " pairs and " +
-         std::to_string(points) + " points");
+    fail(std::to_string(in.size()) + " values for " + std::to_string(pairs) + " pairs and " + std::to_string(points) +
+         " points");
   std::vector<contact::PairContacts> loaded_pairs;
   std::uint32_t first = 0;
   for (std::size_t i = 0; i < pairs; ++i) {

@@ -79,8 +79,7 @@ DemReport solve_dem(const ContactScene& scene, std::span<CachedContact> memory, 
   }
   // Forces from the velocities at the start of the step, applied together: the result
   // does not depend on the order of the contacts.
-  for (std::size_t i = 0; i < frames.size(); ++i)
-    frames[i].apply(dt * forces[i], scene.states, scene.mobility);
+  for (std::size_t i = 0; i < frames.size(); ++i) frames[i].apply(dt * forces[i], scene.states, scene.mobility);
 
   if (dt > report.stable_dt && options.log)
     *options.log << "cosim DEM: dt = " << dt << " s exceeds the stable estimate " << report.stable_dt

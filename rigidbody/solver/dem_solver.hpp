@@ -17,7 +17,7 @@ enum class NormalLaw {
 
 struct DemOptions {
   NormalLaw law = NormalLaw::linear;
-  double normal_stiffness = 1e5;           // k_n: [N/m] linear, [N/m^1.5] Hertz
+  double normal_stiffness = 1e5;                  // k_n: [N/m] linear, [N/m^1.5] Hertz
   double tangential_stiffness_ratio = 2.0 / 7.0;  // k_t / k_n (ratio for a solid sphere)
   // The step must be below (2 / omega) / safety, omega = sqrt(k / m_eff): 2/omega is the
   // undamped stability limit of symplectic Euler, the safety factor resolves the contact.

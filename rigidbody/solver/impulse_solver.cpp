@@ -98,9 +98,7 @@ class GroupSolver {
         rows_.push_back(r);
       }
     }
-    const auto load = [&](std::uint32_t body) {
-      return scene_.inertias[body].is_fixed() ? 1 : points_on_[body];
-    };
+    const auto load = [&](std::uint32_t body) { return scene_.inertias[body].is_fixed() ? 1 : points_on_[body]; };
     for (Row& r : rows_) r.share = options_.relaxation / std::max(load(r.frame.a), load(r.frame.b));
   }
 
@@ -166,8 +164,7 @@ class GroupSolver {
 
 }  // namespace
 
-SolveReport solve_impulses(const ContactScene& scene, std::span<CachedContact> memory,
-                           const ImpulseOptions& options) {
+SolveReport solve_impulses(const ContactScene& scene, std::span<CachedContact> memory, const ImpulseOptions& options) {
   std::vector<int> points_on(scene.states.size(), 0);
   for (const auto& m : scene.contacts.pairs) {
     points_on[m.a] += static_cast<int>(m.count);

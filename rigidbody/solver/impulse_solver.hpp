@@ -46,12 +46,11 @@ struct ImpulseOptions {
 
   static ImpulseOptions projected_gauss_seidel();  // cold start: the textbook LCP solve
   static ImpulseOptions projected_jacobi();
-  static ImpulseOptions sequential_impulses();     // warm started Gauss-Seidel
+  static ImpulseOptions sequential_impulses();  // warm started Gauss-Seidel
 };
 
 // Solves each contact group separately. `memory` has one entry per contact point: last
 // step's impulses on entry (used when warm starting), this step's on return.
-SolveReport solve_impulses(const ContactScene& scene, std::span<CachedContact> memory,
-                           const ImpulseOptions& options);
+SolveReport solve_impulses(const ContactScene& scene, std::span<CachedContact> memory, const ImpulseOptions& options);
 
 }  // namespace cosim::solver

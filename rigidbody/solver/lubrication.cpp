@@ -12,8 +12,8 @@ void apply_lubrication(const ContactScene& scene, std::span<const double> radii,
   if (!options.active()) return;
   for (const contact::PairContacts& pair : scene.contacts.pairs) {
     const std::span<const contact::ContactPoint> points = scene.contacts.points_of(pair);
-    const contact::ContactPoint& p =
-        *std::min_element(points.begin(), points.end(), [](const auto& x, const auto& y) { return x.distance < y.distance; });
+    const contact::ContactPoint& p = *std::min_element(
+        points.begin(), points.end(), [](const auto& x, const auto& y) { return x.distance < y.distance; });
     if (p.distance >= options.range) continue;
     // A plane's curvature is zero: R is then the other body's radius.
     const double curvature = 1.0 / radii[pair.a] + 1.0 / radii[pair.b];

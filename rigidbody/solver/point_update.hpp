@@ -16,7 +16,7 @@ enum class FrictionModel {
 };
 
 struct PointLaw {
-  Eigen::Matrix3d response;  // Delassus block W (local velocity per local impulse)
+  Eigen::Matrix3d response;             // Delassus block W (local velocity per local impulse)
   double target_normal_velocity = 0.0;  // bias / restitution: want u_n >= this
   double friction = 0.0;
   FrictionModel model = FrictionModel::pyramid;

@@ -52,8 +52,7 @@ void SoftStep::build_rows(const ContactScene& scene, std::span<const CachedConta
         rows_.push_back(r);
       }
     }
-    for (const Row& r : std::span(rows_).subspan(g.first))
-      counted[r.frame.a] = counted[r.frame.b] = 0;
+    for (const Row& r : std::span(rows_).subspan(g.first)) counted[r.frame.a] = counted[r.frame.b] = 0;
     g.count = rows_.size() - g.first;
     // A direct solve takes any stiffness, so its springs are as stiff as the whole group is
     // heavy. Gauss-Seidel converges in a few sweeps only if each point's compliance is of
@@ -61,8 +60,7 @@ void SoftStep::build_rows(const ContactScene& scene, std::span<const CachedConta
     g.per_point = g.count > options_.block_points;
     const bool mass_ratio = heaviest > options_.full_block_mass_ratio * lightest;
     g.axes = g.per_point ? 0 : g.count <= options_.full_block_points && mass_ratio ? 3 : 1;
-    g.soft = make_softness(options_.spring_hertz(scene.dt), options_.damping_ratio, g.per_point ? 1.0 : mass,
-                           scene.dt);
+    g.soft = make_softness(options_.spring_hertz(scene.dt), options_.damping_ratio, g.per_point ? 1.0 : mass, scene.dt);
     groups_.push_back(std::move(g));
   }
 }

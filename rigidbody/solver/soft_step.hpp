@@ -41,8 +41,8 @@ struct SoftOptions {
   // (bench/rigidbody_granular/README.md, "The soft step's settings").
   int substeps = 2;
   // Groups with at most block_points points solve their normal impulses at once (cost ~n^3
-  // per factorization: one per pass and active set, kept over a dt's substeps). Friction passes a load through a light body as slowly as Gauss-Seidel
-  // normals do, so groups with at most full_block_points points whose heaviest body is
+  // per factorization: one per pass and active set, kept over a dt's substeps). Friction passes a load through a light
+  // body as slowly as Gauss-Seidel normals do, so groups with at most full_block_points points whose heaviest body is
   // more than full_block_mass_ratio times the lightest solve friction at once too (~(3n)^3).
   std::size_t block_points = 128;
   std::size_t full_block_points = 32;

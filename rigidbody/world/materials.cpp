@@ -6,8 +6,7 @@
 namespace cosim::world {
 
 solver::Material combine(const BodyMaterial& a, const BodyMaterial& b) {
-  return {.friction = std::sqrt(a.friction * b.friction),
-          .restitution = std::max(a.restitution, b.restitution)};
+  return {.friction = std::sqrt(a.friction * b.friction), .restitution = std::max(a.restitution, b.restitution)};
 }
 
 }  // namespace cosim::world

@@ -17,12 +17,12 @@ struct StepReport {
   // Sweeps: worst substep's worst contact group; the soft step's fixed sweeps per substep
   // (solve and relax), so it did substeps x solver_iterations in all.
   int solver_iterations = 0;
-  double residual = 0.0;               // worst substep's worst contact group
-  bool converged = true;               // every substep and group met the tolerance
-  std::size_t tunnelling_bodies = 0;   // bodies at risk at the window's start (tunnelling.hpp)
-  std::vector<std::string> warnings;   // for the caller to pass on: the world logs nothing
+  double residual = 0.0;              // worst substep's worst contact group
+  bool converged = true;              // every substep and group met the tolerance
+  std::size_t tunnelling_bodies = 0;  // bodies at risk at the window's start (tunnelling.hpp)
+  std::vector<std::string> warnings;  // for the caller to pass on: the world logs nothing
   double wall_seconds = 0.0;
-  StageSeconds seconds;                // per stage, summed over the substeps
+  StageSeconds seconds;  // per stage, summed over the substeps
 };
 
 }  // namespace cosim::world

@@ -19,8 +19,8 @@ enum class SolverKind {
 
 struct Settings {
   SolverKind solver = SolverKind::soft;
-  int iterations = 0;        // impulse solvers' max iterations, the soft step's biased sweeps per substep; 0: the default
-  double tolerance = 1e-6;   // impulse solvers' stopping test, relative; the soft step's report only (solver/README.md)
+  int iterations = 0;  // impulse solvers' max iterations, the soft step's biased sweeps per substep; 0: the default
+  double tolerance = 1e-6;  // impulse solvers' stopping test, relative; the soft step's report only (solver/README.md)
   // Simultaneous (Catto) or sequential (Newton's cradle passes momentum through).
   solver::Restitution restitution = solver::Restitution::simultaneous;
   solver::DemOptions dem{};

@@ -12,8 +12,7 @@ namespace cosim::world {
 
 namespace {
 
-broadphase::Object object_of(std::uint32_t id, const geometry::Shape& shape, const dynamics::BodyState& s,
-                             bool fixed) {
+broadphase::Object object_of(std::uint32_t id, const geometry::Shape& shape, const dynamics::BodyState& s, bool fixed) {
   broadphase::Object o{.id = id, .centre = s.position, .fixed = fixed};
   if (const auto* wall = std::get_if<geometry::HalfSpace>(&shape)) {
     // geometry's {n . x <= 0} in the body frame is {R n . x <= R n . p} in the world.
@@ -43,7 +42,8 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
   if (!added.empty()) {
     if (added.size() != size()) throw std::invalid_argument("advance: added inertia must be one per body or none");
     moving_.resize(size());
-    for (std::size_t i = 0; i < size(); ++i) moving_[i] = dynamics::with_added(inertias_[i], added[i], states_[i].orientation);
+    for (std::size_t i = 0; i < size(); ++i)
+      moving_[i] = dynamics::with_added(inertias_[i], added[i], states_[i].orientation);
     stepping_ = moving_;
   }
   // "Only what the scene needs": without contacts (or with nothing to collide with) no
@@ -112,14 +112,18 @@ void World::narrow_phase(StepReport& report) {
   report.contacts = contacts.points.size();
 
   pair_materials_.clear();
-  for (const contact::PairContacts& p : contacts.pairs) pair_materials_.push_back(combine(materials_[p.a], materials_[p.b]));
+  for (const contact::PairContacts& p : contacts.pairs)
+    pair_materials_.push_back(combine(materials_[p.a], materials_[p.b]));
 }
 
 solver::SolveReport World::solve(const solver::ContactScene& scene, std::span<solver::CachedContact> memory) {
   switch (settings_.solver) {
-    case SolverKind::soft: return soft_.solve(scene, memory);
-    case SolverKind::dem: return solver::solve_dem(scene, memory, settings_.dem);
-    default: return solver::solve_impulses(scene, memory, settings_.impulse_options());
+    case SolverKind::soft:
+      return soft_.solve(scene, memory);
+    case SolverKind::dem:
+      return solver::solve_dem(scene, memory, settings_.dem);
+    default:
+      return solver::solve_impulses(scene, memory, settings_.impulse_options());
   }
 }
 

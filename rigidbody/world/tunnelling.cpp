@@ -29,8 +29,8 @@ double thinnest_extent(const geometry::Shape& shape) {
 
 std::vector<TunnellingRisk> tunnelling_risks(std::span<const double> thinnest,
                                              std::span<const dynamics::BodyState> states,
-                                             std::span<const dynamics::BodyInertia> inertias, double dt,
-                                             double margin, double speed_gain) {
+                                             std::span<const dynamics::BodyInertia> inertias, double dt, double margin,
+                                             double speed_gain) {
   std::vector<TunnellingRisk> risks;
   for (std::uint32_t i = 0; i < thinnest.size(); ++i) {
     if (inertias[i].is_fixed()) continue;
@@ -46,15 +46,17 @@ std::string describe(const TunnellingRisk& risk, const std::string& name, double
   const double half = 0.5 * risk.thinnest;
   std::string limits;
   if (risk.travel > risk.margin) limits = fmt::format("the contact margin {:.3g} m", risk.margin);
-  if (risk.travel > half) limits += fmt::format("{}half its thinnest extent {:.3g} m", limits.empty() ? "" : " and ", half);
+  if (risk.travel > half)
+    limits += fmt::format("{}half its thinnest extent {:.3g} m", limits.empty() ? "" : " and ", half);
   // Travel is proportional to dt, so the dt that keeps it within both limits follows.
   const double factor = excess(risk);
   std::string fix = fmt::format("lower the rigidbody dt by a factor {:.3g}, to {:.3g} s", factor, dt / factor);
   if (risk.travel <= half)
     fix += fmt::format(" or raise participants.rigidbody.options.contact_margin above {:.3g} m", risk.travel);
-  return fmt::format("body {}{} may move {:.3g} m per substep (dt = {:.3g} s), more than {}: it can pass "
-                     "through thin bodies or planes; {}",
-                     risk.body, name.empty() ? "" : " (" + name + ")", risk.travel, dt, limits, fix);
+  return fmt::format(
+      "body {}{} may move {:.3g} m per substep (dt = {:.3g} s), more than {}: it can pass "
+      "through thin bodies or planes; {}",
+      risk.body, name.empty() ? "" : " (" + name + ")", risk.travel, dt, limits, fix);
 }
 
 std::string summarise(std::span<const TunnellingRisk> risks, std::span<const std::string> names, double dt) {
@@ -63,9 +65,10 @@ std::string summarise(std::span<const TunnellingRisk> risks, std::span<const std
   });
   const std::string message = describe(*worst, names[worst->body], dt);
   if (risks.size() == 1) return message;
-  return fmt::format("{} bodies may move farther per substep than the contact margin or half their thinnest extent; "
-                     "the worst: {}",
-                     risks.size(), message);
+  return fmt::format(
+      "{} bodies may move farther per substep than the contact margin or half their thinnest extent; "
+      "the worst: {}",
+      risks.size(), message);
 }
 
 void TunnellingWarnings::add(std::string name, const geometry::Shape& shape) {

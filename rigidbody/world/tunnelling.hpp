@@ -27,13 +27,13 @@ struct TunnellingRisk {
 double thinnest_extent(const geometry::Shape& shape);
 
 // Bodies (not fixed) whose travel in one substep of `dt` exceeds the margin or half their
-// thinnest extent (one per body, see thinnest_extent), in body order. `speed_gain` bounds how much faster a body may get during
-// the coming window (|g| times the window under gravity): a falling body is caught before
-// it reaches the speed, not one window later.
+// thinnest extent (one per body, see thinnest_extent), in body order. `speed_gain` bounds how much faster a body may
+// get during the coming window (|g| times the window under gravity): a falling body is caught before it reaches the
+// speed, not one window later.
 std::vector<TunnellingRisk> tunnelling_risks(std::span<const double> thinnest,
                                              std::span<const dynamics::BodyState> states,
-                                             std::span<const dynamics::BodyInertia> inertias, double dt,
-                                             double margin, double speed_gain);
+                                             std::span<const dynamics::BodyInertia> inertias, double dt, double margin,
+                                             double speed_gain);
 
 // How many times the body's travel exceeds the smaller of its two limits (the margin and
 // half its thinnest extent): the factor by which dt must shrink.

@@ -76,7 +76,8 @@ void World::reserve(std::size_t bodies) {
 // Pairs within the lubrication range must reach the narrow phase whatever the margin.
 double World::margin() const {
   const double film = settings_.lubrication.active() ? settings_.lubrication.range : 0.0;
-  if (settings_.contact_margin > 0.0 || !std::isfinite(smallest_radius_)) return std::max(settings_.contact_margin, film);
+  if (settings_.contact_margin > 0.0 || !std::isfinite(smallest_radius_))
+    return std::max(settings_.contact_margin, film);
   return std::max(0.1 * smallest_radius_, film);
 }
 

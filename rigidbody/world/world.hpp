@@ -26,9 +26,9 @@ struct BodyDesc {
   dynamics::BodyState state{};
   double density = 1000.0;  // [kg/m^3]; mass and inertia follow from the shape
   BodyMaterial material{};
-  bool fixed = false;    // never moves (half-spaces must be fixed)
-  bool rotates = true;   // false: translation only
-  std::string name{};    // for warnings only
+  bool fixed = false;   // never moves (half-spaces must be fixed)
+  bool rotates = true;  // false: translation only
+  std::string name{};   // for warnings only
 };
 
 class World {

@@ -24,20 +24,16 @@ void expect_same(const Window& a, const Window& b) {
 
 TEST(MakeAccelerator, MapsEveryKind) {
   const double w = 0.3;
-  expect_same(three_updates(*make_accelerator(Acceleration::None, w)),
-              three_updates(*make_fixed_point()));
-  expect_same(three_updates(*make_accelerator(Acceleration::Constant, w)),
-              three_updates(*make_constant(w)));
-  expect_same(three_updates(*make_accelerator(Acceleration::Aitken, w)),
-              three_updates(*make_aitken(w)));
-  expect_same(three_updates(*make_accelerator(Acceleration::IqnIls, w)),
-              three_updates(*make_iqn_ils(w)));
+  expect_same(three_updates(*make_accelerator(Acceleration::None, w)), three_updates(*make_fixed_point()));
+  expect_same(three_updates(*make_accelerator(Acceleration::Constant, w)), three_updates(*make_constant(w)));
+  expect_same(three_updates(*make_accelerator(Acceleration::Aitken, w)), three_updates(*make_aitken(w)));
+  expect_same(three_updates(*make_accelerator(Acceleration::IqnIls, w)), three_updates(*make_iqn_ils(w)));
 }
 
 TEST(MakeAccelerator, KindsAreDistinguishable) {
   const double w = 0.3;
   const Window windows[] = {three_updates(*make_fixed_point()), three_updates(*make_constant(w)),
-                      three_updates(*make_aitken(w)), three_updates(*make_iqn_ils(w))};
+                            three_updates(*make_aitken(w)), three_updates(*make_iqn_ils(w))};
   for (std::size_t i = 0; i < 4; ++i) {
     for (std::size_t j = i + 1; j < 4; ++j) {
       EXPECT_FALSE(windows[i].x().isApprox(windows[j].x(), 1e-12)) << i << " vs " << j;

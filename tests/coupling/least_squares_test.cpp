@@ -25,8 +25,7 @@ TEST(FilteredLeastSquares, DropsAMultipleOfAnEarlierColumn) {
 }
 
 TEST(FilteredLeastSquares, ZeroColumnsGiveRankZero) {
-  const LeastSquares fit =
-      filtered_least_squares(Eigen::MatrixXd::Zero(4, 2), random_vector(4, 3), eps);
+  const LeastSquares fit = filtered_least_squares(Eigen::MatrixXd::Zero(4, 2), random_vector(4, 3), eps);
   EXPECT_EQ(fit.rank, 0);
   EXPECT_TRUE(fit.alpha.isZero(0.0));
 }

@@ -9,9 +9,7 @@ namespace {
 
 constexpr double solution_tolerance = 1e-10;
 
-double error(const Window& window, const Problem& problem) {
-  return (window.x() - problem.solution).norm();
-}
+double error(const Window& window, const Problem& problem) { return (window.x() - problem.solution).norm(); }
 
 TEST(Linear, ContractiveAllConvergeAndAcceleratedNeedFewer) {
   const Eigen::Index n = 8;
@@ -23,8 +21,7 @@ TEST(Linear, ContractiveAllConvergeAndAcceleratedNeedFewer) {
   const Window aitken = iterate(*make_aitken(w), problem, x0, 200);
   const Window iqn = iterate(*make_iqn_ils(w), problem, x0, 200);
   report("linear contractive n=8, rho=0.5, w=0.5",
-         {{"fixed_point", fixed}, {"constant", constant},
-          {"aitken", aitken}, {"iqn_ils", iqn}});
+         {{"fixed_point", fixed}, {"constant", constant}, {"aitken", aitken}, {"iqn_ils", iqn}});
 
   for (const Window* window : {&fixed, &constant, &aitken, &iqn}) {
     EXPECT_TRUE(window->converged);
@@ -51,8 +48,7 @@ TEST_P(NonContractive, OnlyRelaxedAndAcceleratedConverge) {
   const Window aitken = iterate(*make_aitken(w), problem, x0, 1000);
   const Window iqn = iterate(*make_iqn_ils(w), problem, x0, 1000);
   report("linear rho=3 n=" + std::to_string(n) + ", w=0.1",
-         {{"fixed_point", fixed}, {"constant", constant},
-          {"aitken", aitken}, {"iqn_ils", iqn}});
+         {{"fixed_point", fixed}, {"constant", constant}, {"aitken", aitken}, {"iqn_ils", iqn}});
 
   // x_0 = 0, so |x*| is the error it started from.
   EXPECT_FALSE(fixed.converged);

@@ -17,8 +17,7 @@ TEST(Nonlinear, TanhConvergesWithAitkenAndIqnIls) {
   const Window aitken = iterate(*make_aitken(w), problem, x0, 200);
   const Window iqn = iterate(*make_iqn_ils(w), problem, x0, 200);
   report("tanh n=6, c=3, w=0.1",
-         {{"fixed_point", fixed}, {"constant", constant},
-          {"aitken", aitken}, {"iqn_ils", iqn}});
+         {{"fixed_point", fixed}, {"constant", constant}, {"aitken", aitken}, {"iqn_ils", iqn}});
 
   EXPECT_FALSE(fixed.converged);
   for (const Window* window : {&aitken, &iqn}) {

@@ -26,8 +26,7 @@ Problem linear(const Eigen::VectorXd& eigenvalues, unsigned seed) {
   const Eigen::MatrixXd a = q * eigenvalues.asDiagonal() * q.transpose();
   const Eigen::VectorXd b = random_vector(n, seed);
   const Eigen::MatrixXd i = Eigen::MatrixXd::Identity(n, n);
-  return {[a, b](const Eigen::VectorXd& x) -> Eigen::VectorXd { return a * x + b; },
-          (i - a).partialPivLu().solve(b)};
+  return {[a, b](const Eigen::VectorXd& x) -> Eigen::VectorXd { return a * x + b; }, (i - a).partialPivLu().solve(b)};
 }
 
 Problem tanh_problem(const Eigen::VectorXd& b, double c) {
@@ -37,14 +36,10 @@ Problem tanh_problem(const Eigen::VectorXd& b, double c) {
     const Eigen::ArrayXd t = solution.array().tanh();
     solution.array() -= (solution.array() + c * t - b.array()) / (1.0 + c * (1.0 - t * t));
   }
-  return {[b, c](const Eigen::VectorXd& x) -> Eigen::VectorXd {
-            return b.array() - c * x.array().tanh();
-          },
-          solution};
+  return {[b, c](const Eigen::VectorXd& x) -> Eigen::VectorXd { return b.array() - c * x.array().tanh(); }, solution};
 }
 
-Window iterate(Accelerator& accelerator, const Problem& problem, const Eigen::VectorXd& x0,
-              int max_updates) {
+Window iterate(Accelerator& accelerator, const Problem& problem, const Eigen::VectorXd& x0, int max_updates) {
   accelerator.new_window();
   Window window;
   window.iterates.push_back(x0);
@@ -58,8 +53,7 @@ Window iterate(Accelerator& accelerator, const Problem& problem, const Eigen::Ve
   }
 }
 
-void report(const std::string& problem,
-            const std::vector<std::pair<std::string, Window>>& windows) {
+void report(const std::string& problem, const std::vector<std::pair<std::string, Window>>& windows) {
   std::cout << "[iterations] " << std::left << std::setw(40) << problem;
   for (const auto& [method, window] : windows) {
     const std::string updates = window.converged ? std::to_string(window.updates) : "unconverged";

@@ -32,7 +32,7 @@ Eigen::VectorXd random_vector(Eigen::Index n, unsigned seed);
 constexpr double residual_tolerance = 1e-11;
 
 struct Window {
-  int updates = 0;                        // calls to next() before x passed the test
+  int updates = 0;  // calls to next() before x passed the test
   bool converged = false;
   std::vector<Eigen::VectorXd> iterates;  // x_0, x_1, ... as evaluated
   const Eigen::VectorXd& x() const { return iterates.back(); }
@@ -40,12 +40,10 @@ struct Window {
 
 // One coupling window: starts with new_window(), then evaluates and accelerates until the
 // residual passes or max_updates is reached.
-Window iterate(Accelerator& accelerator, const Problem& problem, const Eigen::VectorXd& x0,
-              int max_updates);
+Window iterate(Accelerator& accelerator, const Problem& problem, const Eigen::VectorXd& x0, int max_updates);
 
 // Prints the updates each method needed in one comparison ("unconverged" if it never
 // passed) and records them in the test's XML output.
-void report(const std::string& problem,
-            const std::vector<std::pair<std::string, Window>>& windows);
+void report(const std::string& problem, const std::vector<std::pair<std::string, Window>>& windows);
 
 }  // namespace cosim::coupling::test

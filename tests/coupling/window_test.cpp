@@ -32,18 +32,20 @@ TEST_P(NewWindow, SecondWindowMatchesAFreshAccelerator) {
 // Named here rather than through scene::to_string, which lives in cosim_scene.
 std::string name(const ::testing::TestParamInfo<Acceleration>& info) {
   switch (info.param) {
-    case Acceleration::None: return "None";
-    case Acceleration::Constant: return "Constant";
-    case Acceleration::Aitken: return "Aitken";
-    case Acceleration::IqnIls: return "IqnIls";
+    case Acceleration::None:
+      return "None";
+    case Acceleration::Constant:
+      return "Constant";
+    case Acceleration::Aitken:
+      return "Aitken";
+    case Acceleration::IqnIls:
+      return "IqnIls";
   }
   return "Unknown";
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, NewWindow,
-                         ::testing::Values(Acceleration::None,
-                                           Acceleration::Constant,
-                                           Acceleration::Aitken,
+                         ::testing::Values(Acceleration::None, Acceleration::Constant, Acceleration::Aitken,
                                            Acceleration::IqnIls),
                          name);
 

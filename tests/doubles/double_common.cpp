@@ -16,8 +16,7 @@ const scene::Participant& section(const scene::Scene& scene, const std::string& 
   return *p;
 }
 
-int serve(const char* program, participant::Solver& solver, scene::Data provides,
-          scene::Data needs) {
+int serve(const char* program, participant::Solver& solver, scene::Data provides, scene::Data needs) {
   auto client = protocol::Client::from_environment();
   if (!client) {
     std::cerr << program << " is a test participant: start it through cosim run\n";
@@ -27,8 +26,7 @@ int serve(const char* program, participant::Solver& solver, scene::Data provides
                                       static_cast<std::uint32_t>(needs));
 }
 
-Common Common::read(const scene::Scene&, const scene::Participant& p,
-                    const scene::Reader& options) {
+Common Common::read(const scene::Scene&, const scene::Participant& p, const scene::Reader& options) {
   Common c;
   const auto integrator = options.string("integrator", "verlet");
   if (integrator == "euler")

@@ -21,8 +21,7 @@ struct Common {
   std::string kill_marker;  // if set: die only while this file does not exist, then create it
 
   // Reads the keys every double shares from its options.
-  static Common read(const scene::Scene& scene, const scene::Participant& p,
-                     const scene::Reader& options);
+  static Common read(const scene::Scene& scene, const scene::Participant& p, const scene::Reader& options);
   // Called at the start of every window.
   void on_window(const participant::Window& w) const;
 };
@@ -30,8 +29,7 @@ struct Common {
 const scene::Participant& section(const scene::Scene& scene, const std::string& name);
 
 // main() of a double: connect to the coupler that started it and serve until Stop.
-int serve(const char* program, participant::Solver& solver, scene::Data provides,
-          scene::Data needs);
+int serve(const char* program, participant::Solver& solver, scene::Data provides, scene::Data needs);
 
 // One step of the chosen integrator for x'' = a(x, s), from s to s + h.
 template <class Accel>

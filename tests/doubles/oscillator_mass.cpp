@@ -28,8 +28,7 @@ class MassSolver final : public participant::Solver {
     return {poses_, {}, 0};
   }
 
-  participant::Outputs advance(const participant::Window& w,
-                               const participant::Inputs& in) override {
+  participant::Outputs advance(const participant::Window& w, const participant::Inputs& in) override {
     common_.on_window(w);
     const auto n = static_cast<int>(std::lround((w.t1 - w.t0) / common_.dt));
     const double h = (w.t1 - w.t0) / n;
@@ -56,7 +55,7 @@ class MassSolver final : public participant::Solver {
 
  private:
   Common common_;
-  std::vector<double> mass_;   // 0 for fixed bodies
+  std::vector<double> mass_;  // 0 for fixed bodies
   std::vector<participant::PoseRow> poses_;
 };
 

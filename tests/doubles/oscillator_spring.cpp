@@ -34,16 +34,13 @@ class SpringSolver final : public participant::Solver {
     return {{}, force_on_body(poses[body_].position.x()), 0};
   }
 
-  participant::Outputs advance(const participant::Window& w,
-                               const participant::Inputs& in) override {
+  participant::Outputs advance(const participant::Window& w, const participant::Inputs& in) override {
     common_.on_window(w);
     const auto n = static_cast<int>(std::lround((w.t1 - w.t0) / common_.dt));
     const double h = (w.t1 - w.t0) / n;
     const double x1_start = in.poses_start[body_].position.x(), x1_end = in.poses_end[body_].position.x();
     const auto x1 = [&](double s) { return participant::lerp(x1_start, x1_end, w, s); };
-    const auto accel = [&](double x2, double s) {
-      return (-k_ * (x2 - x1(s) - rest_) - k2_ * (x2 - anchor_)) / m2_;
-    };
+    const auto accel = [&](double x2, double s) { return (-k_ * (x2 - x1(s) - rest_) - k2_ * (x2 - anchor_)) / m2_; };
     for (int i = 0; i < n; ++i) step(common_.integrator, x2_, v2_, w.t0 + i * h, h, accel);
     return {{}, force_on_body(x1_end), static_cast<double>(n)};
   }

@@ -53,7 +53,8 @@ TEST(CostModel, CoefficientsStayNonNegative) {
   EXPECT_GE(c.seconds_per_step, 0);
   for (const auto& [unit, s] : c.seconds_per_unit) EXPECT_GE(s, 0) << unit;
   // A constant alone still meets every timing within the 5 % they fall by.
-  for (const Observation& o : obs) EXPECT_NEAR(step_seconds(c, o.per_step), o.seconds / o.steps, 0.05 * o.seconds / o.steps);
+  for (const Observation& o : obs)
+    EXPECT_NEAR(step_seconds(c, o.per_step), o.seconds / o.steps, 0.05 * o.seconds / o.steps);
 }
 
 TEST(CostModel, OneSizeMeasuredScalesThePriorTowardsIt) {

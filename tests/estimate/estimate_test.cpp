@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 // 20 windows of 5 ms; the fluid takes 2 steps per window, the rigid bodies 10.
 scene::Scene settling(const std::string& scheme) {
   return scene::load_scene_from_string(R"(time: {end: 0.1}
-coupling: {window: 0.005, scheme: )" + scheme + R"(}
+coupling: {window: 0.005, scheme: )" + scheme +
+                                           R"(}
 output: {file: run.h5, fields_every: 0}
 domain: {min: [0, 0, 0], max: [0.1, 0.1, 0.16]}
 effects: [gravity, buoyancy, hydrodynamics]
@@ -30,7 +31,8 @@ participants:
   fluid:
     dt: 0.0025
     options: {density: 960, viscosity: {model: newtonian, mu: 0.058}, grid: {cells: [20, 20, 32]}}
-)", "settling.yaml");
+)",
+                                       "settling.yaml");
 }
 
 std::map<std::string, ProgramWork> work() {
@@ -40,7 +42,8 @@ std::map<std::string, ProgramWork> work() {
             .held = {{"cells", 12800}, {"markers", 100}},
             .frame_bytes = 5e5,
             .state_bytes = 1000}},
-          {"rigidbody", {.program = "rigidbody", .per_step = {{"bodies", 1}}, .held = {{"bodies", 1}}, .state_bytes = 200}}};
+          {"rigidbody",
+           {.program = "rigidbody", .per_step = {{"bodies", 1}}, .held = {{"bodies", 1}}, .state_bytes = 200}}};
 }
 
 CostStore empty_store() { return CostStore::load(fs::temp_directory_path() / "cosim-estimate-none.yaml"); }

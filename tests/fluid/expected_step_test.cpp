@@ -111,7 +111,9 @@ TEST(FluidWork, AFlowPastABodySpeedsUpByThePotentialFlowsFactor) {
   // gives 0.5 / 120 s = 4.2 ms, three steps per window.
   const auto faces = [](double w) {
     return "      boundaries:\n"
-           "        z_min: {type: inflow, velocity: [0, 0, " + std::to_string(w) + "]}\n"
+           "        z_min: {type: inflow, velocity: [0, 0, " +
+           std::to_string(w) +
+           "]}\n"
            "        z_max: {type: outflow}\n";
   };
   EXPECT_DOUBLE_EQ(expected_dt(sphere_scene("fixed: true, ", faces(0.05))), 0.01);

@@ -17,8 +17,8 @@ namespace {
 constexpr double kDensity = 2.0, kGravity = 3.0;
 
 void expect_buoyancy(const geometry::Shape& shape, const Eigen::Quaterniond& orientation, int subsamples) {
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(16, 0, 1, false), Axis::stretched(16, 0, 1, 0.6, false),
-                               Axis::uniform(16, 0, 1.2, false)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(16, 0, 1, false), Axis::stretched(16, 0, 1, 0.6, false), Axis::uniform(16, 0, 1.2, false)});
   BoundaryConditions bc(grid);
   NavierStokes flow(grid, bc, {kDensity, ViscosityModel::newtonian(0.2), {0, 0, -kGravity}},
                     {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 0.05, .theta = 1.0});

@@ -36,8 +36,8 @@ struct Coefficients {
 
 Coefficients dfg_cylinder(int cells_across) {
   const double h = kHeight / cells_across;
-  Grid grid(PETSC_COMM_WORLD, {channel_axis(h), Axis::uniform(cells_across, 0, kHeight, false),
-                               Axis::uniform(1, 0, kThickness, true)});
+  Grid grid(PETSC_COMM_WORLD,
+            {channel_axis(h), Axis::uniform(cells_across, 0, kHeight, false), Axis::uniform(1, 0, kThickness, true)});
   BoundaryConditions bc(grid);
   bc.set(0, Side::lower, Boundary::inflow([](const Point& x, double) { return Point{inflow(x[1]), 0, 0}; }));
   bc.set(0, Side::upper, Boundary::outflow());

@@ -14,8 +14,8 @@ namespace cosim::fluid {
 namespace {
 
 Grid cube(MPI_Comm comm, int n, double size) {
-  return Grid(comm, {Axis::uniform(n, 0, size, true), Axis::uniform(n, 0, size, true),
-                     Axis::uniform(n, 0, size, false)});
+  return Grid(comm,
+              {Axis::uniform(n, 0, size, true), Axis::uniform(n, 0, size, true), Axis::uniform(n, 0, size, false)});
 }
 
 // Relative volume errors on n = 16, 32, 64 cells per unit length.
@@ -103,8 +103,9 @@ TEST(FbmIndicator, SurfaceOffsetGrowsOnlyTheImposedFaces) {
   const int n = 20;
   const double h = 1.0 / n, offset = 0.4;
   const Grid grid = cube(PETSC_COMM_WORLD, n, 1.0);
-  const RigidBody box{geometry::Box({0.13, 0.2, 0.17}), geometry::Pose({0.49, 0.52, 0.47}, Eigen::Quaterniond(
-                                                                          Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 1, 0).normalized())))};
+  const RigidBody box{geometry::Box({0.13, 0.2, 0.17}),
+                      geometry::Pose({0.49, 0.52, 0.47}, Eigen::Quaterniond(Eigen::AngleAxisd(
+                                                             0.7, Eigen::Vector3d(1, 1, 0).normalized())))};
   FictitiousBoundary plain(grid), grown(grid, {.offset = offset});
   const std::size_t b = plain.add(box);
   grown.add(box);

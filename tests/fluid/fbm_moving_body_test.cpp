@@ -47,14 +47,15 @@ struct Drag {
 };
 
 Drag move_through_fluid_at_rest(double cfl) {
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(24, 0, 1.2, false), Axis::uniform(20, 0, 1, false),
-                               Axis::uniform(16, 0, 0.8, false)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(24, 0, 1.2, false), Axis::uniform(20, 0, 1, false), Axis::uniform(16, 0, 0.8, false)});
   BoundaryConditions bc(grid);
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(0.01), {0, 0, 0}},
                     {.cfl = cfl, .dt_max = 0.05, .dt_initial = 0.005});
   const Eigen::Vector3d velocity(0.5, 0.2, 0), spin(0, 0, 3), start(0.35, 0.4, 0.4);
   const auto pose = [&](double t) {
-    return geometry::Pose(start + t * velocity, Eigen::Quaterniond(Eigen::AngleAxisd(t * spin.norm(), spin.normalized())));
+    return geometry::Pose(start + t * velocity,
+                          Eigen::Quaterniond(Eigen::AngleAxisd(t * spin.norm(), spin.normalized())));
   };
   FictitiousBoundary fbm(grid);
   const std::size_t b = fbm.add({geometry::Ellipsoid({0.15, 0.1, 0.12}), pose(0), velocity, spin});
@@ -111,8 +112,8 @@ TEST(FbmMovingBody, ConstantVelocityThroughFluidAtRest) {
 // outlet, so the body squeezes it at |v| / h whatever the projection does; that bounds the
 // divergence.
 TEST(FbmMovingBody, LandingOnTheFloorClosesCellsAgainstTheWall) {
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(8, 0, 1, false), Axis::uniform(8, 0, 1, false),
-                               Axis::uniform(8, 0, 1, false)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(8, 0, 1, false), Axis::uniform(8, 0, 1, false), Axis::uniform(8, 0, 1, false)});
   BoundaryConditions bc(grid);
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(0.01), {0, 0, 0}},
                     {.cfl = 0.5, .dt_max = 0.01, .dt_initial = 0.01});
@@ -159,7 +160,8 @@ void expect_region_means_removed(const Grid& grid, const ConnectedCells& cells) 
     const double label = cells.region(m);
     const double after = v[m[2]][m[1]][m[0]];
     if (label == 0 || label == ConnectedCells::kOutflowRegion) changed_outside += after != value(m);
-    if (label != 0) sums[static_cast<std::size_t>(std::find(regions.begin(), regions.end(), label) - regions.begin())] += after;
+    if (label != 0)
+      sums[static_cast<std::size_t>(std::find(regions.begin(), regions.end(), label) - regions.begin())] += after;
   });
   DMDAVecRestoreArray(dm, x, &v);
   VecDestroy(&x);
@@ -187,8 +189,8 @@ void expect_region_means_removed(const Grid& grid, const ConnectedCells& cells) 
 void press_a_lid_into_a_pocket(bool outflow) {
   const int n = 12;
   const double h = 1.0 / n;
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(n, 0, 1, false), Axis::uniform(n, 0, 1, false),
-                               Axis::uniform(n, 0, 1, false)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(n, 0, 1, false), Axis::uniform(n, 0, 1, false), Axis::uniform(n, 0, 1, false)});
   BoundaryConditions bc(grid);
   if (outflow) bc.set(2, Side::upper, Boundary::outflow());
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(0.01), {0, 0, 0}},
@@ -197,8 +199,8 @@ void press_a_lid_into_a_pocket(bool outflow) {
   // Boxes from lo to hi in cell widths, reaching 0.2 cells past the pocket's faces at 4 h
   // and 8 h so that those faces lie inside them.
   const auto box = [&](Eigen::Vector3d lo, Eigen::Vector3d hi, Eigen::Vector3d velocity) {
-    fbm.add({geometry::Box((hi - lo) * h / 2),
-             geometry::Pose((hi + lo) * h / 2, Eigen::Quaterniond::Identity()), velocity, Eigen::Vector3d::Zero()});
+    fbm.add({geometry::Box((hi - lo) * h / 2), geometry::Pose((hi + lo) * h / 2, Eigen::Quaterniond::Identity()),
+             velocity, Eigen::Vector3d::Zero()});
   };
   const Eigen::Vector3d at_rest = Eigen::Vector3d::Zero();
   box({2.5, 2.5, 0}, {4.2, 9.5, 4.2}, at_rest);
@@ -241,8 +243,10 @@ void press_a_lid_into_a_pocket(bool outflow) {
     if (owns(m)) worst = std::max(worst, std::abs(divergence(grid, u, m) - squeeze));
   });
   MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
-  PetscPrintf(PETSC_COMM_WORLD, "lid pressed into a closed pocket (12^3, %s): divergence in the pocket %.2f 1/s "
-              "within %.1e, max speed %.2e\n", outflow ? "outflow on top" : "closed box", squeeze, worst, max_speed(flow));
+  PetscPrintf(PETSC_COMM_WORLD,
+              "lid pressed into a closed pocket (12^3, %s): divergence in the pocket %.2f 1/s "
+              "within %.1e, max speed %.2e\n",
+              outflow ? "outflow on top" : "closed box", squeeze, worst, max_speed(flow));
   EXPECT_LE(worst, 1e-6);
   EXPECT_LE(max_speed(flow), 0.1 + 1e-8);
 }

@@ -1,8 +1,8 @@
 // The operators that never change for a Newtonian fluid without imposed faces are solved
 // by shortcuts: the projection by FastPoisson's transforms, the viscous half-step by
-// FastViscous's (or, on the Krylov path, from its stencil weights without a matrix). Each must give what the general path (the assembled
-// operator, solved by a Krylov method to 1e-10) gives, on every kind of boundary, on
-// stretched axes, periodic axes and a two-dimensional (one periodic cell) grid.
+// FastViscous's (or, on the Krylov path, from its stencil weights without a matrix). Each must give what the general
+// path (the assembled operator, solved by a Krylov method to 1e-10) gives, on every kind of boundary, on stretched
+// axes, periodic axes and a two-dimensional (one periodic cell) grid.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -48,35 +48,46 @@ struct Case {
 
 Boundary boundary(BoundaryKind kind) {
   switch (kind) {
-    case BoundaryKind::outflow: return Boundary::outflow();
-    case BoundaryKind::inflow: return Boundary::inflow([](const Point& x, double) { return Point{0.3, -0.2, 0.5 * x[0]}; });
-    default: return Boundary::moving_wall({0.4, 0.1, -0.2});
+    case BoundaryKind::outflow:
+      return Boundary::outflow();
+    case BoundaryKind::inflow:
+      return Boundary::inflow([](const Point& x, double) { return Point{0.3, -0.2, 0.5 * x[0]}; });
+    default:
+      return Boundary::moving_wall({0.4, 0.1, -0.2});
   }
 }
 
 void apply(const Case& k, const Grid& grid, BoundaryConditions& bc) {
   for (int d = 0; d < 3; ++d)
     if (!grid.axis(d).periodic())
-      for (Side s : {Side::lower, Side::upper}) bc.set(d, s, boundary(k.kinds[static_cast<std::size_t>(d)][static_cast<std::size_t>(s)]));
+      for (Side s : {Side::lower, Side::upper})
+        bc.set(d, s, boundary(k.kinds[static_cast<std::size_t>(d)][static_cast<std::size_t>(s)]));
 }
 
 std::vector<Case> cases() {
   using K = BoundaryKind;
   const auto wall = K::wall, out = K::outflow, in = K::inflow;
   return {
-      {"closed box, stretched z", {Axis::uniform(12, 0, 1.2, false), Axis::uniform(10, 0, 1, false), Axis::stretched(9, 0, 1, 1.2, false)},
+      {"closed box, stretched z",
+       {Axis::uniform(12, 0, 1.2, false), Axis::uniform(10, 0, 1, false), Axis::stretched(9, 0, 1, 1.2, false)},
        {{{wall, wall}, {wall, wall}, {wall, wall}}}},
-      {"periodic x, inflow to outflow along stretched z", {Axis::uniform(8, 0, 1, true), Axis::uniform(10, 0, 1, false), Axis::stretched(12, 0, 2, 0.8, false)},
+      {"periodic x, inflow to outflow along stretched z",
+       {Axis::uniform(8, 0, 1, true), Axis::uniform(10, 0, 1, false), Axis::stretched(12, 0, 2, 0.8, false)},
        {{{wall, wall}, {wall, wall}, {in, out}}}},
-      {"outflows along x, one wall and one outflow along y, periodic z", {Axis::uniform(9, 0, 1, false), Axis::uniform(7, 0, 1, false), Axis::uniform(10, 0, 1, true)},
+      {"outflows along x, one wall and one outflow along y, periodic z",
+       {Axis::uniform(9, 0, 1, false), Axis::uniform(7, 0, 1, false), Axis::uniform(10, 0, 1, true)},
        {{{out, out}, {wall, out}, {wall, wall}}}},
-      {"outflow then wall along y, periodic stretched z", {Axis::uniform(6, 0, 1, false), Axis::uniform(8, 0, 1, false), Axis::stretched(10, 0, 1, 0.7, true)},
+      {"outflow then wall along y, periodic stretched z",
+       {Axis::uniform(6, 0, 1, false), Axis::uniform(8, 0, 1, false), Axis::stretched(10, 0, 1, 0.7, true)},
        {{{in, out}, {out, wall}, {wall, wall}}}},
-      {"fully periodic, two cells along z", {Axis::uniform(8, 0, 1, true), Axis::uniform(6, 0, 1, true), Axis::uniform(2, 0, 1, true)},
+      {"fully periodic, two cells along z",
+       {Axis::uniform(8, 0, 1, true), Axis::uniform(6, 0, 1, true), Axis::uniform(2, 0, 1, true)},
        {{{wall, wall}, {wall, wall}, {wall, wall}}}},
-      {"two-dimensional: one periodic cell along z (on two ranks one holds no plane)", {Axis::uniform(10, 0, 1, false), Axis::uniform(6, 0, 1, false), Axis::uniform(1, 0, 0.1, true)},
+      {"two-dimensional: one periodic cell along z (on two ranks one holds no plane)",
+       {Axis::uniform(10, 0, 1, false), Axis::uniform(6, 0, 1, false), Axis::uniform(1, 0, 0.1, true)},
        {{{wall, out}, {in, wall}, {wall, wall}}}},
-      {"two-dimensional: one periodic cell along y", {Axis::uniform(16, 0, 2, false), Axis::uniform(1, 0, 0.1, true), Axis::uniform(8, 0, 1, false)},
+      {"two-dimensional: one periodic cell along y",
+       {Axis::uniform(16, 0, 2, false), Axis::uniform(1, 0, 0.1, true), Axis::uniform(8, 0, 1, false)},
        {{{in, out}, {wall, wall}, {wall, wall}}}},
   };
 }
@@ -157,8 +168,8 @@ TEST(FastPoisson, SolvesTheAssembledProjectionOnEveryKindOfBoundary) {
 }
 
 TEST(FastPoisson, NeedsUniformXAndY) {
-  Grid grid(PETSC_COMM_WORLD, {Axis::stretched(8, 0, 1, 1, false), Axis::uniform(8, 0, 1, false),
-                               Axis::uniform(8, 0, 1, false)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::stretched(8, 0, 1, 1, false), Axis::uniform(8, 0, 1, false), Axis::uniform(8, 0, 1, false)});
   BoundaryConditions bc(grid);
   EXPECT_FALSE(FastPoisson::applies(grid));
   EXPECT_THROW(with_options("-pressure_solver fft", [&] { return PressureSolver(grid, bc).assemblies(); }),
@@ -180,7 +191,8 @@ TEST(ViscousSolver, TheStencilOperatorSolvesWhatTheAssembledOneDoes) {
     ViscosityField viscosity(grid, ViscosityModel::newtonian(nu), 1.0);
     const UniformViscousWeights weights(grid, bc, nu);
     ViscousSolver assembled(grid, bc, nullptr);
-    auto stencil_solver = with_options("-viscous_solver krylov", [&] { return std::make_unique<ViscousSolver>(grid, bc, &weights); });
+    auto stencil_solver =
+        with_options("-viscous_solver krylov", [&] { return std::make_unique<ViscousSolver>(grid, bc, &weights); });
     ViscousSolver& stencil = *stencil_solver;
     ImposedFaces imposed(grid);
     imposed.clear();
@@ -262,8 +274,8 @@ TEST(ViscousAxisBasis, MatchesTheClosedFormsWhereTheyExist) {
   const double nu = 0.05, h = 0.125;
   const int n = 8;
   const auto check = [&](bool periodic, K lower, K upper, int c, std::vector<double> theta) {
-    Grid grid(PETSC_COMM_WORLD, {Axis::uniform(n, 0, n * h, periodic), Axis::uniform(4, 0, 1, false),
-                                 Axis::uniform(4, 0, 1, false)});
+    Grid grid(PETSC_COMM_WORLD,
+              {Axis::uniform(n, 0, n * h, periodic), Axis::uniform(4, 0, 1, false), Axis::uniform(4, 0, 1, false)});
     BoundaryConditions bc(grid);
     if (!periodic) {
       bc.set(0, Side::lower, boundary(lower));
@@ -291,8 +303,8 @@ TEST(ViscousAxisBasis, MatchesTheClosedFormsWhereTheyExist) {
   check(true, K::wall, K::wall, 0, fourier);
   check(true, K::wall, K::wall, 1, fourier);
 
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(n, 0, n * h, false), Axis::uniform(4, 0, 1, false),
-                               Axis::uniform(4, 0, 1, false)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(n, 0, n * h, false), Axis::uniform(4, 0, 1, false), Axis::uniform(4, 0, 1, false)});
   BoundaryConditions bc(grid);
   const UniformViscousWeights weights(grid, bc, nu);
   const std::vector<double> a = viscous_axis_matrix(grid, bc, weights, 1, 0);
@@ -314,9 +326,8 @@ TEST(FastViscous, SolvesWhatTheKrylovPathSolves) {
       if (!grid.axis(d).degenerate())
         for (int i = 0; i < grid.axis(d).cells(); ++i) h = std::min(h, grid.axis(d).width(i));
     auto fft = with_options("-viscous_solver fft", [&] { return std::make_unique<ViscousSolver>(grid, bc, &weights); });
-    auto krylov = with_options("-viscous_solver krylov -viscous_ksp_rtol 1e-14 -viscous_ksp_gmres_restart 60", [&] {
-      return std::make_unique<ViscousSolver>(grid, bc, &weights);
-    });
+    auto krylov = with_options("-viscous_solver krylov -viscous_ksp_rtol 1e-14 -viscous_ksp_gmres_restart 60",
+                               [&] { return std::make_unique<ViscousSolver>(grid, bc, &weights); });
     for (const double number : {0.1, 4.0}) {
       const double s = number * h * h / nu;
       for (int c = 0; c < 3; ++c) {
@@ -333,7 +344,8 @@ TEST(FastViscous, SolvesWhatTheKrylovPathSolves) {
         const int its = fft->solve(c, s, viscosity, nullptr, rhs, a);
         const int krylov_its = krylov->solve(c, s, viscosity, nullptr, rhs, b);
         const double difference = max_abs_difference(a, b), scale = max_abs(b);
-        PetscPrintf(PETSC_COMM_WORLD, "%s, nu s / h^2 %.1f, component %d: max |u_fft - u_krylov| %.2e of %.2e (%d Krylov iterations)\n",
+        PetscPrintf(PETSC_COMM_WORLD,
+                    "%s, nu s / h^2 %.1f, component %d: max |u_fft - u_krylov| %.2e of %.2e (%d Krylov iterations)\n",
                     k.name.c_str(), number, c, difference, scale, krylov_its);
         EXPECT_EQ(its, 0);
         EXPECT_GT(scale, 1e-3);
@@ -358,10 +370,13 @@ TEST(FastViscous, TheOptionErrsClearly) {
     }
     return "";
   };
-  Grid uniform_grid(PETSC_COMM_WORLD, {Axis::uniform(6, 0, 1, false), Axis::uniform(6, 0, 1, false), Axis::uniform(6, 0, 1, false)});
-  Grid stretched_grid(PETSC_COMM_WORLD, {Axis::stretched(6, 0, 1, 1, false), Axis::uniform(6, 0, 1, false), Axis::uniform(6, 0, 1, false)});
+  Grid uniform_grid(PETSC_COMM_WORLD,
+                    {Axis::uniform(6, 0, 1, false), Axis::uniform(6, 0, 1, false), Axis::uniform(6, 0, 1, false)});
+  Grid stretched_grid(PETSC_COMM_WORLD, {Axis::stretched(6, 0, 1, 1, false), Axis::uniform(6, 0, 1, false),
+                                         Axis::uniform(6, 0, 1, false)});
   BoundaryConditions uniform_bc(uniform_grid), stretched_bc(stretched_grid);
-  const UniformViscousWeights uniform_weights(uniform_grid, uniform_bc, 0.1), stretched_weights(stretched_grid, stretched_bc, 0.1);
+  const UniformViscousWeights uniform_weights(uniform_grid, uniform_bc, 0.1),
+      stretched_weights(stretched_grid, stretched_bc, 0.1);
   const auto on = [](const Grid& g, const BoundaryConditions& b, const UniformViscousWeights* w) {
     return [&g, &b, w] { return std::make_unique<ViscousSolver>(g, b, w); };
   };

@@ -63,15 +63,11 @@ GatheredVelocity mixed_boundary_flow(MPI_Comm comm, const ViscosityModel& viscos
   Grid grid(comm, {Axis::uniform(12, 0, 2, false), Axis::stretched(8, 0, 1, y_stretching, false),
                    Axis::uniform(6, 0, 1, true)});
   BoundaryConditions bc(grid);
-  bc.set(0, Side::lower, Boundary::inflow([](const Point& x, double) {
-           return Point{4 * x[1] * (1 - x[1]), 0, 0.1};
-         }));
+  bc.set(0, Side::lower, Boundary::inflow([](const Point& x, double) { return Point{4 * x[1] * (1 - x[1]), 0, 0.1}; }));
   bc.set(0, Side::upper, Boundary::outflow());
   bc.set(1, Side::upper, Boundary::moving_wall({0.5, 0, 0.2}));
   NavierStokes flow(grid, bc, {1.0, viscosity, {0, 0, 0}}, {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 0.01});
-  flow.set_velocity([](const Point& x) {
-    return Point{4 * x[1] * (1 - x[1]), 0, 0.1 + 0.1 * std::sin(3 * x[0])};
-  });
+  flow.set_velocity([](const Point& x) { return Point{4 * x[1] * (1 - x[1]), 0, 0.1 + 0.1 * std::sin(3 * x[0])}; });
   for (int s = 0; s < 20; ++s) {
     const StepReport r = flow.step();
     EXPECT_LT(r.max_divergence, 1e-7) << "step " << s;

@@ -86,8 +86,7 @@ TEST(GeneralizedNewtonian, PowerLawOfIndexOneIsNewtonian) {
   const double difference = testing::max_difference(
       testing::mixed_boundary_flow(PETSC_COMM_WORLD, ViscosityModel::newtonian(0.02), 0),
       testing::mixed_boundary_flow(PETSC_COMM_WORLD, ViscosityModel::power_law(0.02, 1.0, 1e-6, 1e6), 0));
-  PetscPrintf(PETSC_COMM_WORLD,
-              "Power law n = 1 against Newtonian (12 x 8 x 6, 20 steps): max |difference| = %.2e\n",
+  PetscPrintf(PETSC_COMM_WORLD, "Power law n = 1 against Newtonian (12 x 8 x 6, 20 steps): max |difference| = %.2e\n",
               difference);
   EXPECT_LT(difference, 1e-9);
 }
@@ -101,8 +100,8 @@ TEST(GeneralizedNewtonian, PowerLawPlatesSecondOrder) {
   };
   std::vector<double> errors;
   for (int cells : {16, 32}) {
-    Grid grid(PETSC_COMM_WORLD, {Axis::uniform(4, 0, 1, true), Axis::uniform(cells, 0, 1, false),
-                                 Axis::uniform(1, 0, 1, true)});
+    Grid grid(PETSC_COMM_WORLD,
+              {Axis::uniform(4, 0, 1, true), Axis::uniform(cells, 0, 1, false), Axis::uniform(1, 0, 1, true)});
     BoundaryConditions bc(grid);
     NavierStokes flow(grid, bc, {1.0, ViscosityModel::power_law(K, n, 1e-3, 1e3), {G, 0, 0}},
                       {.cfl = 0.5, .dt_max = 0.5, .dt_initial = 0.01, .theta = 1});
@@ -113,8 +112,8 @@ TEST(GeneralizedNewtonian, PowerLawPlatesSecondOrder) {
   }
   const double order = std::log2(errors[0] / errors[1]);
   PetscPrintf(PETSC_COMM_WORLD,
-              "Power law n = 0.5 plates (16, 32 cells): max errors %.3e %.3e (u_max %.4f), order %.2f\n",
-              errors[0], errors[1], exact({0, 0.5, 0}), order);
+              "Power law n = 0.5 plates (16, 32 cells): max errors %.3e %.3e (u_max %.4f), order %.2f\n", errors[0],
+              errors[1], exact({0, 0.5, 0}), order);
   EXPECT_GT(order, 1.8);
 }
 

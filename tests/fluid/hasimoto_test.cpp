@@ -26,9 +26,10 @@ std::vector<double> errors_at(const BodyOptions& method, const Eigen::Vector3d& 
   std::vector<double> errors;
   for (int n : levels) {
     const FluidRun r = bench::hasimoto_sphere(n, method, centre, {.max_steps = max_steps});
-    PetscPrintf(PETSC_COMM_WORLD, "Hasimoto sphere a/L = 0.2, %d^3 (d/h = %.1f), %s: error %+.3f %%, F over its momentum "
-                "balance %.5f; %d steps, %.1f s\n", n, 0.4 * n, r.method.c_str(), 100 * r.error(), r.check, r.steps,
-                r.seconds);
+    PetscPrintf(PETSC_COMM_WORLD,
+                "Hasimoto sphere a/L = 0.2, %d^3 (d/h = %.1f), %s: error %+.3f %%, F over its momentum "
+                "balance %.5f; %d steps, %.1f s\n",
+                n, 0.4 * n, r.method.c_str(), 100 * r.error(), r.check, r.steps, r.seconds);
     EXPECT_NEAR(r.check, 1, 2e-3);
     errors.push_back(r.error());
   }

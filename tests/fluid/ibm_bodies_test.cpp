@@ -51,8 +51,10 @@ TEST(IbmVolumeFraction, SphereVolumeIsContinuousInThePose) {
     jump = std::max(jump, std::abs(v - before) / exact);
     before = v;
   }
-  PetscPrintf(PETSC_COMM_WORLD, "IBM grid volume of a sphere at d/h 8 over a cell of motion: within %.3f %%, largest "
-              "change in a 1/100 cell step %.2e\n", 100 * worst, jump);
+  PetscPrintf(PETSC_COMM_WORLD,
+              "IBM grid volume of a sphere at d/h 8 over a cell of motion: within %.3f %%, largest "
+              "change in a 1/100 cell step %.2e\n",
+              100 * worst, jump);
   EXPECT_LT(worst, 0.01);
   EXPECT_LT(jump, 2e-4);
 }
@@ -62,10 +64,11 @@ TEST(IbmVolumeFraction, SphereVolumeIsContinuousInThePose) {
 // distance would halve the inside there).
 TEST(IbmVolumeFraction, TwoDimensionalSectionOfAThinCylinder) {
   const double thickness = 0.01, r = 0.05;
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(40, 0, 0.4, false), Axis::uniform(40, 0, 0.4, false),
-                               Axis::uniform(1, 0, thickness, true)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(40, 0, 0.4, false), Axis::uniform(40, 0, 0.4, false), Axis::uniform(1, 0, thickness, true)});
   ImmersedBoundary ibm(grid);
-  ibm.add({geometry::Cylinder(r, thickness), geometry::Pose({0.2013, 0.1987, thickness / 2}, Eigen::Quaterniond::Identity())});
+  ibm.add({geometry::Cylinder(r, thickness),
+           geometry::Pose({0.2013, 0.1987, thickness / 2}, Eigen::Quaterniond::Identity())});
   const double section = grid_volume(grid, ibm, 0) / thickness;
   PetscPrintf(PETSC_COMM_WORLD, "IBM section of a cylinder at D/h 10 on a 2D grid: %.6f, pi r^2 = %.6f\n", section,
               pi * r * r);
@@ -110,14 +113,15 @@ struct MovingRun {
 // An ellipsoid moving at constant velocity and spinning through fluid at rest (Re 15), as
 // FbmMovingBody.ConstantVelocityThroughFluidAtRest does with the staircase.
 MovingRun move_through_fluid_at_rest(const BodyOptions& method) {
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(24, 0, 1.2, false), Axis::uniform(20, 0, 1, false),
-                               Axis::uniform(16, 0, 0.8, false)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(24, 0, 1.2, false), Axis::uniform(20, 0, 1, false), Axis::uniform(16, 0, 0.8, false)});
   BoundaryConditions bc(grid);
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(0.01), {0, 0, 0}},
                     {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 0.005});
   const Eigen::Vector3d velocity(0.5, 0.2, 0), spin(0, 0, 3), start(0.35, 0.4, 0.4);
   const auto pose = [&](double t) {
-    return geometry::Pose(start + t * velocity, Eigen::Quaterniond(Eigen::AngleAxisd(t * spin.norm(), spin.normalized())));
+    return geometry::Pose(start + t * velocity,
+                          Eigen::Quaterniond(Eigen::AngleAxisd(t * spin.norm(), spin.normalized())));
   };
   const auto bodies = make_bodies(grid, method);
   bodies->add({geometry::Ellipsoid({0.15, 0.1, 0.12}), pose(0), velocity, spin});
@@ -184,7 +188,9 @@ TEST(IbmNearContact, TwoSpheresHalfACellApartApproachingTheFloor) {
   ImmersedBoundary ibm(grid);
   const Eigen::Vector3d velocity(0, 0, -0.1);
   const double x0 = 0.5 - r - gap / 2 + 0.37 * h, z0 = r + 2.5 * h;  // the pair's plane off the grid's
-  const auto at = [&](double x, double t) -> Eigen::Vector3d { return Eigen::Vector3d(x, 0.5 + 0.21 * h, z0) + t * velocity; };
+  const auto at = [&](double x, double t) -> Eigen::Vector3d {
+    return Eigen::Vector3d(x, 0.5 + 0.21 * h, z0) + t * velocity;
+  };
   ibm.add({geometry::Sphere(r), geometry::Pose(at(x0, 0), Eigen::Quaterniond::Identity()), velocity});
   ibm.add({geometry::Sphere(r), geometry::Pose(at(x0 + 2 * r + gap, 0), Eigen::Quaterniond::Identity()), velocity});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });

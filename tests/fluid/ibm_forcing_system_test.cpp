@@ -19,8 +19,9 @@ namespace {
 // Markers about a cell apart on two spheres whose kernels overlap, on a grid with walls, a
 // stretched axis and a periodic one: body 0's markers first, then body 1's.
 struct Cloud {
-  Grid grid{PETSC_COMM_SELF, {Axis::uniform(16, 0, 1.6, false), Axis::stretched(14, 0, 1.4, 0.8, false),
-                              Axis::uniform(12, 0, 1.2, true)}};
+  Grid grid{
+      PETSC_COMM_SELF,
+      {Axis::uniform(16, 0, 1.6, false), Axis::stretched(14, 0, 1.4, 0.8, false), Axis::uniform(12, 0, 1.2, true)}};
   std::vector<ActiveMarker> markers;
   std::vector<std::size_t> first_marker{0};
 
@@ -60,7 +61,8 @@ struct Fields {
   explicit Fields(const Grid& g) : grid(g) {
     for (int c = 0; c < 3; ++c) {
       COSIM_PETSC(DMCreateGlobalVector(grid.velocity_dm(c), &v[static_cast<std::size_t>(c)]));
-      COSIM_PETSC(DMDAVecGetArray(grid.velocity_dm(c), v[static_cast<std::size_t>(c)], &a[static_cast<std::size_t>(c)]));
+      COSIM_PETSC(
+          DMDAVecGetArray(grid.velocity_dm(c), v[static_cast<std::size_t>(c)], &a[static_cast<std::size_t>(c)]));
     }
   }
   ~Fields() {

@@ -106,8 +106,8 @@ double adjoint_mismatch(const Grid& grid, int c, DeltaKernel kernel, std::mt1993
 TEST(KernelStencil, InterpolationAndSpreadingAreAdjoint) {
   std::mt19937 random(7);
   // Walls in x and y (y stretched), periodic in z.
-  Grid grid(PETSC_COMM_SELF, {Axis::uniform(12, 0, 1.2, false), Axis::stretched(10, 0, 1, 0.8, false),
-                              Axis::uniform(8, 0, 0.8, true)});
+  Grid grid(PETSC_COMM_SELF,
+            {Axis::uniform(12, 0, 1.2, false), Axis::stretched(10, 0, 1, 0.8, false), Axis::uniform(8, 0, 0.8, true)});
   for (DeltaKernel kernel : kKernels)
     for (int c = 0; c < 3; ++c) EXPECT_LT(adjoint_mismatch(grid, c, kernel, random), 1e-14) << name(kernel) << " " << c;
 }

@@ -29,8 +29,8 @@ Towing tow(double cells, double distance, int corrections, double ramp = 0) {
   constexpr double h = 1.0 / n, d = 6 * h, U = 1;
   constexpr double pi = 3.141592653589793;
   const double nu = U * d / 1.5, dt = cells * h / U, T = 2 * ramp * h / U;
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(n, 0, 1, false), Axis::uniform(n, 0, 1, false),
-                               Axis::uniform(32, 0, 32 * h, false)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(n, 0, 1, false), Axis::uniform(n, 0, 1, false), Axis::uniform(32, 0, 32 * h, false)});
   BoundaryConditions bc(grid);
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(nu), {0, 0, 0}},
                     {.cfl = 10, .dt_max = dt, .dt_initial = dt});
@@ -62,8 +62,10 @@ Towing tow(double cells, double distance, int corrections, double ramp = 0) {
 TEST(IbmNoSlip, HoldsAfterTheWholeStepAtALargeViscousNumber) {
   const Towing corrected = tow(1.0, 6, kCorrections);
   const Towing plain = tow(1.0, 6, 0);
-  PetscPrintf(PETSC_COMM_WORLD, "towed sphere at nu dt/h^2 4: largest slip after the step %.2e U corrected, %.2e U "
-              "plain\n", corrected.slip, plain.slip);
+  PetscPrintf(PETSC_COMM_WORLD,
+              "towed sphere at nu dt/h^2 4: largest slip after the step %.2e U corrected, %.2e U "
+              "plain\n",
+              corrected.slip, plain.slip);
   EXPECT_LT(corrected.slip, 0.01);
   EXPECT_GT(plain.slip, 0.03);
 }

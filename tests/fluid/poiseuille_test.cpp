@@ -18,23 +18,23 @@ constexpr double kDrive = 8.0;  // -dp/dx / rho, so u_max = kDrive / (8 nu) = 1 
 double plates(double y) { return kDrive / (2 * kMu) * y * (1 - y); }
 
 TEST(Poiseuille, PlatesOnStretchedGridExact) {
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(4, 0, 1, true), Axis::stretched(10, 0, 1, 1.5, false),
-                               Axis::uniform(1, 0, 1, true)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(4, 0, 1, true), Axis::stretched(10, 0, 1, 1.5, false), Axis::uniform(1, 0, 1, true)});
   BoundaryConditions bc(grid);
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(kMu), {kDrive, 0, 0}},
                     {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 0.05});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   const double t = testing::run_to_steady_state(flow, 1e-10, 50, 1e-9);
   const double error = testing::max_error(flow, 0, [](const Point& x) { return plates(x[1]); });
-  PetscPrintf(PETSC_COMM_WORLD,
-              "Poiseuille plates (4 x 10 stretched): steady at t = %.2f, max |u - exact| = %.2e\n", t, error);
+  PetscPrintf(PETSC_COMM_WORLD, "Poiseuille plates (4 x 10 stretched): steady at t = %.2f, max |u - exact| = %.2e\n", t,
+              error);
   EXPECT_LT(error, 1e-8);
   EXPECT_LT(testing::max_error(flow, 1, [](const Point&) { return 0.0; }), 1e-10);
 }
 
 TEST(Poiseuille, InflowProfileToOutflowExact) {
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(8, 0, 2, false), Axis::stretched(10, 0, 1, 1.5, false),
-                               Axis::uniform(1, 0, 1, true)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(8, 0, 2, false), Axis::stretched(10, 0, 1, 1.5, false), Axis::uniform(1, 0, 1, true)});
   BoundaryConditions bc(grid);
   bc.set(0, Side::lower, Boundary::inflow([](const Point& x, double) { return Point{plates(x[1]), 0, 0}; }));
   bc.set(0, Side::upper, Boundary::outflow());
@@ -51,8 +51,7 @@ TEST(Poiseuille, InflowProfileToOutflowExact) {
   double p_error = 0;
   for (PetscInt j = b.lo[1]; j < b.hi[1]; ++j)
     for (PetscInt i = b.lo[0]; i < b.hi[0]; ++i)
-      p_error = std::max(
-          p_error, std::abs(p[0][j][i] - kDrive * kMu * (2 - grid.axis(0).centre(static_cast<int>(i)))));
+      p_error = std::max(p_error, std::abs(p[0][j][i] - kDrive * kMu * (2 - grid.axis(0).centre(static_cast<int>(i)))));
   DMDAVecRestoreArrayRead(grid.pressure_dm(), flow.pressure(), &p);
   MPI_Allreduce(MPI_IN_PLACE, &p_error, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
   PetscPrintf(PETSC_COMM_WORLD,
@@ -90,8 +89,8 @@ TEST(Poiseuille, SquareDuctSecondOrder) {
   }
   const double order = std::log2(errors[0] / errors[1]);
   PetscPrintf(PETSC_COMM_WORLD,
-              "Poiseuille square duct (16^2, 32^2): max errors %.3e %.3e (u_max 0.5623), order %.2f\n",
-              errors[0], errors[1], order);
+              "Poiseuille square duct (16^2, 32^2): max errors %.3e %.3e (u_max 0.5623), order %.2f\n", errors[0],
+              errors[1], order);
   // The corners carry an r^2 log r singularity (the forcing does not vanish there), which
   // keeps the max-norm order a little under 2 on coarse grids.
   EXPECT_GT(order, 1.75);

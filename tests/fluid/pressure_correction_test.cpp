@@ -21,10 +21,11 @@ constexpr double kNu = 0.1, kSpeed = 0.1, kEnd = 0.4, kH = 1.0 / 15;
 // Drag at t = kEnd on a sphere (a = 0.2, Re = 0.4) set moving at t = 0 through a closed box
 // of fluid at rest, with steps of dt: a transient over one viscous time a^2 / nu.
 double drag_after_start(double dt, bool rotational) {
-  Grid grid(PETSC_COMM_WORLD, {Axis::uniform(24, 0, 1.6, false), Axis::uniform(15, 0, 1, false),
-                               Axis::uniform(15, 0, 1, false)});
+  Grid grid(PETSC_COMM_WORLD,
+            {Axis::uniform(24, 0, 1.6, false), Axis::uniform(15, 0, 1, false), Axis::uniform(15, 0, 1, false)});
   BoundaryConditions bc(grid);
-  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(kNu), {0, 0, 0}}, {.pressure_update = rotational ? PressureUpdate::rotational : PressureUpdate::standard});
+  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(kNu), {0, 0, 0}},
+                    {.pressure_update = rotational ? PressureUpdate::rotational : PressureUpdate::standard});
   FictitiousBoundary fbm(grid, {.subsamples = 4});
   const Eigen::Vector3d velocity(kSpeed, 0, 0);
   const auto pose = [&](double t) {

@@ -19,7 +19,9 @@ std::vector<double> run_windows(FluidSolver& solver, std::uint64_t from, std::ui
   return participant::values_of(forces);
 }
 
-scene::Scene oscillating() { return scene::load_scene_from_string(testing::oscillating_cylinder_scene("", 0.5, kWindow)); }
+scene::Scene oscillating() {
+  return scene::load_scene_from_string(testing::oscillating_cylinder_scene("", 0.5, kWindow));
+}
 
 // Guards against: an implicit window repeated after a restore differing in the last bit.
 TEST(FluidRollback, RepeatsTheWindowsBitForBit) {

@@ -104,8 +104,9 @@ TEST(FluidScene, PrescribedMotionIsFixedConstantOrSinusoidal) {
   EXPECT_NEAR(c[3], std::cos(0.75), 1e-15);  // 1.5 rad about z: w = cos(0.75)
   EXPECT_NEAR(c[6], std::sin(0.75), 1e-15);
   EXPECT_EQ(c[12], 3.0);
-  const std::string fixed = replaced(free, "participants:\n  fluid:\n    dt: 0.01\n    options:\n",
-                                     "participants:\n  fluid:\n    dt: 0.01\n    options:\n      motion: {cyl: {type: fixed}}\n");
+  const std::string fixed =
+      replaced(free, "participants:\n  fluid:\n    dt: 0.01\n    options:\n",
+               "participants:\n  fluid:\n    dt: 0.01\n    options:\n      motion: {cyl: {type: fixed}}\n");
   const std::vector<double> f = participant::values_of(poses_at(setup_of(fixed).motions, 0.5));
   EXPECT_EQ(f[0], 0.2);
   EXPECT_EQ(f[7], 0.0);
@@ -156,7 +157,8 @@ TEST(FluidScene, ErrorsNameFileLineKeyAndValue) {
       {"density: 1000", "density: -1", "density", "-1"},
       {"model: newtonian", "model: bingham", "viscosity.model", "bingham"},
       {"z_max: {type: periodic}", "z_max: {type: wall}", "boundaries.z_max", ""},
-      {"z_min: {type: periodic}, ", "z_min: {type: periodic}, x_max: {type: outlet}, ", "boundaries.x_max.type", "outlet"},
+      {"z_min: {type: periodic}, ", "z_min: {type: periodic}, x_max: {type: outlet}, ", "boundaries.x_max.type",
+       "outlet"},
       {"motion: {cyl:", "motion: {ball:", "motion.ball", ""},
       {"type: sinusoidal,", "type: swinging,", "motion.cyl.type", "swinging"},
       {"frequency: 2", "frequency: 0", "motion.cyl.frequency", "0"},
@@ -166,13 +168,14 @@ TEST(FluidScene, ErrorsNameFileLineKeyAndValue) {
       {"density: 1000", "density: 1000\n      body_force: [1, 0]", "body_force", "[1, 0]"},
       {"density: 1000", "density: 1000\n      petsc: hypre", "petsc", "hypre"},
       {"density: 1000", "density: 1000\n      pressure_update: incremental", "pressure_update", "incremental"},
-      {"density: 1000", "density: 1000\n      pressure_update: exact\n      bodies: {method: staircase}", "pressure_update",
-       "exact"},
+      {"density: 1000", "density: 1000\n      pressure_update: exact\n      bodies: {method: staircase}",
+       "pressure_update", "exact"},
       {"density: 1000", "density: 1000\n      bodies: {method: cutcell}", "bodies.method", "cutcell"},
       {"density: 1000", "density: 1000\n      bodies: {kernel: gauss}", "bodies.kernel", "gauss"},
       {"density: 1000", "density: 1000\n      bodies: {sweeps: 0}", "bodies.sweeps", "0"},
       {"density: 1000", "density: 1000\n      bodies: {method: ibm, subsamples: 2}", "bodies.subsamples", "2"},
-      {"density: 1000", "density: 1000\n      bodies: {method: staircase, retraction: 0.3}", "bodies.retraction", "0.3"},
+      {"density: 1000", "density: 1000\n      bodies: {method: staircase, retraction: 0.3}", "bodies.retraction",
+       "0.3"},
       {"density: 1000", "density: 1000\n      subsamples: 2", "subsamples", "2"},
   };
   for (const BadOption& c : cases) {
@@ -188,8 +191,9 @@ TEST(FluidScene, ErrorsNameFileLineKeyAndValue) {
 }
 
 TEST(FluidScene, RefusesAPlaneBody) {
-  std::string text = replaced(oscillating_cylinder_scene(), "bodies:\n",
-                              "bodies:\n  - {name: floor, shape: {type: plane, normal: [0, 1, 0]}, fixed: true, position: [0, 0, 0]}\n");
+  std::string text = replaced(
+      oscillating_cylinder_scene(), "bodies:\n",
+      "bodies:\n  - {name: floor, shape: {type: plane, normal: [0, 1, 0]}, fixed: true, position: [0, 0, 0]}\n");
   const scene::SceneError e = error_of(text);
   EXPECT_EQ(e.key, "bodies[0].shape.type");
   EXPECT_NE(std::string(e.what()).find("wall boundary"), std::string::npos) << e.what();

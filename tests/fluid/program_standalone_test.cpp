@@ -75,8 +75,10 @@ TEST(FluidProgram, HasimotoSphereStandaloneMatchesTheLibrarysErrors) {
   const double staircase = hasimoto_error("fluid_hasimoto_staircase", "      bodies: {method: staircase}\n", "0.4", 4);
   const double raw =
       hasimoto_error("fluid_hasimoto_raw", "      bodies: {method: staircase, surface_offset: 0}\n", "0.4", 4);
-  std::printf("Hasimoto sphere at d/h 4.8 standalone: immersed boundary %+.2f %%, staircase %+.2f %%, without its "
-              "offset %+.2f %%\n", 100 * ibm, 100 * staircase, 100 * raw);
+  std::printf(
+      "Hasimoto sphere at d/h 4.8 standalone: immersed boundary %+.2f %%, staircase %+.2f %%, without its "
+      "offset %+.2f %%\n",
+      100 * ibm, 100 * staircase, 100 * raw);
   EXPECT_NEAR(ibm, 0.0055, 0.01);
   EXPECT_NEAR(staircase, 0.0055, 0.01);
   EXPECT_NEAR(raw, -0.263, 0.01);

@@ -122,10 +122,10 @@ TEST(FluidWork, TheProgramWritesTheReportWithCheck) {
   EXPECT_FALSE(doc["grows"]);
 
   // --work belongs to --check; a bad scene writes no report.
-  EXPECT_NE(testing::run_program("cosim-fluid", "--standalone " + (dir / "scene.yaml").string() + " -o " +
-                                                    (dir / "run.h5").string() + " --work " +
-                                                    (dir / "alone.yaml").string()),
-            0);
+  EXPECT_NE(
+      testing::run_program("cosim-fluid", "--standalone " + (dir / "scene.yaml").string() + " -o " +
+                                              (dir / "run.h5").string() + " --work " + (dir / "alone.yaml").string()),
+      0);
   EXPECT_FALSE(fs::exists(dir / "run.h5"));
   EXPECT_FALSE(fs::exists(dir / "alone.yaml"));
   fs::remove(dir / "work.yaml");

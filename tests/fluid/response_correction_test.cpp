@@ -28,8 +28,8 @@ participant::ResponseRow run(ResponseCorrection& correction, double k0, double e
   Eigen::Vector3d newest = Eigen::Vector3d::Zero();
   correction.apply(row, newest);
   for (int k = 0; k < windows; ++k) {
-    const Eigen::Vector3d d = Eigen::Vector3d(0.3, -0.2, 1.0) * 1e-3 * ((k % 2 == 0) ? 1.0 : -1.0) +
-                              Eigen::Vector3d(0, 0, 1e-5 * k);
+    const Eigen::Vector3d d =
+        Eigen::Vector3d(0.3, -0.2, 1.0) * 1e-3 * ((k % 2 == 0) ? 1.0 : -1.0) + Eigen::Vector3d(0, 0, 1e-5 * k);
     const Eigen::Vector3d force = Eigen::Vector3d(0, 0, 2 + 1e-3 * k) - (k0 + extra) * d;
     correction.observe(d, force);
     row = row_with(k0, force + k0 * d);

@@ -40,23 +40,30 @@ struct Settling {
 
   std::string yaml() const {
     const bool implicit = scheme.ends_with("implicit");
-    return "time: {end: " + std::to_string(end) + "}\n" +
-           "coupling: {window: " + std::to_string(window) + ", scheme: " + scheme +
+    return "time: {end: " + std::to_string(end) + "}\n" + "coupling: {window: " + std::to_string(window) +
+           ", scheme: " + scheme +
            (implicit ? ", acceleration: iqn-ils, relaxation: 0.5, max_iterations: 30, tolerance: 1.0e-4" : "") + "}\n" +
            "output: {checkpoint_every: " + std::to_string(checkpoint_every) + ", fields_every: 0}\n" +
            "gravity: [0, 0, -9.81]\n"
            "domain: {min: [0, 0, 0], max: [0.1, 0.1, 0.16]}\n"
            "effects: [gravity, buoyancy, hydrodynamics, contact]\n"
            "bodies:\n"
-           "  - {name: sphere, shape: {type: sphere, radius: 0.0075}, material: {density: " + std::to_string(rho_p) +
-           "}, position: [0.05, 0.05, " + std::to_string(z0) + "], velocity: [0, 0, " + std::to_string(w0) + "]}\n"
+           "  - {name: sphere, shape: {type: sphere, radius: 0.0075}, material: {density: " +
+           std::to_string(rho_p) + "}, position: [0.05, 0.05, " + std::to_string(z0) + "], velocity: [0, 0, " +
+           std::to_string(w0) +
+           "]}\n"
            "participants:\n"
-           "  rigidbody: {dt: " + std::to_string(std::min(window / 10, 5e-4)) + ", options: {fluid_density: " + std::to_string(rho_f) +
+           "  rigidbody: {dt: " +
+           std::to_string(std::min(window / 10, 5e-4)) + ", options: {fluid_density: " + std::to_string(rho_f) +
            ", virtual_mass: " + std::to_string(virtual_mass) + ", walls: [z_min, z_max]" +
-           (lubrication.empty() ? "" : ", lubrication: " + lubrication) + "}}\n"
+           (lubrication.empty() ? "" : ", lubrication: " + lubrication) +
+           "}}\n"
            "  fluid:\n"
-           "    dt: " + std::to_string(window) + "\n"
-           "    options: {density: " + std::to_string(rho_f) + ", viscosity: {model: newtonian, mu: " + std::to_string(mu) +
+           "    dt: " +
+           std::to_string(window) +
+           "\n"
+           "    options: {density: " +
+           std::to_string(rho_f) + ", viscosity: {model: newtonian, mu: " + std::to_string(mu) +
            "}, grid: {cells: " + cells + "}, dt_initial: " + std::to_string(window) + ", bodies: " + bodies + "}\n";
   }
 };
@@ -111,10 +118,11 @@ TEST(Settling, ALightSphereDivergesExplicitlyAndConvergesImplicitly) {
       if ((w.at(k) - w.at(k - 1)) * (w.at(k - 1) - w.at(k - 2)) < 0) ++n;
     return n;
   };
-  std::printf("rho_p/rho_f 0.3: w after 50 ms implicit %.4f m/s, explicit %.4f m/s, explicit with virtual mass "
-              "%.4f m/s; turns %d, %d and %d\n",
-              implicit.w.at(10), explicit_.w.at(10), stabilized.w.at(10), turns(implicit.w), turns(explicit_.w),
-              turns(stabilized.w));
+  std::printf(
+      "rho_p/rho_f 0.3: w after 50 ms implicit %.4f m/s, explicit %.4f m/s, explicit with virtual mass "
+      "%.4f m/s; turns %d, %d and %d\n",
+      implicit.w.at(10), explicit_.w.at(10), stabilized.w.at(10), turns(implicit.w), turns(explicit_.w),
+      turns(stabilized.w));
   EXPECT_LE(turns(implicit.w), 3);
   EXPECT_GT(implicit.w.at(10), 0.1);
   EXPECT_GE(turns(explicit_.w), 8);
@@ -314,26 +322,30 @@ struct FloorLayer {
                   ", shape: {type: sphere, radius: 0.0125}, material: {density: 1.2, friction: 0.3}, position: [" +
                   std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) + "]}\n";
       }
-    return "time: {end: " + std::to_string(end) + "}\n"
+    return "time: {end: " + std::to_string(end) +
+           "}\n"
            "coupling: {window: 0.02, scheme: serial-explicit}\n"
            "output: {checkpoint_every: 1000, fields_every: 0}\n"
            "gravity: [0, 0, -9.81]\n"
            "domain: {min: [0, 0, 0], max: [0.15, 0.15, 0.1]}\n"
            "effects: [gravity, buoyancy, hydrodynamics, contact, friction]\n"
-           "bodies:\n" + bodies +
+           "bodies:\n" +
+           bodies +
            "participants:\n"
-           "  rigidbody: {dt: 1.0e-3, options: {" + solver + "fluid_density: 1.0, virtual_mass: " +
-           std::to_string(virtual_mass) + ", walls: [x_min, x_max, y_min, y_max, z_min, z_max]}}\n"
+           "  rigidbody: {dt: 1.0e-3, options: {" +
+           solver + "fluid_density: 1.0, virtual_mass: " + std::to_string(virtual_mass) +
+           ", walls: [x_min, x_max, y_min, y_max, z_min, z_max]}}\n"
            "  fluid:\n"
            "    dt: 0.02\n"
-           "    options: {density: 1.0, viscosity: {model: newtonian, mu: 1.0e-3}, dt_initial: 0.02, " + fluid + "}\n";
+           "    options: {density: 1.0, viscosity: {model: newtonian, mu: 1.0e-3}, dt_initial: 0.02, " +
+           fluid + "}\n";
   }
 };
 
 struct LayerRun {
-  double fastest = 0;    // m/s, over the windows from `since`
-  double overlap = 0;    // the deepest of any two spheres or a sphere and the floor, of the radius
-  double height = 0;     // mean z at the end
+  double fastest = 0;  // m/s, over the windows from `since`
+  double overlap = 0;  // the deepest of any two spheres or a sphere and the floor, of the radius
+  double height = 0;   // mean z at the end
 };
 
 LayerRun run_layer(const std::string& name, const FloorLayer& layer, double since) {
@@ -348,16 +360,17 @@ LayerRun run_layer(const std::string& name, const FloorLayer& layer, double sinc
   for (int b = 0; b < 16; ++b) {
     const Series v = read_series(file, "/bodies/s" + std::to_string(b) + "/velocity");
     for (std::size_t k = 0; k < v.rows; ++k)
-      if (time.at(k) >= since - 1e-12) out.fastest = std::max(out.fastest, std::hypot(v.at(k, 0), v.at(k, 1), v.at(k, 2)));
+      if (time.at(k) >= since - 1e-12)
+        out.fastest = std::max(out.fastest, std::hypot(v.at(k, 0), v.at(k, 1), v.at(k, 2)));
     positions.push_back(read_series(file, "/bodies/s" + std::to_string(b) + "/position"));
   }
   for (std::size_t k = 0; k < time.rows; ++k)
     for (int a = 0; a < 16; ++a) {
       out.overlap = std::max(out.overlap, (r - positions[a].at(k, 2)) / r);
       for (int b = a + 1; b < 16; ++b) {
-        const double d = std::hypot(positions[a].at(k, 0) - positions[b].at(k, 0),
-                                    positions[a].at(k, 1) - positions[b].at(k, 1),
-                                    positions[a].at(k, 2) - positions[b].at(k, 2));
+        const double d =
+            std::hypot(positions[a].at(k, 0) - positions[b].at(k, 0), positions[a].at(k, 1) - positions[b].at(k, 1),
+                       positions[a].at(k, 2) - positions[b].at(k, 2));
         out.overlap = std::max(out.overlap, (2 * r - d) / r);
       }
     }
@@ -376,9 +389,10 @@ LayerRun run_layer(const std::string& name, const FloorLayer& layer, double sinc
 TEST(Settling, SpheresRestingOnTheFloorStayAtRestWithAVirtualMass) {
   const double plain = run_layer("settling_floor_plain", {.end = 0.8}, 0.2).fastest;
   const double stabilized = run_layer("settling_floor_virtual_mass", {.virtual_mass = 4}, 0.2).fastest;
-  std::printf("16 spheres on the floor, explicit: fastest %.4f m/s from 0.2 to 0.8 s; with virtual mass 4: %.6f m/s "
-              "from 0.2 to 1 s\n",
-              plain, stabilized);
+  std::printf(
+      "16 spheres on the floor, explicit: fastest %.4f m/s from 0.2 to 0.8 s; with virtual mass 4: %.6f m/s "
+      "from 0.2 to 1 s\n",
+      plain, stabilized);
   EXPECT_GT(plain, 0.5);
   EXPECT_LT(stabilized, 1e-3);
 }
@@ -388,7 +402,10 @@ TEST(Settling, SpheresRestingOnTheFloorStayAtRestWithAVirtualMass) {
 // pair and wall: the fluid sends
 // its response tensors (fluid/window_response.hpp) and the layer needs no virtual mass.
 FloorLayer immersed_layer(double z, double end) {
-  return {.z = z, .end = end, .solver = "lubrication: auto, ", .fluid = "grid: {cells: [36, 36, 24]}, bodies: {method: ibm}"};
+  return {.z = z,
+          .end = end,
+          .solver = "lubrication: auto, ",
+          .fluid = "grid: {cells: [36, 36, 24]}, bodies: {method: ibm}"};
 }
 
 // Guards against: a packed layer under explicit coupling moving by itself. The 16 spheres
@@ -408,9 +425,10 @@ TEST(Settling, ImmersedSpheresRestingOnTheFloorStayAtRestExplicitly) {
 // 0.2 s).
 TEST(Settling, AnImmersedLayerFallsOntoTheFloorWithoutOverlap) {
   const LayerRun r = run_layer("settling_fall_immersed", immersed_layer(0.05, 4.0), 4.0);
-  std::printf("16 spheres falling onto the floor, immersed boundary, explicit: deepest overlap %.3g %% of the radius, "
-              "mean height %.5f m, fastest at 4 s %.3g m/s\n",
-              100 * r.overlap, r.height, r.fastest);
+  std::printf(
+      "16 spheres falling onto the floor, immersed boundary, explicit: deepest overlap %.3g %% of the radius, "
+      "mean height %.5f m, fastest at 4 s %.3g m/s\n",
+      100 * r.overlap, r.height, r.fastest);
   EXPECT_LT(r.overlap, 0.01);
   EXPECT_NEAR(r.height, 0.0125, 2e-5);
   EXPECT_LT(r.fastest, 2e-4);
@@ -442,9 +460,10 @@ TEST(Settling, ImmersedBoundaryExplicitFollowsImplicit) {
       iterations = std::max(iterations, implicit.iterations.at(k));
       EXPECT_LT(implicit.residual.at(k), 1e-4) << "window " << k;
     }
-    std::printf("immersed sphere at rho_p/rho_f %.2f: w(0.1 s) explicit %.5f, implicit %.5f m/s; explicit off by at "
-                "most %.2f %%; implicit at most %g iterations\n",
-                ratio, explicit_.w.at(20), implicit.w.at(20), 100 * worst, iterations);
+    std::printf(
+        "immersed sphere at rho_p/rho_f %.2f: w(0.1 s) explicit %.5f, implicit %.5f m/s; explicit off by at "
+        "most %.2f %%; implicit at most %g iterations\n",
+        ratio, explicit_.w.at(20), implicit.w.at(20), 100 * worst, iterations);
     EXPECT_LT(worst, 0.01) << "rho_p/rho_f " << ratio;
     EXPECT_LE(iterations, 4) << "rho_p/rho_f " << ratio;
   }

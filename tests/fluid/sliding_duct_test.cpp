@@ -18,8 +18,10 @@ constexpr double kOpenFoam = 1.425;
 // two together, not each.)
 TEST(IbmSlidingDuct, SphereBetweenSlidingWallsHasOpenFoamsDrag) {
   const bench::DuctDrag r = bench::sphere_in_sliding_duct(IbmOptions{}, 3, 1.5);
-  PetscPrintf(PETSC_COMM_WORLD, "sphere held in the sliding duct, d/h 3, Re 1.5: F/(3 pi mu U d) %.5f, OpenFOAM %.3f; "
-              "%d steps, %.1f s\n", r.factor, kOpenFoam, r.steps, r.seconds);
+  PetscPrintf(PETSC_COMM_WORLD,
+              "sphere held in the sliding duct, d/h 3, Re 1.5: F/(3 pi mu U d) %.5f, OpenFOAM %.3f; "
+              "%d steps, %.1f s\n",
+              r.factor, kOpenFoam, r.steps, r.seconds);
   EXPECT_NEAR(r.factor / kOpenFoam, 1, 0.02);
 }
 

@@ -33,8 +33,7 @@ testing::GatheredVelocity with_options(const char* options) {
 TEST(PressureSolverOptions, AlgebraicAndGeometricMultigridAgree) {
   const auto reference = with_options("");
   for (const char* options :
-       {"-pressure_pc_type hypre",
-        "-pressure_pc_type mg -pressure_pc_mg_levels 2 -pressure_pc_mg_galerkin pmat"}) {
+       {"-pressure_pc_type hypre", "-pressure_pc_type mg -pressure_pc_mg_levels 2 -pressure_pc_mg_galerkin pmat"}) {
     const double difference = testing::max_difference(reference, with_options(options));
     PetscPrintf(PETSC_COMM_WORLD, "%s against the transforms: max |difference| = %.2e\n", options, difference);
     EXPECT_LT(difference, 1e-8) << options;

@@ -22,8 +22,7 @@ struct Plane {
 };
 
 Grid periodic_box(int n, Plane plane) {
-  std::array<Axis, 3> axes{Axis::uniform(1, 0, 1, true), Axis::uniform(1, 0, 1, true),
-                           Axis::uniform(1, 0, 1, true)};
+  std::array<Axis, 3> axes{Axis::uniform(1, 0, 1, true), Axis::uniform(1, 0, 1, true), Axis::uniform(1, 0, 1, true)};
   axes[static_cast<std::size_t>(plane.a)] = Axis::uniform(n, 0, 2 * kPi, true);
   axes[static_cast<std::size_t>(plane.b)] = Axis::uniform(n, 0, 2 * kPi, true);
   return Grid(PETSC_COMM_WORLD, std::move(axes));
@@ -51,8 +50,7 @@ void run(NavierStokes& flow, double dt, Plane plane) {
 double velocity_error(const NavierStokes& flow, Plane plane) {
   double e = 0;
   for (int c = 0; c < 3; ++c)
-    e = std::max(
-        e, testing::max_error(flow, c, [&](const Point& x) { return vortex(x, flow.time(), plane)[c]; }));
+    e = std::max(e, testing::max_error(flow, c, [&](const Point& x) { return vortex(x, flow.time(), plane)[c]; }));
   return e;
 }
 
@@ -99,8 +97,8 @@ TEST(TaylorGreen, SecondOrderInTime) {
   }
   const auto o = orders(errors);
   PetscPrintf(PETSC_COMM_WORLD,
-              "Taylor-Green time (n = 32; dt = 0.2, 0.1, 0.05): errors %.3e %.3e %.3e, orders %.2f %.2f\n",
-              errors[0], errors[1], errors[2], o[0], o[1]);
+              "Taylor-Green time (n = 32; dt = 0.2, 0.1, 0.05): errors %.3e %.3e %.3e, orders %.2f %.2f\n", errors[0],
+              errors[1], errors[2], o[0], o[1]);
   for (double order : o) EXPECT_GT(order, 1.8);
 }
 
@@ -126,8 +124,7 @@ TEST(TaylorGreen, AdaptiveStepsLandOnTheEndTime) {
       EXPECT_LE(reports[s].dt, 1.2 * reports[s - 1].dt + 1e-15);
     }
   }
-  PetscPrintf(PETSC_COMM_WORLD,
-              "Taylor-Green adaptive: %zu steps to t = 2.5, last dt %.4f, velocity error %.2e\n",
+  PetscPrintf(PETSC_COMM_WORLD, "Taylor-Green adaptive: %zu steps to t = 2.5, last dt %.4f, velocity error %.2e\n",
               reports.size(), reports.back().dt, velocity_error(flow, plane));
 }
 
@@ -169,8 +166,10 @@ TEST(TaylorGreen, AShiftedFrameCarriesTheVortexAlong) {
     errors.push_back(error);
   }
   const double order = orders(errors)[0];
-  PetscPrintf(PETSC_COMM_WORLD, "Taylor-Green carried at (0.7, -0.4) to t = 1 (n = 32, 64; dt = 1/n): errors %.3e %.3e, "
-              "order %.2f\n", errors[0], errors[1], order);
+  PetscPrintf(PETSC_COMM_WORLD,
+              "Taylor-Green carried at (0.7, -0.4) to t = 1 (n = 32, 64; dt = 1/n): errors %.3e %.3e, "
+              "order %.2f\n",
+              errors[0], errors[1], order);
   EXPECT_LT(errors[0], 1e-2);
   EXPECT_GT(order, 1.8);
 }

@@ -23,14 +23,12 @@ void expect_same_on_one_and_two_ranks(const ViscosityModel& viscosity, const cha
   for (const auto& component : serial)
     for (double v : component) magnitude = std::max(magnitude, std::abs(v));
   PetscPrintf(PETSC_COMM_WORLD,
-              "2 ranks vs 1 rank, %s (12 x 8 x 6, 20 steps): max |difference| = %.2e (max |u| = %.2f)\n",
-              name, difference, magnitude);
+              "2 ranks vs 1 rank, %s (12 x 8 x 6, 20 steps): max |difference| = %.2e (max |u| = %.2f)\n", name,
+              difference, magnitude);
   EXPECT_LT(difference, 1e-8);
 }
 
-TEST(TwoRanks, SameAnswerAsOneRank) {
-  expect_same_on_one_and_two_ranks(ViscosityModel::newtonian(0.02), "Newtonian");
-}
+TEST(TwoRanks, SameAnswerAsOneRank) { expect_same_on_one_and_two_ranks(ViscosityModel::newtonian(0.02), "Newtonian"); }
 
 // The viscosity field is read across rank boundaries too.
 TEST(TwoRanks, SameAnswerAsOneRankCarreau) {
@@ -52,13 +50,15 @@ BodyRun moving_box(MPI_Comm comm, const BodyOptions& method) {
                     {.cfl = 0.5, .dt_max = 0.05, .dt_initial = 0.01});
   const Eigen::Vector3d velocity(0.4, 0.1, -0.1), spin(0.5, 0, 2), start(0.75, 0.6, 0.5);
   const auto bodies = make_bodies(grid, method);
-  const std::size_t b = bodies->add({geometry::Box({0.2, 0.15, 0.1}),
-                                     geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity, spin});
+  const std::size_t b = bodies->add(
+      {geometry::Box({0.2, 0.15, 0.1}), geometry::Pose(start, Eigen::Quaterniond::Identity()), velocity, spin});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
   for (int s = 0; s < 12; ++s) {
     const double dt = flow.stable_dt(), t = flow.time() + dt;
-    bodies->move(b, geometry::Pose(start + t * velocity, Eigen::Quaterniond(Eigen::AngleAxisd(t * spin.norm(), spin.normalized()))),
-                 velocity, spin);
+    bodies->move(
+        b,
+        geometry::Pose(start + t * velocity, Eigen::Quaterniond(Eigen::AngleAxisd(t * spin.norm(), spin.normalized()))),
+        velocity, spin);
     EXPECT_LT(flow.step(dt, bodies->for_step()).max_divergence, 1e-8) << "step " << s;
   }
   return {{testing::gather(flow, 0), testing::gather(flow, 1), testing::gather(flow, 2)}, bodies->loads(flow)[b]};
@@ -79,7 +79,9 @@ void expect_bodies_same_on_one_and_two_ranks(const BodyOptions& method) {
   EXPECT_LT(torque, 1e-7 * serial.load.torque.norm());
 }
 
-TEST(TwoRanks, FictitiousBoundarySameAsOneRank) { expect_bodies_same_on_one_and_two_ranks(FbmOptions{.subsamples = 2}); }
+TEST(TwoRanks, FictitiousBoundarySameAsOneRank) {
+  expect_bodies_same_on_one_and_two_ranks(FbmOptions{.subsamples = 2});
+}
 
 // The markers' forcing converged tightly: its sweeps then end alike on one and two ranks.
 TEST(TwoRanks, ImmersedBoundarySameAsOneRank) {
@@ -109,10 +111,10 @@ CloudRun sphere_cloud(MPI_Comm comm) {
   tight.corrections = 30;
   tight.no_slip_tolerance = 1e-9;
   ImmersedBoundary bodies(grid, tight);
-  const std::vector<Eigen::Vector3d> starts = {{1.0, 1.0, 0.5}, {1.02, 0.4, 0.45}, {0.05, 1.5, 0.5},
-                                               {1.5, 0.3, 0.55}, {0.4, 0.98, 0.5}};
-  const std::vector<Eigen::Vector3d> velocities = {{0.3, -0.2, 0.1}, {0, 0.4, 0}, {-0.5, 0, 0.1},
-                                                   {0.1, 0.1, -0.2}, {0.2, 0.3, 0}};
+  const std::vector<Eigen::Vector3d> starts = {
+      {1.0, 1.0, 0.5}, {1.02, 0.4, 0.45}, {0.05, 1.5, 0.5}, {1.5, 0.3, 0.55}, {0.4, 0.98, 0.5}};
+  const std::vector<Eigen::Vector3d> velocities = {
+      {0.3, -0.2, 0.1}, {0, 0.4, 0}, {-0.5, 0, 0.1}, {0.1, 0.1, -0.2}, {0.2, 0.3, 0}};
   for (std::size_t i = 0; i < starts.size(); ++i)
     bodies.add({geometry::Sphere(0.2), geometry::Pose(starts[i], Eigen::Quaterniond::Identity()), velocities[i],
                 Eigen::Vector3d(0, 0, 1)});

@@ -16,8 +16,8 @@ constexpr double kRadius = 0.0075, kRho = 970, kMu = 0.373, kWindow = 0.005;
 
 // Ten Cate's oil around his sphere at d/h 6, windows of 5 ms.
 struct Oil {
-  Grid grid{PETSC_COMM_WORLD, {Axis::uniform(12, 0, 0.03, false), Axis::uniform(12, 0, 0.03, false),
-                               Axis::uniform(12, 0, 0.03, false)}};
+  Grid grid{PETSC_COMM_WORLD,
+            {Axis::uniform(12, 0, 0.03, false), Axis::uniform(12, 0, 0.03, false), Axis::uniform(12, 0, 0.03, false)}};
   RigidBody sphere{geometry::Sphere(kRadius), geometry::Pose({0.015, 0.015, 0.015}, Eigen::Quaterniond::Identity())};
   FluidProperties fluid{kRho, ViscosityModel::newtonian(kMu), {}};
   TimeStepOptions steps{.dt_max = kWindow, .dt_initial = kWindow};
@@ -26,11 +26,14 @@ struct Oil {
 TEST(WindowResponse, ASpheresIsIsotropicWithTheStokesDamping) {
   const Oil oil;
   const WindowResponse r = window_response(oil.grid, oil.sphere, oil.fluid, oil.steps, IbmOptions{}, kWindow);
-  const double volume = 4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3), stokes = 6 * std::numbers::pi * kMu * kRadius;
+  const double volume = 4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3),
+               stokes = 6 * std::numbers::pi * kMu * kRadius;
   const Eigen::Matrix3d a = r.added_mass.topLeftCorner<3, 3>();
-  PetscPrintf(PETSC_COMM_WORLD, "sphere at d/h 6 in ten Cate's oil, 5 ms windows: A / (rho V) = %.4f %.4f %.4f, "
-              "K_0 / (6 pi mu r) = %.3f, K_1 %.3f, K_15 %.3f\n", a(0, 0) / (kRho * volume), a(1, 1) / (kRho * volume),
-              a(2, 2) / (kRho * volume), r.kernel[0](0, 0) / stokes, r.kernel[1](0, 0) / stokes, r.kernel[15](0, 0) / stokes);
+  PetscPrintf(PETSC_COMM_WORLD,
+              "sphere at d/h 6 in ten Cate's oil, 5 ms windows: A / (rho V) = %.4f %.4f %.4f, "
+              "K_0 / (6 pi mu r) = %.3f, K_1 %.3f, K_15 %.3f\n",
+              a(0, 0) / (kRho * volume), a(1, 1) / (kRho * volume), a(2, 2) / (kRho * volume),
+              r.kernel[0](0, 0) / stokes, r.kernel[1](0, 0) / stokes, r.kernel[15](0, 0) / stokes);
   EXPECT_NEAR(r.added_damping(0, 0), stokes, 1e-12 * stokes);
   EXPECT_NEAR(r.added_damping(4, 4), 8 * std::numbers::pi * kMu * std::pow(kRadius, 3), 1e-18);
   for (int i = 0; i < 3; ++i) {
@@ -69,14 +72,16 @@ TEST(WindowResponse, TheKernelSuperposesToTheFluidsOwnLoad) {
   for (std::size_t k = 0; k < changes.size(); ++k) {
     const double v0 = v, x0 = x, d = changes[k] * unit, t0 = static_cast<double>(k) * kWindow;
     double mean = 0;
-    flow.advance_to(t0 + kWindow, bodies->for_step(),
-                    [&](double t) {
-                      const double s = t - t0;
-                      bodies->move(0, geometry::Pose(centre + Eigen::Vector3d(x0 + v0 * s + 0.5 * d * s * s / kWindow, 0, 0),
-                                                     Eigen::Quaterniond::Identity()),
-                                   {v0 + d * s / kWindow, 0, 0}, Eigen::Vector3d::Zero());
-                    },
-                    [&](const StepReport& step) { mean += bodies->loads(flow)[0].force.x() * step.dt / kWindow; });
+    flow.advance_to(
+        t0 + kWindow, bodies->for_step(),
+        [&](double t) {
+          const double s = t - t0;
+          bodies->move(0,
+                       geometry::Pose(centre + Eigen::Vector3d(x0 + v0 * s + 0.5 * d * s * s / kWindow, 0, 0),
+                                      Eigen::Quaterniond::Identity()),
+                       {v0 + d * s / kWindow, 0, 0}, Eigen::Vector3d::Zero());
+        },
+        [&](const StepReport& step) { mean += bodies->loads(flow)[0].force.x() * step.dt / kWindow; });
     v = v0 + d;
     x = x0 + (v0 + 0.5 * d) * kWindow;
     double predicted = 0;

@@ -12,10 +12,9 @@
 namespace cosim::fuzz {
 
 inline std::filesystem::path scratch_file(const std::uint8_t* data, std::size_t size, const std::string& extension) {
-  const auto path =
-      std::filesystem::temp_directory_path() / ("cosim-fuzz-" + std::to_string(::getpid()) + extension);
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data),
-                                                                static_cast<std::streamsize>(size));
+  const auto path = std::filesystem::temp_directory_path() / ("cosim-fuzz-" + std::to_string(::getpid()) + extension);
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   return path;
 }
 

@@ -43,18 +43,22 @@ int main(int argc, char** argv) {
   hello.header.needs = 1;
   hello.header.ranks = 2;
   write(dir, "hello", hello);
-  write(dir, "init", message(Type::Init, {Array::text("scene.yaml"), Array::text("time: {end: 1}\n"),
-                                          Array::of(Tag::Poses, 1, kPoseWidth, std::vector<double>(kPoseWidth, 0.5))}));
-  write(dir, "advance", message(Type::Advance, {Array::of(Tag::Poses, 2, kPoseWidth, std::vector<double>(2 * kPoseWidth, 1.0)),
-                                                Array::of(Tag::Forces, 2, kForceWidth, std::vector<double>(2 * kForceWidth, -2.0))}));
-  write(dir, "result", message(Type::Result, {Array::of(Tag::Forces, 1, kForceWidth, std::vector<double>(kForceWidth, 3.0)),
-                                              Array::of(Tag::Stats, 1, kStatsWidth, {4, 0.25}),
-                                              Array::of(Tag::Responses, 1, kResponseWidth, std::vector<double>(kResponseWidth, 0.0))}));
+  write(dir, "init",
+        message(Type::Init, {Array::text("scene.yaml"), Array::text("time: {end: 1}\n"),
+                             Array::of(Tag::Poses, 1, kPoseWidth, std::vector<double>(kPoseWidth, 0.5))}));
+  write(dir, "advance",
+        message(Type::Advance, {Array::of(Tag::Poses, 2, kPoseWidth, std::vector<double>(2 * kPoseWidth, 1.0)),
+                                Array::of(Tag::Forces, 2, kForceWidth, std::vector<double>(2 * kForceWidth, -2.0))}));
+  write(
+      dir, "result",
+      message(Type::Result, {Array::of(Tag::Forces, 1, kForceWidth, std::vector<double>(kForceWidth, 3.0)),
+                             Array::of(Tag::Stats, 1, kStatsWidth, {4, 0.25}),
+                             Array::of(Tag::Responses, 1, kResponseWidth, std::vector<double>(kResponseWidth, 0.0))}));
   write(dir, "state", message(Type::State, {Array::of(Tag::State, 1, 4, {1, 2, 3, 4})}));
-  write(dir, "field", message(Type::Field, {Array::text("x"), Array::of(Tag::Field, 1, 3, {0, 0.5, 1}),
-                                            Array::text("p"), Array::of(Tag::Field, 2, 1, {7, 8}),
-                                            Array::of(Tag::Points, 2, 3, {0, 0, 0, 1, 1, 1}),
-                                            Array::of(Tag::PointAttributes, 1, 2, {5, 6})}));
+  write(dir, "field",
+        message(Type::Field, {Array::text("x"), Array::of(Tag::Field, 1, 3, {0, 0.5, 1}), Array::text("p"),
+                              Array::of(Tag::Field, 2, 1, {7, 8}), Array::of(Tag::Points, 2, 3, {0, 0, 0, 1, 1, 1}),
+                              Array::of(Tag::PointAttributes, 1, 2, {5, 6})}));
   write(dir, "error", message(Type::Error, {Array::text("the solver diverged")}));
   write(dir, "stop", message(Type::Stop, {}));
 }

@@ -63,8 +63,8 @@ Finished run_scene_text(const fs::path& dir, const std::string& yaml, const std:
 
 CosimProcess::CosimProcess(const std::vector<std::string>& args, const std::string& network_namespace) {
   static int counter = 0;
-  log_ = fs::temp_directory_path() /
-         ("cosim-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + ".log");
+  log_ =
+      fs::temp_directory_path() / ("cosim-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + ".log");
   const auto cosim = fs::read_symlink("/proc/self/exe").parent_path() / "cosim";
   std::vector<std::string> argv{cosim.string()};
   argv.insert(argv.end(), args.begin(), args.end());

@@ -26,7 +26,7 @@ class CosimProcess {
   CosimProcess& operator=(const CosimProcess&) = delete;
   pid_t pid() const { return pid_; }
   std::string output() const;  // what it printed so far
-  Finished wait();  // fails the test (exception) after 60 s
+  Finished wait();             // fails the test (exception) after 60 s
 
  private:
   pid_t pid_ = -1;
@@ -36,8 +36,7 @@ class CosimProcess {
 inline Finished run_cosim(const std::vector<std::string>& args) { return CosimProcess(args).wait(); }
 
 // Writes dir/<stem>.yaml and runs `cosim run` on it, writing dir/<stem>.h5.
-Finished run_scene_text(const std::filesystem::path& dir, const std::string& yaml,
-                        const std::string& stem = "scene");
+Finished run_scene_text(const std::filesystem::path& dir, const std::string& yaml, const std::string& stem = "scene");
 std::vector<std::string> run_args(const std::filesystem::path& dir, const std::string& stem = "scene");
 
 // The process started by `parent` whose command ends with `program`, or 0.

@@ -23,7 +23,9 @@ std::string scene(const std::string& effects) {
          "output: {fields_every: 0}\n"
          "gravity: [0, 0, -9.81]\n"
          "domain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
-         "effects: " + effects + "\n"
+         "effects: " +
+         effects +
+         "\n"
          "bodies:\n"
          "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2000}, position: [0.5, 0.5, 0.5]}\n"
          "participants:\n"
@@ -59,8 +61,9 @@ TEST(Effects, HydrodynamicsAddsTheFluidWhichSendsNoFieldsNobodyTakes) {
   const auto dir = scratch_dir("effects_fluid");
   const Finished f = run_scene_text(dir, scene("[gravity, contact, buoyancy, hydrodynamics]"));
   ASSERT_EQ(f.exit_code, 0) << f.output;
-  EXPECT_THAT(f.output,
-              HasSubstr("participants: rigidbody (provides poses, needs forces), fluid (provides forces, needs poses)\n"));
+  EXPECT_THAT(
+      f.output,
+      HasSubstr("participants: rigidbody (provides poses, needs forces), fluid (provides forces, needs poses)\n"));
   EXPECT_THAT(f.output, HasSubstr("started fluid"));
   EXPECT_THAT(f.output, Not(HasSubstr("started tracker")));
   // Neither the run file (fields_every: 0) nor a participant takes the fluid's fields.
@@ -73,8 +76,9 @@ TEST(Effects, HydrodynamicsAddsTheFluidWhichSendsNoFieldsNobodyTakes) {
 
 TEST(Effects, RarefiedGasAddsTheTracker) {
   const Finished f = run("effects_tracker", "[gravity, contact, rarefied_gas]");
-  EXPECT_THAT(f.output,
-              HasSubstr("participants: rigidbody (provides poses, needs forces), tracker (provides forces, needs poses)\n"));
+  EXPECT_THAT(
+      f.output,
+      HasSubstr("participants: rigidbody (provides poses, needs forces), tracker (provides forces, needs poses)\n"));
   EXPECT_THAT(f.output, HasSubstr("started tracker"));
   EXPECT_THAT(f.output, Not(HasSubstr("started fluid")));
 }
@@ -124,7 +128,8 @@ TEST(Check, EachProgramItStartsReadsItsOwnSection) {
     const Finished bad = run_cosim({"check", file.string()});
     EXPECT_EQ(bad.exit_code, 2) << bad.output;
     EXPECT_THAT(bad.output, HasSubstr("cosim-" + e.program + ": invalid scene: " + file.string() + e.message));
-    EXPECT_THAT(bad.output, HasSubstr("cosim: invalid scene: " + file.string() + ": " + e.program + " refused its section"));
+    EXPECT_THAT(bad.output,
+                HasSubstr("cosim: invalid scene: " + file.string() + ": " + e.program + " refused its section"));
   }
 
   // A program that has not read its section within coupling.timeout is stopped and named:

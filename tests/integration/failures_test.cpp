@@ -199,8 +199,8 @@ TEST(Failures, CheckValidatesWithoutRunning) {
 
 TEST(Launcher, MpirunWorksAsRootWithoutExportedVariables) {
   // What a user's shell would have: none of the variables Open MPI needs as root.
-  for (const char* v : {"OMPI_ALLOW_RUN_AS_ROOT", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM",
-                        "OMPI_MCA_rmaps_base_oversubscribe", "OMPI_MCA_btl"})
+  for (const char* v : {"OMPI_ALLOW_RUN_AS_ROOT", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "OMPI_MCA_rmaps_base_oversubscribe",
+                        "OMPI_MCA_btl"})
     unsetenv(v);
   launcher::Process p("mpi", {"mpirun", "-n", "2", "true"}, launcher::mpi_environment());
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);

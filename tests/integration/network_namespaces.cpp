@@ -19,7 +19,8 @@ NamespacePair::NamespacePair() {
     return;
   }
   const std::string id = std::to_string(getpid());
-  const std::string a = "cosim-a-" + id, b = "cosim-b-" + id, veth = "cv" + id.substr(id.size() > 8 ? id.size() - 8 : 0);
+  const std::string a = "cosim-a-" + id, b = "cosim-b-" + id,
+                    veth = "cv" + id.substr(id.size() > 8 ? id.size() - 8 : 0);
   // Left behind by a test process of the same pid that was killed.
   sh("ip netns del " + a);
   sh("ip netns del " + b);
@@ -53,7 +54,8 @@ NamespacePair::~NamespacePair() {
 
 int NamespacePair::in_second(const std::string& command) const {
   std::string line = command;
-  for (std::size_t at = line.find("LINK"); at != std::string::npos; at = line.find("LINK", at)) line.replace(at, 4, link_);
+  for (std::size_t at = line.find("LINK"); at != std::string::npos; at = line.find("LINK", at))
+    line.replace(at, 4, link_);
   return sh("ip netns exec " + second_ + " " + line);
 }
 

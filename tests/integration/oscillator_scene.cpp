@@ -21,8 +21,7 @@ std::string OscillatorScene::yaml() const {
     << "  tolerance: " << tolerance << "\n"
     << "  force_tolerance: " << force_tolerance << "\n"
     << "  transport: " << transport << "\n"
-    << (interface.empty() ? "" : "  interface: " + interface + "\n")
-    << "  timeout: " << timeout << "\n"
+    << (interface.empty() ? "" : "  interface: " + interface + "\n") << "  timeout: " << timeout << "\n"
     << "  heartbeat: " << heartbeat << "\n"
     << "output: {file: " << output << ", every: 1, checkpoint_every: " << checkpoint_every << "}\n"
     << "gravity: [0, 0, 0]\n"

@@ -27,7 +27,7 @@ struct OscillatorScene {
   double heartbeat = 10;
   int checkpoint_every = 10;
   std::vector<std::string> mass_keys, spring_keys;  // more keys of a section, e.g. "hosts: [n1]"
-  std::vector<std::string> spring_extra;  // more option lines for the spring, e.g. "kill_at: 0.5"
+  std::vector<std::string> spring_extra;            // more option lines for the spring, e.g. "kill_at: 0.5"
   std::string spring_command = "[cosim-test-oscillator-spring]";  // its scene key `command`
   std::string output = "run.h5";
 

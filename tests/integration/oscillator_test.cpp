@@ -15,7 +15,7 @@ namespace cosim::testing {
 namespace {
 
 struct Outcome {
-  double max_error = 0;        // max |x1 - exact| over all written windows
+  double max_error = 0;  // max |x1 - exact| over all written windows
   double mean_iterations = 0;
   double max_residual = 0;
   Series position;
@@ -50,8 +50,8 @@ double observed_order(OscillatorScene scene, const std::string& name) {
     scene.dt_spring /= 2;
   }
   const double order = std::log2(errors[1] / errors[2]);
-  std::cout << name << ": errors " << errors[0] << ", " << errors[1] << ", " << errors[2]
-            << "  observed order " << std::log2(errors[0] / errors[1]) << ", " << order << "\n";
+  std::cout << name << ": errors " << errors[0] << ", " << errors[1] << ", " << errors[2] << "  observed order "
+            << std::log2(errors[0] / errors[1]) << ", " << order << "\n";
   return order;
 }
 
@@ -127,8 +127,7 @@ TEST(Oscillator, StiffCaseDivergesExplicitlyAndConvergesImplicitly) {
   s.scheme = "serial-implicit";
   const auto implicit = run_scene(s, "stiff_implicit");
   const double implicit_amplitude = max_amplitude(implicit.position);
-  std::cout << "implicit: max |x1| " << implicit_amplitude << " m, max residual "
-            << implicit.max_residual << "\n";
+  std::cout << "implicit: max |x1| " << implicit_amplitude << " m, max residual " << implicit.max_residual << "\n";
   EXPECT_LT(implicit.max_residual, s.tolerance);
   // Energy is bounded: the first mass never moves further than both springs allow.
   EXPECT_LT(implicit_amplitude, 3 * s.physics.x1);
@@ -146,8 +145,8 @@ TEST(Oscillator, AitkenAndIqnIlsNeedFewerIterationsThanConstantRelaxation) {
   for (const std::string a : {"constant", "aitken", "iqn-ils"}) {
     s.acceleration = a;  // all with the same first relaxation factor, 0.5
     by[a] = run_scene(s, "accel_" + a);
-    std::cout << a << ": " << by[a].mean_iterations << " iterations per window, max residual "
-              << by[a].max_residual << "\n";
+    std::cout << a << ": " << by[a].mean_iterations << " iterations per window, max residual " << by[a].max_residual
+              << "\n";
     EXPECT_LT(by[a].max_residual, s.tolerance) << a;
   }
   EXPECT_LT(by["aitken"].mean_iterations, by["constant"].mean_iterations);
@@ -169,8 +168,8 @@ TEST(Oscillator, ForceToleranceStopsWindowsWhoseForcesNoLongerChange) {
   const Outcome tight = run_scene(s, "force_tolerance_off");
   s.force_tolerance = 1e-3;
   const Outcome loose = run_scene(s, "force_tolerance_on");
-  std::cout << "force tolerance 0: " << tight.mean_iterations << " iterations per window, error "
-            << tight.max_error << "; 1e-3 N: " << loose.mean_iterations << ", error " << loose.max_error << "\n";
+  std::cout << "force tolerance 0: " << tight.mean_iterations << " iterations per window, error " << tight.max_error
+            << "; 1e-3 N: " << loose.mean_iterations << ", error " << loose.max_error << "\n";
   EXPECT_LT(loose.mean_iterations, tight.mean_iterations - 0.5);
   EXPECT_LT(std::abs(loose.max_error - tight.max_error), 0.01 * tight.max_error);
 }
@@ -186,8 +185,8 @@ TEST(Oscillator, SubcyclingWithDifferentStepsGivesTheSameAnswer) {
   double diff = 0;
   for (std::size_t i = 0; i < same.position.rows; ++i)
     diff = std::max(diff, std::abs(same.position.at(i, 0) - mixed.position.at(i, 0)));
-  std::cout << "subcycling: max difference " << diff << " m, errors " << same.max_error << ", "
-            << mixed.max_error << "\n";
+  std::cout << "subcycling: max difference " << diff << " m, errors " << same.max_error << ", " << mixed.max_error
+            << "\n";
   EXPECT_LT(diff, 1e-4);
   EXPECT_LT(mixed.max_error, 2e-4);
 }

@@ -83,8 +83,9 @@ TEST(Placement, HostsAndHostfileGoToMpirunWithTheCouplersVariables) {
   const std::string forwarded =
       " -x COSIM_ENDPOINT -x COSIM_PARTICIPANT -x COSIM_HEARTBEAT -x COSIM_CURVE_SERVER_KEY -x COSIM_CURVE_PUBLIC_KEY"
       " -x COSIM_CURVE_SECRET_KEY ";
-  EXPECT_THAT(r.output, ::testing::ContainsRegex("starts mass .*mpirun -n 4 --hostfile " + (dir / "nodes.txt").string() +
-                                                 forwarded + program("cosim-test-oscillator-mass")));
+  EXPECT_THAT(r.output,
+              ::testing::ContainsRegex("starts mass .*mpirun -n 4 --hostfile " + (dir / "nodes.txt").string() +
+                                       forwarded + program("cosim-test-oscillator-mass")));
   EXPECT_THAT(r.output, ::testing::ContainsRegex("starts spring .*mpirun -n 1 --host node1,node2" + forwarded +
                                                  program("cosim-test-oscillator-spring")));
 }

@@ -127,7 +127,8 @@ TEST(Remote, ForeignClientsAreRefusedAndTheRunFinishesUnharmed) {
   EXPECT_THAT(r.output, AnyOf(HasSubstr("refused a connection: it does not use CURVE (no key)"),
                               HasSubstr("refused a connection: its handshake failed")));
   EXPECT_THAT(r.output, HasSubstr("refused a connection from 127.0.0.1: its key is not one of this run's"));
-  EXPECT_THAT(r.output, HasSubstr("ignored a message from a client holding the key of 'mass' under the name 'intruder'"));
+  EXPECT_THAT(r.output,
+              HasSubstr("ignored a message from a client holding the key of 'mass' under the name 'intruder'"));
   expect_same_series(dir / "quiet.h5", dir / "knocked.h5");
 }
 

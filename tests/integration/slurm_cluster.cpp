@@ -67,49 +67,61 @@ SlurmCluster::SlurmCluster() {
     why_ = "no readable /etc/munge/munge.key (the munge package makes it)";
     return;
   }
-  char host[256] = {};
-  gethostname(host, sizeof host - 1);
-  node_ = std::string(host).substr(0, std::string(host).find('.'));
+  char name[256] = {};
+  gethostname(name, sizeof name - 1);
+  const std::string host = std::string(name).substr(0, std::string(name).find('.'));
   dir_ = fs::temp_directory_path() / ("cosim-slurm-" + std::to_string(getpid()));
   fs::create_directories(dir_ / "state");
-  fs::create_directories(dir_ / "spool");
   fs::copy_file("/etc/munge/munge.key", dir_ / "munge.key", fs::copy_options::overwrite_existing);
   fs::permissions(dir_ / "munge.key", fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::replace);
   // Ports of this process's own (several test processes may each run a cluster), above
   // Linux's ephemeral range (32768-60999), where couplers bound to port 0 land.
-  const int port = 61000 + static_cast<int>(getpid() % 2000) * 2;
+  const int port = 61000 + static_cast<int>(getpid() % 1400) * 3;
   const std::string d = dir_.string();
-  std::ofstream(conf()) << "ClusterName=cosimtest\nSlurmctldHost=" << node_ << "\nSlurmUser=root\nSlurmdUser=root\n"
-                        << "AuthType=auth/munge\nCredType=cred/munge\nAuthInfo=socket=" << d << "/munge.sock\n"
-                        << "StateSaveLocation=" << d << "/state\nSlurmdSpoolDir=" << d << "/spool\n"
-                        << "SlurmctldPidFile=" << d << "/slurmctld.pid\nSlurmdPidFile=" << d << "/slurmd.pid\n"
-                        << "SlurmctldPort=" << port << "\nSlurmdPort=" << port + 1 << "\n"
-                        << "ProctrackType=proctrack/linuxproc\nTaskPlugin=task/none\nSelectType=select/cons_tres\n"
-                        // Heterogeneous jobs start only from the backfill scheduler.
-                        << "SchedulerType=sched/backfill\n"
-                        << "SelectTypeParameters=CR_Core\nSlurmdParameters=config_overrides\nReturnToService=2\n"
-                        << "MpiDefault=none\nJobAcctGatherType=jobacct_gather/none\nKillWait=5\n"
-                        << "NodeName=" << node_ << " CPUs=8 State=UNKNOWN\n"
-                        << "PartitionName=debug Nodes=ALL Default=YES MaxTime=INFINITE State=UP OverSubscribe=FORCE\n";
+  // Two nodes on this host, each with its own slurmd: the components of a heterogeneous
+  // job do not start side by side on one node (the backfill scheduler plans whole nodes).
+  nodes_ = {"cosim1", "cosim2"};
+  std::ofstream conf_file(conf());
+  conf_file << "ClusterName=cosimtest\nSlurmctldHost=" << host << "\nSlurmUser=root\nSlurmdUser=root\n"
+            << "AuthType=auth/munge\nCredType=cred/munge\nAuthInfo=socket=" << d << "/munge.sock\n"
+            << "StateSaveLocation=" << d << "/state\nSlurmdSpoolDir=" << d << "/spool/%n\n"
+            << "SlurmctldPidFile=" << d << "/slurmctld.pid\nSlurmdPidFile=" << d << "/slurmd-%n.pid\n"
+            << "SlurmctldPort=" << port << "\n"
+            << "ProctrackType=proctrack/linuxproc\nTaskPlugin=task/none\nSelectType=select/cons_tres\n"
+            // Heterogeneous jobs start only from the backfill scheduler; it runs every second
+            // (default 30 s) so that they start at once.
+            << "SchedulerType=sched/backfill\nSchedulerParameters=bf_interval=1\n"
+            << "SelectTypeParameters=CR_Core\nSlurmdParameters=config_overrides\nReturnToService=2\n"
+            << "MpiDefault=none\nJobAcctGatherType=jobacct_gather/none\nKillWait=5\n";
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    fs::create_directories(dir_ / "spool" / nodes_[i]);
+    conf_file << "NodeName=" << nodes_[i] << " NodeHostname=" << host << " NodeAddr=127.0.0.1 Port=" << port + 1 + i
+              << " CPUs=4 State=UNKNOWN\n";
+  }
+  conf_file << "PartitionName=debug Nodes=ALL Default=YES MaxTime=INFINITE State=UP OverSubscribe=FORCE\n";
+  conf_file.close();
   munged_ = spawn({"/usr/sbin/munged", "--foreground", "--force", "--socket=" + d + "/munge.sock",
                    "--key-file=" + d + "/munge.key", "--pid-file=" + d + "/munged.pid", "--seed-file=" + d + "/seed"},
                   dir_ / "munged.log");
-  for (int i = 0; i < 100 && !fs::exists(dir_ / "munge.sock"); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  for (int i = 0; i < 100 && !fs::exists(dir_ / "munge.sock"); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   slurmctld_ = spawn({"/usr/sbin/slurmctld", "-D", "-i", "-f", conf().string()}, dir_ / "slurmctld.log");
-  slurmd_ = spawn({"/usr/sbin/slurmd", "-D", "-f", conf().string()}, dir_ / "slurmd.log");
-  const std::string sinfo = "SLURM_CONF=" + conf().string() + " timeout 2 sinfo -h -o %t 2>&1";
+  for (const auto& node : nodes_)
+    slurmd_.push_back(
+        spawn({"/usr/sbin/slurmd", "-D", "-N", node, "-f", conf().string()}, dir_ / ("slurmd-" + node + ".log")));
+  const std::string sinfo = "SLURM_CONF=" + conf().string() + " timeout 2 sinfo -h -t idle -o %D 2>&1";
   for (int i = 0; i < 150; ++i) {
     const std::string state = output_of(sinfo);
-    if (state.starts_with("idle")) return;
+    if (state == std::to_string(nodes_.size()) + "\n") return;
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
-  why_ = "the node did not come up within 15 s (logs in " + d + ")";
+  why_ = "the nodes did not come up within 15 s (logs in " + d + ")";
 }
 
 SlurmCluster::~SlurmCluster() {
   // A job a failed test left running would outlive slurmd (its slurmstepd does).
   if (running()) (void)output_of("SLURM_CONF=" + conf().string() + " timeout 5 scancel --full -u root 2>&1");
-  stop(slurmd_);
+  for (pid_t& pid : slurmd_) stop(pid);
   stop(slurmctld_);
   stop(munged_);
   if (running() && !dir_.empty()) {

@@ -1,14 +1,16 @@
 // A real Slurm on this machine, for the tests of runs inside an allocation: munged,
 // slurmctld and slurmd (Debian's slurm-wlm and munge) started in the foreground from a
-// configuration written into a temporary folder, one node (this host) with 8 CPUs that
-// oversubscribe, so that several srun steps and the components of a heterogeneous job fit
-// side by side. `why()` says why not where the machine cannot run the daemons.
+// configuration written into a temporary folder, two nodes on this host (a slurmd each) with
+// 4 CPUs that oversubscribe, so that several srun steps and the components of a
+// heterogeneous job fit side by side. `why()` says why not where the machine cannot run the
+// daemons.
 #pragma once
 
 #include <sys/types.h>
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace cosim::testing {
 
@@ -21,14 +23,16 @@ class SlurmCluster {
 
   bool running() const { return why_.empty(); }
   const std::string& why() const { return why_; }
-  const std::string& node() const { return node_; }
+  const std::vector<std::string>& nodes() const { return nodes_; }
   // slurm.conf, for SLURM_CONF: the clients (sbatch, srun, scancel) find the cluster by it.
   std::filesystem::path conf() const { return dir_ / "slurm.conf"; }
 
  private:
   std::filesystem::path dir_;
-  std::string node_, why_;
-  pid_t munged_ = -1, slurmctld_ = -1, slurmd_ = -1;
+  std::vector<std::string> nodes_;
+  std::string why_;
+  pid_t munged_ = -1, slurmctld_ = -1;
+  std::vector<pid_t> slurmd_;
 };
 
 }  // namespace cosim::testing

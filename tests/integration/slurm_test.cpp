@@ -97,21 +97,30 @@ SlurmCluster* Slurm::cluster_ = nullptr;
 
 TEST_F(Slurm, SbatchRunsTheSceneWithItsParticipantAsAStepOfTheJob) {
   write_file(dir_ / "step.yaml", placed("hosts: scheduler").yaml());
-  const auto job = script("step", "#SBATCH --ntasks=2\n", "run " + (dir_ / "step.yaml").string() + " -o " +
-                                                                (dir_ / "step.h5").string() + " -q");
+  const auto job = script("step", "#SBATCH --ntasks=2\n",
+                          "run " + (dir_ / "step.yaml").string() + " -o " + (dir_ / "step.h5").string() + " -q");
   ASSERT_EQ(submit_and_wait(job, "step"), 0) << job_output("step");
   EXPECT_THAT(job_output("step"), HasSubstr("srun --ntasks=1 --exact"));
   expect_same_as_local("step");
 }
 
 TEST_F(Slurm, HostfileNamesTheNodesOfTheAllocation) {
-  write_file(dir_ / "nodes.txt", cluster_->node() + "\n");
+  write_file(dir_ / "nodes.txt", cluster_->nodes().front() + "\n");
   write_file(dir_ / "listed.yaml", placed("hostfile: nodes.txt").yaml());
   const auto job = script("listed", "#SBATCH --ntasks=2\n",
                           "run " + (dir_ / "listed.yaml").string() + " -o " + (dir_ / "listed.h5").string() + " -q");
   ASSERT_EQ(submit_and_wait(job, "listed"), 0) << job_output("listed");
   EXPECT_THAT(job_output("listed"), HasSubstr("srun --nodefile="));
   expect_same_as_local("listed");
+}
+
+TEST_F(Slurm, HetGroupRunsTheParticipantInItsComponentOfTheJob) {
+  write_file(dir_ / "het.yaml", placed("het_group: 1").yaml());
+  const auto job = script("het", "#SBATCH --ntasks=1\n#SBATCH hetjob\n#SBATCH --ntasks=1\n",
+                          "run " + (dir_ / "het.yaml").string() + " -o " + (dir_ / "het.h5").string() + " -q");
+  ASSERT_EQ(submit_and_wait(job, "het"), 0) << job_output("het");
+  EXPECT_THAT(job_output("het"), HasSubstr("srun --het-group=1"));
+  expect_same_as_local("het");
 }
 
 // Guards against: a job that reaches its time limit or is cancelled leaving a run file that
@@ -121,7 +130,8 @@ TEST_F(Slurm, CancelledJobResumesBitIdentical) {
   s.spring_extra = {"delay: 0.01"};  // a second or more of run to cancel during
   write_file(dir_ / "cancelled.yaml", s.yaml());
   const auto h5 = (dir_ / "cancelled.h5").string();
-  const auto job = script("cancelled", "#SBATCH --ntasks=2\n", "run " + (dir_ / "cancelled.yaml").string() + " -o " + h5);
+  const auto job =
+      script("cancelled", "#SBATCH --ntasks=2\n", "run " + (dir_ / "cancelled.yaml").string() + " -o " + h5);
   const std::string id =
       output_of("sbatch --parsable --output=" + (dir_ / "cancelled.out").string() + " " + job.string());
   ASSERT_FALSE(id.empty());

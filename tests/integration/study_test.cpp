@@ -80,7 +80,8 @@ TEST(Study, OscillatorShowsTheSchemesOrderAndTheExtrapolateBeatsTheFinestLevel) 
   const std::string report = read_file(dir / "study" / "report.md");
   EXPECT_THAT(report, HasSubstr("| level | coupling.window | participants.mass.dt | participants.spring.dt | value |"));
   EXPECT_THAT(report, HasSubstr("Set on every level: time.end = 1.0."));
-  for (const char* f : {"level_1.yaml", "level_3.h5", "level_2.log"}) EXPECT_TRUE(std::filesystem::exists(dir / "study" / f)) << f;
+  for (const char* f : {"level_1.yaml", "level_3.h5", "level_2.log"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "study" / f)) << f;
 }
 
 // The finest level's row of a study of `scene`, after checking it ran.
@@ -165,8 +166,8 @@ participants:
 TEST(Study, ChannelStartUpShowsCrankNicolsonsOrderInTime) {
   const std::string steps = "=0.0025,0.00125,0.000625";
   const auto finest = finest_row(scratch_dir("study_channel_time"), kChannel,
-                                 {"--vary", "coupling.window" + steps, "--vary", "participants.fluid.dt" + steps, "--vary",
-                                  "participants.fluid.options.dt_initial" + steps, "--measure",
+                                 {"--vary", "coupling.window" + steps, "--vary", "participants.fluid.dt" + steps,
+                                  "--vary", "participants.fluid.options.dt_initial" + steps, "--measure",
                                   "U=final(field:fluid:velocity.x)", "--order", "2"});
   ASSERT_FALSE(finest.empty());
   const auto [finest_error, extrapolate_error] = channel_errors(finest);
@@ -178,11 +179,11 @@ TEST(Study, ChannelStartUpShowsCrankNicolsonsOrderInTime) {
 // converges at least at the second order of the discretisation (2.9 here), and the
 // extrapolate beats the finest level.
 TEST(Study, ChannelStartUpConvergesWithTheGrid) {
-  const auto finest = finest_row(scratch_dir("study_channel_grid"), kChannel,
-                                 {"--vary", "participants.fluid.options.grid.cells=[4,8,4],[4,16,4],[4,32,4]", "--set",
-                                  "coupling.window=0.0005", "--set", "participants.fluid.dt=0.0005", "--set",
-                                  "participants.fluid.options.dt_initial=0.0005", "--measure",
-                                  "U=final(field:fluid:velocity.x)", "--order", "2"});
+  const auto finest = finest_row(
+      scratch_dir("study_channel_grid"), kChannel,
+      {"--vary", "participants.fluid.options.grid.cells=[4,8,4],[4,16,4],[4,32,4]", "--set", "coupling.window=0.0005",
+       "--set", "participants.fluid.dt=0.0005", "--set", "participants.fluid.options.dt_initial=0.0005", "--measure",
+       "U=final(field:fluid:velocity.x)", "--order", "2"});
   ASSERT_FALSE(finest.empty());
   const auto [finest_error, extrapolate_error] = channel_errors(finest);
   EXPECT_GT(std::stod(finest.at("p")), 1.7);
@@ -205,9 +206,9 @@ TEST(Study, BadArgumentsAreNamedAndExitWithStatusTwo) {
   };
   EXPECT_THAT(refused({"--vary", "coupler.window=0.02,0.01", "--measure", measure}),
               HasSubstr("cosim study: --vary coupler.window=0.02,0.01: the scene has no key 'coupler'"));
-  EXPECT_THAT(refused({"--vary", "coupling.window=0.02,0.01", "--vary", "participants.mass.dt=0.002", "--measure",
-                       measure}),
-              HasSubstr("--vary participants.mass.dt=0.002: give at least two values"));
+  EXPECT_THAT(
+      refused({"--vary", "coupling.window=0.02,0.01", "--vary", "participants.mass.dt=0.002", "--measure", measure}),
+      HasSubstr("--vary participants.mass.dt=0.002: give at least two values"));
   EXPECT_THAT(refused({"--vary", "coupling.window=0.02,0.01", "--vary", "participants.mass.dt=0.002,0.001,0.0005",
                        "--measure", measure}),
               HasSubstr("every --vary needs one value per level"));

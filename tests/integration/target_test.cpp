@@ -44,7 +44,8 @@ TEST(Target, ChosenLevelMeetsTheToleranceAgainstTheExactAnswer) {
   const OscillatorScene s = coarse();
   const auto dir = scratch_dir("target_oscillator");
   const auto out = dir / "target";
-  const auto r = run_cosim({"run", scene_in(dir, s), "--target", "x1=1e-5", "--measure", kMeasure, "--out", out.string()});
+  const auto r =
+      run_cosim({"run", scene_in(dir, s), "--target", "x1=1e-5", "--measure", kMeasure, "--out", out.string()});
   std::cout << r.output;
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("level 4 ("));
@@ -75,17 +76,19 @@ TEST(Target, MetAlreadyRefusedOverBudgetOrBadArgument) {
   EXPECT_THAT(met.output, HasSubstr("already meets the target"));
   EXPECT_FALSE(std::filesystem::exists(dir / "a" / "level_4.yaml"));
 
-  const auto over = run_cosim({"run", scene, "--target", "x1=1e-7", "--measure", kMeasure, "--budget", "1s", "--out",
-                               (dir / "b").string()});
+  const auto over = run_cosim(
+      {"run", scene, "--target", "x1=1e-7", "--measure", kMeasure, "--budget", "1s", "--out", (dir / "b").string()});
   EXPECT_EQ(over.exit_code, 1) << over.output;
   EXPECT_THAT(over.output, HasSubstr("level 4 refused: it is estimated at"));
   EXPECT_THAT(over.output, HasSubstr("over --budget 1.0 s"));
   EXPECT_FALSE(std::filesystem::exists(dir / "b" / "level_4.h5"));
 
-  const auto bad = run_cosim({"run", scene, "--target", "x1=one", "--measure", kMeasure, "--out", (dir / "c").string()});
+  const auto bad =
+      run_cosim({"run", scene, "--target", "x1=one", "--measure", kMeasure, "--out", (dir / "c").string()});
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_THAT(bad.output, HasSubstr("--target x1=one: tolerance 'one': expected a positive number"));
-  const auto unknown = run_cosim({"run", scene, "--target", "x2=1%", "--measure", kMeasure, "--out", (dir / "c").string()});
+  const auto unknown =
+      run_cosim({"run", scene, "--target", "x2=1%", "--measure", kMeasure, "--out", (dir / "c").string()});
   EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
   EXPECT_THAT(unknown.output, HasSubstr("no measure x2 (the measures are x1)"));
   EXPECT_FALSE(std::filesystem::exists(dir / "c" / "level_1.h5"));

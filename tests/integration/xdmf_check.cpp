@@ -59,9 +59,10 @@ std::vector<XdmfAttribute> attributes(const std::string& block) {
 
 std::vector<XdmfPolyvertex> polyvertices(const std::string& text) {
   std::vector<XdmfPolyvertex> out;
-  const std::regex grid("<Grid Name=\"([^\"]*)\"[^>]*>\\s*<Topology TopologyType=\"Polyvertex\"([^>]*)/>"
-                        "\\s*<Geometry GeometryType=\"XYZ\">\\s*<DataItem([^>]*)>([^<]*)</DataItem>\\s*</Geometry>"
-                        "((?:\\s*<Attribute[^>]*>\\s*<DataItem[^>]*>[^<]*</DataItem>\\s*</Attribute>)*)\\s*</Grid>");
+  const std::regex grid(
+      "<Grid Name=\"([^\"]*)\"[^>]*>\\s*<Topology TopologyType=\"Polyvertex\"([^>]*)/>"
+      "\\s*<Geometry GeometryType=\"XYZ\">\\s*<DataItem([^>]*)>([^<]*)</DataItem>\\s*</Geometry>"
+      "((?:\\s*<Attribute[^>]*>\\s*<DataItem[^>]*>[^<]*</DataItem>\\s*</Attribute>)*)\\s*</Grid>");
   for (auto it = std::sregex_iterator(text.begin(), text.end(), grid); it != std::sregex_iterator(); ++it) {
     const std::smatch& m = *it;
     XdmfPolyvertex p{m[1], std::stoul(attribute(m[2], "NumberOfElements")), data_item(m[3], m[4]), attributes(m[5])};
@@ -75,8 +76,8 @@ std::vector<XdmfPolyvertex> polyvertices(const std::string& text) {
     out.push_back(p);
   }
   const std::regex topology("TopologyType=\"Polyvertex\"");
-  if (out.size() != static_cast<std::size_t>(std::distance(
-                        std::sregex_iterator(text.begin(), text.end(), topology), std::sregex_iterator())))
+  if (out.size() != static_cast<std::size_t>(std::distance(std::sregex_iterator(text.begin(), text.end(), topology),
+                                                           std::sregex_iterator())))
     throw std::runtime_error("a Polyvertex topology without its XYZ geometry of one DataItem");
   return out;
 }

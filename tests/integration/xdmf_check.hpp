@@ -33,8 +33,8 @@ struct XdmfPolyvertex {
 };
 
 struct XdmfContents {
-  std::vector<double> times;  // of the Time elements, in order
-  std::vector<XdmfDataItem> items;  // all of them, those of the Polyvertex grids too
+  std::vector<double> times;                 // of the Time elements, in order
+  std::vector<XdmfDataItem> items;           // all of them, those of the Polyvertex grids too
   std::vector<XdmfPolyvertex> polyvertices;  // in order
 };
 

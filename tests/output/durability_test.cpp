@@ -29,9 +29,7 @@ const std::vector<std::string> kBodies{"ball", "box"};
 const std::vector<std::string> kParticipants{"fluid"};
 constexpr char kPython[] = "/usr/bin/python3";
 
-bool python_has_h5py() {
-  return std::system((std::string(kPython) + " -c 'import h5py' 2>/dev/null").c_str()) == 0;
-}
+bool python_has_h5py() { return std::system((std::string(kPython) + " -c 'import h5py' 2>/dev/null").c_str()) == 0; }
 
 // Runs a Python snippet with `f` open on path (h5py links its own, serial, HDF5).
 int h5py_check(const std::filesystem::path& path, const std::string& body) {
@@ -65,8 +63,7 @@ TEST_F(DurabilityTest, ReadableByH5pyAfterTheWriterIsGone) {
   ASSERT_TRUE(python_has_h5py()) << kPython << " has no h5py";
   const auto path = file("run.h5");
   {
-    RunFile run = RunFile::create(path, RunInfo{"scene: 1\n", "s.yaml", "abc", "0.1.0", 1},
-                                  kBodies, kParticipants);
+    RunFile run = RunFile::create(path, RunInfo{"scene: 1\n", "s.yaml", "abc", "0.1.0", 1}, kBodies, kParticipants);
     for (std::uint64_t k = 0; k < 4; ++k) {
       run.append(sample_window(k, 0.5, kBodies.size(), kParticipants));
     }
@@ -118,8 +115,7 @@ TEST_F(DurabilityTest, ResumeAfterSigkill) {
     EXPECT_EQ(run.checkpoint().next_window, 4u);
     run.append(sample_window(4, 0.5, kBodies.size(), kParticipants));
   }
-  EXPECT_EQ(ReadFile(path).doubles("/coupling/time"),
-            (std::vector<double>{0.5, 1.0, 1.5, 2.0, 2.5}));
+  EXPECT_EQ(ReadFile(path).doubles("/coupling/time"), (std::vector<double>{0.5, 1.0, 1.5, 2.0, 2.5}));
 }
 
 // Checkpoint `seq` of the stress test: a ~1.6 MB state whose length changes from one
@@ -203,21 +199,19 @@ TEST_F(DurabilityTest, SigkillDuringCheckpointWritesKeepsTheLastCheckpoint) {
     }
     const Checkpoint& c = run->checkpoint();
     ASSERT_TRUE(c.next_window == last || c.next_window == last + 1)
-        << "kill " << k << ": file holds checkpoint " << c.next_window << ", child finished "
-        << last;
+        << "kill " << k << ": file holds checkpoint " << c.next_window << ", child finished " << last;
     if (c.next_window == last + 1) ++after_commit;
     const Checkpoint expected = stress_checkpoint(c.next_window);
     ASSERT_EQ(c.time, expected.time);
     ASSERT_EQ(c.poses, expected.poses);
     ASSERT_EQ(c.forces, expected.forces);
-    ASSERT_TRUE(c.states == expected.states) << "kill " << k << ": state of checkpoint "
-                                             << c.next_window << " differs";
+    ASSERT_TRUE(c.states == expected.states) << "kill " << k << ": state of checkpoint " << c.next_window << " differs";
   }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("[ stress   ] %d kills, %llu checkpoints completed, %d kills after the commit "
-              "point, %.2f s\n",
-              kKills, static_cast<unsigned long long>(written), after_commit, seconds);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf(
+      "[ stress   ] %d kills, %llu checkpoints completed, %d kills after the commit "
+      "point, %.2f s\n",
+      kKills, static_cast<unsigned long long>(written), after_commit, seconds);
 }
 
 // A journal without a commit in it (a kill after the journal was made, before its first

@@ -76,8 +76,8 @@ TEST_F(FieldBlocksTest, EightBricksWriteWhatTheWholeFrameWrites) {
     });
   }
   ReadFile whole(whole_path), blocks(blocks_path);
-  for (const char* name : {"/fields/tracker/000007/p", "/fields/tracker/000007/u", "/fields/tracker/grid/x",
-                           "/fields/tracker/grid/z"}) {
+  for (const char* name :
+       {"/fields/tracker/000007/p", "/fields/tracker/000007/u", "/fields/tracker/grid/x", "/fields/tracker/grid/z"}) {
     EXPECT_EQ(blocks.dims(name), whole.dims(name)) << name;
     EXPECT_EQ(blocks.doubles(name), whole.doubles(name)) << name;
   }
@@ -132,7 +132,8 @@ TEST_F(FieldBlocksTest, RefusesBlocksThatDoNotFit) {
 // field::place puts blocks where the whole frame has their cells (the coupled tracker's
 // frame, put together from its ranks' bricks), and refuses one that does not fit.
 TEST(FieldBlocks, PlacedBlocksMakeTheWholeFields) {
-  std::vector<field::CellField> whole{{"p", 1, std::vector<double>(60, -1.0)}, {"u", 3, std::vector<double>(180, -1.0)}};
+  std::vector<field::CellField> whole{{"p", 1, std::vector<double>(60, -1.0)},
+                                      {"u", 3, std::vector<double>(180, -1.0)}};
   for (const auto& [lo, hi] : std::vector<std::pair<std::array<std::size_t, 3>, std::array<std::size_t, 3>>>{
            {{0, 0, 0}, {2, 4, 5}}, {{2, 0, 0}, {3, 1, 5}}, {{2, 1, 0}, {3, 4, 5}}})
     field::place(block(lo, hi), kCells, whole);

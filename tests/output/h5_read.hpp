@@ -26,9 +26,7 @@ class ReadFile {
   ReadFile(const ReadFile&) = delete;
   ReadFile& operator=(const ReadFile&) = delete;
 
-  bool has(const std::string& path) const {
-    return H5Lexists(id_, path.c_str(), H5P_DEFAULT) > 0;
-  }
+  bool has(const std::string& path) const { return H5Lexists(id_, path.c_str(), H5P_DEFAULT) > 0; }
 
   std::vector<hsize_t> dims(const std::string& dataset) const {
     const hid_t ds = open(dataset);
@@ -51,9 +49,7 @@ class ReadFile {
     H5Dclose(ds);
     return out;
   }
-  std::vector<double> doubles(const std::string& dataset) const {
-    return values<double>(dataset, H5T_NATIVE_DOUBLE);
-  }
+  std::vector<double> doubles(const std::string& dataset) const { return values<double>(dataset, H5T_NATIVE_DOUBLE); }
 
   // Variable-length or fixed-length (without its NUL padding).
   std::string string_attribute(const std::string& object, const std::string& name) const {
@@ -92,8 +88,8 @@ class ReadFile {
 
   std::string text(const std::string& dataset) const {
     const hid_t ds = open(dataset);
-    std::string out = read_string(
-        [&](hid_t type, char** raw) { H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, raw); });
+    std::string out =
+        read_string([&](hid_t type, char** raw) { H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, raw); });
     H5Dclose(ds);
     return out;
   }

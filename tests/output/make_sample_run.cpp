@@ -24,8 +24,7 @@ void add_body_rows(WindowRecord& w, std::size_t body, double t) {
     w.forces.insert(w.forces.end(), {0, 0, -omega * omega * z, 0, 0, 0});
   } else {
     const double half = 0.5 * t;
-    w.poses.insert(w.poses.end(), {0.2 * t, 0, 0, std::cos(half), 0, 0, std::sin(half), 0.2, 0,
-                                   0, 0, 0, 1.0});
+    w.poses.insert(w.poses.end(), {0.2 * t, 0, 0, std::cos(half), 0, 0, std::sin(half), 0.2, 0, 0, 0, 0, 1.0});
     w.forces.insert(w.forces.end(), {0, 0, 0, 0, 0, 0.05 * std::sin(t)});
   }
 }
@@ -42,8 +41,7 @@ int main(int argc, char** argv) {
     const std::vector<std::string> names =
         bodies ? std::vector<std::string>{"ball", "box"} : std::vector<std::string>{};
     auto run = cosim::output::RunFile::create(
-        argv[1], {"coupling:\n  window: 0.01\n", "sample.yaml", "0000000", "0.1.0", 1}, names,
-        {"rigid", "fluid"});
+        argv[1], {"coupling:\n  window: 0.01\n", "sample.yaml", "0000000", "0.1.0", 1}, names, {"rigid", "fluid"});
     for (std::uint64_t k = 0; k < 200; ++k) {
       WindowRecord w;
       w.window = k;

@@ -151,19 +151,23 @@ TEST_F(PointSetsTest, FramesWithoutPointSetsKeepTheirSidecar) {
   for (int k = 0; k < 2; ++k) {
     const std::string item = "          <DataItem Dimensions=\"";
     const std::string hdf = "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">run.h5:/fields/fluid/";
-    expected += "      <Grid Name=\"/fields/fluid/" + step[k] + "\" GridType=\"Uniform\">\n"
-                "        <Time Value=\"" + time[k] + "\"/>\n"
+    expected += "      <Grid Name=\"/fields/fluid/" + step[k] +
+                "\" GridType=\"Uniform\">\n"
+                "        <Time Value=\"" +
+                time[k] +
+                "\"/>\n"
                 "        <Topology TopologyType=\"3DRectMesh\" Dimensions=\"2 2 3\"/>\n"
                 "        <Geometry GeometryType=\"VXVYVZ\">\n" +
-                item + "3" + hdf + "grid/x</DataItem>\n" +
-                item + "2" + hdf + "grid/y</DataItem>\n" +
-                item + "2" + hdf + "grid/z</DataItem>\n"
+                item + "3" + hdf + "grid/x</DataItem>\n" + item + "2" + hdf + "grid/y</DataItem>\n" + item + "2" + hdf +
+                "grid/z</DataItem>\n"
                 "        </Geometry>\n"
                 "        <Attribute Name=\"p\" AttributeType=\"Scalar\" Center=\"Cell\">\n" +
-                item + "1 1 2" + hdf + step[k] + "/p</DataItem>\n"
+                item + "1 1 2" + hdf + step[k] +
+                "/p</DataItem>\n"
                 "        </Attribute>\n"
                 "        <Attribute Name=\"u\" AttributeType=\"Vector\" Center=\"Cell\">\n" +
-                item + "1 1 2 3" + hdf + step[k] + "/u</DataItem>\n"
+                item + "1 1 2 3" + hdf + step[k] +
+                "/u</DataItem>\n"
                 "        </Attribute>\n"
                 "      </Grid>\n";
   }
@@ -222,11 +226,12 @@ TEST_F(PointSetsTest, AttributesBesideThePointsAndNodeCentredOnTheirGrid) {
     EXPECT_EQ(particles.attributes[k].item.dataset, at + "particles/" + names[k]);
   }
   EXPECT_TRUE(xdmf.polyvertices[3].attributes.empty());
-  EXPECT_NE(text_of(file("run.xmf")).find("          <Attribute Name=\"cell\" AttributeType=\"Scalar\" Center=\"Node\">\n"
-                                          "            <DataItem Dimensions=\"2\" NumberType=\"Int\" Precision=\"8\" "
-                                          "Format=\"HDF\">run.h5:/fields/tracker/000000/point_attributes/particles/cell"
-                                          "</DataItem>\n"
-                                          "          </Attribute>\n"),
+  EXPECT_NE(text_of(file("run.xmf"))
+                .find("          <Attribute Name=\"cell\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+                      "            <DataItem Dimensions=\"2\" NumberType=\"Int\" Precision=\"8\" "
+                      "Format=\"HDF\">run.h5:/fields/tracker/000000/point_attributes/particles/cell"
+                      "</DataItem>\n"
+                      "          </Attribute>\n"),
             std::string::npos);
 }
 
@@ -259,8 +264,8 @@ TEST_F(PointSetsTest, RefusesANameThatIsNoDatasetNameOrComesTwice) {
   EXPECT_EQ(write_error(run, ragged), in + "point set 'ball' has 7 coordinates, not x y z triples");
   field::FieldFrame clash = frame_with_bodies(1);
   clash.fields[0].name = "points";
-  EXPECT_EQ(write_error(run, clash), file("run.h5").string() +
-                                         ": field points of fluid: the step's group of that name holds the point sets");
+  EXPECT_EQ(write_error(run, clash),
+            file("run.h5").string() + ": field points of fluid: the step's group of that name holds the point sets");
   EXPECT_FALSE(ReadFile(file("run.h5")).has("/fields"));
 
   run.write_fields("fluid", 1, 0.1, renamed("wall left"));  // any other name will do
@@ -299,8 +304,8 @@ TEST_F(PointSetsTest, RefusesAttributesThatDoNotFitTheirSet) {
   EXPECT_FALSE(ReadFile(file("run.h5")).has("/fields"));
   // The last exact one.
   run.write_fields("fluid", 1, 0.1, changed([](field::PointAttribute& a) { a.values[1] = 0x1p53; }));
-  EXPECT_EQ(ReadFile(file("run.h5")).values<std::int64_t>("/fields/fluid/000001/point_attributes/particles/cell",
-                                                         H5T_NATIVE_INT64),
+  EXPECT_EQ(ReadFile(file("run.h5"))
+                .values<std::int64_t>("/fields/fluid/000001/point_attributes/particles/cell", H5T_NATIVE_INT64),
             (std::vector<std::int64_t>{0, std::int64_t{1} << 53}));
 }
 

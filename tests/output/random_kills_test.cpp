@@ -40,8 +40,7 @@ constexpr std::uint64_t kRestartAfter = 300;   // windows (past a series chunk o
 
 // What the child is doing, written to memory it shares with the parent before each step.
 enum Phase : int { kForking, kResuming, kAppending, kFields, kCheckpoint, kPhases };
-constexpr std::array<const char*, kPhases> kPhaseNames{"before resume", "resume", "append",
-                                                       "field step", "checkpoint"};
+constexpr std::array<const char*, kPhases> kPhaseNames{"before resume", "resume", "append", "field step", "checkpoint"};
 
 struct Shared {
   std::atomic<int> phase;
@@ -159,8 +158,8 @@ TEST_F(RandomKillTest, EveryKilledFileOpensAndResumes) {
   const int kills = kill_count();
   const auto path = file("run.h5");
   make_fresh(path);
-  auto* shared = static_cast<Shared*>(
-      mmap(nullptr, sizeof(Shared), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0));
+  auto* shared =
+      static_cast<Shared*>(mmap(nullptr, sizeof(Shared), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0));
   ASSERT_NE(shared, MAP_FAILED);
   std::mt19937 rng(20261203);
   std::uint64_t committed = 1;
@@ -207,8 +206,8 @@ TEST_F(RandomKillTest, EveryKilledFileOpensAndResumes) {
   }
   munmap(shared, sizeof(Shared));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("[ stress   ] %d kills in %.1f s, %d files broken, %d left a commit to finish; kills in", kills,
-              seconds, broken, journals);
+  std::printf("[ stress   ] %d kills in %.1f s, %d files broken, %d left a commit to finish; kills in", kills, seconds,
+              broken, journals);
   for (int p = 0; p < kPhases; ++p) std::printf(" %s %d%s", kPhaseNames[p], landed[p], p + 1 < kPhases ? "," : "\n");
   EXPECT_EQ(broken, 0);
 }

@@ -40,8 +40,7 @@ Checkpoint checkpoint_after(std::uint64_t window) {
 
 // Writes windows 0..4 with a checkpoint after window 2, as a run killed after window 4.
 void write_interrupted_run(const std::filesystem::path& path) {
-  RunFile run = RunFile::create(path, RunInfo{"scene: 1\n", "s.yaml", "abc", "0.1.0", 2},
-                                kBodies, kParticipants);
+  RunFile run = RunFile::create(path, RunInfo{"scene: 1\n", "s.yaml", "abc", "0.1.0", 2}, kBodies, kParticipants);
   for (std::uint64_t k = 0; k < 5; ++k) {
     run.append(sample_window(k, kDt, kBodies.size(), kParticipants));
     if (k == 1 || k == 2) run.write_checkpoint(checkpoint_after(k));
@@ -189,7 +188,8 @@ TEST_F(ResumeTest, CutsPointSetsWithTheirFrames) {
       const std::string step = "/fields/fluid/00000" + std::to_string(k);
       EXPECT_EQ(f.doubles(step + "/points/ball"), frame_with_bodies(k).point_sets[0].points) << step;
       EXPECT_EQ(f.dims(step + "/points/cube"), (std::vector<hsize_t>{0, 3})) << step;
-      EXPECT_EQ(f.doubles(step + "/point_attributes/ball/speed"), frame_with_bodies(k).point_sets[0].attributes[1].values);
+      EXPECT_EQ(f.doubles(step + "/point_attributes/ball/speed"),
+                frame_with_bodies(k).point_sets[0].attributes[1].values);
     }
     EXPECT_FALSE(f.has("/fields/fluid/000004"));
     EXPECT_EQ(file_bytes(file("run.xmf")), file_bytes(file("stopped") / "run.xmf"));
@@ -251,8 +251,7 @@ TEST_F(ResumeTest, PeekReadsWithoutChangingTheFile) {
 
 TEST_F(ResumeTest, PeekWithoutCheckpoint) {
   const auto path = file("run.h5");
-  RunFile::create(path, RunInfo{}, kBodies, kParticipants)
-      .append(sample_window(0, kDt, kBodies.size(), kParticipants));
+  RunFile::create(path, RunInfo{}, kBodies, kParticipants).append(sample_window(0, kDt, kBodies.size(), kParticipants));
   const RunSummary s = RunFile::peek(path);
   EXPECT_EQ(s.status, "running");
   EXPECT_FALSE(s.has_checkpoint);
@@ -323,8 +322,10 @@ TEST_F(ResumeTest, CheckpointAtStartKeepsNoRows) {
 
 TEST_F(ResumeTest, WithoutCheckpointThrows) {
   const auto path = file("run.h5");
-  { RunFile::create(path, RunInfo{}, kBodies, kParticipants).append(
-        sample_window(0, kDt, kBodies.size(), kParticipants)); }
+  {
+    RunFile::create(path, RunInfo{}, kBodies, kParticipants)
+        .append(sample_window(0, kDt, kBodies.size(), kParticipants));
+  }
   try {
     RunFile::resume(path, "d1e2f3");
     FAIL() << "resumed a run without checkpoint";
@@ -346,8 +347,10 @@ TEST_F(ResumeTest, NotARunFileThrowsNamingIt) {
   for (const auto& [path, message] : cases) {
     for (const bool peek : {true, false}) {
       try {
-        if (peek) RunFile::peek(path);
-        else RunFile::resume(path, "d1e2f3");
+        if (peek)
+          RunFile::peek(path);
+        else
+          RunFile::resume(path, "d1e2f3");
         FAIL() << (peek ? "peeked into " : "resumed ") << path;
       } catch (const std::runtime_error& e) {
         EXPECT_EQ(e.what(), message);
@@ -386,8 +389,7 @@ TEST_F(ResumeTest, AlternatingCheckpointsResumeToTheLatest) {
   const auto path = file("run.h5");
   for (std::uint64_t k = 0; k < 6; ++k) {
     {
-      RunFile run = k == 0 ? RunFile::create(path, RunInfo{}, kBodies, kParticipants)
-                           : RunFile::resume(path, "d1e2f3");
+      RunFile run = k == 0 ? RunFile::create(path, RunInfo{}, kBodies, kParticipants) : RunFile::resume(path, "d1e2f3");
       run.append(sample_window(k, kDt, kBodies.size(), kParticipants));
       Checkpoint c = checkpoint_after(k);
       c.states["fluid"].push_back(static_cast<double>(k));  // tells the checkpoints apart
@@ -406,20 +408,17 @@ TEST_F(ResumeTest, AlternatingCheckpointsResumeToTheLatest) {
 TEST_F(ResumeTest, StatesThatShrinkAndGrowRoundTripExactly) {
   const auto path = file("run.h5");
   // Lengths of fluid's and rigid's states per checkpoint; -1: no state.
-  const std::vector<std::pair<int, int>> lengths{{1000, -1}, {10, 7},   {0, 2000},
-                                                 {-1, 1},    {5000, -1}, {3, 0}};
+  const std::vector<std::pair<int, int>> lengths{{1000, -1}, {10, 7}, {0, 2000}, {-1, 1}, {5000, -1}, {3, 0}};
   for (std::size_t k = 0; k < lengths.size(); ++k) {
     Checkpoint c = checkpoint_after(k);
     c.states.clear();
-    for (const auto& [name, n] : {std::pair{"fluid", lengths[k].first},
-                                  std::pair{"rigid", lengths[k].second}}) {
+    for (const auto& [name, n] : {std::pair{"fluid", lengths[k].first}, std::pair{"rigid", lengths[k].second}}) {
       if (n < 0) continue;
       std::vector<double>& state = c.states[name];
       for (int i = 0; i < n; ++i) state.push_back(static_cast<double>(k) + 1e-4 * i);
     }
     {
-      RunFile run = k == 0 ? RunFile::create(path, RunInfo{}, kBodies, kParticipants)
-                           : RunFile::resume(path, "d1e2f3");
+      RunFile run = k == 0 ? RunFile::create(path, RunInfo{}, kBodies, kParticipants) : RunFile::resume(path, "d1e2f3");
       run.write_checkpoint(c);
     }
     expect_same(RunFile::resume(path, "d1e2f3").checkpoint(), c);

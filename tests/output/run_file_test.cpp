@@ -35,9 +35,7 @@ RunInfo sample_info() {
   return info;
 }
 
-std::size_t open_hdf5_objects() {
-  return static_cast<std::size_t>(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL));
-}
+std::size_t open_hdf5_objects() { return static_cast<std::size_t>(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL)); }
 
 TEST_F(RunFileTest, AppendedWindowsReadBackExactly) {
   const auto path = file("run.h5");
@@ -66,8 +64,7 @@ TEST_F(RunFileTest, AppendedWindowsReadBackExactly) {
 
   // Each body quantity is a column slice of the 13-wide pose row or the 6-wide force row.
   const std::vector<std::pair<std::string, std::size_t>> slices{
-      {"position", 0}, {"orientation", 3}, {"velocity", 7}, {"angular_velocity", 10},
-      {"force", 13},   {"torque", 16}};
+      {"position", 0}, {"orientation", 3}, {"velocity", 7}, {"angular_velocity", 10}, {"force", 13}, {"torque", 16}};
   for (std::size_t b = 0; b < kBodies.size(); ++b) {
     const std::string group = "/bodies/" + kBodies[b] + "/";
     EXPECT_EQ(f.doubles(group + "time"), time);
@@ -85,10 +82,8 @@ TEST_F(RunFileTest, AppendedWindowsReadBackExactly) {
   }
   for (std::size_t p = 0; p < kParticipants.size(); ++p) {
     const std::string group = "/coupling/participants/" + kParticipants[p] + "/";
-    EXPECT_EQ(f.doubles(group + "wall_seconds"),
-              std::vector<double>(kWindows, 0.1 * static_cast<double>(p + 1)));
-    EXPECT_EQ(f.doubles(group + "substeps"),
-              std::vector<double>(kWindows, static_cast<double>(p + 2)));
+    EXPECT_EQ(f.doubles(group + "wall_seconds"), std::vector<double>(kWindows, 0.1 * static_cast<double>(p + 1)));
+    EXPECT_EQ(f.doubles(group + "substeps"), std::vector<double>(kWindows, static_cast<double>(p + 2)));
   }
 }
 
@@ -107,8 +102,8 @@ TEST_F(RunFileTest, RunGroupDescribesTheRun) {
   EXPECT_EQ(f.string_attribute("/run", "git_hash"), info.git_hash);
   EXPECT_EQ(f.string_attribute("/run", "cosim_version"), info.cosim_version);
   EXPECT_EQ(f.double_attribute("/run", "protocol_version"), 3.0);
-  EXPECT_TRUE(std::regex_match(f.string_attribute("/run", "started"),
-                               std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
+  EXPECT_TRUE(
+      std::regex_match(f.string_attribute("/run", "started"), std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
   EXPECT_EQ(f.dims("/run/scene_text"), std::vector<hsize_t>{});  // scalar
   EXPECT_EQ(f.text("/run/scene_text"), info.scene_text);
 }
@@ -138,8 +133,7 @@ TEST_F(RunFileTest, MalformedWindowIsRejectedWithoutPartialRow) {
       run.append(bad);
       FAIL() << "accepted a malformed window";
     } catch (const std::runtime_error& e) {
-      EXPECT_NE(std::string(e.what()).find(path.string() + ": window 1"), std::string::npos)
-          << e.what();
+      EXPECT_NE(std::string(e.what()).find(path.string() + ": window 1"), std::string::npos) << e.what();
     }
   }
   run.append(sample_window(1, 0.1, kBodies.size(), kParticipants));
@@ -159,8 +153,7 @@ TEST_F(RunFileTest, MissingParticipantValuesAreNan) {
 }
 
 TEST_F(RunFileTest, BadNamesAreRejected) {
-  for (const std::vector<std::string>& names :
-       {std::vector<std::string>{"a/b"}, {""}, {"."}, {"ball", "ball"}}) {
+  for (const std::vector<std::string>& names : {std::vector<std::string>{"a/b"}, {""}, {"."}, {"ball", "ball"}}) {
     EXPECT_THROW(RunFile::create(file("run.h5"), RunInfo{}, names, {}), std::runtime_error);
     EXPECT_THROW(RunFile::create(file("run.h5"), RunInfo{}, {}, names), std::runtime_error);
   }

@@ -12,8 +12,7 @@ namespace cosim::output::test {
 // Window k ends at time (k + 1) * dt; every pose/force slot holds a value that names its
 // window, body and column, so a misplaced row or column shows up as a wrong number.
 inline double slot(std::uint64_t k, std::size_t body, std::size_t column) {
-  return 1000.0 * static_cast<double>(k) + 100.0 * static_cast<double>(body) +
-         static_cast<double>(column) + 0.25;
+  return 1000.0 * static_cast<double>(k) + 100.0 * static_cast<double>(body) + static_cast<double>(column) + 0.25;
 }
 
 inline WindowRecord sample_window(std::uint64_t k, double dt, std::size_t bodies,

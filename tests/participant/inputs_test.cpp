@@ -29,7 +29,8 @@ protocol::Message advance(bool with_fields) {
   std::vector<double> start(protocol::kPoseWidth, 0.0), end(protocol::kPoseWidth, 0.0);
   start[3] = end[3] = 1.0;
   end[0] = 0.5;
-  m.arrays = {Array::of(Tag::Poses, 1, protocol::kPoseWidth, start), Array::of(Tag::Poses, 1, protocol::kPoseWidth, end)};
+  m.arrays = {Array::of(Tag::Poses, 1, protocol::kPoseWidth, start),
+              Array::of(Tag::Poses, 1, protocol::kPoseWidth, end)};
   if (with_fields)
     for (Array& a : protocol::field_arrays(fluid_frame())) m.arrays.push_back(std::move(a));
   return protocol::decode(protocol::encode(m));
@@ -42,8 +43,7 @@ TEST(ParticipantInputs, AnAdvanceWithFieldsGivesThePosesAndTheFrame) {
   EXPECT_TRUE(in.forces_start.empty());
   ASSERT_TRUE(in.fields.has_value());
   const field::FieldFrame sent = fluid_frame();
-  EXPECT_EQ(std::get<field::RectilinearGrid>(in.fields->grid).nodes,
-            std::get<field::RectilinearGrid>(sent.grid).nodes);
+  EXPECT_EQ(std::get<field::RectilinearGrid>(in.fields->grid).nodes, std::get<field::RectilinearGrid>(sent.grid).nodes);
   ASSERT_EQ(in.fields->fields.size(), 2u);
   EXPECT_EQ(in.fields->fields[0].name, "velocity");
   EXPECT_EQ(in.fields->fields[0].components, 3);

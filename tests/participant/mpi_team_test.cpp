@@ -105,8 +105,8 @@ TEST(MpiTeam, AForwardedFrameReachesEveryRankWithItsPointSets) {
     lead.initialise(tiny_scene(), "spring", {}, {});
     Inputs in;
     in.fields = field::FieldFrame{field::RectilinearGrid{{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}}}},
-                                   {{"p", 1, {1.0}}},
-                                   {{"ball", {0.5, 0.5, 2.5}, {{"id", 1, {4.0}, true}}}}};
+                                  {{"p", 1, {1.0}}},
+                                  {{"ball", {0.5, 0.5, 2.5}, {{"id", 1, {4.0}, true}}}}};
     EXPECT_EQ(lead.advance({0, 1, 0.0, 0.5}, in).forces.at(0).force.x(), 13.0);  // 2 x (2.5 + 4)
     return 0;
   });

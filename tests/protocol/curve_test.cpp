@@ -112,7 +112,8 @@ TEST(Curve, ForeignClientsAreRefusedAndSaidSo) {
   std::vector<zmq::socket_t> foreign;
   foreign.push_back(dealer(context, "mass", std::nullopt));  // no key
   foreign.push_back(dealer(context, "mass", curve::ClientKeys{run.keys.own.public_key, curve::make_keypair()}));
-  foreign.push_back(dealer(context, "mass", curve::ClientKeys{curve::make_keypair().public_key, curve::make_keypair()}));
+  foreign.push_back(
+      dealer(context, "mass", curve::ClientKeys{curve::make_keypair().public_key, curve::make_keypair()}));
   foreign.push_back(dealer(context, "intruder", run.mass));  // the right key, another name
   for (auto& s : foreign) {
     s.connect(endpoint);
@@ -122,7 +123,8 @@ TEST(Curve, ForeignClientsAreRefusedAndSaidSo) {
   const auto refusals = run.refusals_within(1s);
   // Without a key the client may hang up first, on seeing the coupler's mechanism: then the
   // coupler sees the handshake end, not its reason.
-  EXPECT_THAT(refusals, Contains(AnyOf(HasSubstr("it does not use CURVE (no key)"), HasSubstr("its handshake failed"))));
+  EXPECT_THAT(refusals,
+              Contains(AnyOf(HasSubstr("it does not use CURVE (no key)"), HasSubstr("its handshake failed"))));
   EXPECT_THAT(refusals, Contains(HasSubstr("refused a connection from 127.0.0.1: its key is not one of this run's")));
   EXPECT_THAT(refusals, Contains(HasSubstr("it does not hold the coupler's public key of this run")));
   EXPECT_THAT(refusals, Contains(HasSubstr("a client holding the key of 'mass' under the name 'intruder'")));

@@ -111,7 +111,8 @@ TEST(FieldMessage, RefusesATopologyEntryThatIsNotAnInteger) {
 
 TEST(FieldMessage, RefusesATopologyThatIsNotTheFieldsCells) {
   auto arrays = field_arrays(polyhedral_frame());
-  for (std::size_t i : {5u, 7u}) arrays[i] = Array::of(Tag::Field, 1, arrays[i].cols, std::vector<double>(arrays[i].cols));
+  for (std::size_t i : {5u, 7u})
+    arrays[i] = Array::of(Tag::Field, 1, arrays[i].cols, std::vector<double>(arrays[i].cols));
   EXPECT_EQ(refusal(arrays), "Field message of 'fluid': the topology holds 2 cells, the grid says 1");
 
   arrays = field_arrays(polyhedral_frame());

@@ -68,8 +68,7 @@ class Fuzzer {
   bool chance(int one_in) { return between(1, one_in) == 1; }
 
   std::string name() {
-    static constexpr std::string_view kChars =
-        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-";
+    static constexpr std::string_view kChars = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-";
     std::string s(between(1, kNameSize - 1), ' ');
     for (char& c : s) c = kChars[between(0, kChars.size() - 1)];
     return s;
@@ -95,23 +94,20 @@ class Fuzzer {
     }
     const bool physics = tag == Tag::Poses || tag == Tag::Forces || tag == Tag::Responses || tag == Tag::Stats;
     const auto rows = static_cast<std::uint32_t>(tag == Tag::Stats ? 1 : between(0, 3));
-    const auto cols = static_cast<std::uint32_t>(tag == Tag::Poses    ? kPoseWidth
-                                                 : tag == Tag::Forces ? kForceWidth
+    const auto cols = static_cast<std::uint32_t>(tag == Tag::Poses       ? kPoseWidth
+                                                 : tag == Tag::Forces    ? kForceWidth
                                                  : tag == Tag::Responses ? kResponseWidth
-                                                 : tag == Tag::Stats  ? kStatsWidth
-                                                 : tag == Tag::Points ? 3
-                                                                      : between(0, 6));
+                                                 : tag == Tag::Stats     ? kStatsWidth
+                                                 : tag == Tag::Points    ? 3
+                                                                         : between(0, 6));
     std::vector<double> v(std::size_t{rows} * cols);
     for (double& x : v) x = value(!physics);
     return Array::of(tag, rows, cols, std::move(v));
   }
 
   std::uint32_t interesting_u32() {
-    static constexpr std::uint32_t kValues[] = {0,          1,          2,          3,
-                                                6,          13,         64,         65,
-                                                0x7fffffff, 0x80000000, 0xffffffff, 0x10000};
-    return chance(3) ? static_cast<std::uint32_t>(rng_())
-                     : kValues[between(0, std::size(kValues) - 1)];
+    static constexpr std::uint32_t kValues[] = {0, 1, 2, 3, 6, 13, 64, 65, 0x7fffffff, 0x80000000, 0xffffffff, 0x10000};
+    return chance(3) ? static_cast<std::uint32_t>(rng_()) : kValues[between(0, std::size(kValues) - 1)];
   }
 
   double interesting_double() {
@@ -145,8 +141,7 @@ class Fuzzer {
     switch (between(0, 9)) {
       case 0: {  // bit flip
         Frame& frame = f[pick_frame(f)];
-        if (!frame.empty())
-          frame[between(0, frame.size() - 1)] ^= static_cast<std::byte>(1u << between(0, 7));
+        if (!frame.empty()) frame[between(0, frame.size() - 1)] ^= static_cast<std::byte>(1u << between(0, 7));
         break;
       }
       case 1: {  // truncation
@@ -172,12 +167,24 @@ class Fuzzer {
       }
       case 4: {  // fixed header field
         switch (between(0, 5)) {
-          case 0: put(head, L::kArrayCount, interesting_u32()); break;
-          case 1: put(head, L::kType, static_cast<std::uint16_t>(between(0, 15))); break;
-          case 2: put(head, L::kRanks, interesting_u32()); break;
-          case 3: put(head, L::kT0, interesting_double()); break;
-          case 4: put(head, L::kT1, interesting_double()); break;
-          case 5: put(head, L::kName + between(0, kNameSize - 1), static_cast<char>(rng_())); break;
+          case 0:
+            put(head, L::kArrayCount, interesting_u32());
+            break;
+          case 1:
+            put(head, L::kType, static_cast<std::uint16_t>(between(0, 15)));
+            break;
+          case 2:
+            put(head, L::kRanks, interesting_u32());
+            break;
+          case 3:
+            put(head, L::kT0, interesting_double());
+            break;
+          case 4:
+            put(head, L::kT1, interesting_double());
+            break;
+          case 5:
+            put(head, L::kName + between(0, kNameSize - 1), static_cast<char>(rng_()));
+            break;
         }
         break;
       }
@@ -190,8 +197,7 @@ class Fuzzer {
       case 7: {  // payload value
         Frame& frame = f[pick_frame(f)];
         if (frame.size() >= sizeof(double))
-          put(frame, sizeof(double) * between(0, frame.size() / sizeof(double) - 1),
-              interesting_double());
+          put(frame, sizeof(double) * between(0, frame.size() / sizeof(double) - 1), interesting_double());
         break;
       }
       case 8: {  // reshape with a matching payload: only the shape rules can object

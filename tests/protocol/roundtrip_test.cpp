@@ -36,9 +36,8 @@ Message sample(Type type) {
   m.arrays.push_back(Array::of(Tag::Stats, 1, 2, {12.0, 0.003}));
   // Opaque arrays are not checked: NaN payloads, infinities and -0 must pass unchanged.
   m.arrays.push_back(Array::of(Tag::State, 1, 5,
-                               {std::bit_cast<double>(0x7ff8dead0000beefULL),
-                                std::numeric_limits<double>::infinity(), -0.0,
-                                std::numeric_limits<double>::denorm_min(), 1e300}));
+                               {std::bit_cast<double>(0x7ff8dead0000beefULL), std::numeric_limits<double>::infinity(),
+                                -0.0, std::numeric_limits<double>::denorm_min(), 1e300}));
   m.arrays.push_back(Array::text(std::string("name: \"ball\"\n\0binary\xff", 22)));
   m.arrays.push_back(Array::of(Tag::Field, 3, 4, ramp(12, 100.0)));
   m.arrays.push_back(Array::of(Tag::Field, 0, 4, {}));
@@ -67,8 +66,7 @@ void expect_same(const Message& a, const Message& b) {
     EXPECT_EQ(x.bytes, y.bytes);
     ASSERT_EQ(x.values.size(), y.values.size());
     for (std::size_t k = 0; k < x.values.size(); ++k)
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(x.values[k]),
-                std::bit_cast<std::uint64_t>(y.values[k]));
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(x.values[k]), std::bit_cast<std::uint64_t>(y.values[k]));
   }
 }
 
@@ -87,10 +85,9 @@ TEST_P(RoundTrip, EncodingIsStable) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryType, RoundTrip,
-                         ::testing::Values(Type::Hello, Type::Init, Type::Ready, Type::Advance,
-                                           Type::Result, Type::Commit, Type::Checkpoint,
-                                           Type::State, Type::Field, Type::Stop, Type::Abort,
-                                           Type::Error, Type::Bye),
+                         ::testing::Values(Type::Hello, Type::Init, Type::Ready, Type::Advance, Type::Result,
+                                           Type::Commit, Type::Checkpoint, Type::State, Type::Field, Type::Stop,
+                                           Type::Abort, Type::Error, Type::Bye),
                          [](const auto& info) { return std::string(to_string(info.param)); });
 
 // ZeroMQ hands small frames over at any offset inside its receive buffer.

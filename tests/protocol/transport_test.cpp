@@ -67,8 +67,8 @@ TEST_P(Transport, HandshakeAdvanceResultStop) {
     const Message init = client.hello(0b011, 0b100, 4);
     EXPECT_EQ(init.get(Tag::Text).bytes, "scene: yes");
     const Message advance = client.wait_for({Type::Advance, Type::Stop}, kWait);
-    Message result = make(Type::Result, {Array::of(Tag::Forces, 1, 6, {1, 2, 3, 4, 5, 6}),
-                                         Array::of(Tag::Stats, 1, 2, {10, 0.5})});
+    Message result =
+        make(Type::Result, {Array::of(Tag::Forces, 1, 6, {1, 2, 3, 4, 5, 6}), Array::of(Tag::Stats, 1, 2, {10, 0.5})});
     result.header.window = advance.header.window;
     result.header.t0 = advance.header.t0;
     result.header.t1 = advance.header.t1;
@@ -143,9 +143,8 @@ TEST_P(Transport, UnexpectedTypeNamesBoth) {
 
 TEST_P(Transport, ErrorReachesTheCoupler) {
   Server server(bind_address());
-  auto participant = std::async(std::launch::async, [endpoint = server.endpoint()] {
-    Client(endpoint, "tracker").error("CFL number 12 > 1");
-  });
+  auto participant = std::async(
+      std::launch::async, [endpoint = server.endpoint()] { Client(endpoint, "tracker").error("CFL number 12 > 1"); });
   const Message m = first(server);
   EXPECT_EQ(m.header.type, Type::Error);
   EXPECT_EQ(m.header.participant, "tracker");
@@ -185,8 +184,7 @@ TEST_P(Transport, ClosedCouplerEndsTheWaitNamingIt) {
     client.wait_for({Type::Init}, kWait);
     FAIL() << "no ProtocolError";
   } catch (const ProtocolError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("participant 'fluid' lost the coupler at " + endpoint +
-                                    ": the connection closed"));
+    EXPECT_THAT(e.what(), HasSubstr("participant 'fluid' lost the coupler at " + endpoint + ": the connection closed"));
   }
   EXPECT_LT(std::chrono::steady_clock::now() - start, 2s);
 }
@@ -223,8 +221,7 @@ TEST_P(Transport, UndecodableMessageNamesItsSender) {
     FAIL() << "no PeerError";
   } catch (const PeerError& e) {
     EXPECT_EQ(e.peer, "fluid");
-    EXPECT_THAT(e.what(),
-                HasSubstr("participant 'fluid' sent a message the coupler cannot read: not a cosim message"));
+    EXPECT_THAT(e.what(), HasSubstr("participant 'fluid' sent a message the coupler cannot read: not a cosim message"));
   }
 }
 
@@ -247,9 +244,7 @@ TEST(Transport, StarPortPicksAFreePortToo) {
   EXPECT_THAT(server.endpoint(), ::testing::Not(::testing::EndsWith(":*")));
 }
 
-TEST(Transport, BindFailureIsAProtocolError) {
-  EXPECT_THROW(Server("bogus://nowhere"), ProtocolError);
-}
+TEST(Transport, BindFailureIsAProtocolError) { EXPECT_THROW(Server("bogus://nowhere"), ProtocolError); }
 
 TEST(ClientEnvironment, AbsentMeansNotStartedByTheCoupler) {
   unsetenv(kEndpointEnv);

@@ -12,9 +12,9 @@ namespace cosim::protocol {
 namespace {
 
 namespace L = layout;
-using ::testing::HasSubstr;
 using testing::decode_error;
 using testing::Frames;
+using ::testing::HasSubstr;
 using testing::poke;
 using testing::to_bytes;
 
@@ -38,9 +38,7 @@ Message valid() {
 
 Frames valid_frames() { return to_bytes(encode(valid())); }
 
-std::size_t descriptor(std::size_t index, std::size_t field) {
-  return L::header_size(index) + field;
-}
+std::size_t descriptor(std::size_t index, std::size_t field) { return L::header_size(index) + field; }
 
 void set_value(Frames& f, std::size_t array, std::size_t element, double v) {
   poke(f[1 + array], element * sizeof(double), v);

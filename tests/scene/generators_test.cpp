@@ -146,12 +146,12 @@ TEST(Lattice, TooManyBodiesForOneEntry) {
 }
 
 TEST(Generators, RegionMustLieInsideTheDomain) {
-  EXPECT_EQ(error(entry("lattice", {"name: \"b{}\"", ball, glass, "region:", "  min: [0, 0, 0]",
-                                    "  max: [1.5, 1, 1]", "count: [1, 1, 1]"})),
+  EXPECT_EQ(error(entry("lattice", {"name: \"b{}\"", ball, glass, "region:", "  min: [0, 0, 0]", "  max: [1.5, 1, 1]",
+                                    "count: [1, 1, 1]"})),
             "scene.yaml:11: bodies[0].region.max = [1.5, 1, 1]: outside the domain [0, 0, 0] .. [1, 1, 1]");
-  EXPECT_EQ(error(entry("random", {"name: \"b{}\"", ball, glass, "region: {min: [-0.1, 0, 0], max: [1, 1, 1]}",
-                                   "count: 1"})),
-            "scene.yaml:9: bodies[0].region.min = [-0.1, 0, 0]: outside the domain [0, 0, 0] .. [1, 1, 1]");
+  EXPECT_EQ(
+      error(entry("random", {"name: \"b{}\"", ball, glass, "region: {min: [-0.1, 0, 0], max: [1, 1, 1]}", "count: 1"})),
+      "scene.yaml:9: bodies[0].region.min = [-0.1, 0, 0]: outside the domain [0, 0, 0] .. [1, 1, 1]");
   EXPECT_EQ(error(entry("lattice", {"name: \"b{}\"", ball, glass, "region: {min: [0, 0, 0], max: [1, 0, 1]}"})),
             "scene.yaml:9: bodies[0].region.max = [1, 0, 1]: must be greater than bodies[0].region.min in every "
             "component");
@@ -195,17 +195,17 @@ TEST(Generators, NamesMustBeUniqueAcrossGeneratedAndSingleBodies) {
   // The generator at lines 5-10, the single body at line 11.
   EXPECT_EQ(error(lattice({"count: [4, 3, 2]"}) + single),
             "scene.yaml:11: bodies[1].name = b003: duplicate body name (first at bodies[0])");
-  EXPECT_EQ(error(lattice({"count: [4, 3, 2]"}) + entry("random", {"name: \"b{:03d}\"", ball, glass,
-                                                                    "region: {min: [0, 0, 0.5], max: [1, 1, 1]}",
-                                                                    "count: 1"})),
+  EXPECT_EQ(error(lattice({"count: [4, 3, 2]"}) +
+                  entry("random",
+                        {"name: \"b{:03d}\"", ball, glass, "region: {min: [0, 0, 0.5], max: [1, 1, 1]}", "count: 1"})),
             "scene.yaml:12: bodies[1].name = \"b{:03d}\": makes 'b000', a name bodies[0] has already");
 }
 
 TEST(Generators, EveryBodySharesTheEntrysKeys) {
-  const Scene s = load(entry("lattice", {"name: \"p{}\"", "shape: {type: box, half_extents: [0.05, 0.02, 0.01]}",
-                                         "fixed: true", "orientation: [0.70710678, 0, 0, 0.70710678]",
-                                         "velocity: [0, 0, -1]", "angular_velocity: [1, 0, 0]", box,
-                                         "count: [2, 2, 2]"}));
+  const Scene s =
+      load(entry("lattice", {"name: \"p{}\"", "shape: {type: box, half_extents: [0.05, 0.02, 0.01]}", "fixed: true",
+                             "orientation: [0.70710678, 0, 0, 0.70710678]", "velocity: [0, 0, -1]",
+                             "angular_velocity: [1, 0, 0]", box, "count: [2, 2, 2]"}));
   ASSERT_EQ(s.bodies.size(), 8u);
   for (const Body& b : s.bodies) {
     EXPECT_TRUE(b.fixed);

@@ -15,8 +15,8 @@ std::string sphere(const std::string& name, const std::string& position, const s
          extra + "}\n";
 }
 std::string crate(const std::string& name, const std::string& position) {
-  return "  - {name: " + name + ", shape: {type: box, half_extents: [0.1, 0.1, 0.1]}, fixed: true, position: " +
-         position + "}\n";
+  return "  - {name: " + name +
+         ", shape: {type: box, half_extents: [0.1, 0.1, 0.1]}, fixed: true, position: " + position + "}\n";
 }
 std::string error(const std::string& bodies) { return load_error(head + "bodies:\n" + bodies); }
 

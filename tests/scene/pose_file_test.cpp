@@ -17,8 +17,9 @@ class PoseFile : public output::test::TempDirTest {
 
   // The entry reading `name` (its `file` key is line 9), and `extra` keys after it.
   std::string scene(const std::string& name, const std::string& extra = "") const {
-    return head + "bodies:\n  - generate: file\n    name: \"g{}\"\n    shape: {type: sphere, radius: 0.01}\n"
-                  "    material: {density: 1000}\n    file: " +
+    return head +
+           "bodies:\n  - generate: file\n    name: \"g{}\"\n    shape: {type: sphere, radius: 0.01}\n"
+           "    material: {density: 1000}\n    file: " +
            name + "\n" + extra;
   }
   Scene load(const std::string& text) const { return load_scene_from_string(text, file("scene.yaml")); }
@@ -95,8 +96,8 @@ void write_run(const std::filesystem::path& path, const std::vector<std::string>
     const double shift = k == windows - 1 ? 0 : 0.05;  // the earlier rows are elsewhere
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       const double at = 0.1 + 0.5 * static_cast<double>(b) + shift;
-      const std::vector<double> pose{at, at + 0.1, at + 0.2, b == 0 ? 0.0 : 1.0, 0, 0, b == 0 ? 1.0 : 0.0,
-                                     1, 1, 1, 1, 1, 1};
+      const std::vector<double> pose{at, at + 0.1, at + 0.2, b == 0 ? 0.0 : 1.0, 0, 0, b == 0 ? 1.0 : 0.0, 1, 1, 1,
+                                     1,  1,        1};
       w.poses.insert(w.poses.end(), pose.begin(), pose.end());
       w.forces.insert(w.forces.end(), 6, 0.0);
     }
@@ -130,8 +131,9 @@ TEST_F(PoseFile, RunFilesWithoutBodiesOrRowsOrNoRunFileAtAll) {
 TEST_F(PoseFile, TheScenesOwnOutputFileIsRefused) {
   write_run(file("run.h5"), {"a"}, 1);
   EXPECT_EQ(error("output: {file: " + file("run.h5").string() + "}\n" + scene("run.h5")),
-            where(10) + "bodies[0].file = run.h5: is the scene's output.file, which a run of this scene overwrites "
-                        "before its participants read it");
+            where(10) +
+                "bodies[0].file = run.h5: is the scene's output.file, which a run of this scene overwrites "
+                "before its participants read it");
 }
 
 }  // namespace

@@ -25,8 +25,9 @@ std::string ball(const std::string& name, const std::string& material, const std
 TEST(UnusedMaterials, FrictionWithoutTheFrictionEffectNamesBodyKeyAndEffect) {
   const auto w = warnings("[gravity, contact]", ball("ball", "", "0.2") + ball("box", ", friction: 0.5", "0.4"));
   ASSERT_EQ(w.size(), 1u);
-  EXPECT_EQ(w[0], "scene.yaml:9: bodies[1].material.friction = 0.5: ignored for body 'box': "
-                  "the scene's effects do not include 'friction'");
+  EXPECT_EQ(w[0],
+            "scene.yaml:9: bodies[1].material.friction = 0.5: ignored for body 'box': "
+            "the scene's effects do not include 'friction'");
 }
 
 // Guards against: bodies' restitution silently unused when contact is off, and friction
@@ -34,21 +35,23 @@ TEST(UnusedMaterials, FrictionWithoutTheFrictionEffectNamesBodyKeyAndEffect) {
 TEST(UnusedMaterials, WithoutContactBothAreIgnoredAndEveryMissingEffectIsNamed) {
   const auto w = warnings("[gravity]", ball("ball", ", friction: 0.3, restitution: 0.9"));
   ASSERT_EQ(w.size(), 2u);
-  EXPECT_EQ(w[0], "scene.yaml:8: bodies[0].material.friction = 0.3: ignored for body 'ball': "
-                  "the scene's effects include neither 'contact' nor 'friction'");
-  EXPECT_EQ(w[1], "scene.yaml:8: bodies[0].material.restitution = 0.9: ignored for body 'ball': "
-                  "the scene's effects do not include 'contact'");
+  EXPECT_EQ(w[0],
+            "scene.yaml:8: bodies[0].material.friction = 0.3: ignored for body 'ball': "
+            "the scene's effects include neither 'contact' nor 'friction'");
+  EXPECT_EQ(w[1],
+            "scene.yaml:8: bodies[0].material.restitution = 0.9: ignored for body 'ball': "
+            "the scene's effects do not include 'contact'");
 }
 
 // Guards against: a bed of many grains printing one line per grain.
 TEST(UnusedMaterials, ManyBodiesGiveOneLineThatCountsThem) {
-  const std::string bodies =
-      ball("a", "", "0.2") + ball("b", ", friction: 0.5", "0.4") + ball("c", ", friction: 0.4", "0.6") +
-      ball("d", ", friction: 1", "0.8");
+  const std::string bodies = ball("a", "", "0.2") + ball("b", ", friction: 0.5", "0.4") +
+                             ball("c", ", friction: 0.4", "0.6") + ball("d", ", friction: 1", "0.8");
   const auto w = warnings("[gravity, contact]", bodies);
   ASSERT_EQ(w.size(), 1u);
-  EXPECT_EQ(w[0], "scene.yaml:9: bodies[1].material.friction = 0.5: ignored for body 'b' and 2 more bodies: "
-                  "the scene's effects do not include 'friction'");
+  EXPECT_EQ(w[0],
+            "scene.yaml:9: bodies[1].material.friction = 0.5: ignored for body 'b' and 2 more bodies: "
+            "the scene's effects do not include 'friction'");
 }
 
 // Guards against: warnings for values that are used, or that are zero.

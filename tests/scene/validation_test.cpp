@@ -27,11 +27,12 @@ TEST(Validation, FolderMustExist) {
 }
 
 TEST(Validation, UnknownNestedKey) {
-  EXPECT_EQ(load_error("time: {end: 1}\ncoupling: {window: 0.01, windw: 0.02}\n"
-                       "domain: {min: [0, 0, 0], max: [1, 1, 1]}\n"),
-            "scene.yaml:2: coupling.windw = 0.02: unknown key; expected one of: "
-            "window, scheme, acceleration, relaxation, max_iterations, tolerance, force_tolerance, transport, interface, "
-            "timeout, heartbeat");
+  EXPECT_EQ(
+      load_error("time: {end: 1}\ncoupling: {window: 0.01, windw: 0.02}\n"
+                 "domain: {min: [0, 0, 0], max: [1, 1, 1]}\n"),
+      "scene.yaml:2: coupling.windw = 0.02: unknown key; expected one of: "
+      "window, scheme, acceleration, relaxation, max_iterations, tolerance, force_tolerance, transport, interface, "
+      "timeout, heartbeat");
   EXPECT_EQ(load_error(head + "bodies:\n" + ball(", colour: red")),
             "scene.yaml:5: bodies[0].colour = red: unknown key; expected one of: "
             "generate, name, fixed, shape, material, orientation, velocity, angular_velocity, position");
@@ -224,9 +225,10 @@ TEST(Validation, CouplingBounds) {
   EXPECT_EQ(coupling("transport: tcp, interface: 0.0.0.0"),
             "scene.yaml:2: coupling.interface = 0.0.0.0: listening on every address gives participants no address "
             "to connect to; name one");
-  EXPECT_EQ(coupling("transport: tcp, interface: 'tcp://ib0'"),
-            "scene.yaml:2: coupling.interface = \"tcp://ib0\": expected a network interface (ib0, eth0) or an address of "
-            "this host (10.1.2.3)");
+  EXPECT_EQ(
+      coupling("transport: tcp, interface: 'tcp://ib0'"),
+      "scene.yaml:2: coupling.interface = \"tcp://ib0\": expected a network interface (ib0, eth0) or an address of "
+      "this host (10.1.2.3)");
   EXPECT_EQ(coupling("acceleration: anderson"),
             "scene.yaml:2: coupling.acceleration = anderson: expected one of: none, constant, aitken, iqn-ils");
 }
@@ -255,8 +257,9 @@ TEST(Validation, BadNames) {
   EXPECT_EQ(load_error(head + "participants:\n  my/spring: {}\n"),
             "scene.yaml:5: participants.my/spring = {}: expected a name of 1 to 31 letters, digits, '_' and '-'");
   const std::string too_long(32, 'a');  // it would not fit the protocol header
-  EXPECT_EQ(load_error(head + "participants:\n  " + too_long + ": {}\n"),
-            "scene.yaml:5: participants." + too_long + " = {}: expected a name of 1 to 31 letters, digits, '_' and '-'");
+  EXPECT_EQ(
+      load_error(head + "participants:\n  " + too_long + ": {}\n"),
+      "scene.yaml:5: participants." + too_long + " = {}: expected a name of 1 to 31 letters, digits, '_' and '-'");
 }
 
 TEST(Validation, NonUnitQuaternion) {

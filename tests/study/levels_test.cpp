@@ -51,7 +51,9 @@ TEST(Vary, BadArgumentsAreNamed) {
   EXPECT_EQ(error_of([] { parse_vary("coupling.window=0.01,,0.005"); }),
             "--vary coupling.window=0.01,,0.005: a value is empty");
   EXPECT_NE(error_of([] { parse_vary("coupling.window=[0.01,0.005"); }), "");
-  EXPECT_EQ(error_of([] { level_count({parse_vary("a=1,2,3"), parse_vary("b=1,2")}); }),
+  EXPECT_EQ(error_of([] {
+              level_count({parse_vary("a=1,2,3"), parse_vary("b=1,2")});
+            }),
             "--vary b=1,2 gives 2 values but --vary a=1,2,3 gives 3: every --vary needs one value per level");
 }
 
@@ -138,14 +140,16 @@ TEST(Scaled, FieldFramesKeepTheirTimes) {
   yaml.replace(yaml.find("domain:"), 0, "output: {fields_every: 5}\n");
   const scene::Scene s = scene::load_scene_from_string(yaml);
   const std::vector<Varied> keys = scaled(s, {1 / 2.25, 0.5, 1, 2}, "--target x=1%");
-  const auto frames = std::find_if(keys.begin(), keys.end(), [](const Varied& v) { return v.key == "output.fields_every"; });
+  const auto frames =
+      std::find_if(keys.begin(), keys.end(), [](const Varied& v) { return v.key == "output.fields_every"; });
   ASSERT_NE(frames, keys.end());
   EXPECT_EQ(text(frames->values[0]), "2");  // 44 windows: every 2.2, rounded
   EXPECT_EQ(text(frames->values[1]), "3");  // 50 windows: every 2.5, rounded away from zero
   EXPECT_EQ(text(frames->values[2]), "5");
   EXPECT_EQ(text(frames->values[3]), "10");
   // Without the key in the scene nothing is added (the default's frames are the scene's).
-  for (const Varied& v : scaled(scene::load_scene_from_string(kScene), {0.5, 1}, "x")) EXPECT_NE(v.key, "output.fields_every");
+  for (const Varied& v : scaled(scene::load_scene_from_string(kScene), {0.5, 1}, "x"))
+    EXPECT_NE(v.key, "output.fields_every");
 }
 
 TEST(Ratios, StepsShrinkAndCountsGrow) {

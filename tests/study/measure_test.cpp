@@ -44,7 +44,8 @@ TEST(Measure, ErrorsPointAtTheRestOfTheText) {
   EXPECT_EQ(parse_error("max(body::velocity.x)"), "at ':velocity.x)': expected a body's name after 'body:'");
   EXPECT_EQ(parse_error(" abs( min( body:ball-2:force.y ) ) "), "");
   EXPECT_EQ(parse_error("final(field::velocity.x)"), "at ':velocity.x)': expected a participant's name after 'field:'");
-  EXPECT_EQ(parse_error("final(field:fluid:.x)"), "at '.x)': expected a field's name (velocity, pressure, density, ...)");
+  EXPECT_EQ(parse_error("final(field:fluid:.x)"),
+            "at '.x)': expected a field's name (velocity, pressure, density, ...)");
   EXPECT_EQ(parse_error("final(field:fluid:velocity.w)"), "at 'w)': expected the component x, y or z");
   EXPECT_EQ(parse_error("final(field:fluid:pressure)"), "");
 }
@@ -78,8 +79,7 @@ class OnARunFile : public ::testing::Test {
       run.append(w);
       if (k % 5 == 0) {
         const field::RectilinearGrid grid{{std::vector<double>{0, 1, 3}, {0, 1}, {0, 1}}};
-        run.write_fields("p", w.window, t,
-                         {grid, {{"s", 1, {10 * t, 10 * t}}, {"u", 3, {1, 0, 0, 4, 10 * t, 0}}}});
+        run.write_fields("p", w.window, t, {grid, {{"s", 1, {10 * t, 10 * t}}, {"u", 3, {1, 0, 0, 4, 10 * t, 0}}}});
       }
     }
   }

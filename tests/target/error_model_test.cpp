@@ -58,8 +58,9 @@ TEST(Predict, NoScaleFromLevelsThatDoNotConvergeMonotonically) {
   const Tolerance t = parse_tolerance("1%");
   const Fit oscillating = predict(study::estimate(1.0, 1.1, 0.85, 1.5, 1.5), 1.0, 1, t);
   EXPECT_FALSE(oscillating.prediction);
-  EXPECT_EQ(oscillating.why_none, "the three levels oscillate about their limit, so there is no error model to "
-                                  "extrapolate from");
+  EXPECT_EQ(oscillating.why_none,
+            "the three levels oscillate about their limit, so there is no error model to "
+            "extrapolate from");
   EXPECT_FALSE(predict(study::estimate(1.4, 1.2, 1.1, 1.5, 1.5), 1.4, 1, t).prediction);  // moving apart
 }
 

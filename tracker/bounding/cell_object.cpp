@@ -25,7 +25,8 @@ std::vector<std::vector<int>> touching(const Mesh& mesh, const csg::Tree& object
   for (Index c = 0; c < mesh.cell_count(); ++c) {
     const Eigen::AlignedBox3d box = enlarged_box(mesh, c, margin);
     for (std::size_t p = 0; p < primitives.size(); ++p)
-      if (bounds[p].intersects(box) && primitives[p].surface_may_meet(box)) near[static_cast<std::size_t>(c)].push_back(static_cast<int>(p));
+      if (bounds[p].intersects(box) && primitives[p].surface_may_meet(box))
+        near[static_cast<std::size_t>(c)].push_back(static_cast<int>(p));
   }
   return near;
 }
@@ -38,7 +39,8 @@ std::vector<int> with_ring(const Mesh& mesh, const std::vector<std::vector<int>>
   for (Index f = mesh.cell_faces[cell]; f < mesh.cell_faces[cell + 1]; ++f) {
     const Face& face = mesh.faces[static_cast<std::size_t>(f)];
     const Index n = face.neighbour;
-    if (n >= 0 && face.shift == 0) all.insert(all.end(), near[static_cast<std::size_t>(n)].begin(), near[static_cast<std::size_t>(n)].end());
+    if (n >= 0 && face.shift == 0)
+      all.insert(all.end(), near[static_cast<std::size_t>(n)].begin(), near[static_cast<std::size_t>(n)].end());
   }
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
@@ -60,7 +62,8 @@ CellObject::CellObject(const Mesh& mesh, const csg::Tree& object, double margin)
                                   std::to_string(csg::max_primitives) + ": refine the mesh there");
     // Left-out primitives are constant in the cell: their value at the centroid is theirs.
     const Vec3& centre = mesh.centroid[static_cast<std::size_t>(c)];
-    csg::Tree tree = object.pruned(kept, [&](int p) { return object.primitives()[static_cast<std::size_t>(p)].contains(centre); });
+    csg::Tree tree =
+        object.pruned(kept, [&](int p) { return object.primitives()[static_cast<std::size_t>(p)].contains(centre); });
     if (kept.empty()) {
       tree_of_.push_back(tree.evaluate(0) ? 1 : 0);
     } else {
@@ -90,7 +93,8 @@ csg::State CellObject::carry(std::span<const int> old, csg::State state, Index t
   std::size_t i = 0;
   for (std::size_t j = 0; j < now.size(); ++j) {
     while (i < old.size() && old[i] < now[j]) ++i;
-    const bool inside = i < old.size() && old[i] == now[j] ? csg::test(state, static_cast<int>(i)) : local[j].contains(x);
+    const bool inside =
+        i < old.size() && old[i] == now[j] ? csg::test(state, static_cast<int>(i)) : local[j].contains(x);
     if (inside) out |= csg::bit(static_cast<int>(j));
   }
   return out;

@@ -24,7 +24,7 @@ namespace cosim::tracker {
 struct CellObjectStats {
   double mean_primitives = 0;  // per cell
   int max_primitives = 0;
-  Index constant_cells = 0;    // cells where the object cannot change (no events)
+  Index constant_cells = 0;  // cells where the object cannot change (no events)
 };
 
 class CellObject {
@@ -36,7 +36,9 @@ class CellObject {
   // The cell's primitives as indices into the object's, ascending; local index = position.
   std::span<const int> primitives(Index cell) const;
   // The object in the cell over local indices: evaluate() a local state with it.
-  const csg::Tree& tree(Index cell) const { return trees_[static_cast<std::size_t>(tree_of_[static_cast<std::size_t>(cell)])]; }
+  const csg::Tree& tree(Index cell) const {
+    return trees_[static_cast<std::size_t>(tree_of_[static_cast<std::size_t>(cell)])];
+  }
   // A particle's local state at x in `cell` by direct evaluation: away from surfaces only.
   csg::State classify(Index cell, const Vec3& x) const;
   // The local state in `to` of a particle that leaves `from` with `state` through their
@@ -50,7 +52,7 @@ class CellObject {
   CellObjectStats stats() const;
 
  private:
-  std::vector<Index> first_;       // cell c's primitives are primitives_[first_[c] .. first_[c+1])
+  std::vector<Index> first_;  // cell c's primitives are primitives_[first_[c] .. first_[c+1])
   std::vector<int> primitives_;
   // Cell c's tree is trees_[tree_of_[c]]. Only cells with primitives have their own; the
   // others share trees_[0] (always outside) or trees_[1] (always inside), so a large mesh

@@ -17,10 +17,10 @@ namespace cosim::csg {
 struct Event {
   double dt = std::numeric_limits<double>::infinity();  // from now, >= 0; infinity: none
   int primitive = -1;
-  bool enters = false;       // into the primitive, else out of it
+  bool enters = false;  // into the primitive, else out of it
   bool boundary = false;
-  bool into_object = false;  // boundary: from outside the object to inside
-  bool permeable = false;    // boundary: of a permeable object
+  bool into_object = false;                          // boundary: from outside the object to inside
+  bool permeable = false;                            // boundary: of a permeable object
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // boundary: the object's outward unit normal there
 
   bool happens() const { return dt < std::numeric_limits<double>::infinity(); }

@@ -12,12 +12,13 @@ Expression Expression::primitive(PrimitiveKind kind, const Eigen::Affine3d& plac
 
 Expression Expression::transformed(const Eigen::Affine3d& transform, const Expression& child) {
   require_invertible(transform);
-  return Expression(std::make_shared<const Node>(
-      Node{Op::transform, PrimitiveKind::ball, transform, child.node_, child.node_}));
+  return Expression(
+      std::make_shared<const Node>(Node{Op::transform, PrimitiveKind::ball, transform, child.node_, child.node_}));
 }
 
 Expression::Expression(Op op, const Expression& a, const Expression& b)
-    : node_(std::make_shared<const Node>(Node{op, PrimitiveKind::ball, Eigen::Affine3d::Identity(), a.node_, b.node_})) {}
+    : node_(
+          std::make_shared<const Node>(Node{op, PrimitiveKind::ball, Eigen::Affine3d::Identity(), a.node_, b.node_})) {}
 
 namespace {
 

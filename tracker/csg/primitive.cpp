@@ -37,10 +37,14 @@ Eigen::AlignedBox3d Primitive::bounds() const {
 double Primitive::indicator(const Eigen::Vector3d& x) const {
   const Eigen::Vector3d p = to_canonical(x);
   switch (kind_) {
-    case PrimitiveKind::half_space: return detail::half_space_indicator(p);
-    case PrimitiveKind::ball: return detail::ball_indicator(p);
-    case PrimitiveKind::cylinder: return detail::cylinder_indicator(p);
-    case PrimitiveKind::box: return detail::box_indicator(p);
+    case PrimitiveKind::half_space:
+      return detail::half_space_indicator(p);
+    case PrimitiveKind::ball:
+      return detail::ball_indicator(p);
+    case PrimitiveKind::cylinder:
+      return detail::cylinder_indicator(p);
+    case PrimitiveKind::box:
+      return detail::box_indicator(p);
   }
   return 0.0;
 }
@@ -50,10 +54,18 @@ Eigen::Vector3d Primitive::normal(const Eigen::Vector3d& x) const {
   const Eigen::Vector3d p = to_canonical(x);
   Eigen::Vector3d g = Eigen::Vector3d::Zero();
   switch (kind_) {
-    case PrimitiveKind::half_space: g = detail::half_space_gradient(p); break;
-    case PrimitiveKind::ball: g = detail::ball_gradient(p); break;
-    case PrimitiveKind::cylinder: g = detail::cylinder_gradient(p); break;
-    case PrimitiveKind::box: g = detail::box_gradient(p); break;
+    case PrimitiveKind::half_space:
+      g = detail::half_space_gradient(p);
+      break;
+    case PrimitiveKind::ball:
+      g = detail::ball_gradient(p);
+      break;
+    case PrimitiveKind::cylinder:
+      g = detail::cylinder_gradient(p);
+      break;
+    case PrimitiveKind::box:
+      g = detail::box_gradient(p);
+      break;
   }
   return (to_canonical_.transpose() * g).normalized();
 }
@@ -62,10 +74,14 @@ Chord Primitive::chord(const Eigen::Vector3d& x, const Eigen::Vector3d& v) const
   const Eigen::Vector3d p = to_canonical(x);
   const Eigen::Vector3d u = to_canonical_ * v;
   switch (kind_) {
-    case PrimitiveKind::half_space: return detail::half_space_chord(p, u);
-    case PrimitiveKind::ball: return detail::ball_chord(p, u);
-    case PrimitiveKind::cylinder: return detail::cylinder_chord(p, u);
-    case PrimitiveKind::box: return detail::box_chord(p, u);
+    case PrimitiveKind::half_space:
+      return detail::half_space_chord(p, u);
+    case PrimitiveKind::ball:
+      return detail::ball_chord(p, u);
+    case PrimitiveKind::cylinder:
+      return detail::cylinder_chord(p, u);
+    case PrimitiveKind::box:
+      return detail::box_chord(p, u);
   }
   return Chord::empty();
 }
@@ -83,10 +99,14 @@ bool Primitive::surface_may_meet(const Eigen::AlignedBox3d& box) const {
   const Eigen::Vector3d& hi = image.max();
   const Eigen::Vector3d nearest = Eigen::Vector3d::Zero().cwiseMax(lo).cwiseMin(hi);  // to the origin
   switch (kind_) {
-    case PrimitiveKind::half_space: return lo.z() <= 0.0;
-    case PrimitiveKind::ball: return nearest.squaredNorm() <= 1.0;
-    case PrimitiveKind::cylinder: return nearest.head<2>().squaredNorm() <= 1.0;
-    case PrimitiveKind::box: return (lo.array() <= 1.0).all() && (hi.array() >= -1.0).all();
+    case PrimitiveKind::half_space:
+      return lo.z() <= 0.0;
+    case PrimitiveKind::ball:
+      return nearest.squaredNorm() <= 1.0;
+    case PrimitiveKind::cylinder:
+      return nearest.head<2>().squaredNorm() <= 1.0;
+    case PrimitiveKind::box:
+      return (lo.array() <= 1.0).all() && (hi.array() >= -1.0).all();
   }
   return true;
 }

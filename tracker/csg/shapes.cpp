@@ -9,12 +9,14 @@ namespace {
 
 Eigen::Vector3d unit(const Eigen::Vector3d& d, const char* what) {
   const double n = d.norm();
-  if (!(n > 0.0) || !std::isfinite(n)) throw std::invalid_argument(std::string("csg ") + what + ": direction must be non-zero and finite");
+  if (!(n > 0.0) || !std::isfinite(n))
+    throw std::invalid_argument(std::string("csg ") + what + ": direction must be non-zero and finite");
   return d / n;
 }
 
 void require_positive(double value, const char* what) {
-  if (!(value > 0.0) || !std::isfinite(value)) throw std::invalid_argument(std::string("csg ") + what + ": size must be positive and finite");
+  if (!(value > 0.0) || !std::isfinite(value))
+    throw std::invalid_argument(std::string("csg ") + what + ": size must be positive and finite");
 }
 
 // A rotation taking the canonical z axis to `axis` (unit).
@@ -50,7 +52,8 @@ Expression capped_cylinder(const Eigen::Vector3d& base, const Eigen::Vector3d& t
   return cylinder(base, axis, radius) & half_space(top, axis) & half_space(base, -axis);
 }
 
-Expression box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extents, const Eigen::Quaterniond& orientation) {
+Expression box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extents,
+               const Eigen::Quaterniond& orientation) {
   for (int i = 0; i < 3; ++i) require_positive(half_extents[i], "box");
   return Expression::primitive(PrimitiveKind::box,
                                frame(centre, orientation.normalized().toRotationMatrix() * half_extents.asDiagonal()));

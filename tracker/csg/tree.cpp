@@ -13,8 +13,10 @@ int Tree::normalise(const Expression& e, bool complement, const Eigen::Affine3d&
       complemented_.push_back(complement);
       nodes_.push_back({Op::literal, static_cast<int>(primitives_.size()) - 1, {}});
       return static_cast<int>(nodes_.size()) - 1;
-    case Expression::Op::complement: return normalise(e.left(), !complement, frame);
-    case Expression::Op::transform: return normalise(e.left(), complement, frame * e.affine());
+    case Expression::Op::complement:
+      return normalise(e.left(), !complement, frame);
+    case Expression::Op::transform:
+      return normalise(e.left(), complement, frame * e.affine());
     // ~(a | b) = ~a & ~b and ~(a & b) = ~a | ~b.
     case Expression::Op::unite:
       return combine(complement ? Op::all : Op::any, e.left(), complement, e.right(), complement, frame);
@@ -47,7 +49,8 @@ template <typename IsInside>
 bool Tree::evaluate_with(int index, const IsInside& inside) const {
   const Node& node = nodes_[index];
   switch (node.op) {
-    case Op::literal: return inside(node.primitive) != complemented_[node.primitive];
+    case Op::literal:
+      return inside(node.primitive) != complemented_[node.primitive];
     case Op::any:
       for (const int child : node.children)
         if (evaluate_with(child, inside)) return true;
@@ -56,7 +59,8 @@ bool Tree::evaluate_with(int index, const IsInside& inside) const {
       for (const int child : node.children)
         if (!evaluate_with(child, inside)) return false;
       return true;
-    case Op::constant: return node.primitive != 0;
+    case Op::constant:
+      return node.primitive != 0;
   }
   return false;
 }
@@ -102,7 +106,8 @@ int Tree::add_constant(bool value) {
 int Tree::prune(const Tree& from, int index, const std::vector<int>& local, const std::function<bool(int)>& inside) {
   const Node& node = from.nodes_[index];
   switch (node.op) {
-    case Op::constant: return add_constant(node.primitive != 0);
+    case Op::constant:
+      return add_constant(node.primitive != 0);
     case Op::literal:
       if (local[node.primitive] < 0) return add_constant(inside(node.primitive) != from.complemented_[node.primitive]);
       nodes_.push_back({Op::literal, local[node.primitive], {}});

@@ -22,8 +22,8 @@ class Tree {
 
   // The tree where only the primitives `kept` (global indices, in the order that becomes
   // the new local indices) still vary: every other primitive g is replaced by the constant
-  // `inside(g)` (inside it or not, asked only for the primitives the tree still reaches), and unions and intersections are simplified, down to a
-  // constant if nothing varies any more. Used per cell: a primitive whose surface stays away
+  // `inside(g)` (inside it or not, asked only for the primitives the tree still reaches), and unions and intersections
+  // are simplified, down to a constant if nothing varies any more. Used per cell: a primitive whose surface stays away
   // from a cell is constant there.
   Tree pruned(const std::vector<int>& kept, const std::function<bool(int)>& inside) const;
   // The tree without primitives that is always `value`.
@@ -48,8 +48,8 @@ class Tree {
   enum class Op { literal, any, all, constant };
   struct Node {
     Op op;
-    int primitive;               // literal; constant: 1 inside, 0 outside
-    std::vector<int> children;   // any (union), all (intersection)
+    int primitive;              // literal; constant: 1 inside, 0 outside
+    std::vector<int> children;  // any (union), all (intersection)
   };
   Tree() = default;
 

@@ -15,9 +15,9 @@ namespace {
 
 // The number of candidate pairs of this step, carrying the fraction.
 std::int64_t candidates(std::size_t n, CellCollisionState& state, double volume, double fnum, double dt) {
-  const double expected = 0.5 * static_cast<double>(n) * static_cast<double>(n - 1) * fnum * state.sigma_g_max * dt /
-                              volume +
-                          state.remainder;
+  const double expected =
+      0.5 * static_cast<double>(n) * static_cast<double>(n - 1) * fnum * state.sigma_g_max * dt / volume +
+      state.remainder;
   const double pairs = std::floor(expected);
   state.remainder = expected - pairs;
   return static_cast<std::int64_t>(pairs);

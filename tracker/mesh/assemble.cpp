@@ -103,8 +103,7 @@ void pair_by_neighbours(Mesh& mesh, const Polyhedra& input) {
     if (mesh.faces[f].twin < 0) continue;  // validation reports it
     const Vec3 shift = lattice(middle[mesh.faces[f].twin] - middle[f]);
     std::array<long, 3> key{};
-    for (int k = 0; k < 3; ++k)
-      key[k] = input.period[k] > 0.0 ? std::lround(shift[k] / input.period[k]) : 0;
+    for (int k = 0; k < 3; ++k) key[k] = input.period[k] > 0.0 ? std::lround(shift[k] / input.period[k]) : 0;
     const auto [it, added] = shift_index.try_emplace(key, static_cast<Index>(mesh.shifts.size()));
     if (added) mesh.shifts.push_back(shift);
     mesh.faces[f].shift = it->second;

@@ -122,17 +122,16 @@ Polyhedra box_polyhedra(const BoxSpec& spec) {
       for (int i = 0; i + 1 < nx; ++i) {
         const std::array<int, 3> cell{i, j, k}, last{nx - 2, ny - 2, nz - 2};
         std::array<Index, 8> corner;
-        for (int b = 0; b < 8; ++b)
-          corner[b] = (i + (b & 1)) + nx * ((j + (b >> 1 & 1)) + ny * (k + (b >> 2 & 1)));
+        for (int b = 0; b < 8; ++b) corner[b] = (i + (b & 1)) + nx * ((j + (b >> 1 & 1)) + ny * (k + (b >> 2 & 1)));
         // Patch of the face with all coordinates at the box's min or max on axis a.
         const auto patch_on = [&](int axis, bool high) {
           return cell[axis] == (high ? last[axis] : 0) ? Index(2 * axis + (high ? 1 : 0)) : Index(-1);
         };
         if (!spec.tetrahedra) {
           for (int f = 0; f < 6; ++f)
-            poly.add_face({corner[hex_faces[f][0]], corner[hex_faces[f][1]], corner[hex_faces[f][2]],
-                           corner[hex_faces[f][3]]},
-                          patch_on(f / 2, f % 2 == 1));
+            poly.add_face(
+                {corner[hex_faces[f][0]], corner[hex_faces[f][1]], corner[hex_faces[f][2]], corner[hex_faces[f][3]]},
+                patch_on(f / 2, f % 2 == 1));
           poly.end_cell();
           continue;
         }

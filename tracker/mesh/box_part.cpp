@@ -47,7 +47,8 @@ Mesh box_part(const BoxSpec& spec, const std::array<int, 3>& lo, const std::arra
     for (int a = 0; a < 3; ++a) cell.hex[a] += first[a];
     return box_cell_index(cell, n, per_hex);
   };
-  Mesh part = extract_part(box_mesh(around), [&](Index c) { return owner(whole_cell(c)); }, rank);
+  Mesh part = extract_part(
+      box_mesh(around), [&](Index c) { return owner(whole_cell(c)); }, rank);
   for (Index& g : part.global) g = whole_cell(g);
   part.whole_diagonal =
       Vec3(nodes[0].back() - nodes[0].front(), nodes[1].back() - nodes[1].front(), nodes[2].back() - nodes[2].front())

@@ -132,8 +132,7 @@ Mesh read(const std::string& file) {
 }  // namespace
 
 Mesh load_gmsh(const std::filesystem::path& path) {
-  if (!std::filesystem::is_regular_file(path))
-    throw std::invalid_argument(path.string() + ": no such file");
+  if (!std::filesystem::is_regular_file(path)) throw std::invalid_argument(path.string() + ": no such file");
   Mesh mesh = read(path.string());
   require_valid(mesh);
   return mesh;

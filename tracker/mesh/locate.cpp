@@ -18,7 +18,8 @@ PointLocator::PointLocator(const Mesh& mesh) : mesh_(&mesh) {
     double off_plane = 0.0;
     for (Index f = mesh.cell_faces[c]; f < mesh.cell_faces[c + 1]; ++f)
       for (Index k = 0; k < mesh.vertex_count(f); ++k)
-        off_plane = std::max(off_plane, std::abs(mesh.faces[f].normal.dot(mesh.face_vertex(f, k) - mesh.faces[f].point)));
+        off_plane =
+            std::max(off_plane, std::abs(mesh.faces[f].normal.dot(mesh.face_vertex(f, k) - mesh.faces[f].point)));
     // The cell is its planes' intersection, which pokes out of the vertices' box by the
     // order of the faces' non-planarity.
     const double pad = 4.0 * off_plane + 1e-9 * box.diagonal().norm();

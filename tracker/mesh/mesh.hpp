@@ -36,8 +36,8 @@ constexpr Index patch_of(Index code) { return -1 - code; }
 struct Mesh {
   std::vector<Index> cell_faces;  // cell c owns faces [cell_faces[c], cell_faces[c + 1])
   std::vector<Face> faces;
-  std::vector<double> volume;     // per cell
-  std::vector<Vec3> centroid;     // per cell
+  std::vector<double> volume;  // per cell
+  std::vector<Vec3> centroid;  // per cell
 
   // The vertices define the geometry; the planes above are fitted to them (fit_geometry).
   // Face f's vertices are face_vertex_index[face_vertex_begin[f] .. face_vertex_begin[f+1]),
@@ -46,9 +46,9 @@ struct Mesh {
   std::vector<Index> face_vertex_begin;
   std::vector<Index> face_vertex_index;
 
-  std::vector<std::string> patches;     // boundary patch names, by patch index
+  std::vector<std::string> patches;        // boundary patch names, by patch index
   std::vector<Vec3> shifts{Vec3::Zero()};  // periodic translations; 0 is "none"
-  std::string source;                   // file or generator, for messages
+  std::string source;                      // file or generator, for messages
 
   // A rank's part of a larger mesh (part.hpp, `partial`): its last `ghosts` cells surround
   // the others and belong to other ranks, global[c] is cell c's index in the whole mesh, and
@@ -63,9 +63,7 @@ struct Mesh {
   Index own_cells() const { return cell_count() - ghosts; }
   Index global_cell(Index cell) const { return global.empty() ? cell : global[static_cast<std::size_t>(cell)]; }
   Index face_count() const { return static_cast<Index>(faces.size()); }
-  Index vertex_count(Index face) const {
-    return face_vertex_begin[face + 1] - face_vertex_begin[face];
-  }
+  Index vertex_count(Index face) const { return face_vertex_begin[face + 1] - face_vertex_begin[face]; }
   const Vec3& face_vertex(Index face, Index k) const {
     return vertices[face_vertex_index[face_vertex_begin[face] + k]];
   }

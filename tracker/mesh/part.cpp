@@ -46,8 +46,8 @@ Mesh extract_part(const Mesh& whole, const std::function<int(Index)>& owner, int
   Mesh part;
   part.partial = true;
   part.global = part_cells(whole, owner, rank, layers, local);
-  part.ghosts = static_cast<Index>(std::count_if(part.global.begin(), part.global.end(),
-                                                 [&](Index c) { return owner(c) != rank; }));
+  part.ghosts = static_cast<Index>(
+      std::count_if(part.global.begin(), part.global.end(), [&](Index c) { return owner(c) != rank; }));
   part.patches = whole.patches;
   part.shifts = whole.shifts;
   part.source = whole.source;
@@ -75,7 +75,8 @@ Mesh extract_part(const Mesh& whole, const std::function<int(Index)>& owner, int
       }
       part.faces.push_back(face);
       for (Index k = 0; k < whole.vertex_count(f); ++k) {
-        const auto v = static_cast<std::size_t>(whole.face_vertex_index[static_cast<std::size_t>(whole.face_vertex_begin[f] + k)]);
+        const auto v =
+            static_cast<std::size_t>(whole.face_vertex_index[static_cast<std::size_t>(whole.face_vertex_begin[f] + k)]);
         if (vertex[v] < 0) {
           vertex[v] = static_cast<Index>(part.vertices.size());
           part.vertices.push_back(whole.vertices[v]);

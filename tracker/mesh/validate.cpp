@@ -23,8 +23,7 @@ std::string str(double x) {
 class CellCheck {
  public:
   CellCheck(const Mesh& mesh, Index cell, std::vector<Problem>& problems)
-      : mesh_(mesh), cell_(cell), first_(mesh.cell_faces[cell]), last_(mesh.cell_faces[cell + 1]),
-        problems_(problems) {
+      : mesh_(mesh), cell_(cell), first_(mesh.cell_faces[cell]), last_(mesh.cell_faces[cell + 1]), problems_(problems) {
     size_ = cell_box(mesh, cell).diagonal().norm();
     tolerance_ = relative_tolerance * size_;
   }
@@ -84,9 +83,9 @@ class CellCheck {
     }
     const double cosine = face.normal.dot(mesh_.faces[face.twin].normal);
     if (cosine > -1.0 + relative_tolerance)
-      report(true, Defect::normals_not_opposite, f,
-             "normal and neighbour " + std::to_string(other) + "'s normal are not opposite (cosine " +
-                 str(cosine) + ")");
+      report(
+          true, Defect::normals_not_opposite, f,
+          "normal and neighbour " + std::to_string(other) + "'s normal are not opposite (cosine " + str(cosine) + ")");
   }
 
   void orientation(Index f) {
@@ -104,9 +103,7 @@ class CellCheck {
     return longest;
   }
 
-  double off_plane(Index f, const Vec3& x) const {
-    return mesh_.faces[f].normal.dot(x - mesh_.faces[f].point);
-  }
+  double off_plane(Index f, const Vec3& x) const { return mesh_.faces[f].normal.dot(x - mesh_.faces[f].point); }
 
   void planarity_and_convexity() {
     double allowance = 0.0;

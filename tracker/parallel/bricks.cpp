@@ -72,7 +72,9 @@ Bricks Bricks::by_slabs(std::array<int, 3> hexahedra, int per_hex, int parts, co
     // Each side keeps a hexahedron for each of its ranks where the brick has enough, and
     // at least one slab.
     const long long across = r.hexahedra() / (r.hi[axis] - r.lo[axis]);
-    const auto slabs_for = [&](long long parts) { return static_cast<int>(std::max(1LL, (parts + across - 1) / across)); };
+    const auto slabs_for = [&](long long parts) {
+      return static_cast<int>(std::max(1LL, (parts + across - 1) / across));
+    };
     int first = r.lo[axis] + slabs_for(low_parts), last = r.hi[axis] - slabs_for(count - low_parts);
     if (first > last) first = last = std::clamp(first, r.lo[axis] + 1, r.hi[axis] - 1);
     int best = first;

@@ -66,8 +66,8 @@ class Bricks {
 
   struct Node {
     int axis;
-    int cut;          // hexahedra below it go to `low`
-    int low, high;    // a node's index, or -1 - part for a brick
+    int cut;        // hexahedra below it go to `low`
+    int low, high;  // a node's index, or -1 - part for a brick
   };
   std::array<int, 3> hexahedra_;
   int per_hex_;

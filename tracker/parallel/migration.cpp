@@ -166,12 +166,11 @@ std::size_t migrate(Handover& handover, const Owners& owner, const Ranks& ranks,
   const std::size_t left = handover.size();
   handover.clear();
   for (const auto& [rank, bytes] : exchange(out, ranks, round))
-    for_each_record<FlightRecord>(bytes, handover.objects(),
-                                  [&](const FlightRecord& r, std::span<const csg::State> states) {
-                                    handover.add({{r.x[0], r.x[1], r.x[2]}, {r.v[0], r.v[1], r.v[2]},
-                                                  numbering.local(r.cell)},
-                                                 states, {r.remaining, r.entered, r.streak});
-                                  });
+    for_each_record<FlightRecord>(
+        bytes, handover.objects(), [&](const FlightRecord& r, std::span<const csg::State> states) {
+          handover.add({{r.x[0], r.x[1], r.x[2]}, {r.v[0], r.v[1], r.v[2]}, numbering.local(r.cell)}, states,
+                       {r.remaining, r.entered, r.streak});
+        });
   return left;
 }
 

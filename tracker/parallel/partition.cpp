@@ -55,9 +55,9 @@ std::vector<int> partition_cells(const Mesh& mesh, int parts, std::span<const in
   options[METIS_OPTION_SEED] = kSeed;
   // METIS does not write through its weights.
   idx_t* vertex_weights = weight.empty() ? nullptr : const_cast<idx_t*>(weight.data());
-  const int status = METIS_PartGraphKway(&vertices, &constraints, graph.start.data(), graph.neighbours.data(),
-                                         vertex_weights, nullptr, nullptr, &nparts, nullptr, nullptr, options, &cut,
-                                         part.data());
+  const int status =
+      METIS_PartGraphKway(&vertices, &constraints, graph.start.data(), graph.neighbours.data(), vertex_weights, nullptr,
+                          nullptr, &nparts, nullptr, nullptr, options, &cut, part.data());
   if (status != METIS_OK)
     throw std::runtime_error(mesh.source + ": METIS could not split the cells into " + std::to_string(parts) +
                              " parts (status " + std::to_string(status) + ")");

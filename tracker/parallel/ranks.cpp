@@ -62,8 +62,8 @@ void Ranks::gather_each(std::span<const double> values,
     MPI_Recv(&n, 1, MPI_LONG_LONG, from, kGatherTag, comm_, MPI_STATUS_IGNORE);
     received.resize(static_cast<std::size_t>(n));
     for (std::size_t at = 0; at < received.size(); at += kPiece)
-      MPI_Recv(received.data() + at, count(std::min(kPiece, received.size() - at)), MPI_DOUBLE, from, kGatherTag,
-               comm_, MPI_STATUS_IGNORE);
+      MPI_Recv(received.data() + at, count(std::min(kPiece, received.size() - at)), MPI_DOUBLE, from, kGatherTag, comm_,
+               MPI_STATUS_IGNORE);
     take(received);
   }
 }

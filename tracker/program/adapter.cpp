@@ -112,7 +112,8 @@ std::optional<TrackerSolver::FieldBlocks> TrackerSolver::field_blocks() const {
   FieldBlocks blocks;
   // A block on the wire: its lo and hi, then each field's values.
   std::vector<double> sent;
-  for (const std::array<int, 3>& corner : {mine.brick.lo, mine.brick.hi}) sent.insert(sent.end(), corner.begin(), corner.end());
+  for (const std::array<int, 3>& corner : {mine.brick.lo, mine.brick.hi})
+    sent.insert(sent.end(), corner.begin(), corner.end());
   std::vector<field::CellField> layout;
   for (field::CellField& f : cell_fields(mine.moments, mine.count)) {
     sent.insert(sent.end(), f.values.begin(), f.values.end());

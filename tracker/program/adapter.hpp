@@ -70,7 +70,7 @@ class TrackerSolver final : public participant::Solver {
   std::unique_ptr<Simulation> gas_;
   std::vector<int> obstacle_body_;                 // TrackerScene's
   std::optional<ParticleOutput> particle_output_;  // TrackerScene's
-  OutputGrid grid_;  // rank 0's: built once, its grid sent with every frame
+  OutputGrid grid_;                                // rank 0's: built once, its grid sent with every frame
   std::size_t bodies_ = 0;
   std::uint64_t windows_ = 0;  // of the run
   std::uint64_t done_ = 0;     // windows advanced through: the last one's index + 1

@@ -15,8 +15,12 @@ std::vector<field::CellField> cell_fields(std::span<const CellMoments> moments, 
     temperature.values.push_back(c.temperature);
     pressure.values.push_back(c.pressure);
   }
-  return {{"count", 1, {count.begin(), count.end()}}, std::move(mean_count), std::move(density),
-          std::move(velocity),  std::move(temperature),                       std::move(pressure)};
+  return {{"count", 1, {count.begin(), count.end()}},
+          std::move(mean_count),
+          std::move(density),
+          std::move(velocity),
+          std::move(temperature),
+          std::move(pressure)};
 }
 
 }  // namespace cosim::tracker

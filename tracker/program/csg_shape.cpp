@@ -17,11 +17,21 @@ using scene::Range;
 using scene::Reader;
 
 // In the order of Kind.
-constexpr std::array kKinds{"ball",       "half_space", "cylinder",  "capped_cylinder", "box",     "union",
+constexpr std::array kKinds{"ball",         "half_space", "cylinder",   "capped_cylinder", "box",     "union",
                             "intersection", "difference", "complement", "transform",       "lattice", "balls"};
 enum Kind : std::size_t {
-  kBall, kHalfSpace, kCylinder, kCappedCylinder, kBox, kUnion, kIntersection, kDifference, kComplement, kTransform,
-  kLattice, kBalls
+  kBall,
+  kHalfSpace,
+  kCylinder,
+  kCappedCylinder,
+  kBox,
+  kUnion,
+  kIntersection,
+  kDifference,
+  kComplement,
+  kTransform,
+  kLattice,
+  kBalls
 };
 
 std::vector<csg::Expression> shapes(const Reader& r, const std::string& key, const std::filesystem::path& folder) {
@@ -93,11 +103,19 @@ csg::Expression balls_file(const Reader& r, const std::filesystem::path& folder)
 
 csg::Expression primitive(std::size_t kind, const Reader& r) {
   switch (kind) {
-    case kBall: return csg::ball(scene::to_eigen(r.vec3("centre")), r.number("radius", Range::above(0)));
-    case kHalfSpace: return csg::half_space(scene::to_eigen(r.vec3("point")), scene::to_eigen(r.vec3("normal")));
-    case kCylinder: return csg::cylinder(scene::to_eigen(r.vec3("point")), scene::to_eigen(r.vec3("axis")), r.number("radius", Range::above(0)));
-    case kCappedCylinder: return csg::capped_cylinder(scene::to_eigen(r.vec3("base")), scene::to_eigen(r.vec3("top")), r.number("radius", Range::above(0)));
-    default: return csg::box(scene::to_eigen(r.vec3("centre")), scene::to_eigen(r.vec3("half_extents", Range::above(0))), orientation(r));
+    case kBall:
+      return csg::ball(scene::to_eigen(r.vec3("centre")), r.number("radius", Range::above(0)));
+    case kHalfSpace:
+      return csg::half_space(scene::to_eigen(r.vec3("point")), scene::to_eigen(r.vec3("normal")));
+    case kCylinder:
+      return csg::cylinder(scene::to_eigen(r.vec3("point")), scene::to_eigen(r.vec3("axis")),
+                           r.number("radius", Range::above(0)));
+    case kCappedCylinder:
+      return csg::capped_cylinder(scene::to_eigen(r.vec3("base")), scene::to_eigen(r.vec3("top")),
+                                  r.number("radius", Range::above(0)));
+    default:
+      return csg::box(scene::to_eigen(r.vec3("centre")), scene::to_eigen(r.vec3("half_extents", Range::above(0))),
+                      orientation(r));
   }
 }
 
@@ -112,18 +130,25 @@ csg::Expression from_map(const Reader& shape, const std::string& key, const Read
 
 csg::Expression read_kind(Kind kind, const Reader& shape, const std::string& key, const std::filesystem::path& folder) {
   switch (kind) {
-    case kUnion: return csg::Expression::unite(shapes(shape, key, folder));
-    case kIntersection: return csg::Expression::intersect(shapes(shape, key, folder));
+    case kUnion:
+      return csg::Expression::unite(shapes(shape, key, folder));
+    case kIntersection:
+      return csg::Expression::intersect(shapes(shape, key, folder));
     case kDifference: {
       const auto parts = shapes(shape, key, folder);
       if (parts.size() != 2) shape.fail(key, "needs exactly two shapes: a minus b");
       return parts[0] - parts[1];
     }
-    case kComplement: return ~read_shape(shape.map(key), folder);
-    case kTransform: return from_map(shape, key, [&](const Reader& r) { return transform(r, folder); });
-    case kLattice: return from_map(shape, key, [&](const Reader& r) { return lattice(r, folder); });
-    case kBalls: return from_map(shape, key, [&](const Reader& r) { return balls_file(r, folder); });
-    default: return from_map(shape, key, [&](const Reader& r) { return primitive(kind, r); });
+    case kComplement:
+      return ~read_shape(shape.map(key), folder);
+    case kTransform:
+      return from_map(shape, key, [&](const Reader& r) { return transform(r, folder); });
+    case kLattice:
+      return from_map(shape, key, [&](const Reader& r) { return lattice(r, folder); });
+    case kBalls:
+      return from_map(shape, key, [&](const Reader& r) { return balls_file(r, folder); });
+    default:
+      return from_map(shape, key, [&](const Reader& r) { return primitive(kind, r); });
   }
 }
 

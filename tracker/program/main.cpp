@@ -38,12 +38,10 @@ int coupled() {
     auto client = cosim::protocol::Client::from_environment();
     // Able to take poses and fields (tracer mode) and give forces and fields; the coupler's
     // plan decides what flows.
-    return cosim::participant::run_participant(*client, lead,
-                                               static_cast<std::uint32_t>(Data::Forces) |
-                                                   static_cast<std::uint32_t>(Data::Fields),
-                                               static_cast<std::uint32_t>(Data::Poses) |
-                                                   static_cast<std::uint32_t>(Data::Fields),
-                                               static_cast<std::uint32_t>(ranks));
+    return cosim::participant::run_participant(
+        *client, lead, static_cast<std::uint32_t>(Data::Forces) | static_cast<std::uint32_t>(Data::Fields),
+        static_cast<std::uint32_t>(Data::Poses) | static_cast<std::uint32_t>(Data::Fields),
+        static_cast<std::uint32_t>(ranks));
   });
 }
 
@@ -58,8 +56,9 @@ int standalone(const std::string& scene, const std::string& output) {
     std::vector<double> all(2 * static_cast<std::size_t>(ranks.size()));
     MPI_Gather(mine, 2, MPI_DOUBLE, all.data(), 2, MPI_DOUBLE, 0, MPI_COMM_WORLD);
     if (!ranks.lead()) return 0;
-    std::fprintf(stderr, "cosim-tracker: %llu steps, %zu particles seeded, %zu entered, %zu remain, %lld collisions, "
-                         "%.2f s (setup %.2f s)\n  %s\n  steps%s: %s\n",
+    std::fprintf(stderr,
+                 "cosim-tracker: %llu steps, %zu particles seeded, %zu entered, %zu remain, %lld collisions, "
+                 "%.2f s (setup %.2f s)\n  %s\n  steps%s: %s\n",
                  static_cast<unsigned long long>(s.steps), s.seeded, s.injected, s.remaining,
                  static_cast<long long>(s.collisions), s.wall_seconds, s.setup_seconds,
                  cosim::tracker::summary(s.moves).c_str(), ranks.size() > 1 ? " on rank 0" : "",
@@ -94,12 +93,14 @@ int main(int argc, char** argv) {
     cosim::participant::add_program_args(app, args, "Run this scene's tracker alone", "tracker section");
     try {
       app.parse(argc, argv);
-      code = args.check.empty() ? standalone(args.standalone, args.output) : cosim::scene::exit_code("cosim-tracker", [&] {
-        const cosim::scene::Scene scene = cosim::scene::load_scene(args.check);
-        const cosim::tracker::TrackerScene setup = cosim::tracker::read_tracker(scene);
-        if (!args.work.empty()) cosim::participant::write_work(args.work, cosim::tracker::tracker_work(scene, setup));
-        return 0;
-      });
+      code =
+          args.check.empty() ? standalone(args.standalone, args.output) : cosim::scene::exit_code("cosim-tracker", [&] {
+            const cosim::scene::Scene scene = cosim::scene::load_scene(args.check);
+            const cosim::tracker::TrackerScene setup = cosim::tracker::read_tracker(scene);
+            if (!args.work.empty())
+              cosim::participant::write_work(args.work, cosim::tracker::tracker_work(scene, setup));
+            return 0;
+          });
     } catch (const CLI::ParseError& e) {
       code = app.exit(e);
     }

@@ -26,8 +26,8 @@ std::optional<Collisions> read_collisions(const scene::Reader& options, double m
   const bool nearest = r.choice("selection", kSelections, 0) == 1;
   r.finish();
   if (std::abs(mass - species.mass) > 1e-6 * species.mass)
-    r.fail("species", fmt::format("the particles' mass {:g} kg is not {}'s {:g} kg (particles.mass)", mass, name,
-                                  species.mass));
+    r.fail("species",
+           fmt::format("the particles' mass {:g} kg is not {}'s {:g} kg (particles.mass)", mass, name, species.mass));
   return Collisions{dsmc::CollisionModel::from_species(species, model), nearest};
 }
 

@@ -70,7 +70,8 @@ BoxSpec box(const Reader& r, const scene::Domain& domain) {
 Mesh voronoi(const Reader& r, const scene::Domain& domain) {
   const int count = r.integer("points", Range::at_least(1));
   std::mt19937_64 rng(static_cast<std::uint64_t>(r.integer("seed", 1, Range::at_least(0))));
-  VoronoiSpec spec{.min = {domain.min[0], domain.min[1], domain.min[2]}, .max = {domain.max[0], domain.max[1], domain.max[2]}};
+  VoronoiSpec spec{.min = {domain.min[0], domain.min[1], domain.min[2]},
+                   .max = {domain.max[0], domain.max[1], domain.max[2]}};
   spec.periodic = periodic(r);
   std::vector<Vec3> points;
   for (int i = 0; i < count; ++i) {
@@ -95,8 +96,12 @@ SceneMesh read_mesh(const Reader& r, const scene::Scene& scene, const std::funct
         spec = box(r, scene.domain);
         mesh = box_part && !r.has("perturb") ? box_part(*spec) : box_mesh(*spec);
         break;
-      case kGmsh: mesh = load_gmsh(scene.folder / r.string("file")); break;
-      case kVoronoi: mesh = voronoi(r, scene.domain); break;
+      case kGmsh:
+        mesh = load_gmsh(scene.folder / r.string("file"));
+        break;
+      case kVoronoi:
+        mesh = voronoi(r, scene.domain);
+        break;
     }
     if (r.has("perturb")) {
       const Reader p = r.map("perturb");

@@ -9,8 +9,9 @@ std::optional<ParticleOutput> read_particle_output(const scene::Reader& options,
   if (!options.has("particle_output")) return std::nullopt;
   const int fields_every = scene.output.fields_every;
   if (fields_every == 0)
-    options.fail("particle_output", "particles are written with the fields, and output.fields_every is 0 (none in a "
-                                    "coupled run, the start and the end alone standalone): set output.fields_every");
+    options.fail("particle_output",
+                 "particles are written with the fields, and output.fields_every is 0 (none in a "
+                 "coupled run, the start and the end alone standalone): set output.fields_every");
   const scene::Reader r = options.map("particle_output");
   ParticleOutput o;
   o.every = r.integer("every", fields_every, scene::Range::at_least(1));

@@ -30,7 +30,8 @@ std::function<Mesh(const BoxSpec&)> box_parts(const Ranks& ranks) {
     Mesh part;
     std::string failure;
     try {
-      part = box_part(spec, mine.lo, mine.hi, [&](Index c) { return bricks.owner(c); }, ranks.rank());
+      part = box_part(
+          spec, mine.lo, mine.hi, [&](Index c) { return bricks.owner(c); }, ranks.rank());
     } catch (const std::invalid_argument& e) {
       failure = e.what();
     }
@@ -95,14 +96,16 @@ TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
     }
     // A part shows a rank only its cells' faults: every rank stops alike.
     if (const long long failed = failure.empty() ? 0 : 1; (part ? ranks.sum(failed) : failed) > 0)
-      options.fail("obstacles", failure.empty() ? "on another rank's part of the mesh (its message names it)" : failure);
+      options.fail("obstacles",
+                   failure.empty() ? "on another rank's part of the mesh (its message names it)" : failure);
     // An object whose surface meets no cell does nothing: most likely given in other units
     // or outside the domain.
     for (int i = 0; i < t.obstacles.count(); ++i)
       if (const long long meets = t.obstacles.cells(i).stats().max_primitives > 0 ? 1 : 0;
           (part ? ranks.sum(meets) : meets) == 0)
-        options.fail("obstacles", "obstacle '" + t.obstacles.object(i).name +
-                                      "': its surface meets no cell of the mesh (outside the domain, or in other units?)");
+        options.fail("obstacles",
+                     "obstacle '" + t.obstacles.object(i).name +
+                         "': its surface meets no cell of the mesh (outside the domain, or in other units?)");
   }
   t.particle_output = read_particle_output(options, scene, t.obstacles);
   t.balance = read_balance(options);

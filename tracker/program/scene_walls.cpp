@@ -61,8 +61,9 @@ Boundaries read_boundaries(const Reader& options, const Mesh& mesh, double mass,
     given[static_cast<std::size_t>(patch)] = read_condition(r.map(key), true);
     const bool periodic = given[static_cast<std::size_t>(patch)]->kind == BoundaryKind::periodic;
     if (periodic && with_faces.contains(patch))
-      r.fail(key, "the mesh does not link this patch periodically (set mesh.periodic for its axis, box and "
-                  "voronoi; Gmsh meshes have no periodic links)");
+      r.fail(key,
+             "the mesh does not link this patch periodically (set mesh.periodic for its axis, box and "
+             "voronoi; Gmsh meshes have no periodic links)");
     if (!periodic && !with_faces.contains(patch))
       r.fail(key, "the mesh links this patch periodically, so it has no walls; write periodic or leave it out");
   }

@@ -22,8 +22,9 @@ class TrackerRecorder final : public participant::Recorder {
       : scene_(scene), solver_(solver) {
     if (!ranks.lead()) return;
     if (!scene.bodies.empty())
-      std::fprintf(stderr, "cosim-tracker: note: --standalone keeps the scene's %zu bodies (and the obstacles bound to "
-                           "them) where the scene puts them; in coupled runs the rigid-body program moves them\n",
+      std::fprintf(stderr,
+                   "cosim-tracker: note: --standalone keeps the scene's %zu bodies (and the obstacles bound to "
+                   "them) where the scene puts them; in coupled runs the rigid-body program moves them\n",
                    scene.bodies.size());
     const Obstacles& obstacles = solver.gas().setup().obstacles;
     std::vector<std::string> names;

@@ -11,7 +11,7 @@
 
 #include "coupler/scene/scene.hpp"
 #include "tracker/parallel/ranks.hpp"
-#include "tracker/step/stage_times.hpp"
+#include "tracker/step/stages.hpp"
 #include "tracker/tracking/move.hpp"
 
 namespace cosim::tracker {
@@ -27,7 +27,7 @@ struct RunSummary {
   MoveTally moves;
   double wall_seconds = 0.0;
   double setup_seconds = 0.0;  // of this rank: the mesh built, the gas seeded, the file made
-  StageTimes stages;           // of this rank's steps
+  StageSeconds stages;         // of this rank's steps
 };
 
 // Writes `output` (empty: the scene's output.file). Throws scene::SceneError for a bad

@@ -34,12 +34,7 @@ std::vector<std::uint64_t> columns_of(const MoveTally& t) {
 
 struct TrackerFile::Impl {
   Impl(const std::filesystem::path& p, const OutputGrid& grid, std::size_t object_count)
-      : path(p),
-        objects(object_count),
-        patches(grid.patches.size()),
-        fields(p),
-        volume(grid.volume),
-        box(grid.box) {}
+      : path(p), objects(object_count), patches(grid.patches.size()), fields(p), volume(grid.volume), box(grid.box) {}
 
   // Into the grid's group, once the first step has made it: a box's slab by slab, shaped
   // as the fields (nz, ny, nx), so that numpy's density * volume broadcasts.

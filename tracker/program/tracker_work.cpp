@@ -76,8 +76,8 @@ participant::WorkReport tracker_work(const scene::Scene& scene, const TrackerSce
           .frame_bytes = static_cast<std::uint64_t>(std::llround(bytes)),
           // Simulation::state: position, velocity and cell per particle and one value per
           // obstacle's logical state; the collision and sampling sums per cell (about 12).
-          .state_bytes = (particles * (7 + static_cast<std::uint64_t>(setup.obstacles.count())) + 12 * cells) *
-                         sizeof(double),
+          .state_bytes =
+              (particles * (7 + static_cast<std::uint64_t>(setup.obstacles.count())) + 12 * cells) * sizeof(double),
           .grows = grows};
 }
 

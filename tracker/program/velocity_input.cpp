@@ -34,15 +34,16 @@ VelocityField read_velocity(const std::filesystem::path& file, const std::string
     if (!std::filesystem::exists(file)) throw std::runtime_error("no such file");
     output::Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + file.string());
     const std::string base = "/fields/" + participant;
-    if (!output::has_link(h5.get(), "fields") || !output::has_link(output::open_group(h5.get(), "fields").get(), participant))
+    if (!output::has_link(h5.get(), "fields") ||
+        !output::has_link(output::open_group(h5.get(), "fields").get(), participant))
       throw std::runtime_error("no fields of '" + participant + "'");
     std::vector<std::string> steps = output::link_names(output::open_group(h5.get(), base).get());
     std::erase(steps, "grid");
     if (steps.empty()) throw std::runtime_error("no field steps of '" + participant + "'");
     // Names are window numbers padded to the same width, so name order is time order.
-    const std::string last = *std::max_element(steps.begin(), steps.end(), [](const std::string& a, const std::string& b) {
-      return a.size() != b.size() ? a.size() < b.size() : a < b;
-    });
+    const std::string last = *std::max_element(
+        steps.begin(), steps.end(),
+        [](const std::string& a, const std::string& b) { return a.size() != b.size() ? a.size() < b.size() : a < b; });
     field::RectilinearGrid grid;
     for (std::size_t a = 0; a < 3; ++a)
       grid.nodes[a] = output::read_array(h5.get(), base + "/grid/" + std::string(1, "xyz"[a]));

@@ -26,15 +26,19 @@ enum class Drawn : std::uint64_t { range_share = 0, cell_particles = 1 };
 // is drawn at bit 64, the key (a cell, or a range a << 32 | b of 31-bit cell indices) below.
 dsmc::Rng keyed(std::uint64_t seed, std::uint64_t round, Drawn what, std::uint64_t key) {
   using Stream = pcg_extras::pcg128_t;
-  return dsmc::Rng(seed, Stream(1) << 126 | Stream(round) << 65 | Stream(static_cast<std::uint64_t>(what)) << 64 |
-                             Stream(key));
+  return dsmc::Rng(
+      seed, Stream(1) << 126 | Stream(round) << 65 | Stream(static_cast<std::uint64_t>(what)) << 64 | Stream(key));
 }
 
 class Seeder {
  public:
   Seeder(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells)
-      : mesh_(mesh), obstacles_(obstacles), seeding_(seeding), states_(static_cast<std::size_t>(obstacles.count())),
-        gas_{seeding.drift, sigma(seeding.temperature)}, swarm_(obstacles.count()) {
+      : mesh_(mesh),
+        obstacles_(obstacles),
+        seeding_(seeding),
+        states_(static_cast<std::size_t>(obstacles.count())),
+        gas_{seeding.drift, sigma(seeding.temperature)},
+        swarm_(obstacles.count()) {
     // A part's own cells come first, in the whole's order.
     for (Index c = 0; c < mesh.own_cells(); ++c)
       if (const Index g = mesh.global_cell(c); cells.owns(g)) owned_.push_back({g, c});
@@ -227,8 +231,9 @@ CellVolumes volumes_of(const BoxSpec& box) {
             const BoxCell at = box_cell(c, {nx, ny, nz}, per_hex);
             const Index i = at.hex[0], j = at.hex[1], k = at.hex[2];
             return from_first(2, k) * wy * wx +
-                   width(2, k) * (from_first(1, j) * wx +
-                                  width(1, j) * (from_first(0, i) + width(0, i) * static_cast<double>(at.within) / per_hex));
+                   width(2, k) *
+                       (from_first(1, j) * wx +
+                        width(1, j) * (from_first(0, i) + width(0, i) * static_cast<double>(at.within) / per_hex));
           }};
 }
 

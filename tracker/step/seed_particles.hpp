@@ -33,13 +33,13 @@
 namespace cosim::tracker {
 
 struct Seeding {
-  int per_cell = 0;  // particles per cell, or
-  int total = 0;     // in all, cells drawn by volume (exactly one of the two is used), or
+  int per_cell = 0;                 // particles per cell, or
+  int total = 0;                    // in all, cells drawn by volume (exactly one of the two is used), or
   std::vector<SeedRegion> regions;  // gases by region (then per_cell, total, temperature and drift are not)
-  double temperature = 0.0;  // K: Maxwellian velocities about the drift (0: all at the drift)
+  double temperature = 0.0;         // K: Maxwellian velocities about the drift (0: all at the drift)
   Vec3 drift = Vec3::Zero();
-  double mass = 0.0;    // kg, also what diffuse walls re-emit with
-  double weight = 1.0;  // real molecules per simulator (fnum)
+  double mass = 0.0;       // kg, also what diffuse walls re-emit with
+  double weight = 1.0;     // real molecules per simulator (fnum)
   std::uint64_t seed = 1;  // of every random draw of the run
 
   // The hottest temperature and the fastest drift the gas starts with, over its regions.

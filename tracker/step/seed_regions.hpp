@@ -14,8 +14,8 @@ namespace cosim::tracker {
 
 struct SeedRegion {
   csg::Expression shape;
-  double number_density = 0.0;  // real molecules per m^3; Seeding::weight of them per simulator
-  double temperature = 0.0;     // K: Maxwellian about the velocity (0: all at the velocity)
+  double number_density = 0.0;   // real molecules per m^3; Seeding::weight of them per simulator
+  double temperature = 0.0;      // K: Maxwellian about the velocity (0: all at the velocity)
   Vec3 velocity = Vec3::Zero();  // m/s, the drift
 };
 

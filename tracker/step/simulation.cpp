@@ -48,7 +48,9 @@ Random first_random(std::uint64_t seed, int rank) {
 
 // The collisions' pcg64 stream of a window on a rank: rank 0's is the window's, as on one
 // rank; ranks are 2^48 streams apart, more windows than any run has.
-std::uint64_t collision_stream(std::uint64_t window, int rank) { return window + (static_cast<std::uint64_t>(rank) << 48); }
+std::uint64_t collision_stream(std::uint64_t window, int rank) {
+  return window + (static_cast<std::uint64_t>(rank) << 48);
+}
 
 // Bricks for a box, METIS's parts of any other mesh.
 Decomposition decompose(const GasSetup& setup, Ranks ranks) {
@@ -221,7 +223,8 @@ void Simulation::balance() {
     const auto c = static_cast<std::size_t>(numbering().local(global));
     states[c].sigma_g_max = std::max(states[c].sigma_g_max, cell[0]);
     states[c].remainder += cell[1];
-    for (std::size_t k = 0; k < CellSampler::kSumsPerCell; ++k) sums[1 + c * CellSampler::kSumsPerCell + k] += cell[2 + k];
+    for (std::size_t k = 0; k < CellSampler::kSumsPerCell; ++k)
+      sums[1 + c * CellSampler::kSumsPerCell + k] += cell[2 + k];
   });
   sampler_ = CellSampler(*part_);
   sampler_.set_sums(sums);
@@ -254,8 +257,7 @@ std::vector<double> Simulation::at_lead(std::span<const double> mine, std::size_
   std::vector<double> whole(ranks.lead() ? width * static_cast<std::size_t>(whole_cells_) : 0, 0.0);
   ranks.gather_each(records, [&](std::span<const double> some) {
     for (std::size_t at = 0; at < some.size(); at += 1 + width)
-      for (std::size_t k = 0; k < width; ++k)
-        whole[static_cast<std::size_t>(some[at]) * width + k] += some[at + 1 + k];
+      for (std::size_t k = 0; k < width; ++k) whole[static_cast<std::size_t>(some[at]) * width + k] += some[at + 1 + k];
   });
   return whole;
 }
@@ -370,9 +372,9 @@ std::vector<CellMoments> Simulation::take_moments() {
     const std::vector<double> cells = at_lead(std::span(sums).subspan(1), CellSampler::kSumsPerCell);
     const std::vector<double>& volume = setup_.box ? whole_volume_ : setup_.mesh->volume;
     for (std::size_t c = 0; c < cells.size() / CellSampler::kSumsPerCell; ++c)
-      moments.push_back(CellSampler::moments(std::span(cells).subspan(c * CellSampler::kSumsPerCell,
-                                                                      CellSampler::kSumsPerCell),
-                                             sampler_.samples(), volume[c], mass, weight));
+      moments.push_back(
+          CellSampler::moments(std::span(cells).subspan(c * CellSampler::kSumsPerCell, CellSampler::kSumsPerCell),
+                               sampler_.samples(), volume[c], mass, weight));
   }
   sampler_.reset();
   return moments;

@@ -1,6 +1,6 @@
 // The gas as cosim-tracker advances it, the same standalone and coupled: the particles,
 // their collisions, inflow, walls and obstacles, and what is sampled of them. One step
-// (step()) is what DSMC codes do per time step, as named stages, each timed (StageTimes):
+// (step()) is what DSMC codes do per time step, as named stages, each timed (StageSeconds):
 // migrate (over several ranks, when particles may sit in ghosts; now and then
 // re-partition), sort by cell, collide, move, inject, hand over the moves that entered other
 // ranks' cells, sample.
@@ -28,7 +28,7 @@
 #include "tracker/parallel/decomposition.hpp"
 #include "tracker/step/collide.hpp"
 #include "tracker/step/gas_setup.hpp"
-#include "tracker/step/stage_times.hpp"
+#include "tracker/step/stages.hpp"
 #include "tracker/tracking/sampling.hpp"
 
 namespace cosim::tracker {
@@ -78,7 +78,7 @@ class Simulation {
   // setup's balance threshold (Balance).
   std::uint64_t rebalances() const { return rebalances_; }
   // This rank's wall time per stage of step() since the start (not restored by restore()).
-  const StageTimes& stages() const { return stages_; }
+  const StageSeconds& stages() const { return stages_; }
   MoveTally moves() const;
   std::vector<ObstacleTally> tallies() const;
   // Per boundary patch (Mesh::patches): what the particles gave the walls there.
@@ -90,8 +90,8 @@ class Simulation {
   std::optional<Bricks::Range> brick() const;
   struct BrickSamples {
     Bricks::Range brick;
-    std::vector<double> count;           // particles per cell now
-    std::vector<CellMoments> moments;    // averaged since the last take
+    std::vector<double> count;         // particles per cell now
+    std::vector<CellMoments> moments;  // averaged since the last take
   };
   // This rank's cells in its brick's order (x fastest), as counts() and take_moments() give
   // every cell's: a new average begins. Collective; what its ghosts hold (particles and
@@ -122,8 +122,13 @@ class Simulation {
   void inject(double dt);
   // The gas's moves: into this rank's tallies, handing over to the other ranks.
   MoveContext move_context() {
-    return {.domain = *setup_.domain, .obstacles = setup_.obstacles, .random = random_, .moves = moves_,
-            .tallies = tallies_, .patches = patch_tallies_, .away = &away_};
+    return {.domain = *setup_.domain,
+            .obstacles = setup_.obstacles,
+            .random = random_,
+            .moves = moves_,
+            .tallies = tallies_,
+            .patches = patch_tallies_,
+            .away = &away_};
   }
   void hand_over();  // over several ranks, without tracers
   // Collective, every setup_.balance.every steps on several ranks: a new partition
@@ -155,7 +160,7 @@ class Simulation {
   std::size_t seeded_ = 0, injected_ = 0, migrated_ = 0;
   std::int64_t collisions_ = 0;
   std::uint64_t rebalances_ = 0;
-  StageTimes stages_;
+  StageSeconds stages_;
   double balance_floor_ = 0.0;  // max/mean a re-partition could not improve, times 1.1
   // This rank's part of the mesh, at one address for good (the collider refers to it);
   // null on one rank and in tracer mode.

@@ -1,4 +1,4 @@
-// Simulation::step as named stages in the order it runs them, each timed into StageTimes.
+// Simulation::step as named stages in the order it runs them, each timed into StageSeconds.
 #include <array>
 #include <stdexcept>
 #include <vector>
@@ -48,12 +48,13 @@ void Simulation::move(double dt) {
 
 void Simulation::carry_tracers(double dt) {
   if (!velocity_)
-    throw std::runtime_error("tracer mode without a velocity field: give tracers.velocity.file, or run coupled with "
-                             "the fluid");
+    throw std::runtime_error(
+        "tracer mode without a velocity field: give tracers.velocity.file, or run coupled with "
+        "the fluid");
   // Tracers move through the whole mesh on every rank (no handover); their wall hits are not
   // tallied per patch.
-  const MoveContext step{.domain = *setup_.domain, .obstacles = setup_.obstacles, .random = random_, .moves = moves_,
-                         .tallies = tallies_};
+  const MoveContext step{
+      .domain = *setup_.domain, .obstacles = setup_.obstacles, .random = random_, .moves = moves_, .tallies = tallies_};
   std::vector<bool> gone(swarm_.size(), false);
   for (std::size_t i = 0; i < swarm_.size(); ++i) {
     Particle p = swarm_.particle(i);

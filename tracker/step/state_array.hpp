@@ -63,8 +63,8 @@ class StateReader {
   // std::runtime_error naming `what` unless the next value is `value`.
   void expect(double value, const char* what) {
     if (const double found = next(); found != value)
-      throw std::runtime_error(std::string("tracker state: ") + what + " " + std::to_string(found) + ", the scene has " +
-                               std::to_string(value));
+      throw std::runtime_error(std::string("tracker state: ") + what + " " + std::to_string(found) +
+                               ", the scene has " + std::to_string(value));
   }
   // std::runtime_error unless every value was read.
   void finish() const {

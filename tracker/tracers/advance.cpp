@@ -36,8 +36,8 @@ bool advance_tracer(const MoveContext& step, const VelocityField& u, const Trace
   const int substeps = std::max(1, model.substeps);
   const double h = dt / substeps;
   for (int s = 0; s < substeps; ++s) {
-    const Step planned = model.response_time > 0.0 ? inertial(u, tracer.x, tracer.v, h, model.response_time)
-                                                    : massless(u, tracer.x, h);
+    const Step planned =
+        model.response_time > 0.0 ? inertial(u, tracer.x, tracer.v, h, model.response_time) : massless(u, tracer.x, h);
     const Vec3 segment = planned.displacement / h;
     tracer.v = segment;
     const MoveResult result = move(step, tracer, states, h);

@@ -56,9 +56,8 @@ bool hit_wall(const BoundaryCondition& wall, double mass, const Vec3& n, Vec3& v
       v = re_emit(wall, mass, n, random);
       return true;
     case BoundaryKind::maxwell:
-      v = std::uniform_real_distribution<double>(0.0, 1.0)(random) < wall.accommodation
-              ? re_emit(wall, mass, n, random)
-              : specular(v, n);
+      v = std::uniform_real_distribution<double>(0.0, 1.0)(random) < wall.accommodation ? re_emit(wall, mass, n, random)
+                                                                                        : specular(v, n);
       return true;
     case BoundaryKind::periodic:
       throw std::logic_error("a periodic boundary condition cannot reflect");

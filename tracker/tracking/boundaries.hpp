@@ -8,7 +8,6 @@
 
 namespace cosim::tracker {
 
-
 enum class BoundaryKind {
   specular,  // mirror the normal velocity
   diffuse,   // re-emit from a Maxwellian at the wall temperature
@@ -41,10 +40,10 @@ inline bool refuses_velocity(const BoundaryCondition& wall) { return !re_emits(w
 // over the sampled time, `impulse` is the force on the surface and `energy` the heat it
 // takes; over its area, the stress (shear from the tangential part) and the heat flux.
 struct SurfaceTally {
-  long long hits = 0;                // reflections, absorptions included
-  long long absorbed = 0;            // removed at an open surface
-  Vec3 impulse = Vec3::Zero();       // sum of v_before - v_after (after = 0 when absorbed)
-  double energy = 0.0;               // sum of (|v_before|^2 - |v_after|^2) / 2
+  long long hits = 0;           // reflections, absorptions included
+  long long absorbed = 0;       // removed at an open surface
+  Vec3 impulse = Vec3::Zero();  // sum of v_before - v_after (after = 0 when absorbed)
+  double energy = 0.0;          // sum of (|v_before|^2 - |v_after|^2) / 2
   void add(const SurfaceTally& other);
   void exchange(const Vec3& before, const Vec3& after);
 };

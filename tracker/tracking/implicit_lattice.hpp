@@ -34,9 +34,7 @@ class ImplicitLattice {
   ImplicitLattice(const Mesh& mesh, const std::vector<LatticeFaces>& lattice);
 
   // The cell's planes and faces are the lattice's (its face k is face 6 cell + k).
-  bool plain(Index cell) const {
-    return !flags_.empty() && (flags_[static_cast<std::size_t>(cell)] & kPlain) != 0;
-  }
+  bool plain(Index cell) const { return !flags_.empty() && (flags_[static_cast<std::size_t>(cell)] & kPlain) != 0; }
   // Face `face` of a plain cell leads into the lattice neighbour, unshifted.
   bool linked(Index cell, Index face) const {
     return plain(cell) && (flags_[static_cast<std::size_t>(cell)] >> (face - 6 * cell) & 1) != 0;

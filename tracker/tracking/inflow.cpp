@@ -32,7 +32,10 @@ double inflow_normal_speed(double s, double u) {
   double x = std::max(0.5, s);
   for (int i = 0; i < 100; ++i) {
     const double f = cumulative(s, x) - target;
-    if (f > 0.0) hi = x; else lo = x;
+    if (f > 0.0)
+      hi = x;
+    else
+      lo = x;
     const double density = x * std::exp(-(x - s) * (x - s));
     double next = density > 0.0 ? x - f / density : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -71,7 +74,8 @@ Vec3 Inflow::point_on(const Entry& entry, Random& random) const {
   double pick = uniform(random) * entry.area;
   Index k = 1;
   for (; k + 2 < n; ++k) {
-    const double triangle = 0.5 * (mesh_.face_vertex(entry.face, k) - a).cross(mesh_.face_vertex(entry.face, k + 1) - a).norm();
+    const double triangle =
+        0.5 * (mesh_.face_vertex(entry.face, k) - a).cross(mesh_.face_vertex(entry.face, k + 1) - a).norm();
     if (pick < triangle) break;
     pick -= triangle;
   }

@@ -14,7 +14,7 @@
 namespace cosim::tracker {
 
 struct Stream {
-  double number_density = 0.0;  // real molecules per m^3
+  double number_density = 0.0;   // real molecules per m^3
   Vec3 velocity = Vec3::Zero();  // m/s
   double temperature = 0.0;      // K
   double mass = 0.0;             // kg
@@ -48,10 +48,10 @@ class Inflow {
   struct Entry {
     Index face;
     Index cell;
-    double rate;            // simulators per second
-    double speed_ratio;     // s = (stream . inward normal) / most probable speed
+    double rate;         // simulators per second
+    double speed_ratio;  // s = (stream . inward normal) / most probable speed
     double area;
-    Vec3 t1, t2;            // tangents: the stream's tangential part is (stream.t1, stream.t2)
+    Vec3 t1, t2;  // tangents: the stream's tangential part is (stream.t1, stream.t2)
   };
   Vec3 point_on(const Entry& entry, Random& random) const;
   Vec3 velocity(const Entry& entry, Random& random) const;

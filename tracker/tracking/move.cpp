@@ -9,16 +9,20 @@ namespace cosim::tracker {
 
 std::string_view name(Algorithm algorithm) {
   switch (algorithm) {
-    case Algorithm::event_driven: return "event-driven";
-    case Algorithm::stollmeier: return "stollmeier";
-    case Algorithm::haselbacher: return "haselbacher";
+    case Algorithm::event_driven:
+      return "event-driven";
+    case Algorithm::stollmeier:
+      return "stollmeier";
+    case Algorithm::haselbacher:
+      return "haselbacher";
   }
   return "?";
 }
 
 MoveResult move(Algorithm algorithm, const Domain& domain, Particle& particle, double dt, Random& random) {
   switch (algorithm) {
-    case Algorithm::event_driven: return detail::move_event_driven(domain, particle, dt, random);
+    case Algorithm::event_driven:
+      return detail::move_event_driven(domain, particle, dt, random);
     case Algorithm::stollmeier:
       return detail::move_face_intersection(domain, particle, dt, random, detail::Recovery::first_violated_face);
     case Algorithm::haselbacher:
@@ -46,8 +50,8 @@ void check_carried(const Domain& domain, const Obstacles& obstacles, std::size_t
 
 MoveResult move(const MoveContext& step, Particle& particle, std::span<csg::State> states, double dt) {
   detail::check_carried(step.domain, step.obstacles, states.size(), step.tallies.size(), step.patches.size());
-  const MoveResult result =
-      detail::move_event_driven(step.domain, particle, dt, step.random, {&step.obstacles, states, step.tallies, step.patches});
+  const MoveResult result = detail::move_event_driven(step.domain, particle, dt, step.random,
+                                                      {&step.obstacles, states, step.tallies, step.patches});
   step.moves.add(result);
   return result;
 }
@@ -74,7 +78,8 @@ std::string summary(const MoveTally& tally) {
   std::ostringstream out;
   out << tally.moves << " moves: lost " << tally.lost << ", faces crossed " << tally.faces_crossed
       << ", zero-time events " << tally.zero_time_events << ", boundary hits " << tally.boundary_hits
-      << ", relocations " << tally.relocations << ", cycles broken " << tally.cycles_broken << ", stalled " << tally.stalled << ", removed " << tally.removed << ", object events " << tally.object_events
+      << ", relocations " << tally.relocations << ", cycles broken " << tally.cycles_broken << ", stalled "
+      << tally.stalled << ", removed " << tally.removed << ", object events " << tally.object_events
       << ", primitive tests " << tally.primitive_tests;
   return out.str();
 }

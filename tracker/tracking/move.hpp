@@ -26,8 +26,8 @@ MoveResult move(Algorithm algorithm, const Domain& domain, Particle& particle, d
 
 // Sums of MoveResults over many moves, for studies and tests.
 struct MoveTally {
-  long long moves = 0, faces_crossed = 0, zero_time_events = 0, boundary_hits = 0, relocations = 0,
-            cycles_broken = 0, stalled = 0, removed = 0, lost = 0, object_events = 0, primitive_tests = 0;
+  long long moves = 0, faces_crossed = 0, zero_time_events = 0, boundary_hits = 0, relocations = 0, cycles_broken = 0,
+            stalled = 0, removed = 0, lost = 0, object_events = 0, primitive_tests = 0;
   void add(const MoveResult& result);
   // The rest of a move handed over by another rank (Handover): counted as a move there.
   void add_rest(const MoveResult& result);
@@ -39,16 +39,16 @@ struct MoveCounter {
   long long MoveTally::*count;
 };
 inline constexpr std::array<MoveCounter, 11> kMoveCounters{{{"moves", &MoveTally::moves},
-                                                             {"faces_crossed", &MoveTally::faces_crossed},
-                                                             {"zero_time_events", &MoveTally::zero_time_events},
-                                                             {"boundary_hits", &MoveTally::boundary_hits},
-                                                             {"relocations", &MoveTally::relocations},
-                                                             {"cycles_broken", &MoveTally::cycles_broken},
-                                                             {"stalled", &MoveTally::stalled},
-                                                             {"removed", &MoveTally::removed},
-                                                             {"lost", &MoveTally::lost},
-                                                             {"object_events", &MoveTally::object_events},
-                                                             {"primitive_tests", &MoveTally::primitive_tests}}};
+                                                            {"faces_crossed", &MoveTally::faces_crossed},
+                                                            {"zero_time_events", &MoveTally::zero_time_events},
+                                                            {"boundary_hits", &MoveTally::boundary_hits},
+                                                            {"relocations", &MoveTally::relocations},
+                                                            {"cycles_broken", &MoveTally::cycles_broken},
+                                                            {"stalled", &MoveTally::stalled},
+                                                            {"removed", &MoveTally::removed},
+                                                            {"lost", &MoveTally::lost},
+                                                            {"object_events", &MoveTally::object_events},
+                                                            {"primitive_tests", &MoveTally::primitive_tests}}};
 
 class Handover;
 

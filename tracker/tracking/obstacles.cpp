@@ -114,8 +114,7 @@ bool Obstacles::inside_wall(Index cell, std::span<const csg::State> states) cons
 void Obstacles::transfer(Index from, Index to, const Vec3& x, bool shifted, std::span<csg::State> states) const {
   const Index a = bounding_cell(from), b = bounding_cell(to);
   if (a == b && !shifted) return;
-  for (const int o : active(b))
-    states[o] = shifted ? cells_[o].classify(b, x) : cells_[o].transfer(states[o], a, b, x);
+  for (const int o : active(b)) states[o] = shifted ? cells_[o].classify(b, x) : cells_[o].transfer(states[o], a, b, x);
 }
 
 }  // namespace cosim::tracker

@@ -19,19 +19,19 @@ class Swarm;
 
 struct Obstacle {
   std::string name;
-  csg::Tree shape;                // in world coordinates at the current pose (see set_pose)
-  bool permeable = false;         // a zone: crossed and counted, never reflects
-  BoundaryCondition wall;         // impermeable: specular, diffuse, maxwell, or open (absorbs)
+  csg::Tree shape;         // in world coordinates at the current pose (see set_pose)
+  bool permeable = false;  // a zone: crossed and counted, never reflects
+  BoundaryCondition wall;  // impermeable: specular, diffuse, maxwell, or open (absorbs)
 };
 
 // What the particles did at one object's surface, summed over moves: the SurfaceTally of its
 // hits (hits, absorbed at an open wall, impulse, energy) and what only objects have.
 struct ObstacleTally : SurfaceTally {
-  long long entered = 0;    // into a permeable zone
-  long long left = 0;       // out of a permeable zone
-  long long released = 0;   // found inside a wall by their state and let out at its surface:
-                            // a repaired state, 0 unless something went wrong
-  long long overrun = 0;    // put back in front of a moving wall (Obstacles::set_pose)
+  long long entered = 0;   // into a permeable zone
+  long long left = 0;      // out of a permeable zone
+  long long released = 0;  // found inside a wall by their state and let out at its surface:
+                           // a repaired state, 0 unless something went wrong
+  long long overrun = 0;   // put back in front of a moving wall (Obstacles::set_pose)
   // The moment of the impulse about the object's pose origin (times the mass and the
   // simulator weight over the sampled time: the torque).
   Vec3 angular_impulse = Vec3::Zero();
@@ -124,7 +124,7 @@ class Obstacles {
   std::vector<Motion> motions_;
   std::vector<CellObject> cells_;
   std::vector<Index> bounding_cell_;
-  bool emits_ = false;  // asked on every move
+  bool emits_ = false;               // asked on every move
   std::vector<Index> active_first_;  // bounding cell b: active_[active_first_[b] .. active_first_[b + 1])
   std::vector<int> active_;
 };

@@ -51,8 +51,7 @@ CellMoments CellSampler::moments(Index cell, double mass, double weight) const {
   return moments_of(count_[c], sum_[c], square_[c], cubic_[c], samples_, volume_[c], mass, weight);
 }
 
-CellMoments CellSampler::moments(std::span<const double> sums, int samples, double volume, double mass,
-                                 double weight) {
+CellMoments CellSampler::moments(std::span<const double> sums, int samples, double volume, double mass, double weight) {
   if (sums.size() != kSumsPerCell)
     throw std::invalid_argument("CellSampler::moments: " + std::to_string(sums.size()) + " sums of a cell");
   return moments_of(sums[0], Vec3(sums.data() + 1), Eigen::Matrix3d(sums.data() + 4), Vec3(sums.data() + 13), samples,

@@ -13,11 +13,11 @@
 namespace cosim::tracker {
 
 struct CellMoments {
-  double count = 0.0;           // simulators, mean over the samples
-  double number_density = 0.0;  // real molecules per m^3
-  Vec3 velocity = Vec3::Zero(); // mean, m/s
-  double temperature = 0.0;     // m (<|v|^2> - |<v>|^2) / (3 k), K; 0 where nobody passed
-  double pressure = 0.0;        // n k T, Pa
+  double count = 0.0;            // simulators, mean over the samples
+  double number_density = 0.0;   // real molecules per m^3
+  Vec3 velocity = Vec3::Zero();  // mean, m/s
+  double temperature = 0.0;      // m (<|v|^2> - |<v>|^2) / (3 k), K; 0 where nobody passed
+  double pressure = 0.0;         // n k T, Pa
   // The pressure tensor n m <c c^T> (c = v - velocity), Pa: its trace / 3 is `pressure`,
   // -stress(0, 1) the shear stress tau_xy on planes normal to y.
   Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();

@@ -36,7 +36,9 @@ class Swarm {
                      p.cell};
   }
   Index cell(std::size_t i) const { return particles_[i].cell; }
-  std::span<csg::State> states(std::size_t i) { return {states_.data() + i * objects_, static_cast<std::size_t>(objects_)}; }
+  std::span<csg::State> states(std::size_t i) {
+    return {states_.data() + i * objects_, static_cast<std::size_t>(objects_)};
+  }
   std::span<const csg::State> states(std::size_t i) const {
     return {states_.data() + i * objects_, static_cast<std::size_t>(objects_)};
   }

@@ -22,7 +22,7 @@ constexpr int max_iterations = std::numeric_limits<double>::digits - std::numeri
 template <int N>
 double secular_root(const Eigen::Matrix<double, N, 1>& r, const Eigen::Matrix<double, N, 1>& z, double g) {
   const Eigen::Array<double, N, 1> n = r.cwiseProduct(z).array();
-  const Eigen::Array<double, N, 1> offset = r.array() - 1.0;  // s + r_i = u + offset_i
+  const Eigen::Array<double, N, 1> offset = r.array() - 1.0;   // s + r_i = u + offset_i
   double lo = z[N - 1];                                        // F(lo) >= 0
   double hi = g < 0.0 ? 1.0 : r.cwiseProduct(z).stableNorm();  // F(hi) <= 0
   double u = lo;

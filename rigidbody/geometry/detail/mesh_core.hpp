@@ -40,7 +40,7 @@ class MeshCore {
   std::vector<std::uint32_t> support_vertices_;
   std::vector<Eigen::Vector3d> face_normals_;
   std::vector<std::array<Eigen::Vector3d, 3>> edge_normals_;  // per triangle edge, unit
-  std::vector<Eigen::Vector3d> vertex_normals_;                // unit
+  std::vector<Eigen::Vector3d> vertex_normals_;               // unit
   TriangleBvh bvh_;
   double bounding_radius_ = 0.0;
 };

@@ -43,8 +43,8 @@ ExactKey key_of(const Eigen::Vector3d& v) {
 struct HalfEdge {
   std::uint32_t lo, hi;  // vertex indices, lo < hi
   std::uint32_t triangle;
-  std::uint8_t corner;   // the edge runs from corner to corner + 1
-  bool forward;          // ... and from lo to hi
+  std::uint8_t corner;  // the edge runs from corner to corner + 1
+  bool forward;         // ... and from lo to hi
 };
 
 // Collects the first example and the count of each kind of bad edge for one message.
@@ -117,7 +117,8 @@ WeldedMesh weld(const std::vector<Eigen::Vector3d>& vertices, const std::vector<
   std::vector<std::uint32_t> remap(vertices.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     if (!vertices[i].allFinite()) throw std::invalid_argument("vertex " + std::to_string(i) + " is not finite");
-    const auto [it, inserted] = index_of.try_emplace(key_of(vertices[i]), static_cast<std::uint32_t>(out.vertices.size()));
+    const auto [it, inserted] =
+        index_of.try_emplace(key_of(vertices[i]), static_cast<std::uint32_t>(out.vertices.size()));
     if (inserted) out.vertices.push_back(vertices[i]);
     remap[i] = it->second;
   }
@@ -171,9 +172,9 @@ Neighbors edge_neighbors(const std::vector<Eigen::Vector3d>& v, const std::vecto
     } else if (j - i > 2) {
       problems.add("non-manifold edges (more than two triangles)", where());
     } else if (a.forward == edges[i + 1].forward) {
-      problems.add("edges with inconsistent orientation (two triangles run the same way)",
-                   where() + " in triangles " + std::to_string(a.triangle) + " and " +
-                       std::to_string(edges[i + 1].triangle));
+      problems.add(
+          "edges with inconsistent orientation (two triangles run the same way)",
+          where() + " in triangles " + std::to_string(a.triangle) + " and " + std::to_string(edges[i + 1].triangle));
     } else {
       neighbors[a.triangle][a.corner] = edges[i + 1].triangle;
       neighbors[edges[i + 1].triangle][edges[i + 1].corner] = a.triangle;
@@ -191,8 +192,8 @@ std::vector<std::size_t> orient_outward(const std::vector<Eigen::Vector3d>& v, s
   for (const auto& members : parts) {
     volumes.push_back(signed_volume(v, triangles, members));
     if (volumes.back() == 0.0)
-      throw std::invalid_argument("a closed component encloses no volume (triangle " +
-                                  std::to_string(members.front()) + ")");
+      throw std::invalid_argument("a closed component encloses no volume (triangle " + std::to_string(members.front()) +
+                                  ")");
   }
   std::vector<std::size_t> flipped;
   for (std::size_t a = 0; a < parts.size(); ++a) {

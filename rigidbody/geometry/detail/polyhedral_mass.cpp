@@ -49,7 +49,7 @@ PolyhedronMass polyhedral_mass(const std::vector<Eigen::Vector3d>& vertices, con
     integral[8] += d.y() * (p0.z() * y.g0 + p1.z() * y.g1 + p2.z() * y.g2);
     integral[9] += d.z() * (p0.x() * z.g0 + p1.x() * z.g1 + p2.x() * z.g2);
   }
-  constexpr std::array<double, 10> scale{1.0 / 6,  1.0 / 24, 1.0 / 24, 1.0 / 24,  1.0 / 60,
+  constexpr std::array<double, 10> scale{1.0 / 6,  1.0 / 24, 1.0 / 24,  1.0 / 24,  1.0 / 60,
                                          1.0 / 60, 1.0 / 60, 1.0 / 120, 1.0 / 120, 1.0 / 120};
   for (int i = 0; i < 10; ++i) integral[i] *= scale[i];
 

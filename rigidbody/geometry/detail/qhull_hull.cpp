@@ -29,7 +29,8 @@ QhullFacets qhull_convex_hull(const std::vector<Eigen::Vector3d>& points) {
     qhull.runQhull("", 3, static_cast<int>(points.size()), coordinates.data(), "");
   } catch (const orgQhull::QhullError& e) {
     const std::string what = log.str().empty() ? e.what() : log.str();
-    throw std::invalid_argument("convex hull: qhull failed (are the points coplanar?): " + what.substr(0, what.find('\n')));
+    throw std::invalid_argument("convex hull: qhull failed (are the points coplanar?): " +
+                                what.substr(0, what.find('\n')));
   }
 
   QhullFacets out;

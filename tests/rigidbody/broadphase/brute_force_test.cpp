@@ -17,21 +17,19 @@ Object wall(Id id, std::optional<HalfSpace> half_space, bool fixed = true) {
 using Pairs = std::vector<Pair>;
 
 TEST(BruteForce, TouchingSpheresPairAndSeparatedOnesOnlyWithinTheMargin) {
-  const std::vector<Object> objects = {sphere(7, 0.0, 0.5), sphere(3, 1.0, 0.5),
-                                       sphere(5, 2.25, 0.5)};
+  const std::vector<Object> objects = {sphere(7, 0.0, 0.5), sphere(3, 1.0, 0.5), sphere(5, 2.25, 0.5)};
   EXPECT_EQ(brute_force_pairs(objects, 0.0), (Pairs{{3, 7}}));
   EXPECT_EQ(brute_force_pairs(objects, 0.25), (Pairs{{3, 5}, {3, 7}}));
 }
 
 TEST(BruteForce, TwoFixedObjectsNeverPair) {
-  const std::vector<Object> objects = {sphere(0, 0.0, 1.0, true), sphere(1, 0.5, 1.0, true),
-                                       sphere(2, 1.0, 1.0)};
+  const std::vector<Object> objects = {sphere(0, 0.0, 1.0, true), sphere(1, 0.5, 1.0, true), sphere(2, 1.0, 1.0)};
   EXPECT_EQ(brute_force_pairs(objects, 0.0), (Pairs{{0, 2}, {1, 2}}));
 }
 
 TEST(BruteForce, PlainInfiniteObjectsPairWithEveryFiniteOneButNotWithEachOther) {
-  const std::vector<Object> objects = {wall(9, std::nullopt, false), sphere(1, 100.0, 1.0),
-                                       sphere(2, -100.0, 1.0), wall(0, std::nullopt, false)};
+  const std::vector<Object> objects = {wall(9, std::nullopt, false), sphere(1, 100.0, 1.0), sphere(2, -100.0, 1.0),
+                                       wall(0, std::nullopt, false)};
   EXPECT_EQ(brute_force_pairs(objects, 0.0), (Pairs{{0, 1}, {0, 2}, {1, 9}, {2, 9}}));
 }
 
@@ -44,8 +42,8 @@ TEST(BruteForce, HalfSpacesPairWithSpheresTouchingOrInsideThem) {
     o.centre.y() = 10.0 * id;
     return o;
   };
-  const std::vector<Object> objects = {wall(0, solid), at(1, 1.5, 0.5), at(2, -7.0, 0.1),
-                                       at(3, 2.0, 0.5), at(4, 1.0, 0.5, true)};
+  const std::vector<Object> objects = {wall(0, solid), at(1, 1.5, 0.5), at(2, -7.0, 0.1), at(3, 2.0, 0.5),
+                                       at(4, 1.0, 0.5, true)};
   EXPECT_EQ(brute_force_pairs(objects, 0.0), (Pairs{{0, 1}, {0, 2}}));
   EXPECT_EQ(brute_force_pairs(objects, 0.5), (Pairs{{0, 1}, {0, 2}, {0, 3}}));
 }

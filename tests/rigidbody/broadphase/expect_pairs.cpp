@@ -10,8 +10,7 @@
 
 namespace cosim::broadphase::testing {
 
-std::size_t expect_brute_force_pairs(std::span<const Object> objects,
-                                     const HashGridConfig& config) {
+std::size_t expect_brute_force_pairs(std::span<const Object> objects, const HashGridConfig& config) {
   HashGrid grid(config);
   grid.update(objects);
   std::vector<Pair> pairs;
@@ -30,14 +29,12 @@ std::size_t expect_brute_force_pairs(std::span<const Object> objects,
   const std::vector<Pair> expected = brute_force_pairs(objects, config.margin);
   std::vector<Pair> missing;
   std::vector<Pair> extra;
-  std::set_difference(expected.begin(), expected.end(), pairs.begin(), pairs.end(),
-                      std::back_inserter(missing));
-  std::set_difference(pairs.begin(), pairs.end(), expected.begin(), expected.end(),
-                      std::back_inserter(extra));
-  EXPECT_TRUE(missing.empty()) << missing.size() << " pairs missing, first "
-                               << missing.front().first << "-" << missing.front().second;
-  EXPECT_TRUE(extra.empty()) << extra.size() << " pairs too many, first "
-                             << extra.front().first << "-" << extra.front().second;
+  std::set_difference(expected.begin(), expected.end(), pairs.begin(), pairs.end(), std::back_inserter(missing));
+  std::set_difference(pairs.begin(), pairs.end(), expected.begin(), expected.end(), std::back_inserter(extra));
+  EXPECT_TRUE(missing.empty()) << missing.size() << " pairs missing, first " << missing.front().first << "-"
+                               << missing.front().second;
+  EXPECT_TRUE(extra.empty()) << extra.size() << " pairs too many, first " << extra.front().first << "-"
+                             << extra.front().second;
   return pairs.size();
 }
 

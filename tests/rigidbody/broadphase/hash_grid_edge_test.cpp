@@ -14,13 +14,9 @@ namespace {
 
 using testing::expect_brute_force_pairs;
 
-Object sphere(Id id, const Eigen::Vector3d& centre, double r) {
-  return {.id = id, .centre = centre, .radius = r};
-}
+Object sphere(Id id, const Eigen::Vector3d& centre, double r) { return {.id = id, .centre = centre, .radius = r}; }
 
-TEST(HashGridEdges, NoObjectsNoPairs) {
-  EXPECT_EQ(expect_brute_force_pairs({}), 0u);
-}
+TEST(HashGridEdges, NoObjectsNoPairs) { EXPECT_EQ(expect_brute_force_pairs({}), 0u); }
 
 TEST(HashGridEdges, ASingleObjectPairsOnlyWithWalls) {
   const std::vector<Object> alone = {sphere(4, {1.0, 2.0, 3.0}, 0.5)};
@@ -44,8 +40,7 @@ TEST(HashGridEdges, TouchingAcrossCellBoundaries) {
   for (int x = -4; x <= 4; ++x)
     for (int y = -4; y <= 4; ++y)
       for (int z = -4; z <= 4; ++z)
-        objects.push_back(sphere(static_cast<Id>(objects.size()), 0.5 * Eigen::Vector3d(x, y, z),
-                                 0.25));
+        objects.push_back(sphere(static_cast<Id>(objects.size()), 0.5 * Eigen::Vector3d(x, y, z), 0.25));
   EXPECT_EQ(expect_brute_force_pairs(objects, {.base_cell_size = 1.0}), 3u * 8 * 81);
 }
 
@@ -72,8 +67,7 @@ TEST(HashGridEdges, ExactlyTouchingChains) {
   for (std::uint32_t seed = 0; seed < 20; ++seed) {
     SCOPED_TRACE(seed);
     EXPECT_GE(expect_brute_force_pairs(touching_chain(seed, 0.0)), 299u);
-    EXPECT_GE(expect_brute_force_pairs(touching_chain(seed, 0.0), {.base_cell_size = 0.5}),
-              299u);
+    EXPECT_GE(expect_brute_force_pairs(touching_chain(seed, 0.0), {.base_cell_size = 0.5}), 299u);
     EXPECT_GE(expect_brute_force_pairs(touching_chain(seed, -1048576.0)), 299u);
   }
 }

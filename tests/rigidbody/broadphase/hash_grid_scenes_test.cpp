@@ -13,9 +13,7 @@ constexpr std::uint32_t kSeeds = 30;
 constexpr std::size_t kObjects = 600;
 
 // Radii over three orders of magnitude, the box straddling the origin.
-std::vector<Object> mixed(std::uint32_t seed) {
-  return scenes::uniform(kObjects, {-3.0, 2.0}, 1e-3, 1.0, seed);
-}
+std::vector<Object> mixed(std::uint32_t seed) { return scenes::uniform(kObjects, {-3.0, 2.0}, 1e-3, 1.0, seed); }
 
 TEST(HashGridScenes, MixedSizesUniform) {
   std::size_t pairs = 0;
@@ -30,8 +28,7 @@ TEST(HashGridScenes, MixedSizesClustered) {
   std::size_t pairs = 0;
   for (std::uint32_t seed = 0; seed < kSeeds; ++seed) {
     SCOPED_TRACE(seed);
-    pairs += expect_brute_force_pairs(
-        scenes::clustered(kObjects, 4, 0.3, {-10.0, -5.0}, 1e-3, 1.0, seed));
+    pairs += expect_brute_force_pairs(scenes::clustered(kObjects, 4, 0.3, {-10.0, -5.0}, 1e-3, 1.0, seed));
   }
   EXPECT_GT(pairs, kSeeds * kObjects);
 }
@@ -48,8 +45,7 @@ TEST(HashGridScenes, FarFromTheOrigin) {
   std::size_t pairs = 0;
   for (std::uint32_t seed = 0; seed < kSeeds; ++seed) {
     SCOPED_TRACE(seed);
-    pairs += expect_brute_force_pairs(
-        scenes::uniform(kObjects, {1e6, 1e6 + 0.1}, 1e-3, 1e-2, seed));
+    pairs += expect_brute_force_pairs(scenes::uniform(kObjects, {1e6, 1e6 + 0.1}, 1e-3, 1e-2, seed));
     expect_brute_force_pairs(scenes::uniform(kObjects, {-1e7 - 5.0, -1e7}, 1e-3, 1.0, seed));
   }
   EXPECT_GT(pairs, kSeeds * kObjects / 2);
@@ -65,12 +61,11 @@ TEST(HashGridScenes, SomeObjectsFixed) {
 }
 
 TEST(HashGridScenes, OtherLevelFactorsAndBaseSizes) {
-  const std::vector<HashGridConfig> configs = {
-      {.level_factor = 3.0},
-      {.level_factor = 1.5, .safety = 1.2},
-      {.base_cell_size = 1e-4},           // below every object: level 0 stays empty
-      {.base_cell_size = 5.0},            // above every object: one level
-      {.margin = 0.01, .base_cell_size = 0.1, .level_factor = 4.0}};
+  const std::vector<HashGridConfig> configs = {{.level_factor = 3.0},
+                                               {.level_factor = 1.5, .safety = 1.2},
+                                               {.base_cell_size = 1e-4},  // below every object: level 0 stays empty
+                                               {.base_cell_size = 5.0},   // above every object: one level
+                                               {.margin = 0.01, .base_cell_size = 0.1, .level_factor = 4.0}};
   for (std::uint32_t seed = 0; seed < 5; ++seed) {
     for (const HashGridConfig& config : configs) {
       SCOPED_TRACE(seed);
@@ -92,10 +87,9 @@ TEST(HashGridScenes, Walls) {
     SCOPED_TRACE(seed);
     std::vector<Object> objects = mixed(seed);
     const auto next = static_cast<Id>(objects.size());
-    objects.push_back({.id = next, .fixed = true, .infinite = true,
-                       .half_space = HalfSpace{{0.0, 0.0, 1.0}, -2.5}});
-    objects.push_back({.id = next + 1, .fixed = true, .infinite = true,
-                       .half_space = HalfSpace{{-1.0, 1.0, 0.5}, 0.3}});
+    objects.push_back({.id = next, .fixed = true, .infinite = true, .half_space = HalfSpace{{0.0, 0.0, 1.0}, -2.5}});
+    objects.push_back(
+        {.id = next + 1, .fixed = true, .infinite = true, .half_space = HalfSpace{{-1.0, 1.0, 0.5}, 0.3}});
     objects.push_back({.id = next + 2, .infinite = true});
     objects[seed].fixed = true;
     expect_brute_force_pairs(objects, {.margin = 0.02});

@@ -35,8 +35,7 @@ double sphere_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r
 
 }  // namespace
 
-std::vector<Object> uniform(std::size_t n, Box box, double r_min, double r_max,
-                            std::uint32_t seed) {
+std::vector<Object> uniform(std::size_t n, Box box, double r_min, double r_max, std::uint32_t seed) {
   Rng rng(seed);
   std::vector<Object> objects(n);
   for (Object& o : objects) {
@@ -46,8 +45,8 @@ std::vector<Object> uniform(std::size_t n, Box box, double r_min, double r_max,
   return with_shuffled_ids(std::move(objects), rng);
 }
 
-std::vector<Object> clustered(std::size_t n, std::size_t clusters, double sigma, Box box,
-                              double r_min, double r_max, std::uint32_t seed) {
+std::vector<Object> clustered(std::size_t n, std::size_t clusters, double sigma, Box box, double r_min, double r_max,
+                              std::uint32_t seed) {
   Rng rng(seed);
   std::vector<Eigen::Vector3d> centres(clusters);
   for (Eigen::Vector3d& c : centres) c = point_in(rng, box);
@@ -71,8 +70,7 @@ std::vector<Object> packed(std::size_t n, double phi, std::uint32_t seed) {
   std::uniform_real_distribution<double> jitter(-0.1, 0.1);
   std::vector<Object> objects(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d site(static_cast<double>(i % side),
-                               static_cast<double>(i / side % side),
+    const Eigen::Vector3d site(static_cast<double>(i % side), static_cast<double>(i / side % side),
                                static_cast<double>(i / side / side));
     const double x = jitter(rng);
     const double y = jitter(rng);

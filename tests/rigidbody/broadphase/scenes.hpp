@@ -15,12 +15,11 @@ struct Box {
 };
 
 // Centres uniform in box^3, radii log-uniform in [r_min, r_max].
-std::vector<Object> uniform(std::size_t n, Box box, double r_min, double r_max,
-                            std::uint32_t seed);
+std::vector<Object> uniform(std::size_t n, Box box, double r_min, double r_max, std::uint32_t seed);
 
 // Centres in `clusters` Gaussian clumps of width sigma around centres uniform in box^3.
-std::vector<Object> clustered(std::size_t n, std::size_t clusters, double sigma, Box box,
-                              double r_min, double r_max, std::uint32_t seed);
+std::vector<Object> clustered(std::size_t n, std::size_t clusters, double sigma, Box box, double r_min, double r_max,
+                              std::uint32_t seed);
 
 // Equal spheres of radius 1 on a cubic lattice at solid fraction phi, each jittered by up
 // to 0.1: a granular packing, every sphere with about six near neighbours.

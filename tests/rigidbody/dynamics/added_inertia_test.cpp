@@ -54,7 +54,8 @@ TEST(AddedInertia, AddedInertiaIsTurnedIntoTheBodyFrame) {
 
 // A fixed body stays fixed: nothing added moves it.
 TEST(AddedInertia, AFixedBodyStaysFixed) {
-  const BodyInertia moving = with_added(BodyInertia::fixed(), {.mass = 1, .damping = 2}, Eigen::Quaterniond::Identity());
+  const BodyInertia moving =
+      with_added(BodyInertia::fixed(), {.mass = 1, .damping = 2}, Eigen::Quaterniond::Identity());
   EXPECT_TRUE(moving.is_fixed());
 }
 

@@ -42,7 +42,9 @@ void expect_order(Scheme scheme, const char* name, double expected) {
 
 TEST(Convergence, LeapfrogIsSecondOrder) { expect_order(Scheme::leapfrog, "leapfrog", 2.0); }
 
-TEST(Convergence, SemiImplicitEulerIsFirstOrder) { expect_order(Scheme::semi_implicit_euler, "semi-implicit Euler", 1.0); }
+TEST(Convergence, SemiImplicitEulerIsFirstOrder) {
+  expect_order(Scheme::semi_implicit_euler, "semi-implicit Euler", 1.0);
+}
 
 }  // namespace
 }  // namespace cosim::dynamics::test

@@ -47,7 +47,7 @@ TEST(AnalyticMass, Cylinder) {
 TEST(AnalyticMass, CapsuleIsCylinderPlusShiftedHemispheres) {
   const double r = 0.4, h = 1.0;
   const double m_cyl = density * pi * r * r * h, m_hemi = density * 2.0 / 3.0 * pi * r * r * r;
-  const double d = h / 2 + 3 * r / 8;                                           // hemisphere centroid
+  const double d = h / 2 + 3 * r / 8;  // hemisphere centroid
   const double hemi_about_centroid = 2.0 / 5.0 * m_hemi * r * r - m_hemi * (3 * r / 8) * (3 * r / 8);
   const double transverse = m_cyl * (3 * r * r + h * h) / 12.0 + 2 * (hemi_about_centroid + m_hemi * d * d);
   const double axial = m_cyl * r * r / 2.0 + 2 * (2.0 / 5.0 * m_hemi * r * r);
@@ -65,8 +65,8 @@ TEST(AnalyticMass, HalfSpaceHasNoMassAndBadInputIsRejected) {
 }
 
 TEST(ShapeKind, MatchesTheAlternativeAndHasAName) {
-  const Shape shapes[] = {Sphere(1), Ellipsoid({1, 2, 3}), Box({1, 1, 1}), Cylinder(1, 1), Capsule(1, 1),
-                          HalfSpace({0, 0, 1})};
+  const Shape shapes[] = {Sphere(1),      Ellipsoid({1, 2, 3}), Box({1, 1, 1}),
+                          Cylinder(1, 1), Capsule(1, 1),        HalfSpace({0, 0, 1})};
   for (const Shape& s : shapes) EXPECT_EQ(static_cast<std::size_t>(kind(s)), s.index());
   EXPECT_EQ(name(ShapeKind::HalfSpace), "half-space");
   EXPECT_TRUE(is_convex(Shape(Box({1, 1, 1}))));

@@ -9,8 +9,8 @@ namespace {
 TEST(ConvexHull, CubeKeepsCornersAndMergesCoplanarFacets) {
   const Eigen::Vector3d h(0.5, 1.0, 0.25);
   std::vector<Eigen::Vector3d> points = testing::box_mesh(h).vertices;
-  points.emplace_back(0.0, 0.0, 0.0);     // interior
-  points.emplace_back(0.5, 0.3, -0.1);    // on a face
+  points.emplace_back(0.0, 0.0, 0.0);   // interior
+  points.emplace_back(0.5, 0.3, -0.1);  // on a face
   const ConvexHull hull(points);
   EXPECT_EQ(hull.vertices().size(), 8u);
   ASSERT_EQ(hull.faces().size(), 6u);

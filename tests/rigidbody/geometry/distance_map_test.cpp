@@ -12,9 +12,9 @@ namespace cosim::geometry {
 namespace {
 
 struct MapErrors {
-  double max = 0.0;          // over the whole grid box
-  double near_surface = 0.0; // where |d| < 0.1
-  double normal_angle = 0.0; // largest angle between interpolated and exact normals there
+  double max = 0.0;           // over the whole grid box
+  double near_surface = 0.0;  // where |d| < 0.1
+  double normal_angle = 0.0;  // largest angle between interpolated and exact normals there
 };
 
 MapErrors measure(const Shape& shape, const DistanceMap& map, std::mt19937& rng) {

@@ -77,7 +77,8 @@ TEST(EllipsoidDistance, RandomPointsAreOptimal) {
   std::mt19937 rng(6);
   std::vector<Eigen::Vector3d> surface;
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (int i = 0; i < 4000; ++i) surface.push_back(on_surface(std::acos(1 - 2 * u(rng)), 2 * std::numbers::pi * u(rng)));
+  for (int i = 0; i < 4000; ++i)
+    surface.push_back(on_surface(std::acos(1 - 2 * u(rng)), 2 * std::numbers::pi * u(rng)));
   for (int i = 0; i < 300; ++i) {
     const Eigen::Vector3d p = testing::random_in_ball(rng, 2.5);
     const SurfacePoint s = ellipsoid.closest(p);

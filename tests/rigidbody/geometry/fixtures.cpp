@@ -66,7 +66,8 @@ MeshArrays subdivided(const MeshArrays& mesh) {
 
 MeshArrays box_mesh(const Eigen::Vector3d& h) {
   MeshArrays m;
-  for (int i = 0; i < 8; ++i) m.vertices.emplace_back(i & 1 ? h.x() : -h.x(), i & 2 ? h.y() : -h.y(), i & 4 ? h.z() : -h.z());
+  for (int i = 0; i < 8; ++i)
+    m.vertices.emplace_back(i & 1 ? h.x() : -h.x(), i & 2 ? h.y() : -h.y(), i & 4 ? h.z() : -h.z());
   for (int axis = 0; axis < 3; ++axis)
     for (int side = 0; side < 2; ++side) {
       // The face's corners in cyclic order around it.
@@ -136,7 +137,8 @@ MeshArrays torus_mesh(double R, double r, int nu, int nv) {
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
       const double u = 2.0 * std::numbers::pi * i / nu, v = 2.0 * std::numbers::pi * j / nv;
-      m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+      m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
+                              r * std::sin(v));
     }
   const auto id = [&](int i, int j) { return static_cast<std::uint32_t>((i % nu) * nv + j % nv); };
   // (d/du x d/dv) points out of the tube, so (u, v)-ordered corners face outward.

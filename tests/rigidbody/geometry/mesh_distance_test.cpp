@@ -93,7 +93,7 @@ TEST(MeshDistance, SignIsRobustAtEdgesAndVertices) {
         for (int i = 0; i < 4; ++i) near.push_back(x + eps * testing::random_unit(rng));
         for (const Eigen::Vector3d& p : near) {
           const SurfacePoint s = mesh.closest(p);
-          EXPECT_EQ(s.distance < 0.0, winding_number(mesh, p) > 0.5) << p.transpose();
+          EXPECT_EQ(s.distance<0.0, winding_number(mesh, p)> 0.5) << p.transpose();
           EXPECT_NEAR((p - s.point).norm(), std::abs(s.distance), 1e-15);
           ++checked;
         }

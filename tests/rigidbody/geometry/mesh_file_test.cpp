@@ -93,8 +93,8 @@ TEST(MeshFile, NestedShellBecomesACavity) {
     const TriangleMesh mesh = testing::make_mesh(both);
     EXPECT_EQ(mesh.report().flipped_components, inner_outward ? 1u : 0u);
     EXPECT_NEAR(mesh.volume(), 8.0 - 1.0, 1e-14);
-    EXPECT_EQ(mesh.signed_distance(Eigen::Vector3d::Zero()), 0.5);   // in the cavity: outside
-    EXPECT_EQ(mesh.signed_distance({0.75, 0.0, 0.0}), -0.25);        // in the wall
+    EXPECT_EQ(mesh.signed_distance(Eigen::Vector3d::Zero()), 0.5);  // in the cavity: outside
+    EXPECT_EQ(mesh.signed_distance({0.75, 0.0, 0.0}), -0.25);       // in the wall
   }
 }
 

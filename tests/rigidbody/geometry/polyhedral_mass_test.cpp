@@ -35,8 +35,8 @@ TEST(PolyhedralMass, BoxAsMeshAndHullIsExact) {
 TEST(PolyhedralMass, OffsetTetrahedronAsMeshAndHullIsExact) {
   const double s = 2.0;
   const Eigen::Vector3d o(1.0, -2.0, 0.5);
-  const MeshArrays tet = testing::tetrahedron_mesh({o, o + s * Eigen::Vector3d::UnitX(), o + s * Eigen::Vector3d::UnitY(),
-                                                    o + s * Eigen::Vector3d::UnitZ()});
+  const MeshArrays tet = testing::tetrahedron_mesh(
+      {o, o + s * Eigen::Vector3d::UnitX(), o + s * Eigen::Vector3d::UnitY(), o + s * Eigen::Vector3d::UnitZ()});
   Eigen::Matrix3d expected = Eigen::Matrix3d::Constant(std::pow(s, 5) / 480);
   expected.diagonal().setConstant(std::pow(s, 5) / 80);
 

@@ -12,7 +12,7 @@ const Eigen::Vector3d h(0.5, 1.0, 0.25);
 
 // Points on faces, edges (including a face diagonal of the mesh) and corners of the box h.
 std::vector<Eigen::Vector3d> box_surface_points() {
-  return {{0.5, 0.3, -0.1},  {-0.2, 1.0, 0.1},  {0.1, -0.7, -0.25}, {0.5, 1.0, 0.1},  {-0.5, 0.3, 0.25},
+  return {{0.5, 0.3, -0.1},   {-0.2, 1.0, 0.1}, {0.1, -0.7, -0.25},  {0.5, 1.0, 0.1},   {-0.5, 0.3, 0.25},
           {0.2, -1.0, -0.25}, {0.5, 1.0, 0.25}, {-0.5, -1.0, -0.25}, {0.5, 0.5, 0.125}, {0.0, 0.0, 0.25}};
 }
 
@@ -57,7 +57,7 @@ TEST(SignedDistance, SphereCylinderCapsuleHalfSpaceKnownValues) {
   const Cylinder cyl(1.0, 2.0);
   EXPECT_EQ(cyl.signed_distance({0, 0, 0}), -1.0);
   EXPECT_EQ(cyl.signed_distance({0, 0, 3}), 2.0);
-  EXPECT_DOUBLE_EQ(cyl.signed_distance({4, 0, 5}), 5.0);   // rim: (3, 4) away
+  EXPECT_DOUBLE_EQ(cyl.signed_distance({4, 0, 5}), 5.0);  // rim: (3, 4) away
   EXPECT_EQ(cyl.signed_distance({1, 0, 0.5}), 0.0);
   EXPECT_EQ(cyl.signed_distance({0, -0.6, 1}), 0.0);
   EXPECT_DOUBLE_EQ(cyl.signed_distance({0, 0.5, 0.8}), -0.2);

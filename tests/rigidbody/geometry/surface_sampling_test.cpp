@@ -90,7 +90,8 @@ TEST(SurfaceSampling, SectionsAreCurvesInTheirPlane) {
     EXPECT_NEAR((s.point - upright.position()).normalized().dot(s.normal), 1, 1e-9);
   }
   // Its dense boundary points, a sixth of the spacing apart, add up to the circle too.
-  EXPECT_NEAR(total_area(section_boundary(Cylinder(r, 0.01), upright, 2, 0.005, spacing)), 2 * pi * r, 0.003 * 2 * pi * r);
+  EXPECT_NEAR(total_area(section_boundary(Cylinder(r, 0.01), upright, 2, 0.005, spacing)), 2 * pi * r,
+              0.003 * 2 * pi * r);
   // A sphere cut off its centre: a circle of radius sqrt(r^2 - z^2).
   const double z = 0.3, radius = std::sqrt(r * r - z * z);
   EXPECT_NEAR(total_area(sample_section(Sphere(r), Pose(), 2, z, spacing)), 2 * pi * radius, 0.003 * 2 * pi * radius);

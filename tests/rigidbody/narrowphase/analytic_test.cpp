@@ -16,8 +16,7 @@ void expect_single(const contact::Manifold& m, double distance, const Vec3& norm
   ASSERT_EQ(m.count, 1);
   EXPECT_NEAR(m.points[0].distance, distance, 1e-12);
   EXPECT_TRUE(m.points[0].normal.isApprox(normal, 1e-12)) << m.points[0].normal.transpose();
-  EXPECT_TRUE(m.points[0].position.isApprox(position, 1e-12) ||
-              (m.points[0].position - position).norm() < 1e-12)
+  EXPECT_TRUE(m.points[0].position.isApprox(position, 1e-12) || (m.points[0].position - position).norm() < 1e-12)
       << m.points[0].position.transpose();
 }
 

@@ -37,7 +37,8 @@ TEST(BoxBox, EdgeOnEdgeGivesOnePointBetweenTheEdges) {
   const Shape box = Box({1, 1, 1});
   const double h = std::sqrt(2.0);
   // a's top edge runs along x at height sqrt 2, b's bottom edge along y, 0.1 lower.
-  const auto m = contacts(box, at(Vec3::Zero(), about(X, M_PI / 4)), box, at({0.3, 0.2, 2 * h - 0.1}, about(Y, M_PI / 4)));
+  const auto m =
+      contacts(box, at(Vec3::Zero(), about(X, M_PI / 4)), box, at({0.3, 0.2, 2 * h - 0.1}, about(Y, M_PI / 4)));
   ASSERT_EQ(m.count, 1);
   expect_all(m, -0.1, Z);
   EXPECT_TRUE(has_point(m, {0.3, 0, h - 0.05}, 1e-12)) << m.points[0].position.transpose();

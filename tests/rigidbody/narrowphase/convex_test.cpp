@@ -58,10 +58,12 @@ Agreement compare(const Shape& a, const Shape& b, int count) {
 }
 
 TEST(ConvexPath, AgreesWithAnalyticPairs) {
-  const std::vector<std::pair<Shape, Shape>> pairs{
-      {Sphere(0.7), Sphere(0.4)},        {Box({0.9, 0.4, 0.6}), Sphere(0.5)},
-      {Capsule(0.4, 1.0), Sphere(0.5)},  {Cylinder(0.5, 1.6), Sphere(0.3)},
-      {Capsule(0.4, 1.0), Capsule(0.3, 0.8)}, {Box({0.9, 0.4, 0.6}), Box({0.5, 0.7, 0.3})}};
+  const std::vector<std::pair<Shape, Shape>> pairs{{Sphere(0.7), Sphere(0.4)},
+                                                   {Box({0.9, 0.4, 0.6}), Sphere(0.5)},
+                                                   {Capsule(0.4, 1.0), Sphere(0.5)},
+                                                   {Cylinder(0.5, 1.6), Sphere(0.3)},
+                                                   {Capsule(0.4, 1.0), Capsule(0.3, 0.8)},
+                                                   {Box({0.9, 0.4, 0.6}), Box({0.5, 0.7, 0.3})}};
   for (const auto& [a, b] : pairs) {
     const Agreement r = compare(a, b, 300);
     SCOPED_TRACE(std::string(name(kind(a))) + " - " + std::string(name(kind(b))));

@@ -22,8 +22,7 @@ inline Eigen::Quaterniond about(const Vec3& axis, double angle) {
   return Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis.normalized()));
 }
 
-inline contact::Manifold contacts(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
-                                  double margin = 0.1) {
+inline contact::Manifold contacts(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, double margin = 0.1) {
   contact::Manifold m;
   collide(a, pa, b, pb, margin, m);
   for (int i = 0; i < m.count; ++i) {

@@ -25,7 +25,8 @@ scene::Scene sphere_in_liquid(double density) {
       "time: {end: 10.0}\ncoupling: {window: 0.01, scheme: serial-explicit}\n"
       "domain: {min: [-5, -5, -5], max: [5, 5, 5]}\neffects: [gravity, buoyancy]\n"
       "bodies:\n  - {name: ball, shape: {type: sphere, radius: 0.01}, material: {density: " +
-      std::to_string(density) + "}, position: [0, 0, 0]}\n"
+      std::to_string(density) +
+      "}, position: [0, 0, 0]}\n"
       "participants:\n  rigidbody: {dt: 1.0e-3, options: {fluid_density: 1000}}\n");
 }
 

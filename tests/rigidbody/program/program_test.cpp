@@ -58,9 +58,10 @@ TEST(RigidProgram, StandaloneWarnsAboutFrictionNoEffectUses) {
   scene.replace(scene.find("{density: 2500}"), 15, "{density: 2500, friction: 0.4}");
   write_file(dir / "scene.yaml", scene);
   ASSERT_EQ(run_standalone("cosim-rigidbody", dir / "scene.yaml", dir / "alone.h5", 1, dir / "log"), 0);
-  EXPECT_NE(read_file(dir / "log").find("cosim-rigidbody: warning: " + (dir / "scene.yaml").string() +
-                                        ":8: bodies[1].material.friction = 0.4: ignored for body 'ball': "
-                                        "the scene's effects do not include 'friction'"),
+  EXPECT_NE(read_file(dir / "log")
+                .find("cosim-rigidbody: warning: " + (dir / "scene.yaml").string() +
+                      ":8: bodies[1].material.friction = 0.4: ignored for body 'ball': "
+                      "the scene's effects do not include 'friction'"),
             std::string::npos)
       << read_file(dir / "log");
 }

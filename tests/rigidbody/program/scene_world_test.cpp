@@ -20,7 +20,8 @@ std::string scene_text(const std::string& effects, const std::string& bodies, co
          effects + "\nbodies:\n" + bodies + "participants:\n  rigidbody: {dt: 1.0e-3, options: " + options + "}\n";
 }
 
-const std::string ball = "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2500}, position: [0, 0, 1]}\n";
+const std::string ball =
+    "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2500}, position: [0, 0, 1]}\n";
 
 double mass(const world::World& w, std::uint32_t i) { return 1.0 / w.inertias()[i].inverse_mass; }
 
@@ -47,26 +48,35 @@ TEST(SceneWorld, EveryShapeHasTheMassOfItsVolume) {
   const auto facet = [&](std::array<double, 9> v) {
     stl += "facet normal 0 0 0\nouter loop\n";
     for (int k = 0; k < 3; ++k)
-      stl += "vertex " + std::to_string(v[3 * k]) + " " + std::to_string(v[3 * k + 1]) + " " + std::to_string(v[3 * k + 2]) + "\n";
+      stl += "vertex " + std::to_string(v[3 * k]) + " " + std::to_string(v[3 * k + 1]) + " " +
+             std::to_string(v[3 * k + 2]) + "\n";
     stl += "endloop\nendfacet\n";
   };
-  facet({0, 0, 0, 0, 1, 0, 1, 1, 0}); facet({0, 0, 0, 1, 1, 0, 1, 0, 0});
-  facet({0, 0, 1, 1, 0, 1, 1, 1, 1}); facet({0, 0, 1, 1, 1, 1, 0, 1, 1});
-  facet({0, 0, 0, 1, 0, 0, 1, 0, 1}); facet({0, 0, 0, 1, 0, 1, 0, 0, 1});
-  facet({0, 1, 0, 0, 1, 1, 1, 1, 1}); facet({0, 1, 0, 1, 1, 1, 1, 1, 0});
-  facet({0, 0, 0, 0, 0, 1, 0, 1, 1}); facet({0, 0, 0, 0, 1, 1, 0, 1, 0});
-  facet({1, 0, 0, 1, 1, 0, 1, 1, 1}); facet({1, 0, 0, 1, 1, 1, 1, 0, 1});
+  facet({0, 0, 0, 0, 1, 0, 1, 1, 0});
+  facet({0, 0, 0, 1, 1, 0, 1, 0, 0});
+  facet({0, 0, 1, 1, 0, 1, 1, 1, 1});
+  facet({0, 0, 1, 1, 1, 1, 0, 1, 1});
+  facet({0, 0, 0, 1, 0, 0, 1, 0, 1});
+  facet({0, 0, 0, 1, 0, 1, 0, 0, 1});
+  facet({0, 1, 0, 0, 1, 1, 1, 1, 1});
+  facet({0, 1, 0, 1, 1, 1, 1, 1, 0});
+  facet({0, 0, 0, 0, 0, 1, 0, 1, 1});
+  facet({0, 0, 0, 0, 1, 1, 0, 1, 0});
+  facet({1, 0, 0, 1, 1, 0, 1, 1, 1});
+  facet({1, 0, 0, 1, 1, 1, 1, 0, 1});
   testing::write_file(dir / "cube.stl", stl + "endsolid cube\n");
   const std::string body = "    material: {density: 1000}\n    position: [1, 2, 3]\n";
   const auto scene = scene::load_scene_from_string(
-      scene_text("[gravity]",
-                 "  - {name: s, shape: {type: sphere, radius: 0.1}, material: {density: 1000}, position: [0, 0, 0]}\n"
-                 "  - {name: e, shape: {type: ellipsoid, radii: [0.1, 0.2, 0.3]}, material: {density: 1000}, position: [0, 0, 0]}\n"
-                 "  - {name: b, shape: {type: box, half_extents: [0.1, 0.2, 0.3]}, material: {density: 1000}, position: [0, 0, 0]}\n"
-                 "  - {name: c, shape: {type: cylinder, radius: 0.1, height: 0.4}, material: {density: 1000}, position: [0, 0, 0]}\n"
-                 "  - {name: k, shape: {type: capsule, radius: 0.1, height: 0.4}, material: {density: 1000}, position: [0, 0, 0]}\n"
-                 "  - {name: p, shape: {type: plane, normal: [0, 0, 1]}, fixed: true, position: [0, 0, -1]}\n"
-                 "  - name: m\n    shape: {type: mesh, file: cube.stl}\n" + body),
+      scene_text(
+          "[gravity]",
+          "  - {name: s, shape: {type: sphere, radius: 0.1}, material: {density: 1000}, position: [0, 0, 0]}\n"
+          "  - {name: e, shape: {type: ellipsoid, radii: [0.1, 0.2, 0.3]}, material: {density: 1000}, position: [0, 0, 0]}\n"
+          "  - {name: b, shape: {type: box, half_extents: [0.1, 0.2, 0.3]}, material: {density: 1000}, position: [0, 0, 0]}\n"
+          "  - {name: c, shape: {type: cylinder, radius: 0.1, height: 0.4}, material: {density: 1000}, position: [0, 0, 0]}\n"
+          "  - {name: k, shape: {type: capsule, radius: 0.1, height: 0.4}, material: {density: 1000}, position: [0, 0, 0]}\n"
+          "  - {name: p, shape: {type: plane, normal: [0, 0, 1]}, fixed: true, position: [0, 0, -1]}\n"
+          "  - name: m\n    shape: {type: mesh, file: cube.stl}\n" +
+              body),
       dir / "scene.yaml");
   const auto world = make_world(scene);
   const auto& w = *world;
@@ -108,13 +118,15 @@ TEST(SceneWorld, VirtualMassNeedsFluidDensity) {
       refusal(scene_text("[gravity]", ball, "{virtual_mass: 1}"), [](const scene::Scene& s) { program_options(s); });
   EXPECT_EQ(r.key, "participants.rigidbody.options.virtual_mass");
   EXPECT_NE(r.message.find("fluid_density"), std::string::npos) << r.message;
-  const auto with = scene::load_scene_from_string(scene_text("[gravity]", ball, "{virtual_mass: 0.5, fluid_density: 1000}"));
+  const auto with =
+      scene::load_scene_from_string(scene_text("[gravity]", ball, "{virtual_mass: 0.5, fluid_density: 1000}"));
   EXPECT_EQ(program_options(with).virtual_mass, 0.5);
 }
 
 TEST(SceneWorld, OptionsReachTheSettings) {
-  const auto scene = scene::load_scene_from_string(scene_text(
-      "[gravity]", ball, "{solver: pgs, iterations: 7, tolerance: 1.0e-4, contact_margin: 0.01, restitution: sequential}"));
+  const auto scene = scene::load_scene_from_string(
+      scene_text("[gravity]", ball,
+                 "{solver: pgs, iterations: 7, tolerance: 1.0e-4, contact_margin: 0.01, restitution: sequential}"));
   const auto s = settings_of(scene);
   EXPECT_EQ(s.solver, world::SolverKind::pgs);
   EXPECT_EQ(s.iterations, 7);
@@ -125,7 +137,8 @@ TEST(SceneWorld, OptionsReachTheSettings) {
 }
 
 TEST(SceneWorld, EffectsSwitchGravityContactAndFriction) {
-  const std::string rough = "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2500, friction: 0.4}, position: [0, 0, 1]}\n";
+  const std::string rough =
+      "  - {name: ball, shape: {type: sphere, radius: 0.1}, material: {density: 2500, friction: 0.4}, position: [0, 0, 1]}\n";
   const auto bare = settings_of(scene::load_scene_from_string(scene_text("[contact]", ball)));
   EXPECT_FALSE(bare.body_forces.gravity);
   EXPECT_TRUE(bare.contact);
@@ -144,7 +157,8 @@ TEST(SceneWorld, DemOptionsReachTheSettings) {
   EXPECT_EQ(s.solver, world::SolverKind::dem);
   EXPECT_EQ(s.dem.law, solver::NormalLaw::hertz);
   EXPECT_EQ(s.dem.normal_stiffness, 2e6);
-  EXPECT_EQ(settings_of(scene::load_scene_from_string(scene_text("[gravity]", ball))).dem.law, solver::NormalLaw::linear);
+  EXPECT_EQ(settings_of(scene::load_scene_from_string(scene_text("[gravity]", ball))).dem.law,
+            solver::NormalLaw::linear);
 }
 
 // The error names file, line, key and value, as every scene error does.
@@ -164,7 +178,8 @@ TEST(SceneWorld, BadDemOptionsAreNamed) {
   EXPECT_EQ(law.value, "cubic");
   EXPECT_EQ(law.line, 8);  // the options line
   EXPECT_NE(std::string(law.what()).find("scene.yaml:8: participants.rigidbody.options.dem_law = cubic: "),
-            std::string::npos) << law.what();
+            std::string::npos)
+      << law.what();
   const auto k = error_of("{normal_stiffness: -1}");
   EXPECT_EQ(k.key, "participants.rigidbody.options.normal_stiffness");
   EXPECT_EQ(k.value, "-1");
@@ -209,7 +224,8 @@ TEST(SceneWorld, LubricationReachesTheSettings) {
 TEST(SceneWorld, AutoLubricationTakesTheFluidsViscosityAndCell) {
   const auto with_bodies = [](const std::string& bodies) {
     return "  fluid: {dt: 1.0e-3, options: {density: 1000, viscosity: {model: newtonian, mu: 0.058}, grid: {cells: "
-           "[20, 40, 1]}" + bodies + "}}\n";
+           "[20, 40, 1]}" +
+           bodies + "}}\n";
   };
   const auto s = settings_of(scene::load_scene_from_string(
       scene_text("[gravity, contact, hydrodynamics]", ball, "{lubrication: auto}") + with_bodies("")));
@@ -217,17 +233,17 @@ TEST(SceneWorld, AutoLubricationTakesTheFluidsViscosityAndCell) {
   const double cell = 10.0 / 20;  // the domain is 10 m wide; the one-cell axis does not count
   EXPECT_DOUBLE_EQ(s.lubrication.range, 0.4 * cell);
   EXPECT_DOUBLE_EQ(s.lubrication.roughness, 1e-3 * s.lubrication.range);
-  const auto staircase = settings_of(scene::load_scene_from_string(
-      scene_text("[gravity, contact, hydrodynamics]", ball, "{lubrication: auto}") +
-      with_bodies(", bodies: {method: staircase}")));
+  const auto staircase = settings_of(
+      scene::load_scene_from_string(scene_text("[gravity, contact, hydrodynamics]", ball, "{lubrication: auto}") +
+                                    with_bodies(", bodies: {method: staircase}")));
   EXPECT_DOUBLE_EQ(staircase.lubrication.range, cell);
   EXPECT_EQ(error_of("{lubrication: automatic}").key, "participants.rigidbody.options.lubrication");
   const std::string carreau =
       "  fluid: {dt: 1.0e-3, options: {density: 1000, viscosity: {model: carreau, mu_zero: 1, mu_infinity: 0.1, "
       "time_constant: 1, index: 0.5}, grid: {cells: [20, 40, 1]}}}\n";
   try {
-    settings_of(scene::load_scene_from_string(scene_text("[gravity, contact, hydrodynamics]", ball, "{lubrication: auto}") +
-                                              carreau));
+    settings_of(scene::load_scene_from_string(
+        scene_text("[gravity, contact, hydrodynamics]", ball, "{lubrication: auto}") + carreau));
     FAIL() << "auto lubrication with a Carreau fluid";
   } catch (const scene::SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("needs a Newtonian fluid"), std::string::npos) << e.what();
@@ -243,12 +259,13 @@ TEST(SceneWorld, BadLubricationIsNamed) {
             "participants.rigidbody.options.lubrication.gap");
 }
 
-const std::string gem_and_ball =
-    ball + "  - {name: gem, shape: {type: mesh, file: " COSIM_CONFIGS_DIR "/meshes/icosahedron.obj}, material: {density: 1000}, position: [1, 0, 1]}\n";
+const std::string gem_and_ball = ball + "  - {name: gem, shape: {type: mesh, file: " COSIM_CONFIGS_DIR
+                                        "/meshes/icosahedron.obj}, material: {density: 1000}, position: [1, 0, 1]}\n";
 
 TEST(SceneWorld, ConvexHullsTurnMeshBodiesIntoHulls) {
   const auto mesh = make_world(scene::load_scene_from_string(scene_text("[gravity]", gem_and_ball)));
-  const auto hull = make_world(scene::load_scene_from_string(scene_text("[gravity]", gem_and_ball, "{convex_hulls: [gem]}")));
+  const auto hull =
+      make_world(scene::load_scene_from_string(scene_text("[gravity]", gem_and_ball, "{convex_hulls: [gem]}")));
   EXPECT_EQ(geometry::kind(mesh->shape(1)), geometry::ShapeKind::TriangleMesh);
   EXPECT_EQ(geometry::kind(hull->shape(1)), geometry::ShapeKind::ConvexHull);
   // A convex mesh and its hull are the same solid, at the same place.

@@ -24,8 +24,12 @@ const fs::path configs = COSIM_CONFIGS_DIR;
 struct Runs {
   fs::path dir;
   Finished coupled{};
-  Series position(const std::string& body) const { return read_series(dir / "scene.h5", "/bodies/" + body + "/position"); }
-  Series velocity(const std::string& body) const { return read_series(dir / "scene.h5", "/bodies/" + body + "/velocity"); }
+  Series position(const std::string& body) const {
+    return read_series(dir / "scene.h5", "/bodies/" + body + "/position");
+  }
+  Series velocity(const std::string& body) const {
+    return read_series(dir / "scene.h5", "/bodies/" + body + "/velocity");
+  }
 };
 
 // Copies configs/<name>.yaml (and the meshes it may refer to) with time.end shortened, runs
@@ -117,14 +121,15 @@ TEST(RigidScenes, SettledPyramidStandsOnItsFixedLayer) {
 }
 
 TEST(RigidScenes, MixedShapesLandOnThePlane) {
-  const std::vector<std::string> bodies{"sphere", "small_sphere", "ellipsoid", "box", "cylinder", "capsule", "gem", "torus"};
+  const std::vector<std::string> bodies{"sphere",   "small_sphere", "ellipsoid", "box",
+                                        "cylinder", "capsule",      "gem",       "torus"};
   const auto runs = run_config("rigid_mixed_shapes", "0.5", bodies);
   // By t = 0.5 s these rest where their shape says: the box on its 0.03 half extent, the
   // cylinder on an end (half height 0.05), the capsule on its side (radius 0.03), the torus
   // flat (tube radius 0.025); the spheres roll on their radius. The ellipsoid and the gem
   // are still rocking, between their smallest and largest half widths.
-  const std::map<std::string, double> rest{{"small_sphere", 0.03}, {"box", 0.03},     {"cylinder", 0.05},
-                                           {"capsule", 0.03},      {"torus", 0.025},  {"sphere", 0.05}};
+  const std::map<std::string, double> rest{{"small_sphere", 0.03}, {"box", 0.03},    {"cylinder", 0.05},
+                                           {"capsule", 0.03},      {"torus", 0.025}, {"sphere", 0.05}};
   for (const auto& [b, height] : rest) {
     const auto p = runs.position(b);
     EXPECT_NEAR(p.at(p.rows - 1, 2), height, 0.005 * height) << b;

@@ -37,8 +37,7 @@ TEST(VirtualMass, ASteadyFluidWrenchPassesUnchanged) {
   VirtualMass vm(1.0, kFluidDensity);
   const Eigen::Vector3d force(0.001, -0.002, 0.004), torque(1e-7, 0, -2e-7);
   std::vector<dynamics::WindowWrench> out;
-  for (int k = 0; k < 80; ++k)
-    out = vm.blend(std::span(&b.inertia, 1), b.forces, std::vector{held(force, torque)});
+  for (int k = 0; k < 80; ++k) out = vm.blend(std::span(&b.inertia, 1), b.forces, std::vector{held(force, torque)});
   EXPECT_LT((out[0].start.force - force).norm(), 1e-12 * force.norm());
   EXPECT_LT((out[0].end.torque - torque).norm(), 1e-12 * torque.norm());
 }

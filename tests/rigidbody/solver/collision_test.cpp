@@ -66,8 +66,7 @@ TEST(HeadOnDem, RestitutionFromDampingFormula) {
     const double approach = 2.5;
     EXPECT_NEAR(row.velocity(0), v1, 0.03 * approach) << "e = " << e;
     EXPECT_NEAR(row.velocity(1), v2, 0.03 * approach) << "e = " << e;
-    std::cout << "DEM e = " << e << ": measured "
-              << (row.velocity(1) - row.velocity(0)) / approach << '\n';
+    std::cout << "DEM e = " << e << ": measured " << (row.velocity(1) - row.velocity(0)) / approach << '\n';
   }
 }
 

@@ -10,8 +10,7 @@ contact::PairContacts between(std::uint32_t a, std::uint32_t b) { return {.a = a
 
 std::vector<dynamics::BodyInertia> ground_and(int dynamic) {
   std::vector<dynamics::BodyInertia> inertias{dynamics::BodyInertia::fixed()};
-  for (int i = 0; i < dynamic; ++i)
-    inertias.push_back(dynamics::BodyInertia::of(1.0, Eigen::Matrix3d::Identity()));
+  for (int i = 0; i < dynamic; ++i) inertias.push_back(dynamics::BodyInertia::of(1.0, Eigen::Matrix3d::Identity()));
   return inertias;
 }
 
@@ -28,7 +27,7 @@ TEST(ContactGroups, TwoPilesOnOneGroundAreSeparate) {
 TEST(ContactGroups, ChainIsOneGroup) {
   const auto inertias = ground_and(4);
   const std::vector<contact::PairContacts> manifolds{between(0, 1), between(1, 2), between(3, 2), between(3, 4),
-                                                 between(4, 0)};
+                                                     between(4, 0)};
   const auto groups = contact_groups(inertias, manifolds);
   ASSERT_EQ(groups.size(), 1u);
   EXPECT_EQ(groups[0].size(), 5u);

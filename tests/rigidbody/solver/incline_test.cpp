@@ -78,15 +78,14 @@ TEST_P(InclineImpulses, SlidesWithCoulombAcceleration) {
   EXPECT_LT(incline.world.states[incline.box].angular_velocity.norm(), 1e-6);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Impulses, InclineImpulses,
-    ::testing::Values(Case{kPgs, FrictionModel::pyramid}, Case{kPgs, FrictionModel::cone},
-                      Case{kSi, FrictionModel::pyramid}, Case{kSi, FrictionModel::cone},
-                      Case{kJacobi, FrictionModel::pyramid}, Case{kJacobi, FrictionModel::cone}),
-    [](const auto& info) {
-      return std::string(info.param.preset.name) +
-             (info.param.model == FrictionModel::pyramid ? "_pyramid" : "_cone");
-    });
+INSTANTIATE_TEST_SUITE_P(Impulses, InclineImpulses,
+                         ::testing::Values(Case{kPgs, FrictionModel::pyramid}, Case{kPgs, FrictionModel::cone},
+                                           Case{kSi, FrictionModel::pyramid}, Case{kSi, FrictionModel::cone},
+                                           Case{kJacobi, FrictionModel::pyramid}, Case{kJacobi, FrictionModel::cone}),
+                         [](const auto& info) {
+                           return std::string(info.param.preset.name) +
+                                  (info.param.model == FrictionModel::pyramid ? "_pyramid" : "_cone");
+                         });
 
 // DEM: the tangential spring holds the box with a small elastic creep; sliding matches
 // the Coulomb acceleration up to the spring and dashpot transients.

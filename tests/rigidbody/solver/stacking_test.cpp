@@ -28,8 +28,8 @@ TEST(WarmStart, ReducesIterationsOnRestingBox) {
   cold.memory.clear();
   const SolveReport warm_report = world.step(1e-3, contacts, impulses(options));
   const SolveReport cold_report = cold.step(1e-3, contacts, impulses(options));
-  std::cout << "resting box, 4 contacts: warm start " << warm_report.iterations
-            << " iterations, cold start " << cold_report.iterations << '\n';
+  std::cout << "resting box, 4 contacts: warm start " << warm_report.iterations << " iterations, cold start "
+            << cold_report.iterations << '\n';
   EXPECT_TRUE(warm_report.converged);
   EXPECT_TRUE(cold_report.converged);
   EXPECT_LT(warm_report.iterations, cold_report.iterations);

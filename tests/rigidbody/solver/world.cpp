@@ -38,8 +38,9 @@ SolveReport World::step(double dt, const Contacts& contacts, const Solver& solve
   contact_set.clear();
   // Sorted by pair, as the world's contact graph hands them to the solver.
   std::vector<contact::Manifold> manifolds = contacts(states);
-  std::sort(manifolds.begin(), manifolds.end(),
-            [](const contact::Manifold& x, const contact::Manifold& y) { return std::pair(x.a, x.b) < std::pair(y.a, y.b); });
+  std::sort(manifolds.begin(), manifolds.end(), [](const contact::Manifold& x, const contact::Manifold& y) {
+    return std::pair(x.a, x.b) < std::pair(y.a, y.b);
+  });
   for (const contact::Manifold& m : manifolds) contact_set.add(m);
   const std::vector<Material> materials(contact_set.pairs.size(), material);
   memory.recall(contact_set, values);

@@ -17,7 +17,7 @@ inline const Eigen::Vector3d kGravity{0.0, 0.0, -9.81};
 struct Plane {
   std::uint32_t body = 0;  // a fixed body
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
-  double offset = 0.0;     // normal . x = offset on the plane
+  double offset = 0.0;  // normal . x = offset on the plane
 };
 
 using Contacts = std::function<std::vector<contact::Manifold>(std::span<const dynamics::BodyState>)>;
@@ -44,8 +44,8 @@ struct World {
   std::vector<dynamics::BodyInertia> inertias;
   Eigen::Vector3d gravity = kGravity;
   Material material;
-  ContactMemory memory;  // carried between steps, as the world's contact graph does
-  contact::ContactSet contact_set;  // of the last step
+  ContactMemory memory;               // carried between steps, as the world's contact graph does
+  contact::ContactSet contact_set;    // of the last step
   std::vector<CachedContact> values;  // of the last step, one per point
 
   std::uint32_t add_fixed();

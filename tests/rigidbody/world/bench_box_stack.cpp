@@ -10,8 +10,8 @@ int main(int argc, char** argv) {
   const int steps = argc > 1 ? std::atoi(argv[1]) : 10000;
   const StackResult r = run_box_stack(steps, argc > 2 ? std::atoi(argv[2]) : 0);
   std::printf("boxes %d  steps %d  box %.3g m\n", kStackBoxes, steps, r.box_size);
-  std::printf("horizontal drift %.3e m (%.3e of box)  vertical shift %.3e m  max speed %.3e m/s\n",
-              r.horizontal_drift, r.horizontal_drift / r.box_size, r.vertical_shift, r.max_speed);
+  std::printf("horizontal drift %.3e m (%.3e of box)  vertical shift %.3e m  max speed %.3e m/s\n", r.horizontal_drift,
+              r.horizontal_drift / r.box_size, r.vertical_shift, r.max_speed);
   std::printf("converged in %d of %d steps  iterations: worst %d, mean %.1f  wall %.3f s (%.1f us/step)\n",
               r.converged_steps, steps, r.worst_iterations, r.mean_iterations, r.wall_seconds,
               1e6 * r.wall_seconds / steps);

@@ -20,7 +20,8 @@ TEST(Cradle, MomentumPassesThroughAndEnergyIsKept) {
   World world(s);
   const double r = 0.05, v = 1.0;
   std::vector<std::uint32_t> balls;
-  for (int i = 0; i < 5; ++i) balls.push_back(add_sphere(world, r, {2 * r * i, 0.0, 0.0}, {.friction = 0.3, .restitution = 1.0}));
+  for (int i = 0; i < 5; ++i)
+    balls.push_back(add_sphere(world, r, {2 * r * i, 0.0, 0.0}, {.friction = 0.3, .restitution = 1.0}));
   world.states()[balls[0]].velocity.x() = v;
   const double energy = dynamics::kinetic_energy(world.states(), world.inertias());
   const Eigen::Vector3d momentum = dynamics::linear_momentum(world.states(), world.inertias());

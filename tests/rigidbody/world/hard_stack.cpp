@@ -14,7 +14,8 @@ void add(World& world, const geometry::Shape& shape, const Eigen::Vector3d& at, 
 }
 
 void ground(World& world, double friction = 0.5) {
-  world.add({.shape = geometry::HalfSpace(Eigen::Vector3d::UnitZ()), .material = {.friction = friction}, .fixed = true});
+  world.add(
+      {.shape = geometry::HalfSpace(Eigen::Vector3d::UnitZ()), .material = {.friction = friction}, .fixed = true});
 }
 
 // Two boxes of half sizes `lower` and `upper`, densities `lower_density` and `upper_density`, on the floor.
@@ -49,7 +50,8 @@ void sphere_pyramid(World& world) {
 void tower(World& world) {
   constexpr double half = 0.1;
   ground(world);
-  for (int i = 0; i < 20; ++i) add(world, geometry::Box(Eigen::Vector3d::Constant(half)), {0, 0, half * (2 * i + 1)}, 1000.0, 0.5);
+  for (int i = 0; i < 20; ++i)
+    add(world, geometry::Box(Eigen::Vector3d::Constant(half)), {0, 0, half * (2 * i + 1)}, 1000.0, 0.5);
 }
 
 }  // namespace

@@ -11,8 +11,8 @@ namespace cosim::world::test {
 
 struct HardStack {
   std::string name;
-  std::string id;               // the test's name
-  double smallest_size = 0.0;  // the smallest body's edge or diameter: the unit of the bounds
+  std::string id;                         // the test's name
+  double smallest_size = 0.0;             // the smallest body's edge or diameter: the unit of the bounds
   void (*build)(World& world) = nullptr;  // bodies exactly touching at t = 0, at rest
 };
 

@@ -48,7 +48,9 @@ TEST_P(Pyramid, SpheresSettleWithoutPenetrationOrEnergyGain) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Settling, Pyramid, ::testing::Values(SolverKind::soft, SolverKind::sequential_impulses),
-                         [](const auto& info) { return info.param == SolverKind::soft ? "Soft" : "SequentialImpulses"; });
+                         [](const auto& info) {
+                           return info.param == SolverKind::soft ? "Soft" : "SequentialImpulses";
+                         });
 
 }  // namespace
 }  // namespace cosim::world::test

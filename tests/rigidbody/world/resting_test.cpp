@@ -64,9 +64,10 @@ TEST_P(TouchingAtStart, BodiesDoNotJumpApart) {
   EXPECT_LT(worst_shift, GetParam() == SolverKind::soft ? 3 * kSoftSag : 1e-6 * kRadius);
 }
 
-INSTANTIATE_TEST_SUITE_P(Resting, TouchingAtStart,
-                         ::testing::Values(SolverKind::soft, SolverKind::sequential_impulses),
-                         [](const auto& info) { return info.param == SolverKind::soft ? "Soft" : "SequentialImpulses"; });
+INSTANTIATE_TEST_SUITE_P(Resting, TouchingAtStart, ::testing::Values(SolverKind::soft, SolverKind::sequential_impulses),
+                         [](const auto& info) {
+                           return info.param == SolverKind::soft ? "Soft" : "SequentialImpulses";
+                         });
 
 }  // namespace
 }  // namespace cosim::world::test

@@ -8,8 +8,7 @@ std::uint32_t add_ground(World& world, const BodyMaterial& material) {
   return world.add({.shape = geometry::HalfSpace(Eigen::Vector3d::UnitZ()), .material = material, .fixed = true});
 }
 
-std::uint32_t add_sphere(World& world, double radius, const Eigen::Vector3d& position,
-                         const BodyMaterial& material) {
+std::uint32_t add_sphere(World& world, double radius, const Eigen::Vector3d& position, const BodyMaterial& material) {
   BodyDesc d{.shape = geometry::Sphere(radius), .material = material};
   d.state.position = position;
   return world.add(d);
@@ -31,8 +30,8 @@ std::vector<std::uint32_t> add_box_stack(World& world, int count, double half) {
 
 double total_energy(const World& world) {
   double e = dynamics::kinetic_energy(world.states(), world.inertias());
-  const Eigen::Vector3d g = world.settings().body_forces.gravity ? world.settings().body_forces.g
-                                                                  : Eigen::Vector3d::Zero();
+  const Eigen::Vector3d g =
+      world.settings().body_forces.gravity ? world.settings().body_forces.g : Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < world.size(); ++i) {
     const auto& body = world.inertias()[i];
     if (!body.is_fixed()) e -= g.dot(world.states()[i].position) / body.inverse_mass;

@@ -44,8 +44,7 @@ StepReport pile(int iterations, int relax_iterations, int steps) {
   add_ground(world);
   for (int x = 0; x < 6; ++x)
     for (int y = 0; y < 6; ++y)
-      for (int z = 0; z < 4; ++z)
-        add_sphere(world, kRadius, kRadius * Eigen::Vector3d(2 * x, 2 * y, 2 * z + 1));
+      for (int z = 0; z < 4; ++z) add_sphere(world, kRadius, kRadius * Eigen::Vector3d(2 * x, 2 * y, 2 * z + 1));
   StepReport r;
   for (int step = 0; step < steps; ++step) r = world.advance(world.settings().dt);
   return r;

@@ -87,9 +87,7 @@ TEST(SoftSubsteps, TheLubricationFilmGetsANarrowPhaseEverySubstep) {
 }
 
 // Guards against: a substep count below one taken as none.
-TEST(SoftSubsteps, FewerThanOneIsRefused) {
-  EXPECT_THROW(World({.soft = {.substeps = 0}}), std::invalid_argument);
-}
+TEST(SoftSubsteps, FewerThanOneIsRefused) { EXPECT_THROW(World({.soft = {.substeps = 0}}), std::invalid_argument); }
 
 }  // namespace
 }  // namespace cosim::world::test

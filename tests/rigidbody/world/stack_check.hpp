@@ -14,7 +14,7 @@ struct StackResult {
   bool converged = true;          // the solver met its tolerance in every step
   int converged_steps = 0;        // steps in which it did
   int worst_iterations = 0;
-  double mean_iterations = 0.0;   // over the steps
+  double mean_iterations = 0.0;  // over the steps
   double wall_seconds = 0.0;
 };
 

@@ -43,9 +43,9 @@ TEST(Tunnelling, FlagsBodiesFasterThanTheMarginOrHalfTheirThickness) {
   std::vector<dynamics::BodyInertia> inertias(4, dynamics::BodyInertia::of(1.0, Eigen::Matrix3d::Identity(), true));
   inertias[3] = {};  // fixed: never at risk, whatever its velocity says
   const double dt = 1e-3, margin = 0.01;
-  states[0].velocity = {0, 0, -5};    // 5 mm per substep: within both limits
-  states[1].velocity = {0, 0, -5};    // 5 mm > half the plate's 5 mm thickness
-  states[2].velocity = {0, 11, 0};    // 11 mm > the 10 mm margin
+  states[0].velocity = {0, 0, -5};  // 5 mm per substep: within both limits
+  states[1].velocity = {0, 0, -5};  // 5 mm > half the plate's 5 mm thickness
+  states[2].velocity = {0, 11, 0};  // 11 mm > the 10 mm margin
   states[3].velocity = {0, 0, -100};
   const auto risks = tunnelling_risks(thinnest, states, inertias, dt, margin, 0.0);
   ASSERT_EQ(risks.size(), 2u);
@@ -137,7 +137,9 @@ TEST_P(ThinPlate, At50MetresPerSecondStopsOnAPlane) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Tunnelling, ThinPlate, ::testing::Values(SolverKind::soft, SolverKind::sequential_impulses),
-                         [](const auto& info) { return info.param == SolverKind::soft ? "Soft" : "SequentialImpulses"; });
+                         [](const auto& info) {
+                           return info.param == SolverKind::soft ? "Soft" : "SequentialImpulses";
+                         });
 
 // A ball at 50 m/s against a fixed 5 mm plate: at dt 1e-3 it jumps the plate between two
 // substeps without a contact. The check flags it; at the dt the warning asks for, the ball

@@ -31,7 +31,8 @@ TEST(Flights, StateAgreesWithDirectEvaluationAfterManyReflections) {
     ASSERT_FALSE(o.inside(p.state));
     close += testing::expect_state_matches(o, p.state, p.x, 1e-9);
   }
-  std::printf("boundary events %ld of %ld events, %d bits too close to a surface to check\n", boundaries, events, close);
+  std::printf("boundary events %ld of %ld events, %d bits too close to a surface to check\n", boundaries, events,
+              close);
   EXPECT_GT(boundaries, 40000);
   EXPECT_LT(close, 5);
 }

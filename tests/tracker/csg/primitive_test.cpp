@@ -117,7 +117,9 @@ TEST(Primitive, RejectsDegenerateInput) {
 
 // The bounding test through the mesh: false only for boxes wholly inside or outside.
 TEST(Primitive, SurfaceMayMeetABoxOnlyWhereItPasses) {
-  const auto box = [](double lo, double hi) { return Eigen::AlignedBox3d(Eigen::Vector3d::Constant(lo), Eigen::Vector3d::Constant(hi)); };
+  const auto box = [](double lo, double hi) {
+    return Eigen::AlignedBox3d(Eigen::Vector3d::Constant(lo), Eigen::Vector3d::Constant(hi));
+  };
   const auto only = [](const Expression& e) { return Tree(e).primitives().front(); };
   const Primitive b = only(ball({0, 0, 0}, 1.0));
   EXPECT_FALSE(b.surface_may_meet(box(-0.5, 0.5)));  // inside
@@ -129,7 +131,8 @@ TEST(Primitive, SurfaceMayMeetABoxOnlyWhereItPasses) {
   EXPECT_TRUE(h.surface_may_meet(box(0.2, 0.4)));
   const Primitive c = only(cylinder({0, 0, 0}, {0, 0, 1}, 1.0));
   EXPECT_FALSE(c.surface_may_meet(box(5, 6)));
-  EXPECT_FALSE(c.surface_may_meet(Eigen::AlignedBox3d(Eigen::Vector3d(-0.5, -0.5, 100), Eigen::Vector3d(0.5, 0.5, 200))));
+  EXPECT_FALSE(
+      c.surface_may_meet(Eigen::AlignedBox3d(Eigen::Vector3d(-0.5, -0.5, 100), Eigen::Vector3d(0.5, 0.5, 200))));
   EXPECT_TRUE(c.surface_may_meet(box(0.6, 0.8)));
   const Primitive cube = only(csg::box({0, 0, 0}, {1, 1, 1}));
   EXPECT_FALSE(cube.surface_may_meet(box(-0.9, 0.9)));

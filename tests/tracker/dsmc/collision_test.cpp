@@ -96,8 +96,8 @@ TEST(CollisionModel, VssMeanDeflection) {
     const double expected = (a - 1) / (a + 1);
     const double error = std::sqrt(4 * (a / (a + 2) - a * a / ((a + 1) * (a + 1))) / samples);
     const Moments m = deflections(model, samples, rng);
-    std::cout << name << " VSS alpha " << a << ": <cos chi> " << m.mean << " expected " << expected << " +- "
-              << error << '\n';
+    std::cout << name << " VSS alpha " << a << ": <cos chi> " << m.mean << " expected " << expected << " +- " << error
+              << '\n';
     EXPECT_NEAR(m.mean, expected, 5 * error) << name;
   }
 }

@@ -47,8 +47,7 @@ Rate equilibrium_rate(const CollisionModel& model, double T, std::size_t N, int 
   double mean = 0, var = 0;
   for (const double x : batch) mean += x / batches;
   for (const double x : batch) var += (x - mean) * (x - mean) / (batches - 1);
-  Rate rate{static_cast<double>(total) / (steps - steps % batches) / theory_per_step,
-            std::sqrt(var / batches) / mean};
+  Rate rate{static_cast<double>(total) / (steps - steps % batches) / theory_per_step, std::sqrt(var / batches) / mean};
   std::cout << "  N " << N << ", T " << T << " K: " << total << " collisions in " << batches * per_batch
             << " steps, rate / theory = " << rate.ratio << " +- " << rate.error << " (1 sigma); theory "
             << 0.5 * n * n * mean_sigma_g << " collisions/(m^3 s)\n";

@@ -68,11 +68,11 @@ double relax(const CollisionModel& model, std::vector<Vec3> v, double T, double 
   }
   const Stats end = stats(v, model.mass());
   const double Nd = static_cast<double>(N);
-  std::cout << "  " << collisions / (0.5 * Nd) << " collisions per particle; T/T0 = "
-            << end.temperature.transpose() / T << " (+- " << std::sqrt(2 / Nd) << "), kurtosis "
-            << end.kurtosis.transpose() << " (+- " << std::sqrt(24 / Nd) << "); start T/T0 "
-            << start.temperature.transpose() / T << ", kurtosis " << start.kurtosis.transpose()
-            << "; worst relative energy error " << worst_energy << ", momentum " << worst_momentum << '\n';
+  std::cout << "  " << collisions / (0.5 * Nd) << " collisions per particle; T/T0 = " << end.temperature.transpose() / T
+            << " (+- " << std::sqrt(2 / Nd) << "), kurtosis " << end.kurtosis.transpose() << " (+- "
+            << std::sqrt(24 / Nd) << "); start T/T0 " << start.temperature.transpose() / T << ", kurtosis "
+            << start.kurtosis.transpose() << "; worst relative energy error " << worst_energy << ", momentum "
+            << worst_momentum << '\n';
   EXPECT_LT(worst_energy, 1e-14);
   EXPECT_LT(worst_momentum, 1e-15);
   for (int a = 0; a < 3; ++a) {

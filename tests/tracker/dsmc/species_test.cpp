@@ -45,8 +45,7 @@ TEST(Species, DiametersReproduceTheViscosity) {
     const double root = std::sqrt(s.mass * boltzmann * s.T_ref / std::numbers::pi);
     const double w = (5 - 2 * s.omega) * (7 - 2 * s.omega);
     const double d_vhs = std::sqrt(15 * root / (2 * w * s.viscosity_ref));
-    const double d_vss =
-        std::sqrt(5 * (s.alpha + 1) * (s.alpha + 2) * root / (4 * s.alpha * w * s.viscosity_ref));
+    const double d_vss = std::sqrt(5 * (s.alpha + 1) * (s.alpha + 2) * root / (4 * s.alpha * w * s.viscosity_ref));
     EXPECT_NEAR(d_vhs / s.diameter_vhs, 1, 3e-3) << name;
     EXPECT_NEAR(d_vss / s.diameter_vss, 1, 3e-3) << name;
   }
@@ -55,9 +54,9 @@ TEST(Species, DiametersReproduceTheViscosity) {
 class SpeciesErrors : public ::testing::Test {
  protected:
   std::filesystem::path write(const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() /
-                      ("dsmc_species_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                       ".yaml");
+    const auto path =
+        std::filesystem::temp_directory_path() /
+        ("dsmc_species_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".yaml");
     std::ofstream(path) << text;
     return path;
   }

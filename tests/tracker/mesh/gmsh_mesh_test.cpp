@@ -60,8 +60,8 @@ TEST(GmshMesh, HexahedronPrismAndPyramid) {
     gmsh::model::add("mixed");
     gmsh::model::addDiscreteEntity(3, 1);
     // Unit cube, a prism on its x = 1 side, a pyramid on its top.
-    const std::vector<double> xyz{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1,
-                                  2, 0, 0, 2, 0, 1, 0.5, 0.5, 1.5};
+    const std::vector<double> xyz{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0,   1,   1,  0,
+                                  1, 1, 1, 1, 0, 1, 1, 2, 0, 0, 2, 0, 1, 0.5, 0.5, 1.5};
     gmsh::model::mesh::addNodes(3, 1, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, xyz);
     gmsh::model::mesh::addElementsByType(1, 5, {1}, {1, 2, 3, 4, 5, 6, 7, 8});
     gmsh::model::mesh::addElementsByType(1, 6, {2}, {2, 9, 3, 6, 10, 7});

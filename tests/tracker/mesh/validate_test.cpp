@@ -44,16 +44,16 @@ Polyhedra cut_cube(double cut) {
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i) poly.vertices.emplace_back(i, j, k);
-  poly.vertices[7] = Vec3(1.0 - cut, 1.0, 1.0);  // a
+  poly.vertices[7] = Vec3(1.0 - cut, 1.0, 1.0);     // a
   poly.vertices.emplace_back(1.0, 1.0 - cut, 1.0);  // b = 8
   poly.vertices.emplace_back(1.0, 1.0, 1.0 - cut);  // c = 9
-  poly.add_face({0, 4, 6, 2});  // x = 0
-  poly.add_face({1, 3, 9, 8, 5});  // x = 1
-  poly.add_face({0, 1, 5, 4});  // y = 0
-  poly.add_face({2, 6, 7, 9, 3});  // y = 1
-  poly.add_face({0, 2, 3, 1});  // z = 0
-  poly.add_face({4, 5, 8, 7, 6});  // z = 1
-  poly.add_face({8, 9, 7});  // the cut
+  poly.add_face({0, 4, 6, 2});                      // x = 0
+  poly.add_face({1, 3, 9, 8, 5});                   // x = 1
+  poly.add_face({0, 1, 5, 4});                      // y = 0
+  poly.add_face({2, 6, 7, 9, 3});                   // y = 1
+  poly.add_face({0, 2, 3, 1});                      // z = 0
+  poly.add_face({4, 5, 8, 7, 6});                   // z = 1
+  poly.add_face({8, 9, 7});                         // the cut
   poly.end_cell();
   return poly;
 }
@@ -67,9 +67,7 @@ TEST(Validate, SmallFaceIsValidAndRoundOffFaceIsNot) {
   EXPECT_TRUE(reports(tiny, Defect::degenerate, 0, 6)) << describe(tiny);
 }
 
-TEST(Validate, CleanMeshHasNoProblems) {
-  EXPECT_TRUE(validate(assemble(two_cubes(false))).empty());
-}
+TEST(Validate, CleanMeshHasNoProblems) { EXPECT_TRUE(validate(assemble(two_cubes(false))).empty()); }
 
 TEST(Validate, RemovedFaceLeavesAnOpenCell) {
   const auto problems = validate(assemble(two_cubes(true)));

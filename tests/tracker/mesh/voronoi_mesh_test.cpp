@@ -159,8 +159,8 @@ TEST(VoronoiMesh, ManyRandomPointsWithTinyFaces) {
         EXPECT_EQ(found, side > 0 ? mesh.cell_of_face(f) : face.neighbour) << "face " << f;
       }
     }
-    std::printf("%s seed %d: %d small faces, built and validated in %.2f s\n", periodic ? "periodic" : "walled",
-                seed, int(small.size()), built);
+    std::printf("%s seed %d: %d small faces, built and validated in %.2f s\n", periodic ? "periodic" : "walled", seed,
+                int(small.size()), built);
   }
 }
 

@@ -12,7 +12,9 @@
 namespace cosim::tracker {
 namespace {
 
-std::array<int, 3> hex_of(Index cell, const std::array<int, 3>& n, int per_hex) { return box_cell(cell, n, per_hex).hex; }
+std::array<int, 3> hex_of(Index cell, const std::array<int, 3>& n, int per_hex) {
+  return box_cell(cell, n, per_hex).hex;
+}
 
 // Each cell's owner's brick holds it; the bricks' hexahedra add up to the box's.
 void expect_tiling(const Bricks& bricks, const std::array<int, 3>& n, int per_hex) {
@@ -53,7 +55,8 @@ TEST(Bricks, WeightsSplitWhereTheParticlesAre) {
   const Bricks bricks(n, 1, 4, weight);
   expect_tiling(bricks, n, 1);
   std::vector<double> load(4, 0.0);
-  for (Index c = 0; c < 12 * 4 * 4; ++c) load[static_cast<std::size_t>(bricks.owner(c))] += weight[static_cast<std::size_t>(c)];
+  for (Index c = 0; c < 12 * 4 * 4; ++c)
+    load[static_cast<std::size_t>(bricks.owner(c))] += weight[static_cast<std::size_t>(c)];
   const double mean = 480.0 / 4;
   for (const double l : load) EXPECT_LE(l, 1.34 * mean);  // slabs of 40 or 80 against 120 each
   // Cells alone would have cut at x = 6 first and left three parts with nothing.

@@ -93,19 +93,21 @@ constexpr const char* kRegions =
 
 // Each rank's particles are, in order and to the bit, those a one-rank seeding puts in its cells.
 TEST(Seeding, TwoRanksSeedWhatOneRankSeeds) {
-  for (const char* particles : {"{per_cell: 7, temperature: 300, mass: 6.63e-26, seed: 4}",
-                                "{total: 5000, temperature: 300, drift: [100, 0, 0], mass: 6.63e-26, seed: 4}",
-                                kRegions}) {
+  for (const char* particles :
+       {"{per_cell: 7, temperature: 300, mass: 6.63e-26, seed: 4}",
+        "{total: 5000, temperature: 300, drift: [100, 0, 0], mass: 6.63e-26, seed: 4}", kRegions}) {
     const TrackerScene t = read_tracker(scene::load_scene_from_string(
         "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
         "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
         "      mesh: {type: box, cells: [9, 7, 5], tetrahedra: true}\n      boundaries: {default: {kind: specular}}\n"
         "      obstacles:\n        - {name: ball, shape: {ball: {centre: [0.4, 0.5, 0.5], radius: 0.3}}}\n"
-        "      particles: " + std::string(particles) + "\n",
+        "      particles: " +
+            std::string(particles) + "\n",
         "seeding.yaml"));
     const Decomposition two(*t.mesh, Ranks(MPI_COMM_WORLD));
     const Swarm mine = seed_particles(*t.mesh, t.obstacles, t.particles, two, volumes_of(*t.mesh));
-    const Swarm all = seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), volumes_of(*t.mesh));
+    const Swarm all =
+        seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), volumes_of(*t.mesh));
     std::size_t k = 0;
     for (std::size_t i = 0; i < all.size(); ++i) {
       if (!two.owns(all.cell(i))) continue;
@@ -127,7 +129,8 @@ TEST(Seeding, RegionsOnTheRanksPartsAsOnOne) {
       "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
       "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
       "      mesh: {type: box, cells: [13, 6, 5]}\n      boundaries: {default: {kind: specular}}\n"
-      "      particles: " + std::string(kRegions) + "\n",
+      "      particles: " +
+          std::string(kRegions) + "\n",
       "regions.yaml");
   const auto sums = [](const Simulation& gas, MPI_Comm comm) {
     std::array<double, 7> s{};
@@ -164,8 +167,12 @@ struct RunFile {
 RunFile read_run(const std::filesystem::path& path) {
   output::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + path.string());
   const auto series = [&](const std::string& name) { return output::Series::open(file.get(), name).read_all(); };
-  RunFile run{series("/tracker/particles"), series("/tracker/objects/hits"), series("/tracker/objects/impulse"),
-              series("/tracker/moves"), {}, {}};
+  RunFile run{series("/tracker/particles"),
+              series("/tracker/objects/hits"),
+              series("/tracker/objects/impulse"),
+              series("/tracker/moves"),
+              {},
+              {}};
   std::vector<double> steps = series("/tracker/step");
   char last[24];
   std::snprintf(last, sizeof last, "%06llu", static_cast<unsigned long long>(steps.back()));
@@ -443,13 +450,16 @@ scene::Scene deterministic_gas(const std::string& fraction, const std::string& m
       "time: {end: 0.4}\ncoupling: {window: 0.1}\noutput: {fields_every: 2}\n"
       "domain: {min: [0, 0, 0], max: [1, 1, 1]}\neffects: [rarefied_gas]\n"
       "participants:\n  tracker:\n    dt: 0.01\n    options:\n"
-      "      mesh: " + mesh + "\n"
-      "      boundaries: {default: {kind: specular}}\n"
-      "      obstacles:\n"
-      "        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}}\n"
-      "        - {name: zone, shape: {box: {centre: [0, 0.5, 0.5], half_extents: [0.25, 0.6, 0.6]}}, permeable: true}\n"
-      "      particles: {per_cell: 10, temperature: 1, drift: [1, 0.5, 0], mass: 1.380649e-23, seed: 4}\n"
-      "      particle_output: {every: 2, fraction: " + fraction + "}\n",
+      "      mesh: " +
+          mesh +
+          "\n"
+          "      boundaries: {default: {kind: specular}}\n"
+          "      obstacles:\n"
+          "        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}}\n"
+          "        - {name: zone, shape: {box: {centre: [0, 0.5, 0.5], half_extents: [0.25, 0.6, 0.6]}}, permeable: true}\n"
+          "      particles: {per_cell: 10, temperature: 1, drift: [1, 0.5, 0], mass: 1.380649e-23, seed: 4}\n"
+          "      particle_output: {every: 2, fraction: " +
+          fraction + "}\n",
       "gas.yaml");
 }
 
@@ -587,8 +597,9 @@ TEST(TwoRanks, StraysInGhostsReachTheOwnerClassifiedAnew) {
     return s.str();
   };
   for (std::size_t z = 0; z < zones.size(); ++z)
-    text << "        - {name: zone" << z << ", permeable: true, shape: {intersection: [{complement: "
-         << ball(zones[z].hole, zones[z].hole_radius) << "}, " << ball(zones[z].centre, zones[z].radius) << "]}}\n";
+    text << "        - {name: zone" << z
+         << ", permeable: true, shape: {intersection: [{complement: " << ball(zones[z].hole, zones[z].hole_radius)
+         << "}, " << ball(zones[z].centre, zones[z].radius) << "]}}\n";
   text << "      particles: {per_cell: 1, temperature: 0, mass: 1.0e-26, seed: 1}\n";
   const scene::Scene scene = scene::load_scene_from_string(text.str(), "strays.yaml");
   const TrackerScene whole = read_tracker(scene);  // one rank's registration: the owners'
@@ -675,13 +686,16 @@ TEST(TwoRanks, StraysInGhostsReachTheOwnerClassifiedAnew) {
 // A fault that only one rank's part shows (70 primitives near rank 0's first cell, more than
 // a logical state holds) stops both ranks with the scene error: none waits for the other.
 TEST(TwoRanks, AFaultOnOneRanksPartStopsEveryRank) {
-  const std::string balls = "{ball: {centre: [0.0200, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0215, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0230, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0245, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0260, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0275, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0290, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0305, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0320, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0335, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0350, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0365, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0380, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0395, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0410, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0425, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0440, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0455, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0470, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0485, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0500, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0515, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0530, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0545, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0560, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0575, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0590, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0605, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0620, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0635, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0650, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0665, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0680, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0695, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0710, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0725, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0740, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0755, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0770, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0785, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0800, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0815, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0830, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0845, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0860, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0875, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0890, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0905, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0920, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0935, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0950, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0965, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0980, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0995, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1010, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1025, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1040, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1055, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1070, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1085, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1100, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1115, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1130, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1145, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1160, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1175, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1190, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1205, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1220, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1235, 0.05, 0.05], radius: 0.01}}";
+  const std::string balls =
+      "{ball: {centre: [0.0200, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0215, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0230, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0245, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0260, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0275, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0290, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0305, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0320, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0335, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0350, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0365, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0380, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0395, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0410, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0425, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0440, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0455, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0470, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0485, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0500, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0515, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0530, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0545, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0560, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0575, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0590, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0605, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0620, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0635, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0650, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0665, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0680, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0695, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0710, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0725, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0740, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0755, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0770, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0785, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0800, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0815, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0830, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0845, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0860, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0875, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0890, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0905, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0920, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0935, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0950, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0965, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0980, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.0995, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1010, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1025, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1040, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1055, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1070, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1085, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1100, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1115, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1130, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1145, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1160, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1175, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1190, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1205, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1220, 0.05, 0.05], radius: 0.01}}, {ball: {centre: [0.1235, 0.05, 0.05], radius: 0.01}}";
   const scene::Scene scene = scene::load_scene_from_string(
       "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
       "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
       "      mesh: {type: box, cells: [8, 4, 4]}\n      boundaries: {default: {kind: specular}}\n"
-      "      obstacles:\n        - {name: grains, shape: {union: [" + balls + "]}}\n"
-      "      particles: {per_cell: 1, temperature: 1, mass: 1.0e-26, seed: 1}\n",
+      "      obstacles:\n        - {name: grains, shape: {union: [" +
+          balls +
+          "]}}\n"
+          "      particles: {per_cell: 1, temperature: 1, mass: 1.0e-26, seed: 1}\n",
       "fault.yaml");
   std::string message;
   try {

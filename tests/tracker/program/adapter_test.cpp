@@ -75,8 +75,9 @@ TEST(TrackerAdapter, BallMovedThroughGasAtRestFeelsTheFreeMolecularDrag) {
   }
   const double mass = 2.761298e-23, density = 100 / 0.125, radius = 0.8;
   const double expected = dsmc::sphere_drag(density, mass, u, 1.0, radius);  // speed ratio u: c_mp = 1
-  std::printf("ball at speed ratio 2 through gas at rest: drag %.4g N, Bird %.4g N (%+.2f %%), side %.3g N, torque %.3g N m\n",
-              -force.x(), expected, 100 * (-force.x() / expected - 1), force.tail<2>().norm(), torque.norm());
+  std::printf(
+      "ball at speed ratio 2 through gas at rest: drag %.4g N, Bird %.4g N (%+.2f %%), side %.3g N, torque %.3g N m\n",
+      -force.x(), expected, 100 * (-force.x() / expected - 1), force.tail<2>().norm(), torque.norm());
   // About 3e4 hits, so a statistical error near 1 %.
   EXPECT_NEAR(-force.x() / expected, 1.0, 0.04);
   EXPECT_LT(force.tail<2>().norm(), 0.04 * expected);

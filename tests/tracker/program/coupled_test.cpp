@@ -36,7 +36,8 @@ bodies:
     shape: {type: sphere, radius: 1}
     position: [0, 0, 0]
     material: {density: 1.0e-4}
-)") + (fixed ? "    fixed: true\n" : "") + R"(
+)") + (fixed ? "    fixed: true\n" : "") +
+         R"(
 participants:
   rigidbody:
     dt: 2.5e-5
@@ -163,10 +164,11 @@ TEST(TrackerCoupled, BallReleasedInAFreeMolecularStreamFollowsBirdsDrag) {
   }
   double v = 0;  // the ODE to t = 1.9 ms, in steps of 1 us
   for (int step = 0; step < 1900; ++step) v += drag(v) / ball * 1e-6;
-  std::printf("ball in a free-molecular stream: force %.3f N per window against Bird's %.3f N (%+.2f %%); "
-              "speed after 2 ms %.1f m/s, ODE %.1f m/s (%+.2f %%)\n",
-              measured / 20, expected / 20, 100 * (measured / expected - 1), velocity.at(20, 0), v,
-              100 * (velocity.at(20, 0) / v - 1));
+  std::printf(
+      "ball in a free-molecular stream: force %.3f N per window against Bird's %.3f N (%+.2f %%); "
+      "speed after 2 ms %.1f m/s, ODE %.1f m/s (%+.2f %%)\n",
+      measured / 20, expected / 20, 100 * (measured / expected - 1), velocity.at(20, 0), v,
+      100 * (velocity.at(20, 0) / v - 1));
   EXPECT_NEAR(measured / expected, 1.0, 0.04);  // about 3300 hits: 2 %
   EXPECT_NEAR(velocity.at(20, 0) / v, 1.0, 0.04);
   EXPECT_GT(velocity.at(20, 0), 150.0);
@@ -178,13 +180,17 @@ TEST(TrackerCoupled, BallReleasedInAFreeMolecularStreamFollowsBirdsDrag) {
 // carries every tracer 0.1 m downstream, a quarter of the channel. A free cylinder in the
 // stream closes a loop with the rigid-body program: serial-implicit iterates the windows.
 std::string channel_scene(bool tracers, bool free_cylinder = false) {
-  const std::string effects = tracers && free_cylinder ? "tracers, hydrodynamics" : tracers ? "tracers" : "hydrodynamics";
+  const std::string effects = tracers && free_cylinder ? "tracers, hydrodynamics"
+                              : tracers                ? "tracers"
+                                                       : "hydrodynamics";
   std::string text = R"(
 time: {end: 1.0}
-coupling: {window: 0.05, scheme: )" + std::string(free_cylinder ? "serial-implicit" : "serial-explicit") + R"(}
+coupling: {window: 0.05, scheme: )" +
+                     std::string(free_cylinder ? "serial-implicit" : "serial-explicit") + R"(}
 output: {fields_every: 20}
 domain: {min: [0, 0, 0], max: [0.4, 0.2, 0.01]}
-effects: [)" + effects + R"(]
+effects: [)" + effects +
+                     R"(]
 participants:
   fluid:
     dt: 0.01
@@ -286,7 +292,8 @@ TEST(TrackerCoupled, AnImplicitWindowForwardsTheFieldsInEveryIteration) {
   const testing::Finished run = testing::run_scene_text(dir, channel_scene(true, true));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const testing::Series iterations = testing::read_series(dir / "scene.h5", "/coupling/iterations");
-  const testing::Series forwarded = testing::read_series(dir / "scene.h5", "/coupling/participants/tracker/field_bytes");
+  const testing::Series forwarded =
+      testing::read_series(dir / "scene.h5", "/coupling/participants/tracker/field_bytes");
   ASSERT_EQ(forwarded.rows, 21u);
   double most = 0;
   for (std::size_t k = 1; k < forwarded.rows; ++k) {

@@ -37,7 +37,8 @@ TEST(CsgShape, EveryPrimitiveReadsAsWritten) {
   const csg::Tree can = shape("capped_cylinder: {base: [0, 0, 0], top: [0, 0, 2], radius: 1}");
   EXPECT_TRUE(can.contains({0.5, 0, 1.9}));
   EXPECT_FALSE(can.contains({0.5, 0, 2.1}));
-  const csg::Tree turned = shape("box: {centre: [0, 0, 0], half_extents: [2, 0.1, 0.1], orientation: [0.7071068, 0, 0, 0.7071068]}");
+  const csg::Tree turned =
+      shape("box: {centre: [0, 0, 0], half_extents: [2, 0.1, 0.1], orientation: [0.7071068, 0, 0, 0.7071068]}");
   EXPECT_TRUE(turned.contains({0, 1.9, 0}));  // the long axis turned onto y
   EXPECT_FALSE(turned.contains({1.9, 0, 0}));
 }
@@ -50,8 +51,9 @@ TEST(CsgShape, CombinationsTransformsAndLattices) {
   EXPECT_FALSE(shape("difference: [" + a + ", " + b + "]").contains({0.5, 0, 0}));
   EXPECT_TRUE(shape("difference: [" + a + ", " + b + "]").contains({-0.5, 0, 0}));
   EXPECT_TRUE(shape("complement: " + a).contains({3, 0, 0}));
-  const csg::Tree moved = shape("transform: {translate: [10, 0, 0], rotate: {axis: [0, 0, 1], angle: 1.5707963267948966},"
-                                " shape: {box: {centre: [0, 0, 0], half_extents: [2, 0.1, 0.1]}}}");
+  const csg::Tree moved = shape(
+      "transform: {translate: [10, 0, 0], rotate: {axis: [0, 0, 1], angle: 1.5707963267948966},"
+      " shape: {box: {centre: [0, 0, 0], half_extents: [2, 0.1, 0.1]}}}");
   EXPECT_TRUE(moved.contains({10, 1.9, 0}));
   EXPECT_FALSE(moved.contains({11.9, 0, 0}));
   // An open-cell foam: a block minus a lattice of overlapping balls.
@@ -76,8 +78,7 @@ TEST(CsgShape, BallsFromAFile) {
 
 TEST(CsgShape, MistakesNameFileLineAndKey) {
   const std::string file = kScene.string();
-  EXPECT_EQ(error_of("ball: {centre: [0, 0, 0], radius: -1}"),
-            file + ":1: shape.ball.radius = -1: must be > 0");
+  EXPECT_EQ(error_of("ball: {centre: [0, 0, 0], radius: -1}"), file + ":1: shape.ball.radius = -1: must be > 0");
   EXPECT_EQ(error_of("sphere: {centre: [0, 0, 0], radius: 1}").find(file + ":1: shape.sphere"), 0u);
   EXPECT_NE(error_of("sphere: {}").find("unknown shape; expected one of: ball, half_space"), std::string::npos);
   EXPECT_NE(error_of("{ball: {centre: [0, 0, 0], radius: 1}, box: {centre: [0, 0, 0], half_extents: [1, 1, 1]}}")

@@ -38,24 +38,26 @@ scene::Scene closed_box(const std::string& particle_output) {
       "        - {name: ball, shape: {ball: {centre: [0.75, 0.5, 0.5], radius: 0.15}}}\n"
       "        - {name: left, shape: {box: {centre: [0, 0.5, 0.5], half_extents: [0.5, 0.6, 0.6]}}, permeable: true}\n"
       "      particles: {per_cell: 20, temperature: 1, drift: [0.5, 0, 0], mass: 1.380649e-23, seed: 7}\n"
-      "      particle_output: " + particle_output + "\n",
+      "      particle_output: " +
+          particle_output + "\n",
       "scene.yaml");
 }
 
-const std::array<const char*, 6> kAttributes{"velocity", "cell", "state_ball", "inside_ball", "state_left", "inside_left"};
+const std::array<const char*, 6> kAttributes{"velocity",    "cell",       "state_ball",
+                                             "inside_ball", "state_left", "inside_left"};
 
 // The particles of one written step, as the file holds them.
 struct Dump {
   std::string step;
-  double particles = 0;  // /tracker/particles of the step
+  double particles = 0;       // /tracker/particles of the step
   std::vector<double> count;  // the step's cell field
   std::vector<double> points;
   std::array<std::vector<double>, kAttributes.size()> attributes;  // as kAttributes
   std::size_t size() const { return points.size() / 3; }
   const std::vector<double>& operator[](const char* name) const {
-    return attributes[static_cast<std::size_t>(std::find_if(kAttributes.begin(), kAttributes.end(), [&](const char* a) {
-                                                  return std::string(a) == name;
-                                                }) - kAttributes.begin())];
+    return attributes[static_cast<std::size_t>(
+        std::find_if(kAttributes.begin(), kAttributes.end(), [&](const char* a) { return std::string(a) == name; }) -
+        kAttributes.begin())];
   }
 };
 
@@ -70,7 +72,8 @@ std::vector<Dump> read_dumps(const std::filesystem::path& path) {
     output::Handle group = output::open_group(fields.get(), step);
     if (!output::has_link(group.get(), "points")) continue;
     Dump d{step, 0, output::read_array(group.get(), "count"), output::read_array(group.get(), "points/particles"), {}};
-    d.particles = particles[static_cast<std::size_t>(std::find(steps.begin(), steps.end(), std::stod(step)) - steps.begin())];
+    d.particles =
+        particles[static_cast<std::size_t>(std::find(steps.begin(), steps.end(), std::stod(step)) - steps.begin())];
     for (std::size_t a = 0; a < kAttributes.size(); ++a) {
       const std::string name = std::string("point_attributes/particles/") + kAttributes[a];
       d.attributes[a] = output::read_array(group.get(), name);
@@ -151,7 +154,8 @@ std::vector<std::set<std::array<double, 3>>> positions(const std::vector<Dump>& 
   std::vector<std::set<std::array<double, 3>>> out;
   for (const Dump& d : dumps) {
     out.emplace_back();
-    for (std::size_t i = 0; i < d.size(); ++i) out.back().insert({d.points[3 * i], d.points[3 * i + 1], d.points[3 * i + 2]});
+    for (std::size_t i = 0; i < d.size(); ++i)
+      out.back().insert({d.points[3 * i], d.points[3 * i + 1], d.points[3 * i + 2]});
   }
   return out;
 }

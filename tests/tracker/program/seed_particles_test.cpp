@@ -16,9 +16,12 @@ TrackerScene tracker_with(const std::string& particles, const std::string& mesh 
   return read_tracker(scene::load_scene_from_string(
       "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
       "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
-      "      mesh: " + mesh + "\n      boundaries: {default: {kind: specular}}\n"
-      "      obstacles:\n        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.4}}}\n"
-      "      particles: " + particles + "\n",
+      "      mesh: " +
+          mesh +
+          "\n      boundaries: {default: {kind: specular}}\n"
+          "      obstacles:\n        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.4}}}\n"
+          "      particles: " +
+          particles + "\n",
       "scene.yaml"));
 }
 
@@ -39,8 +42,7 @@ TEST(Seeding, ABoxsVolumesWithoutItsMesh) {
 
 TEST(Seeding, UniformInTheCellsOutsideTheWallsWithAMaxwellian) {
   // mass = k_B: the velocity variance per component is T.
-  const TrackerScene t =
-      tracker_with("{total: 20000, temperature: 4, drift: [1, 0, -2], mass: 1.380649e-23, seed: 5}");
+  const TrackerScene t = tracker_with("{total: 20000, temperature: 4, drift: [1, 0, -2], mass: 1.380649e-23, seed: 5}");
   const Swarm swarm = seeded(t);
   ASSERT_EQ(swarm.size(), 20000u);  // exactly: the draws inside the ball are made up for
   ASSERT_EQ(swarm.objects(), 1);
@@ -76,8 +78,8 @@ TEST(Seeding, TotalFollowsTheFreeVolumeOfUnequalCells) {
       for (int k = 0; k < n; ++k) {
         const Vec3 x((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n);
         if ((x - Vec3(0.5, 0.5, 0.5)).norm() <= 0.4) continue;
-        const int cell = std::min(static_cast<int>(x.x() * 5), 4) + 5 * (std::min(static_cast<int>(x.y() * 3), 2) +
-                                                                          3 * std::min(static_cast<int>(x.z() * 2), 1));
+        const int cell = std::min(static_cast<int>(x.x() * 5), 4) +
+                         5 * (std::min(static_cast<int>(x.y() * 3), 2) + 3 * std::min(static_cast<int>(x.z() * 2), 1));
         free[static_cast<std::size_t>(cell)] += 1;
         all += 1;
       }

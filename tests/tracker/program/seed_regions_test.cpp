@@ -24,8 +24,10 @@ TrackerScene tracker_with(const std::string& regions, const std::string& mesh = 
   return read_tracker(scene::load_scene_from_string(
       "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
       "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
-      "      mesh: " + mesh + "\n      boundaries: {default: {kind: specular}}\n" + obstacles +
-      "      particles:\n        mass: 1.380649e-23\n        weight: 2\n        seed: 6\n        regions:\n" + regions,
+      "      mesh: " +
+          mesh + "\n      boundaries: {default: {kind: specular}}\n" + obstacles +
+          "      particles:\n        mass: 1.380649e-23\n        weight: 2\n        seed: 6\n        regions:\n" +
+          regions,
       "scene.yaml"));
 }
 
@@ -132,9 +134,9 @@ TEST(SeedRegions, ARegionAddedLeavesTheOthersParticles) {
   const std::string first =
       "          - {region: {ball: {centre: [0.3, 0.5, 0.5], radius: 0.25}}, number_density: 3000, temperature: 1}\n";
   const Swarm alone = seeded(tracker_with(first));
-  const Swarm both = seeded(tracker_with(
-      first + "          - {region: {ball: {centre: [0.7, 0.5, 0.5], radius: 0.25}}, number_density: 3000,"
-              " temperature: 1}\n"));
+  const Swarm both = seeded(
+      tracker_with(first + "          - {region: {ball: {centre: [0.7, 0.5, 0.5], radius: 0.25}}, number_density: 3000,"
+                           " temperature: 1}\n"));
   std::size_t k = 0;
   for (std::size_t i = 0; i < both.size() && k < alone.size(); ++i)
     if (both.particle(i).x == alone.particle(k).x && both.particle(i).v == alone.particle(k).v) ++k;
@@ -175,7 +177,8 @@ TEST(SeedRegions, TheSingleGasDrawsWhatItDrew) {
         "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
         "      mesh: {type: box, cells: [3, 2, 2], tetrahedra: true}\n      boundaries: {default: {kind: specular}}\n"
         "      obstacles:\n        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.3}}}\n"
-        "      particles: " + particles + "\n",
+        "      particles: " +
+            particles + "\n",
         "scene.yaml"));
   };
   const Swarm per_cell = seeded(scene("{per_cell: 20, temperature: 300, drift: [5, 0, 0], mass: 6.63e-26, seed: 7}"));

@@ -42,9 +42,9 @@ scene::Scene scene_of(const std::string& options) { return scene_of_mesh("{type:
 
 // What the tests read from a run file.
 struct RunFileView {
-  std::vector<double> particles;        // per written step
+  std::vector<double> particles;                                // per written step
   std::vector<std::vector<double>> count, mean_count, density;  // per written step, per cell
-  std::vector<double> moves;            // last row
+  std::vector<double> moves;                                    // last row
   std::size_t move_columns = 0;
   std::vector<double> hits, absorbed, entered, left;  // rows x objects
   double column(const char* name) const;
@@ -105,7 +105,7 @@ TEST(TrackerStandalone, ClosedBoxConservesParticlesAndAZoneCountsItsCrossings) {
   for (std::size_t k = 0; k < run.count.size(); ++k) {
     EXPECT_EQ(run.particles[k], static_cast<double>(s.seeded));
     EXPECT_EQ(sum(run.count[k]), run.particles[k]);
-    EXPECT_NEAR(sum(run.mean_count[k]), run.particles[k], 1e-9);  // conserved: the mean too
+    EXPECT_NEAR(sum(run.mean_count[k]), run.particles[k], 1e-9);      // conserved: the mean too
     EXPECT_NEAR(run.density[k][5], run.mean_count[k][5] * 64, 1e-9);  // cells of 1/64 m^3
   }
   EXPECT_EQ(run.column("lost"), 0);
@@ -193,7 +193,7 @@ TEST(TrackerStandalone, WritesTheLastStepWithoutFieldsEveryAndNoObstacles) {
   EXPECT_GT(s.stages.seconds(Stage::sort), 0.0);
   EXPECT_EQ(s.stages.seconds(Stage::collide), 0.0);
   double stages = 0;
-  for (std::size_t k = 0; k < kStageNames.size(); ++k) stages += s.stages.seconds(static_cast<Stage>(k));
+  for (std::size_t k = 0; k < kStageNames.size(); ++k) stages += s.stages[static_cast<Stage>(k)];
   EXPECT_LE(stages + s.setup_seconds, s.wall_seconds);
   const std::string summary = participant::stage_summary(kStageNames, s.stages.all());
   EXPECT_EQ(summary.find("collide"), std::string::npos) << summary;
@@ -236,9 +236,10 @@ TEST(TrackerStandalone, CollisionsAtTheEquilibriumRate) {
   const dsmc::Species& argon = dsmc::read_species(dsmc::default_species_file()).at("Ar");
   const double n = 20.0 * 3.5e6 / 1e-15;  // real molecules per m^3: 20 simulators per (1e-5 m)^3
   const double expected = 0.5 * static_cast<double>(s.seeded) * n *
-                          dsmc::CollisionModel::from_species(argon, dsmc::Model::vss).mean_sigma_g(273.15) * 7.0e-9 * 50;
-  std::printf("closed box, VSS argon: %lld collisions in 50 steps, equilibrium %.0f\n", static_cast<long long>(s.collisions),
-              expected);
+                          dsmc::CollisionModel::from_species(argon, dsmc::Model::vss).mean_sigma_g(273.15) * 7.0e-9 *
+                          50;
+  std::printf("closed box, VSS argon: %lld collisions in 50 steps, equilibrium %.0f\n",
+              static_cast<long long>(s.collisions), expected);
   EXPECT_NEAR(static_cast<double>(s.collisions) / expected, 1.0, 0.02);
 }
 
@@ -268,7 +269,7 @@ TEST(TrackerConfigs, SphereClusterChannelFoamAndSphereStreamRun) {
   output::Handle file(H5Fopen(out("channel.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open");
   const std::vector<double> impulse = output::Series::open(file.get(), "/tracker/objects/impulse").read_all();
   EXPECT_GT(impulse[impulse.size() - 6], 0.0);  // the cluster's x, last row
-  EXPECT_GT(c.entered.back(), 0);              // the wake zone
+  EXPECT_GT(c.entered.back(), 0);               // the wake zone
 
   const RunSummary foam = run_tracker(shortened_config("tracker-foam", "2.0e-5"), out("foam.h5"));
   const RunFileView f = read_run(out("foam.h5"), true);
@@ -321,8 +322,8 @@ TEST(TrackerConfigs, FoamFlowRunsDownThePressureDrop) {
   const double upstream = plenum(0), downstream = plenum(22);
   std::printf("foam flow: plenum densities %.3g (reservoir 4.83e21) and %.3g (2.41e21) m^-3, net %g into the outlet\n",
               upstream, downstream, r.entered.back() - r.left.back());
-  EXPECT_GT(upstream, 4.0e21);  // measured 4.5e21
-  EXPECT_LT(downstream, 3.2e21);  // measured 2.75e21
+  EXPECT_GT(upstream, 4.0e21);                       // measured 4.5e21
+  EXPECT_LT(downstream, 3.2e21);                     // measured 2.75e21
   EXPECT_GT(r.entered.back() - r.left.back(), 500);  // the outlet zone, last object: 1632
 }
 
@@ -344,8 +345,10 @@ TEST(TrackerConfigs, CouettePlatesFeelEqualAndOppositeShearBetweenTheLimits) {
   const double lower = shear(2), upper = shear(3);
   // Argon at 273 K: mu 2.117e-5 Pa s, lambda 0.129 mm (Kn 0.13), U 300 m/s, H 1 mm.
   const double slip = 2.117e-5 * 300 / (1e-3 + 2 * 1.111 * 0.129e-3), free_molecular = 24.6;
-  std::printf("Couette, Kn 0.13: shear %.3f and %.3f Pa on the plates; slip-corrected continuum %.3f, "
-              "free-molecular %.1f\n", lower, -upper, slip, free_molecular);
+  std::printf(
+      "Couette, Kn 0.13: shear %.3f and %.3f Pa on the plates; slip-corrected continuum %.3f, "
+      "free-molecular %.1f\n",
+      lower, -upper, slip, free_molecular);
   EXPECT_NEAR(lower, -upper, 0.06 * lower);  // about 9000 hits per plate: 2 % each
   EXPECT_NEAR(lower / slip, 1.0, 0.1);       // first-order slip at Kn 0.13: a few % low
   EXPECT_NEAR(area[2], 4e-10, 1e-22);
@@ -391,8 +394,11 @@ TEST(TrackerFields, TheSamplesPerCellInCellOrder) {
   std::vector<double> count(12);
   for (std::size_t c = 0; c < 12; ++c) {
     count[c] = double(c);
-    moments[c] = {.count = 0.5 * double(c), .number_density = 1e20, .velocity = Vec3(double(c), 0, -1),
-                  .temperature = 300, .pressure = 0.4};
+    moments[c] = {.count = 0.5 * double(c),
+                  .number_density = 1e20,
+                  .velocity = Vec3(double(c), 0, -1),
+                  .temperature = 300,
+                  .pressure = 0.4};
   }
   const std::vector<field::CellField> fields = cell_fields(moments, count);
   std::vector<std::string> names;

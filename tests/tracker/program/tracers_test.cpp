@@ -56,7 +56,8 @@ participants:
     options:
       mesh: {type: box, cells: [8, 8, 2]}
       boundaries: {default: {kind: specular}}
-      tracers: )" + tracers + R"(
+      tracers: )" + tracers +
+                           R"(
       obstacles:
         - {name: post, shape: {capped_cylinder: {base: [0.5, 0.5, 0], top: [0.5, 0.5, 1], radius: 0.05}}}
         - {name: drum, shape: {complement: {cylinder: {point: [0.5, 0.5, 0], axis: [0, 0, 1], radius: 0.44}}}}
@@ -112,8 +113,9 @@ TEST(TrackerTracers, BadSectionsAreRefusedWithTheKeyNamed) {
   EXPECT_NE(error("{velocity: {file: nothing.h5}}").find("tracers.velocity.file"), std::string::npos);
   EXPECT_NE(error("{velocity: {file: nothing.h5}}").find("nothing.h5"), std::string::npos);
   EXPECT_NE(error("{response_time: -1}").find("tracers.response_time"), std::string::npos);
-  EXPECT_NE(error("{velocity: {file: fluid.h5}}", "      collisions: {species: Ar, model: vss}\n").find("no collisions"),
-            std::string::npos);
+  EXPECT_NE(
+      error("{velocity: {file: fluid.h5}}", "      collisions: {species: Ar, model: vss}\n").find("no collisions"),
+      std::string::npos);
 }
 
 TEST(TrackerTracers, WithoutAVelocityFieldTheStepSaysWhatIsMissing) {

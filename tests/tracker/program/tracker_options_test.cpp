@@ -20,7 +20,8 @@ scene::Scene scene_with(const std::string& options, const std::string& mesh = "{
   return scene::load_scene_from_string(
       "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
       "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
-      "      mesh: " + mesh + "\n" + options,
+      "      mesh: " +
+          mesh + "\n" + options,
       "scene.yaml");
 }
 
@@ -31,15 +32,15 @@ std::string error_of(const std::string& options, const std::string& mesh = "{typ
 #define EXPECT_ERROR(options, text) EXPECT_NE(error_of(options).find(text), std::string::npos) << error_of(options)
 
 TEST(TrackerOptions, ReadsWallsObstaclesAndParticles) {
-  const TrackerScene t = read_tracker(scene_with(
-      std::string(kParticles) +
-      "      boundaries:\n        default: {kind: maxwell, temperature: 300, accommodation: 0.5}\n"
-      "        x_max: {kind: open}\n"
-      "      obstacles:\n"
-      "        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}, wall: {kind: diffuse, "
-      "temperature: 10}}\n"
-      "        - {name: zone, shape: {box: {centre: [0.2, 0.2, 0.2], half_extents: [0.1, 0.1, 0.1]}}, "
-      "permeable: true}\n"));
+  const TrackerScene t = read_tracker(
+      scene_with(std::string(kParticles) +
+                 "      boundaries:\n        default: {kind: maxwell, temperature: 300, accommodation: 0.5}\n"
+                 "        x_max: {kind: open}\n"
+                 "      obstacles:\n"
+                 "        - {name: ball, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}, wall: {kind: diffuse, "
+                 "temperature: 10}}\n"
+                 "        - {name: zone, shape: {box: {centre: [0.2, 0.2, 0.2], half_extents: [0.1, 0.1, 0.1]}}, "
+                 "permeable: true}\n"));
   ASSERT_EQ(t.domain->boundaries.patches.size(), 6u);
   EXPECT_EQ(t.domain->boundaries.patches[0].kind, BoundaryKind::maxwell);
   EXPECT_EQ(t.domain->boundaries.patches[0].accommodation, 0.5);
@@ -76,9 +77,9 @@ TEST(TrackerOptions, WallMistakesNameTheKey) {
 
 TEST(TrackerOptions, MovingWallsTakeAVelocityOnlyWhereTheyReEmit) {
   const std::string p = std::string(kParticles) + "      boundaries:\n        default: {kind: specular}\n";
-  const TrackerScene t = read_tracker(scene_with(
-      p + "        y_max: {kind: diffuse, temperature: 300, velocity: [50, 0, -2]}\n"
-          "        y_min: {kind: maxwell, temperature: 300, accommodation: 0.5}\n"));
+  const TrackerScene t =
+      read_tracker(scene_with(p + "        y_max: {kind: diffuse, temperature: 300, velocity: [50, 0, -2]}\n"
+                                  "        y_min: {kind: maxwell, temperature: 300, accommodation: 0.5}\n"));
   EXPECT_EQ(t.domain->boundaries.patches[3].velocity, Vec3(50, 0, -2));
   EXPECT_EQ(t.domain->boundaries.patches[2].velocity, Vec3::Zero());
   EXPECT_ERROR(p + "        y_max: {kind: specular, velocity: [50, 0, 0]}\n",
@@ -92,10 +93,8 @@ TEST(TrackerOptions, ObstacleMistakesNameTheKey) {
   const std::string p = std::string(kParticles) + "      boundaries: {default: {kind: specular}}\n      obstacles:\n";
   const std::string ball = "shape: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.2}}";
   EXPECT_ERROR(p + "        - {name: a, " + ball + ", wall: {kind: periodic}}\n", "obstacles[0].wall.kind = periodic");
-  EXPECT_ERROR(p + "        - {name: a, " + ball + ", permeable: true, wall: {kind: open}}\n",
-               "obstacles[0].wall");
-  EXPECT_ERROR(p + "        - {name: a, " + ball + "}\n        - {name: a, " + ball + "}\n",
-               "obstacles[1].name = a");
+  EXPECT_ERROR(p + "        - {name: a, " + ball + ", permeable: true, wall: {kind: open}}\n", "obstacles[0].wall");
+  EXPECT_ERROR(p + "        - {name: a, " + ball + "}\n        - {name: a, " + ball + "}\n", "obstacles[1].name = a");
   EXPECT_ERROR(p + "        - {name: a, shape: {ball: {centre: [0.5, 0.5, 0.5], radius: -1}}}\n",
                "obstacles[0].shape.ball.radius = -1");
   EXPECT_ERROR(p + "        - {name: a, " + ball + ", permeable: maybe}\n", "obstacles[0].permeable = maybe");
@@ -128,8 +127,9 @@ TEST(TrackerOptions, RegionMistakesNameTheKey) {
   const auto region = [&](const std::string& rest) {
     return p + "        regions:\n          - {region: " + ball + ", " + rest + "}\n";
   };
-  EXPECT_ERROR(region("number_density: 0, temperature: 1"), "scene.yaml:14: participants.tracker.options.particles."
-                                                            "regions[0].number_density = 0: must be > 0");
+  EXPECT_ERROR(region("number_density: 0, temperature: 1"),
+               "scene.yaml:14: participants.tracker.options.particles."
+               "regions[0].number_density = 0: must be > 0");
   EXPECT_ERROR(region("number_density: 1, temperature: -1"), "particles.regions[0].temperature = -1");
   EXPECT_ERROR(region("number_density: 1"), "particles.regions[0].temperature");
   EXPECT_ERROR(region("number_density: 1, temperature: 1, velocity: [1, 2]"), "particles.regions[0].velocity");
@@ -152,7 +152,8 @@ TEST(TrackerOptions, RegionMistakesNameTheKey) {
 }
 
 TEST(TrackerOptions, InflowMistakesNameTheKey) {
-  const std::string p = std::string(kParticles) + "      boundaries: {default: {kind: specular}, x_min: {kind: open}}\n";
+  const std::string p =
+      std::string(kParticles) + "      boundaries: {default: {kind: specular}, x_min: {kind: open}}\n";
   EXPECT_ERROR(p + "      inflow: [{patches: [y_min], number_density: 1, temperature: 1}]\n",
                "inflow[0].patches = [y_min]: patch y_min is not open");
   EXPECT_ERROR(p + "      inflow: [{patches: [x_mn], number_density: 1, temperature: 1}]\n", "inflow[0].patches");
@@ -160,7 +161,8 @@ TEST(TrackerOptions, InflowMistakesNameTheKey) {
                "inflow[0].number_density = 0");
   EXPECT_ERROR(p + "      inflow: [{patches: [x_min], number_density: 1, temperature: 1, speed: 3}]\n",
                "inflow[0].speed = 3: unknown key");
-  const TrackerScene t = read_tracker(scene_with(p + "      inflow: [{patches: [x_min], number_density: 2, temperature: 1}]\n"));
+  const TrackerScene t =
+      read_tracker(scene_with(p + "      inflow: [{patches: [x_min], number_density: 2, temperature: 1}]\n"));
   ASSERT_EQ(t.inflows.size(), 1u);
   EXPECT_GT(t.inflows[0].rate(), 0.0);
 }
@@ -178,8 +180,10 @@ TEST(TrackerOptions, ParticleMistakesNameTheKey) {
   EXPECT_ERROR(walls + kParticles + "      balance: {every: -1}\n", "balance.every = -1");
   EXPECT_ERROR(walls + kParticles + "      balance: {threshold: 0.9}\n", "balance.threshold = 0.9");
   EXPECT_ERROR(walls + kParticles + "      balance: {often: 3}\n", "balance.often = 3: unknown key");
-  EXPECT_ERROR(walls + "      particles: {total: 9, temperature: 1, mass: 1.0e-25}\n      collisions: {species: Ar, model: vss}\n",
-               "collisions.species = Ar: the particles' mass 1e-25 kg is not Ar's 6.63");
+  EXPECT_ERROR(
+      walls +
+          "      particles: {total: 9, temperature: 1, mass: 1.0e-25}\n      collisions: {species: Ar, model: vss}\n",
+      "collisions.species = Ar: the particles' mass 1e-25 kg is not Ar's 6.63");
 }
 
 TEST(TrackerOptions, ParticleOutputDefaultsToEveryFieldWriteOfAllParticles) {
@@ -197,8 +201,8 @@ TEST(TrackerOptions, ParticleOutputDefaultsToEveryFieldWriteOfAllParticles) {
   EXPECT_EQ(some->fraction, 0.25);
   EXPECT_EQ(some->seed, 3u);
   // The start, every 20th window and the last, as the fields.
-  for (const auto& [done, written] : {std::pair{0, true}, std::pair{10, false}, std::pair{20, true},
-                                      std::pair{35, true}, std::pair{34, false}})
+  for (const auto& [done, written] :
+       {std::pair{0, true}, std::pair{10, false}, std::pair{20, true}, std::pair{35, true}, std::pair{34, false}})
     EXPECT_EQ(some->at(static_cast<std::uint64_t>(done), 35), written) << done;
 }
 
@@ -221,7 +225,8 @@ TEST(TrackerOptions, ParticleOutputMistakesNameTheKey) {
     read_tracker(scene::load_scene_from_string(
         "time: {end: 0.1}\ncoupling: {window: 0.1}\noutput: {fields_every: 0}\n"
         "domain: {min: [0, 0, 0], max: [1, 1, 1]}\neffects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n"
-        "    options:\n      mesh: {type: box, cells: [2, 2, 2]}\n" + p + "      particle_output: {every: 1}\n",
+        "    options:\n      mesh: {type: box, cells: [2, 2, 2]}\n" +
+            p + "      particle_output: {every: 1}\n",
         "scene.yaml"));
   });
   EXPECT_NE(none.find("participants.tracker.options.particle_output = {every: 1}: particles are written with the "

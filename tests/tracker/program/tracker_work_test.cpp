@@ -64,11 +64,10 @@ TEST(TrackerWork, ABoxWithoutObstaclesSeedsEveryCell) {
   EXPECT_EQ(w.program, "tracker");
   // 600 particles at the mean thermal speed sqrt(8 k T / (pi m)) = sqrt(8 / pi) fly 0.01 of
   // it per step through cells 120^(-1/3) wide: 47 faces crossed.
-  EXPECT_EQ(w.per_step, (participant::WorkUnits{{"particles", 600},
-                                                {"crossings", 47},
-                                                {"cells", 120},
-                                                {"primitive_tests", 0},
-                                                {"colliding_particles", 0}}));
+  EXPECT_EQ(
+      w.per_step,
+      (participant::WorkUnits{
+          {"particles", 600}, {"crossings", 47}, {"cells", 120}, {"primitive_tests", 0}, {"colliding_particles", 0}}));
   EXPECT_EQ(w.held, (participant::WorkUnits{{"particles", 600}, {"cells", 120}}));
   EXPECT_EQ(gas_seeded(text), 600u);
   // count, mean_count, density, velocity (3), temperature, pressure per cell.
@@ -84,8 +83,8 @@ TEST(TrackerWork, CrossingsGrowWithTheFlightOverTheCellWidth) {
   const double drifting =
       unit(work_of(box_text(kHexahedra, "{per_cell: 5, drift: [1.5957691, 0, 0]")).per_step, "crossings");
   EXPECT_NEAR(drifting / still, 2.0, 0.05);
-  const double finer = unit(work_of(box_text("      mesh: {type: box, cells: [12, 10, 8]}\n", "{per_cell: 5")).per_step,
-                            "crossings");
+  const double finer =
+      unit(work_of(box_text("      mesh: {type: box, cells: [12, 10, 8]}\n", "{per_cell: 5")).per_step, "crossings");
   EXPECT_NEAR(finer / still, 8 * 2, 0.5);  // eight times the particles, each crossing twice as many faces
 }
 
@@ -110,7 +109,8 @@ TEST(TrackerWork, PrimitiveTestsFollowTheObstaclesPrimitivesPerCell) {
 
 // DSMC collisions cost per particle beside its flight.
 TEST(TrackerWork, CollisionsMakeEveryParticleACollidingOne) {
-  std::string text = box_text(kHexahedra + "      collisions: {species: Ar, model: vss}\n", "{per_cell: 5, weight: 1.0e10");
+  std::string text =
+      box_text(kHexahedra + "      collisions: {species: Ar, model: vss}\n", "{per_cell: 5, weight: 1.0e10");
   text.replace(text.find("1.380649e-23"), 12, "6.63e-26");  // argon's mass
   const participant::WorkReport w = work_of(text);
   EXPECT_EQ(unit(w.per_step, "colliding_particles"), unit(w.per_step, "particles"));
@@ -148,9 +148,8 @@ TEST(TrackerWork, ParticleOutputAddsThePointSetToTheFrames) {
   EXPECT_EQ(w.frame_bytes, first_frame_bytes(every_frame));
 
   // Half the particles in every other frame: a quarter of the set per frame.
-  const participant::WorkReport sampled =
-      work_of(box_text(kHexahedra + kBall + "      particle_output: {every: 4, fraction: 0.5}\n", "{per_cell: 5",
-                       "fields_every: 2"));
+  const participant::WorkReport sampled = work_of(box_text(
+      kHexahedra + kBall + "      particle_output: {every: 4, fraction: 0.5}\n", "{per_cell: 5", "fields_every: 2"));
   EXPECT_EQ(sampled.frame_bytes, 120u * 8 * 8 + particles * (7 + 3) * 8 / 4);
 }
 
@@ -183,10 +182,10 @@ TEST(TrackerWork, TheProgramWritesTheReportWithCheck) {
   EXPECT_EQ(doc["held"]["cells"].as<double>(), 120);
   EXPECT_EQ(doc["frame_bytes"].as<double>(), 120 * 8 * 8);
   EXPECT_FALSE(doc["grows"]);
-  EXPECT_NE(testing::run_program("cosim-tracker", "--standalone " + (dir / "scene.yaml").string() + " -o " +
-                                                      (dir / "run.h5").string() + " --work " +
-                                                      (dir / "alone.yaml").string()),
-            0);
+  EXPECT_NE(
+      testing::run_program("cosim-tracker", "--standalone " + (dir / "scene.yaml").string() + " -o " +
+                                                (dir / "run.h5").string() + " --work " + (dir / "alone.yaml").string()),
+      0);
   EXPECT_FALSE(fs::exists(dir / "alone.yaml"));
 }
 

@@ -14,24 +14,29 @@
 namespace cosim::tracker {
 namespace {
 
-std::array<std::vector<double>, 3> unit_grid(int n) { return {uniform_axis(0, 1, n), uniform_axis(0, 1, n), uniform_axis(0, 1, n)}; }
+std::array<std::vector<double>, 3> unit_grid(int n) {
+  return {uniform_axis(0, 1, n), uniform_axis(0, 1, n), uniform_axis(0, 1, n)};
+}
 
 TEST(VelocityField, TrilinearIsExactForLinearFieldsAndClampsOutside) {
   const auto linear = [](const Vec3& x) { return Vec3(1 + 2 * x.x() - x.y(), 3 * x.z(), x.x() * 0.5 - 4); };
-  const VelocityField u = VelocityField::sampled({uniform_axis(0, 1, 3), {0.0, 0.2, 1.0}, uniform_axis(-1, 1, 5)}, linear);
+  const VelocityField u =
+      VelocityField::sampled({uniform_axis(0, 1, 3), {0.0, 0.2, 1.0}, uniform_axis(-1, 1, 5)}, linear);
   Random random(1);
   std::uniform_real_distribution<double> in(0.0, 1.0);
   for (int i = 0; i < 1000; ++i) {
-    const Vec3 x(in(random), in(random), 2 * in(random) - 1);
+    const Vec3 x(in(random), in(random), 2 * in(random)-1);
     EXPECT_LT((u(x) - linear(x)).norm(), 1e-13);
   }
   // Outside: the value at the nearest boundary point.
   EXPECT_LT((u(Vec3(2.0, 0.5, 0.0)) - linear(Vec3(1.0, 0.5, 0.0))).norm(), 1e-13);
   // A bilinear field on a cell is reproduced at its centre as the mean of the corners.
-  const VelocityField q = VelocityField::sampled({std::vector<double>{0, 1}, std::vector<double>{0, 1}, std::vector<double>{0}},
-                                                 [](const Vec3& x) { return Vec3(x.x() * x.y(), 0, 0); });
+  const VelocityField q =
+      VelocityField::sampled({std::vector<double>{0, 1}, std::vector<double>{0, 1}, std::vector<double>{0}},
+                             [](const Vec3& x) { return Vec3(x.x() * x.y(), 0, 0); });
   EXPECT_DOUBLE_EQ(q(Vec3(0.5, 0.5, 0.0)).x(), 0.25);
-  EXPECT_THROW(VelocityField({std::vector<double>{0, 1}, std::vector<double>{1, 0}, std::vector<double>{0}}, std::vector<double>(12)),
+  EXPECT_THROW(VelocityField({std::vector<double>{0, 1}, std::vector<double>{1, 0}, std::vector<double>{0}},
+                             std::vector<double>(12)),
                std::invalid_argument);
   EXPECT_THROW(VelocityField(unit_grid(1), std::vector<double>(5)), std::invalid_argument);
 }
@@ -56,8 +61,8 @@ TEST(Tracers, SolidBodyRotationReturnsAfterOnePeriod) {
     const Vec3 start = centre + Vec3(r * std::cos(a), r * std::sin(a), height(random) - 0.5);
     Particle tracer{start, Vec3::Zero(), domain.locator.locate(start)};
     for (int step = 0; step < 10; ++step)
-      ASSERT_TRUE(advance_tracer({.domain = domain, .obstacles = none, .random = random, .moves = moves}, u, {.substeps = 20},
-                                 tracer, {}, 0.1));
+      ASSERT_TRUE(advance_tracer({.domain = domain, .obstacles = none, .random = random, .moves = moves}, u,
+                                 {.substeps = 20}, tracer, {}, 0.1));
     worst = std::max(worst, (tracer.x - start).norm());
     EXPECT_FALSE(is_lost(domain, tracer));
   }
@@ -109,8 +114,9 @@ TEST(Tracers, ObstaclesAndWallsHoldTracers) {
     csg::State state;
     post.classify(tracer.cell, tracer.x, {&state, 1});
     for (int step = 0; step < 10; ++step)
-      ASSERT_TRUE(advance_tracer({.domain = domain, .obstacles = post, .random = random, .moves = moves, .tallies = tally}, u,
-                                 {.substeps = 5}, tracer, {&state, 1}, 0.1));
+      ASSERT_TRUE(
+          advance_tracer({.domain = domain, .obstacles = post, .random = random, .moves = moves, .tallies = tally}, u,
+                         {.substeps = 5}, tracer, {&state, 1}, 0.1));
     inside += (tracer.x - Vec3(0.5, 0.75, tracer.x.z())).norm() < 0.08 - 1e-9;
   }
   std::printf("tracers around a post: %lld hits; %s\n", tally[0].hits, summary(moves).c_str());

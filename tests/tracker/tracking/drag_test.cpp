@@ -32,7 +32,9 @@ Exchange ball_in_stream(const Vec3& velocity, double wall_temperature, int measu
   for (AxisSpacing& axis : spec.axes) axis = {.min = -1.1, .max = 1.1, .cells = 8};
   const Mesh mesh = box_mesh(spec);
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), kMass});
-  const Obstacles ball(mesh, {{"sphere", csg::Tree(csg::ball(Vec3::Zero(), 1.0)), false,
+  const Obstacles ball(mesh, {{"sphere",
+                               csg::Tree(csg::ball(Vec3::Zero(), 1.0)),
+                               false,
                                {.kind = BoundaryKind::diffuse, .temperature = wall_temperature}}});
   const Inflow inflow(mesh, {0, 1, 2, 3, 4, 5},
                       {.number_density = kDensity, .velocity = velocity, .temperature = 1.0, .mass = kMass});
@@ -56,8 +58,9 @@ TEST(FreeMolecularDrag, SphereMatchesTheClosedFormAtSeveralSpeedRatios) {
     // Force per unit particle mass and weight: the x impulse over the measured time.
     const double drag = e.tally.impulse.x() / e.time, side = e.tally.impulse.tail<2>().norm() / e.time;
     const double expected = dsmc::sphere_drag(kDensity, kMass, s, 1.0, 1.0) / kMass;  // per unit particle mass
-    std::printf("free-molecular sphere, s = %.1f: drag %.1f, Bird %.1f (%+.2f %%), side force %.1f, %lld hits, lost %lld\n",
-                s, drag, expected, 100.0 * (drag / expected - 1.0), side, e.tally.hits, e.lost);
+    std::printf(
+        "free-molecular sphere, s = %.1f: drag %.1f, Bird %.1f (%+.2f %%), side force %.1f, %lld hits, lost %lld\n", s,
+        drag, expected, 100.0 * (drag / expected - 1.0), side, e.tally.hits, e.lost);
     EXPECT_NEAR(drag / expected, 1.0, 0.03) << "s = " << s;
     EXPECT_LT(side, 0.03 * expected);
     EXPECT_EQ(e.lost, 0);
@@ -74,8 +77,8 @@ TEST(FreeMolecularHeatFlow, BallAtAnotherTemperatureThanTheGasAtRest) {
     const Exchange e = ball_in_stream(Vec3::Zero(), wall, 300, 11);
     const double heat = e.tally.energy / e.time;
     const double expected = std::numbers::pi * kDensity * mean_speed * (1.0 - wall);
-    std::printf("free-molecular heat flow into a ball at %.2f T_gas: %.1f, kinetic theory %.1f (%+.2f %%)\n", wall, heat,
-                expected, 100.0 * (heat / expected - 1.0));
+    std::printf("free-molecular heat flow into a ball at %.2f T_gas: %.1f, kinetic theory %.1f (%+.2f %%)\n", wall,
+                heat, expected, 100.0 * (heat / expected - 1.0));
     EXPECT_NEAR(heat / expected, 1.0, 0.03) << "T_wall / T_gas = " << wall;
     EXPECT_EQ(e.lost, 0);
   }

@@ -35,7 +35,9 @@ std::function<int(Index)> table(const std::vector<int>& owner) {
   return [&owner](Index c) { return owner[static_cast<std::size_t>(c)]; };
 }
 
-bool same_face(const Face& a, const Face& b) { return a.normal == b.normal && a.point == b.point && a.shift == b.shift; }
+bool same_face(const Face& a, const Face& b) {
+  return a.normal == b.normal && a.point == b.point && a.shift == b.shift;
+}
 
 TEST(Part, HasItsCellsAndTwoLayersOfNeighboursWithTheWholesFaces) {
   for (const BoxSpec& spec : {cube(5), cube(4, true)}) {
@@ -63,7 +65,8 @@ TEST(Part, HasItsCellsAndTwoLayersOfNeighboursWithTheWholesFaces) {
             const Face &a = part.faces[f], &b = whole.faces[wf];
             EXPECT_TRUE(same_face(a, b));
             ASSERT_EQ(part.vertex_count(f), whole.vertex_count(wf));
-            for (Index v = 0; v < part.vertex_count(f); ++v) EXPECT_EQ(part.face_vertex(f, v), whole.face_vertex(wf, v));
+            for (Index v = 0; v < part.vertex_count(f); ++v)
+              EXPECT_EQ(part.face_vertex(f, v), whole.face_vertex(wf, v));
             if (b.neighbour < 0) {
               EXPECT_EQ(a.neighbour, b.neighbour);
             } else if (a.neighbour == kBeyondPart) {
@@ -108,9 +111,8 @@ TEST(Part, OfABoxIsBuiltWithoutTheWhole) {
     spec.periodic = periodic;
     const Mesh whole = box_mesh(spec);
     // Bricks: a corner, the middle, a slab through the box.
-    const std::array<std::array<std::array<int, 3>, 2>, 3> bricks{{{{{0, 0, 0}, {4, 3, 2}}},
-                                                                   {{{3, 2, 3}, {8, 5, 6}}},
-                                                                   {{{5, 0, 0}, {6, 7, 9}}}}};
+    const std::array<std::array<std::array<int, 3>, 2>, 3> bricks{
+        {{{{0, 0, 0}, {4, 3, 2}}}, {{{3, 2, 3}, {8, 5, 6}}}, {{{5, 0, 0}, {6, 7, 9}}}}};
     for (const auto& [lo, hi] : bricks) {
       const auto owner = [&](Index c) {
         const std::array<int, 3> at = box_cell(c, {11, 7, 9}, 6).hex;
@@ -138,7 +140,9 @@ TEST(Part, OfABoxIsBuiltWithoutTheWhole) {
       }
     }
   }
-  EXPECT_THROW(box_part(spec, {0, 0, 0}, {0, 1, 1}, [](Index) { return 0; }, 0), std::invalid_argument);
+  EXPECT_THROW(box_part(
+                   spec, {0, 0, 0}, {0, 1, 1}, [](Index) { return 0; }, 0),
+               std::invalid_argument);
 }
 
 // One "rank": its part, walls and obstacles registered on it, its particles.
@@ -180,7 +184,8 @@ TEST(Handover, MovesThroughThreePartsEndWhereTheWholeMeshPutsThem) {
       for (int o = 0; o < 2; ++o)
         if (bool first_layer = false; c < rank.mesh->own_cells() || [&] {
               for (Index f = rank.mesh->cell_faces[c]; f < rank.mesh->cell_faces[c + 1]; ++f)
-                first_layer |= rank.mesh->faces[f].neighbour >= 0 && rank.mesh->faces[f].neighbour < rank.mesh->own_cells();
+                first_layer |=
+                    rank.mesh->faces[f].neighbour >= 0 && rank.mesh->faces[f].neighbour < rank.mesh->own_cells();
               return first_layer;
             }()) {
           const auto a = rank.obstacles->cells(o).primitives(c);
@@ -211,8 +216,9 @@ TEST(Handover, MovesThroughThreePartsEndWhereTheWholeMeshPutsThem) {
   std::vector<ObstacleTally> whole_tallies(2);
   long long handed = 0;
   for (int step = 0; step < 5; ++step) {
-    all.move_all({.domain = domain, .obstacles = obstacles, .random = unused, .moves = whole_moves, .tallies = whole_tallies},
-                 0.4);
+    all.move_all(
+        {.domain = domain, .obstacles = obstacles, .random = unused, .moves = whole_moves, .tallies = whole_tallies},
+        0.4);
     for (Rank& rank : ranks)
       rank.swarm.move_all({.domain = *rank.domain,
                            .obstacles = *rank.obstacles,
@@ -240,10 +246,12 @@ TEST(Handover, MovesThroughThreePartsEndWhereTheWholeMeshPutsThem) {
       }
       for (int r = 0; r < kRanks; ++r) {
         Rank& rank = ranks[static_cast<std::size_t>(r)];
-        incoming[r].resume_all(
-            {.domain = *rank.domain, .obstacles = *rank.obstacles, .random = unused, .moves = part_moves,
-             .tallies = rank.tallies},
-            rank.swarm);
+        incoming[r].resume_all({.domain = *rank.domain,
+                                .obstacles = *rank.obstacles,
+                                .random = unused,
+                                .moves = part_moves,
+                                .tallies = rank.tallies},
+                               rank.swarm);
         rank.away = std::move(incoming[r]);
       }
     }

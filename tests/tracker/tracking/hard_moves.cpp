@@ -18,8 +18,12 @@ Flight hard_move(const Mesh& mesh, Random& random, Index cell, Index face) {
   const Vec3 &a = mesh.face_vertex(face, k), &b = mesh.face_vertex(face, (k + 1) % n);
   Vec3 x;
   switch (pick(0, 3)) {
-    case 0: x = a; break;
-    case 1: x = a + uniform(random) * (b - a); break;
+    case 0:
+      x = a;
+      break;
+    case 1:
+      x = a + uniform(random) * (b - a);
+      break;
     default: {
       const double r1 = std::sqrt(uniform(random)), r2 = uniform(random);
       const Vec3 middle = vertex_mean(mesh, face);
@@ -28,13 +32,16 @@ Flight hard_move(const Mesh& mesh, Random& random, Index cell, Index face) {
   }
   Vec3 target;
   switch (pick(0, 3)) {
-    case 0: target = x + isotropic(random); break;
+    case 0:
+      target = x + isotropic(random);
+      break;
     case 1: {
       const Index g = pick(mesh.cell_faces[cell], mesh.cell_faces[cell + 1]);
       target = mesh.face_vertex(g, pick(0, mesh.vertex_count(g)));
       break;
     }
-    default: target = mesh.face_vertex(face, pick(0, n));
+    default:
+      target = mesh.face_vertex(face, pick(0, n));
   }
   if ((target - x).norm() < 1e-9) target = x + (b - a);  // along the edge
   const double width = std::cbrt(mesh.volume[cell]);

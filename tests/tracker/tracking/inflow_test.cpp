@@ -26,8 +26,8 @@ TEST(Inflow, NormalSpeedInvertsTheFluxDistribution) {
     double previous = 0.0;
     for (const double u : {0.01, 0.2, 0.5, 0.8, 0.99}) {
       const double x = inflow_normal_speed(s, u);
-      const double cumulative = 0.5 * (std::exp(-s * s) - std::exp(-(x - s) * (x - s))) +
-                                0.5 * s * sqrt_pi * (std::erf(x - s) + std::erf(s));
+      const double cumulative =
+          0.5 * (std::exp(-s * s) - std::exp(-(x - s) * (x - s))) + 0.5 * s * sqrt_pi * (std::erf(x - s) + std::erf(s));
       EXPECT_NEAR(cumulative / (sqrt_pi * flux_factor(s)), u, 1e-12) << "s " << s;
       EXPECT_GT(x, previous);
       previous = x;
@@ -65,7 +65,7 @@ TEST(Inflow, CountMatchesBirdsFlux) {
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), 2.0 * boltzmann});
   const double s = 0.8;
   const Inflow inflow(mesh, {0}, unit_stream(1000.0, Vec3(s, 0.3, 0.0)));  // x_min, normal +x
-  EXPECT_NEAR(inflow.rate(), 1000.0 * flux_factor(s), 1e-9);  // unit area, c_mp = 1
+  EXPECT_NEAR(inflow.rate(), 1000.0 * flux_factor(s), 1e-9);               // unit area, c_mp = 1
   const Obstacles none;
   Random random(2);
   Swarm swarm(0);

@@ -65,7 +65,8 @@ TEST(InnerBox, InsideEveryCellByTheTolerance) {
   expect_inside("tetrahedra", graded_box(true), 0.003);
   expect_inside("perturbed hexahedra", perturbed(graded_box(false), {.fraction = 0.2, .seed = 3}), 0.05);
   expect_inside("Voronoi", voronoi_mesh(testing::random_points(200, 11), {}), 1e-3);
-  expect_inside("periodic Voronoi", voronoi_mesh(testing::random_points(200, 12), {.periodic = {true, true, true}}), 1e-3);
+  expect_inside("periodic Voronoi", voronoi_mesh(testing::random_points(200, 12), {.periodic = {true, true, true}}),
+                1e-3);
 }
 
 // The cell shrunk by the tolerance, rounded inwards to float: to one float step (the scale
@@ -122,7 +123,9 @@ TEST(FastPath, SwarmEndsWhereTheFullAlgorithmPutsIt) {
   without_fast_path(full);
   std::vector<Obstacle> objects;
   objects.push_back({"mirror", csg::Tree(csg::ball(Vec3(0.3, 0.4, 0.5), 0.15)), false, {}});
-  objects.push_back({"hot", csg::Tree(csg::ball(Vec3(0.7, 0.6, 0.5), 0.2)), false,
+  objects.push_back({"hot",
+                     csg::Tree(csg::ball(Vec3(0.7, 0.6, 0.5), 0.2)),
+                     false,
                      {.kind = BoundaryKind::diffuse, .temperature = hot}});
   const Obstacles obstacles(mesh, objects);
 
@@ -151,8 +154,10 @@ TEST(FastPath, SwarmEndsWhereTheFullAlgorithmPutsIt) {
                    obstacles.active(obstacles.bounding_cell(p.cell)).empty();
     }
     moves += static_cast<long long>(a.size());
-    a.move_all({.domain = fast, .obstacles = obstacles, .random = random_a, .moves = moves_a, .tallies = tallies_a}, dt);
-    b.move_all({.domain = full, .obstacles = obstacles, .random = random_b, .moves = moves_b, .tallies = tallies_b}, dt);
+    a.move_all({.domain = fast, .obstacles = obstacles, .random = random_a, .moves = moves_a, .tallies = tallies_a},
+               dt);
+    b.move_all({.domain = full, .obstacles = obstacles, .random = random_b, .moves = moves_b, .tallies = tallies_b},
+               dt);
     a.sort_by_cell(mesh.cell_count());
     b.sort_by_cell(mesh.cell_count());
   }

@@ -52,9 +52,12 @@ TEST(Lattice, EveryCellOfABoxOfHexahedraAndNoOther) {
 double coordinate(double lo, double hi, double out, std::mt19937_64& random) {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   switch (random() % 4) {
-    case 0: return lo;
-    case 1: return hi;
-    default: return lo - out + (hi - lo + 2.0 * out) * uniform(random);
+    case 0:
+      return lo;
+    case 1:
+      return hi;
+    default:
+      return lo - out + (hi - lo + 2.0 * out) * uniform(random);
   }
 }
 
@@ -62,9 +65,12 @@ double coordinate(double lo, double hi, double out, std::mt19937_64& random) {
 double component(std::mt19937_64& random) {
   std::normal_distribution<double> gauss;
   switch (random() % 8) {
-    case 0: return 0.0;
-    case 1: return -0.0;
-    default: return gauss(random);
+    case 0:
+      return 0.0;
+    case 1:
+      return -0.0;
+    default:
+      return gauss(random);
   }
 }
 
@@ -87,7 +93,8 @@ void expect_the_scans_agree(const Mesh& mesh) {
     const double horizon = random() % 5 == 0 ? std::numeric_limits<double>::infinity() : 2.0 * uniform(random);
     const bool clamp = random() % 2 == 0;
     const detail::FaceEvent scan = detail::first_exit(mesh, p, skip, clamp, horizon);
-    const detail::FaceEvent fast = detail::lattice_exit(mesh, lattice[static_cast<std::size_t>(cell)], p, skip, clamp, horizon);
+    const detail::FaceEvent fast =
+        detail::lattice_exit(mesh, lattice[static_cast<std::size_t>(cell)], p, skip, clamp, horizon);
     ASSERT_EQ(fast.face, scan.face) << "move " << i;
     ASSERT_EQ(fast.dt, scan.dt) << "move " << i;
     ASSERT_EQ(fast.behind, scan.behind) << "move " << i;
@@ -157,14 +164,14 @@ TEST(Lattice, MovesThroughAMixedMeshEndWhereTheGeneralScanPutsThem) {
   }
 }
 
-
 // Plain cells (their planes and faces the lattice's) and linked faces (into the lattice
 // neighbour, unshifted) of the implicit lattice.
 struct ImplicitCount {
   int plain = 0, linked = 0;
 };
 ImplicitCount count_implicit(const Mesh& mesh) {
-  const Domain domain(mesh, {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 1.0});
+  const Domain domain(mesh,
+                      {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 1.0});
   ImplicitCount n;
   for (Index c = 0; c < mesh.cell_count(); ++c) {
     n.plain += domain.implicit.plain(c);
@@ -236,7 +243,8 @@ void expect_implicit_moves_agree(const char* label, const Mesh& mesh, bool perio
     MoveTally one_a, one_b;
     one_a.add(r);
     one_b.add(s);
-    for (const MoveCounter& c : kMoveCounters) ASSERT_EQ(one_a.*c.count, one_b.*c.count) << label << " move " << i << " " << c.name;
+    for (const MoveCounter& c : kMoveCounters)
+      ASSERT_EQ(one_a.*c.count, one_b.*c.count) << label << " move " << i << " " << c.name;
     ASSERT_EQ(p.cell, q.cell) << label << " move " << i;
     ASSERT_TRUE(same_bits(p.x, q.x)) << label << " move " << i;
     ASSERT_TRUE(same_bits(p.v, q.v)) << label << " move " << i;

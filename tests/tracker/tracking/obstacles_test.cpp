@@ -52,7 +52,8 @@ struct Flights {
   }
 
   void step(const Domain& domain, const Obstacles& obstacles, double dt, Random& random) {
-    swarm.move_all({.domain = domain, .obstacles = obstacles, .random = random, .moves = moves, .tallies = tallies}, dt);
+    swarm.move_all({.domain = domain, .obstacles = obstacles, .random = random, .moves = moves, .tallies = tallies},
+                   dt);
   }
   // States repaired at a wall: 0 unless a state went wrong.
   long long released() const {
@@ -65,8 +66,8 @@ struct Flights {
 // Whether x is inside the shape by more than `clearance` of round-off (direct evaluation of
 // every primitive is only trusted clear of the surface).
 bool deep_inside(const csg::Tree& shape, const Vec3& x) {
-  for (const Vec3& d : {Vec3(1e-9, 0, 0), Vec3(-1e-9, 0, 0), Vec3(0, 1e-9, 0), Vec3(0, -1e-9, 0), Vec3(0, 0, 1e-9),
-                        Vec3(0, 0, -1e-9)})
+  for (const Vec3& d :
+       {Vec3(1e-9, 0, 0), Vec3(-1e-9, 0, 0), Vec3(0, 1e-9, 0), Vec3(0, -1e-9, 0), Vec3(0, 0, 1e-9), Vec3(0, 0, -1e-9)})
     if (!shape.contains(x + d)) return false;
   return true;
 }
@@ -75,7 +76,8 @@ Expression cluster(int count, double radius, unsigned seed) {
   Random random(seed);
   std::uniform_real_distribution<double> uniform(0.3, 0.7);
   std::vector<Expression> balls;
-  for (int i = 0; i < count; ++i) balls.push_back(ball(Vec3(uniform(random), uniform(random), uniform(random)), radius));
+  for (int i = 0; i < count; ++i)
+    balls.push_back(ball(Vec3(uniform(random), uniform(random), uniform(random)), radius));
   return Expression::unite(balls);
 }
 
@@ -100,7 +102,8 @@ TEST(Obstacles, SpecularWallsKeepParticlesOutAndEnergyConstant) {
     const Particle& p = run.swarm.particle(i);
     EXPECT_NEAR(p.v.norm(), 1.0, 1e-6);  // stored in float
     for (int o = 0; o < 3; ++o) {
-      EXPECT_FALSE(deep_inside(obstacles.object(o).shape, p.x)) << obstacles.object(o).name << " at " << p.x.transpose();
+      EXPECT_FALSE(deep_inside(obstacles.object(o).shape, p.x))
+          << obstacles.object(o).name << " at " << p.x.transpose();
       // Clear of the surfaces, the carried state is the direct one (where the object has
       // primitives: elsewhere it is constant and its state is not looked at).
       if (obstacles.cells(o).primitives(p.cell).empty()) continue;
@@ -127,7 +130,8 @@ TEST(Obstacles, PeriodicFoamKeepsParticlesOut) {
   std::vector<Vec3> points(200);
   for (Vec3& x : points) x = Vec3(uniform(sites), uniform(sites), uniform(sites));
   const Mesh mesh = voronoi_mesh(points, {.periodic = {true, true, true}});
-  const Domain domain(mesh, {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::periodic}), 1.0});
+  const Domain domain(mesh,
+                      {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::periodic}), 1.0});
   std::vector<Expression> balls{ball({0.5, 0.5, 0.5}, 0.2)};
   for (int corner = 0; corner < 8; ++corner)
     balls.push_back(ball(Vec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1), 0.3));
@@ -273,7 +277,8 @@ TEST(Obstacles, SortByCellKeepsStatesWithTheirParticles) {
 TEST(Obstacles, MovingBallSweepsParticlesOut) {
   const Mesh mesh = box_mesh(cube(10));
   const Domain domain(mesh, specular_box());
-  Obstacles obstacles(mesh, {wall("ball", ball({0.3, 0.5, 0.5}, 0.15)), wall("post", csg::capped_cylinder({0.5, 0.5, 0.2}, {0.5, 0.5, 0.8}, 0.05))});
+  Obstacles obstacles(mesh, {wall("ball", ball({0.3, 0.5, 0.5}, 0.15)),
+                             wall("post", csg::capped_cylinder({0.5, 0.5, 0.2}, {0.5, 0.5, 0.8}, 0.05))});
   Flights run(domain, obstacles, 4000, 18);
   Random random(19);
   long overrun = 0;
@@ -299,7 +304,8 @@ TEST(Obstacles, MovingBallSweepsParticlesOut) {
     for (int o = 0; o < 2; ++o) {
       EXPECT_FALSE(deep_inside(obstacles.object(o).shape, p.x)) << obstacles.object(o).name << " " << p.x.transpose();
       bool clear = !obstacles.cells(o).primitives(p.cell).empty();
-      for (const csg::Primitive& q : obstacles.object(o).shape.primitives()) clear = clear && std::abs(q.indicator(p.x)) > 1e-9;
+      for (const csg::Primitive& q : obstacles.object(o).shape.primitives())
+        clear = clear && std::abs(q.indicator(p.x)) > 1e-9;
       obstacles.classify(p.cell, p.x, direct);
       if (clear) {
         EXPECT_EQ(run.swarm.states(k)[o], direct[o]) << "particle " << k << " object " << o;

@@ -90,7 +90,8 @@ TEST(NoParticleLost, PerturbedPeriodicVoronoi) {
 // Guards against: a particle being lost on faces some 1e-5 of their cells across.
 TEST(NoParticleLost, VoronoiWithTinyFaces) {
   for (const bool periodic : {false, true}) {
-    const Mesh mesh = voronoi_mesh(testing::random_points(20000, periodic ? 8 : 7), {.periodic = {periodic, periodic, periodic}});
+    const Mesh mesh =
+        voronoi_mesh(testing::random_points(20000, periodic ? 8 : 7), {.periodic = {periodic, periodic, periodic}});
     std::vector<Index> small;
     for (Index c = 0; c < mesh.cell_count(); ++c) {
       const double size = cell_box(mesh, c).diagonal().norm();

@@ -67,8 +67,8 @@ TEST(Walls, MovingWallsReEmitAboutTheirTangentialVelocity) {
   // The normal part of the velocity (here 30 m/s along n) is dropped: the patch does not move.
   const Vec3 n = Vec3::UnitY(), velocity(100.0, 30.0, -40.0);
   for (const BoundaryKind kind : {BoundaryKind::diffuse, BoundaryKind::maxwell}) {
-    const Boundaries boundaries{
-        {{.kind = kind, .temperature = 300.0, .accommodation = 1.0, .velocity = velocity}}, argon};
+    const Boundaries boundaries{{{.kind = kind, .temperature = 300.0, .accommodation = 1.0, .velocity = velocity}},
+                                argon};
     Random random(6);
     const int samples = 100000;
     Vec3 mean = Vec3::Zero();
@@ -102,8 +102,8 @@ TEST(Walls, PatchTalliesBalanceTheParticlesMomentumAndEnergy) {
   Boundaries boundaries{std::vector<BoundaryCondition>(6), argon};
   boundaries.patches[0] = {.kind = BoundaryKind::diffuse, .temperature = 200.0, .velocity = Vec3(0, 50, 0)};
   boundaries.patches[1] = {.kind = BoundaryKind::diffuse, .temperature = 400.0};
-  boundaries.patches[2] = {.kind = BoundaryKind::maxwell, .temperature = 300.0, .accommodation = 0.5,
-                           .velocity = Vec3(-80, 0, 0)};
+  boundaries.patches[2] = {
+      .kind = BoundaryKind::maxwell, .temperature = 300.0, .accommodation = 0.5, .velocity = Vec3(-80, 0, 0)};
   boundaries.patches[5] = {.kind = BoundaryKind::open};
   const Domain domain(mesh, boundaries);
   const Obstacles none;
@@ -137,8 +137,9 @@ TEST(Walls, PatchTalliesBalanceTheParticlesMomentumAndEnergy) {
   // Wrong sizes are refused.
   std::vector<SurfaceTally> five(5);
   Particle p{Vec3::Constant(0.5), Vec3::UnitX(), domain.locator.locate(Vec3::Constant(0.5))};
-  EXPECT_THROW(move({.domain = domain, .obstacles = none, .random = random, .moves = moves, .patches = five}, p, {}, 0.05),
-               std::invalid_argument);
+  EXPECT_THROW(
+      move({.domain = domain, .obstacles = none, .random = random, .moves = moves, .patches = five}, p, {}, 0.05),
+      std::invalid_argument);
 }
 
 TEST(Walls, OpenPatchRemovesAndOthersReflect) {
@@ -170,7 +171,8 @@ TEST(Walls, PeriodicLinksWrapTheFlight) {
   for (int i = 0; i < 100; ++i) points.emplace_back(uniform(random), uniform(random), uniform(random));
   const Mesh mesh = voronoi_mesh(points, {.periodic = {true, true, true}});
   // The mesh names the six box patches; the links replace them all.
-  const Domain domain(mesh, {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::periodic}), 0.0});
+  const Domain domain(mesh,
+                      {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::periodic}), 0.0});
   for (int i = 0; i < 1000; ++i) {
     Particle p{points[i % 100], Vec3(uniform(random), uniform(random), uniform(random)) - Vec3::Constant(0.5),
                static_cast<Index>(i % 100)};

@@ -182,8 +182,8 @@ ChannelResult run_channel(const ChannelSpec& spec) {
     const double plates_heat = 0.5 * (lower_heat.back() + upper_heat.back());
     if (U != 0.0) viscosity.push_back(plates_shear / (spec.gas.viscosity(bulk_t) * slope(bulk_y, bulk_u)));
     if (spec.upper_temperature != spec.lower_temperature)
-      conductivity.push_back(plates_heat / (spec.gas.conductivity(bulk_t) / std::sqrt(bulk_t) * 2.0 / 3.0 *
-                                            slope(bulk_y, bulk_theta)));
+      conductivity.push_back(
+          plates_heat / (spec.gas.conductivity(bulk_t) / std::sqrt(bulk_t) * 2.0 / 3.0 * slope(bulk_y, bulk_theta)));
   }
   r.lower_shear = estimate(lower_shear);
   r.upper_shear = estimate(upper_shear);

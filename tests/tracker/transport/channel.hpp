@@ -14,8 +14,8 @@ namespace cosim::tracker::transport {
 // eqs. 3.71-3.73): the first approximations mu1 = 5/16 sqrt(pi m k T) / (pi d^2) and
 // k1 = 15/4 (k/m) mu1 times their higher-order factors 1.016 and 1.025.
 struct HardSphereGas {
-  double mass = 6.63e-26;        // argon, kg
-  double diameter = 4.17e-10;    // Bird's VHS diameter of argon at 273 K, m
+  double mass = 6.63e-26;                              // argon, kg
+  double diameter = 4.17e-10;                          // Bird's VHS diameter of argon at 273 K, m
   double mean_free_path(double number_density) const;  // 1 / (sqrt(2) pi d^2 n)
   double mean_speed(double temperature) const;         // sqrt(8 k T / (pi m))
   double viscosity(double temperature) const;
@@ -30,11 +30,11 @@ struct ChannelSpec {
   int cells = 60;                // along y
   double particles_per_cell = 20.0;
   double dt_over_collision_time = 0.25;  // dt / (lambda / c_mean) at the mean plate temperature
-  double wall_speed = 0.0;       // the plates move along x at -U/2 (y = 0) and +U/2 (y = H)
+  double wall_speed = 0.0;               // the plates move along x at -U/2 (y = 0) and +U/2 (y = H)
   double lower_temperature = 273.0, upper_temperature = 273.0;  // K
-  double bulk_margin = 3.0;      // mean free paths from each plate not in the profile fits
+  double bulk_margin = 3.0;  // mean free paths from each plate not in the profile fits
   int warm_up_steps = 400;
-  int batches = 20;              // independent averages for the standard errors
+  int batches = 20;  // independent averages for the standard errors
   int batch_steps = 500;
   std::uint64_t seed = 1;
 };
@@ -45,12 +45,12 @@ struct Estimate {
 };
 
 struct ChannelResult {
-  double width = 0.0;          // H, m
-  double mean_free_path = 0.0; // m
-  double dt = 0.0;             // s
+  double width = 0.0;           // H, m
+  double mean_free_path = 0.0;  // m
+  double dt = 0.0;              // s
   std::size_t particles = 0;
   double wall_seconds = 0.0;
-  double cpu_seconds = 0.0;    // of the process: the wall time less what others took on a shared machine
+  double cpu_seconds = 0.0;  // of the process: the wall time less what others took on a shared machine
   long long lost = 0;
   // From the patch tallies: the x force per unit area the gas gives the lower plate and
   // minus that on the upper one (both the shear stress tau = mu du/dy at steady state), and

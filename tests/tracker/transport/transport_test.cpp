@@ -56,8 +56,8 @@ NearlyFree nearly_free(double knudsen) {
   s.batch_steps = 200;
   NearlyFree f{run_channel(s), free_molecular_shear(s.gas, s.number_density, s.lower_temperature, s.wall_speed), 0.0};
   const double T = s.lower_temperature;
-  f.delta = s.number_density * boltzmann * T * f.r.width /
-            (s.gas.viscosity(T) * std::sqrt(2.0 * boltzmann * T / s.gas.mass));
+  f.delta =
+      s.number_density * boltzmann * T * f.r.width / (s.gas.viscosity(T) * std::sqrt(2.0 * boltzmann * T / s.gas.mass));
   return f;
 }
 
@@ -106,10 +106,11 @@ TEST(Couette, ViscousStressAtLowKnudsenNumber) {
   print("Couette Kn = 0.05", r);
   const double mu = s.gas.viscosity(r.bulk_temperature), expected = 1.0 + viscosity_error(s);
   const Estimate slip{slip_shear(mu, s.wall_speed, r.width, r.mean_free_path) * expected, 0.0};
-  std::printf("  mu measured / Chapman-Enskog %.4f +- %.4f (discretisation: %.4f); over mu_DSMC U / (H + 2 zeta): "
-              "bulk %.4f, plates %.4f, %.4f\n",
-              r.viscosity_ratio.mean, r.viscosity_ratio.error, expected, r.bulk_shear.mean / slip.mean,
-              r.lower_shear.mean / slip.mean, r.upper_shear.mean / slip.mean);
+  std::printf(
+      "  mu measured / Chapman-Enskog %.4f +- %.4f (discretisation: %.4f); over mu_DSMC U / (H + 2 zeta): "
+      "bulk %.4f, plates %.4f, %.4f\n",
+      r.viscosity_ratio.mean, r.viscosity_ratio.error, expected, r.bulk_shear.mean / slip.mean,
+      r.lower_shear.mean / slip.mean, r.upper_shear.mean / slip.mean);
   EXPECT_LT(std::abs(r.viscosity_ratio.mean - expected), 3 * r.viscosity_ratio.error + 0.01);
   expect_agree(r.lower_shear, slip, 3.0, 0.02, "lower plate and slip-corrected Couette");
   expect_agree(r.upper_shear, slip, 3.0, 0.02, "upper plate and slip-corrected Couette");

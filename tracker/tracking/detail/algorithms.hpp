@@ -12,7 +12,7 @@ namespace cosim::tracker::detail {
 enum class Crossed { neighbour, wall, removed };
 
 struct FaceEvent {
-  double dt;   // infinity: the particle leaves through no face
+  double dt;  // infinity: the particle leaves through no face
   Index face;
   // The least f over the faces the particle moves away from (f' >= 0), `skip` left out;
   // infinity if none. No event, and this above -tolerance: the particle ends its move

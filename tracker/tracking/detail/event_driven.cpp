@@ -50,8 +50,7 @@ bool settle(const Domain& domain, Particle& p, const Carried& carried, MoveResul
 // contains (point location) and takes that cell, where it is inside, so the events resume
 // with a positive time. The start and the point found are inside the domain, so the
 // straight jump crosses no wall. False if no cell holds any point up to the end of the move.
-bool jump_out_of_gap(const Domain& domain, Particle& p, const Carried& carried, double& remaining,
-                     MoveResult& result) {
+bool jump_out_of_gap(const Domain& domain, Particle& p, const Carried& carried, double& remaining, MoveResult& result) {
   for (double step = domain.tolerance / p.v.norm();; step *= 4.0) {
     const double dt = std::min(step, remaining);
     const Vec3 x = p.x + dt * p.v;
@@ -154,12 +153,15 @@ MoveResult follow_events(const Domain& domain, Particle& p, const Flight& flight
       continue;
     }
     switch (cross(domain, p, face.face, random, result, carried.patches)) {
-      case Crossed::removed: return result;
+      case Crossed::removed:
+        return result;
       case Crossed::neighbour:
         skip = domain.mesh.faces[face.face].twin;
         carried.follow(from, p, domain.mesh.faces[face.face].shift != 0);
         break;
-      case Crossed::wall: skip = -1; break;
+      case Crossed::wall:
+        skip = -1;
+        break;
     }
   }
   // Inside its cell a particle is not lost: the scan of is_lost is needed only otherwise.

@@ -1,6 +1,5 @@
 #include "tracker/tracking/detail/algorithms.hpp"
 
-
 namespace cosim::tracker::detail {
 
 namespace {
@@ -68,8 +67,11 @@ MoveResult move_face_intersection(const Domain& domain, Particle& p, double dt, 
     result.zero_time_events += hit.dt == 0.0;
     const Index from = p.cell;
     switch (cross(domain, p, hit.face, random, result)) {
-      case Crossed::removed: return result;
-      case Crossed::wall: skip = -1; break;
+      case Crossed::removed:
+        return result;
+      case Crossed::wall:
+        skip = -1;
+        break;
       case Crossed::neighbour: {
         skip = domain.mesh.faces[hit.face].twin;
         if (recovery == Recovery::neighbour_search && search_neighbours(domain, p, from, result)) skip = -1;

@@ -12,7 +12,8 @@ namespace {
 constexpr int batch = 100000;
 
 const Pose& pose() {
-  static const Pose p({0.3, -0.2, 0.1}, Eigen::Quaterniond(Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, 1, 0).normalized())));
+  static const Pose p({0.3, -0.2, 0.1},
+                      Eigen::Quaterniond(Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, 1, 0).normalized())));
   return p;
 }
 

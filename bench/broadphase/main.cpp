@@ -22,8 +22,7 @@ void report(benchmark::State& state, std::size_t objects, std::size_t pairs) {
   state.counters["pairs/object"] = static_cast<double>(pairs) / static_cast<double>(objects);
 }
 
-void grid_steps(benchmark::State& state, const std::vector<Object>& objects,
-                double level_factor = 2.0) {
+void grid_steps(benchmark::State& state, const std::vector<Object>& objects, double level_factor = 2.0) {
   HashGrid grid({.margin = kMargin, .level_factor = level_factor});
   std::vector<Pair> pairs;
   for (auto _ : state) {
@@ -32,8 +31,7 @@ void grid_steps(benchmark::State& state, const std::vector<Object>& objects,
     benchmark::DoNotOptimize(pairs.data());
   }
   report(state, objects.size(), pairs.size());
-  state.counters["bytes/object"] =
-      static_cast<double>(grid.memory_bytes()) / static_cast<double>(objects.size());
+  state.counters["bytes/object"] = static_cast<double>(grid.memory_bytes()) / static_cast<double>(objects.size());
   state.counters["levels"] = static_cast<double>(grid.level_count());
 }
 
@@ -49,8 +47,7 @@ void BM_GridPolydisperse(benchmark::State& state) {
 }
 
 void BM_BruteForcePacked(benchmark::State& state) {
-  const std::vector<Object> objects =
-      scenes::packed(static_cast<std::size_t>(state.range(0)), kSolidFraction, 1);
+  const std::vector<Object> objects = scenes::packed(static_cast<std::size_t>(state.range(0)), kSolidFraction, 1);
   std::size_t pairs = 0;
   for (auto _ : state) {
     pairs = brute_force_pairs(objects, kMargin).size();
@@ -60,9 +57,7 @@ void BM_BruteForcePacked(benchmark::State& state) {
 }
 
 BENCHMARK(BM_GridPacked)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_GridPolydisperse)
-    ->ArgsProduct({{1000, 10000, 100000}, {2, 4}})
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_GridPolydisperse)->ArgsProduct({{1000, 10000, 100000}, {2, 4}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BruteForcePacked)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
