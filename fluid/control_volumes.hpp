@@ -3,7 +3,7 @@
 // the faces of other components; for a face of component d, along d the span between the
 // two cell centres it separates. Both body treatments measure a body's share of them.
 #include "fluid/grid.hpp"
-#include "rigidbody/geometry/aabb.hpp"
+#include "geometry/aabb.hpp"
 
 namespace cosim::fluid {
 

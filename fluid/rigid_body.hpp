@@ -1,10 +1,10 @@
 #pragma once
-// A body as the fluid sees it: shape and pose from rigidbody/geometry, and the rigid
+// A body as the fluid sees it: shape and pose from geometry, and the rigid
 // velocity the fictitious boundary method imposes inside it.
 #include <Eigen/Core>
 
-#include "rigidbody/geometry/pose.hpp"
-#include "rigidbody/geometry/shape.hpp"
+#include "geometry/pose.hpp"
+#include "geometry/shape.hpp"
 
 namespace cosim::fluid {
 

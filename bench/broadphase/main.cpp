@@ -7,7 +7,7 @@
 #include "rigidbody/broadphase/hash_grid.hpp"
 #include "tests/rigidbody/broadphase/scenes.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 namespace {
 
 constexpr double kSolidFraction = 0.55;
@@ -61,6 +61,6 @@ BENCHMARK(BM_GridPolydisperse)->ArgsProduct({{1000, 10000, 100000}, {2, 4}})->Un
 BENCHMARK(BM_BruteForcePacked)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase
 
 BENCHMARK_MAIN();

@@ -4,9 +4,11 @@
 
 namespace cosim::bench {
 
-double kinetic_energy(const world::World& world) { return dynamics::kinetic_energy(world.states(), world.inertias()); }
+double kinetic_energy(const rigidbody::world::World& world) {
+  return rigidbody::dynamics::kinetic_energy(world.states(), world.inertias());
+}
 
-double potential_energy(const world::World& world) {
+double potential_energy(const rigidbody::world::World& world) {
   const auto& forces = world.settings().body_forces;
   const Eigen::Vector3d g = forces.gravity ? forces.g : Eigen::Vector3d::Zero();
   double e = 0.0;

@@ -6,7 +6,7 @@
 
 namespace cosim::bench {
 
-double kinetic_energy(const world::World& world);
-double potential_energy(const world::World& world);
+double kinetic_energy(const rigidbody::world::World& world);
+double potential_energy(const rigidbody::world::World& world);
 
 }  // namespace cosim::bench

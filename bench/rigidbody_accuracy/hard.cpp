@@ -5,8 +5,8 @@ namespace cosim::bench {
 
 std::vector<SceneBuilder> hard_scenes() {
   std::vector<SceneBuilder> scenes;
-  for (const world::test::HardStack& stack : world::test::hard_stacks())
-    scenes.push_back([&stack](world::World& world) {
+  for (const rigidbody::world::test::HardStack& stack : rigidbody::world::test::hard_stacks())
+    scenes.push_back([&stack](rigidbody::world::World& world) {
       stack.build(world);
       return Scene{.name = stack.id, .size = stack.smallest_size, .duration = 10.0, .at_rest = true, .hard = true};
     });

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
       // A scene at rest is compared with its start; the settling pyramid has no exact end
       // state, so the full sweep compares it with a reference run (quick: no error).
       std::vector<Eigen::Vector3d> end_state;
-      cosim::world::World probe;
+      cosim::rigidbody::world::World probe;
       if (!quick && !hard && !scene(probe).at_rest) {
         runs.push_back(run(reference(scene)));
         print_row(runs.back());

@@ -16,7 +16,8 @@
 namespace cosim::bench {
 namespace {
 
-double largest_distance(std::span<const dynamics::BodyState> states, const std::vector<Eigen::Vector3d>& to) {
+double largest_distance(std::span<const rigidbody::dynamics::BodyState> states,
+                        const std::vector<Eigen::Vector3d>& to) {
   double d = 0.0;
   for (std::size_t i = 0; i < states.size(); ++i) d = std::max(d, (states[i].position - to[i]).norm());
   return d;
@@ -39,9 +40,9 @@ void read_dem_log(const std::string& log, int steps, Metrics& m) {
 
 Run run(const RunSpec& spec, const std::vector<Eigen::Vector3d>& reference) {
   std::ostringstream dem_log;
-  world::Settings settings = spec.settings;
+  rigidbody::world::Settings settings = spec.settings;
   settings.dem.log = &dem_log;
-  world::World world(settings);
+  rigidbody::world::World world(settings);
   Run out{.spec = spec, .scene = spec.build(world)};
   Metrics& m = out.metrics;
 
@@ -58,7 +59,7 @@ Run run(const RunSpec& spec, const std::vector<Eigen::Vector3d>& reference) {
   std::chrono::steady_clock::duration stepping{};
   for (int step = 0; step < steps; ++step) {
     const auto t0 = std::chrono::steady_clock::now();
-    const world::StepReport report = world.advance(settings.dt);
+    const rigidbody::world::StepReport report = world.advance(settings.dt);
     stepping += std::chrono::steady_clock::now() - t0;
     for (const std::string& warning : report.warnings) spdlog::warn("{}", warning);
     converged += report.converged ? 1 : 0;
@@ -83,7 +84,7 @@ Run run(const RunSpec& spec, const std::vector<Eigen::Vector3d>& reference) {
     m.error = largest_distance(world.states(), start) / size;
   m.converged = static_cast<double>(converged) / steps;
   m.mean_iterations = static_cast<double>(iterations) / steps;
-  if (settings.solver == world::SolverKind::dem) read_dem_log(dem_log.str(), steps, m);
+  if (settings.solver == rigidbody::world::SolverKind::dem) read_dem_log(dem_log.str(), steps, m);
   m.wall_seconds = std::chrono::duration<double>(stepping).count();
   m.body_steps_per_second = static_cast<double>(moving) * steps / m.wall_seconds;
   for (const auto& s : world.states()) out.end_positions.push_back(s.position);

@@ -12,7 +12,7 @@ namespace cosim::bench {
 
 struct RunSpec {
   SceneBuilder build;
-  world::Settings settings;
+  rigidbody::world::Settings settings;
 };
 
 // Lengths in units of Scene::size, energies in units of the initial potential energy

@@ -24,7 +24,7 @@ std::vector<std::string> sanity_failures(const std::vector<Run>& runs) {
     if (!(value <= bound)) failures.push_back(describe(r, what, value, bound));  // NaN fails too
   };
   for (const Run& r : runs) {
-    const world::Settings& s = r.spec.settings;
+    const rigidbody::world::Settings& s = r.spec.settings;
     const Metrics& m = r.metrics;
     // Few iterations or a large dt may topple the stack (the table shows it), but no
     // setting may produce NaN.
@@ -32,7 +32,7 @@ std::vector<std::string> sanity_failures(const std::vector<Run>& runs) {
     // Sequential impulses at (at least) their default iterations and dt: the settings the
     // world's tests and the rigid-body program relied on, on the scenes they hold (the hard
     // cases are where they are known to fail, docs/results.md).
-    if (s.solver == world::SolverKind::sequential_impulses && s.impulse_options().max_iterations >= 50 &&
+    if (s.solver == rigidbody::world::SolverKind::sequential_impulses && s.impulse_options().max_iterations >= 50 &&
         s.dt <= 1e-3 && !r.scene.hard) {
       check(r, "penetration / size", m.penetration, 0.01);
       check(r, "drift / size", m.drift, 1e-3);
@@ -41,12 +41,13 @@ std::vector<std::string> sanity_failures(const std::vector<Run>& runs) {
       if (r.scene.at_rest) check(r, "error / size", m.error.value_or(NAN), 1e-3);
     }
     // The soft step at its defaults: the default solver, which the hard cases are for.
-    if (s.solver == world::SolverKind::soft && s.iterations == 0 && s.dt <= 1e-3) {
+    if (s.solver == rigidbody::world::SolverKind::soft && s.iterations == 0 && s.dt <= 1e-3) {
       check(r, "penetration / size", m.penetration, 0.01);
       if (r.scene.at_rest) check(r, "error / size", m.error.value_or(NAN), 0.01);
     }
     // DEM at a step its solver calls stable: overlaps stay small at the swept stiffnesses.
-    if (s.solver == world::SolverKind::dem && m.dem_warned == 0.0) check(r, "DEM overlap / size", m.penetration, 0.05);
+    if (s.solver == rigidbody::world::SolverKind::dem && m.dem_warned == 0.0)
+      check(r, "DEM overlap / size", m.penetration, 0.05);
   }
   return failures;
 }

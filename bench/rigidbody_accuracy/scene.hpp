@@ -11,7 +11,7 @@
 namespace cosim::bench {
 
 struct Scene;
-using SceneBuilder = std::function<Scene(world::World&)>;
+using SceneBuilder = std::function<Scene(rigidbody::world::World&)>;
 
 struct Scene {
   std::string name;
@@ -23,10 +23,10 @@ struct Scene {
 
 // 91 spheres (square layers 6x6 ... 1) with friction 0.5 on a fixed 7x7 layer of spheres
 // on a fixed floor, a 1e-3 r gap between all of them, settling under gravity for 1 s.
-Scene build_pyramid(world::World& world);
+Scene build_pyramid(rigidbody::world::World& world);
 
 // Ten 0.2 m boxes with friction 0.5 exactly touching on a fixed floor, for 2 s.
-Scene build_box_stack(world::World& world);
+Scene build_box_stack(rigidbody::world::World& world);
 
 // The hard resting cases of the stability suite (tests/rigidbody/world/hard_stack.hpp),
 // 10 s each, lengths in units of the smallest body's size.

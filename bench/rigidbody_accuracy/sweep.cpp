@@ -3,7 +3,7 @@
 namespace cosim::bench {
 namespace {
 
-using world::SolverKind;
+using rigidbody::world::SolverKind;
 
 constexpr SolverKind kImpulseSolvers[] = {SolverKind::pgs, SolverKind::sequential_impulses, SolverKind::jacobi};
 

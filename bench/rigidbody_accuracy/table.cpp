@@ -5,17 +5,17 @@
 #include <stdexcept>
 
 namespace cosim::bench {
-std::string solver_label(const world::Settings& s) {
+std::string solver_label(const rigidbody::world::Settings& s) {
   switch (s.solver) {
-    case world::SolverKind::soft:
+    case rigidbody::world::SolverKind::soft:
       return "soft";
-    case world::SolverKind::pgs:
+    case rigidbody::world::SolverKind::pgs:
       return "pgs";
-    case world::SolverKind::jacobi:
+    case rigidbody::world::SolverKind::jacobi:
       return "jacobi";
-    case world::SolverKind::sequential_impulses:
+    case rigidbody::world::SolverKind::sequential_impulses:
       return "si";
-    case world::SolverKind::dem: {
+    case rigidbody::world::SolverKind::dem: {
       char label[32];
       std::snprintf(label, sizeof label, "dem k=%.0e", s.dem.normal_stiffness);
       return label;
@@ -26,7 +26,7 @@ std::string solver_label(const world::Settings& s) {
 
 namespace {
 
-bool is_dem(const Run& run) { return run.spec.settings.solver == world::SolverKind::dem; }
+bool is_dem(const Run& run) { return run.spec.settings.solver == rigidbody::world::SolverKind::dem; }
 
 // Empty when the solver has no iterations (DEM) or the run no reference.
 std::string cell(bool present, const char* format, double value) {
@@ -37,8 +37,9 @@ std::string cell(bool present, const char* format, double value) {
 }
 
 std::string iterations(const Run& r) {
-  const world::Settings& s = r.spec.settings;
-  const int n = s.solver == world::SolverKind::soft ? s.soft_options().iterations : s.impulse_options().max_iterations;
+  const rigidbody::world::Settings& s = r.spec.settings;
+  const int n =
+      s.solver == rigidbody::world::SolverKind::soft ? s.soft_options().iterations : s.impulse_options().max_iterations;
   return cell(!is_dem(r), "%.0f", static_cast<double>(n));
 }
 std::string error(const Run& r) { return cell(r.metrics.error.has_value(), "%.2e", r.metrics.error.value_or(0)); }

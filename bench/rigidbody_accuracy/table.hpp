@@ -9,7 +9,7 @@
 namespace cosim::bench {
 
 // "soft", "pgs", "si", "jacobi", "dem k=1e+05".
-std::string solver_label(const world::Settings& settings);
+std::string solver_label(const rigidbody::world::Settings& settings);
 
 void print_header();
 void print_row(const Run& run);

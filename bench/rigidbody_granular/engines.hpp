@@ -13,8 +13,8 @@ namespace cosim::bench {
 // How cosim's world runs the scene: the solver, and the soft step's settings (the
 // world's defaults unless the command line changes them).
 struct CosimRun {
-  world::SolverKind solver = world::SolverKind::soft;
-  solver::SoftOptions soft{};
+  rigidbody::world::SolverKind solver = rigidbody::world::SolverKind::soft;
+  rigidbody::solver::SoftOptions soft{};
 };
 
 // Sequential impulses take scene.iterations; the soft step its own sweeps (run.soft); DEM

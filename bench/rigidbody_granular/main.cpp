@@ -143,9 +143,9 @@ int main(int argc, char** argv) {
     scene.dem_dt = defaults.dem_dt;
     scene.hertz = defaults.hertz;
     for (const std::string& solver : solvers) {
-      cosim_run.solver = solver == "soft"  ? cosim::world::SolverKind::soft
-                         : solver == "dem" ? cosim::world::SolverKind::dem
-                                           : cosim::world::SolverKind::sequential_impulses;
+      cosim_run.solver = solver == "soft"  ? cosim::rigidbody::world::SolverKind::soft
+                         : solver == "dem" ? cosim::rigidbody::world::SolverKind::dem
+                                           : cosim::rigidbody::world::SolverKind::sequential_impulses;
       runs.push_back(cosim::bench::run_cosim(scene, cosim_run));
       print(runs.back(), scene.radius);
     }

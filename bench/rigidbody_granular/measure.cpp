@@ -11,13 +11,13 @@
 namespace cosim::bench {
 
 double max_penetration(const std::vector<Eigen::Vector3d>& centres, double radius, double half_width) {
-  std::vector<broadphase::Object> objects;
+  std::vector<rigidbody::broadphase::Object> objects;
   objects.reserve(centres.size());
   for (std::size_t i = 0; i < centres.size(); ++i)
-    objects.push_back({.id = static_cast<broadphase::Id>(i), .centre = centres[i], .radius = radius});
-  broadphase::HashGrid grid;
+    objects.push_back({.id = static_cast<rigidbody::broadphase::Id>(i), .centre = centres[i], .radius = radius});
+  rigidbody::broadphase::HashGrid grid;
   grid.update(objects);
-  std::vector<broadphase::Pair> pairs;
+  std::vector<rigidbody::broadphase::Pair> pairs;
   grid.find_pairs(pairs);
   double deepest = 0.0;
   for (const auto& [a, b] : pairs) deepest = std::max(deepest, 2 * radius - (centres[a] - centres[b]).norm());

@@ -2,9 +2,9 @@
 // batches as the fluid's FBM indicator issues them. Not a test: run bench_geometry.
 #include <benchmark/benchmark.h>
 
-#include "tests/rigidbody/geometry/fixtures.hpp"
-#include "rigidbody/geometry/distance_map.hpp"
-#include "rigidbody/geometry/queries.hpp"
+#include "tests/geometry/fixtures.hpp"
+#include "geometry/distance_map.hpp"
+#include "geometry/queries.hpp"
 
 namespace cosim::geometry {
 namespace {

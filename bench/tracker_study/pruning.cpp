@@ -47,10 +47,12 @@ tracker::Mesh unit_box(int cells) {
 std::vector<tracker::Obstacle> cluster_walls() {
   std::vector<tracker::Obstacle> walls;
   for (const std::vector<Ball>& group : groups_of(sphere_cluster(), 64)) {
-    std::vector<csg::Expression> parts;
-    for (const Ball& b : group) parts.push_back(csg::ball(b.centre, b.radius));
-    walls.push_back(
-        {"cluster part " + std::to_string(walls.size()), csg::Tree(csg::Expression::unite(parts)), false, {}});
+    std::vector<tracker::csg::Expression> parts;
+    for (const Ball& b : group) parts.push_back(tracker::csg::ball(b.centre, b.radius));
+    walls.push_back({"cluster part " + std::to_string(walls.size()),
+                     tracker::csg::Tree(tracker::csg::Expression::unite(parts)),
+                     false,
+                     {}});
   }
   return walls;
 }
@@ -88,7 +90,7 @@ Row run_grid(const tracker::Mesh& mesh, const std::vector<tracker::Obstacle>& wa
   tracker::Random random(42);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::normal_distribution<double> gauss;
-  std::vector<csg::State> states(static_cast<std::size_t>(obstacles.count()));
+  std::vector<tracker::csg::State> states(static_cast<std::size_t>(obstacles.count()));
   while (static_cast<long>(swarm.size()) < o.particles) {
     const Vec3 x(uniform(random), uniform(random), uniform(random));
     const Index cell = domain.locator.locate(x);

@@ -19,9 +19,9 @@ FreeBox::FreeBox(const FreeDeck& deck) {
                          FreeDeck::kMass};
   domain = std::make_unique<Domain>(mesh, walls);
   const double side = deck.cells * FreeDeck::kCellWidth;
-  std::vector<csg::Expression> balls;
-  for (const Ball& b : sphere_cluster()) balls.push_back(csg::ball(side * b.centre, side * b.radius));
-  cluster = Obstacles(mesh, {{"cluster", csg::Tree(csg::Expression::unite(balls)), false, {}}});
+  std::vector<tracker::csg::Expression> balls;
+  for (const Ball& b : sphere_cluster()) balls.push_back(tracker::csg::ball(side * b.centre, side * b.radius));
+  cluster = Obstacles(mesh, {{"cluster", tracker::csg::Tree(tracker::csg::Expression::unite(balls)), false, {}}});
 }
 
 std::vector<Particle> fill(const FreeDeck& deck, Random& random) {

@@ -25,7 +25,7 @@ double kinetic_energy(const std::vector<Particle>& particles) {
 // The particles as the program keeps them, those inside a cluster ball left out.
 Swarm swarm_of(const std::vector<Particle>& particles, const Obstacles& obstacles) {
   Swarm swarm(obstacles.count());
-  std::vector<csg::State> states(static_cast<std::size_t>(obstacles.count()));
+  std::vector<tracker::csg::State> states(static_cast<std::size_t>(obstacles.count()));
   for (const Particle& p : particles) {
     obstacles.classify(p.cell, p.x, states);
     if (!obstacles.inside_wall(p.cell, states)) swarm.add(p, states);
@@ -66,8 +66,9 @@ RunResult run(const FreeBox& box, const std::vector<Particle>& particles, const 
   // 10 per cell), collisions in cell order each step.
   std::optional<CellCollider> collider;
   if (options.collide) {
-    const dsmc::Species& argon = dsmc::read_species(dsmc::default_species_file()).at("Ar");
-    collider.emplace(box.mesh, Collisions{dsmc::CollisionModel::from_species(argon, dsmc::Model::vss), false},
+    const tracker::dsmc::Species& argon = tracker::dsmc::read_species(tracker::dsmc::default_species_file()).at("Ar");
+    collider.emplace(box.mesh,
+                     Collisions{tracker::dsmc::CollisionModel::from_species(argon, tracker::dsmc::Model::vss), false},
                      FreeDeck::kTemperature, FreeDeck::kCollideWeight, 7);
   }
   const std::clock_t cpu_start = std::clock();

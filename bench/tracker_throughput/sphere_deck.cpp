@@ -26,8 +26,9 @@ constexpr double kBallVolume =
 }  // namespace
 
 SphereBox::SphereBox()
-    : collisions{dsmc::CollisionModel::from_species(dsmc::read_species(dsmc::default_species_file()).at("Ar"),
-                                                    dsmc::Model::vss),
+    : collisions{tracker::dsmc::CollisionModel::from_species(
+                     tracker::dsmc::read_species(tracker::dsmc::default_species_file()).at("Ar"),
+                     tracker::dsmc::Model::vss),
                  false},
       mass(collisions.model.mass()) {
   BoxSpec spec;
@@ -37,7 +38,7 @@ SphereBox::SphereBox()
   domain = std::make_unique<Domain>(
       mesh, Boundaries{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::open}), mass});
   sphere = Obstacles(mesh, {{"sphere",
-                             csg::Tree(csg::ball(Vec3::Zero(), SphereDeck::kRadius)),
+                             tracker::csg::Tree(tracker::csg::ball(Vec3::Zero(), SphereDeck::kRadius)),
                              false,
                              {.kind = BoundaryKind::diffuse, .temperature = SphereDeck::kTemperature}}});
   std::vector<Index> all(mesh.patches.size());
@@ -56,8 +57,8 @@ double SphereBox::stream_count() {
 }
 
 double SphereBox::free_molecular_drag() const {
-  return dsmc::sphere_drag(SphereDeck::kDensity, mass, SphereDeck::kSpeed, SphereDeck::kTemperature,
-                           SphereDeck::kRadius);
+  return tracker::dsmc::sphere_drag(SphereDeck::kDensity, mass, SphereDeck::kSpeed, SphereDeck::kTemperature,
+                                    SphereDeck::kRadius);
 }
 
 SphereResult run_sphere(const SphereBox& box, const SphereDeck& deck) {

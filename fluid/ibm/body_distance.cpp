@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "rigidbody/geometry/queries.hpp"
-#include "rigidbody/geometry/surface_sampling.hpp"
+#include "geometry/queries.hpp"
+#include "geometry/surface_sampling.hpp"
 
 namespace cosim::fluid {
 

@@ -15,8 +15,8 @@
 #include "fluid/navier_stokes.hpp"
 #include "fluid/petsc_check.hpp"
 #include "fluid/step_stages.hpp"
-#include "rigidbody/geometry/queries.hpp"
-#include "rigidbody/geometry/surface_sampling.hpp"
+#include "geometry/queries.hpp"
+#include "geometry/surface_sampling.hpp"
 
 namespace cosim::fluid {
 namespace {

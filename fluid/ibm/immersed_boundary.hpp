@@ -44,7 +44,7 @@
 #include "fluid/ibm/kernel_stencil.hpp"
 #include "fluid/ibm/marker_sharing.hpp"
 #include "fluid/ibm/marker_stencils.hpp"
-#include "rigidbody/geometry/sampled_shapes.hpp"
+#include "geometry/sampled_shapes.hpp"
 
 namespace cosim::fluid {
 

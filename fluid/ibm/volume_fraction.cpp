@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "fluid/control_volumes.hpp"
-#include "rigidbody/geometry/aabb.hpp"
+#include "geometry/aabb.hpp"
 
 namespace cosim::fluid {
 

@@ -12,7 +12,7 @@
 #include "fluid/program/petsc_flags.hpp"
 #include "coupler/participant/poses_at.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 void check_size(const std::vector<participant::PoseRow>& poses, std::size_t bodies) {
@@ -189,4 +189,4 @@ void FluidSolver::restore(const std::vector<double>& state) {
   }
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

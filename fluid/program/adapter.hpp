@@ -9,7 +9,7 @@
 #include "fluid/program/scene_fluid.hpp"
 #include "coupler/participant/solver.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 class FluidSolver final : public participant::Solver {
  public:
@@ -55,4 +55,4 @@ class FluidSolver final : public participant::Solver {
   fluid::StageSeconds stage_seconds_;
 };
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

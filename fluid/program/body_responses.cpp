@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
@@ -95,4 +95,4 @@ void BodyResponses::restore(std::span<const double> state) {
   if (at != state.size()) throw std::invalid_argument("response state has values left over");
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -17,7 +17,7 @@
 #include "fluid/program/response_correction.hpp"
 #include "fluid/window_response.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 class BodyResponses {
  public:
@@ -46,4 +46,4 @@ class BodyResponses {
   std::vector<ResponseCorrection> corrections_;
 };
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

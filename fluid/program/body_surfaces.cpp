@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 std::vector<Eigen::Vector3d> surface_points(const fluid::Axes& axes, const fluid::RigidBody& body,
                                             geometry::SampledShapes& sampled) {
@@ -44,4 +44,4 @@ std::vector<field::PointSet> BodySurfaces::where(const fluid::BodyTreatment& bod
   return out;
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

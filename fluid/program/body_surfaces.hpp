@@ -9,10 +9,10 @@
 
 #include "fluid/body_treatment.hpp"
 #include "fluid/grid.hpp"
-#include "rigidbody/geometry/sampled_shapes.hpp"
+#include "geometry/sampled_shapes.hpp"
 #include "coupler/field/field_frame.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 // Body `body`'s surface points in its frame on a grid of `axes`, as BodySurfaces keeps them
 // (`sampled` reuses a shape's sampling for the bodies that share it).
@@ -31,4 +31,4 @@ class BodySurfaces {
   std::vector<std::vector<Eigen::Vector3d>> points_;  // body frame
 };
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -6,7 +6,7 @@
 
 #include "fluid/petsc_check.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 using fluid::Index;
@@ -107,4 +107,4 @@ field::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::Body
   return frame;
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -7,10 +7,10 @@
 #include "fluid/navier_stokes.hpp"
 #include "coupler/field/field_frame.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 // Collective: every rank computes its own cells and rank 0 receives the whole grid in the
 // frame's order (other ranks get the grid's nodes and no fields).
 field::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::BodyTreatment& bodies);
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

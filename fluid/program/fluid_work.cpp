@@ -11,7 +11,7 @@
 #include "fluid/program/settling_speed.hpp"
 #include "fluid/time_step_controller.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 constexpr std::uint64_t kCellValues = 5;   // velocity (3), pressure, alpha: cell_fields.hpp
@@ -110,4 +110,4 @@ participant::WorkReport fluid_work(const FluidSetup& setup, const scene::Scene& 
           .dt = expected_dt(setup, scene)};
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

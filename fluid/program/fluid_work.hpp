@@ -4,7 +4,7 @@
 #include "coupler/participant/work_report.hpp"
 #include "fluid/program/scene_fluid.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 // per_step and held {cells: the grid's cells, markers: the immersed boundary's Lagrangian
 // markers over all bodies (0 with the staircase)}; frame_bytes: what cell_fields() and
@@ -16,4 +16,4 @@ namespace cosim::program {
 // each window.
 participant::WorkReport fluid_work(const FluidSetup& setup, const scene::Scene& scene);
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -25,7 +25,7 @@
 namespace {
 
 int coupled() {
-  cosim::program::FluidSolver solver;
+  cosim::fluid::program::FluidSolver solver;
   return cosim::participant::run_on_ranks(solver, PETSC_COMM_WORLD, [](cosim::participant::Solver& lead) {
     using cosim::scene::Data;
     int ranks = 1;
@@ -70,11 +70,12 @@ int main(int argc, char** argv) {
     return cosim::scene::exit_code("cosim-fluid", [&] {
       if (!args.check.empty()) {
         const cosim::scene::Scene scene = cosim::scene::load_scene(args.check);
-        const cosim::program::FluidSetup setup = cosim::program::fluid_setup(scene);
-        if (!args.work.empty()) cosim::participant::write_work(args.work, cosim::program::fluid_work(setup, scene));
+        const cosim::fluid::program::FluidSetup setup = cosim::fluid::program::fluid_setup(scene);
+        if (!args.work.empty())
+          cosim::participant::write_work(args.work, cosim::fluid::program::fluid_work(setup, scene));
         return 0;
       }
-      return cosim::program::run_fluid_standalone(args.standalone, args.output);
+      return cosim::fluid::program::run_fluid_standalone(args.standalone, args.output);
     });
   });
 }

@@ -8,7 +8,7 @@
 
 #include "fluid/petsc_check.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 PetscFlags parse_petsc_flags(const std::string& text) {
   PetscFlags flags;
@@ -37,4 +37,4 @@ void insert_petsc_flags(const PetscFlags& flags) {
   }
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

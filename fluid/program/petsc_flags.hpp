@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 using PetscFlags = std::vector<std::pair<std::string, std::string>>;  // name with '-', value or ""
 
@@ -16,4 +16,4 @@ PetscFlags parse_petsc_flags(const std::string& text);
 // Sets the flags the command line has not set. Call before the solvers are created.
 void insert_petsc_flags(const PetscFlags& flags);
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

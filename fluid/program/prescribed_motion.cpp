@@ -8,7 +8,7 @@
 #include "coupler/participant/body_rows.hpp"
 #include "coupler/scene/eigen.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 constexpr std::array kind_names{"fixed", "constant", "sinusoidal"};
@@ -71,4 +71,4 @@ std::vector<participant::PoseRow> poses_at(const std::vector<Motion>& motions, d
   return out;
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

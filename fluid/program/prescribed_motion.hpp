@@ -9,7 +9,7 @@
 #include "coupler/participant/body_rows.hpp"
 #include "coupler/scene/reader.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 struct Motion {
   enum class Kind { fixed, constant, sinusoidal };
@@ -35,4 +35,4 @@ std::vector<Motion> read_motions(const scene::Scene& scene, const scene::Reader&
 // The bodies' poses at time t.
 std::vector<participant::PoseRow> poses_at(const std::vector<Motion>& motions, double t);
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

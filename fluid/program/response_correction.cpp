@@ -5,7 +5,7 @@
 
 #include "coupler/participant/robin.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 // The weight of a window against the one after it: the estimate follows the bed over about
@@ -56,4 +56,4 @@ void ResponseCorrection::restore(std::span<const double> state) {
   extra_ = state[10];
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -22,7 +22,7 @@
 
 #include "coupler/participant/body_rows.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 class ResponseCorrection {
  public:
@@ -47,4 +47,4 @@ class ResponseCorrection {
   double k0_ = 0, correlation_ = 0, spread_ = 0, extra_ = 0;
 };
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "rigidbody/program/scene_shape.hpp"
+#include "coupler/scene/geometry_shape.hpp"
 #include "coupler/scene/eigen.hpp"
 #include "coupler/scene/error.hpp"
 #include "coupler/scene/reader.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 using fluid::Boundary;
@@ -168,9 +168,9 @@ void read_bodies(const scene::Scene& scene, const scene::Participant& p, FluidSe
     if (body.shape.type == scene::ShapeType::Plane)
       throw scene::SceneError(scene.file.string(), p.line, key, "plane",
                               "cosim-fluid cannot hold a plane body: make it a wall boundary (participants.fluid)");
-    fluid::RigidBody r{.shape = shape_of(body.shape), .pose = {}};
+    fluid::RigidBody r{.shape = scene::shape_of(body.shape), .pose = {}};
     const Eigen::Quaterniond q = scene::to_eigen(body.orientation);
-    const Eigen::Vector3d x = scene::to_eigen(body.position) + q * com_shift(r.shape);
+    const Eigen::Vector3d x = scene::to_eigen(body.position) + q * scene::com_shift(r.shape);
     r.pose = geometry::Pose(x, q);
     s.bodies.push_back(std::move(r));
     s.body_names.push_back(body.name);
@@ -230,4 +230,4 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   return s;
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

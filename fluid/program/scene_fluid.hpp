@@ -14,7 +14,7 @@
 #include "fluid/program/prescribed_motion.hpp"
 #include "coupler/scene/scene.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 struct FluidSetup {
   std::vector<fluid::Axis> axes;  // x, y, z
@@ -34,4 +34,4 @@ struct FluidSetup {
 // key and value for a bad, unknown or missing option, or a body the fluid cannot hold.
 FluidSetup fluid_setup(const scene::Scene& scene);
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

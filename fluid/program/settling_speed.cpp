@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 double drag_coefficient(double reynolds) {
@@ -38,4 +38,4 @@ double settling_speed(double diameter, double body_density, double fluid_density
   return speed;
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

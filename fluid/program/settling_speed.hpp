@@ -4,7 +4,7 @@
 
 #include "fluid/viscosity_model.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 // The terminal speed of a sphere of the body's volume, `diameter` = (6 V / pi)^(1/3), of
 // density `body_density` in a fluid of `fluid_density` and `viscosity` under gravity
@@ -16,4 +16,4 @@ namespace cosim::program {
 double settling_speed(double diameter, double body_density, double fluid_density,
                       const fluid::ViscosityModel& viscosity, double gravity);
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -9,7 +9,7 @@
 #include "coupler/participant/stage_summary.hpp"
 #include "coupler/participant/standalone.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 int run_fluid_standalone(const std::filesystem::path& scene_file, std::filesystem::path output) {
   FluidSolver solver(true);
@@ -21,4 +21,4 @@ int run_fluid_standalone(const std::filesystem::path& scene_file, std::filesyste
   });
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 
 // Writes `output` (empty: the scene's output.file) from rank 0; on the ranks of
 // PETSC_COMM_WORLD together. Returns the exit code (0 on rank 0: the lead throws instead).
@@ -13,4 +13,4 @@ namespace cosim::program {
 // initialised.
 int run_fluid_standalone(const std::filesystem::path& scene_file, std::filesystem::path output);
 
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "fluid/control_volumes.hpp"
-#include "rigidbody/geometry/queries.hpp"
+#include "geometry/queries.hpp"
 
 namespace cosim::fluid {
 

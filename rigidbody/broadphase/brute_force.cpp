@@ -4,7 +4,7 @@
 
 #include "rigidbody/broadphase/overlap.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 namespace {
 
@@ -30,4 +30,4 @@ std::vector<Pair> brute_force_pairs(std::span<const Object> objects, double marg
   return pairs;
 }
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

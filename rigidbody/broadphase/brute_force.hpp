@@ -6,9 +6,9 @@
 
 #include "rigidbody/broadphase/object.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 // All candidate pairs (see overlap.hpp), first < second, sorted.
 std::vector<Pair> brute_force_pairs(std::span<const Object> objects, double margin);
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

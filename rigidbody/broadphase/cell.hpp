@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 using Cell = std::array<std::int32_t, 3>;
 
@@ -34,4 +34,4 @@ inline bool same_cell(const Cell& a, const Cell& b) { return a[0] == b[0] && a[1
 
 inline Cell operator+(const Cell& a, const Cell& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 namespace {
 
@@ -126,4 +126,4 @@ std::size_t HashGrid::memory_bytes() const {
          occupied_.capacity() * sizeof(std::uint32_t) + walls_.capacity() * sizeof(Object) + levels_.memory_bytes();
 }
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

@@ -11,7 +11,7 @@
 #include "rigidbody/broadphase/levels.hpp"
 #include "rigidbody/broadphase/object.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 // Cells must be a little wider than the largest span on their level: then rounding in the
 // cell coordinates (relative error ~1e-16 times |x| / cell width <= 2^30) can never put two
@@ -99,4 +99,4 @@ class HashGrid {
   std::vector<Object> walls_;            // the infinite objects
 };
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

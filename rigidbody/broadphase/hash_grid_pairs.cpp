@@ -11,7 +11,7 @@
 #include "rigidbody/broadphase/neighbourhood.hpp"
 #include "rigidbody/broadphase/overlap.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 void HashGrid::scan(const Entry& a, std::uint32_t level, const Cell& cell, std::uint32_t first,
                     std::vector<Pair>& out) const {
@@ -52,4 +52,4 @@ void HashGrid::find_pairs(std::vector<Pair>& out) const {
   }
 }
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

@@ -13,7 +13,7 @@
 
 #include "rigidbody/broadphase/cell.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 class Layout {
  public:
@@ -62,4 +62,4 @@ class Layout {
   std::uint64_t offset_ = 0;
 };
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

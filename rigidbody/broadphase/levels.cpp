@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 Levels::Levels(double factor, double safety, double margin) : factor_(factor), safety_(safety), margin_(margin) {}
 
@@ -33,4 +33,4 @@ std::uint32_t Levels::level_of(double span) {
 
 std::size_t Levels::memory_bytes() const { return (size_.capacity() + inv_size_.capacity()) * sizeof(double); }
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 class Levels {
  public:
@@ -37,4 +37,4 @@ class Levels {
   std::vector<double> inv_size_;
 };
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

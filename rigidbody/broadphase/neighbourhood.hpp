@@ -6,7 +6,7 @@
 
 #include "rigidbody/broadphase/cell.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 struct Block {
   Cell home;  // the object's cell
@@ -53,4 +53,4 @@ void for_each_cell(const Block& block, bool half, Visit&& visit) {
   }
 }
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

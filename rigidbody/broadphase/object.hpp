@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 using Id = std::uint32_t;
 // A candidate pair; always first < second.
@@ -34,4 +34,4 @@ struct Object {
   std::optional<HalfSpace> half_space = std::nullopt;
 };
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

@@ -4,7 +4,7 @@
 
 #include "rigidbody/broadphase/object.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 
 inline Pair ordered_pair(Id a, Id b) { return a < b ? Pair{a, b} : Pair{b, a}; }
 
@@ -25,4 +25,4 @@ inline bool near_wall(const Object& wall, const Eigen::Vector3d& c, double r, do
   return !wall.half_space || sphere_near_half_space(*wall.half_space, c, r, margin);
 }
 
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

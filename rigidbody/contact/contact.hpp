@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-namespace cosim::contact {
+namespace cosim::rigidbody::contact {
 
 // One point of contact between bodies a and b, in world coordinates. The normal points
 // from a to b; `distance` is the signed gap along it (negative: penetration). Near
@@ -35,4 +35,4 @@ struct Manifold {
   }
 };
 
-}  // namespace cosim::contact
+}  // namespace cosim::rigidbody::contact

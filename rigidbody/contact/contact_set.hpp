@@ -10,7 +10,7 @@
 
 #include "rigidbody/contact/contact.hpp"
 
-namespace cosim::contact {
+namespace cosim::rigidbody::contact {
 
 struct PairContacts {
   std::uint32_t a = 0;
@@ -43,4 +43,4 @@ struct ContactSet {
   }
 };
 
-}  // namespace cosim::contact
+}  // namespace cosim::rigidbody::contact

@@ -2,7 +2,7 @@
 
 #include <Eigen/LU>
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 BodyInertia with_added(const BodyInertia& body, const AddedInertia& added, const Eigen::Quaterniond& q) {
   if (body.is_fixed() || added.empty()) return body;
@@ -20,4 +20,4 @@ BodyInertia with_added(const BodyInertia& body, const AddedInertia& added, const
   return out;
 }
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

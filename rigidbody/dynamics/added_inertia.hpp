@@ -13,7 +13,7 @@
 
 #include "rigidbody/dynamics/body.hpp"
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 struct AddedInertia {
   double mass = 0.0;                                             // kg, the same along every axis
@@ -29,4 +29,4 @@ struct AddedInertia {
 // on m alone (own_mass_fraction). A fixed body stays fixed.
 BodyInertia with_added(const BodyInertia& body, const AddedInertia& added, const Eigen::Quaterniond& q);
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

@@ -2,7 +2,7 @@
 
 #include <Eigen/LU>
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 BodyInertia BodyInertia::of(double mass, const Eigen::Matrix3d& inertia_body, bool rotates) {
   BodyInertia b;
@@ -18,4 +18,4 @@ Eigen::Matrix3d BodyInertia::inverse_inertia_world(const Eigen::Quaterniond& q) 
   return r * inverse_inertia_body * r.transpose();
 }
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 struct BodyState {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // of the centre of mass
@@ -43,4 +43,4 @@ struct Wrench {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
 };
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 Wrench WindowWrench::at(double t0, double t1, double s) const {
   // Equal ends (also a zero-length window) are held exactly, with no rounding from the weights.
@@ -20,4 +20,4 @@ Eigen::Vector3d BodyForces::acceleration(const BodyInertia& body) const {
   return body.own_mass_fraction * factor * g;
 }
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

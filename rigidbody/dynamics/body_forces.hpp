@@ -5,7 +5,7 @@
 
 #include "rigidbody/dynamics/body.hpp"
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 // The coupler's wrench on one body over a coupling window [t0, t1]: linearly interpolated
 // between the window's start and end values; held constant when they are equal.
@@ -30,4 +30,4 @@ struct BodyForces {
   Eigen::Vector3d acceleration(const BodyInertia& body) const;
 };
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

@@ -9,7 +9,7 @@
 #include "rigidbody/dynamics/leapfrog.hpp"
 #include "rigidbody/dynamics/semi_implicit_euler.hpp"
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 namespace {
 
 void check(std::span<BodyState> states, std::span<const BodyInertia> inertia, std::span<const WindowWrench> external,
@@ -103,4 +103,4 @@ void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia, 
   }
 }
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

@@ -7,7 +7,7 @@
 #include "rigidbody/dynamics/body.hpp"
 #include "rigidbody/dynamics/body_forces.hpp"
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 enum class Scheme {
   semi_implicit_euler,  // first order, implicit gyroscopic term; the default (semi_implicit_euler.hpp)
@@ -61,4 +61,4 @@ class Substeps {
 void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia, std::span<const WindowWrench> external,
              double t0, double t1, const IntegratorSettings& settings);
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

@@ -1,6 +1,6 @@
 #include "rigidbody/dynamics/invariants.hpp"
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 namespace {
 
 double mass(const BodyInertia& body) { return body.is_fixed() ? 0.0 : 1.0 / body.inverse_mass; }
@@ -39,4 +39,4 @@ Eigen::Vector3d angular_momentum(std::span<const BodyState> states, std::span<co
   return l;
 }
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

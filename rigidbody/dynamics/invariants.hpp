@@ -6,7 +6,7 @@
 
 #include "rigidbody/dynamics/body.hpp"
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 double kinetic_energy(const BodyState& state, const BodyInertia& body);
 double kinetic_energy(std::span<const BodyState> states, std::span<const BodyInertia> inertia);
@@ -21,4 +21,4 @@ Eigen::Vector3d spin_angular_momentum(const BodyState& state, const BodyInertia&
 Eigen::Vector3d angular_momentum(std::span<const BodyState> states, std::span<const BodyInertia> inertia,
                                  const Eigen::Vector3d& point = Eigen::Vector3d::Zero());
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

@@ -2,7 +2,7 @@
 
 #include "rigidbody/dynamics/rotation.hpp"
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 namespace {
 
 Eigen::Vector3d world_angular_momentum(const BodyState& state, const BodyInertia& body) {
@@ -31,4 +31,4 @@ void leapfrog_position(BodyState& state, const BodyState& start, const BodyInert
   state.angular_velocity = body.inverse_inertia_world(state.orientation) * l_end;
 }
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

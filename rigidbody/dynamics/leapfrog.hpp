@@ -13,7 +13,7 @@
 
 #include "rigidbody/dynamics/body.hpp"
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 // v += h (a + F / m); L = I(q) omega += h tau, omega = I(q)^-1 L. `wrench` at t + h/2.
 void leapfrog_velocity(BodyState& state, const BodyInertia& body, const Wrench& wrench,
@@ -23,4 +23,4 @@ void leapfrog_velocity(BodyState& state, const BodyInertia& body, const Wrench& 
 // omega = I(q_new)^-1 L. `start` is the state before leapfrog_velocity.
 void leapfrog_position(BodyState& state, const BodyState& start, const BodyInertia& body, double h);
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

@@ -2,7 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 Eigen::Quaterniond rotate_world(const Eigen::Quaterniond& q, const Eigen::Vector3d& theta) {
   const double angle = theta.norm();
@@ -37,4 +37,4 @@ Eigen::Quaterniond free_rotation(const Eigen::Quaterniond& q, const Eigen::Matri
   return (p * to_principal.conjugate()).normalized();
 }
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 // Rotates q by the world-frame rotation vector theta (the exponential map, exact for a
 // constant angular velocity over the step) and renormalises.
@@ -19,4 +19,4 @@ Eigen::Quaterniond rotate_world(const Eigen::Quaterniond& q, const Eigen::Vector
 Eigen::Quaterniond free_rotation(const Eigen::Quaterniond& q, const Eigen::Matrix3d& inertia_body,
                                  const Eigen::Vector3d& angular_momentum, double h);
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

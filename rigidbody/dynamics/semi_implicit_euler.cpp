@@ -4,7 +4,7 @@
 
 #include "rigidbody/dynamics/rotation.hpp"
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 namespace {
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
@@ -43,4 +43,4 @@ void semi_implicit_position(BodyState& state, const BodyInertia& body, double h)
   if (body.rotates) state.orientation = rotate_world(state.orientation, h * state.angular_velocity);
 }
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

@@ -5,7 +5,7 @@
 
 #include "rigidbody/dynamics/body.hpp"
 
-namespace cosim::dynamics {
+namespace cosim::rigidbody::dynamics {
 
 // v += h (a + F / m); omega gets the gyroscopic term implicitly, by one Newton step on
 // I (w' - w) + h w' x I w' = 0 in the body frame (E. Catto, "Numerical Methods", GDC 2015;
@@ -18,4 +18,4 @@ void semi_implicit_velocity(BodyState& state, const BodyInertia& body, const Wre
 // x += h v; q = exp(h omega) q, normalised.
 void semi_implicit_position(BodyState& state, const BodyInertia& body, double h);
 
-}  // namespace cosim::dynamics
+}  // namespace cosim::rigidbody::dynamics

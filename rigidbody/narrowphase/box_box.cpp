@@ -11,7 +11,7 @@
 #include "rigidbody/narrowphase/clip.hpp"
 #include "rigidbody/narrowphase/pairs.hpp"
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 namespace {
 
 struct Oriented {
@@ -108,4 +108,4 @@ void pair(const Box& a, const Pose& pa, const Box& b, const Pose& pb, Candidates
   }
 }
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

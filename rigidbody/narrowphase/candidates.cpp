@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 
 void keep_deepest(std::vector<contact::ContactPoint>& points, std::size_t count) {
   if (points.size() <= count) return;
@@ -42,4 +42,4 @@ void keep_spread(std::vector<contact::ContactPoint>& points) {
   points = std::move(kept);
 }
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

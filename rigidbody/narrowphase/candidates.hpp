@@ -8,7 +8,7 @@
 
 #include "rigidbody/contact/contact.hpp"
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 
 using Vec3 = Eigen::Vector3d;
 
@@ -30,4 +30,4 @@ void keep_deepest(std::vector<contact::ContactPoint>& points, std::size_t count)
 // area (as Bullet's btPersistentManifold::sortCachedPoints and ODE's cullPoints aim for).
 void keep_spread(std::vector<contact::ContactPoint>& points);
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

@@ -3,7 +3,7 @@
 
 #include "rigidbody/narrowphase/pairs.hpp"
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 namespace {
 
 struct Segment {
@@ -73,4 +73,4 @@ void pair(const HalfSpace& a, const Pose& pa, const Capsule& b, const Pose& pb, 
   }
 }
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 namespace {
 
 // How nearly a feature's plane is normal to n: |cos| for a face, -1 for a segment (a
@@ -91,4 +91,4 @@ void clip_features(const Feature& a, const Feature& b, const Vec3& n, Candidates
   }
 }
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

@@ -7,7 +7,7 @@
 
 #include "rigidbody/narrowphase/candidates.hpp"
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 
 // A convex polygon (vertices in order, either winding), a segment (2 points) or a point.
 using Polygon = std::vector<Vec3>;
@@ -34,4 +34,4 @@ struct Feature {
 // margin); a point feature or crossing segments give none.
 void clip_features(const Feature& a, const Feature& b, const Vec3& n, Candidates& out);
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

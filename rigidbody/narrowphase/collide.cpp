@@ -3,7 +3,7 @@
 
 #include "rigidbody/narrowphase/pairs.hpp"
 
-namespace cosim::narrowphase {
+namespace cosim::rigidbody::narrowphase {
 namespace {
 
 using namespace detail;
@@ -69,4 +69,4 @@ bool collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, dou
   return collide(a, pa, b, pb, margin, out, maps);
 }
 
-}  // namespace cosim::narrowphase
+}  // namespace cosim::rigidbody::narrowphase

@@ -7,7 +7,7 @@
 #include "rigidbody/narrowphase/gjk.hpp"
 #include "rigidbody/narrowphase/pairs.hpp"
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 namespace {
 
 struct CcdShape {
@@ -134,4 +134,4 @@ void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
   add_manifold(a, pa, b, pb, best.normal, best.on_a, -best.depth, 1e-6 * scale, out);
 }
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

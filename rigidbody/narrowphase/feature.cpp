@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 namespace {
 
 using geometry::Box;
@@ -76,4 +76,4 @@ Feature supporting_feature(const geometry::Shape& shape, const geometry::Pose& p
   return f;
 }
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

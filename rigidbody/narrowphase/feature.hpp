@@ -1,10 +1,10 @@
 // Internal: the feature (face, segment or point) by which a convex shape touches another.
 #pragma once
 
-#include "rigidbody/geometry/shape.hpp"
+#include "geometry/shape.hpp"
 #include "rigidbody/narrowphase/clip.hpp"
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 
 // The feature of a bounded convex shape facing `direction` (world): a box's or hull's face
 // whose normal is nearest the direction, a cylinder's cap (a regular octagon with a vertex
@@ -13,4 +13,4 @@ namespace cosim::narrowphase::detail {
 // smooth shape. Points in the world frame; every feature holds the support point.
 Feature supporting_feature(const geometry::Shape& shape, const geometry::Pose& pose, const Vec3& direction);
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
@@ -166,4 +166,4 @@ GjkResult gjk_distance(const geometry::Shape& a, const geometry::Pose& pa, const
   return result;
 }
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

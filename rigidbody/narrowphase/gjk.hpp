@@ -1,9 +1,9 @@
 // Internal: GJK distance between two bounded convex shapes (libccd has no distance query).
 #pragma once
 
-#include "rigidbody/geometry/shape.hpp"
+#include "geometry/shape.hpp"
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 
 struct GjkResult {
   bool overlap = false;  // the shapes touch or overlap (distance below the tolerance)
@@ -18,4 +18,4 @@ struct GjkResult {
 GjkResult gjk_distance(const geometry::Shape& a, const geometry::Pose& pa, const geometry::Shape& b,
                        const geometry::Pose& pb, double tolerance);
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

@@ -2,7 +2,7 @@
 
 #include "rigidbody/narrowphase/pairs.hpp"
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 namespace {
 
 // Points of b (world) against the plane of a: each within the margin is a contact, its
@@ -61,4 +61,4 @@ void pair(const HalfSpace& a, const Pose& pa, const Ellipsoid& b, const Pose& pb
   out.add(deepest - height * normal, normal, height, 0);
 }
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

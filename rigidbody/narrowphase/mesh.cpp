@@ -5,10 +5,10 @@
 #include <cmath>
 #include <vector>
 
-#include "rigidbody/geometry/queries.hpp"
+#include "geometry/queries.hpp"
 #include "rigidbody/narrowphase/pairs.hpp"
 
-namespace cosim::narrowphase {
+namespace cosim::rigidbody::narrowphase {
 
 const geometry::DistanceMap& MeshMaps::get(const geometry::TriangleMesh& mesh) {
   const void* key = &mesh.vertices();
@@ -118,4 +118,4 @@ void mesh_pair(const TriangleMesh& a, const Pose& pa, const Shape& b, const Pose
 }
 
 }  // namespace detail
-}  // namespace cosim::narrowphase
+}  // namespace cosim::rigidbody::narrowphase

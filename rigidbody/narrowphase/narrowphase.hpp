@@ -6,10 +6,10 @@
 #include <unordered_map>
 
 #include "rigidbody/contact/contact.hpp"
-#include "rigidbody/geometry/distance_map.hpp"
-#include "rigidbody/geometry/shape.hpp"
+#include "geometry/distance_map.hpp"
+#include "geometry/shape.hpp"
 
-namespace cosim::narrowphase {
+namespace cosim::rigidbody::narrowphase {
 
 // Distance maps of triangle meshes (body frame), built on first use and kept as long as
 // the cache lives. Entries are keyed by the mesh's shared data, which the cache keeps
@@ -47,4 +47,4 @@ bool collide(const geometry::Shape& a, const geometry::Pose& pa, const geometry:
 bool collide(const geometry::Shape& a, const geometry::Pose& pa, const geometry::Shape& b, const geometry::Pose& pb,
              double margin, contact::Manifold& out);
 
-}  // namespace cosim::narrowphase
+}  // namespace cosim::rigidbody::narrowphase

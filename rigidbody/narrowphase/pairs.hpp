@@ -5,11 +5,11 @@
 
 #include <concepts>
 
-#include "rigidbody/geometry/shape.hpp"
+#include "geometry/shape.hpp"
 #include "rigidbody/narrowphase/candidates.hpp"
 #include "rigidbody/narrowphase/narrowphase.hpp"
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 
 using geometry::Box;
 using geometry::Capsule;
@@ -54,4 +54,4 @@ void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
 // A mesh against any bounded shape (another mesh included), through distance maps.
 void mesh_pair(const TriangleMesh& a, const Pose& pa, const Shape& b, const Pose& pb, MeshMaps& maps, Candidates& out);
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

@@ -1,6 +1,6 @@
 #include "rigidbody/narrowphase/pairs.hpp"
 
-namespace cosim::narrowphase::detail {
+namespace cosim::rigidbody::narrowphase::detail {
 
 void pair(const Sphere& a, const Pose& pa, const Sphere& b, const Pose& pb, Candidates& out) {
   const Vec3 d = pb.position() - pa.position();
@@ -16,4 +16,4 @@ void pair(const HalfSpace& a, const Pose& pa, const Sphere& b, const Pose& pb, C
   out.add(pb.position() - height * normal, normal, height - b.radius(), 0);
 }
 
-}  // namespace cosim::narrowphase::detail
+}  // namespace cosim::rigidbody::narrowphase::detail

@@ -10,7 +10,7 @@
 #include "coupler/protocol/message.hpp"
 #include "rigidbody/program/scene_world.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 namespace {
 
 // The forces the fluid and the tracker send are the window's means (impulse over length),
@@ -119,4 +119,4 @@ std::vector<participant::PoseRow> RigidSolver::poses() const {
   return out;
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

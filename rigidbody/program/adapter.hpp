@@ -10,7 +10,7 @@
 #include "rigidbody/program/virtual_mass.hpp"
 #include "rigidbody/world/world.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 
 class RigidSolver final : public participant::Solver {
  public:
@@ -41,4 +41,4 @@ class RigidSolver final : public participant::Solver {
   world::StageSeconds stage_seconds_;
 };
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

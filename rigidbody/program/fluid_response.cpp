@@ -2,7 +2,7 @@
 
 #include "coupler/participant/robin.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 
 std::vector<dynamics::AddedInertia> added_inertia(std::span<const participant::ResponseRow> responses) {
   std::vector<dynamics::AddedInertia> out;
@@ -14,4 +14,4 @@ std::vector<dynamics::AddedInertia> added_inertia(std::span<const participant::R
   return out;
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

@@ -10,8 +10,8 @@
 #include "coupler/participant/body_rows.hpp"
 #include "rigidbody/dynamics/added_inertia.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 
 std::vector<dynamics::AddedInertia> added_inertia(std::span<const participant::ResponseRow> responses);
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

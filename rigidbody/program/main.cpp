@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   // The coupler prints participants' output among its own: say whose a warning is.
   spdlog::set_pattern("cosim-rigidbody: %^%l%$: %v");
   if (auto client = cosim::protocol::Client::from_environment()) {
-    cosim::program::RigidSolver solver;
+    cosim::rigidbody::program::RigidSolver solver;
     using cosim::scene::Data;
     // Able to take forces; the coupler sends them only if some participant produces them.
     return cosim::participant::run_participant(*client, solver, static_cast<std::uint32_t>(Data::Poses),
@@ -34,11 +34,12 @@ int main(int argc, char** argv) {
   return cosim::scene::exit_code("cosim-rigidbody", [&] {
     if (!args.check.empty()) {
       const cosim::scene::Scene scene = cosim::scene::load_scene(args.check);
-      const cosim::program::ProgramOptions options = cosim::program::program_options(scene);
-      cosim::program::make_world(scene, options);
-      if (!args.work.empty()) cosim::participant::write_work(args.work, cosim::program::rigid_work(scene, options));
+      const cosim::rigidbody::program::ProgramOptions options = cosim::rigidbody::program::program_options(scene);
+      cosim::rigidbody::program::make_world(scene, options);
+      if (!args.work.empty())
+        cosim::participant::write_work(args.work, cosim::rigidbody::program::rigid_work(scene, options));
     } else {
-      cosim::program::run_standalone(args.standalone, args.output);
+      cosim::rigidbody::program::run_standalone(args.standalone, args.output);
     }
     return 0;
   });

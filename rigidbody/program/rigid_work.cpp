@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 
 participant::WorkReport rigid_work(const scene::Scene& scene, const ProgramOptions& options) {
   const auto moving =
@@ -22,4 +22,4 @@ participant::WorkReport rigid_work(const scene::Scene& scene, const ProgramOptio
           .dt = split ? s.dt / s.soft.substeps : 0.0};
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

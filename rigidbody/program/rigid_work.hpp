@@ -6,10 +6,10 @@
 #include "coupler/scene/scene.hpp"
 #include "rigidbody/program/scene_world.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 
 // per_step {bodies: the scene's bodies that are not fixed}; held {bodies: the scene's bodies
 // and the domain faces made walls}; frame_bytes 0: the program writes no fields.
 participant::WorkReport rigid_work(const scene::Scene& scene, const ProgramOptions& options);
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

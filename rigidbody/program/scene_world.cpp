@@ -6,12 +6,12 @@
 
 #include <spdlog/spdlog.h>
 
-#include "rigidbody/program/scene_shape.hpp"
+#include "coupler/scene/geometry_shape.hpp"
 #include "coupler/scene/eigen.hpp"
 #include "coupler/scene/error.hpp"
 #include "coupler/scene/reader.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 namespace {
 
 using Eigen::Vector3d;
@@ -191,12 +191,12 @@ ProgramOptions program_options(const scene::Scene& scene) {
 world::Settings settings_of(const scene::Scene& scene) { return program_options(scene).settings; }
 
 world::BodyDesc body_of(const scene::Body& b, bool friction, bool convex_hull) {
-  world::BodyDesc d{.shape = shape_of(b.shape), .name = b.name};
+  world::BodyDesc d{.shape = scene::shape_of(b.shape), .name = b.name};
   d.state.orientation = scene::to_eigen(b.orientation);
-  d.state.position = scene::to_eigen(b.position) + d.state.orientation * com_shift(d.shape);
+  d.state.position = scene::to_eigen(b.position) + d.state.orientation * scene::com_shift(d.shape);
   if (convex_hull) {
     d.shape = hull_of(d.shape);
-    d.state.position += d.state.orientation * com_shift(d.shape);
+    d.state.position += d.state.orientation * scene::com_shift(d.shape);
   }
   d.state.velocity = scene::to_eigen(b.velocity);
   d.state.angular_velocity = scene::to_eigen(b.angular_velocity);
@@ -222,4 +222,4 @@ std::unique_ptr<world::World> make_world(const scene::Scene& scene, const Progra
   return w;
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

@@ -8,7 +8,7 @@
 #include "rigidbody/world/world.hpp"
 #include "coupler/scene/scene.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 
 struct ProgramOptions {
   world::Settings settings;
@@ -39,4 +39,4 @@ std::unique_ptr<world::World> make_world(const scene::Scene& scene);
 // The same with the options already read (a caller that needs them too reads them once).
 std::unique_ptr<world::World> make_world(const scene::Scene& scene, const ProgramOptions& options);
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

@@ -9,7 +9,7 @@
 #include "rigidbody/program/adapter.hpp"
 #include "coupler/scene/unused_materials.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 
 void run_standalone(const std::filesystem::path& scene_file, std::filesystem::path output) {
   const scene::Scene scene = scene::load_scene(scene_file);
@@ -21,4 +21,4 @@ void run_standalone(const std::filesystem::path& scene_file, std::filesystem::pa
                participant::stage_summary(world::kStageNames, solver.stage_seconds().all()).c_str());
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

@@ -4,10 +4,10 @@
 
 #include <filesystem>
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 
 // Runs the scene with no external forces and writes `output` (empty: the scene's
 // output.file). Throws SceneError for a bad scene, std::runtime_error otherwise.
 void run_standalone(const std::filesystem::path& scene_file, std::filesystem::path output);
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

@@ -4,7 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 
 std::vector<dynamics::WindowWrench> VirtualMass::blend(std::span<const dynamics::BodyInertia> inertia,
                                                        const dynamics::BodyForces& body_forces,
@@ -52,4 +52,4 @@ std::size_t VirtualMass::load(std::span<const double> in, std::size_t bodies) {
   return size;
 }
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

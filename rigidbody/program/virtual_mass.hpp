@@ -22,7 +22,7 @@
 #include "rigidbody/dynamics/body.hpp"
 #include "rigidbody/dynamics/body_forces.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 
 class VirtualMass {
  public:
@@ -48,4 +48,4 @@ class VirtualMass {
   std::vector<dynamics::Wrench> previous_;  // empty before the first window
 };
 
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 namespace {
 
@@ -114,4 +114,4 @@ Eigen::VectorXd ContactBlock::free_solution(const std::vector<int>& free, const 
   return z;
 }
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

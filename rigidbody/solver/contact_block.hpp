@@ -14,7 +14,7 @@
 
 #include "rigidbody/solver/contact_frame.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 class ContactBlock {
  public:
@@ -43,4 +43,4 @@ class ContactBlock {
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
 };
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

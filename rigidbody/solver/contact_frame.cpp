@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 namespace {
 
@@ -57,4 +57,4 @@ ContactFrame make_frame(const contact::PairContacts& m, const contact::ContactPo
   return f;
 }
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

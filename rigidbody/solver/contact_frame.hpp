@@ -10,7 +10,7 @@
 #include "rigidbody/contact/contact_set.hpp"
 #include "rigidbody/dynamics/body.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 // Inverse mass and world inverse inertia, evaluated once per step (orientation is fixed
 // while the solver runs).
@@ -60,4 +60,4 @@ struct ContactFrame {
 ContactFrame make_frame(const contact::PairContacts& pair, const contact::ContactPoint& p,
                         std::span<const dynamics::BodyState> states);
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

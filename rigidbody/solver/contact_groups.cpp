@@ -2,7 +2,7 @@
 
 #include <numeric>
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 namespace {
 
@@ -42,4 +42,4 @@ std::vector<std::vector<std::uint32_t>> contact_groups(std::span<const dynamics:
   return groups;
 }
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 namespace {
 
@@ -83,4 +83,4 @@ void ContactMemory::clear() {
   entries_.clear();
 }
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

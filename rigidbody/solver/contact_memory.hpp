@@ -12,7 +12,7 @@
 
 #include "rigidbody/contact/contact_set.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 // World-frame vectors, so a normal that turns a little between steps only needs the
 // stored vector projected onto the new tangent plane, not a matching tangent basis.
@@ -54,4 +54,4 @@ class ContactMemory {
   std::vector<Entry> entries_;
 };
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

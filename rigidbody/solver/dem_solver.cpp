@@ -8,7 +8,7 @@
 
 #include "rigidbody/solver/contact_frame.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 double damping_ratio(double restitution) {
   if (restitution <= 0.0) return 1.0;
@@ -87,4 +87,4 @@ DemReport solve_dem(const ContactScene& scene, std::span<CachedContact> memory, 
   return report;
 }
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

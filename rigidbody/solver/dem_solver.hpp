@@ -8,7 +8,7 @@
 #include "rigidbody/solver/contact_memory.hpp"
 #include "rigidbody/solver/problem.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 enum class NormalLaw {
   linear,  // F_n = k_n delta + c_n v
@@ -38,4 +38,4 @@ double damping_ratio(double restitution);
 // (zero for points that do not overlap, so a spring starts anew at each touch).
 DemReport solve_dem(const ContactScene& scene, std::span<CachedContact> memory, const DemOptions& options);
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -6,7 +6,7 @@
 #include "rigidbody/solver/contact_frame.hpp"
 #include "rigidbody/solver/contact_groups.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 ImpulseOptions ImpulseOptions::projected_gauss_seidel() {
   ImpulseOptions o;
@@ -180,4 +180,4 @@ SolveReport solve_impulses(const ContactScene& scene, std::span<CachedContact> m
   return total;
 }
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -7,7 +7,7 @@
 #include "rigidbody/solver/point_update.hpp"
 #include "rigidbody/solver/problem.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 enum class Schedule {
   gauss_seidel,  // each point's new impulse reaches the bodies at once
@@ -53,4 +53,4 @@ struct ImpulseOptions {
 // step's impulses on entry (used when warm starting), this step's on return.
 SolveReport solve_impulses(const ContactScene& scene, std::span<CachedContact> memory, const ImpulseOptions& options);
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -6,7 +6,7 @@
 
 #include "rigidbody/solver/contact_frame.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 void apply_lubrication(const ContactScene& scene, std::span<const double> radii, const LubricationOptions& options) {
   if (!options.active()) return;
@@ -30,4 +30,4 @@ void apply_lubrication(const ContactScene& scene, std::span<const double> radii,
   }
 }
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

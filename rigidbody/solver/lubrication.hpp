@@ -15,7 +15,7 @@
 
 #include "rigidbody/solver/problem.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 struct LubricationOptions {
   double viscosity = 0.0;  // mu of the liquid [Pa s]; 0: no film force
@@ -30,4 +30,4 @@ struct LubricationOptions {
 // radius of curvature (infinite for a plane).
 void apply_lubrication(const ContactScene& scene, std::span<const double> radii, const LubricationOptions& options);
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 enum class FrictionModel {
   pyramid,  // |lambda_t1|, |lambda_t2| <= mu lambda_n: a linear LCP, anisotropic
@@ -80,4 +80,4 @@ inline double velocity_change(const PointLaw& law, const Eigen::Vector3d& delta)
   return (law.response.diagonal().array() * delta.array().abs()).maxCoeff();
 }
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -7,7 +7,7 @@
 #include "rigidbody/dynamics/body.hpp"
 #include "rigidbody/solver/contact_frame.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 // Combined material of one body pair (the caller mixes the two bodies' values).
 struct Material {
@@ -32,4 +32,4 @@ struct SolveReport {
   bool converged = true;  // every group met the tolerance
 };
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -8,7 +8,7 @@
 #include "rigidbody/solver/contact_groups.hpp"
 #include "rigidbody/solver/contact_block.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 namespace {
 
@@ -237,4 +237,4 @@ void SoftStep::restitution(std::span<dynamics::BodyState> states) {
   }
 }
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -21,7 +21,7 @@
 #include "rigidbody/solver/problem.hpp"
 #include "rigidbody/solver/softness.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 struct SoftOptions {
   // Contact spring: natural frequency around the group's whole dynamic mass, so that at
@@ -124,4 +124,4 @@ class SoftStep {
   std::vector<Group> groups_;
 };
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

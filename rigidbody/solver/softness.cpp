@@ -2,7 +2,7 @@
 
 #include <numbers>
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 Softness make_softness(double hertz, double damping_ratio, double mass, double h) {
   if (hertz <= 0.0) return {};
@@ -11,4 +11,4 @@ Softness make_softness(double hertz, double damping_ratio, double mass, double h
   return {.bias_rate = omega / a1, .compliance = 1.0 / (mass * h * omega * a1)};
 }
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -4,7 +4,7 @@
 // so a solver that holds rigid contacts holds these with the same iteration.
 #pragma once
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 
 struct Softness {
   double bias_rate = 0.0;   // [1/s]: velocity asked per metre of penetration
@@ -17,4 +17,4 @@ struct Softness {
 // the ERP/CFM of ODE). hertz 0: rigid, no bias.
 Softness make_softness(double hertz, double damping_ratio, double mass, double h);
 
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 
 void ContactGraph::update(std::span<const broadphase::Pair> pairs) {
   edges_.assign(pairs.begin(), pairs.end());
@@ -14,4 +14,4 @@ std::span<solver::CachedContact> ContactGraph::recall() {
   return values_;
 }
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

@@ -9,7 +9,7 @@
 #include "rigidbody/contact/contact_set.hpp"
 #include "rigidbody/solver/contact_memory.hpp"
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 
 // One edge per candidate pair of the broad phase (bounding spheres within the contact
 // margin). An edge lives while the broad phase keeps reporting its pair and is dropped in
@@ -46,4 +46,4 @@ class ContactGraph {
   std::vector<solver::CachedContact> values_;  // one per point of contacts_
 };
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

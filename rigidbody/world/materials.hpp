@@ -3,7 +3,7 @@
 
 #include "rigidbody/solver/problem.hpp"
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 
 struct BodyMaterial {
   double friction = 0.5;     // Coulomb coefficient
@@ -16,4 +16,4 @@ struct BodyMaterial {
 // a ball with e = 1 dead on a floor with e = 0 (Box2D's b2MixRestitution).
 solver::Material combine(const BodyMaterial& a, const BodyMaterial& b);
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

@@ -7,7 +7,7 @@
 
 #include "rigidbody/world/stages.hpp"
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 
 struct StepReport {
   int substeps = 0;
@@ -25,4 +25,4 @@ struct StepReport {
   StageSeconds seconds;  // per stage, summed over the substeps
 };
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

@@ -7,7 +7,7 @@
 #include "rigidbody/solver/lubrication.hpp"
 #include "rigidbody/solver/soft_step.hpp"
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 
 enum class SolverKind {
   soft,                 // the soft step (settings in `soft`): the default, holds mass and size ratios
@@ -41,4 +41,4 @@ struct Settings {
   solver::SoftOptions soft_options() const;
 };
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

@@ -6,7 +6,7 @@
 
 #include "timing/stage_seconds.hpp"
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 
 enum class Stage {
   integrate_velocities,
@@ -22,4 +22,4 @@ inline constexpr std::array kStageNames{"integrate velocities", "broad phase",  
 using StageSeconds = timing::StageSeconds<Stage, kStageNames.size()>;
 using StageClock = timing::StageClock<StageSeconds>;
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

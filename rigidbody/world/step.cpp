@@ -8,7 +8,7 @@
 #include "rigidbody/dynamics/integrator.hpp"
 #include "rigidbody/world/world.hpp"
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 
 namespace {
 
@@ -145,4 +145,4 @@ void World::relax_contacts(StepReport& report, bool last) {
   if (last) graph_.remember();
 }
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

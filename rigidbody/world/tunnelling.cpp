@@ -5,9 +5,9 @@
 
 #include <fmt/format.h>
 
-#include "rigidbody/geometry/convex_hull.hpp"
+#include "geometry/convex_hull.hpp"
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 namespace {
 
 double width(const geometry::Shape& shape, const Eigen::Vector3d& n) {
@@ -86,4 +86,4 @@ std::optional<std::string> TunnellingWarnings::warning(std::span<const Tunnellin
   return summarise(risks, names_, dt);
 }
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "rigidbody/dynamics/body.hpp"
-#include "rigidbody/geometry/shape.hpp"
+#include "geometry/shape.hpp"
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 
 struct TunnellingRisk {
   std::uint32_t body = 0;
@@ -71,4 +71,4 @@ class TunnellingWarnings {
   double warned_excess_ = 0.0;
 };
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

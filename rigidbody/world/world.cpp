@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "rigidbody/geometry/mass_properties.hpp"
+#include "geometry/mass_properties.hpp"
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 
 solver::ImpulseOptions Settings::impulse_options() const {
   solver::ImpulseOptions o = solver == SolverKind::pgs      ? solver::ImpulseOptions::projected_gauss_seidel()
@@ -88,4 +88,4 @@ void World::check_tunnelling(double window, double substep, StepReport& report) 
   if (auto warning = tunnelling_.warning(risks, substep)) report.warnings.push_back(std::move(*warning));
 }
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

@@ -11,7 +11,7 @@
 #include "rigidbody/dynamics/added_inertia.hpp"
 #include "rigidbody/dynamics/body.hpp"
 #include "rigidbody/dynamics/body_forces.hpp"
-#include "rigidbody/geometry/shape.hpp"
+#include "geometry/shape.hpp"
 #include "rigidbody/narrowphase/narrowphase.hpp"
 #include "rigidbody/world/contact_graph.hpp"
 #include "rigidbody/world/materials.hpp"
@@ -19,7 +19,7 @@
 #include "rigidbody/world/settings.hpp"
 #include "rigidbody/world/tunnelling.hpp"
 
-namespace cosim::world {
+namespace cosim::rigidbody::world {
 
 struct BodyDesc {
   geometry::Shape shape;  // body frame, centre of mass at the origin
@@ -107,4 +107,4 @@ class World {
   narrowphase::MeshMaps mesh_maps_;
 };
 
-}  // namespace cosim::world
+}  // namespace cosim::rigidbody::world

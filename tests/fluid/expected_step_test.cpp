@@ -11,7 +11,7 @@
 #include "fluid/program/settling_speed.hpp"
 #include "fluid/time_step_controller.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 const fluid::ViscosityModel kOil = fluid::ViscosityModel::newtonian(0.058);
@@ -121,4 +121,4 @@ TEST(FluidWork, AFlowPastABodySpeedsUpByThePotentialFlowsFactor) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "fluid/staircase/fictitious_boundary.hpp"
-#include "rigidbody/geometry/queries.hpp"
+#include "geometry/queries.hpp"
 
 namespace cosim::fluid {
 namespace {

@@ -6,7 +6,7 @@
 #include "fluid/program/adapter.hpp"
 #include "tests/fluid/program_scenes.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 constexpr double kWindow = 0.05;
@@ -57,4 +57,4 @@ TEST(FluidRollback, RejectsAStateOfAnotherGrid) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -10,7 +10,7 @@
 #include "tests/fluid/program_scenes.hpp"
 #include "coupler/scene/error.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 using testing::oscillating_cylinder_scene;
@@ -200,4 +200,4 @@ TEST(FluidScene, RefusesAPlaneBody) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

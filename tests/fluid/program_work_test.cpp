@@ -14,7 +14,7 @@
 #include "tests/integration/standalone_run.hpp"
 #include "tests/integration/work_report_checks.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 namespace fs = std::filesystem;
@@ -135,4 +135,4 @@ TEST(FluidWork, TheProgramWritesTheReportWithCheck) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

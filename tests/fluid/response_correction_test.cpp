@@ -7,7 +7,7 @@
 
 #include "fluid/program/response_correction.hpp"
 
-namespace cosim::program {
+namespace cosim::fluid::program {
 namespace {
 
 constexpr double kWindow = 1e-3, kCell = 1e-3;
@@ -81,4 +81,4 @@ TEST(ResponseCorrection, RestoresWhatItLearnt) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::fluid::program

@@ -6,8 +6,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto file = cosim::fuzz::scratch_file(data, size, ".yaml");
   try {
-    cosim::dsmc::read_species(file);
-  } catch (const cosim::dsmc::SpeciesError&) {
+    cosim::tracker::dsmc::read_species(file);
+  } catch (const cosim::tracker::dsmc::SpeciesError&) {
   }
   return 0;
 }

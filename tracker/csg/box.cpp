@@ -3,7 +3,7 @@
 
 #include "tracker/csg/primitive.hpp"
 
-namespace cosim::csg::detail {
+namespace cosim::tracker::csg::detail {
 
 double box_indicator(const Eigen::Vector3d& p) { return p.cwiseAbs().maxCoeff() - 1.0; }
 
@@ -36,4 +36,4 @@ Chord box_chord(const Eigen::Vector3d& p, const Eigen::Vector3d& u) {
   return {in, out, 0.5 * (in + out)};
 }
 
-}  // namespace cosim::csg::detail
+}  // namespace cosim::tracker::csg::detail

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 // Where a line r(t) = r0 + v t is inside a convex primitive: the open interval (in, out),
 // possibly unbounded. Every primitive is convex, so one interval says everything the event
@@ -22,4 +22,4 @@ struct Chord {
   bool is_empty() const { return !(in < out); }
 };
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

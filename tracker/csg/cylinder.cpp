@@ -1,7 +1,7 @@
 #include "tracker/csg/detail/unit_ball_chord.hpp"
 #include "tracker/csg/primitive.hpp"
 
-namespace cosim::csg::detail {
+namespace cosim::tracker::csg::detail {
 
 double cylinder_indicator(const Eigen::Vector3d& p) { return p.head<2>().squaredNorm() - 1.0; }
 
@@ -13,4 +13,4 @@ Chord cylinder_chord(const Eigen::Vector3d& p, const Eigen::Vector3d& u) {
   return unit_ball_chord(Eigen::Vector2d(p.head<2>()), Eigen::Vector2d(u.head<2>()));
 }
 
-}  // namespace cosim::csg::detail
+}  // namespace cosim::tracker::csg::detail

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 namespace {
 
 // Outside the primitive: the entering root, clamped to 0 when the particle is already
@@ -70,4 +70,4 @@ Swept sweep(const Tree& tree, State state, const Eigen::Vector3d& x, const Eigen
   return out;
 }
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

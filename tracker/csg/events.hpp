@@ -7,7 +7,7 @@
 #include "tracker/csg/object.hpp"
 #include "tracker/csg/state.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 // The next change of a particle's logical state on its ballistic path r(t) = x + v t.
 // Every event flips one primitive's bit (enter or leave). When that flip changes whether the
@@ -66,4 +66,4 @@ struct Swept {
 };
 Swept sweep(const Tree& tree, State state, const Eigen::Vector3d& x, const Eigen::Vector3d& w);
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

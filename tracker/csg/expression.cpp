@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 Expression Expression::primitive(PrimitiveKind kind, const Eigen::Affine3d& placement) {
   // Checked now, where the mistake is made, not when an object is built from it.
@@ -35,4 +35,4 @@ Expression balanced(std::span<const Expression> parts, bool unite) {
 Expression Expression::unite(std::span<const Expression> parts) { return balanced(parts, true); }
 Expression Expression::intersect(std::span<const Expression> parts) { return balanced(parts, false); }
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

@@ -7,7 +7,7 @@
 
 #include "tracker/csg/primitive.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 // A CSG expression as the user writes it: primitives combined by union (|), intersection
 // (&), difference (-), complement (~) and affine transforms. Immutable and cheap to copy
@@ -51,4 +51,4 @@ class Expression {
   std::shared_ptr<const Node> node_;
 };
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

@@ -1,6 +1,6 @@
 #include "tracker/csg/primitive.hpp"
 
-namespace cosim::csg::detail {
+namespace cosim::tracker::csg::detail {
 
 double half_space_indicator(const Eigen::Vector3d& p) { return p.z(); }
 
@@ -15,4 +15,4 @@ Chord half_space_chord(const Eigen::Vector3d& p, const Eigen::Vector3d& u) {
   return {-Chord::inf, root, -Chord::inf};
 }
 
-}  // namespace cosim::csg::detail
+}  // namespace cosim::tracker::csg::detail

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 Object::Object(const Expression& expression, bool permeable, const Eigen::Isometry3d& pose)
     : tree_(expression), permeable_(permeable), pose_(Eigen::Isometry3d::Identity()) {
@@ -20,4 +20,4 @@ void Object::set_pose(const Eigen::Isometry3d& pose) {
 
 State Object::classify(const Eigen::Vector3d& x) const { return tree_.classify(x); }
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

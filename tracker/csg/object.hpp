@@ -6,7 +6,7 @@
 #include "tracker/csg/state.hpp"
 #include "tracker/csg/tree.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 // A CSG obstacle or zone: the normal-form tree of its expression (given in the object frame)
 // placed in the world by a rigid pose. A wall reflects or absorbs particles at its surface; a
@@ -36,4 +36,4 @@ class Object {
   Eigen::Isometry3d pose_;
 };
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

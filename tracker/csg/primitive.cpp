@@ -4,7 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 void require_invertible(const Eigen::Affine3d& affine) {
   const double det = affine.linear().determinant();
@@ -111,4 +111,4 @@ bool Primitive::surface_may_meet(const Eigen::AlignedBox3d& box) const {
   return true;
 }
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

@@ -4,7 +4,7 @@
 
 #include "tracker/csg/chord.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 // Each primitive is a canonical convex solid mapped by an invertible affine placement, so
 // scaled, sheared and rotated variants (ellipsoids, elliptic cylinders, parallelepipeds) cost
@@ -72,4 +72,4 @@ Eigen::Vector3d box_gradient(const Eigen::Vector3d& p);
 Chord box_chord(const Eigen::Vector3d& p, const Eigen::Vector3d& u);
 }  // namespace detail
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 namespace {
 
 Eigen::Vector3d unit(const Eigen::Vector3d& d, const char* what) {
@@ -59,4 +59,4 @@ Expression box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent
                                frame(centre, orientation.normalized().toRotationMatrix() * half_extents.asDiagonal()));
 }
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

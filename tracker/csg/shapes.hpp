@@ -4,7 +4,7 @@
 
 #include "tracker/csg/expression.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 // Builders for the primitives in the object frame. Throw std::invalid_argument on
 // non-positive sizes or zero directions.
@@ -21,4 +21,4 @@ Expression capped_cylinder(const Eigen::Vector3d& base, const Eigen::Vector3d& t
 Expression box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extents,
                const Eigen::Quaterniond& orientation = Eigen::Quaterniond::Identity());
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

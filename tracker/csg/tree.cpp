@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 Tree::Tree(const Expression& expression) : root_(normalise(expression, false, Eigen::Affine3d::Identity())) {}
 
@@ -135,4 +135,4 @@ int Tree::prune(const Tree& from, int index, const std::vector<int>& local, cons
   throw std::logic_error("csg: unknown tree node");
 }
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

@@ -7,7 +7,7 @@
 #include "tracker/csg/primitive.hpp"
 #include "tracker/csg/state.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 
 // The normal form of an expression: unions and intersections over literals, a literal being
 // a primitive or its complement. Differences become intersections with complements
@@ -70,4 +70,4 @@ class Tree {
   int root_ = -1;
 };
 
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

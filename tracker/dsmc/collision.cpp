@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 namespace {
 
 void check(bool ok, const std::string& what) {
@@ -110,4 +110,4 @@ void CollisionModel::scatter(Vec3& v1, Vec3& v2, Rng& rng) const {
   v2 = centre - 0.5 * g;
 }
 
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 
 using Vec3 = Eigen::Vector3d;
 
@@ -55,4 +55,4 @@ class CollisionModel {
   double inv_alpha_ = 1;
 };
 
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

@@ -7,7 +7,7 @@
 
 #include "tracker/constants.hpp"
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 
 // Drag coefficient of a sphere in a free-molecular stream of speed ratio s (stream speed
 // over sqrt(2 k T / m)), diffuse reflection with full accommodation at the wall temperature
@@ -29,4 +29,4 @@ inline double sphere_drag(double number_density, double mass, double speed, doub
          std::numbers::pi * radius * radius;
 }
 
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 
 double initial_sigma_g_max(const CollisionModel& model, double T) {
   return model.sigma_g(3 * std::sqrt(2 * boltzmann * T / (model.mass() / 2)));
@@ -88,4 +88,4 @@ CellCollisions collide_cell_nearest(std::span<Vec3> velocities, std::span<const 
   return result;
 }
 
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

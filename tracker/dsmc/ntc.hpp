@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <span>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 
 // What a cell carries from step to step.
 struct CellCollisionState {
@@ -45,4 +45,4 @@ CellCollisions collide_cell_nearest(std::span<Vec3> velocities, std::span<const 
                                     const CollisionModel& model, CellCollisionState& state, double volume, double fnum,
                                     double dt, Rng& rng);
 
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

@@ -8,7 +8,7 @@
 
 #include <cstdint>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 
 using Rng = pcg64;
 
@@ -21,4 +21,4 @@ inline double uniform(Rng& rng) { return static_cast<double>(rng() >> 11) * 0x1.
 // Uniform in (0, 1]: for logarithms and powers with negative exponents.
 inline double uniform_open0(Rng& rng) { return (static_cast<double>(rng() >> 11) + 1.0) * 0x1.0p-53; }
 
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

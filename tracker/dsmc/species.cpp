@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 namespace {
 
 [[noreturn]] void fail(const std::filesystem::path& file, const YAML::Mark& mark, const std::string& key,
@@ -118,4 +118,4 @@ SpeciesTable read_species(const std::filesystem::path& file) {
 
 std::filesystem::path default_species_file() { return COSIM_DSMC_SPECIES_FILE; }
 
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 
 using tracker::boltzmann;
 
@@ -56,4 +56,4 @@ SpeciesTable read_species(const std::filesystem::path& file);
 // The species file of the source tree (set by CMake).
 std::filesystem::path default_species_file();
 
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 namespace {
 
 Object sphere(Id id, double x, double r, bool fixed = false) {
@@ -49,4 +49,4 @@ TEST(BruteForce, HalfSpacesPairWithSpheresTouchingOrInsideThem) {
 }
 
 }  // namespace
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

@@ -8,7 +8,7 @@
 
 #include "rigidbody/broadphase/brute_force.hpp"
 
-namespace cosim::broadphase::testing {
+namespace cosim::rigidbody::broadphase::testing {
 
 std::size_t expect_brute_force_pairs(std::span<const Object> objects, const HashGridConfig& config) {
   HashGrid grid(config);
@@ -38,4 +38,4 @@ std::size_t expect_brute_force_pairs(std::span<const Object> objects, const Hash
   return pairs.size();
 }
 
-}  // namespace cosim::broadphase::testing
+}  // namespace cosim::rigidbody::broadphase::testing

@@ -9,7 +9,7 @@
 #include "rigidbody/broadphase/brute_force.hpp"
 #include "tests/rigidbody/broadphase/scenes.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 namespace {
 
 using testing::expect_brute_force_pairs;
@@ -124,4 +124,4 @@ TEST(HashGridEdges, AllFixedNothingPairs) {
 }
 
 }  // namespace
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

@@ -6,7 +6,7 @@
 
 #include "rigidbody/broadphase/hash_grid.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -41,4 +41,4 @@ TEST(HashGridInput, IgnoresTheSphereOfAnInfiniteObject) {
 }
 
 }  // namespace
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

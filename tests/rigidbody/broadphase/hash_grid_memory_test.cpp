@@ -7,7 +7,7 @@
 #include "rigidbody/broadphase/hash_grid.hpp"
 #include "tests/rigidbody/broadphase/scenes.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 namespace {
 
 TEST(HashGridMemory, TableSizeIsProportionalToTheObjectCount) {
@@ -52,4 +52,4 @@ TEST(HashGridMemory, LevelsOnlyWhereObjectsAre) {
 }
 
 }  // namespace
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

@@ -4,7 +4,7 @@
 #include "tests/rigidbody/broadphase/expect_pairs.hpp"
 #include "tests/rigidbody/broadphase/scenes.hpp"
 
-namespace cosim::broadphase {
+namespace cosim::rigidbody::broadphase {
 namespace {
 
 using testing::expect_brute_force_pairs;
@@ -97,4 +97,4 @@ TEST(HashGridScenes, Walls) {
 }
 
 }  // namespace
-}  // namespace cosim::broadphase
+}  // namespace cosim::rigidbody::broadphase

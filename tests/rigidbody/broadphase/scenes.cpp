@@ -6,7 +6,7 @@
 #include <numeric>
 #include <random>
 
-namespace cosim::broadphase::scenes {
+namespace cosim::rigidbody::broadphase::scenes {
 
 namespace {
 
@@ -93,4 +93,4 @@ std::vector<Object> polydisperse(std::size_t n, double phi, double ratio, std::u
   return with_shuffled_ids(std::move(objects), rng);
 }
 
-}  // namespace cosim::broadphase::scenes
+}  // namespace cosim::rigidbody::broadphase::scenes

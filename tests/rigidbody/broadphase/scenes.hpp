@@ -7,7 +7,7 @@
 
 #include "rigidbody/broadphase/object.hpp"
 
-namespace cosim::broadphase::scenes {
+namespace cosim::rigidbody::broadphase::scenes {
 
 struct Box {
   double lo;
@@ -29,4 +29,4 @@ std::vector<Object> packed(std::size_t n, double phi, std::uint32_t seed);
 // (overlaps allowed): a polydisperse bed.
 std::vector<Object> polydisperse(std::size_t n, double phi, double ratio, std::uint32_t seed);
 
-}  // namespace cosim::broadphase::scenes
+}  // namespace cosim::rigidbody::broadphase::scenes

@@ -9,7 +9,7 @@
 #include "rigidbody/dynamics/integrator.hpp"
 #include "tests/rigidbody/dynamics/bodies.hpp"
 
-namespace cosim::dynamics::test {
+namespace cosim::rigidbody::dynamics::test {
 namespace {
 
 // Gravity and buoyancy act on the body's own mass, the added mass only slows it:
@@ -60,4 +60,4 @@ TEST(AddedInertia, AFixedBodyStaysFixed) {
 }
 
 }  // namespace
-}  // namespace cosim::dynamics::test
+}  // namespace cosim::rigidbody::dynamics::test

@@ -1,9 +1,9 @@
 #include "tests/rigidbody/dynamics/bodies.hpp"
 
-#include "rigidbody/geometry/box.hpp"
-#include "rigidbody/geometry/mass_properties.hpp"
+#include "geometry/box.hpp"
+#include "geometry/mass_properties.hpp"
 
-namespace cosim::dynamics::test {
+namespace cosim::rigidbody::dynamics::test {
 
 BodyInertia box_body(const Eigen::Vector3d& half_extents, bool rotates) {
   const double density = 1000.0;
@@ -23,4 +23,4 @@ double angle_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
   return Eigen::AngleAxisd(a.conjugate() * b).angle();
 }
 
-}  // namespace cosim::dynamics::test
+}  // namespace cosim::rigidbody::dynamics::test

@@ -3,7 +3,7 @@
 
 #include "rigidbody/dynamics/integrator.hpp"
 
-namespace cosim::dynamics::test {
+namespace cosim::rigidbody::dynamics::test {
 
 // A uniform box of density 1000 with the given half extents; its principal axes are the
 // body axes, with moments ordered as the squared extents say.
@@ -16,4 +16,4 @@ BodyState run(BodyState state, const BodyInertia& body, Scheme scheme, double dt
 // Angle of the rotation between two orientations.
 double angle_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b);
 
-}  // namespace cosim::dynamics::test
+}  // namespace cosim::rigidbody::dynamics::test

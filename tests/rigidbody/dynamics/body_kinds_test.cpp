@@ -6,7 +6,7 @@
 
 #include "tests/rigidbody/dynamics/bodies.hpp"
 
-namespace cosim::dynamics::test {
+namespace cosim::rigidbody::dynamics::test {
 namespace {
 
 BodyState moving() {
@@ -95,4 +95,4 @@ TEST(BodyKinds, SubstepCountIsTheRatioRoundedUp) {
 }
 
 }  // namespace
-}  // namespace cosim::dynamics::test
+}  // namespace cosim::rigidbody::dynamics::test

@@ -6,7 +6,7 @@
 
 #include "tests/rigidbody/dynamics/bodies.hpp"
 
-namespace cosim::dynamics::test {
+namespace cosim::rigidbody::dynamics::test {
 namespace {
 
 struct Error {
@@ -47,4 +47,4 @@ TEST(Convergence, SemiImplicitEulerIsFirstOrder) {
 }
 
 }  // namespace
-}  // namespace cosim::dynamics::test
+}  // namespace cosim::rigidbody::dynamics::test

@@ -10,7 +10,7 @@
 #include "tests/rigidbody/dynamics/bodies.hpp"
 #include "rigidbody/dynamics/invariants.hpp"
 
-namespace cosim::dynamics::test {
+namespace cosim::rigidbody::dynamics::test {
 namespace {
 
 // Moments in the ratio 13 : 10 : 5 (x largest, y intermediate, z smallest).
@@ -137,4 +137,4 @@ TEST(FreeRotation, NonPrincipalBodyFrameGivesTheSameMotion) {
 }
 
 }  // namespace
-}  // namespace cosim::dynamics::test
+}  // namespace cosim::rigidbody::dynamics::test

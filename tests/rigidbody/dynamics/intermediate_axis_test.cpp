@@ -9,7 +9,7 @@
 
 #include "tests/rigidbody/dynamics/bodies.hpp"
 
-namespace cosim::dynamics::test {
+namespace cosim::rigidbody::dynamics::test {
 namespace {
 
 // Time between sign changes of the intermediate body-frame angular velocity, from the Euler
@@ -65,4 +65,4 @@ TEST(IntermediateAxis, SemiImplicitEulerFlipsToo) {
 }
 
 }  // namespace
-}  // namespace cosim::dynamics::test
+}  // namespace cosim::rigidbody::dynamics::test

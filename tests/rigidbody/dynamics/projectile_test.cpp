@@ -3,7 +3,7 @@
 
 #include "tests/rigidbody/dynamics/bodies.hpp"
 
-namespace cosim::dynamics::test {
+namespace cosim::rigidbody::dynamics::test {
 namespace {
 
 struct Projectile {
@@ -50,4 +50,4 @@ TEST(Projectile, OrientationIsUntouchedWithoutSpin) {
 }
 
 }  // namespace
-}  // namespace cosim::dynamics::test
+}  // namespace cosim::rigidbody::dynamics::test

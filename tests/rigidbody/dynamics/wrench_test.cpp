@@ -4,7 +4,7 @@
 #include "tests/rigidbody/dynamics/bodies.hpp"
 #include "rigidbody/dynamics/invariants.hpp"
 
-namespace cosim::dynamics::test {
+namespace cosim::rigidbody::dynamics::test {
 namespace {
 
 TEST(WindowWrench, InterpolatesLinearlyAndHoldsEqualEnds) {
@@ -34,4 +34,4 @@ TEST(WindowWrench, LinearRampGivesTheExactVelocityWithLeapfrog) {
 }
 
 }  // namespace
-}  // namespace cosim::dynamics::test
+}  // namespace cosim::rigidbody::dynamics::test

@@ -1,7 +1,7 @@
 // Known answers for the analytic pairs: distance, normal (from a to b) and points midway.
 #include "tests/rigidbody/narrowphase/support.hpp"
 
-namespace cosim::narrowphase::testing {
+namespace cosim::rigidbody::narrowphase::testing {
 namespace {
 
 using geometry::Box;
@@ -136,4 +136,4 @@ TEST(CylinderHalfSpace, StandingLyingAndTilted) {
 }
 
 }  // namespace
-}  // namespace cosim::narrowphase::testing
+}  // namespace cosim::rigidbody::narrowphase::testing

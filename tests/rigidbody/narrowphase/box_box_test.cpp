@@ -1,7 +1,7 @@
 // Box-box: separating axes, reference-face clipping, edge-edge points, near contacts.
 #include "tests/rigidbody/narrowphase/support.hpp"
 
-namespace cosim::narrowphase::testing {
+namespace cosim::rigidbody::narrowphase::testing {
 namespace {
 
 using geometry::Box;
@@ -96,4 +96,4 @@ TEST(BoxBox, RotatedStackKeepsFourPoints) {
 }
 
 }  // namespace
-}  // namespace cosim::narrowphase::testing
+}  // namespace cosim::rigidbody::narrowphase::testing

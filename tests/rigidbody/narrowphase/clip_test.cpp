@@ -2,7 +2,7 @@
 #include "rigidbody/narrowphase/clip.hpp"
 #include "tests/rigidbody/narrowphase/support.hpp"
 
-namespace cosim::narrowphase::testing {
+namespace cosim::rigidbody::narrowphase::testing {
 namespace {
 
 using detail::Candidates;
@@ -93,4 +93,4 @@ TEST(Clip, ParallelSegmentsOverlapAndCrossingOnesGiveNothing) {
 }
 
 }  // namespace
-}  // namespace cosim::narrowphase::testing
+}  // namespace cosim::rigidbody::narrowphase::testing

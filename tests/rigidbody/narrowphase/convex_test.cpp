@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <random>
 
-#include "tests/rigidbody/geometry/fixtures.hpp"
+#include "tests/geometry/fixtures.hpp"
 #include "rigidbody/narrowphase/pairs.hpp"
 #include "tests/rigidbody/narrowphase/support.hpp"
 
-namespace cosim::narrowphase::testing {
+namespace cosim::rigidbody::narrowphase::testing {
 namespace {
 
 using namespace geometry;
@@ -145,4 +145,4 @@ TEST(HalfSpacePairs, HullOfABoxMatchesTheBox) {
 }
 
 }  // namespace
-}  // namespace cosim::narrowphase::testing
+}  // namespace cosim::rigidbody::narrowphase::testing

@@ -3,7 +3,7 @@
 #include "rigidbody/narrowphase/pairs.hpp"
 #include "tests/rigidbody/narrowphase/support.hpp"
 
-namespace cosim::narrowphase::testing {
+namespace cosim::rigidbody::narrowphase::testing {
 namespace {
 
 using namespace geometry;
@@ -88,4 +88,4 @@ TEST(Manifold, TiltedShapesKeepTheExactDeepestPoint) {
 }
 
 }  // namespace
-}  // namespace cosim::narrowphase::testing
+}  // namespace cosim::rigidbody::narrowphase::testing

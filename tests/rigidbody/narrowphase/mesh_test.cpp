@@ -2,10 +2,10 @@
 // error bound (plus the faceting of the icosphere).
 #include <random>
 
-#include "tests/rigidbody/geometry/fixtures.hpp"
+#include "tests/geometry/fixtures.hpp"
 #include "tests/rigidbody/narrowphase/support.hpp"
 
-namespace cosim::narrowphase::testing {
+namespace cosim::rigidbody::narrowphase::testing {
 namespace {
 
 using namespace geometry;
@@ -90,4 +90,4 @@ TEST(Mesh, MapsAreBuiltOncePerMesh) {
 }
 
 }  // namespace
-}  // namespace cosim::narrowphase::testing
+}  // namespace cosim::rigidbody::narrowphase::testing

@@ -9,7 +9,7 @@
 
 #include "rigidbody/narrowphase/narrowphase.hpp"
 
-namespace cosim::narrowphase::testing {
+namespace cosim::rigidbody::narrowphase::testing {
 
 using Vec3 = Eigen::Vector3d;
 using geometry::Pose;
@@ -46,4 +46,4 @@ inline bool has_point(const contact::Manifold& m, const Vec3& position, double t
   return false;
 }
 
-}  // namespace cosim::narrowphase::testing
+}  // namespace cosim::rigidbody::narrowphase::testing

@@ -2,10 +2,10 @@
 // nothing is ever NaN.
 #include <random>
 
-#include "tests/rigidbody/geometry/fixtures.hpp"
+#include "tests/geometry/fixtures.hpp"
 #include "tests/rigidbody/narrowphase/support.hpp"
 
-namespace cosim::narrowphase::testing {
+namespace cosim::rigidbody::narrowphase::testing {
 namespace {
 
 using namespace geometry;
@@ -65,4 +65,4 @@ TEST(Symmetry, HalfSpaceAgainstEveryShape) {
 }
 
 }  // namespace
-}  // namespace cosim::narrowphase::testing
+}  // namespace cosim::rigidbody::narrowphase::testing

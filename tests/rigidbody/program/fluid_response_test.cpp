@@ -12,7 +12,7 @@
 #include "coupler/participant/robin.hpp"
 #include "rigidbody/program/adapter.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 namespace {
 
 constexpr double kFluidDensity = 1000, kRadius = 0.01, kWindow = 0.01, kG = 9.81;
@@ -151,4 +151,4 @@ TEST(FluidResponse, ARepeatedWindowConvergesToTheCoupledMotion) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

@@ -7,7 +7,7 @@
 
 #include "rigidbody/program/adapter.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 namespace {
 
 // A 0.1 m sphere 2 m above nothing, with gravity only.
@@ -81,4 +81,4 @@ TEST(Walls, TheDomainFacesHoldTheBodiesInAndAreNotExchanged) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

@@ -10,7 +10,7 @@
 #include "tests/integration/cosim_process.hpp"
 #include "tests/integration/standalone_run.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 namespace {
 
 namespace fs = std::filesystem;
@@ -84,4 +84,4 @@ TEST(RigidWork, TheProgramWritesTheReportWithCheck) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

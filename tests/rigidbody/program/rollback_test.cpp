@@ -5,7 +5,7 @@
 #include "coupler/protocol/message.hpp"
 #include "rigidbody/program/adapter.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 namespace {
 
 // Two boxes resting on a plane and a third falling onto them: contacts that persist over
@@ -68,4 +68,4 @@ TEST(Rollback, RejectsAMalformedState) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

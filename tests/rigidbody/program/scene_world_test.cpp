@@ -9,7 +9,7 @@
 #include "rigidbody/program/scene_world.hpp"
 #include "coupler/scene/error.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 namespace {
 
 using std::numbers::pi;
@@ -281,4 +281,4 @@ TEST(SceneWorld, ConvexHullsOfNonMeshesAreNamed) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

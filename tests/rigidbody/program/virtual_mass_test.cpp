@@ -8,7 +8,7 @@
 
 #include "rigidbody/program/virtual_mass.hpp"
 
-namespace cosim::program {
+namespace cosim::rigidbody::program {
 namespace {
 
 constexpr double kFluidDensity = 1000;
@@ -92,4 +92,4 @@ TEST(VirtualMass, SavedWrenchesRepeatTheBlend) {
 }
 
 }  // namespace
-}  // namespace cosim::program
+}  // namespace cosim::rigidbody::program

@@ -3,7 +3,7 @@
 
 #include "tests/rigidbody/solver/world.hpp"
 
-namespace cosim::solver::test {
+namespace cosim::rigidbody::solver::test {
 namespace {
 
 constexpr double kRadius = 0.5;
@@ -97,4 +97,4 @@ TEST(NewtonsCradle, SimultaneousRestitutionMovesTheChainAsOne) {
 }
 
 }  // namespace
-}  // namespace cosim::solver::test
+}  // namespace cosim::rigidbody::solver::test

@@ -3,7 +3,7 @@
 
 #include "rigidbody/solver/contact_groups.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 namespace {
 
 contact::PairContacts between(std::uint32_t a, std::uint32_t b) { return {.a = a, .b = b, .count = 1}; }
@@ -43,4 +43,4 @@ TEST(ContactGroups, FixedPairsBelongNowhere) {
 }
 
 }  // namespace
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

@@ -7,7 +7,7 @@
 
 #include "tests/rigidbody/solver/world.hpp"
 
-namespace cosim::solver::test {
+namespace cosim::rigidbody::solver::test {
 namespace {
 
 const Eigen::Vector3d kHalf(0.1, 0.1, 0.1);
@@ -111,4 +111,4 @@ TEST(InclineDem, SticksAndSlidesApproximately) {
 }
 
 }  // namespace
-}  // namespace cosim::solver::test
+}  // namespace cosim::rigidbody::solver::test

@@ -3,7 +3,7 @@
 
 #include "rigidbody/solver/point_update.hpp"
 
-namespace cosim::solver {
+namespace cosim::rigidbody::solver {
 namespace {
 
 // Iterates one point to its fixed point, as a solver with only this point would.
@@ -40,4 +40,4 @@ TEST(PointUpdate, ConeOpposesSlipWithUnequalResponse) {
 }
 
 }  // namespace
-}  // namespace cosim::solver
+}  // namespace cosim::rigidbody::solver

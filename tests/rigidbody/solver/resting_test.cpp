@@ -8,7 +8,7 @@
 
 #include "tests/rigidbody/solver/world.hpp"
 
-namespace cosim::solver::test {
+namespace cosim::rigidbody::solver::test {
 namespace {
 
 constexpr double kRadius = 0.5;
@@ -104,4 +104,4 @@ TEST(RestingSphereDem, EstimatesStableStepAndWarns) {
 }
 
 }  // namespace
-}  // namespace cosim::solver::test
+}  // namespace cosim::rigidbody::solver::test

@@ -5,7 +5,7 @@
 
 #include "tests/rigidbody/solver/world.hpp"
 
-namespace cosim::solver::test {
+namespace cosim::rigidbody::solver::test {
 namespace {
 
 TEST(WarmStart, ReducesIterationsOnRestingBox) {
@@ -109,4 +109,4 @@ INSTANTIATE_TEST_SUITE_P(Impulses, MassRatioStopping, ::testing::Values(kPgs, kS
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
-}  // namespace cosim::solver::test
+}  // namespace cosim::rigidbody::solver::test

@@ -4,7 +4,7 @@
 #include <array>
 #include <numeric>
 
-namespace cosim::solver::test {
+namespace cosim::rigidbody::solver::test {
 
 std::uint32_t World::add_fixed() {
   states.emplace_back();
@@ -113,4 +113,4 @@ void keep(std::vector<contact::Manifold>& out, const contact::Manifold& m) {
   if (m.count > 0) out.push_back(m);
 }
 
-}  // namespace cosim::solver::test
+}  // namespace cosim::rigidbody::solver::test

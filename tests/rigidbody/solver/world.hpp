@@ -10,7 +10,7 @@
 #include "rigidbody/solver/impulse_solver.hpp"
 #include "rigidbody/solver/problem.hpp"
 
-namespace cosim::solver::test {
+namespace cosim::rigidbody::solver::test {
 
 inline const Eigen::Vector3d kGravity{0.0, 0.0, -9.81};
 
@@ -69,4 +69,4 @@ contact::Manifold box_plane(const Plane& plane, std::uint32_t box, const Eigen::
 // Appends m if it has points.
 void keep(std::vector<contact::Manifold>& out, const contact::Manifold& m);
 
-}  // namespace cosim::solver::test
+}  // namespace cosim::rigidbody::solver::test

@@ -6,7 +6,7 @@
 #include "tests/rigidbody/world/stack_check.hpp"
 
 int main(int argc, char** argv) {
-  using namespace cosim::world::test;
+  using namespace cosim::rigidbody::world::test;
   const int steps = argc > 1 ? std::atoi(argv[1]) : 10000;
   const StackResult r = run_box_stack(steps, argc > 2 ? std::atoi(argv[2]) : 0);
   std::printf("boxes %d  steps %d  box %.3g m\n", kStackBoxes, steps, r.box_size);

@@ -3,7 +3,7 @@
 
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 TEST(ContactOff, NoBroadPhaseAndBodiesFallThrough) {
@@ -40,4 +40,4 @@ TEST(ContactOff, SingleBodySkipsTheGraph) {
 }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -8,7 +8,7 @@
 #include "rigidbody/narrowphase/narrowphase.hpp"
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 using Eigen::Vector3d;
@@ -144,4 +144,4 @@ TEST(ConvexResting, TiltedDropsSettleOnAFlatSide) {
 }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -4,7 +4,7 @@
 #include "rigidbody/dynamics/invariants.hpp"
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 // Guards against: the impulse of a touching chain being smeared over all balls, or energy gained or lost.
@@ -34,4 +34,4 @@ TEST(Cradle, MomentumPassesThroughAndEnergyIsKept) {
 }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

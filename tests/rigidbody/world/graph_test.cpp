@@ -7,7 +7,7 @@
 
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 TEST(ContactGraph, KeepsEdgesSortedAndDropsThoseNoLongerReported) {
@@ -92,4 +92,4 @@ TEST(World, RejectsAMovingHalfSpaceAndMasslessBodies) {
 }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 
 namespace {
 
@@ -82,4 +82,4 @@ StackExtremes run_at_rest(World& world, int steps) {
   return e;
 }
 
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -7,7 +7,7 @@
 
 #include "rigidbody/world/world.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 
 struct HardStack {
   std::string name;
@@ -28,4 +28,4 @@ struct StackExtremes {
 // Steps `world` (already built) `steps` times by its dt, tracking the extremes.
 StackExtremes run_at_rest(World& world, int steps);
 
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -6,7 +6,7 @@
 
 #include "tests/rigidbody/world/hard_stack.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 class HardStacks : public ::testing::TestWithParam<std::size_t> {};
@@ -28,4 +28,4 @@ INSTANTIATE_TEST_SUITE_P(HardCases, HardStacks, ::testing::Range<std::size_t>(0,
                          [](const auto& info) { return hard_stacks()[info.param].id; });
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -9,7 +9,7 @@
 
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 constexpr double mu = 0.058, a = 0.0075, density = 1120.0, range = 2.5e-3;
@@ -113,4 +113,4 @@ TEST(Lubrication, NoForceBeyondTheRangeOrAlongTheWall) {
 }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -11,7 +11,7 @@
 
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 struct Extremes {
@@ -90,4 +90,4 @@ TEST(MassRatio, TheStepReportSaysHowManyIterationsEachStepNeeded) {
 TEST(MassRatio, LightBoxOnAHeavyOneStaysPut) { expect_stable(run_stack(10000.0, 10.0, 3000, 0)); }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

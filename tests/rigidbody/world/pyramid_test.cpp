@@ -5,7 +5,7 @@
 
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 // Rigid contacts (SI) never add energy. Soft ones (the default) store some in their springs,
@@ -53,4 +53,4 @@ INSTANTIATE_TEST_SUITE_P(Settling, Pyramid, ::testing::Values(SolverKind::soft, 
                          });
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -5,7 +5,7 @@
 
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 constexpr double kRadius = 0.1;
@@ -70,4 +70,4 @@ INSTANTIATE_TEST_SUITE_P(Resting, TouchingAtStart, ::testing::Values(SolverKind:
                          });
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

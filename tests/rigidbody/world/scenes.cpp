@@ -2,7 +2,7 @@
 
 #include "rigidbody/dynamics/invariants.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 
 std::uint32_t add_ground(World& world, const BodyMaterial& material) {
   return world.add({.shape = geometry::HalfSpace(Eigen::Vector3d::UnitZ()), .material = material, .fixed = true});
@@ -39,4 +39,4 @@ double total_energy(const World& world) {
   return e;
 }
 
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -6,7 +6,7 @@
 
 #include "rigidbody/world/world.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 
 // The fixed floor z <= 0.
 std::uint32_t add_ground(World& world, const BodyMaterial& material = {});
@@ -22,4 +22,4 @@ std::vector<std::uint32_t> add_box_stack(World& world, int count, double half);
 // Kinetic plus gravitational potential energy (g from the world's settings).
 double total_energy(const World& world);
 
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -6,7 +6,7 @@
 
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 constexpr double kRadius = 0.05;
@@ -65,4 +65,4 @@ TEST(SoftReport, APileSaysItIsNotSettledAndLessSoWithMoreSweeps) {
 }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -6,7 +6,7 @@
 
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 constexpr double kRadius = 0.05;
@@ -90,4 +90,4 @@ TEST(SoftSubsteps, TheLubricationFilmGetsANarrowPhaseEverySubstep) {
 TEST(SoftSubsteps, FewerThanOneIsRefused) { EXPECT_THROW(World({.soft = {.substeps = 0}}), std::invalid_argument); }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

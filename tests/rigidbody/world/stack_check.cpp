@@ -4,7 +4,7 @@
 
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 
 StackResult run_box_stack(int steps, int iterations) {
   constexpr double kHalf = 0.1;
@@ -32,4 +32,4 @@ StackResult run_box_stack(int steps, int iterations) {
   return r;
 }
 
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -1,7 +1,7 @@
 // The box-stack scene and its measurements, shared by the test and bench_box_stack.
 #pragma once
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 
 inline constexpr int kStackBoxes = 10;
 inline constexpr int kStackTestSteps = 10000;
@@ -22,4 +22,4 @@ struct StackResult {
 // `iterations` per step (0: the preset's).
 StackResult run_box_stack(int steps, int iterations = 0);
 
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

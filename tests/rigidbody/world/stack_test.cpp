@@ -4,7 +4,7 @@
 
 #include "tests/rigidbody/world/stack_check.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 // Guards against: a tall resting stack creeping sideways or exploding over a long run.
@@ -18,4 +18,4 @@ TEST(Stack, TenBoxesRestWithoutDriftOrExplosion) {
 }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

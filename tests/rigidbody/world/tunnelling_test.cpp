@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "rigidbody/geometry/convex_hull.hpp"
+#include "geometry/convex_hull.hpp"
 #include "rigidbody/world/tunnelling.hpp"
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 using Eigen::Vector3d;
@@ -168,4 +168,4 @@ TEST(Tunnelling, BallThroughAThinPlateIsFlaggedAndStopsAtTheSuggestedDt) {
 }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

@@ -3,7 +3,7 @@
 
 #include "tests/rigidbody/world/scenes.hpp"
 
-namespace cosim::world::test {
+namespace cosim::rigidbody::world::test {
 namespace {
 
 TEST(Wrench, ExternalForceBalancingGravityHolds) {
@@ -19,4 +19,4 @@ TEST(Wrench, ExternalForceBalancingGravityHolds) {
 }
 
 }  // namespace
-}  // namespace cosim::world::test
+}  // namespace cosim::rigidbody::world::test

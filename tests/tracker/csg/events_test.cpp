@@ -8,7 +8,7 @@
 #include "tracker/csg/events.hpp"
 #include "tracker/csg/shapes.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 namespace {
 
 // Follows x + v t for `duration` and returns the events that happened.
@@ -129,4 +129,4 @@ TEST(Events, ComplementedLiteralHasTheInwardNormal) {
 }
 
 }  // namespace
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

@@ -8,7 +8,7 @@
 
 #include "tracker/csg/events.hpp"
 
-namespace cosim::csg::testing {
+namespace cosim::tracker::csg::testing {
 
 // A particle flying ballistically in the box [lo, hi]^3 with specular box walls, reflected
 // specularly by the object's wall boundaries and counted through permeable ones.
@@ -75,4 +75,4 @@ inline int expect_state_matches(const Object& object, State state, const Eigen::
   return close;
 }
 
-}  // namespace cosim::csg::testing
+}  // namespace cosim::tracker::csg::testing

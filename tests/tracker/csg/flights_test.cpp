@@ -8,7 +8,7 @@
 #include "tests/tracker/csg/flight.hpp"
 #include "tracker/csg/shapes.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 namespace {
 
 // Guards against: the CSG state drifting from the truth after 1e5 reflections.
@@ -38,4 +38,4 @@ TEST(Flights, StateAgreesWithDirectEvaluationAfterManyReflections) {
 }
 
 }  // namespace
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

@@ -8,7 +8,7 @@
 #include "tests/tracker/csg/flight.hpp"
 #include "tracker/csg/shapes.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 namespace {
 
 TEST(Moving, SweptStatesMatchTheNewPose) {
@@ -55,4 +55,4 @@ TEST(Moving, SmallRotationsKeepStatesAwayFromTheSurface) {
 }
 
 }  // namespace
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

@@ -8,7 +8,7 @@
 #include "tracker/csg/shapes.hpp"
 #include "tracker/csg/tree.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 namespace {
 
 const Primitive& only(const Object& o) { return o.tree().primitives().front(); }
@@ -163,4 +163,4 @@ TEST(Primitive, BoundsHoldTheSolid) {
 }
 
 }  // namespace
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

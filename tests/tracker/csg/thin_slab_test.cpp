@@ -8,7 +8,7 @@
 #include "tests/tracker/csg/flight.hpp"
 #include "tracker/csg/shapes.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 namespace {
 
 Expression slab() { return half_space({1 + 1e-14, 0, 0}, {1, 0, 0}) & half_space({1, 0, 0}, {-1, 0, 0}); }
@@ -40,4 +40,4 @@ TEST(ThinSlab, ParticlesCrossAPermeableSlab) { run(true); }
 TEST(ThinSlab, ParticlesBounceOffAWallSlab) { run(false); }
 
 }  // namespace
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

@@ -8,7 +8,7 @@
 #include "tests/tracker/csg/flight.hpp"
 #include "tracker/csg/shapes.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 namespace {
 
 const std::array<Eigen::Vector3d, 3> centres = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1.2, 0, 0),
@@ -63,4 +63,4 @@ TEST(ThreeBalls, UnionHitsLieOnTheUnionSurface) { check_hits(false); }
 TEST(ThreeBalls, IntersectionHitsLieOnTheIntersectionSurface) { check_hits(true); }
 
 }  // namespace
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

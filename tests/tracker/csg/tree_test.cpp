@@ -6,7 +6,7 @@
 #include "tracker/csg/object.hpp"
 #include "tracker/csg/shapes.hpp"
 
-namespace cosim::csg {
+namespace cosim::tracker::csg {
 namespace {
 
 bool in_ball(const Eigen::Vector3d& x, const Eigen::Vector3d& c, double r) { return (x - c).norm() < r; }
@@ -75,4 +75,4 @@ TEST(Tree, LongUnionsStayShallow) {
 }
 
 }  // namespace
-}  // namespace cosim::csg
+}  // namespace cosim::tracker::csg

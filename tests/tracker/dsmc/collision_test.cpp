@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 namespace {
 
 const double pi = std::numbers::pi;
@@ -115,4 +115,4 @@ TEST(CollisionModel, IsotropicScattering) {
 }
 
 }  // namespace
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-namespace cosim::dsmc::test {
+namespace cosim::tracker::dsmc::test {
 
 // N velocities of a Maxwellian at temperature T with drift `drift`, shifted and scaled so
 // that the sample has exactly that mean and thermal energy (3/2) (N - 1) k T; the
@@ -30,4 +30,4 @@ inline std::vector<Vec3> maxwellian(std::size_t n, double mass, const Vec3& T_ax
   return v;
 }
 
-}  // namespace cosim::dsmc::test
+}  // namespace cosim::tracker::dsmc::test

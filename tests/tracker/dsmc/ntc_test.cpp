@@ -7,7 +7,7 @@
 #include <iostream>
 #include <numbers>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 namespace {
 
 struct Rate {
@@ -126,9 +126,9 @@ TEST(Ntc, Reproducible) {
 }
 
 }  // namespace
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 namespace {
 
 // Nearest-neighbour selection: two clusters far apart, each moving as a block (all
@@ -184,4 +184,4 @@ TEST(NtcNearest, EquilibriumRate) {
 }
 
 }  // namespace
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

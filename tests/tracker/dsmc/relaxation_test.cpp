@@ -8,7 +8,7 @@
 #include <iostream>
 #include <numbers>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 namespace {
 
 struct Stats {
@@ -113,4 +113,4 @@ TEST(Relaxation, MonoenergeticToMaxwellian) {
 }
 
 }  // namespace
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

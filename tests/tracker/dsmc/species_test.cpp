@@ -9,7 +9,7 @@
 #include <fstream>
 #include <numbers>
 
-namespace cosim::dsmc {
+namespace cosim::tracker::dsmc {
 namespace {
 
 TEST(Species, DefaultFileHoldsBirdsValues) {
@@ -140,4 +140,4 @@ TEST(Species, UnknownSpeciesNamesTheFileAndTheKnownOnes) {
 }
 
 }  // namespace
-}  // namespace cosim::dsmc
+}  // namespace cosim::tracker::dsmc

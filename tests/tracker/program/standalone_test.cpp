@@ -189,9 +189,9 @@ TEST(TrackerStandalone, WritesTheLastStepWithoutFieldsEveryAndNoObstacles) {
   EXPECT_EQ(s.remaining, 64u);
   EXPECT_TRUE(std::filesystem::exists(out("bare.xmf")));
   // The step's stages timed: moves and sorts took time, collisions none (there are none).
-  EXPECT_GT(s.stages.seconds(Stage::move), 0.0);
-  EXPECT_GT(s.stages.seconds(Stage::sort), 0.0);
-  EXPECT_EQ(s.stages.seconds(Stage::collide), 0.0);
+  EXPECT_GT(s.stages[Stage::move], 0.0);
+  EXPECT_GT(s.stages[Stage::sort], 0.0);
+  EXPECT_EQ(s.stages[Stage::collide], 0.0);
   double stages = 0;
   for (std::size_t k = 0; k < kStageNames.size(); ++k) stages += s.stages[static_cast<Stage>(k)];
   EXPECT_LE(stages + s.setup_seconds, s.wall_seconds);

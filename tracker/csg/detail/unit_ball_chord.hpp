@@ -5,7 +5,7 @@
 
 #include "tracker/csg/chord.hpp"
 
-namespace cosim::csg::detail {
+namespace cosim::tracker::csg::detail {
 
 // Chord of the line p + t u through the open unit ball |x| < 1, in 2D (the cylinder's
 // cross-section) or 3D. The discriminant is taken from the distance of the line to the
@@ -30,4 +30,4 @@ Chord unit_ball_chord(const Vec& p, const Vec& u) {
   return {in, out, std::clamp(closest, in, out)};
 }
 
-}  // namespace cosim::csg::detail
+}  // namespace cosim::tracker::csg::detail
