@@ -9,12 +9,13 @@
 
 namespace cosim::bench {
 
-using Flight = tracker::testing::Flight;
+using Flight = tracker::tracking::testing::Flight;
 
-std::vector<Flight> hard_moves(const tracker::Mesh& mesh, int count, tracker::Random& random);
+std::vector<Flight> hard_moves(const tracker::mesh::Mesh& mesh, int count, tracker::tracking::Random& random);
 
 // Straight flights for timing: a uniform random point of the box in the cell that holds it,
 // an isotropic unit velocity, and a flight of `length` (walls reflect).
-std::vector<Flight> traversals(const tracker::Domain& domain, int count, double length, tracker::Random& random);
+std::vector<Flight> traversals(const tracker::tracking::Domain& domain, int count, double length,
+                               tracker::tracking::Random& random);
 
 }  // namespace cosim::bench

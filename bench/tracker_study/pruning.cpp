@@ -38,14 +38,14 @@ constexpr Published published[] = {
     {"64^3", 0.122, 2.70e6, 7.93e4, 44.5, 8},
 };
 
-tracker::Mesh unit_box(int cells) {
-  tracker::BoxSpec spec;
-  for (tracker::AxisSpacing& axis : spec.axes) axis.cells = cells;
-  return tracker::box_mesh(spec);
+tracker::mesh::Mesh unit_box(int cells) {
+  tracker::mesh::BoxSpec spec;
+  for (tracker::mesh::AxisSpacing& axis : spec.axes) axis.cells = cells;
+  return tracker::mesh::box_mesh(spec);
 }
 
-std::vector<tracker::Obstacle> cluster_walls() {
-  std::vector<tracker::Obstacle> walls;
+std::vector<tracker::tracking::Obstacle> cluster_walls() {
+  std::vector<tracker::tracking::Obstacle> walls;
   for (const std::vector<Ball>& group : groups_of(sphere_cluster(), 64)) {
     std::vector<tracker::csg::Expression> parts;
     for (const Ball& b : group) parts.push_back(tracker::csg::ball(b.centre, b.radius));
@@ -62,19 +62,20 @@ struct Row {
   double primitives = 0;  // per bounding cell, all objects
   int max_primitives = 0;
   double setup_s = 0, run_s = 0;
-  tracker::MoveTally tally;
+  tracker::tracking::MoveTally tally;
 };
 
-Row run_grid(const tracker::Mesh& mesh, const std::vector<tracker::Obstacle>& walls, int n, const PruningOptions& o) {
+Row run_grid(const tracker::mesh::Mesh& mesh, const std::vector<tracker::tracking::Obstacle>& walls, int n,
+             const PruningOptions& o) {
   using clock = std::chrono::steady_clock;
   Row row;
   row.grid = n;
-  const tracker::Mesh grid = unit_box(n);
-  const tracker::PointLocator locator(grid);
+  const tracker::mesh::Mesh grid = unit_box(n);
+  const tracker::mesh::PointLocator locator(grid);
   std::vector<Index> bounding(static_cast<std::size_t>(mesh.cell_count()));
   for (Index c = 0; c < mesh.cell_count(); ++c) bounding[c] = locator.locate(mesh.centroid[c]);
   const auto t0 = clock::now();
-  const tracker::Obstacles obstacles(mesh, walls, grid, bounding);
+  const tracker::tracking::Obstacles obstacles(mesh, walls, grid, bounding);
   row.setup_s = std::chrono::duration<double>(clock::now() - t0).count();
   for (Index b = 0; b < grid.cell_count(); ++b) {
     int sum = 0;
@@ -85,9 +86,9 @@ Row run_grid(const tracker::Mesh& mesh, const std::vector<tracker::Obstacle>& wa
 
   // The same particles for every grid: unit speed in random directions, 3/4 of a cell per
   // step, sorted by cell every step as a DSMC code keeps them.
-  const tracker::Domain domain(mesh, {std::vector<tracker::BoundaryCondition>(6), 1.0});
-  tracker::Swarm swarm(obstacles.count());
-  tracker::Random random(42);
+  const tracker::tracking::Domain domain(mesh, {std::vector<tracker::tracking::BoundaryCondition>(6), 1.0});
+  tracker::tracking::Swarm swarm(obstacles.count());
+  tracker::tracking::Random random(42);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::normal_distribution<double> gauss;
   std::vector<tracker::csg::State> states(static_cast<std::size_t>(obstacles.count()));
@@ -98,7 +99,7 @@ Row run_grid(const tracker::Mesh& mesh, const std::vector<tracker::Obstacle>& wa
     if (obstacles.inside_wall(cell, states)) continue;
     swarm.add({x, Vec3(gauss(random), gauss(random), gauss(random)).normalized(), cell}, states);
   }
-  std::vector<tracker::ObstacleTally> tallies(static_cast<std::size_t>(obstacles.count()));
+  std::vector<tracker::tracking::ObstacleTally> tallies(static_cast<std::size_t>(obstacles.count()));
   const double dt = 0.75 / o.cells;
   const auto t1 = clock::now();
   for (int step = 0; step < o.steps; ++step) {
@@ -111,8 +112,8 @@ Row run_grid(const tracker::Mesh& mesh, const std::vector<tracker::Obstacle>& wa
 }
 
 int run_pruning(const PruningOptions& o) {
-  const tracker::Mesh mesh = unit_box(o.cells);
-  const std::vector<tracker::Obstacle> walls = cluster_walls();
+  const tracker::mesh::Mesh mesh = unit_box(o.cells);
+  const std::vector<tracker::tracking::Obstacle> walls = cluster_walls();
   std::printf(
       "Table 1 (Strobl, Bannerman & Poeschel): 790 balls (diameter 0.035, +-5 %%) in a cluster, as %zu walls "
       "of <= 64 balls;\n%d^3 tracking cells, %ld particles, %d steps of 3/4 cell; events per particle-step "

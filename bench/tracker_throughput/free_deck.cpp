@@ -11,24 +11,27 @@ namespace cosim::bench {
 using namespace cosim::tracker;
 
 FreeBox::FreeBox(const FreeDeck& deck) {
-  BoxSpec spec;
-  for (AxisSpacing& axis : spec.axes)
+  tracker::mesh::BoxSpec spec;
+  for (tracker::mesh::AxisSpacing& axis : spec.axes)
     axis = {.min = 0.0, .max = deck.cells * FreeDeck::kCellWidth, .cells = deck.cells};
-  mesh = box_mesh(spec);
-  const Boundaries walls{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}),
-                         FreeDeck::kMass};
-  domain = std::make_unique<Domain>(mesh, walls);
+  mesh = tracker::mesh::box_mesh(spec);
+  const tracker::tracking::Boundaries walls{
+      std::vector<tracker::tracking::BoundaryCondition>(mesh.patches.size(),
+                                                        {.kind = tracker::tracking::BoundaryKind::specular}),
+      FreeDeck::kMass};
+  domain = std::make_unique<tracker::tracking::Domain>(mesh, walls);
   const double side = deck.cells * FreeDeck::kCellWidth;
   std::vector<tracker::csg::Expression> balls;
   for (const Ball& b : sphere_cluster()) balls.push_back(tracker::csg::ball(side * b.centre, side * b.radius));
-  cluster = Obstacles(mesh, {{"cluster", tracker::csg::Tree(tracker::csg::Expression::unite(balls)), false, {}}});
+  cluster = tracker::tracking::Obstacles(
+      mesh, {{"cluster", tracker::csg::Tree(tracker::csg::Expression::unite(balls)), false, {}}});
 }
 
-std::vector<Particle> fill(const FreeDeck& deck, Random& random) {
+std::vector<tracker::tracking::Particle> fill(const FreeDeck& deck, tracker::tracking::Random& random) {
   const double sigma = std::sqrt(boltzmann * FreeDeck::kTemperature / FreeDeck::kMass);
   std::normal_distribution<double> gauss(0.0, sigma);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  std::vector<Particle> particles;
+  std::vector<tracker::tracking::Particle> particles;
   particles.reserve(static_cast<std::size_t>(deck.particle_count()));
   const int n = deck.cells;
   // box_mesh numbers the cells x fastest, then y, then z.

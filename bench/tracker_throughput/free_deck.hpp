@@ -30,13 +30,13 @@ struct FreeDeck {
 struct FreeBox {
   explicit FreeBox(const FreeDeck& deck);
   FreeBox(const FreeBox&) = delete;
-  tracker::Mesh mesh;
-  std::unique_ptr<tracker::Domain> domain;
+  tracker::mesh::Mesh mesh;
+  std::unique_ptr<tracker::tracking::Domain> domain;
   // The 790-ball cluster of Table 1 (tracker_study) scaled to the box: one specular wall.
-  tracker::Obstacles cluster;
+  tracker::tracking::Obstacles cluster;
 };
 
 // per_cell particles in every cell, cell by cell (so sorted by cell until they move).
-std::vector<tracker::Particle> fill(const FreeDeck& deck, tracker::Random& random);
+std::vector<tracker::tracking::Particle> fill(const FreeDeck& deck, tracker::tracking::Random& random);
 
 }  // namespace cosim::bench

@@ -16,7 +16,7 @@
 #include "tracker/tracking/swarm.hpp"
 
 using namespace cosim::bench;
-using cosim::tracker::Algorithm;
+using cosim::tracker::tracking::Algorithm;
 
 namespace {
 
@@ -63,8 +63,8 @@ void print_sphere(const SphereBox& box, const SphereDeck& deck, const SphereResu
 
 void print(const RunResult& r) {
   std::printf("%-13s %-20s %5d %8.2f %8.2f %7.0f %10.3f %6lld %7lld %9.1e  %s\n",
-              std::string(name(r.options.algorithm)).c_str(), label(r.options).c_str(), r.options.sort_every,
-              r.moves_per_second() / 1e6, r.moves_per_cpu_second() / 1e6, r.bytes_per_particle,
+              std::string(cosim::tracker::tracking::name(r.options.algorithm)).c_str(), label(r.options).c_str(),
+              r.options.sort_every, r.moves_per_second() / 1e6, r.moves_per_cpu_second() / 1e6, r.bytes_per_particle,
               static_cast<double>(r.tally.faces_crossed + r.tally.boundary_hits) / r.tally.moves, r.lost, r.outside,
               r.energy_drift, check(r) ? "ok" : "FAILED");
 }
@@ -75,9 +75,9 @@ void write_csv(const std::string& path, const FreeDeck& deck, const std::vector<
          "crossings_per_move,lost,outside,energy_drift\n";
   for (const RunResult& r : runs)
     out << deck.cells << ',' << deck.per_cell << ',' << r.particles << ',' << r.options.steps << ','
-        << name(r.options.algorithm) << ',' << (r.options.storage == Storage::particle ? "particle" : "compact") << ','
-        << r.options.sort_every << ',' << r.moves_per_second() << ',' << r.moves_per_cpu_second() << ','
-        << r.bytes_per_particle << ','
+        << cosim::tracker::tracking::name(r.options.algorithm) << ','
+        << (r.options.storage == Storage::particle ? "particle" : "compact") << ',' << r.options.sort_every << ','
+        << r.moves_per_second() << ',' << r.moves_per_cpu_second() << ',' << r.bytes_per_particle << ','
         << static_cast<double>(r.tally.faces_crossed + r.tally.boundary_hits) / r.tally.moves << ',' << r.lost << ','
         << r.outside << ',' << r.energy_drift << '\n';
 }
@@ -92,12 +92,12 @@ std::string swarm_row(const RunOptions& options) {
 bool run_free_deck(const FreeDeck& deck, int steps, int sort_every, const std::string& only, const std::string& storage,
                    const std::string& csv) {
   const FreeBox box(deck);
-  cosim::tracker::Random random(2026);
-  std::vector<cosim::tracker::Particle> particles = fill(deck, random);
+  cosim::tracker::tracking::Random random(2026);
+  std::vector<cosim::tracker::tracking::Particle> particles = fill(deck, random);
   // Unsort: the particles leave the cells they were created in, in array order.
   for (int step = 0; step < FreeDeck::kUnsortSteps; ++step)
-    for (cosim::tracker::Particle& p : particles)
-      move(Algorithm::event_driven, *box.domain, p, FreeDeck::kUnsortDt, random);
+    for (cosim::tracker::tracking::Particle& p : particles)
+      cosim::tracker::tracking::move(Algorithm::event_driven, *box.domain, p, FreeDeck::kUnsortDt, random);
 
   std::printf("free deck: %d^3 cells of %g m, %lld particles (%d per cell), %d timed steps of %g s, 1 core\n",
               deck.cells, FreeDeck::kCellWidth, deck.particle_count(), deck.per_cell, steps, FreeDeck::kTimedDt);
@@ -115,7 +115,7 @@ bool run_free_deck(const FreeDeck& deck, int steps, int sort_every, const std::s
   std::vector<RunResult> runs;
   bool ok = true;
   for (const RunOptions& options : plan) {
-    if (!only.empty() && only != name(options.algorithm)) continue;
+    if (!only.empty() && only != cosim::tracker::tracking::name(options.algorithm)) continue;
     if (!storage.empty() && storage != (options.storage == Storage::swarm ? "swarm" : "particle") &&
         storage != swarm_row(options))
       continue;
@@ -130,7 +130,8 @@ bool run_free_deck(const FreeDeck& deck, int steps, int sort_every, const std::s
   std::printf(
       "goal: <= %.0f bytes per particle plus the logical state: Swarm %zu + 8 per obstacle (Particle %zu; "
       "a sorted swarm keeps a second copy as scratch)\n",
-      kGoalBytesPerParticle, sizeof(cosim::tracker::StoredParticle), sizeof(cosim::tracker::Particle));
+      kGoalBytesPerParticle, sizeof(cosim::tracker::tracking::StoredParticle),
+      sizeof(cosim::tracker::tracking::Particle));
   if (!csv.empty()) write_csv(csv, deck, runs);
   return ok;
 }

@@ -31,24 +31,28 @@ SphereBox::SphereBox()
                      tracker::dsmc::Model::vss),
                  false},
       mass(collisions.model.mass()) {
-  BoxSpec spec;
-  for (AxisSpacing& axis : spec.axes)
+  tracker::mesh::BoxSpec spec;
+  for (tracker::mesh::AxisSpacing& axis : spec.axes)
     axis = {.min = -SphereDeck::kHalfSide, .max = SphereDeck::kHalfSide, .cells = SphereDeck::kCells};
-  mesh = box_mesh(spec);
-  domain = std::make_unique<Domain>(
-      mesh, Boundaries{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::open}), mass});
-  sphere = Obstacles(mesh, {{"sphere",
-                             tracker::csg::Tree(tracker::csg::ball(Vec3::Zero(), SphereDeck::kRadius)),
-                             false,
-                             {.kind = BoundaryKind::diffuse, .temperature = SphereDeck::kTemperature}}});
+  mesh = tracker::mesh::box_mesh(spec);
+  domain = std::make_unique<tracker::tracking::Domain>(
+      mesh, tracker::tracking::Boundaries{std::vector<tracker::tracking::BoundaryCondition>(
+                                              mesh.patches.size(), {.kind = tracker::tracking::BoundaryKind::open}),
+                                          mass});
+  sphere = tracker::tracking::Obstacles(
+      mesh, {{"sphere",
+              tracker::csg::Tree(tracker::csg::ball(Vec3::Zero(), SphereDeck::kRadius)),
+              false,
+              {.kind = tracker::tracking::BoundaryKind::diffuse, .temperature = SphereDeck::kTemperature}}});
   std::vector<Index> all(mesh.patches.size());
   for (std::size_t p = 0; p < all.size(); ++p) all[p] = static_cast<Index>(p);
-  inflow = std::make_unique<Inflow>(mesh, all,
-                                    Stream{.number_density = SphereDeck::kDensity,
-                                           .velocity = kStreamVelocity,
-                                           .temperature = SphereDeck::kTemperature,
-                                           .mass = mass,
-                                           .weight = SphereDeck::kWeight});
+  inflow =
+      std::make_unique<tracker::tracking::Inflow>(mesh, all,
+                                                  tracker::tracking::Stream{.number_density = SphereDeck::kDensity,
+                                                                            .velocity = kStreamVelocity,
+                                                                            .temperature = SphereDeck::kTemperature,
+                                                                            .mass = mass,
+                                                                            .weight = SphereDeck::kWeight});
 }
 
 double SphereBox::stream_count() {
@@ -62,18 +66,20 @@ double SphereBox::free_molecular_drag() const {
 }
 
 SphereResult run_sphere(const SphereBox& box, const SphereDeck& deck) {
-  Random random(2026);
-  const Seeding stream{.total = static_cast<int>(std::lround(SphereBox::stream_count())),
-                       .temperature = SphereDeck::kTemperature,
-                       .drift = kStreamVelocity,
-                       .mass = box.mass,
-                       .weight = SphereDeck::kWeight};
-  Swarm swarm = seed_particles(box.mesh, box.sphere, stream, Decomposition(box.mesh, {}), volumes_of(box.mesh));
-  CellCollider collider(box.mesh, box.collisions, SphereDeck::kTemperature, SphereDeck::kWeight, 7);
+  tracker::tracking::Random random(2026);
+  const tracker::step::Seeding stream{.total = static_cast<int>(std::lround(SphereBox::stream_count())),
+                                      .temperature = SphereDeck::kTemperature,
+                                      .drift = kStreamVelocity,
+                                      .mass = box.mass,
+                                      .weight = SphereDeck::kWeight};
+  tracker::tracking::Swarm swarm =
+      tracker::step::seed_particles(box.mesh, box.sphere, stream, tracker::parallel::Decomposition(box.mesh, {}),
+                                    tracker::step::volumes_of(box.mesh));
+  tracker::step::CellCollider collider(box.mesh, box.collisions, SphereDeck::kTemperature, SphereDeck::kWeight, 7);
   SphereResult result;
   result.seeded = static_cast<long long>(swarm.size());
-  std::vector<ObstacleTally> tallies(1);
-  const MoveContext moving{
+  std::vector<tracker::tracking::ObstacleTally> tallies(1);
+  const tracker::tracking::MoveContext moving{
       .domain = *box.domain, .obstacles = box.sphere, .random = random, .moves = result.tally, .tallies = tallies};
   long long lost_in_warm_up = 0;
   std::clock_t cpu_start = 0;

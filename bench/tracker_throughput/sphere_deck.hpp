@@ -38,12 +38,12 @@ struct SphereDeck {
 struct SphereBox {
   SphereBox();
   SphereBox(const SphereBox&) = delete;
-  tracker::Mesh mesh;
-  tracker::Collisions collisions;  // VSS argon from the species file
-  double mass;                     // argon's, the collision model's
-  std::unique_ptr<tracker::Domain> domain;
-  tracker::Obstacles sphere;
-  std::unique_ptr<tracker::Inflow> inflow;
+  tracker::mesh::Mesh mesh;
+  tracker::step::Collisions collisions;  // VSS argon from the species file
+  double mass;                           // argon's, the collision model's
+  std::unique_ptr<tracker::tracking::Domain> domain;
+  tracker::tracking::Obstacles sphere;
+  std::unique_ptr<tracker::tracking::Inflow> inflow;
 
   // Simulators of the undisturbed stream in the box outside the ball: n (V - V_ball) / fnum.
   static double stream_count();
@@ -54,12 +54,12 @@ struct SphereBox {
 struct SphereResult {
   long long seeded = 0, timed_from = 0, particles = 0;  // at the start of the warm-up, of the timed steps, at the end
   double seconds = 0.0, cpu_seconds = 0.0;              // the timed steps: sort, collisions, moves, inflow
-  tracker::MoveTally tally;                             // the timed steps (the inflow's partial moves included)
+  tracker::tracking::MoveTally tally;                   // the timed steps (the inflow's partial moves included)
   long long collisions = 0;                             // the timed steps'
-  long long lost = 0;             // is_lost at the end, plus those the tracking counted lost in any step
-  long long outside = 0;          // outside their cell by more than the tolerance at the end
-  tracker::ObstacleTally sphere;  // the timed steps'
-  double drag = 0.0;              // N along the stream over the timed steps
+  long long lost = 0;                       // is_lost at the end, plus those the tracking counted lost in any step
+  long long outside = 0;                    // outside their cell by more than the tolerance at the end
+  tracker::tracking::ObstacleTally sphere;  // the timed steps'
+  double drag = 0.0;                        // N along the stream over the timed steps
 
   double moves_per_second() const { return static_cast<double>(tally.moves) / seconds; }
   double moves_per_cpu_second() const { return static_cast<double>(tally.moves) / cpu_seconds; }

@@ -89,6 +89,18 @@ class Slurm : public ::testing::Test {
           << series;
   }
 
+  // The oscillator placed by `placement`, run by a job of `header`: it finishes, its
+  // participant starts with `launch` in its command line, and its series are the local run's.
+  void run_placed(const std::string& stem, const std::string& placement, const std::string& header,
+                  const std::string& launch) const {
+    write_file(dir_ / (stem + ".yaml"), placed(placement).yaml());
+    const auto job = script(
+        stem, header, "run " + (dir_ / (stem + ".yaml")).string() + " -o " + (dir_ / (stem + ".h5")).string() + " -q");
+    ASSERT_EQ(submit_and_wait(job, stem), 0) << job_output(stem);
+    EXPECT_THAT(job_output(stem), HasSubstr(launch));
+    expect_same_as_local(stem);
+  }
+
   static SlurmCluster* cluster_;
   fs::path dir_;
 };
@@ -96,31 +108,16 @@ class Slurm : public ::testing::Test {
 SlurmCluster* Slurm::cluster_ = nullptr;
 
 TEST_F(Slurm, SbatchRunsTheSceneWithItsParticipantAsAStepOfTheJob) {
-  write_file(dir_ / "step.yaml", placed("hosts: scheduler").yaml());
-  const auto job = script("step", "#SBATCH --ntasks=2\n",
-                          "run " + (dir_ / "step.yaml").string() + " -o " + (dir_ / "step.h5").string() + " -q");
-  ASSERT_EQ(submit_and_wait(job, "step"), 0) << job_output("step");
-  EXPECT_THAT(job_output("step"), HasSubstr("srun --ntasks=1 --exact"));
-  expect_same_as_local("step");
+  run_placed("step", "hosts: scheduler", "#SBATCH --ntasks=2\n", "srun --ntasks=1 --exact");
 }
 
 TEST_F(Slurm, HostfileNamesTheNodesOfTheAllocation) {
   write_file(dir_ / "nodes.txt", cluster_->nodes().front() + "\n");
-  write_file(dir_ / "listed.yaml", placed("hostfile: nodes.txt").yaml());
-  const auto job = script("listed", "#SBATCH --ntasks=2\n",
-                          "run " + (dir_ / "listed.yaml").string() + " -o " + (dir_ / "listed.h5").string() + " -q");
-  ASSERT_EQ(submit_and_wait(job, "listed"), 0) << job_output("listed");
-  EXPECT_THAT(job_output("listed"), HasSubstr("srun --nodefile="));
-  expect_same_as_local("listed");
+  run_placed("listed", "hostfile: nodes.txt", "#SBATCH --ntasks=2\n", "srun --nodefile=");
 }
 
 TEST_F(Slurm, HetGroupRunsTheParticipantInItsComponentOfTheJob) {
-  write_file(dir_ / "het.yaml", placed("het_group: 1").yaml());
-  const auto job = script("het", "#SBATCH --ntasks=1\n#SBATCH hetjob\n#SBATCH --ntasks=1\n",
-                          "run " + (dir_ / "het.yaml").string() + " -o " + (dir_ / "het.h5").string() + " -q");
-  ASSERT_EQ(submit_and_wait(job, "het"), 0) << job_output("het");
-  EXPECT_THAT(job_output("het"), HasSubstr("srun --het-group=1"));
-  expect_same_as_local("het");
+  run_placed("het", "het_group: 1", "#SBATCH --ntasks=1\n#SBATCH hetjob\n#SBATCH --ntasks=1\n", "srun --het-group=1");
 }
 
 // Guards against: a job that reaches its time limit or is cancelled leaving a run file that

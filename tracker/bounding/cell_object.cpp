@@ -6,18 +6,18 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::tracker {
+namespace cosim::tracker::bounding {
 namespace {
 
-Eigen::AlignedBox3d enlarged_box(const Mesh& mesh, Index cell, double margin) {
-  const Eigen::AlignedBox3d box = cell_box(mesh, cell);
+Eigen::AlignedBox3d enlarged_box(const mesh::Mesh& mesh, Index cell, double margin) {
+  const Eigen::AlignedBox3d box = mesh::cell_box(mesh, cell);
   const Vec3 grow = Vec3::Constant(margin * box.diagonal().norm());
   return {box.min() - grow, box.max() + grow};
 }
 
 // Per cell, the object's primitives whose surface may meet the cell's box: O(cells x
 // primitives) tests, most of them rejected by the primitive's bounding box.
-std::vector<std::vector<int>> touching(const Mesh& mesh, const csg::Tree& object, double margin) {
+std::vector<std::vector<int>> touching(const mesh::Mesh& mesh, const csg::Tree& object, double margin) {
   std::vector<std::vector<int>> near(static_cast<std::size_t>(mesh.cell_count()));
   const auto& primitives = object.primitives();
   std::vector<Eigen::AlignedBox3d> bounds;
@@ -34,10 +34,10 @@ std::vector<std::vector<int>> touching(const Mesh& mesh, const csg::Tree& object
 // A cell's own primitives and its face neighbours', ascending. Not across periodic faces:
 // the primitives there are the images on the other side, which the tracking evaluates
 // directly on crossing (Obstacles::transfer).
-std::vector<int> with_ring(const Mesh& mesh, const std::vector<std::vector<int>>& near, Index cell) {
+std::vector<int> with_ring(const mesh::Mesh& mesh, const std::vector<std::vector<int>>& near, Index cell) {
   std::vector<int> all = near[static_cast<std::size_t>(cell)];
   for (Index f = mesh.cell_faces[cell]; f < mesh.cell_faces[cell + 1]; ++f) {
-    const Face& face = mesh.faces[static_cast<std::size_t>(f)];
+    const mesh::Face& face = mesh.faces[static_cast<std::size_t>(f)];
     const Index n = face.neighbour;
     if (n >= 0 && face.shift == 0)
       all.insert(all.end(), near[static_cast<std::size_t>(n)].begin(), near[static_cast<std::size_t>(n)].end());
@@ -49,7 +49,7 @@ std::vector<int> with_ring(const Mesh& mesh, const std::vector<std::vector<int>>
 
 }  // namespace
 
-CellObject::CellObject(const Mesh& mesh, const csg::Tree& object, double margin) {
+CellObject::CellObject(const mesh::Mesh& mesh, const csg::Tree& object, double margin) {
   const std::vector<std::vector<int>> near = touching(mesh, object, margin);
   trees_.push_back(csg::Tree::fixed(false));
   trees_.push_back(csg::Tree::fixed(true));
@@ -113,4 +113,4 @@ CellObjectStats CellObject::stats() const {
   return s;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::bounding

@@ -19,7 +19,7 @@
 #include "tracker/csg/tree.hpp"
 #include "tracker/mesh/mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::bounding {
 
 struct CellObjectStats {
   double mean_primitives = 0;  // per cell
@@ -31,7 +31,7 @@ class CellObject {
  public:
   // Throws std::invalid_argument naming the cell when a cell would need more primitives than
   // a logical state holds (a finer mesh, or fewer primitives near there, helps).
-  CellObject(const Mesh& mesh, const csg::Tree& object, double margin = 1e-9);
+  CellObject(const mesh::Mesh& mesh, const csg::Tree& object, double margin = 1e-9);
 
   // The cell's primitives as indices into the object's, ascending; local index = position.
   std::span<const int> primitives(Index cell) const;
@@ -61,4 +61,4 @@ class CellObject {
   std::vector<csg::Tree> trees_;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::bounding

@@ -9,7 +9,7 @@
 #include <numeric>
 #include <stdexcept>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 void Polyhedra::add_face(std::span<const Index> loop, Index patch) {
   face_vertex_index.insert(face_vertex_index.end(), loop.begin(), loop.end());
@@ -129,4 +129,4 @@ Mesh assemble(Polyhedra input) {
   return mesh;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

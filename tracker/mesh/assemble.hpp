@@ -7,7 +7,7 @@
 #include <initializer_list>
 #include <span>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 // What every source produces: cells as lists of faces, faces as vertex loops
 // counter-clockwise seen from outside the cell.
@@ -40,4 +40,4 @@ struct Polyhedra {
 // Throws std::invalid_argument if a face is shared by more than two cells.
 Mesh assemble(Polyhedra polyhedra);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 std::vector<double> axis_nodes(const AxisSpacing& axis) {
   if (!axis.nodes.empty()) {
@@ -179,4 +179,4 @@ Mesh box_mesh(const BoxSpec& spec) {
   return mesh;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

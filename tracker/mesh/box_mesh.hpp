@@ -7,7 +7,7 @@
 #include <array>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 // The nodes along one axis: `cells` cells from `min` to `max` whose widths grow
 // geometrically by `ratio` = last width / first width (1: uniform), or, if `nodes` is not
@@ -55,4 +55,4 @@ inline Index box_cell_index(const BoxCell& c, const std::array<int, 3>& hexahedr
   return ((c.hex[2] * hexahedra[1] + c.hex[1]) * hexahedra[0] + c.hex[0]) * per_hex + c.within;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -5,7 +5,7 @@
 
 #include "tracker/mesh/part.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 // The box around the brick reaches this many hexahedra beyond it: the part's two ghost
@@ -56,4 +56,4 @@ Mesh box_part(const BoxSpec& spec, const std::array<int, 3>& lo, const std::arra
   return part;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -9,7 +9,7 @@
 
 #include "tracker/mesh/box_mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 // The part of box_mesh(spec) that `owner` (a cell's rank, by the whole's cell numbers) gives
 // `rank`, whose cells are the hexahedra [lo, hi) (or their tetrahedra); std::invalid_argument
@@ -17,4 +17,4 @@ namespace cosim::tracker {
 Mesh box_part(const BoxSpec& spec, const std::array<int, 3>& lo, const std::array<int, 3>& hi,
               const std::function<int(Index)>& owner, int rank);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-namespace cosim::tracker::element_faces {
+namespace cosim::tracker::mesh::element_faces {
 
 // Corners 0, 1, 2 counter-clockwise seen from corner 3.
 inline const std::vector<std::vector<int>> tetrahedron{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
@@ -16,4 +16,4 @@ inline const std::vector<std::vector<int>> prism{{0, 2, 1}, {3, 4, 5}, {0, 1, 4,
 // Base 0-1-2-3 counter-clockwise seen from the apex 4.
 inline const std::vector<std::vector<int>> pyramid{{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
 
-}  // namespace cosim::tracker::element_faces
+}  // namespace cosim::tracker::mesh::element_faces

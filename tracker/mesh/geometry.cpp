@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 Index Mesh::cell_of_face(Index face) const {
   const auto it = std::upper_bound(cell_faces.begin(), cell_faces.end(), face);
@@ -76,4 +76,4 @@ double whole_diagonal(const Mesh& mesh) {
   return box.isEmpty() ? 0.0 : box.diagonal().norm();
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

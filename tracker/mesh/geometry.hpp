@@ -3,7 +3,7 @@
 
 #include "tracker/mesh/mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 // Each face's plane goes through the mean of its vertices with Newell's normal (the
 // exact area vector of a non-planar polygon); volume and centroid come from the
@@ -20,4 +20,4 @@ Eigen::AlignedBox3d cell_box(const Mesh& mesh, Index cell);
 // The diagonal of the box around the whole mesh's vertices (Mesh::whole_diagonal for a part).
 double whole_diagonal(const Mesh& mesh);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 // Ends the Gmsh session however load_gmsh leaves.
@@ -138,4 +138,4 @@ Mesh load_gmsh(const std::filesystem::path& path) {
   return mesh;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 // Reads the volume elements (tetrahedra, hexahedra, prisms, pyramids; of higher order
 // only the corner nodes are used, so curved cells become straight ones) of any .msh
@@ -16,4 +16,4 @@ namespace cosim::tracker {
 // elements or fails validation.
 Mesh load_gmsh(const std::filesystem::path& path);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

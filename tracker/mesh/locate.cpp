@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 PointLocator::PointLocator(const Mesh& mesh) : mesh_(&mesh) {
   const Index cells = mesh.cell_count();
@@ -67,4 +67,4 @@ Index PointLocator::locate(const Vec3& x) const {
   return -1;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 // About one bucket per cell over the mesh's bounding box, each listing the cells whose
 // (padded) bounding boxes meet it, so a query tests a few cells whatever the mesh size.
@@ -30,4 +30,4 @@ class PointLocator {
   std::vector<Index> bucket_cells_;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -9,10 +9,9 @@
 #include <string>
 #include <vector>
 
-namespace cosim::tracker {
+#include "tracker/types.hpp"
 
-using Vec3 = Eigen::Vector3d;
-using Index = std::int32_t;
+namespace cosim::tracker::mesh {
 
 // A face as its cell sees it. The tracking loop reads only these records, and a cell's
 // records are contiguous, so one cell's planes are a few adjacent cache lines (64 bytes
@@ -79,4 +78,4 @@ inline bool contains(const Mesh& mesh, Index cell, const Vec3& x) {
   return true;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -6,7 +6,7 @@
 
 #include "tracker/mesh/geometry.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 // The part's cells in the whole's numbers: the owned ones, then each layer of neighbours.
@@ -99,4 +99,4 @@ Index PartCells::local(Index global) const {
   return it != by_global_.end() && it->first == global ? it->second : -1;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -13,7 +13,7 @@
 
 #include "tracker/mesh/mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 // The cells of `whole` that `owner` gives to `rank`, then `layers` layers of ghosts, each
 // in the whole's order, with their faces, vertices and geometry as in the whole (Mesh::global,
@@ -31,4 +31,4 @@ class PartCells {
   std::vector<std::pair<Index, Index>> by_global_;  // (global, local), ascending
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -7,7 +7,7 @@
 #include <random>
 #include <stdexcept>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 Mesh perturbed(Mesh mesh, const Perturbation& perturbation) {
   if (!(perturbation.fraction >= 0.0 && perturbation.fraction < 0.5))
@@ -42,4 +42,4 @@ Mesh perturbed(Mesh mesh, const Perturbation& perturbation) {
   return mesh;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 struct Perturbation {
   double fraction = 0.05;  // largest move, as a fraction of the vertex's shortest edge
@@ -20,4 +20,4 @@ struct Perturbation {
 // (with the validation report) if the moves break the mesh.
 Mesh perturbed(Mesh mesh, const Perturbation& perturbation);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 constexpr double relative_tolerance = 1e-9;
@@ -164,4 +164,4 @@ void require_valid(const Mesh& mesh) {
                                 describe(errors));
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 enum class Defect {
   open_cell,             // outward area vectors do not sum to zero
@@ -37,4 +37,4 @@ std::string describe(const std::vector<Problem>& problems, std::size_t limit = 2
 // Throws std::invalid_argument naming mesh.source with the errors if there are any.
 void require_valid(const Mesh& mesh);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

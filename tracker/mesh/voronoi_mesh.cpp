@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 // Merges vertices closer than `radius` (cells compute their shared corners separately,
@@ -124,4 +124,4 @@ Mesh voronoi_mesh(std::span<const Vec3> points, const VoronoiSpec& spec) {
   return mesh;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -6,7 +6,7 @@
 #include <array>
 #include <span>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 
 struct VoronoiSpec {
   Vec3 min = Vec3::Zero();
@@ -22,4 +22,4 @@ struct VoronoiSpec {
 // points, or a mesh that fails validation.
 Mesh voronoi_mesh(std::span<const Vec3> points, const VoronoiSpec& spec);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 namespace {
 
 // The axis to cut: the longest in hexahedra (the lowest on a tie), or -1 if every axis is
@@ -39,7 +39,7 @@ Bricks::SlabWeights slabs_of(std::span<const double> weight, const std::array<in
           const std::array<int, 3> at{i, j, k};
           double w = 0.0;
           for (int t = 0; t < per_hex; ++t)
-            w += weight[static_cast<std::size_t>(box_cell_index({at, t}, hexahedra, per_hex))];
+            w += weight[static_cast<std::size_t>(mesh::box_cell_index({at, t}, hexahedra, per_hex))];
           slab[static_cast<std::size_t>(at[axis] - r.lo[axis])] += w;
         }
     return slab;
@@ -128,7 +128,7 @@ int Bricks::split(const Range& range, int first, int count, const CutOf& cut_of)
 }
 
 int Bricks::owner(Index cell) const {
-  const std::array<int, 3> at = box_cell(cell, hexahedra_, per_hex_).hex;
+  const std::array<int, 3> at = mesh::box_cell(cell, hexahedra_, per_hex_).hex;
   int node = nodes_.empty() ? -1 : 0;
   while (node >= 0) {
     const Node& n = nodes_[static_cast<std::size_t>(node)];
@@ -143,9 +143,9 @@ std::vector<int> Bricks::cuts() const {
   return out;
 }
 
-Bricks box_bricks(const BoxSpec& box, int ranks) {
+Bricks box_bricks(const mesh::BoxSpec& box, int ranks) {
   std::array<int, 3> hexahedra{};
-  for (int a = 0; a < 3; ++a) hexahedra[a] = static_cast<int>(axis_nodes(box.axes[a]).size()) - 1;
+  for (int a = 0; a < 3; ++a) hexahedra[a] = static_cast<int>(mesh::axis_nodes(box.axes[a]).size()) - 1;
   Bricks bricks(hexahedra, box.tetrahedra ? 6 : 1, ranks, {});
   for (int p = 0; p < ranks; ++p)
     if (bricks.brick(p).hexahedra() == 0)
@@ -154,4 +154,4 @@ Bricks box_bricks(const BoxSpec& box, int ranks) {
   return bricks;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

@@ -14,7 +14,7 @@
 
 #include "tracker/mesh/box_mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 
 class Bricks {
  public:
@@ -76,6 +76,6 @@ class Bricks {
 };
 
 // The bricks of a box over `ranks` ranks; std::invalid_argument if a rank would have no cell.
-Bricks box_bricks(const BoxSpec& box, int ranks);
+Bricks box_bricks(const mesh::BoxSpec& box, int ranks);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 
-Decomposition::Decomposition(const Mesh& mesh, Ranks ranks)
+Decomposition::Decomposition(const mesh::Mesh& mesh, Ranks ranks)
     : ranks_(ranks), owners_(std::vector<int>(static_cast<std::size_t>(mesh.cell_count()), 0)) {
   if (ranks_.size() > 1) owners_ = Owners(agreed([&] { return partition_cells(mesh, ranks_.size()); }));
 }
@@ -32,7 +32,7 @@ Owners Decomposition::proposal(std::span<const Index> particle_cells) const {
   for (std::size_t i = 0; i < hex.size();) {
     std::size_t j = i;
     while (j < hex.size() && hex[j] == hex[i]) ++j;
-    held.emplace_back(box_cell(hex[i], hexahedra, 1).hex, static_cast<long long>(j - i));
+    held.emplace_back(mesh::box_cell(hex[i], hexahedra, 1).hex, static_cast<long long>(j - i));
     i = j;
   }
   // The cuts are made depth first, each range within the last one not yet done with: the
@@ -59,7 +59,7 @@ Owners Decomposition::proposal(std::span<const Index> particle_cells) const {
   }));
 }
 
-Owners Decomposition::proposal(const Mesh& mesh, std::span<const double> particles) const {
+Owners Decomposition::proposal(const mesh::Mesh& mesh, std::span<const double> particles) const {
   if (ranks_.size() == 1) return owners_;
   return Owners(agreed([&] {
     // The particles' weights add up to 100 per cell on average (fewer if that passes 1e9:
@@ -114,12 +114,12 @@ std::vector<int> Decomposition::agreed(const std::function<std::vector<int>()>& 
   return numbers;
 }
 
-std::size_t Decomposition::migrate(Swarm& swarm, const Numbering& numbering) {
-  return tracker::migrate(swarm, owners_, ranks_, migrations_++, numbering);
+std::size_t Decomposition::migrate(tracking::Swarm& swarm, const Numbering& numbering) {
+  return parallel::migrate(swarm, owners_, ranks_, migrations_++, numbering);
 }
 
-std::size_t Decomposition::hand_over(Handover& handover, const Numbering& numbering) {
-  return tracker::migrate(handover, owners_, ranks_, migrations_++, numbering);
+std::size_t Decomposition::hand_over(tracking::Handover& handover, const Numbering& numbering) {
+  return parallel::migrate(handover, owners_, ranks_, migrations_++, numbering);
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

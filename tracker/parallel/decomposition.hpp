@@ -15,13 +15,13 @@
 #include "tracker/parallel/ranks.hpp"
 #include "tracker/tracking/swarm.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 
 class Decomposition {
  public:
   // Collective. METIS's parts of the mesh's cells, computed on rank 0 and broadcast; one
   // rank owns every cell (no METIS, no MPI).
-  Decomposition(const Mesh& mesh, Ranks ranks);
+  Decomposition(const mesh::Mesh& mesh, Ranks ranks);
   // Bricks of a structured box (bricks.hpp): every rank computes the same, no mesh needed.
   Decomposition(Bricks bricks, Ranks ranks) : ranks_(ranks), owners_(std::move(bricks)) {}
 
@@ -31,12 +31,12 @@ class Decomposition {
   bool owns(Index cell) const { return owner(cell) == ranks_.rank(); }
   // Collective: sends the swarm's particles in other ranks' cells there (migration.hpp);
   // returns how many left this rank. `numbering`: the swarm's cells are a part's.
-  std::size_t migrate(Swarm& swarm, const Numbering& numbering = {});
+  std::size_t migrate(tracking::Swarm& swarm, const Numbering& numbering = {});
   // Collective: the moves handed over go on to their cells' owners, and the handover holds
   // those that came here; returns how many left.
-  std::size_t hand_over(Handover& handover, const Numbering& numbering);
+  std::size_t hand_over(tracking::Handover& handover, const Numbering& numbering);
   // Collective: the sparse exchange of migrate(), for other records.
-  Messages exchange(const Messages& out) { return tracker::exchange(out, ranks_, migrations_++); }
+  Messages exchange(const Messages& out) { return parallel::exchange(out, ranks_, migrations_++); }
   // Collective: owners balanced by the particles. Bricks (the owners are bricks) cut where
   // the particles split in the ratio of the ranks: each rank gives its own particles' cells
   // (numbers in the whole mesh), added up over the ranks slab by slab as the cuts need them,
@@ -47,7 +47,7 @@ class Decomposition {
   // ranks that hold most of their particles now.
   // In both, every cell weighs 1 % of the mean besides its particles, so empty cells still
   // spread. Nothing changes here.
-  Owners proposal(const Mesh& mesh, std::span<const double> particles) const;
+  Owners proposal(const mesh::Mesh& mesh, std::span<const double> particles) const;
   // New owners (a proposal, or those a state saved; the same on every rank). The particles
   // stay where they are until the next migrate().
   void set_owners(Owners owners) { owners_ = std::move(owners); }
@@ -61,4 +61,4 @@ class Decomposition {
   std::uint64_t migrations_ = 0;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 namespace {
 
 // The swarm's own record (swarm.hpp): float velocities cross as they are stored.
@@ -109,7 +109,7 @@ void for_each_record(std::span<const std::byte> records, int objects, const Take
   }
 }
 
-Record record_of(const Particle& p, const Numbering& numbering) {
+Record record_of(const tracking::Particle& p, const Numbering& numbering) {
   return {{p.x[0], p.x[1], p.x[2]},
           {static_cast<float>(p.v[0]), static_cast<float>(p.v[1]), static_cast<float>(p.v[2])},
           numbering.global(p.cell)};
@@ -127,7 +127,7 @@ Index Numbering::local(Index global) const {
 namespace {
 
 // Adds the particle of every record (as migrate() sends them) to the swarm, bit for bit.
-void unpack(std::span<const std::byte> records, Swarm& swarm, const Numbering& numbering) {
+void unpack(std::span<const std::byte> records, tracking::Swarm& swarm, const Numbering& numbering) {
   for_each_record<Record>(records, swarm.objects(), [&](const Record& r, std::span<const csg::State> states) {
     swarm.add({{r.x[0], r.x[1], r.x[2]}, {r.v[0], r.v[1], r.v[2]}, numbering.local(r.cell)}, states);
   });
@@ -135,7 +135,7 @@ void unpack(std::span<const std::byte> records, Swarm& swarm, const Numbering& n
 
 }  // namespace
 
-std::size_t migrate(Swarm& swarm, const Owners& owner, const Ranks& ranks, std::uint64_t round,
+std::size_t migrate(tracking::Swarm& swarm, const Owners& owner, const Ranks& ranks, std::uint64_t round,
                     const Numbering& numbering) {
   if (ranks.size() == 1) return 0;
   const int me = ranks.rank();
@@ -152,13 +152,13 @@ std::size_t migrate(Swarm& swarm, const Owners& owner, const Ranks& ranks, std::
   return left;
 }
 
-std::size_t migrate(Handover& handover, const Owners& owner, const Ranks& ranks, std::uint64_t round,
+std::size_t migrate(tracking::Handover& handover, const Owners& owner, const Ranks& ranks, std::uint64_t round,
                     const Numbering& numbering) {
   if (ranks.size() == 1) return 0;
   Messages out;
   for (std::size_t i = 0; i < handover.size(); ++i) {
-    const Particle& p = handover.particle(i);
-    const Flight& f = handover.flight(i);
+    const tracking::Particle& p = handover.particle(i);
+    const tracking::Flight& f = handover.flight(i);
     const Index cell = numbering.global(p.cell);
     const FlightRecord r{{p.x[0], p.x[1], p.x[2]}, {p.v[0], p.v[1], p.v[2]}, f.remaining, cell, f.entered, f.streak};
     append(out, owner(cell), r, handover.states(i));
@@ -174,4 +174,4 @@ std::size_t migrate(Handover& handover, const Owners& owner, const Ranks& ranks,
   return left;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

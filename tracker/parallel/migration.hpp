@@ -19,12 +19,12 @@
 #include "tracker/parallel/ranks.hpp"
 #include "tracker/tracking/handover.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 
 // A rank's cell numbers against the whole mesh's: the identity when it has the whole mesh.
 struct Numbering {
-  const Mesh* part = nullptr;
-  const PartCells* cells = nullptr;  // the part's numbers back
+  const mesh::Mesh* part = nullptr;
+  const mesh::PartCells* cells = nullptr;  // the part's numbers back
   Index global(Index cell) const { return part ? part->global_cell(cell) : cell; }
   // std::logic_error if the part does not have the cell (a particle sent to the wrong rank).
   Index local(Index global) const;
@@ -43,11 +43,11 @@ Messages exchange(const Messages& out, const Ranks& ranks, std::uint64_t round);
 // has seen this one end, and the round's parity keeps their messages apart, so consecutive
 // migrations on one communicator must differ in parity (one Decomposition at a time per
 // communicator, or a collective between two that start their counts afresh).
-std::size_t migrate(Swarm& swarm, const Owners& owner, const Ranks& ranks, std::uint64_t round,
+std::size_t migrate(tracking::Swarm& swarm, const Owners& owner, const Ranks& ranks, std::uint64_t round,
                     const Numbering& numbering = {});
 // The same for moves handed over (each particle in another rank's cell, with the rest of
 // its move): the handover then holds what the others sent here.
-std::size_t migrate(Handover& handover, const Owners& owner, const Ranks& ranks, std::uint64_t round,
+std::size_t migrate(tracking::Handover& handover, const Owners& owner, const Ranks& ranks, std::uint64_t round,
                     const Numbering& numbering);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 
 std::vector<int> Owners::saved() const { return bricks_ ? bricks_->cuts() : table_; }
 
@@ -19,4 +19,4 @@ Owners Owners::restored(std::span<const int> numbers, const Owners& like, Index 
   return Owners(std::move(values));
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

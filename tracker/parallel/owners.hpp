@@ -8,7 +8,7 @@
 
 #include "tracker/parallel/bricks.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 
 class Owners {
  public:
@@ -29,4 +29,4 @@ class Owners {
   std::optional<Bricks> bricks_;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

@@ -7,7 +7,7 @@
 #include <string>
 #include <type_traits>
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 namespace {
 
 static_assert(std::is_same_v<idx_t, int>, "CellGraph hands its arrays to METIS as they are: idx_t must be int");
@@ -17,7 +17,7 @@ constexpr int kSeed = 1;
 
 }  // namespace
 
-CellGraph cell_graph(const Mesh& mesh) {
+CellGraph cell_graph(const mesh::Mesh& mesh) {
   CellGraph graph;
   graph.start.push_back(0);
   std::vector<int> row;
@@ -34,7 +34,7 @@ CellGraph cell_graph(const Mesh& mesh) {
   return graph;
 }
 
-std::vector<int> partition_cells(const Mesh& mesh, int parts, std::span<const int> weight) {
+std::vector<int> partition_cells(const mesh::Mesh& mesh, int parts, std::span<const int> weight) {
   const Index cells = mesh.cell_count();
   if (parts < 1 || parts > cells)
     throw std::invalid_argument("cannot split " + std::to_string(cells) + " cells into " + std::to_string(parts) +
@@ -64,4 +64,4 @@ std::vector<int> partition_cells(const Mesh& mesh, int parts, std::span<const in
   return part;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

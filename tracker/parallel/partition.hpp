@@ -7,7 +7,7 @@
 
 #include "tracker/mesh/mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 
 // The dual graph in compressed rows: cell c's neighbours are neighbours[start[c] ..
 // start[c + 1]), ascending, each once. Two cells are neighbours when they share an
@@ -16,7 +16,7 @@ struct CellGraph {
   std::vector<int> start;
   std::vector<int> neighbours;
 };
-CellGraph cell_graph(const Mesh& mesh);
+CellGraph cell_graph(const mesh::Mesh& mesh);
 
 // The part (0 .. parts - 1) of every cell. Deterministic: METIS runs with a fixed seed, so
 // the same mesh, part count and weights give the same parts on every rank and every run.
@@ -24,6 +24,6 @@ CellGraph cell_graph(const Mesh& mesh);
 // `weight` gives one per cell (>= 1 each, at most 2^31 in all), within METIS's default
 // imbalance (3 %). Throws std::invalid_argument for parts < 1, more parts than cells or bad
 // weights, and std::runtime_error if METIS fails.
-std::vector<int> partition_cells(const Mesh& mesh, int parts, std::span<const int> weight = {});
+std::vector<int> partition_cells(const mesh::Mesh& mesh, int parts, std::span<const int> weight = {});
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

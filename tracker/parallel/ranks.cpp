@@ -4,7 +4,7 @@
 #include <climits>
 #include <stdexcept>
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 namespace {
 
 int count(std::size_t n) {
@@ -74,4 +74,4 @@ std::vector<double> Ranks::gather(std::span<const double> values) const {
   return all;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

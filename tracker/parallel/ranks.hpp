@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 
 class Ranks {
  public:
@@ -45,4 +45,4 @@ class Ranks {
 inline constexpr int kMigrationTags[2] = {7301, 7302};  // alternate rounds (migration.cpp)
 inline constexpr int kGatherTag = 7303;                 // Ranks::gather_each
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

@@ -11,7 +11,7 @@
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/velocity_input.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 Eigen::Isometry3d pose_of(const participant::PoseRow& row) {
@@ -36,7 +36,7 @@ participant::Outputs TrackerSolver::initialise(const scene::Scene& scene, const 
   place_bound_obstacles(setup, placed);
   obstacle_body_ = setup.obstacle_body;
   particle_output_ = setup.particle_output;
-  gas_ = std::make_unique<Simulation>(std::move(setup), ranks_);
+  gas_ = std::make_unique<step::Simulation>(std::move(setup), ranks_);
   if (ranks_.lead()) grid_ = output_grid(*gas_);
   if (!state.empty()) restore(state);
   return {{}, std::vector<participant::ForceRow>(bodies_), 0};
@@ -52,7 +52,7 @@ participant::Outputs TrackerSolver::advance(const participant::Window& w, const 
   if (draws_ == Draws::per_window) gas_->reseed(w.index);
   done_ = w.index + 1;
   if (in.fields) gas_->set_velocity(velocity_of(*in.fields));
-  const std::vector<ObstacleTally> before = gas_->tallies();
+  const std::vector<tracking::ObstacleTally> before = gas_->tallies();
   const std::vector<int>& body_of = obstacle_body_;
   const int steps = gas_->advance(w.t0, w.t1, [&](double t, double h) {
     if (in.poses_start.empty()) return;
@@ -69,7 +69,7 @@ participant::Outputs TrackerSolver::advance(const participant::Window& w, const 
   // Per unit particle mass in the tallies; times mass and weight is momentum.
   const double scale = gas_->setup().particles.mass * gas_->setup().particles.weight / (w.t1 - w.t0);
   std::vector<participant::ForceRow> on(bodies_);  // the obstacles bound to a body add up
-  const std::vector<ObstacleTally> after = gas_->tallies();
+  const std::vector<tracking::ObstacleTally> after = gas_->tallies();
   for (std::size_t i = 0; i < body_of.size(); ++i) {
     if (body_of[i] < 0) continue;
     participant::ForceRow& row = on[static_cast<std::size_t>(body_of[i])];
@@ -95,7 +95,7 @@ field::FieldFrame TrackerSolver::fields() const {
     return frame;
   }
   const std::vector<double> count = gas_->counts();
-  const std::vector<CellMoments> moments = gas_->take_moments();
+  const std::vector<tracking::CellMoments> moments = gas_->take_moments();
   std::optional<field::PointSet> particles;
   if (particle_output_ && particle_output_->at(done_, windows_)) particles = particle_set(*gas_, *particle_output_);
   if (!ranks_.lead()) return {};  // rank 0 answers the coupler: only it has every cell's values
@@ -106,7 +106,7 @@ field::FieldFrame TrackerSolver::fields() const {
 
 std::optional<TrackerSolver::FieldBlocks> TrackerSolver::field_blocks() const {
   if (!gas_->brick()) return std::nullopt;
-  const Simulation::BrickSamples mine = gas_->take_brick();
+  const step::Simulation::BrickSamples mine = gas_->take_brick();
   std::optional<field::PointSet> particles;
   if (particle_output_ && particle_output_->at(done_, windows_)) particles = particle_set(*gas_, *particle_output_);
   FieldBlocks blocks;
@@ -149,4 +149,4 @@ std::vector<double> TrackerSolver::state() const { return gas_->state(); }
 
 void TrackerSolver::restore(const std::vector<double>& state) { gas_->restore(state); }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -17,7 +17,7 @@
 #include "tracker/program/scene_particle_output.hpp"
 #include "tracker/step/simulation.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 class TrackerSolver final : public participant::Solver {
  public:
@@ -26,7 +26,7 @@ class TrackerSolver final : public participant::Solver {
   // standalone, where no window is repeated, on from the stream the gas started with.
   enum class Draws { per_window, one_stream };
 
-  explicit TrackerSolver(Ranks ranks = {}, Draws draws = Draws::per_window) : ranks_(ranks), draws_(draws) {}
+  explicit TrackerSolver(parallel::Ranks ranks = {}, Draws draws = Draws::per_window) : ranks_(ranks), draws_(draws) {}
 
   participant::Outputs initialise(const scene::Scene& scene, const std::string& name,
                                   const std::vector<participant::PoseRow>& poses,
@@ -59,15 +59,15 @@ class TrackerSolver final : public participant::Solver {
   std::vector<std::string> wanted_fields() const override;
 
   // For a standalone run's file and summary.
-  const Simulation& gas() const { return *gas_; }
+  const step::Simulation& gas() const { return *gas_; }
   const OutputGrid& grid() const { return grid_; }  // rank 0's; empty on the others
 
  private:
   void check_size(const std::vector<participant::PoseRow>& poses) const;
 
-  Ranks ranks_;
+  parallel::Ranks ranks_;
   Draws draws_;
-  std::unique_ptr<Simulation> gas_;
+  std::unique_ptr<step::Simulation> gas_;
   std::vector<int> obstacle_body_;                 // TrackerScene's
   std::optional<ParticleOutput> particle_output_;  // TrackerScene's
   OutputGrid grid_;                                // rank 0's: built once, its grid sent with every frame
@@ -76,4 +76,4 @@ class TrackerSolver final : public participant::Solver {
   std::uint64_t done_ = 0;     // windows advanced through: the last one's index + 1
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

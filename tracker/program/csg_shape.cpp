@@ -10,7 +10,7 @@
 #include "coupler/scene/error.hpp"
 #include "tracker/csg/shapes.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 using scene::Range;
@@ -174,4 +174,4 @@ csg::Expression read_shape(const Reader& shape, const std::filesystem::path& fol
   }
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -19,9 +19,9 @@
 #include "coupler/scene/reader.hpp"
 #include "tracker/csg/expression.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 // `folder`: where a relative file name (a balls file) is found, the scene's `folder`.
 csg::Expression read_shape(const scene::Reader& shape, const std::filesystem::path& folder);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

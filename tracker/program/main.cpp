@@ -30,7 +30,7 @@
 namespace {
 
 int coupled() {
-  cosim::tracker::TrackerSolver solver(cosim::tracker::Ranks(MPI_COMM_WORLD));
+  cosim::tracker::program::TrackerSolver solver(cosim::tracker::parallel::Ranks(MPI_COMM_WORLD));
   return cosim::participant::run_on_ranks(solver, MPI_COMM_WORLD, [](cosim::participant::Solver& lead) {
     using cosim::scene::Data;
     int ranks = 1;
@@ -46,9 +46,10 @@ int coupled() {
 }
 
 int standalone(const std::string& scene, const std::string& output) {
-  const cosim::tracker::Ranks ranks(MPI_COMM_WORLD);
+  const cosim::tracker::parallel::Ranks ranks(MPI_COMM_WORLD);
   const int code = cosim::scene::exit_code("cosim-tracker", [&] {
-    const cosim::tracker::RunSummary s = cosim::tracker::run_tracker(cosim::scene::load_scene(scene), output, ranks);
+    const cosim::tracker::program::RunSummary s =
+        cosim::tracker::program::run_tracker(cosim::scene::load_scene(scene), output, ranks);
     // Each rank's setup time and peak memory, for the scaling of a run over ranks.
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
@@ -61,8 +62,8 @@ int standalone(const std::string& scene, const std::string& output) {
                  "%.2f s (setup %.2f s)\n  %s\n  steps%s: %s\n",
                  static_cast<unsigned long long>(s.steps), s.seeded, s.injected, s.remaining,
                  static_cast<long long>(s.collisions), s.wall_seconds, s.setup_seconds,
-                 cosim::tracker::summary(s.moves).c_str(), ranks.size() > 1 ? " on rank 0" : "",
-                 cosim::participant::stage_summary(cosim::tracker::kStageNames, s.stages.all()).c_str());
+                 cosim::tracker::tracking::summary(s.moves).c_str(), ranks.size() > 1 ? " on rank 0" : "",
+                 cosim::participant::stage_summary(cosim::tracker::step::kStageNames, s.stages.all()).c_str());
     if (ranks.size() > 1)
       std::fprintf(stderr, "cosim-tracker: %d ranks, %zu particles moved between them, %llu re-partitions\n",
                    ranks.size(), s.migrated, static_cast<unsigned long long>(s.rebalances));
@@ -96,9 +97,9 @@ int main(int argc, char** argv) {
       code =
           args.check.empty() ? standalone(args.standalone, args.output) : cosim::scene::exit_code("cosim-tracker", [&] {
             const cosim::scene::Scene scene = cosim::scene::load_scene(args.check);
-            const cosim::tracker::TrackerScene setup = cosim::tracker::read_tracker(scene);
+            const cosim::tracker::program::TrackerScene setup = cosim::tracker::program::read_tracker(scene);
             if (!args.work.empty())
-              cosim::participant::write_work(args.work, cosim::tracker::tracker_work(scene, setup));
+              cosim::participant::write_work(args.work, cosim::tracker::program::tracker_work(scene, setup));
             return 0;
           });
     } catch (const CLI::ParseError& e) {

@@ -10,7 +10,7 @@
 #include "tracker/mesh/assemble.hpp"
 #include "tracker/mesh/mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 // The cells of a Mesh or of Polyhedra (both list a cell's faces and a face's vertices
 // alike) in the Mixed layout above.
@@ -30,4 +30,4 @@ std::vector<std::int64_t> mixed_topology(const Cells& cells) {
   return out;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

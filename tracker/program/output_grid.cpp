@@ -3,7 +3,7 @@
 #include "tracker/mesh/geometry.hpp"
 #include "tracker/program/mixed_topology.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 std::vector<double> flat(const std::vector<Vec3>& points) {
@@ -13,21 +13,21 @@ std::vector<double> flat(const std::vector<Vec3>& points) {
   return out;
 }
 
-std::vector<double> patch_areas(const Mesh& mesh) {
+std::vector<double> patch_areas(const mesh::Mesh& mesh) {
   std::vector<double> area(mesh.patches.size(), 0.0);
   for (Index f = 0; f < mesh.face_count(); ++f)
     if (const Index code = mesh.faces[static_cast<std::size_t>(f)].neighbour; code < 0)
-      area[static_cast<std::size_t>(patch_of(code))] += area_vector(mesh, f).norm();
+      area[static_cast<std::size_t>(mesh::patch_of(code))] += mesh::area_vector(mesh, f).norm();
   return area;
 }
 
 }  // namespace
 
-OutputGrid output_grid(const BoxSpec& box) {
+OutputGrid output_grid(const mesh::BoxSpec& box) {
   field::RectilinearGrid nodes;
   std::array<double, 3> length{};
   for (int a = 0; a < 3; ++a) {
-    nodes.nodes[a] = axis_nodes(box.axes[a]);
+    nodes.nodes[a] = mesh::axis_nodes(box.axes[a]);
     length[a] = nodes.nodes[a].back() - nodes.nodes[a].front();
   }
   OutputGrid out;
@@ -41,21 +41,21 @@ OutputGrid output_grid(const BoxSpec& box) {
     out.box = box;
     return out;
   }
-  out.volume = cell_volumes(box);
-  const Polyhedra cells = box_polyhedra(box);
+  out.volume = step::cell_volumes(box);
+  const mesh::Polyhedra cells = mesh::box_polyhedra(box);
   out.grid = field::PolyhedralGrid{flat(cells.vertices), mixed_topology(cells), out.volume.size()};
   return out;
 }
 
-OutputGrid output_grid(const Mesh& whole) {
+OutputGrid output_grid(const mesh::Mesh& whole) {
   return {
       field::PolyhedralGrid{flat(whole.vertices), mixed_topology(whole), static_cast<std::size_t>(whole.cell_count())},
       whole.volume, std::nullopt, whole.patches, patch_areas(whole)};
 }
 
-OutputGrid output_grid(const Simulation& gas) {
+OutputGrid output_grid(const step::Simulation& gas) {
   if (!gas.decomposition().ranks().lead()) throw std::logic_error("the output grid is rank 0's");
   return gas.setup().box ? output_grid(*gas.setup().box) : output_grid(*gas.setup().mesh);
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -16,7 +16,7 @@
 #include "tracker/step/cell_volumes.hpp"
 #include "tracker/step/simulation.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 struct OutputGrid {
   field::Grid grid;
@@ -24,16 +24,16 @@ struct OutputGrid {
   // from `box`, a slab of cells at a time (cell_volumes.hpp), so that its writer never
   // holds every cell's.
   std::vector<double> volume;
-  std::optional<BoxSpec> box;
+  std::optional<mesh::BoxSpec> box;
   std::vector<std::string> patches;  // the boundary patches' names (Mesh::patches)
   std::vector<double> patch_area;    // per patch (m^2): a periodic axis's patches have none
 };
 
 // From the box's nodes alone (its tetrahedra from box_polyhedra()).
-OutputGrid output_grid(const BoxSpec& box);
+OutputGrid output_grid(const mesh::BoxSpec& box);
 // From the whole mesh.
-OutputGrid output_grid(const Mesh& whole);
+OutputGrid output_grid(const mesh::Mesh& whole);
 // The gas's: of its box, or of its whole mesh. Rank 0 only (std::logic_error on others).
-OutputGrid output_grid(const Simulation& gas);
+OutputGrid output_grid(const step::Simulation& gas);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

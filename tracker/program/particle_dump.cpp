@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <numeric>
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // splitmix64's increment and finaliser (Steele, Lea & Flood 2014): each input bit flips
@@ -35,13 +35,13 @@ static_assert(kObstacles + 2 * kPerObstacle == particle_values(2));
 
 // The state over the cell's primitives alone: an obstacle without primitives in a cell
 // never looks at its state there, which keeps whatever bits the particle brought in.
-csg::State cell_state(const Obstacles& obstacles, int o, Index cell, csg::State state) {
+csg::State cell_state(const tracking::Obstacles& obstacles, int o, Index cell, csg::State state) {
   const std::size_t n = obstacles.cells(o).primitives(obstacles.bounding_cell(cell)).size();
   return n >= 64 ? state : state & ((csg::State{1} << n) - 1);
 }
 
-void add_record(std::vector<double>& records, const Obstacles& obstacles, const Particle& p, Index global_cell,
-                std::span<const csg::State> states) {
+void add_record(std::vector<double>& records, const tracking::Obstacles& obstacles, const tracking::Particle& p,
+                Index global_cell, std::span<const csg::State> states) {
   records.push_back(global_cell);
   records.insert(records.end(), p.x.data(), p.x.data() + 3);
   records.insert(records.end(), p.v.data(), p.v.data() + 3);
@@ -55,14 +55,14 @@ void add_record(std::vector<double>& records, const Obstacles& obstacles, const 
 
 }  // namespace
 
-field::PointSet particle_set(const Simulation& gas, const ParticleOutput& output) {
-  const Swarm& swarm = gas.swarm();
-  const Obstacles& obstacles = gas.setup().obstacles;
+field::PointSet particle_set(const step::Simulation& gas, const ParticleOutput& output) {
+  const tracking::Swarm& swarm = gas.swarm();
+  const tracking::Obstacles& obstacles = gas.setup().obstacles;
   const auto objects = static_cast<std::size_t>(obstacles.count());
   const std::size_t width = kObstacles + kPerObstacle * objects;
   std::vector<double> mine;
   for (std::size_t i = 0; i < swarm.size(); ++i)
-    if (const Particle p = swarm.particle(i); chosen(p.x, output))
+    if (const tracking::Particle p = swarm.particle(i); chosen(p.x, output))
       add_record(mine, obstacles, p, gas.tracked().global_cell(p.cell), swarm.states(i));
   const std::vector<double> all = gas.decomposition().ranks().gather(mine);
   const std::size_t n = all.size() / width;
@@ -98,4 +98,4 @@ field::PointSet particle_set(const Simulation& gas, const ParticleOutput& output
   return set;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -22,7 +22,7 @@
 #include "tracker/program/scene_particle_output.hpp"
 #include "tracker/step/simulation.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 inline constexpr char kParticleSet[] = "particles";
 
@@ -33,6 +33,6 @@ constexpr std::size_t particle_values(std::size_t obstacles) { return 7 + 3 * ob
 // Collective over the gas's ranks: rank 0 gets the chosen particles of every rank, in cell
 // order and within a cell by position (the same set in the same order on any rank count),
 // the other ranks a set without points.
-field::PointSet particle_set(const Simulation& gas, const ParticleOutput& output);
+field::PointSet particle_set(const step::Simulation& gas, const ParticleOutput& output);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

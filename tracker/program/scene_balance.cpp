@@ -1,9 +1,9 @@
 #include "tracker/program/scene_balance.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
-Balance read_balance(const scene::Reader& options) {
-  Balance b;
+step::Balance read_balance(const scene::Reader& options) {
+  step::Balance b;
   if (!options.has("balance")) return b;
   const scene::Reader r = options.map("balance");
   b.every = r.integer("every", b.every, scene::Range::at_least(0));
@@ -12,4 +12,4 @@ Balance read_balance(const scene::Reader& options) {
   return b;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

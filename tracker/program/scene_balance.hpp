@@ -13,8 +13,8 @@
 #include "coupler/scene/reader.hpp"
 #include "tracker/step/gas_setup.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
-Balance read_balance(const scene::Reader& options);
+step::Balance read_balance(const scene::Reader& options);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -7,9 +7,9 @@
 
 #include "tracker/dsmc/species.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
-std::optional<Collisions> read_collisions(const scene::Reader& options, double mass) {
+std::optional<step::Collisions> read_collisions(const scene::Reader& options, double mass) {
   if (!options.has("collisions")) return std::nullopt;
   const scene::Reader r = options.map("collisions");
   const dsmc::SpeciesTable table = dsmc::read_species(dsmc::default_species_file());
@@ -28,7 +28,7 @@ std::optional<Collisions> read_collisions(const scene::Reader& options, double m
   if (std::abs(mass - species.mass) > 1e-6 * species.mass)
     r.fail("species",
            fmt::format("the particles' mass {:g} kg is not {}'s {:g} kg (particles.mass)", mass, name, species.mass));
-  return Collisions{dsmc::CollisionModel::from_species(species, model), nearest};
+  return step::Collisions{dsmc::CollisionModel::from_species(species, model), nearest};
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -14,8 +14,8 @@
 #include "coupler/scene/reader.hpp"
 #include "tracker/step/collide.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
-std::optional<Collisions> read_collisions(const scene::Reader& options, double mass);
+std::optional<step::Collisions> read_collisions(const scene::Reader& options, double mass);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

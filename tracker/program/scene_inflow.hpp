@@ -13,9 +13,9 @@
 #include "coupler/scene/reader.hpp"
 #include "tracker/tracking/inflow.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
-std::vector<Inflow> read_inflows(const scene::Reader& options, const Mesh& mesh, const Boundaries& boundaries,
-                                 double mass, double weight);
+std::vector<tracking::Inflow> read_inflows(const scene::Reader& options, const mesh::Mesh& mesh,
+                                           const tracking::Boundaries& boundaries, double mass, double weight);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

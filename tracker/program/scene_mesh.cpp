@@ -13,7 +13,7 @@
 #include "tracker/mesh/perturb.hpp"
 #include "tracker/mesh/voronoi_mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 using scene::Range;
@@ -44,11 +44,11 @@ std::array<bool, 3> periodic(const Reader& r) {
   return out;
 }
 
-BoxSpec box(const Reader& r, const scene::Domain& domain) {
+mesh::BoxSpec box(const Reader& r, const scene::Domain& domain) {
   std::array<double, 3> cells{}, ratio{1, 1, 1};
   r.numbers("cells", cells, Range::closed(1, 1e6));
   if (r.has("ratio")) r.numbers("ratio", ratio, Range::above(0));
-  BoxSpec spec;
+  mesh::BoxSpec spec;
   const std::array<int, 3> n = whole(r, "cells", cells);
   for (std::size_t a = 0; a < 3; ++a)
     spec.axes[a] = {.min = domain.min[a], .max = domain.max[a], .cells = n[a], .ratio = ratio[a]};
@@ -67,11 +67,11 @@ BoxSpec box(const Reader& r, const scene::Domain& domain) {
   return spec;
 }
 
-Mesh voronoi(const Reader& r, const scene::Domain& domain) {
+mesh::Mesh voronoi(const Reader& r, const scene::Domain& domain) {
   const int count = r.integer("points", Range::at_least(1));
   std::mt19937_64 rng(static_cast<std::uint64_t>(r.integer("seed", 1, Range::at_least(0))));
-  VoronoiSpec spec{.min = {domain.min[0], domain.min[1], domain.min[2]},
-                   .max = {domain.max[0], domain.max[1], domain.max[2]}};
+  mesh::VoronoiSpec spec{.min = {domain.min[0], domain.min[1], domain.min[2]},
+                         .max = {domain.max[0], domain.max[1], domain.max[2]}};
   spec.periodic = periodic(r);
   std::vector<Vec3> points;
   for (int i = 0; i < count; ++i) {
@@ -79,25 +79,26 @@ Mesh voronoi(const Reader& r, const scene::Domain& domain) {
     for (int a = 0; a < 3; ++a) p[a] = std::uniform_real_distribution<double>(spec.min[a], spec.max[a])(rng);
     points.push_back(p);
   }
-  return voronoi_mesh(points, spec);
+  return mesh::voronoi_mesh(points, spec);
 }
 
 }  // namespace
 
-SceneMesh read_mesh(const Reader& r, const scene::Scene& scene, const std::function<Mesh(const BoxSpec&)>& box_part) {
+SceneMesh read_mesh(const Reader& r, const scene::Scene& scene,
+                    const std::function<mesh::Mesh(const mesh::BoxSpec&)>& box_part) {
   const auto type = static_cast<Type>(r.choice("type", kTypes));
   // The key a failure of the mesh itself is blamed on.
   const std::string blamed = type == kGmsh ? "file" : type == kBox ? "cells" : "type";
-  Mesh mesh;
-  std::optional<BoxSpec> spec;
+  mesh::Mesh mesh;
+  std::optional<mesh::BoxSpec> spec;
   try {
     switch (type) {
       case kBox:
         spec = box(r, scene.domain);
-        mesh = box_part && !r.has("perturb") ? box_part(*spec) : box_mesh(*spec);
+        mesh = box_part && !r.has("perturb") ? box_part(*spec) : mesh::box_mesh(*spec);
         break;
       case kGmsh:
-        mesh = load_gmsh(scene.folder / r.string("file"));
+        mesh = mesh::load_gmsh(scene.folder / r.string("file"));
         break;
       case kVoronoi:
         mesh = voronoi(r, scene.domain);
@@ -106,8 +107,9 @@ SceneMesh read_mesh(const Reader& r, const scene::Scene& scene, const std::funct
     if (r.has("perturb")) {
       const Reader p = r.map("perturb");
       spec.reset();
-      mesh = perturbed(std::move(mesh), {.fraction = p.number("fraction", Range::open(0, 0.5)),
-                                         .seed = static_cast<std::uint64_t>(p.integer("seed", 1, Range::at_least(0)))});
+      mesh = mesh::perturbed(std::move(mesh),
+                             {.fraction = p.number("fraction", Range::open(0, 0.5)),
+                              .seed = static_cast<std::uint64_t>(p.integer("seed", 1, Range::at_least(0)))});
       p.finish();
     }
   } catch (const std::invalid_argument& e) {
@@ -117,4 +119,4 @@ SceneMesh read_mesh(const Reader& r, const scene::Scene& scene, const std::funct
   return {std::move(mesh), std::move(spec)};
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

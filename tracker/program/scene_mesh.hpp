@@ -21,15 +21,15 @@
 #include <functional>
 #include <optional>
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 struct SceneMesh {
-  Mesh mesh;
-  std::optional<BoxSpec> box;  // the mesh is this box's (not perturbed)
+  mesh::Mesh mesh;
+  std::optional<mesh::BoxSpec> box;  // the mesh is this box's (not perturbed)
 };
 // `box_part`, if given: builds the mesh of a box (not perturbed) from its spec instead of
 // box_mesh (a rank's part of it).
 SceneMesh read_mesh(const scene::Reader& mesh, const scene::Scene& scene,
-                    const std::function<Mesh(const BoxSpec&)>& box_part = {});
+                    const std::function<mesh::Mesh(const mesh::BoxSpec&)>& box_part = {});
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

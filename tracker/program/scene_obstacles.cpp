@@ -8,7 +8,7 @@
 #include "tracker/program/csg_shape.hpp"
 #include "tracker/program/scene_walls.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // The body's own shape in its frame, as the rigid-body program and the fluid see it.
@@ -55,7 +55,7 @@ SceneObstacles read_obstacles(const scene::Reader& options, const scene::Scene& 
                                                  : read_shape(r.map("shape"), scene.folder));
     const bool permeable = r.boolean("permeable", false);
     // A zone has no wall: `wall` on one stays unread, and finish() names it.
-    BoundaryCondition wall;
+    tracking::BoundaryCondition wall;
     if (!permeable && r.has("wall")) wall = read_condition(r.map("wall"), false);
     r.finish();
     out.objects.push_back({std::move(name), std::move(shape), permeable, wall});
@@ -64,4 +64,4 @@ SceneObstacles read_obstacles(const scene::Reader& options, const scene::Scene& 
   return out;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

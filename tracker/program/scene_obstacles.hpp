@@ -21,11 +21,11 @@
 #include "coupler/scene/scene.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 struct SceneObstacles {
-  std::vector<Obstacle> objects;  // bound ones in their body's frame
-  std::vector<int> body;          // per object: its index in scene.bodies, or -1
+  std::vector<tracking::Obstacle> objects;  // bound ones in their body's frame
+  std::vector<int> body;                    // per object: its index in scene.bodies, or -1
 };
 
 SceneObstacles read_obstacles(const scene::Reader& options, const scene::Scene& scene);
@@ -33,4 +33,4 @@ SceneObstacles read_obstacles(const scene::Reader& options, const scene::Scene& 
 // Where body b of the scene starts: its frame in the world.
 Eigen::Isometry3d initial_pose(const scene::Body& body);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

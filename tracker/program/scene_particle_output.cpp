@@ -2,10 +2,10 @@
 
 #include "coupler/field/field_frame.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 std::optional<ParticleOutput> read_particle_output(const scene::Reader& options, const scene::Scene& scene,
-                                                   const Obstacles& obstacles) {
+                                                   const tracking::Obstacles& obstacles) {
   if (!options.has("particle_output")) return std::nullopt;
   const int fields_every = scene.output.fields_every;
   if (fields_every == 0)
@@ -28,4 +28,4 @@ std::optional<ParticleOutput> read_particle_output(const scene::Reader& options,
   return o;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -22,7 +22,7 @@
 #include "coupler/scene/reader.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 struct ParticleOutput {
   int every = 1;
@@ -42,6 +42,6 @@ inline std::string inside_attribute(const std::string& obstacle) { return "insid
 // None without the key; refuses, besides bad values, an obstacle whose name cannot name its
 // attributes (a '/' or a control character in it).
 std::optional<ParticleOutput> read_particle_output(const scene::Reader& options, const scene::Scene& scene,
-                                                   const Obstacles& obstacles);
+                                                   const tracking::Obstacles& obstacles);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

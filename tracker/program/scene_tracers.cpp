@@ -2,12 +2,12 @@
 
 #include "tracker/program/velocity_input.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
-std::optional<Tracers> read_tracers(const scene::Reader& options, const scene::Scene& scene) {
+std::optional<step::Tracers> read_tracers(const scene::Reader& options, const scene::Scene& scene) {
   if (!options.has("tracers")) return std::nullopt;
   const scene::Reader r = options.map("tracers");
-  Tracers t;
+  step::Tracers t;
   t.model.response_time = r.number("response_time", 0.0, scene::Range::at_least(0));
   t.model.substeps = static_cast<int>(r.integer("substeps", 1, scene::Range::at_least(1)));
   if (r.has("velocity")) {
@@ -24,4 +24,4 @@ std::optional<Tracers> read_tracers(const scene::Reader& options, const scene::S
   return t;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -19,8 +19,8 @@
 #include "coupler/scene/scene.hpp"
 #include "tracker/step/gas_setup.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
-std::optional<Tracers> read_tracers(const scene::Reader& options, const scene::Scene& scene);
+std::optional<step::Tracers> read_tracers(const scene::Reader& options, const scene::Scene& scene);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -15,22 +15,22 @@
 #include "tracker/program/scene_walls.hpp"
 #include "tracker/program/seeding.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 namespace {
 
 // On several ranks, this rank's brick of a box and the two layers of cells around it.
-std::function<Mesh(const BoxSpec&)> box_parts(const Ranks& ranks) {
+std::function<mesh::Mesh(const mesh::BoxSpec&)> box_parts(const parallel::Ranks& ranks) {
   if (ranks.size() == 1) return {};
-  return [ranks](const BoxSpec& spec) {
-    const Bricks bricks = box_bricks(spec, ranks.size());
-    const Bricks::Range& mine = bricks.brick(ranks.rank());
+  return [ranks](const mesh::BoxSpec& spec) {
+    const parallel::Bricks bricks = parallel::box_bricks(spec, ranks.size());
+    const parallel::Bricks::Range& mine = bricks.brick(ranks.rank());
     // Parts differ in size (ghosts on one side or two, a periodic axis whole): a part too
     // large for its numbering fails every rank alike, not only its own.
-    Mesh part;
+    mesh::Mesh part;
     std::string failure;
     try {
-      part = box_part(
+      part = mesh::box_part(
           spec, mine.lo, mine.hi, [&](Index c) { return bricks.owner(c); }, ranks.rank());
     } catch (const std::invalid_argument& e) {
       failure = e.what();
@@ -45,7 +45,7 @@ std::function<Mesh(const BoxSpec&)> box_parts(const Ranks& ranks) {
 // The whole mesh's, also where this rank holds only its part of a box.
 double mesh_volume(const TrackerScene& t) {
   if (t.box) {
-    const CellVolumes box = volumes_of(*t.box);
+    const step::CellVolumes box = step::volumes_of(*t.box);
     return box.below(box.cells);
   }
   double v = 0;
@@ -55,7 +55,7 @@ double mesh_volume(const TrackerScene& t) {
 
 }  // namespace
 
-TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
+TrackerScene read_tracker(const scene::Scene& scene, parallel::Ranks ranks) {
   const scene::Participant* p = scene.participant("tracker");
   if (p == nullptr) throw scene::SceneError(scene.file.string(), 0, "participants", "", "the scene has no tracker");
   const scene::Reader options = scene::options_of(scene, *p);
@@ -64,11 +64,11 @@ TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
   t.dt = p->dt;
   t.tracers = read_tracers(options, scene);
   SceneMesh mesh = read_mesh(options.map("mesh"), scene, t.tracers ? nullptr : box_parts(ranks));
-  t.mesh = std::make_unique<Mesh>(std::move(mesh.mesh));
+  t.mesh = std::make_unique<mesh::Mesh>(std::move(mesh.mesh));
   t.box = std::move(mesh.box);
   const bool part = t.mesh->partial;
   t.particles = read_seeding(options.map("particles"), scene.folder, mesh_volume(t));
-  Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass, ranks);
+  tracking::Boundaries boundaries = read_boundaries(options, *t.mesh, t.particles.mass, ranks);
   t.inflows = read_inflows(options, *t.mesh, boundaries, t.particles.mass, t.particles.weight);
   // A part may hold none of an inflow's faces, but some rank must.
   for (std::size_t i = 0; part && i < t.inflows.size(); ++i)
@@ -78,7 +78,7 @@ TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
   if (t.tracers && (t.collisions || !t.inflows.empty()))
     options.fail("tracers", "tracers ride the fluid: a scene with tracers has no collisions and no inflow");
   try {
-    t.domain = std::make_unique<const Domain>(*t.mesh, std::move(boundaries));
+    t.domain = std::make_unique<const tracking::Domain>(*t.mesh, std::move(boundaries));
   } catch (const std::invalid_argument& e) {
     options.fail("boundaries", e.what());
   }
@@ -87,7 +87,7 @@ TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks) {
   if (!obstacles.objects.empty()) {
     std::string failure;
     try {
-      t.obstacles = Obstacles(*t.mesh, std::move(obstacles.objects));
+      t.obstacles = tracking::Obstacles(*t.mesh, std::move(obstacles.objects));
       for (int i = 0; i < t.obstacles.count(); ++i)
         if (const int b = t.obstacle_body[static_cast<std::size_t>(i)]; b >= 0)
           t.obstacles.place(i, initial_pose(scene.bodies[static_cast<std::size_t>(b)]));
@@ -124,4 +124,4 @@ void place_bound_obstacles(TrackerScene& setup, const std::vector<Eigen::Isometr
     }
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -12,11 +12,11 @@
 #include "tracker/program/scene_particle_output.hpp"
 #include "tracker/step/gas_setup.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 // The gas a Simulation is made from (obstacles bound to a body at the body's initial pose),
 // and what only the program needs besides.
-struct TrackerScene : GasSetup {
+struct TrackerScene : step::GasSetup {
   std::vector<int> obstacle_body;                 // per obstacle: the scene body it moves with, or -1
   std::optional<ParticleOutput> particle_output;  // particles written with the fields
 };
@@ -25,9 +25,9 @@ struct TrackerScene : GasSetup {
 // (not perturbed, not in tracer mode) is built as this rank's part (mesh/box_part.hpp, the
 // bricks of parallel/bricks.hpp), and the checks that need every cell are made over the
 // ranks (collective).
-TrackerScene read_tracker(const scene::Scene& scene, Ranks ranks = {});
+TrackerScene read_tracker(const scene::Scene& scene, parallel::Ranks ranks = {});
 // Places the obstacles bound to bodies at `body_poses` (one per scene body, world from body
 // frame; none: they stay where the scene puts the bodies); std::runtime_error for too few.
 void place_bound_obstacles(TrackerScene& setup, const std::vector<Eigen::Isometry3d>& body_poses);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

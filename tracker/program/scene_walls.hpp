@@ -20,15 +20,16 @@
 #include "tracker/parallel/ranks.hpp"
 #include "tracker/tracking/boundaries.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
-BoundaryCondition read_condition(const scene::Reader& r, bool allow_periodic);
+tracking::BoundaryCondition read_condition(const scene::Reader& r, bool allow_periodic);
 
 // The `boundaries` of the tracker's options: one condition per patch of `mesh`. Every patch
 // with boundary faces needs one (its own or the default); a patch without faces (linked
 // periodically by the mesh) gets `periodic`.
 // On a rank's part of a mesh (mesh/part.hpp), which patches have faces is asked of all
 // `ranks` (collective).
-Boundaries read_boundaries(const scene::Reader& options, const Mesh& mesh, double mass, const Ranks& ranks = {});
+tracking::Boundaries read_boundaries(const scene::Reader& options, const mesh::Mesh& mesh, double mass,
+                                     const parallel::Ranks& ranks = {});
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

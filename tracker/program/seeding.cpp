@@ -2,11 +2,11 @@
 
 #include "tracker/program/seeding_regions.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
-Seeding read_seeding(const scene::Reader& r, const std::filesystem::path& folder, double mesh_volume) {
+step::Seeding read_seeding(const scene::Reader& r, const std::filesystem::path& folder, double mesh_volume) {
   using scene::Range;
-  Seeding s;
+  step::Seeding s;
   s.mass = r.number("mass", Range::above(0));
   s.weight = r.number("weight", 1.0, Range::above(0));
   s.seed = static_cast<std::uint64_t>(r.integer("seed", 1, Range::at_least(0)));
@@ -26,4 +26,4 @@ Seeding read_seeding(const scene::Reader& r, const std::filesystem::path& folder
   return s;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -24,9 +24,9 @@
 #include "coupler/scene/reader.hpp"
 #include "tracker/step/seed_particles.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 // `folder` and `mesh_volume` (m^3): read_seed_regions'.
-Seeding read_seeding(const scene::Reader& particles, const std::filesystem::path& folder, double mesh_volume);
+step::Seeding read_seeding(const scene::Reader& particles, const std::filesystem::path& folder, double mesh_volume);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

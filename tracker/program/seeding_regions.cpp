@@ -5,7 +5,7 @@
 
 #include "tracker/program/csg_shape.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // More simulated particles than a region of a tracker run is meant to hold (40 bytes each:
@@ -20,12 +20,12 @@ std::string number(double x) {
 
 }  // namespace
 
-std::vector<SeedRegion> read_seed_regions(const scene::Reader& particles, const std::filesystem::path& folder,
-                                          double mesh_volume, double weight) {
+std::vector<step::SeedRegion> read_seed_regions(const scene::Reader& particles, const std::filesystem::path& folder,
+                                                double mesh_volume, double weight) {
   using scene::Range;
-  std::vector<SeedRegion> regions;
+  std::vector<step::SeedRegion> regions;
   for (const scene::Reader& r : particles.maps("regions")) {
-    SeedRegion region{.shape = read_shape(r.map("region"), folder)};
+    step::SeedRegion region{.shape = read_shape(r.map("region"), folder)};
     region.number_density = r.number("number_density", Range::above(0));
     if (const double most = region.number_density * mesh_volume / weight; most > kMostParticles)
       r.fail("number_density", "up to " + number(most) + " particles in the mesh's " + number(mesh_volume) +
@@ -43,4 +43,4 @@ std::vector<SeedRegion> read_seed_regions(const scene::Reader& particles, const 
   return regions;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -15,12 +15,12 @@
 #include "coupler/scene/reader.hpp"
 #include "tracker/step/seed_regions.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 // `folder`: where a shape's relative file is found; `mesh_volume` (m^3) and `weight` bound
 // the particles a region can ask for, so that a forgotten weight is an error, not a run
 // that fills the memory.
-std::vector<SeedRegion> read_seed_regions(const scene::Reader& particles, const std::filesystem::path& folder,
-                                          double mesh_volume, double weight);
+std::vector<step::SeedRegion> read_seed_regions(const scene::Reader& particles, const std::filesystem::path& folder,
+                                                double mesh_volume, double weight);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

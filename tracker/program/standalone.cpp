@@ -9,7 +9,7 @@
 #include "tracker/program/adapter.hpp"
 #include "tracker/program/tracker_file.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // The tracker's run file at the start, every output.fields_every windows and the last:
@@ -18,7 +18,7 @@ namespace {
 class TrackerRecorder final : public participant::Recorder {
  public:
   TrackerRecorder(const std::filesystem::path& path, const scene::Scene& scene, const TrackerSolver& solver,
-                  const Ranks& ranks)
+                  const parallel::Ranks& ranks)
       : scene_(scene), solver_(solver) {
     if (!ranks.lead()) return;
     if (!scene.bodies.empty())
@@ -26,7 +26,7 @@ class TrackerRecorder final : public participant::Recorder {
                    "cosim-tracker: note: --standalone keeps the scene's %zu bodies (and the obstacles bound to "
                    "them) where the scene puts them; in coupled runs the rigid-body program moves them\n",
                    scene.bodies.size());
-    const Obstacles& obstacles = solver.gas().setup().obstacles;
+    const tracking::Obstacles& obstacles = solver.gas().setup().obstacles;
     std::vector<std::string> names;
     for (int i = 0; i < obstacles.count(); ++i) names.push_back(obstacles.object(i).name);
     file_.emplace(path, scene, solver.grid(), names);
@@ -36,7 +36,7 @@ class TrackerRecorder final : public participant::Recorder {
     const std::uint64_t windows = scene_.windows();
     // The start and the end always: the file is the run's only record.
     if (done != 0 && done != windows && !scene_.output.fields_at(done, windows)) return;
-    const Simulation& gas = solver_.gas();
+    const step::Simulation& gas = solver_.gas();
     Sample sample{.step = gas.steps(),
                   .time = time,
                   .particles = gas.particles(),
@@ -71,7 +71,7 @@ class TrackerRecorder final : public participant::Recorder {
 
 }  // namespace
 
-RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, Ranks ranks) {
+RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, parallel::Ranks ranks) {
   const auto started = std::chrono::steady_clock::now();
   TrackerSolver solver(ranks, TrackerSolver::Draws::one_stream);
   double setup_seconds = 0.0;
@@ -80,7 +80,7 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
     setup_seconds = participant::seconds_since(started);
     return recorder;
   });
-  const Simulation& gas = solver.gas();
+  const step::Simulation& gas = solver.gas();
   return {.steps = gas.steps(),
           .seeded = gas.seeded(),
           .remaining = gas.particles(),
@@ -94,4 +94,4 @@ RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, 
           .stages = gas.stages()};
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -14,7 +14,7 @@
 #include "tracker/step/stages.hpp"
 #include "tracker/tracking/move.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 struct RunSummary {
   std::uint64_t steps = 0;
@@ -24,16 +24,16 @@ struct RunSummary {
   std::int64_t collisions = 0;            // DSMC collisions, if the scene has them
   std::size_t migrated = 0;               // particles sent between ranks
   std::uint64_t rebalances = 0;           // re-partitions by particles (scene_balance.hpp)
-  MoveTally moves;
+  tracking::MoveTally moves;
   double wall_seconds = 0.0;
   double setup_seconds = 0.0;  // of this rank: the mesh built, the gas seeded, the file made
-  StageSeconds stages;         // of this rank's steps
+  step::StageSeconds stages;   // of this rank's steps
 };
 
 // Writes `output` (empty: the scene's output.file). Throws scene::SceneError for a bad
 // scene, std::runtime_error otherwise (the file then says "failed: ..." in /run status),
 // lost particles included (a tracking bug). Collective over `ranks`; the summary is the
 // totals over them, on every rank.
-RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, Ranks ranks = {});
+RunSummary run_tracker(const scene::Scene& scene, std::filesystem::path output, parallel::Ranks ranks = {});
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -12,7 +12,7 @@
 #include "coupler/output/text.hpp"
 #include "tracker/step/cell_volumes.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 using output::Handle;
@@ -20,13 +20,14 @@ using output::Series;
 
 std::vector<std::string> move_columns() {
   std::vector<std::string> names;
-  for (const MoveCounter& c : kMoveCounters) names.emplace_back(c.name);
+  for (const tracking::MoveCounter& c : tracking::kMoveCounters) names.emplace_back(c.name);
   return names;
 }
 
-std::vector<std::uint64_t> columns_of(const MoveTally& t) {
+std::vector<std::uint64_t> columns_of(const tracking::MoveTally& t) {
   std::vector<std::uint64_t> values;
-  for (const MoveCounter& c : kMoveCounters) values.push_back(static_cast<std::uint64_t>(t.*c.count));
+  for (const tracking::MoveCounter& c : tracking::kMoveCounters)
+    values.push_back(static_cast<std::uint64_t>(t.*c.count));
   return values;
 }
 
@@ -46,12 +47,12 @@ struct TrackerFile::Impl {
       return;
     }
     std::array<int, 3> n{};
-    for (int a = 0; a < 3; ++a) n[a] = static_cast<int>(axis_nodes(box->axes[a]).size()) - 1;
+    for (int a = 0; a < 3; ++a) n[a] = static_cast<int>(mesh::axis_nodes(box->axes[a]).size()) - 1;
     const std::vector<hsize_t> dims{hsize_t(n[2]), hsize_t(n[1]), hsize_t(n[0])};
     output::create_array(grid.get(), "volume", dims);
     for (int k = 0; k < n[2]; ++k)
       output::write_block(grid.get(), "volume", {hsize_t(k), 0, 0}, {1, dims[1], dims[2]},
-                          cell_volumes(*box, {0, 0, k}, {n[0], n[1], k + 1}).data());
+                          step::cell_volumes(*box, {0, 0, k}, {n[0], n[1], k + 1}).data());
     box.reset();
   }
 
@@ -65,7 +66,7 @@ struct TrackerFile::Impl {
   output::FieldWriter fields;
   // Until the first step wrote the grid's group: the volumes for it (OutputGrid's).
   std::vector<double> volume;
-  std::optional<BoxSpec> box;
+  std::optional<mesh::BoxSpec> box;
 };
 
 TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& scene, const OutputGrid& grid,
@@ -90,7 +91,7 @@ TrackerFile::TrackerFile(const std::filesystem::path& path, const scene::Scene& 
     m.rows.push_back(Series::create(series.get(), "step", 1, H5T_NATIVE_UINT64));
     m.rows.push_back(Series::create(series.get(), "time", 1, H5T_NATIVE_DOUBLE));
     m.rows.push_back(Series::create(series.get(), "particles", 1, H5T_NATIVE_UINT64));
-    m.rows.push_back(Series::create(series.get(), "moves", kMoveCounters.size(), H5T_NATIVE_UINT64));
+    m.rows.push_back(Series::create(series.get(), "moves", tracking::kMoveCounters.size(), H5T_NATIVE_UINT64));
     {
       Handle moves(H5Dopen2(series.get(), "moves", H5P_DEFAULT), H5Dclose, "open /tracker/moves");
       output::write_attribute(moves.get(), "columns", move_columns());
@@ -141,7 +142,7 @@ void TrackerFile::write(const Sample& s, const Blocks& blocks) {
     if (m.objects > 0) {
       std::vector<std::vector<std::uint64_t>> counts(5);
       std::vector<double> impulse, angular_impulse, energy;
-      for (const ObstacleTally& t : s.objects) {
+      for (const tracking::ObstacleTally& t : s.objects) {
         const long long v[] = {t.hits, t.absorbed, t.entered, t.left, t.released};
         for (std::size_t k = 0; k < counts.size(); ++k) counts[k].push_back(static_cast<std::uint64_t>(v[k]));
         impulse.insert(impulse.end(), t.impulse.begin(), t.impulse.end());
@@ -159,7 +160,7 @@ void TrackerFile::write(const Sample& s, const Blocks& blocks) {
     if (m.patches > 0) {
       std::vector<std::uint64_t> hits, absorbed;
       std::vector<double> impulse, energy;
-      for (const SurfaceTally& t : s.patches) {
+      for (const tracking::SurfaceTally& t : s.patches) {
         hits.push_back(static_cast<std::uint64_t>(t.hits));
         absorbed.push_back(static_cast<std::uint64_t>(t.absorbed));
         impulse.insert(impulse.end(), t.impulse.begin(), t.impulse.end());
@@ -185,4 +186,4 @@ void TrackerFile::set_status(const std::string& status, double wall_seconds) {
   });
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

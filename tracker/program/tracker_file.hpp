@@ -54,7 +54,7 @@
 #include "tracker/program/output_grid.hpp"
 #include "tracker/tracking/move.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 struct Sample {
   std::uint64_t step = 0;
@@ -63,9 +63,9 @@ struct Sample {
   // On the grid the file was made with: the cell fields (cell_fields.hpp) and the point
   // sets, e.g. the particles (particle_dump.hpp), as TrackerSolver::fields() gives them.
   field::FieldFrame fields;
-  std::vector<ObstacleTally> objects;
-  std::vector<SurfaceTally> patches;  // per boundary patch, by Mesh::patches index
-  MoveTally moves;
+  std::vector<tracking::ObstacleTally> objects;
+  std::vector<tracking::SurfaceTally> patches;  // per boundary patch, by Mesh::patches index
+  tracking::MoveTally moves;
 };
 
 class TrackerFile {
@@ -88,4 +88,4 @@ class TrackerFile {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -8,7 +8,7 @@
 #include "tracker/program/particle_dump.hpp"
 #include "tracker/step/seed_particles.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // count, mean_count, density, velocity (3), temperature, pressure: cell_fields.hpp.
@@ -19,10 +19,10 @@ constexpr std::uint64_t kCellValues = 8;
 // cells of the mesh's mean width. The tracking's cost per particle grows with these as the
 // cells get smaller than a flight.
 std::uint64_t crossings(const TrackerScene& setup, std::uint64_t particles) {
-  const Seeding& gas = setup.particles;
+  const step::Seeding& gas = setup.particles;
   const double thermal =
       gas.hottest() > 0 && gas.mass > 0 ? std::sqrt(8 * boltzmann * gas.hottest() / (std::numbers::pi * gas.mass)) : 0;
-  const Mesh& mesh = *setup.mesh;
+  const mesh::Mesh& mesh = *setup.mesh;
   double volume = 0;
   for (const double v : mesh.volume) volume += v;
   const double width = std::cbrt(volume / static_cast<double>(mesh.cell_count()));
@@ -35,9 +35,9 @@ std::uint64_t crossings(const TrackerScene& setup, std::uint64_t particles) {
 // at the start and one more cell per crossing; the cells weighted by their volume, where the
 // particles are. Obstacles bound to bodies count where they start.
 std::uint64_t primitive_tests(const TrackerScene& setup, std::uint64_t particles, std::uint64_t crossed) {
-  const Obstacles& obstacles = setup.obstacles;
+  const tracking::Obstacles& obstacles = setup.obstacles;
   if (obstacles.empty()) return 0;
-  const Mesh& mesh = *setup.mesh;
+  const mesh::Mesh& mesh = *setup.mesh;
   double weighted = 0, volume = 0;
   for (Index c = 0; c < mesh.cell_count(); ++c) {
     std::size_t n = 0;
@@ -51,7 +51,7 @@ std::uint64_t primitive_tests(const TrackerScene& setup, std::uint64_t particles
 }  // namespace
 
 participant::WorkReport tracker_work(const scene::Scene& scene, const TrackerScene& setup) {
-  const std::uint64_t particles = seeded_count(*setup.mesh, setup.obstacles, setup.particles);
+  const std::uint64_t particles = step::seeded_count(*setup.mesh, setup.obstacles, setup.particles);
   const auto cells = static_cast<std::uint64_t>(setup.mesh->cell_count());
   double bytes = static_cast<double>(kCellValues * cells * sizeof(double));
   if (setup.particle_output && scene.output.fields_every > 0) {
@@ -63,7 +63,7 @@ participant::WorkReport tracker_work(const scene::Scene& scene, const TrackerSce
     bytes += share * out.fraction * static_cast<double>(particles) * per_particle;
   }
   const bool grows =
-      std::any_of(setup.inflows.begin(), setup.inflows.end(), [](const Inflow& i) { return i.rate() > 0; });
+      std::any_of(setup.inflows.begin(), setup.inflows.end(), [](const tracking::Inflow& i) { return i.rate() > 0; });
   const std::uint64_t crossed = crossings(setup, particles);
   return {.program = "tracker",
           .per_step = {{"particles", particles},
@@ -81,4 +81,4 @@ participant::WorkReport tracker_work(const scene::Scene& scene, const TrackerSce
           .grows = grows};
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

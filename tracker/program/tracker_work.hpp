@@ -5,7 +5,7 @@
 #include "coupler/scene/scene.hpp"
 #include "tracker/program/scene_tracker.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 // per_step {particles: the simulators at the start, crossings: about how many cell faces they
 // cross in a step, cells: the mesh's cells}, held {particles, cells};
@@ -15,4 +15,4 @@ namespace cosim::tracker {
 // `setup` is read_tracker(scene)'s on one rank, obstacles placed where the scene puts them.
 participant::WorkReport tracker_work(const scene::Scene& scene, const TrackerScene& setup);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

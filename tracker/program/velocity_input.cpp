@@ -6,9 +6,9 @@
 #include "coupler/output/h5_groups.hpp"
 #include "coupler/output/h5_values.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
-VelocityField velocity_of(const field::FieldFrame& frame) {
+tracers::VelocityField velocity_of(const field::FieldFrame& frame) {
   const auto field = std::find_if(frame.fields.begin(), frame.fields.end(),
                                   [](const field::CellField& f) { return f.name == "velocity"; });
   if (field == frame.fields.end() || field->components != 3)
@@ -26,10 +26,10 @@ VelocityField velocity_of(const field::FieldFrame& frame) {
   if (field->values.size() != 3 * cells)
     throw std::runtime_error("velocity has " + std::to_string(field->values.size() / 3) + " cells, the grid " +
                              std::to_string(cells));
-  return VelocityField(std::move(centres), field->values);
+  return tracers::VelocityField(std::move(centres), field->values);
 }
 
-VelocityField read_velocity(const std::filesystem::path& file, const std::string& participant) {
+tracers::VelocityField read_velocity(const std::filesystem::path& file, const std::string& participant) {
   try {
     if (!std::filesystem::exists(file)) throw std::runtime_error("no such file");
     output::Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + file.string());
@@ -57,4 +57,4 @@ VelocityField read_velocity(const std::filesystem::path& file, const std::string
   }
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

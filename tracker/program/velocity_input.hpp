@@ -8,15 +8,15 @@
 #include "coupler/field/field_frame.hpp"
 #include "tracker/tracers/velocity_field.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 
 // The frame's cell-centred `velocity` (3 components) at the centres of its rectilinear
 // grid. Throws std::runtime_error if the frame has no such field or its size is wrong.
-VelocityField velocity_of(const field::FieldFrame& frame);
+tracers::VelocityField velocity_of(const field::FieldFrame& frame);
 
 // The last velocity field `participant` wrote to the run file `file`
 // (/fields/<participant>/grid and the highest /fields/<participant>/<window>/velocity).
 // Throws std::runtime_error naming the file and what is missing.
-VelocityField read_velocity(const std::filesystem::path& file, const std::string& participant = "fluid");
+tracers::VelocityField read_velocity(const std::filesystem::path& file, const std::string& participant = "fluid");
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

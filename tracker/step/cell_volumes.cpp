@@ -1,16 +1,16 @@
 #include "tracker/step/cell_volumes.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
-std::vector<double> cell_volumes(const BoxSpec& box) {
+std::vector<double> cell_volumes(const mesh::BoxSpec& box) {
   std::array<int, 3> hexahedra{};
-  for (int a = 0; a < 3; ++a) hexahedra[a] = static_cast<int>(axis_nodes(box.axes[a]).size()) - 1;
+  for (int a = 0; a < 3; ++a) hexahedra[a] = static_cast<int>(mesh::axis_nodes(box.axes[a]).size()) - 1;
   return cell_volumes(box, {0, 0, 0}, hexahedra);
 }
 
-std::vector<double> cell_volumes(const BoxSpec& box, const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
+std::vector<double> cell_volumes(const mesh::BoxSpec& box, const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
   std::array<std::vector<double>, 3> nodes;
-  for (int a = 0; a < 3; ++a) nodes[a] = axis_nodes(box.axes[a]);
+  for (int a = 0; a < 3; ++a) nodes[a] = mesh::axis_nodes(box.axes[a]);
   // Every Kuhn tetrahedron is a sixth of its hexahedron.
   const std::size_t per_hex = box.tetrahedra ? 6 : 1;
   std::vector<double> volume;
@@ -26,4 +26,4 @@ std::vector<double> cell_volumes(const BoxSpec& box, const std::array<int, 3>& l
   return volume;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

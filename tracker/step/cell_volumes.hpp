@@ -8,10 +8,10 @@
 
 #include "tracker/mesh/box_mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
-std::vector<double> cell_volumes(const BoxSpec& box);
+std::vector<double> cell_volumes(const mesh::BoxSpec& box);
 // The cells of the hexahedra [lo, hi) per axis, in box_mesh's order among themselves.
-std::vector<double> cell_volumes(const BoxSpec& box, const std::array<int, 3>& lo, const std::array<int, 3>& hi);
+std::vector<double> cell_volumes(const mesh::BoxSpec& box, const std::array<int, 3>& lo, const std::array<int, 3>& hi);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

@@ -1,8 +1,8 @@
 #include "tracker/step/collide.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
-CellCollider::CellCollider(const Mesh& mesh, const Collisions& collisions, double temperature, double weight,
+CellCollider::CellCollider(const mesh::Mesh& mesh, const Collisions& collisions, double temperature, double weight,
                            std::uint64_t seed)
     : mesh_(mesh),
       collisions_(collisions),
@@ -11,7 +11,7 @@ CellCollider::CellCollider(const Mesh& mesh, const Collisions& collisions, doubl
              {dsmc::initial_sigma_g_max(collisions.model, temperature), 0.0}),
       rng_(dsmc::make_rng(seed)) {}
 
-std::int64_t CellCollider::collide(Swarm& swarm, double dt) {
+std::int64_t CellCollider::collide(tracking::Swarm& swarm, double dt) {
   std::int64_t collisions = 0;
   for (std::size_t first = 0; first < swarm.size();) {
     const Index cell = swarm.cell(first);
@@ -19,7 +19,7 @@ std::int64_t CellCollider::collide(Swarm& swarm, double dt) {
     velocities_.clear();
     positions_.clear();
     for (; end < swarm.size() && swarm.cell(end) == cell; ++end) {
-      const Particle p = swarm.particle(end);
+      const tracking::Particle p = swarm.particle(end);
       velocities_.push_back(p.v);
       if (collisions_.nearest) positions_.push_back(p.x);
     }
@@ -33,7 +33,7 @@ std::int64_t CellCollider::collide(Swarm& swarm, double dt) {
       collisions += done.collisions;
       if (done.collisions > 0)
         for (std::size_t k = first; k < end; ++k) {
-          Particle p = swarm.particle(k);
+          tracking::Particle p = swarm.particle(k);
           p.v = velocities_[k - first];
           swarm.set(k, p);
         }
@@ -43,4 +43,4 @@ std::int64_t CellCollider::collide(Swarm& swarm, double dt) {
   return collisions;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

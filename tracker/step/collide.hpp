@@ -12,7 +12,7 @@
 #include "tracker/dsmc/random.hpp"
 #include "tracker/tracking/swarm.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
 struct Collisions {
   dsmc::CollisionModel model;
@@ -23,10 +23,11 @@ class CellCollider {
  public:
   // `temperature`: the gas's expected temperature, for the first (sigma g)_max of a cell;
   // `weight`: real molecules per simulator.
-  CellCollider(const Mesh& mesh, const Collisions& collisions, double temperature, double weight, std::uint64_t seed);
+  CellCollider(const mesh::Mesh& mesh, const Collisions& collisions, double temperature, double weight,
+               std::uint64_t seed);
 
   // The swarm must be sorted by cell. Returns the number of collisions.
-  std::int64_t collide(Swarm& swarm, double dt);
+  std::int64_t collide(tracking::Swarm& swarm, double dt);
   // Draws from here on from `stream` of `seed` (Simulation::reseed).
   void reseed(std::uint64_t seed, std::uint64_t stream) { rng_ = dsmc::make_rng(seed, stream); }
   // Per cell, for rollback and checkpoints.
@@ -36,7 +37,7 @@ class CellCollider {
   void set_cells(std::vector<dsmc::CellCollisionState> cells) { cells_ = std::move(cells); }
 
  private:
-  const Mesh& mesh_;
+  const mesh::Mesh& mesh_;
   Collisions collisions_;
   double weight_;
   std::vector<dsmc::CellCollisionState> cells_;
@@ -44,4 +45,4 @@ class CellCollider {
   std::vector<Vec3> velocities_, positions_;  // one cell's, reused
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

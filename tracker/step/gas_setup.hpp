@@ -15,12 +15,12 @@
 #include "tracker/tracking/inflow.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
 // Tracer mode: the particles are tracers carried by a fluid's velocity field.
 struct Tracers {
-  TracerModel model;
-  std::optional<VelocityField> velocity;  // none yet: a coupled run's fluid sends it
+  tracers::TracerModel model;
+  std::optional<tracers::VelocityField> velocity;  // none yet: a coupled run's fluid sends it
 };
 
 // How the ranks' particle loads are kept even, as SPARTA's `fix balance` does: every
@@ -34,16 +34,16 @@ struct Balance {
 struct GasSetup {
   // On the heap: the domain and the obstacles refer to the mesh, and the whole moves. The
   // whole mesh, or (several ranks) this rank's part of a box (Mesh::partial).
-  std::unique_ptr<Mesh> mesh;
-  std::optional<BoxSpec> box;  // the mesh is this box's
-  std::unique_ptr<const Domain> domain;
-  Obstacles obstacles;
+  std::unique_ptr<mesh::Mesh> mesh;
+  std::optional<mesh::BoxSpec> box;  // the mesh is this box's
+  std::unique_ptr<const tracking::Domain> domain;
+  tracking::Obstacles obstacles;
   Seeding particles;
-  std::vector<Inflow> inflows;
+  std::vector<tracking::Inflow> inflows;
   std::optional<Collisions> collisions;
   std::optional<Tracers> tracers;  // no collisions, no inflow
   Balance balance;                 // over several ranks
   double dt = 0.0;                 // the longest step
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

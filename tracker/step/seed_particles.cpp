@@ -11,7 +11,7 @@
 #include "tracker/dsmc/random.hpp"
 #include "tracker/mesh/geometry.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 namespace {
 
 // Bounding-box draws before giving up on a sliver of a cell (then its centroid is taken):
@@ -32,7 +32,8 @@ dsmc::Rng keyed(std::uint64_t seed, std::uint64_t round, Drawn what, std::uint64
 
 class Seeder {
  public:
-  Seeder(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells)
+  Seeder(const mesh::Mesh& mesh, const tracking::Obstacles& obstacles, const Seeding& seeding,
+         const parallel::Decomposition& cells)
       : mesh_(mesh),
         obstacles_(obstacles),
         seeding_(seeding),
@@ -44,7 +45,7 @@ class Seeder {
       if (const Index g = mesh.global_cell(c); cells.owns(g)) owned_.push_back({g, c});
   }
 
-  Swarm per_cell() {
+  tracking::Swarm per_cell() {
     for (const auto& [global, local] : owned_) {
       dsmc::Rng rng = stream(global, 0);
       draw(rng, local, seeding_.per_cell, gas_);
@@ -68,7 +69,7 @@ class Seeder {
     return kept;
   }
 
-  Swarm total(const Ranks& ranks, const CellVolumes& volumes) {
+  tracking::Swarm total(const parallel::Ranks& ranks, const CellVolumes& volumes) {
     volumes_ = &volumes;
     long long wanted = seeding_.total, drawn = 0;
     for (std::uint64_t round = 0; wanted > 0; ++round) {
@@ -80,7 +81,7 @@ class Seeder {
     return std::move(swarm_);
   }
 
-  Swarm regions(const CellVolumes& volumes) {
+  tracking::Swarm regions(const CellVolumes& volumes) {
     each_region(volumes, true);
     return std::move(swarm_);
   }
@@ -124,7 +125,7 @@ class Seeder {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     long long kept = 0;
     for (const auto& [global, local] : owned_) {
-      const Eigen::AlignedBox3d box = cell_box(mesh_, local);
+      const Eigen::AlignedBox3d box = mesh::cell_box(mesh_, local);
       // The whole's volumes, not the part's: every rank count draws the same counts.
       const double volume = volumes.below(global + 1) - volumes.below(global);
       for (std::size_t i = 0; i < shapes.size(); ++i) {
@@ -172,14 +173,14 @@ class Seeder {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     // normal_distribution needs a positive deviation: a cold gas draws no thermal part.
     std::normal_distribution<double> gauss(0.0, gas.sigma > 0 ? gas.sigma : 1.0);
-    const Eigen::AlignedBox3d box = cell_box(mesh_, cell);
+    const Eigen::AlignedBox3d box = mesh::cell_box(mesh_, cell);
     long long kept = 0;
     for (long long i = 0; i < n; ++i) {
       Vec3 x = mesh_.centroid[cell];
       for (int t = 0; t < kTries; ++t) {
         Vec3 y;
         for (int a = 0; a < 3; ++a) y[a] = box.min()[a] + unit(rng) * (box.max()[a] - box.min()[a]);
-        if (contains(mesh_, cell, y)) {
+        if (mesh::contains(mesh_, cell, y)) {
           x = y;
           break;
         }
@@ -194,28 +195,28 @@ class Seeder {
     return kept;
   }
 
-  const Mesh& mesh_;
-  const Obstacles& obstacles_;
+  const mesh::Mesh& mesh_;
+  const tracking::Obstacles& obstacles_;
   const Seeding& seeding_;
   std::vector<std::pair<Index, Index>> owned_;  // (in the whole, here), ascending
   const CellVolumes* volumes_ = nullptr;
   std::vector<csg::State> states_;
   Gas gas_;  // per_cell's and total's
-  Swarm swarm_;
+  tracking::Swarm swarm_;
 };
 
 }  // namespace
 
-CellVolumes volumes_of(const Mesh& whole) {
+CellVolumes volumes_of(const mesh::Mesh& whole) {
   // Monotone prefix sums: a range's share of a larger one is in [0, 1] despite round-off.
   auto prefix = std::make_shared<std::vector<double>>(1, 0.0);
   for (const double v : whole.volume) prefix->push_back(prefix->back() + v);
   return {whole.cell_count(), [prefix](Index c) { return (*prefix)[static_cast<std::size_t>(c)]; }};
 }
 
-CellVolumes volumes_of(const BoxSpec& box) {
+CellVolumes volumes_of(const mesh::BoxSpec& box) {
   std::array<std::vector<double>, 3> nodes;
-  for (int a = 0; a < 3; ++a) nodes[a] = axis_nodes(box.axes[a]);
+  for (int a = 0; a < 3; ++a) nodes[a] = mesh::axis_nodes(box.axes[a]);
   const Index nx = static_cast<Index>(nodes[0].size()) - 1, ny = static_cast<Index>(nodes[1].size()) - 1,
               nz = static_cast<Index>(nodes[2].size()) - 1, per_hex = box.tetrahedra ? 6 : 1;
   const auto from_first = [nodes](int a, Index i) { return nodes[a][static_cast<std::size_t>(i)] - nodes[a][0]; };
@@ -228,7 +229,7 @@ CellVolumes volumes_of(const BoxSpec& box) {
   // then tetrahedra of the hexahedron.
   return {cells, [=](Index c) {
             if (c >= cells) return wx * wy * wz;
-            const BoxCell at = box_cell(c, {nx, ny, nz}, per_hex);
+            const mesh::BoxCell at = mesh::box_cell(c, {nx, ny, nz}, per_hex);
             const Index i = at.hex[0], j = at.hex[1], k = at.hex[2];
             return from_first(2, k) * wy * wx +
                    width(2, k) *
@@ -237,18 +238,18 @@ CellVolumes volumes_of(const BoxSpec& box) {
           }};
 }
 
-Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells,
-                     const CellVolumes& volumes) {
+tracking::Swarm seed_particles(const mesh::Mesh& mesh, const tracking::Obstacles& obstacles, const Seeding& seeding,
+                               const parallel::Decomposition& cells, const CellVolumes& volumes) {
   Seeder seeder(mesh, obstacles, seeding, cells);
   if (!seeding.regions.empty()) return seeder.regions(volumes);
   return seeding.per_cell > 0 ? seeder.per_cell() : seeder.total(cells.ranks(), volumes);
 }
 
-std::size_t seeded_count(const Mesh& whole, const Obstacles& obstacles, const Seeding& seeding) {
-  const Decomposition one(whole, Ranks());
+std::size_t seeded_count(const mesh::Mesh& whole, const tracking::Obstacles& obstacles, const Seeding& seeding) {
+  const parallel::Decomposition one(whole, parallel::Ranks());
   if (!seeding.regions.empty()) return Seeder(whole, obstacles, seeding, one).regions_count(volumes_of(whole));
   if (seeding.per_cell == 0) return static_cast<std::size_t>(seeding.total);  // rounds until exactly that many
   return Seeder(whole, obstacles, seeding, one).per_cell_count();
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

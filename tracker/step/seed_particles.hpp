@@ -30,7 +30,7 @@
 #include "tracker/step/seed_regions.hpp"
 #include "tracker/tracking/obstacles.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
 struct Seeding {
   int per_cell = 0;                 // particles per cell, or
@@ -62,22 +62,22 @@ struct CellVolumes {
   std::function<double(Index)> below;
 };
 // From the mesh's cells (prefix sums: every rank of a run must see the same mesh).
-CellVolumes volumes_of(const Mesh& whole);
+CellVolumes volumes_of(const mesh::Mesh& whole);
 // From the box's nodes (every Kuhn tetrahedron a sixth of its hexahedron), as box_mesh numbers
 // the cells: no mesh needed.
-CellVolumes volumes_of(const BoxSpec& box);
+CellVolumes volumes_of(const mesh::BoxSpec& box);
 
 // The particles of the cells `cells` gives this rank (collective over its ranks), numbered
 // by `mesh`'s cells: the whole mesh or this rank's part (obstacles registered there), while
 // the streams are keyed by the whole's cell numbers. Throws std::runtime_error when the
 // walls leave (almost) no free space to seed `total` in.
-Swarm seed_particles(const Mesh& mesh, const Obstacles& obstacles, const Seeding& seeding, const Decomposition& cells,
-                     const CellVolumes& volumes);
+tracking::Swarm seed_particles(const mesh::Mesh& mesh, const tracking::Obstacles& obstacles, const Seeding& seeding,
+                               const parallel::Decomposition& cells, const CellVolumes& volumes);
 
 // How many particles seed_particles() makes on any number of ranks, counted on one that
 // holds the whole mesh without making them (fast where no obstacle has primitives; for the
 // work a scene gives). `total` is taken as it comes: the walls' leaving no room for it is
 // found by the seeding.
-std::size_t seeded_count(const Mesh& whole, const Obstacles& obstacles, const Seeding& seeding);
+std::size_t seeded_count(const mesh::Mesh& whole, const tracking::Obstacles& obstacles, const Seeding& seeding);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

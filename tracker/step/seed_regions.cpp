@@ -1,6 +1,6 @@
 #include "tracker/step/seed_regions.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
 RegionShape::Cover RegionShape::cover(const Eigen::AlignedBox3d& box, const Vec3& centre) const {
   // No primitive's surface passing through the box: every primitive, and so the region, is
@@ -10,4 +10,4 @@ RegionShape::Cover RegionShape::cover(const Eigen::AlignedBox3d& box, const Vec3
   return tree_.contains(centre) ? Cover::inside : Cover::outside;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

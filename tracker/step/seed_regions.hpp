@@ -10,7 +10,7 @@
 #include "tracker/csg/tree.hpp"
 #include "tracker/mesh/mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
 struct SeedRegion {
   csg::Expression shape;
@@ -35,4 +35,4 @@ class RegionShape {
   csg::Tree tree_;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

@@ -16,11 +16,11 @@
 #include "tracker/step/seed_particles.hpp"
 #include "tracker/step/tally_numbers.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 namespace {
 
 template <typename Tally>
-std::vector<Tally> summed(std::vector<Tally> tallies, const Ranks& ranks) {
+std::vector<Tally> summed(std::vector<Tally> tallies, const parallel::Ranks& ranks) {
   std::vector<long long> counts;
   std::vector<double> numbers;
   for (const Tally& t : tallies) {
@@ -40,10 +40,10 @@ std::vector<Tally> summed(std::vector<Tally> tallies, const Ranks& ranks) {
 
 // Rank 0 draws what a one-rank run draws; another rank has a stream of its own, none of
 // them its windows' (the seed sequences differ in length).
-Random first_random(std::uint64_t seed, int rank) {
-  if (rank == 0) return Random(seed);
+tracking::Random first_random(std::uint64_t seed, int rank) {
+  if (rank == 0) return tracking::Random(seed);
   std::seed_seq own{seed, static_cast<std::uint64_t>(rank), std::uint64_t{0}, std::uint64_t{0}};
-  return Random(own);
+  return tracking::Random(own);
 }
 
 // The collisions' pcg64 stream of a window on a rank: rank 0's is the window's, as on one
@@ -53,14 +53,14 @@ std::uint64_t collision_stream(std::uint64_t window, int rank) {
 }
 
 // Bricks for a box, METIS's parts of any other mesh.
-Decomposition decompose(const GasSetup& setup, Ranks ranks) {
-  if (!setup.box) return Decomposition(*setup.mesh, ranks);
-  return Decomposition(box_bricks(*setup.box, ranks.size()), ranks);
+parallel::Decomposition decompose(const GasSetup& setup, parallel::Ranks ranks) {
+  if (!setup.box) return parallel::Decomposition(*setup.mesh, ranks);
+  return parallel::Decomposition(parallel::box_bricks(*setup.box, ranks.size()), ranks);
 }
 
 // Per-cell numbers of a rank's cells (`width` a cell) as records: the cell in the whole
 // mesh, then its numbers; cells whose numbers are all 0 are left out.
-void put_cells(std::vector<double>& records, const Mesh& cells, Index c, std::span<const double> numbers) {
+void put_cells(std::vector<double>& records, const mesh::Mesh& cells, Index c, std::span<const double> numbers) {
   if (std::all_of(numbers.begin(), numbers.end(), [](double x) { return x == 0.0; })) return;
   records.push_back(cells.global_cell(c));
   records.insert(records.end(), numbers.begin(), numbers.end());
@@ -79,15 +79,15 @@ std::vector<double> doubles_of(std::span<const std::byte> bytes) {
 }
 
 // put_cells()'s records by rank, as the sparse exchange sends them.
-Messages messages_of(const std::map<int, std::vector<double>>& records) {
-  Messages out;
+parallel::Messages messages_of(const std::map<int, std::vector<double>>& records) {
+  parallel::Messages out;
   for (const auto& [rank, values] : records) out[rank] = bytes_of(values);
   return out;
 }
 
 // Each record that came (its cell in the whole mesh, then `width` numbers), in order.
 template <typename Take>
-void for_each_record(const Messages& in, std::size_t width, const Take& take) {
+void for_each_record(const parallel::Messages& in, std::size_t width, const Take& take) {
   for (const auto& [rank, bytes] : in) {
     const std::vector<double> values = doubles_of(bytes);
     for (std::size_t at = 0; at < values.size(); at += 1 + width)
@@ -97,7 +97,7 @@ void for_each_record(const Messages& in, std::size_t width, const Take& take) {
 
 }  // namespace
 
-Simulation::Simulation(GasSetup setup, Ranks ranks)
+Simulation::Simulation(GasSetup setup, parallel::Ranks ranks)
     : setup_(std::move(setup)),
       velocity_(setup_.tracers ? setup_.tracers->velocity : std::nullopt),
       seed_(setup_.particles.seed),
@@ -113,12 +113,12 @@ Simulation::Simulation(GasSetup setup, Ranks ranks)
   if (ranks.size() > 1 && !setup_.tracers) {
     if (setup_.mesh->partial) {  // the setup holds this rank's part of a box
       part_ = std::move(setup_.mesh);
-      part_cells_ = std::make_unique<PartCells>(*part_);
+      part_cells_ = std::make_unique<mesh::PartCells>(*part_);
     } else {
-      part_ = std::make_unique<Mesh>();
+      part_ = std::make_unique<mesh::Mesh>();
       take_part();
     }
-    sampler_ = CellSampler(*part_);
+    sampler_ = tracking::CellSampler(*part_);
   }
   if (ranks.size() > 1 && ranks.lead() && setup_.box && !brick()) whole_volume_ = cell_volumes(*setup_.box);
   swarm_ = seed_particles(tracked(), setup_.obstacles, setup_.particles, decomposition_, volumes);
@@ -126,7 +126,7 @@ Simulation::Simulation(GasSetup setup, Ranks ranks)
   if (setup_.collisions) {
     // The first (sigma g)_max per cell: at the hottest temperature the scene gives.
     double hottest = setup_.particles.hottest();
-    for (const Inflow& inflow : setup_.inflows) hottest = std::max(hottest, inflow.temperature());
+    for (const tracking::Inflow& inflow : setup_.inflows) hottest = std::max(hottest, inflow.temperature());
     collider_.emplace(tracked(), *setup_.collisions, std::max(hottest, 1.0), setup_.particles.weight, seed_);
     collider_->reseed(seed_, collision_stream(0, ranks.rank()));
   }
@@ -153,7 +153,7 @@ void Simulation::move_obstacle(int i, const Eigen::Isometry3d& pose, double dt) 
 }
 
 void Simulation::balance() {
-  const Ranks& ranks = decomposition_.ranks();
+  const parallel::Ranks& ranks = decomposition_.ranks();
   const auto max_over_mean = [&](const std::vector<double>& load) {
     const double mean = std::accumulate(load.begin(), load.end(), 0.0) / ranks.size();
     return *std::max_element(load.begin(), load.end()) / mean;
@@ -168,8 +168,8 @@ void Simulation::balance() {
     for (std::size_t i = 0; i < swarm_.size(); ++i) cells.push_back(tracked().global_cell(swarm_.cell(i)));
     return cells;
   };
-  Owners owners = decomposition_.owners().bricks() ? decomposition_.proposal(held_in())
-                                                   : decomposition_.proposal(*setup_.mesh, counts());
+  parallel::Owners owners = decomposition_.owners().bricks() ? decomposition_.proposal(held_in())
+                                                             : decomposition_.proposal(*setup_.mesh, counts());
   // The loads the proposal would give: each rank counts where its particles would go.
   std::vector<double> load(held.size(), 0.0);
   for (std::size_t i = 0; i < swarm_.size(); ++i)
@@ -179,7 +179,7 @@ void Simulation::balance() {
   // finer) is not taken, nor sought again until the loads drift 10 % further apart. Nor
   // one that leaves a rank no cell.
   std::vector<long long> cells(held.size(), 0);
-  if (const std::optional<Bricks>& b = owners.bricks())
+  if (const std::optional<parallel::Bricks>& b = owners.bricks())
     for (int r = 0; r < b->parts(); ++r) cells[static_cast<std::size_t>(r)] = b->brick(r).hexahedra();
   else
     for (Index c = 0; c < whole_cells_; ++c) ++cells[static_cast<std::size_t>(owners(c))];
@@ -197,7 +197,7 @@ void Simulation::balance() {
   }
   // What is kept per cell goes to the cell's new owner: its collision state (its old
   // owner's), the sampler's sums (they add up over the ranks).
-  constexpr std::size_t kWidth = 2 + CellSampler::kSumsPerCell;
+  constexpr std::size_t kWidth = 2 + tracking::CellSampler::kSumsPerCell;
   const std::vector<double> samples = sampler_.sums();
   std::map<int, std::vector<double>> records;
   std::vector<double> cell(kWidth);
@@ -205,51 +205,52 @@ void Simulation::balance() {
     const bool own = c < tracked().own_cells();
     cell[0] = collider_ && own ? collider_->cells()[static_cast<std::size_t>(c)].sigma_g_max : 0.0;
     cell[1] = collider_ && own ? collider_->cells()[static_cast<std::size_t>(c)].remainder : 0.0;
-    std::copy_n(samples.begin() + 1 + static_cast<std::ptrdiff_t>(c * CellSampler::kSumsPerCell),
-                CellSampler::kSumsPerCell, cell.begin() + 2);
+    std::copy_n(samples.begin() + 1 + static_cast<std::ptrdiff_t>(c * tracking::CellSampler::kSumsPerCell),
+                tracking::CellSampler::kSumsPerCell, cell.begin() + 2);
     put_cells(records[owners(tracked().global_cell(c))], tracked(), c, cell);
   }
-  const Messages in = decomposition_.exchange(messages_of(records));
+  const parallel::Messages in = decomposition_.exchange(messages_of(records));
   // The particles by the whole's cell numbers while the parts change.
   swarm_.renumber_cells([&](Index c) { return tracked().global_cell(c); });
   decomposition_.set_owners(std::move(owners));
   take_part();
   migrated_ += decomposition_.migrate(swarm_);
   swarm_.renumber_cells([&](Index c) { return numbering().local(c); });
-  std::vector<double> sums(1 + static_cast<std::size_t>(tracked().cell_count()) * CellSampler::kSumsPerCell, 0.0);
+  std::vector<double> sums(1 + static_cast<std::size_t>(tracked().cell_count()) * tracking::CellSampler::kSumsPerCell,
+                           0.0);
   sums[0] = samples[0];
   std::vector<dsmc::CellCollisionState> states(static_cast<std::size_t>(tracked().cell_count()));
   for_each_record(in, kWidth, [&](Index global, std::span<const double> cell) {
     const auto c = static_cast<std::size_t>(numbering().local(global));
     states[c].sigma_g_max = std::max(states[c].sigma_g_max, cell[0]);
     states[c].remainder += cell[1];
-    for (std::size_t k = 0; k < CellSampler::kSumsPerCell; ++k)
-      sums[1 + c * CellSampler::kSumsPerCell + k] += cell[2 + k];
+    for (std::size_t k = 0; k < tracking::CellSampler::kSumsPerCell; ++k)
+      sums[1 + c * tracking::CellSampler::kSumsPerCell + k] += cell[2 + k];
   });
-  sampler_ = CellSampler(*part_);
+  sampler_ = tracking::CellSampler(*part_);
   sampler_.set_sums(sums);
   if (collider_) collider_->set_cells(std::move(states));
 }
 
 void Simulation::take_part() {
-  const Ranks& ranks = decomposition_.ranks();
+  const parallel::Ranks& ranks = decomposition_.ranks();
   const auto owner = [&](Index c) { return decomposition_.owner(c); };
   if (setup_.box) {
-    const Bricks::Range& mine = decomposition_.owners().bricks()->brick(ranks.rank());
-    *part_ = box_part(*setup_.box, mine.lo, mine.hi, owner, ranks.rank());
+    const parallel::Bricks::Range& mine = decomposition_.owners().bricks()->brick(ranks.rank());
+    *part_ = mesh::box_part(*setup_.box, mine.lo, mine.hi, owner, ranks.rank());
   } else {
-    *part_ = extract_part(*setup_.mesh, owner, ranks.rank());
+    *part_ = mesh::extract_part(*setup_.mesh, owner, ranks.rank());
   }
-  part_cells_ = std::make_unique<PartCells>(*part_);
-  setup_.domain = std::make_unique<const Domain>(*part_, setup_.domain->boundaries);
+  part_cells_ = std::make_unique<mesh::PartCells>(*part_);
+  setup_.domain = std::make_unique<const tracking::Domain>(*part_, setup_.domain->boundaries);
   setup_.obstacles = setup_.obstacles.on(*part_);
-  std::vector<Inflow> inflows;
-  for (const Inflow& inflow : setup_.inflows) inflows.push_back(inflow.on(*part_));
+  std::vector<tracking::Inflow> inflows;
+  for (const tracking::Inflow& inflow : setup_.inflows) inflows.push_back(inflow.on(*part_));
   setup_.inflows = std::move(inflows);
 }
 
 std::vector<double> Simulation::at_lead(std::span<const double> mine, std::size_t width) const {
-  const Ranks& ranks = decomposition_.ranks();
+  const parallel::Ranks& ranks = decomposition_.ranks();
   if (ranks.size() == 1) return {mine.begin(), mine.end()};
   std::vector<double> records;
   for (Index c = 0; c < tracked().cell_count(); ++c)
@@ -289,34 +290,36 @@ std::size_t Simulation::migrated() const {
 }
 std::int64_t Simulation::collisions() const { return decomposition_.ranks().sum(collisions_); }
 
-MoveTally Simulation::moves() const {
-  MoveTally moves = moves_;
+tracking::MoveTally Simulation::moves() const {
+  tracking::MoveTally moves = moves_;
   std::vector<long long> counts;
-  for (const MoveCounter& c : kMoveCounters) counts.push_back(moves.*c.count);
+  for (const tracking::MoveCounter& c : tracking::kMoveCounters) counts.push_back(moves.*c.count);
   decomposition_.ranks().sum(counts);
-  for (std::size_t k = 0; const MoveCounter& c : kMoveCounters) moves.*c.count = counts[k++];
+  for (std::size_t k = 0; const tracking::MoveCounter& c : tracking::kMoveCounters) moves.*c.count = counts[k++];
   return moves;
 }
 
-std::vector<ObstacleTally> Simulation::tallies() const { return summed(tallies_, decomposition_.ranks()); }
-std::vector<SurfaceTally> Simulation::patch_tallies() const { return summed(patch_tallies_, decomposition_.ranks()); }
+std::vector<tracking::ObstacleTally> Simulation::tallies() const { return summed(tallies_, decomposition_.ranks()); }
+std::vector<tracking::SurfaceTally> Simulation::patch_tallies() const {
+  return summed(patch_tallies_, decomposition_.ranks());
+}
 
-std::optional<Bricks::Range> Simulation::brick() const {
+std::optional<parallel::Bricks::Range> Simulation::brick() const {
   if (!part_ || !setup_.box || setup_.box->tetrahedra) return std::nullopt;
   return decomposition_.owners().bricks()->brick(decomposition_.ranks().rank());
 }
 
 Simulation::BrickSamples Simulation::take_brick() {
-  const std::optional<Bricks::Range> brick_of_rank = brick();
+  const std::optional<parallel::Bricks::Range> brick_of_rank = brick();
   if (!brick_of_rank) throw std::logic_error("take_brick: this gas's cells are not a rank's brick of a box");
-  const Bricks::Range& mine = *brick_of_rank;
+  const parallel::Bricks::Range& mine = *brick_of_rank;
   std::vector<double> count = particles_per_cell();
   // What a ghost holds (its strays, their sums) goes to its owner.
   std::map<int, std::vector<double>> records;
-  std::array<double, 1 + CellSampler::kSumsPerCell> held{};
+  std::array<double, 1 + tracking::CellSampler::kSumsPerCell> held{};
   for (Index c = tracked().own_cells(); c < tracked().cell_count(); ++c) {
     held[0] = count[static_cast<std::size_t>(c)];
-    const std::array<double, CellSampler::kSumsPerCell> sums = sampler_.cell_sums(c);
+    const std::array<double, tracking::CellSampler::kSumsPerCell> sums = sampler_.cell_sums(c);
     std::copy(sums.begin(), sums.end(), held.begin() + 1);
     if (std::any_of(held.begin(), held.end(), [](double x) { return x != 0.0; }))
       put_cells(records[decomposition_.owner(tracked().global_cell(c))], tracked(), c, held);
@@ -338,12 +341,12 @@ Simulation::BrickSamples Simulation::take_brick() {
   for (int k = mine.lo[2]; k < mine.hi[2]; ++k)
     for (int j = mine.lo[1]; j < mine.hi[1]; ++j)
       for (int i = mine.lo[0]; i < mine.hi[0]; ++i, ++c) {
-        if (c >= tracked().own_cells() || tracked().global_cell(c) != box_cell_index({{i, j, k}}, hexahedra, 1))
+        if (c >= tracked().own_cells() || tracked().global_cell(c) != mesh::box_cell_index({{i, j, k}}, hexahedra, 1))
           throw std::logic_error("take_brick: the part's own cells are not its brick in order");
         taken.count.push_back(count[static_cast<std::size_t>(c)]);
-        taken.moments.push_back(CellSampler::moments(sampler_.cell_sums(c), sampler_.samples(),
-                                                     volume[static_cast<std::size_t>(c)], setup_.particles.mass,
-                                                     setup_.particles.weight));
+        taken.moments.push_back(tracking::CellSampler::moments(sampler_.cell_sums(c), sampler_.samples(),
+                                                               volume[static_cast<std::size_t>(c)],
+                                                               setup_.particles.mass, setup_.particles.weight));
       }
   sampler_.reset();
   return taken;
@@ -357,10 +360,10 @@ std::vector<double> Simulation::particles_per_cell() const {
 
 std::vector<double> Simulation::counts() const { return at_lead(particles_per_cell(), 1); }
 
-std::vector<CellMoments> Simulation::take_moments() {
+std::vector<tracking::CellMoments> Simulation::take_moments() {
   if (brick()) throw std::logic_error("a brick's moments are take_brick()'s");
   const double mass = setup_.particles.mass, weight = setup_.particles.weight;
-  std::vector<CellMoments> moments;
+  std::vector<tracking::CellMoments> moments;
   moments.reserve(decomposition_.ranks().lead() ? static_cast<std::size_t>(whole_cells_) : 0);
   if (decomposition_.ranks().size() == 1) {
     for (Index c = 0; c < whole_cells_; ++c) moments.push_back(sampler_.moments(c, mass, weight));
@@ -369,15 +372,15 @@ std::vector<CellMoments> Simulation::take_moments() {
     // add up. Every rank sampled at every step: the sample count (the first value) is each
     // rank's, not summed.
     const std::vector<double> sums = sampler_.sums();
-    const std::vector<double> cells = at_lead(std::span(sums).subspan(1), CellSampler::kSumsPerCell);
+    const std::vector<double> cells = at_lead(std::span(sums).subspan(1), tracking::CellSampler::kSumsPerCell);
     const std::vector<double>& volume = setup_.box ? whole_volume_ : setup_.mesh->volume;
-    for (std::size_t c = 0; c < cells.size() / CellSampler::kSumsPerCell; ++c)
-      moments.push_back(
-          CellSampler::moments(std::span(cells).subspan(c * CellSampler::kSumsPerCell, CellSampler::kSumsPerCell),
-                               sampler_.samples(), volume[c], mass, weight));
+    for (std::size_t c = 0; c < cells.size() / tracking::CellSampler::kSumsPerCell; ++c)
+      moments.push_back(tracking::CellSampler::moments(
+          std::span(cells).subspan(c * tracking::CellSampler::kSumsPerCell, tracking::CellSampler::kSumsPerCell),
+          sampler_.samples(), volume[c], mass, weight));
   }
   sampler_.reset();
   return moments;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

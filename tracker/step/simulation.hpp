@@ -31,24 +31,24 @@
 #include "tracker/step/stages.hpp"
 #include "tracker/tracking/sampling.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
 class Simulation {
  public:
   // Seeds the particles with the setup's seed around its obstacles. Collective over
   // `ranks`: each rank seeds the cells it owns, with the particles a one-rank run has there
   // (seed_particles.hpp). A setup read on several ranks may hold this rank's part of a box.
-  explicit Simulation(GasSetup setup, Ranks ranks = {});
+  explicit Simulation(GasSetup setup, parallel::Ranks ranks = {});
 
   // Its mesh is null on several ranks (moved into this rank's part): use tracked().
   const GasSetup& setup() const { return setup_; }
   // This rank's cells (the swarm's cell numbers): the whole mesh, or its part on several
   // ranks (Mesh::global_cell gives a cell's number in the whole).
-  const Mesh& tracked() const { return part_ ? *part_ : *setup_.mesh; }
-  const Decomposition& decomposition() const { return decomposition_; }
+  const mesh::Mesh& tracked() const { return part_ ? *part_ : *setup_.mesh; }
+  const parallel::Decomposition& decomposition() const { return decomposition_; }
   // This rank's particles, numbered by tracked()'s cells: those in its cells, and the few
   // a moving wall or a recovery put in a ghost (they migrate at the start of the next step).
-  const Swarm& swarm() const { return swarm_; }
+  const tracking::Swarm& swarm() const { return swarm_; }
 
   // Every random draw from here on comes from `stream` of the setup's seed (one stream per
   // rank): a coupled run reseeds at each window, so a repeated window draws the same
@@ -61,7 +61,7 @@ class Simulation {
   // by the velocity field (std::runtime_error if there is none yet).
   void step(double dt);
   // Tracer mode: the fluid's velocity from here on (coupled runs: every window).
-  void set_velocity(VelocityField velocity) { velocity_ = std::move(velocity); }
+  void set_velocity(tracers::VelocityField velocity) { velocity_ = std::move(velocity); }
   // From t0 to exactly t1 in equal steps of at most the setup's dt, calling before(t, h)
   // before each step of length h that ends at t (to move obstacles there). Returns the
   // number of steps. Standalone and coupled runs step a window alike.
@@ -79,19 +79,19 @@ class Simulation {
   std::uint64_t rebalances() const { return rebalances_; }
   // This rank's wall time per stage of step() since the start (not restored by restore()).
   const StageSeconds& stages() const { return stages_; }
-  MoveTally moves() const;
-  std::vector<ObstacleTally> tallies() const;
+  tracking::MoveTally moves() const;
+  std::vector<tracking::ObstacleTally> tallies() const;
   // Per boundary patch (Mesh::patches): what the particles gave the walls there.
-  std::vector<SurfaceTally> patch_tallies() const;
+  std::vector<tracking::SurfaceTally> patch_tallies() const;
 
   // This rank's brick, over several ranks in a box of hexahedra (not in tracer mode): its
   // per-cell results come as a block of the output's grid (take_brick()), so that no rank
   // holds every cell's. Empty otherwise (counts() and take_moments() add up on rank 0).
-  std::optional<Bricks::Range> brick() const;
+  std::optional<parallel::Bricks::Range> brick() const;
   struct BrickSamples {
-    Bricks::Range brick;
-    std::vector<double> count;         // particles per cell now
-    std::vector<CellMoments> moments;  // averaged since the last take
+    parallel::Bricks::Range brick;
+    std::vector<double> count;                   // particles per cell now
+    std::vector<tracking::CellMoments> moments;  // averaged since the last take
   };
   // This rank's cells in its brick's order (x fastest), as counts() and take_moments() give
   // every cell's: a new average begins. Collective; what its ghosts hold (particles and
@@ -102,7 +102,7 @@ class Simulation {
   // The per-cell moments averaged over the steps since the last call (or the start), then
   // a new average begins (collective; on rank 0, empty on the others). Over a brick(),
   // take_brick() instead (std::logic_error).
-  std::vector<CellMoments> take_moments();
+  std::vector<tracking::CellMoments> take_moments();
 
   // Everything a later restore() needs to continue exactly from here (with the same
   // reseed() calls): this rank's particles and states, obstacle poses, collision state per
@@ -121,7 +121,7 @@ class Simulation {
   void carry_tracers(double dt);  // tracer mode's move
   void inject(double dt);
   // The gas's moves: into this rank's tallies, handing over to the other ranks.
-  MoveContext move_context() {
+  tracking::MoveContext move_context() {
     return {.domain = *setup_.domain,
             .obstacles = setup_.obstacles,
             .random = random_,
@@ -138,23 +138,25 @@ class Simulation {
   // Builds this rank's part of the mesh for the decomposition's owners, and the walls,
   // obstacles and inflows on it.
   void take_part();
-  Numbering numbering() const { return part_ ? Numbering{part_.get(), part_cells_.get()} : Numbering{}; }
+  parallel::Numbering numbering() const {
+    return part_ ? parallel::Numbering{part_.get(), part_cells_.get()} : parallel::Numbering{};
+  }
   std::vector<double> particles_per_cell() const;  // of tracked()'s cells, this rank's particles
   // Per-cell numbers of this rank's cells (`width` a cell) added up by the whole mesh's
   // cells on rank 0, empty elsewhere (collective): only rank 0 holds an array of every cell.
   std::vector<double> at_lead(std::span<const double> mine, std::size_t width) const;
 
   GasSetup setup_;
-  std::optional<VelocityField> velocity_;  // tracer mode
+  std::optional<tracers::VelocityField> velocity_;  // tracer mode
   std::uint64_t seed_;
-  Decomposition decomposition_;
-  Random random_;
-  Swarm swarm_;
-  CellSampler sampler_;
+  parallel::Decomposition decomposition_;
+  tracking::Random random_;
+  tracking::Swarm swarm_;
+  tracking::CellSampler sampler_;
   std::optional<CellCollider> collider_;
-  std::vector<ObstacleTally> tallies_;
-  std::vector<SurfaceTally> patch_tallies_;
-  MoveTally moves_;
+  std::vector<tracking::ObstacleTally> tallies_;
+  std::vector<tracking::SurfaceTally> patch_tallies_;
+  tracking::MoveTally moves_;
   std::uint64_t steps_ = 0;
   // This rank's.
   std::size_t seeded_ = 0, injected_ = 0, migrated_ = 0;
@@ -164,16 +166,16 @@ class Simulation {
   double balance_floor_ = 0.0;  // max/mean a re-partition could not improve, times 1.1
   // This rank's part of the mesh, at one address for good (the collider refers to it);
   // null on one rank and in tracer mode.
-  std::unique_ptr<Mesh> part_;
+  std::unique_ptr<mesh::Mesh> part_;
   Index whole_cells_ = 0;
   // Of a box of tetrahedra over several ranks, rank 0's: every cell's volume (a box of
   // hexahedra gives each rank's brick its own, take_brick()).
   std::vector<double> whole_volume_;
-  std::unique_ptr<PartCells> part_cells_;
-  Handover away_;  // the moves of a step that entered ghosts, until they are done
+  std::unique_ptr<mesh::PartCells> part_cells_;
+  tracking::Handover away_;  // the moves of a step that entered ghosts, until they are done
   // Some rank may hold particles in its ghosts (an obstacle moved, or a recovery put them
   // there): the next step starts with a migration. The same on every rank.
   bool strays_ = false;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

@@ -5,7 +5,7 @@
 
 #include "tracker/step/simulation.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
 void Simulation::step(double dt) {
   stages_.time(Stage::migrate, [&] { migrate(); });
@@ -53,19 +53,19 @@ void Simulation::carry_tracers(double dt) {
         "the fluid");
   // Tracers move through the whole mesh on every rank (no handover); their wall hits are not
   // tallied per patch.
-  const MoveContext step{
+  const tracking::MoveContext step{
       .domain = *setup_.domain, .obstacles = setup_.obstacles, .random = random_, .moves = moves_, .tallies = tallies_};
   std::vector<bool> gone(swarm_.size(), false);
   for (std::size_t i = 0; i < swarm_.size(); ++i) {
-    Particle p = swarm_.particle(i);
-    gone[i] = !advance_tracer(step, *velocity_, setup_.tracers->model, p, swarm_.states(i), dt);
+    tracking::Particle p = swarm_.particle(i);
+    gone[i] = !tracers::advance_tracer(step, *velocity_, setup_.tracers->model, p, swarm_.states(i), dt);
     swarm_.set(i, p);
   }
   swarm_.remove_if([&](std::size_t i) { return gone[i]; });
 }
 
 void Simulation::inject(double dt) {
-  for (const Inflow& inflow : setup_.inflows)
+  for (const tracking::Inflow& inflow : setup_.inflows)
     injected_ += static_cast<std::size_t>(inflow.inject(move_context(), dt, swarm_));
 }
 
@@ -85,4 +85,4 @@ void Simulation::hand_over() {
   away_.forget_strays();
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

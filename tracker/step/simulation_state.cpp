@@ -8,7 +8,7 @@
 #include "tracker/step/state_array.hpp"
 #include "tracker/step/tally_numbers.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 namespace {
 
 // Bumped when the layout changes, so an old checkpoint is refused, not misread.
@@ -33,7 +33,7 @@ void get_tallies(StateReader& in, std::vector<Tally>& tallies) {
 }  // namespace
 
 std::vector<double> Simulation::state() const {
-  const Ranks& ranks = decomposition_.ranks();
+  const parallel::Ranks& ranks = decomposition_.ranks();
   const int objects = setup_.obstacles.count();
   StateWriter out;
   out.put(kStateVersion, ranks.size(), ranks.rank(), objects, whole_cells_);
@@ -46,7 +46,7 @@ std::vector<double> Simulation::state() const {
   }
   out.put(swarm_.size());
   for (std::size_t i = 0; i < swarm_.size(); ++i) {
-    const Particle p = swarm_.particle(i);
+    const tracking::Particle p = swarm_.particle(i);
     out.put(p.x, p.v, tracked().global_cell(p.cell));
     for (csg::State s : swarm_.states(i)) out.put_bits(s);
   }
@@ -56,7 +56,7 @@ std::vector<double> Simulation::state() const {
     for (double x : setup_.obstacles.pose(o).matrix().topRows<3>().reshaped()) out.put(x);
   put_tallies(out, tallies_);
   put_tallies(out, patch_tallies_);
-  for (const MoveCounter& c : kMoveCounters) out.put(moves_.*c.count);
+  for (const tracking::MoveCounter& c : tracking::kMoveCounters) out.put(moves_.*c.count);
   // Per cell of this rank's (its part, as the owners above give it), then.
   out.put(tracked().cell_count());
   if (collider_)
@@ -68,7 +68,7 @@ std::vector<double> Simulation::state() const {
 void Simulation::restore(std::span<const double> state) {
   // Read into copies first: a state that turns out bad changes nothing (but for a partition
   // other than the present one, which is taken before the particles are checked against it).
-  const Ranks& ranks = decomposition_.ranks();
+  const parallel::Ranks& ranks = decomposition_.ranks();
   const int objects = setup_.obstacles.count();
   StateReader in(state);
   in.expect(kStateVersion, "layout version");
@@ -89,10 +89,10 @@ void Simulation::restore(std::span<const double> state) {
     owners.resize(n);
     for (int& x : owners) in.get(x);
   }
-  Swarm swarm(objects);
+  tracking::Swarm swarm(objects);
   std::vector<csg::State> states(static_cast<std::size_t>(objects));
   for (auto n = in.get<std::size_t>(); n > 0; --n) {
-    Particle p;
+    tracking::Particle p;
     in.get(p.x, p.v, p.cell);  // the cell in the whole mesh
     if (p.cell < 0 || p.cell >= whole_cells_) throw std::runtime_error("tracker state: a particle in no cell");
     for (csg::State& s : states) s = in.get_bits();
@@ -101,18 +101,18 @@ void Simulation::restore(std::span<const double> state) {
   std::vector<Eigen::Isometry3d> poses(static_cast<std::size_t>(objects), Eigen::Isometry3d::Identity());
   for (Eigen::Isometry3d& pose : poses)
     for (double& x : pose.matrix().topRows<3>().reshaped()) in.get(x);
-  std::vector<ObstacleTally> tallies(tallies_.size());
+  std::vector<tracking::ObstacleTally> tallies(tallies_.size());
   get_tallies(in, tallies);
-  std::vector<SurfaceTally> patch_tallies(patch_tallies_.size());
+  std::vector<tracking::SurfaceTally> patch_tallies(patch_tallies_.size());
   get_tallies(in, patch_tallies);
-  MoveTally moves;
-  for (const MoveCounter& c : kMoveCounters) in.get(moves.*c.count);
+  tracking::MoveTally moves;
+  for (const tracking::MoveCounter& c : tracking::kMoveCounters) in.get(moves.*c.count);
   const auto part_cells = in.get<std::size_t>();
   if (part_cells > static_cast<std::size_t>(whole_cells_))
     throw std::runtime_error("tracker state: " + std::to_string(part_cells) + " cells on a rank");
   std::vector<dsmc::CellCollisionState> cells(collider_ ? part_cells : 0);
   for (dsmc::CellCollisionState& c : cells) in.get(c.sigma_g_max, c.remainder);
-  std::vector<double> sums(1 + part_cells * CellSampler::kSumsPerCell);
+  std::vector<double> sums(1 + part_cells * tracking::CellSampler::kSumsPerCell);
   for (double& x : sums) in.get(x);
   in.finish();
 
@@ -125,13 +125,14 @@ void Simulation::restore(std::span<const double> state) {
     ranks.broadcast(owners);
     if (owners != decomposition_.owners().saved()) {
       try {
-        decomposition_.set_owners(Owners::restored(owners, decomposition_.owners(), whole_cells_, ranks.size()));
+        decomposition_.set_owners(
+            parallel::Owners::restored(owners, decomposition_.owners(), whole_cells_, ranks.size()));
       } catch (const std::invalid_argument& e) {
         throw std::runtime_error(std::string("tracker state: ") + e.what());
       }
       if (part_) {
         take_part();
-        sampler_ = CellSampler(*part_);
+        sampler_ = tracking::CellSampler(*part_);
       }
     }
   }
@@ -160,4 +161,4 @@ void Simulation::restore(std::span<const double> state) {
   balance_floor_ = balance_floor;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

@@ -7,11 +7,11 @@
 
 #include "timing/stage_seconds.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
 enum class Stage { migrate, sort, collide, move, inject, hand_over, sample };
 inline constexpr std::array kStageNames{"migrate", "sort", "collide", "move", "inject", "hand-over", "sample"};
 
 using StageSeconds = timing::StageSeconds<Stage, kStageNames.size()>;
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

@@ -17,7 +17,7 @@
 
 #include "tracker/mesh/mesh.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::step {
 
 template <class T>
 concept StateNumber = std::integral<T> || std::floating_point<T>;
@@ -86,4 +86,4 @@ class StateReader {
   std::size_t at_ = 0;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::step

@@ -7,10 +7,10 @@
 
 #include "tracker/tracking/obstacles.hpp"
 
-namespace cosim::tracker::detail {
+namespace cosim::tracker::step::detail {
 
 template <typename Tally>
-constexpr bool kIsObstacleTally = std::is_same_v<std::remove_const_t<Tally>, ObstacleTally>;
+constexpr bool kIsObstacleTally = std::is_same_v<std::remove_const_t<Tally>, tracking::ObstacleTally>;
 
 template <typename Tally, typename F>
 void each_count(Tally& t, F&& f) {
@@ -32,4 +32,4 @@ void each_value(Tally& t, F&& f) {
     for (int i = 0; i < 3; ++i) f(t.angular_impulse[i]);
 }
 
-}  // namespace cosim::tracker::detail
+}  // namespace cosim::tracker::step::detail

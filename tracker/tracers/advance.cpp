@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracers {
 namespace {
 
 // The displacement over h and the velocity at its end.
@@ -31,8 +31,8 @@ Step inertial(const VelocityField& u, const Vec3& x, const Vec3& v, double h, do
 
 }  // namespace
 
-bool advance_tracer(const MoveContext& step, const VelocityField& u, const TracerModel& model, Particle& tracer,
-                    std::span<csg::State> states, double dt) {
+bool advance_tracer(const tracking::MoveContext& step, const VelocityField& u, const TracerModel& model,
+                    tracking::Particle& tracer, std::span<csg::State> states, double dt) {
   const int substeps = std::max(1, model.substeps);
   const double h = dt / substeps;
   for (int s = 0; s < substeps; ++s) {
@@ -40,7 +40,7 @@ bool advance_tracer(const MoveContext& step, const VelocityField& u, const Trace
         model.response_time > 0.0 ? inertial(u, tracer.x, tracer.v, h, model.response_time) : massless(u, tracer.x, h);
     const Vec3 segment = planned.displacement / h;
     tracer.v = segment;
-    const MoveResult result = move(step, tracer, states, h);
+    const tracking::MoveResult result = tracking::move(step, tracer, states, h);
     if (result.removed) return false;
     // Not reflected: the segment ran as planned and the tracer has the step's velocity.
     if (tracer.v == segment) tracer.v = planned.velocity;
@@ -48,4 +48,4 @@ bool advance_tracer(const MoveContext& step, const VelocityField& u, const Trace
   return true;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracers

@@ -7,7 +7,7 @@
 #include "tracker/tracers/velocity_field.hpp"
 #include "tracker/tracking/move.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracers {
 
 struct TracerModel {
   // 0: massless, dx/dt = u(x). > 0: dv/dt = (u(x) - v) / response_time (Stokes drag,
@@ -24,7 +24,7 @@ struct TracerModel {
 // the tracer's velocity (the fluid's, for a massless one). Every segment is a move() in
 // `step` (a tracer is never handed over: step.away is not used); false if the tracer left
 // through an open patch or wall.
-bool advance_tracer(const MoveContext& step, const VelocityField& u, const TracerModel& model, Particle& tracer,
-                    std::span<csg::State> states, double dt);
+bool advance_tracer(const tracking::MoveContext& step, const VelocityField& u, const TracerModel& model,
+                    tracking::Particle& tracer, std::span<csg::State> states, double dt);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracers

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracers {
 namespace {
 
 // The cell of the axis holding x and the weight of its upper point, clamped to the ends.
@@ -62,4 +62,4 @@ std::vector<double> uniform_axis(double lo, double hi, int n) {
   return axis;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracers

@@ -9,7 +9,7 @@
 #include <array>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracers {
 
 class VelocityField {
  public:
@@ -43,4 +43,4 @@ class VelocityField {
 // n + 1 equally spaced coordinates from lo to hi.
 std::vector<double> uniform_axis(double lo, double hi, int n);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracers

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 Vec3 specular(const Vec3& v, const Vec3& n) { return v - 2.0 * n.dot(v) * n; }
 
@@ -67,4 +67,4 @@ bool hit_wall(const BoundaryCondition& wall, double mass, const Vec3& n, Vec3& v
   return false;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

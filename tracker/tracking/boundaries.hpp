@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 enum class BoundaryKind {
   specular,  // mirror the normal velocity
@@ -66,4 +66,4 @@ Vec3 specular(const Vec3& v, const Vec3& n);
 // sigma^2 = k_B T / m.
 Vec3 diffuse(const Vec3& n, double temperature, double mass, Random& random);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

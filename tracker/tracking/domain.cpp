@@ -8,11 +8,11 @@
 #include <stdexcept>
 #include <utility>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 namespace {
 
-void check(const Mesh& mesh, const Boundaries& boundaries) {
+void check(const mesh::Mesh& mesh, const Boundaries& boundaries) {
   if (boundaries.patches.size() < mesh.patches.size())
     throw std::invalid_argument(mesh.source + ": " + std::to_string(mesh.patches.size()) + " patches but " +
                                 std::to_string(boundaries.patches.size()) + " boundary conditions");
@@ -29,8 +29,8 @@ void check(const Mesh& mesh, const Boundaries& boundaries) {
 
 }  // namespace
 
-Domain::Domain(const Mesh& mesh_, Boundaries boundaries_)
-    : mesh(mesh_), boundaries(std::move(boundaries_)), locator(mesh_), tolerance(1e-10 * whole_diagonal(mesh_)) {
+Domain::Domain(const mesh::Mesh& mesh_, Boundaries boundaries_)
+    : mesh(mesh_), boundaries(std::move(boundaries_)), locator(mesh_), tolerance(1e-10 * mesh::whole_diagonal(mesh_)) {
   check(mesh, boundaries);
   inner_boxes.reserve(static_cast<std::size_t>(mesh.cell_count()));
   for (Index c = 0; c < mesh.cell_count(); ++c) inner_boxes.push_back(inner_box(mesh, c, tolerance));
@@ -38,7 +38,7 @@ Domain::Domain(const Mesh& mesh_, Boundaries boundaries_)
   implicit = ImplicitLattice(mesh, lattice);
 }
 
-InnerBox inner_box(const Mesh& mesh, Index cell, double margin) {
+InnerBox inner_box(const mesh::Mesh& mesh, Index cell, double margin) {
   constexpr double infinity = std::numeric_limits<double>::infinity();
   Vec3 lo = Vec3::Constant(infinity), hi = -lo;
   for (Index f = mesh.cell_faces[cell]; f < mesh.cell_faces[cell + 1]; ++f)
@@ -52,7 +52,7 @@ InnerBox inner_box(const Mesh& mesh, Index cell, double margin) {
   constexpr float float_infinity = std::numeric_limits<float>::infinity();
   double s = 1.0;
   for (Index f = mesh.cell_faces[cell]; f < mesh.cell_faces[cell + 1]; ++f) {
-    const Face& face = mesh.faces[f];
+    const mesh::Face& face = mesh.faces[f];
     // Corner c + s (q - c): its depth is n.(c - point) + s n.(q - c), least at the corner
     // with the smaller n_i (q_i - c_i) on each axis.
     const double centre = face.normal.dot(c - face.point) - margin;
@@ -74,10 +74,10 @@ InnerBox inner_box(const Mesh& mesh, Index cell, double margin) {
   return box;
 }
 
-Violation outside(const Mesh& mesh, Index cell, const Vec3& x) {
+Violation outside(const mesh::Mesh& mesh, Index cell, const Vec3& x) {
   Violation worst{-std::numeric_limits<double>::infinity(), -1};
   for (Index f = mesh.cell_faces[cell]; f < mesh.cell_faces[cell + 1]; ++f) {
-    const Face& face = mesh.faces[f];
+    const mesh::Face& face = mesh.faces[f];
     const double depth = face.normal.dot(face.point - x);
     if (depth > worst.depth) worst = {depth, f};
   }
@@ -85,10 +85,10 @@ Violation outside(const Mesh& mesh, Index cell, const Vec3& x) {
 }
 
 bool is_lost(const Domain& domain, const Particle& particle) {
-  const Mesh& mesh = domain.mesh;
+  const mesh::Mesh& mesh = domain.mesh;
   bool out = false;
   for (Index f = mesh.cell_faces[particle.cell]; f < mesh.cell_faces[particle.cell + 1]; ++f) {
-    const Face& face = mesh.faces[f];
+    const mesh::Face& face = mesh.faces[f];
     if (face.normal.dot(face.point - particle.x) <= domain.tolerance) continue;
     if (face.neighbour < 0) return true;
     out = true;
@@ -96,4 +96,4 @@ bool is_lost(const Domain& domain, const Particle& particle) {
   return out && domain.locator.locate(particle.x) >= 0;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

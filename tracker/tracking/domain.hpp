@@ -9,7 +9,7 @@
 
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 // An axis-aligned box inside a cell by at least a margin from every face plane, in float
 // (rounded inwards): 24 bytes per cell, read by the move of every particle of the cell. A
@@ -30,18 +30,18 @@ struct InnerBox {
 // largest s in [0, 1] that keeps its eight corners inside every face plane by the margin
 // (per plane a closed form: the worst corner). For an axis-aligned hexahedron s = 1: the
 // cell shrunk by the margin.
-InnerBox inner_box(const Mesh& mesh, Index cell, double margin);
+InnerBox inner_box(const mesh::Mesh& mesh, Index cell, double margin);
 
 struct Domain {
   // Throws std::invalid_argument if a patch of the mesh has no boundary condition, a
   // re-emitting wall has no temperature or the particles no mass, or a wall that does not
   // re-emit has a velocity. Keeps a reference to
   // the mesh, which must outlive it.
-  Domain(const Mesh& mesh, Boundaries boundaries);
+  Domain(const mesh::Mesh& mesh, Boundaries boundaries);
 
-  const Mesh& mesh;
+  const mesh::Mesh& mesh;
   Boundaries boundaries;
-  PointLocator locator;
+  mesh::PointLocator locator;
   double tolerance;                   // 1e-10 of the (whole) mesh's bounding-box diagonal
   std::vector<InnerBox> inner_boxes;  // per cell, inside by the tolerance
   std::vector<LatticeFaces> lattice;  // per cell, or empty if no cell is an axis-aligned hexahedron
@@ -54,11 +54,11 @@ struct Violation {
   double depth;
   Index face;
 };
-Violation outside(const Mesh& mesh, Index cell, const Vec3& x);
+Violation outside(const mesh::Mesh& mesh, Index cell, const Vec3& x);
 
 // Lost: outside its cell by more than the tolerance, and either beyond one of the cell's
 // boundary faces (escaped) or inside another cell. A point that no cell contains, in a gap
 // between the cells of a perturbed mesh, is not lost: its cell is as good as any.
 bool is_lost(const Domain& domain, const Particle& particle);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 void Handover::add(const Particle& particle, std::span<const csg::State> states, const Flight& rest) {
   if (states.size() != static_cast<std::size_t>(objects_))
@@ -18,7 +18,7 @@ void Handover::add(const Particle& particle, std::span<const csg::State> states,
 }
 
 bool Handover::keeps(const MoveResult& result, const Particle& particle, std::span<const csg::State> states,
-                     const Mesh& mesh) {
+                     const mesh::Mesh& mesh) {
   if (result.handed_over) {
     add(particle, states, result.rest);
     return false;
@@ -51,4 +51,4 @@ void Handover::resume_all(const MoveContext& step, Swarm& swarm) {
   *this = std::move(again);
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 class Handover {
  public:
@@ -27,7 +27,8 @@ class Handover {
   // After a move: true if the particle stays in its swarm, false if the move handed it
   // over (it is added here) or removed it. One that stays in a ghost (a recovery put it
   // there, not a crossing) is counted: it migrates at the start of the next step.
-  bool keeps(const MoveResult& result, const Particle& particle, std::span<const csg::State> states, const Mesh& mesh);
+  bool keeps(const MoveResult& result, const Particle& particle, std::span<const csg::State> states,
+             const mesh::Mesh& mesh);
   long long strays() const { return strays_; }
   void forget_strays() { strays_ = 0; }
 
@@ -44,4 +45,4 @@ class Handover {
   long long strays_ = 0;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -3,22 +3,22 @@
 #include <algorithm>
 #include <bit>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 namespace {
 
 // box_mesh's face order: x low, x high, y low, y high, z low, z high.
-bool in_box_order(const Mesh& mesh, const std::vector<LatticeFaces>& lattice, Index cell) {
+bool in_box_order(const mesh::Mesh& mesh, const std::vector<LatticeFaces>& lattice, Index cell) {
   const LatticeFaces& faces = lattice[static_cast<std::size_t>(cell)];
   return mesh.cell_faces[cell] == 6 * cell && faces.low[0] == 0 && faces.high[0] == 1 && faces.low[1] == 2 &&
          faces.high[1] == 3 && faces.low[2] == 4 && faces.high[2] == 5;
 }
 
 // The cells along `axis` from cell 0, following the high faces' unshifted links.
-Index run(const Mesh& mesh, const std::vector<LatticeFaces>& lattice, int axis, Index stride) {
+Index run(const mesh::Mesh& mesh, const std::vector<LatticeFaces>& lattice, int axis, Index stride) {
   Index n = 1;
   for (Index c = 0; in_box_order(mesh, lattice, c); c += stride, ++n) {
-    const Face& high = mesh.faces[6 * c + 2 * axis + 1];
+    const mesh::Face& high = mesh.faces[6 * c + 2 * axis + 1];
     if (high.neighbour != c + stride || high.shift != 0) break;
   }
   return n;
@@ -28,7 +28,7 @@ bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == s
 
 }  // namespace
 
-ImplicitLattice::ImplicitLattice(const Mesh& mesh, const std::vector<LatticeFaces>& lattice) {
+ImplicitLattice::ImplicitLattice(const mesh::Mesh& mesh, const std::vector<LatticeFaces>& lattice) {
   // Particles move in a part's own cells only, which are not numbered as a lattice.
   const Index count = mesh.cell_count();
   if (lattice.empty() || mesh.ghosts > 0 || count == 0 || !in_box_order(mesh, lattice, 0)) return;
@@ -53,7 +53,7 @@ ImplicitLattice::ImplicitLattice(const Mesh& mesh, const std::vector<LatticeFace
     std::uint8_t flags = kPlain;
     for (Index k = 0; k < 6 && flags != 0; ++k) {
       const int a = k / 2, side = k % 2;
-      const Face& face = mesh.faces[6 * c + k];
+      const mesh::Face& face = mesh.faces[6 * c + k];
       if (!same_bits(face.point[a], plane(a, at.index[a] + side))) flags = 0;
       const int beyond = at.index[a] + (side != 0 ? 1 : -1);
       if (flags == 0 || beyond < 0 || beyond >= cells_[a]) continue;  // the record says what is there
@@ -66,4 +66,4 @@ ImplicitLattice::ImplicitLattice(const Mesh& mesh, const std::vector<LatticeFace
   if (std::none_of(flags_.begin(), flags_.end(), [](std::uint8_t f) { return f != 0; })) *this = {};
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 class ImplicitLattice {
  public:
@@ -31,7 +31,7 @@ class ImplicitLattice {
   ImplicitLattice() = default;
   // Empty unless the mesh's cells are numbered as a lattice of axis-aligned hexahedra (a
   // whole box_mesh of hexahedra, graded or periodic or not); `lattice`: lattice_faces(mesh).
-  ImplicitLattice(const Mesh& mesh, const std::vector<LatticeFaces>& lattice);
+  ImplicitLattice(const mesh::Mesh& mesh, const std::vector<LatticeFaces>& lattice);
 
   // The cell's planes and faces are the lattice's (its face k is face 6 cell + k).
   bool plain(Index cell) const { return !flags_.empty() && (flags_[static_cast<std::size_t>(cell)] & kPlain) != 0; }
@@ -63,4 +63,4 @@ class ImplicitLattice {
   std::vector<std::uint8_t> flags_;  // per cell, or empty
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
 constexpr double sqrt_pi = 1.0 / std::numbers::inv_sqrtpi;
@@ -45,7 +45,7 @@ double inflow_normal_speed(double s, double u) {
   return x;
 }
 
-Inflow::Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream& stream)
+Inflow::Inflow(const mesh::Mesh& mesh, const std::vector<Index>& patches, const Stream& stream)
     : mesh_(mesh), patches_(patches), stream_(stream) {
   if (!(stream.number_density > 0.0 && stream.temperature > 0.0 && stream.mass > 0.0 && stream.weight > 0.0))
     throw std::invalid_argument("inflow: number density, temperature, mass and weight must be positive");
@@ -53,8 +53,8 @@ Inflow::Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream
   for (const Index patch : patches) {
     const std::size_t before = entries_.size();
     for (Index f = 0; f < mesh.face_count(); ++f) {
-      if (mesh.faces[f].neighbour != boundary_code(patch) || mesh.cell_of_face(f) >= mesh.own_cells()) continue;
-      const double area = area_vector(mesh, f).norm();
+      if (mesh.faces[f].neighbour != mesh::boundary_code(patch) || mesh.cell_of_face(f) >= mesh.own_cells()) continue;
+      const double area = mesh::area_vector(mesh, f).norm();
       const double s = stream.velocity.dot(mesh.faces[f].normal) / most_probable_;
       const double rate = stream.number_density / stream.weight * most_probable_ * flux_factor(s) * area;
       const Vec3 t1 = mesh.faces[f].normal.unitOrthogonal();
@@ -120,4 +120,4 @@ long Inflow::inject(const MoveContext& step, double dt, Swarm& swarm) const {
   return entered;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -11,7 +11,7 @@
 #include <functional>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 struct Stream {
   double number_density = 0.0;   // real molecules per m^3
@@ -27,10 +27,10 @@ class Inflow {
   // (mesh/part.hpp), those of its own cells. Throws std::invalid_argument for a
   // non-positive density, temperature, mass or weight, or a patch without faces (in a
   // whole mesh). Keeps a reference to the mesh.
-  Inflow(const Mesh& mesh, const std::vector<Index>& patches, const Stream& stream);
+  Inflow(const mesh::Mesh& mesh, const std::vector<Index>& patches, const Stream& stream);
 
   // The same stream through the same patches of another mesh (a rank's new part).
-  Inflow on(const Mesh& mesh) const { return Inflow(mesh, patches_, stream_); }
+  Inflow on(const mesh::Mesh& mesh) const { return Inflow(mesh, patches_, stream_); }
   // Simulators entering per second through all the faces (the mean of inject / dt).
   double rate() const { return rate_; }
   double temperature() const { return stream_.temperature; }
@@ -56,7 +56,7 @@ class Inflow {
   Vec3 point_on(const Entry& entry, Random& random) const;
   Vec3 velocity(const Entry& entry, Random& random) const;
 
-  const Mesh& mesh_;
+  const mesh::Mesh& mesh_;
   std::vector<Index> patches_;
   Stream stream_;
   double most_probable_;  // sqrt(2 k T / m)
@@ -72,4 +72,4 @@ double flux_factor(double s);
 // x e^(-(x - s)^2), x > 0, by inverting its cumulative distribution.
 double inflow_normal_speed(double s, double u);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

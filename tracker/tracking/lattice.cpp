@@ -1,12 +1,12 @@
 #include "tracker/tracking/lattice.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 namespace {
 
 constexpr LatticeFaces kNotLattice{{-1, -1, -1}, {-1, -1, -1}};
 
-LatticeFaces of_cell(const Mesh& mesh, Index cell) {
+LatticeFaces of_cell(const mesh::Mesh& mesh, Index cell) {
   const Index first = mesh.cell_faces[cell];
   if (mesh.cell_faces[cell + 1] - first != 6) return kNotLattice;
   LatticeFaces found = kNotLattice;
@@ -28,7 +28,7 @@ LatticeFaces of_cell(const Mesh& mesh, Index cell) {
 
 }  // namespace
 
-std::vector<LatticeFaces> lattice_faces(const Mesh& mesh) {
+std::vector<LatticeFaces> lattice_faces(const mesh::Mesh& mesh) {
   std::vector<LatticeFaces> cells(static_cast<std::size_t>(mesh.cell_count()));
   bool any = false;
   for (Index c = 0; c < mesh.cell_count(); ++c) {
@@ -39,4 +39,4 @@ std::vector<LatticeFaces> lattice_faces(const Mesh& mesh) {
   return cells;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

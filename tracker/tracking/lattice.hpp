@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 // Where such a cell's faces are in its face list. The scan reads the planes' coordinates
 // from the faces themselves: a copy per cell would be one more record to bring into the
@@ -27,6 +27,6 @@ struct LatticeFaces {
 };
 
 // Every cell's, or none if no cell is an axis-aligned hexahedron.
-std::vector<LatticeFaces> lattice_faces(const Mesh& mesh);
+std::vector<LatticeFaces> lattice_faces(const mesh::Mesh& mesh);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 std::string_view name(Algorithm algorithm) {
   switch (algorithm) {
@@ -84,4 +84,4 @@ std::string summary(const MoveTally& tally) {
   return out.str();
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 enum class Algorithm {
   event_driven,  // ours: earliest dt >= 0 with f <= 0 and f' < 0; never loses a particle
@@ -76,4 +76,4 @@ struct MoveContext {
 // boundary condition.
 MoveResult move(const MoveContext& step, Particle& particle, std::span<csg::State> states, double dt);
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

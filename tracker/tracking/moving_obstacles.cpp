@@ -9,7 +9,7 @@
 #include <string>
 #include <utility>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
 // A particle the wall overran: put just outside the surface where it met the particle, in
@@ -38,13 +38,13 @@ bool put_back(const Obstacles& obstacles, int o, const Domain& domain, const Vec
 
 void Obstacles::place(int o, const Eigen::Isometry3d& pose) { reregister(o, pose); }
 
-CellObject Obstacles::reregister(int o, const Eigen::Isometry3d& pose) {
+bounding::CellObject Obstacles::reregister(int o, const Eigen::Isometry3d& pose) {
   const auto i = static_cast<std::size_t>(o);
   // The new registration first: if it throws (too many primitives in a cell), nothing changed.
   csg::Tree placed = objects_[i].shape;
   for (csg::Primitive& primitive : placed.primitives()) primitive.place(pose);
-  CellObject moved(*bounding_, placed);
-  CellObject old = std::exchange(cells_[i], std::move(moved));
+  bounding::CellObject moved(*bounding_, placed);
+  bounding::CellObject old = std::exchange(cells_[i], std::move(moved));
   objects_[i].shape = std::move(placed);
   poses_[i] = pose;
   motions_[i] = {};
@@ -65,7 +65,7 @@ long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const 
     return 0;
   }
   const Eigen::Isometry3d old_pose = poses_[i];
-  const CellObject old = reregister(o, pose);
+  const bounding::CellObject old = reregister(o, pose);
 
   // Object-frame point q seen at the old and new pose: the relative motion of a fixed
   // particle is old_pose * pose^-1 * x - x in the old world frame.
@@ -111,4 +111,4 @@ long Obstacles::set_pose(int o, const Eigen::Isometry3d& pose, double dt, const 
   return overrun;
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

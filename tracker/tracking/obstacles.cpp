@@ -7,22 +7,22 @@
 #include <stdexcept>
 #include <utility>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
 // A wall or zone must look the same from both sides of every periodic link (its images
 // given), since a crossing re-evaluates the states on the far side: compared at each linked
 // face's vertices and centre, skipping points within round-off of a primitive's surface.
-void require_periodic(const Mesh& mesh, const Obstacle& object) {
+void require_periodic(const mesh::Mesh& mesh, const Obstacle& object) {
   const auto clear = [&](const Vec3& x) {
     for (const csg::Primitive& p : object.shape.primitives())
       if (std::abs(p.indicator(x)) < 1e-9) return false;
     return true;
   };
   for (Index f = 0; f < mesh.face_count(); ++f) {
-    const Face& face = mesh.faces[f];
+    const mesh::Face& face = mesh.faces[f];
     if (face.neighbour < 0 || face.shift == 0) continue;
-    std::vector<Vec3> points{vertex_mean(mesh, f)};
+    std::vector<Vec3> points{mesh::vertex_mean(mesh, f)};
     for (Index k = 0; k < mesh.vertex_count(f); ++k) points.push_back(mesh.face_vertex(f, k));
     for (const Vec3& x : points) {
       const Vec3 image = x + mesh.shifts[face.shift];
@@ -46,10 +46,10 @@ void ObstacleTally::add(const ObstacleTally& other) {
   angular_impulse += other.angular_impulse;
 }
 
-Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects)
+Obstacles::Obstacles(const mesh::Mesh& tracking, std::vector<Obstacle> objects)
     : Obstacles(tracking, std::move(objects), tracking, {}) {}
 
-Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const Mesh& bounding,
+Obstacles::Obstacles(const mesh::Mesh& tracking, std::vector<Obstacle> objects, const mesh::Mesh& bounding,
                      std::vector<Index> bounding_cell)
     : bounding_(&bounding), objects_(std::move(objects)), bounding_cell_(std::move(bounding_cell)) {
   if (!bounding_cell_.empty() && static_cast<Index>(bounding_cell_.size()) != tracking.cell_count())
@@ -71,7 +71,7 @@ Obstacles::Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const 
   find_active();
 }
 
-Obstacles Obstacles::on(const Mesh& tracking) const {
+Obstacles Obstacles::on(const mesh::Mesh& tracking) const {
   // The objects were checked when first registered: the shapes as they are placed now.
   Obstacles moved;
   moved.bounding_ = &tracking;
@@ -117,4 +117,4 @@ void Obstacles::transfer(Index from, Index to, const Vec3& x, bool shifted, std:
   for (const int o : active(b)) states[o] = shifted ? cells_[o].classify(b, x) : cells_[o].transfer(states[o], a, b, x);
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

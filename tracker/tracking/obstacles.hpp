@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 struct Domain;
 class Swarm;
@@ -48,23 +48,23 @@ class Obstacles {
   // coarser bounding mesh (a box grid aligned with the tracking cells) is for studies of the
   // pruning (bench/tracker_study). Throws std::invalid_argument as CellObject does, or when
   // a wall's condition is invalid (periodic, or re-emitting without a temperature).
-  Obstacles(const Mesh& tracking, std::vector<Obstacle> objects);
-  Obstacles(const Mesh& tracking, std::vector<Obstacle> objects, const Mesh& bounding,
+  Obstacles(const mesh::Mesh& tracking, std::vector<Obstacle> objects);
+  Obstacles(const mesh::Mesh& tracking, std::vector<Obstacle> objects, const mesh::Mesh& bounding,
             std::vector<Index> bounding_cell);
   // The bounding mesh is kept by reference: a temporary would dangle.
-  Obstacles(Mesh&&, std::vector<Obstacle>) = delete;
-  Obstacles(const Mesh&, std::vector<Obstacle>, Mesh&&, std::vector<Index>) = delete;
+  Obstacles(mesh::Mesh&&, std::vector<Obstacle>) = delete;
+  Obstacles(const mesh::Mesh&, std::vector<Obstacle>, mesh::Mesh&&, std::vector<Index>) = delete;
 
   // The same objects at the same poses and motions, registered with another tracking mesh
   // (a rank's part, mesh/part.hpp) as their bounding mesh.
-  Obstacles on(const Mesh& tracking) const;
+  Obstacles on(const mesh::Mesh& tracking) const;
 
   int count() const { return static_cast<int>(objects_.size()); }
   bool empty() const { return objects_.empty(); }
   // Some wall re-emits particles (diffuse or maxwell): the tracking needs their mass.
   bool emits() const { return emits_; }
   const Obstacle& object(int i) const { return objects_[static_cast<std::size_t>(i)]; }
-  const CellObject& cells(int i) const { return cells_[static_cast<std::size_t>(i)]; }
+  const bounding::CellObject& cells(int i) const { return cells_[static_cast<std::size_t>(i)]; }
   Index bounding_cell(Index cell) const { return bounding_cell_.empty() ? cell : bounding_cell_[cell]; }
   // The objects with primitives in bounding cell b, ascending: the only ones whose states
   // change there. Elsewhere an object is constant and its state is not looked at.
@@ -111,9 +111,9 @@ class Obstacles {
  private:
   void find_active();
   // Registers object o at `pose`; returns the registration it had.
-  CellObject reregister(int o, const Eigen::Isometry3d& pose);
+  bounding::CellObject reregister(int o, const Eigen::Isometry3d& pose);
 
-  const Mesh* bounding_ = nullptr;
+  const mesh::Mesh* bounding_ = nullptr;
   std::vector<Obstacle> objects_;
   std::vector<Eigen::Isometry3d> poses_;
   // The last set_pose of each object: new-pose point back to where it was, and over what time.
@@ -122,11 +122,11 @@ class Obstacles {
     double dt = 0.0;
   };
   std::vector<Motion> motions_;
-  std::vector<CellObject> cells_;
+  std::vector<bounding::CellObject> cells_;
   std::vector<Index> bounding_cell_;
   bool emits_ = false;               // asked on every move
   std::vector<Index> active_first_;  // bounding cell b: active_[active_first_[b] .. active_first_[b + 1])
   std::vector<int> active_;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

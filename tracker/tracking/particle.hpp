@@ -5,7 +5,7 @@
 
 #include <random>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 // One generator per caller (thread); only diffuse and Maxwell walls draw from it.
 using Random = std::mt19937_64;
@@ -39,4 +39,4 @@ struct MoveResult {
   Flight rest;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

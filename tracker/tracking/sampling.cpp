@@ -4,9 +4,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
-CellSampler::CellSampler(const Mesh& mesh)
+CellSampler::CellSampler(const mesh::Mesh& mesh)
     : volume_(mesh.volume),
       count_(volume_.size(), 0.0),
       sum_(volume_.size(), Vec3::Zero()),
@@ -109,4 +109,4 @@ void CellSampler::set_sums(std::span<const double> sums) {
   }
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

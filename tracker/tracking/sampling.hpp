@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 struct CellMoments {
   double count = 0.0;            // simulators, mean over the samples
@@ -26,7 +26,7 @@ struct CellMoments {
 
 class CellSampler {
  public:
-  explicit CellSampler(const Mesh& mesh);
+  explicit CellSampler(const mesh::Mesh& mesh);
 
   // In a DSMC step, sample after the move and again after the collisions for the stress and
   // heat flux: either alone is off by about dt / (2 mu / p) (README, "When to sample").
@@ -60,4 +60,4 @@ class CellSampler {
   int samples_ = 0;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 void Swarm::add(const Particle& particle, std::span<const csg::State> states) {
   if (states.size() != static_cast<std::size_t>(objects_))
@@ -77,4 +77,4 @@ void Swarm::sort_by_cell(Index cells) {
   states_.swap(sorted_states_);
 }
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -11,7 +11,7 @@
 #include <span>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 
 struct StoredParticle {
   double x[3];
@@ -90,4 +90,4 @@ class Swarm {
   std::vector<csg::State> states_;
 };
 
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

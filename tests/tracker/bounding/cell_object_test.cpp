@@ -11,7 +11,7 @@
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/locate.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::bounding {
 namespace {
 
 struct Ball {
@@ -41,7 +41,7 @@ bool clear_of(const std::vector<Ball>& balls, const Vec3& x) {
 }
 
 TEST(CellObject, PrunedTreesGiveTheObjectsAnswerEverywhere) {
-  const Mesh mesh = box_mesh(cube(16));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(16));
   const std::vector<Ball> balls = cluster();
   const csg::Tree object = union_of(balls);
   const CellObject cells(mesh, object);
@@ -52,7 +52,7 @@ TEST(CellObject, PrunedTreesGiveTheObjectsAnswerEverywhere) {
   EXPECT_LT(s.mean_primitives, 10.0);
   EXPECT_GT(s.constant_cells, mesh.cell_count() / 4);
 
-  const PointLocator locator(mesh);
+  const mesh::PointLocator locator(mesh);
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int inside = 0;
@@ -70,13 +70,13 @@ TEST(CellObject, PrunedTreesGiveTheObjectsAnswerEverywhere) {
 
 // Guards against: an obstacle state carried across a cell face disagreeing with the next cell's pruned tree.
 TEST(CellObject, StatesCarriedAcrossEveryFaceEqualDirectEvaluation) {
-  const Mesh mesh = box_mesh(cube(12));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(12));
   const std::vector<Ball> balls = cluster();
   const CellObject cells(mesh, union_of(balls));
   int checked = 0, carried = 0;
   for (Index c = 0; c < mesh.cell_count(); ++c)
     for (Index f = mesh.cell_faces[c]; f < mesh.cell_faces[c + 1]; ++f) {
-      const Face& face = mesh.faces[static_cast<std::size_t>(f)];
+      const mesh::Face& face = mesh.faces[static_cast<std::size_t>(f)];
       // The face's point and a point near one of its corners, where diagonal cells are close.
       for (const Vec3& x : {face.point, Vec3(0.9 * mesh.face_vertex(f, 0) + 0.1 * face.point)}) {
         if (face.neighbour < 0 || !clear_of(balls, x)) continue;
@@ -93,10 +93,10 @@ TEST(CellObject, StatesCarriedAcrossEveryFaceEqualDirectEvaluation) {
 // Infinite primitives register only where their surface is: a half-space (its plane inside
 // the fifth layer of cells) minus a ball.
 TEST(CellObject, HalfSpaceIsConstantAwayFromItsPlane) {
-  const Mesh mesh = box_mesh(cube(8));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(8));
   const csg::Tree object(csg::half_space({0, 0, 0.55}, {0, 0, 1}) - csg::ball({0.5, 0.5, 0.25}, 0.1));
   const CellObject cells(mesh, object);
-  const PointLocator locator(mesh);
+  const mesh::PointLocator locator(mesh);
   const Index deep = locator.locate({0.9, 0.9, 0.05});
   const Index above = locator.locate({0.9, 0.9, 0.95});
   EXPECT_TRUE(cells.tree(deep).constant());
@@ -111,7 +111,7 @@ TEST(CellObject, HalfSpaceIsConstantAwayFromItsPlane) {
 }
 
 TEST(CellObject, TooManyPrimitivesInOneCellIsRefusedNamingIt) {
-  const Mesh mesh = box_mesh(cube(2));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(2));
   std::vector<Ball> balls;
   for (int i = 0; i < 70; ++i) balls.push_back({Vec3(0.1 + 0.004 * i, 0.2, 0.2), 0.01});
   try {
@@ -123,4 +123,4 @@ TEST(CellObject, TooManyPrimitivesInOneCellIsRefusedNamingIt) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::bounding

@@ -6,7 +6,7 @@
 
 #include <stdexcept>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 BoxSpec graded_box(bool tetrahedra) {
@@ -101,4 +101,4 @@ TEST(BoxMesh, RejectsBadSpecs) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -6,7 +6,7 @@
 
 #include <numeric>
 
-namespace cosim::tracker::test {
+namespace cosim::tracker::mesh::test {
 
 double total_volume(const Mesh& mesh) { return std::accumulate(mesh.volume.begin(), mesh.volume.end(), 0.0); }
 
@@ -32,4 +32,4 @@ void expect_consistent(const Mesh& mesh) {
     }
 }
 
-}  // namespace cosim::tracker::test
+}  // namespace cosim::tracker::mesh::test

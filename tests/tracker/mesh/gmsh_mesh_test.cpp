@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 std::filesystem::path temporary(const std::string& name) {
@@ -86,4 +86,4 @@ TEST(GmshMesh, MissingFileIsNamed) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

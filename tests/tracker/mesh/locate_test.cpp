@@ -7,7 +7,7 @@
 
 #include <random>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 Index scan(const Mesh& mesh, const Vec3& x) {
@@ -65,4 +65,4 @@ TEST(Locate, Voronoi) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -9,7 +9,7 @@
 
 #include <random>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 double largest_move(const Mesh& a, const Mesh& b) {
@@ -76,4 +76,4 @@ TEST(Perturb, TetrahedraAndPeriodicVoronoi) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 bool reports(const std::vector<Problem>& problems, Defect defect, Index cell, Index face = -2) {
@@ -128,4 +128,4 @@ TEST(Validate, FaceOfThreeCellsIsRejected) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

@@ -11,7 +11,7 @@
 #include <random>
 #include <stdexcept>
 
-namespace cosim::tracker {
+namespace cosim::tracker::mesh {
 namespace {
 
 std::vector<Vec3> random_points(int n, const Vec3& lo, const Vec3& hi, std::uint64_t seed) {
@@ -165,4 +165,4 @@ TEST(VoronoiMesh, ManyRandomPointsWithTinyFaces) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::mesh

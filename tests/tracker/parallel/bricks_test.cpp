@@ -9,11 +9,11 @@
 
 #include "tracker/parallel/bricks.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 namespace {
 
 std::array<int, 3> hex_of(Index cell, const std::array<int, 3>& n, int per_hex) {
-  return box_cell(cell, n, per_hex).hex;
+  return mesh::box_cell(cell, n, per_hex).hex;
 }
 
 // Each cell's owner's brick holds it; the bricks' hexahedra add up to the box's.
@@ -95,4 +95,4 @@ TEST(Bricks, MorePartsThanHexahedraLeaveSomeEmpty) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

@@ -14,17 +14,17 @@
 #include "tracker/parallel/bricks.hpp"
 #include "tracker/parallel/decomposition.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 namespace {
 
 TEST(Migration, RoundsAfterRoundsOnEveryRankCount) {
-  const Mesh mesh = box_mesh(cube(8));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(8));
   Decomposition d(mesh, Ranks(MPI_COMM_WORLD));
   const int rank = d.ranks().rank(), ranks = d.ranks().size();
   std::mt19937_64 random(static_cast<std::uint64_t>(rank) + 11);
   std::uniform_int_distribution<Index> cell(0, mesh.cell_count() - 1);
   std::uniform_int_distribution<int> pause(0, 3);
-  Swarm swarm(1);
+  tracking::Swarm swarm(1);
   long long made = 0, elsewhere = 0, early = 0, moved = 0, unordered = 0;
   for (int round = 0; round < 40; ++round) {
     // Every fourth round the odd ranks have nothing to send: they keep what they hold.
@@ -32,7 +32,7 @@ TEST(Migration, RoundsAfterRoundsOnEveryRankCount) {
       // The ones here moved to random cells, and new ones in random cells: ids unique over
       // the ranks (rank, round, i) as their state.
       for (std::size_t i = 0; i < swarm.size(); i += 3) {
-        Particle p = swarm.particle(i);
+        tracking::Particle p = swarm.particle(i);
         p.cell = cell(random);
         p.x = mesh.centroid[p.cell];
         swarm.set(i, p);
@@ -48,7 +48,7 @@ TEST(Migration, RoundsAfterRoundsOnEveryRankCount) {
     // The holder in the velocity: what arrives must be in the senders' rank order, after
     // what stayed, whatever order the messages came in.
     for (std::size_t i = 0; i < swarm.size(); ++i) {
-      Particle p = swarm.particle(i);
+      tracking::Particle p = swarm.particle(i);
       p.v.x() = rank;
       swarm.set(i, p);
     }
@@ -98,9 +98,10 @@ TEST(Bricks, ARepartitionAddsUpTheRanksParticlesSlabBySlab) {
   const int x = 3 * (ranks.rank() % 4);
   std::vector<Index> mine;
   for (int i = 0; i < 3000 + 500 * ranks.rank(); ++i)
-    mine.push_back(i % 4 == 0 ? anywhere(random)
-                              : box_cell_index({{x + corner(random), corner(random), corner(random)}, corner(random)},
-                                               hexahedra, per_hex));
+    mine.push_back(i % 4 == 0
+                       ? anywhere(random)
+                       : mesh::box_cell_index({{x + corner(random), corner(random), corner(random)}, corner(random)},
+                                              hexahedra, per_hex));
   const std::vector<int> cuts = d.proposal(mine).bricks()->cuts();
   std::vector<int> lead = cuts;
   ranks.broadcast(lead);
@@ -143,4 +144,4 @@ TEST(Ranks, RankZeroTakesEachRanksValuesInTurn) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

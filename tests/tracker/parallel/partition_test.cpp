@@ -12,15 +12,16 @@
 #include "tracker/parallel/migration.hpp"
 #include "tracker/parallel/partition.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 namespace {
 
-Mesh box(std::array<int, 3> cells, bool tetrahedra = false, std::array<bool, 3> periodic = {false, false, false}) {
-  BoxSpec spec;
+mesh::Mesh box(std::array<int, 3> cells, bool tetrahedra = false,
+               std::array<bool, 3> periodic = {false, false, false}) {
+  mesh::BoxSpec spec;
   for (int a = 0; a < 3; ++a) spec.axes[static_cast<std::size_t>(a)].cells = cells[static_cast<std::size_t>(a)];
   spec.tetrahedra = tetrahedra;
   spec.periodic = periodic;
-  return box_mesh(spec);
+  return mesh::box_mesh(spec);
 }
 
 bool linked(const CellGraph& g, int a, int b) {
@@ -28,7 +29,7 @@ bool linked(const CellGraph& g, int a, int b) {
 }
 
 TEST(CellGraph, InteriorAndPeriodicFacesLinkCellsBothWaysOnce) {
-  const Mesh open = box({4, 3, 2}), periodic = box({4, 3, 2}, false, {true, false, false});
+  const mesh::Mesh open = box({4, 3, 2}), periodic = box({4, 3, 2}, false, {true, false, false});
   const CellGraph a = cell_graph(open), b = cell_graph(periodic);
   ASSERT_EQ(a.start.size(), 25u);
   for (int c = 0; c < 24; ++c)
@@ -47,7 +48,7 @@ TEST(CellGraph, InteriorAndPeriodicFacesLinkCellsBothWaysOnce) {
 }
 
 TEST(Partition, EveryCellInOnePartBalancedAndDeterministic) {
-  for (const Mesh& mesh : {box({20, 20, 20}), box({8, 8, 8}, true, {true, true, false})}) {
+  for (const mesh::Mesh& mesh : {box({20, 20, 20}), box({8, 8, 8}, true, {true, true, false})}) {
     for (int parts : {2, 3, 4}) {
       const std::vector<int> part = partition_cells(mesh, parts);
       ASSERT_EQ(part.size(), static_cast<std::size_t>(mesh.cell_count()));
@@ -71,7 +72,7 @@ TEST(Partition, EveryCellInOnePartBalancedAndDeterministic) {
 // Weights 20 in the cells x < 5 of a 20^3 box and 1 elsewhere: the parts hold equal
 // weight, so the heavy quarter is split between more parts than its share of the cells.
 TEST(Partition, WeightsBalanceTheirSumNotTheCells) {
-  const Mesh mesh = box({20, 20, 20});
+  const mesh::Mesh mesh = box({20, 20, 20});
   std::vector<int> weight(static_cast<std::size_t>(mesh.cell_count()), 1);
   for (Index c = 0; c < mesh.cell_count(); ++c)
     if (c % 20 < 5) weight[static_cast<std::size_t>(c)] = 20;
@@ -89,18 +90,18 @@ TEST(Partition, WeightsBalanceTheirSumNotTheCells) {
 }
 
 TEST(Partition, OnePartWithoutMetisAndBadCountsRefused) {
-  const Mesh mesh = box({3, 3, 3});
+  const mesh::Mesh mesh = box({3, 3, 3});
   EXPECT_EQ(partition_cells(mesh, 1), std::vector<int>(27, 0));
   EXPECT_THROW(partition_cells(mesh, 0), std::invalid_argument);
   EXPECT_THROW(partition_cells(mesh, 28), std::invalid_argument);
 }
 
 TEST(Migration, OneRankKeepsEveryParticle) {
-  Swarm swarm(0);
+  tracking::Swarm swarm(0);
   for (int i = 0; i < 10; ++i) swarm.add({{0, 0, 0}, {1, 0, 0}, i}, {});
   EXPECT_EQ(migrate(swarm, Owners(std::vector<int>(10, 0)), Ranks(), 0), 0u);
   EXPECT_EQ(swarm.size(), 10u);
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

@@ -34,7 +34,7 @@
 #include "tracker/step/simulation.hpp"
 #include "tracker/step/state_array.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::parallel {
 namespace {
 
 int rank() {
@@ -44,7 +44,7 @@ int rank() {
 }
 
 TEST(Decomposition, TheSameOnBothRanksAndMetisAnswer) {
-  const Mesh mesh = box_mesh(cube(10));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(10));
   const Decomposition d(mesh, Ranks(MPI_COMM_WORLD));
   ASSERT_EQ(d.ranks().size(), 2) << "run this test with mpirun -n 2";
   std::vector<int> owners = d.owners().saved(), low(owners.size()), high(owners.size());
@@ -55,11 +55,11 @@ TEST(Decomposition, TheSameOnBothRanksAndMetisAnswer) {
 }
 
 TEST(Migration, EveryParticleReachesItsCellsOwnerWithItsStates) {
-  const Mesh mesh = box_mesh(cube(6));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(6));
   Decomposition d(mesh, Ranks(MPI_COMM_WORLD));
   // 1000 particles per rank in random cells; states: an id unique over the ranks and its
   // complement, so a record mixed up on the way shows.
-  Swarm swarm(2);
+  tracking::Swarm swarm(2);
   std::mt19937_64 random(static_cast<std::uint64_t>(rank()) + 7);
   std::uniform_int_distribution<Index> cell(0, mesh.cell_count() - 1);
   long long leaving = 0;
@@ -72,7 +72,7 @@ TEST(Migration, EveryParticleReachesItsCellsOwnerWithItsStates) {
   EXPECT_EQ(static_cast<long long>(d.migrate(swarm)), leaving);
   long long ids = 0;
   for (std::size_t i = 0; i < swarm.size(); ++i) {
-    const Particle p = swarm.particle(i);
+    const tracking::Particle p = swarm.particle(i);
     EXPECT_TRUE(d.owns(p.cell));
     EXPECT_EQ(p.x, mesh.centroid[p.cell]);
     EXPECT_EQ(swarm.states(i)[0], static_cast<std::uint64_t>(p.v.x()));
@@ -96,7 +96,7 @@ TEST(Seeding, TwoRanksSeedWhatOneRankSeeds) {
   for (const char* particles :
        {"{per_cell: 7, temperature: 300, mass: 6.63e-26, seed: 4}",
         "{total: 5000, temperature: 300, drift: [100, 0, 0], mass: 6.63e-26, seed: 4}", kRegions}) {
-    const TrackerScene t = read_tracker(scene::load_scene_from_string(
+    const program::TrackerScene t = program::read_tracker(scene::load_scene_from_string(
         "time: {end: 0.1}\ncoupling: {window: 0.1}\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
         "effects: [rarefied_gas]\nparticipants:\n  tracker:\n    dt: 0.01\n    options:\n"
         "      mesh: {type: box, cells: [9, 7, 5], tetrahedra: true}\n      boundaries: {default: {kind: specular}}\n"
@@ -105,14 +105,15 @@ TEST(Seeding, TwoRanksSeedWhatOneRankSeeds) {
             std::string(particles) + "\n",
         "seeding.yaml"));
     const Decomposition two(*t.mesh, Ranks(MPI_COMM_WORLD));
-    const Swarm mine = seed_particles(*t.mesh, t.obstacles, t.particles, two, volumes_of(*t.mesh));
-    const Swarm all =
-        seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), volumes_of(*t.mesh));
+    const tracking::Swarm mine =
+        step::seed_particles(*t.mesh, t.obstacles, t.particles, two, step::volumes_of(*t.mesh));
+    const tracking::Swarm all =
+        step::seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), step::volumes_of(*t.mesh));
     std::size_t k = 0;
     for (std::size_t i = 0; i < all.size(); ++i) {
       if (!two.owns(all.cell(i))) continue;
       ASSERT_LT(k, mine.size()) << particles;
-      const Particle a = all.particle(i), b = mine.particle(k);
+      const tracking::Particle a = all.particle(i), b = mine.particle(k);
       EXPECT_TRUE(a.x == b.x && a.v == b.v && a.cell == b.cell && all.states(i)[0] == mine.states(k)[0]) << particles;
       ++k;
     }
@@ -132,10 +133,10 @@ TEST(Seeding, RegionsOnTheRanksPartsAsOnOne) {
       "      particles: " +
           std::string(kRegions) + "\n",
       "regions.yaml");
-  const auto sums = [](const Simulation& gas, MPI_Comm comm) {
+  const auto sums = [](const step::Simulation& gas, MPI_Comm comm) {
     std::array<double, 7> s{};
     for (std::size_t i = 0; i < gas.swarm().size(); ++i) {
-      const Particle p = gas.swarm().particle(i);
+      const tracking::Particle p = gas.swarm().particle(i);
       for (int a = 0; a < 3; ++a) {
         s[static_cast<std::size_t>(a)] += p.x[a];
         s[3 + static_cast<std::size_t>(a)] += p.v[a];
@@ -146,12 +147,12 @@ TEST(Seeding, RegionsOnTheRanksPartsAsOnOne) {
     return s;
   };
   const Ranks world(MPI_COMM_WORLD);
-  TrackerScene part = read_tracker(scene, world);
+  program::TrackerScene part = program::read_tracker(scene, world);
   ASSERT_TRUE(part.mesh->partial);
-  const Simulation two(std::move(part), world);
+  const step::Simulation two(std::move(part), world);
   const std::array<double, 7> on_two = sums(two, MPI_COMM_WORLD);
   if (rank() != 0) return;
-  const Simulation one(read_tracker(scene), Ranks(MPI_COMM_SELF));
+  const step::Simulation one(program::read_tracker(scene), Ranks(MPI_COMM_SELF));
   const std::array<double, 7> on_one = sums(one, MPI_COMM_SELF);
   EXPECT_GT(on_one[6], 1000);
   EXPECT_EQ(on_two[6], on_one[6]);  // the count
@@ -186,7 +187,7 @@ double column(const RunFile& run, int k) { return run.moves[run.moves.size() - 1
 constexpr int kRemoved = 7, kLost = 8;
 
 struct OneAndTwo {
-  RunSummary one, two;
+  program::RunSummary one, two;
   RunFile one_file, two_file;
 };
 
@@ -194,9 +195,9 @@ struct OneAndTwo {
 OneAndTwo run_on_one_and_two(const scene::Scene& scene, const std::string& name) {
   const auto dir = std::filesystem::path(::testing::TempDir());
   OneAndTwo r;
-  r.two = run_tracker(scene, dir / (name + "-two.h5"), Ranks(MPI_COMM_WORLD));
+  r.two = program::run_tracker(scene, dir / (name + "-two.h5"), Ranks(MPI_COMM_WORLD));
   if (rank() == 0) {
-    r.one = run_tracker(scene, dir / (name + "-one.h5"), Ranks(MPI_COMM_SELF));
+    r.one = program::run_tracker(scene, dir / (name + "-one.h5"), Ranks(MPI_COMM_SELF));
     r.one_file = read_run(dir / (name + "-one.h5"));
     r.two_file = read_run(dir / (name + "-two.h5"));
   }
@@ -311,7 +312,7 @@ TEST(TwoRanks, SphereStreamMatchesOneRank) {
 // makes them: a window repeated after restore() (state gathered from and scattered to both
 // ranks) gives the same forces bit for bit.
 TEST(TwoRanks, RepeatedWindowAfterRestoreGivesTheSameForces) {
-  TrackerSolver solver{Ranks(MPI_COMM_WORLD)};
+  program::TrackerSolver solver{Ranks(MPI_COMM_WORLD)};
   const scene::Scene scene = sphere_stream("2.0e-3", "1.0e-3");
   participant::run_on_ranks(solver, MPI_COMM_WORLD, [&](participant::Solver& lead) {
     lead.initialise(scene, "tracker", {}, {});
@@ -360,7 +361,7 @@ participants:
       *poses = {{{-2 + u * t, 0, 0}, Eigen::Quaterniond::Identity(), {u, 0, 0}, Eigen::Vector3d::Zero()}};
     return in;
   };
-  TrackerSolver solver{Ranks(MPI_COMM_WORLD)};
+  program::TrackerSolver solver{Ranks(MPI_COMM_WORLD)};
   double counted = 0.0, mean_counted = 0.0;  // over the frame's cells, on rank 0
   participant::run_on_ranks(solver, MPI_COMM_WORLD, [&](participant::Solver& lead) {
     lead.initialise(scene, "tracker", inputs({0, 1, 0.0, 0.25}).poses_start, {});
@@ -376,7 +377,7 @@ participants:
     for (const double n : frame.fields.at(1).values) mean_counted += n;
     return 0;
   });
-  const Simulation& gas = solver.gas();
+  const step::Simulation& gas = solver.gas();
   EXPECT_EQ(gas.particles(), gas.seeded());
   const auto seeded = static_cast<double>(gas.seeded());  // collective
   if (rank() == 0) {
@@ -407,7 +408,7 @@ TEST(TwoRanks, ParticleWeightedBalanceEvensTheLoads) {
       "      particles: {per_cell: 20, temperature: 273.15, mass: 6.63e-26, weight: 3.5e6, seed: 3}\n"
       "      balance: {every: 5, threshold: 1.2}\n",
       "balance.yaml");
-  Simulation gas(read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
+  step::Simulation gas(program::read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
   const auto imbalance = [&] {
     std::vector<long long> held(2, 0);
     held[static_cast<std::size_t>(rank())] = static_cast<long long>(gas.swarm().size());
@@ -436,8 +437,8 @@ TEST(TwoRanks, ParticleWeightedBalanceEvensTheLoads) {
   // One particle: max/mean is 2 whatever the partition, so none is taken.
   std::string alone = scene.text;
   alone.replace(alone.find("per_cell: 20"), 12, "total: 1");
-  Simulation one(read_tracker(scene::load_scene_from_string(alone, "alone.yaml"), Ranks(MPI_COMM_WORLD)),
-                 Ranks(MPI_COMM_WORLD));
+  step::Simulation one(program::read_tracker(scene::load_scene_from_string(alone, "alone.yaml"), Ranks(MPI_COMM_WORLD)),
+                       Ranks(MPI_COMM_WORLD));
   for (int k = 0; k < 30; ++k) one.step(7.0e-9);
   EXPECT_EQ(one.rebalances(), 0u);
   EXPECT_EQ(one.particles(), 1u);
@@ -523,9 +524,9 @@ TEST(TwoRanks, EachRankTracksOnItsPartAndHandsMovesOver) {
     const scene::Scene scene =
         deterministic_gas("0.1", box ? "{type: box, cells: [6, 6, 6]}"
                                      : "{type: box, cells: [6, 6, 6], perturb: {fraction: 0.05, seed: 2}}");
-    Simulation two(read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
-    Simulation one(read_tracker(scene));
-    const Mesh& part = two.tracked();
+    step::Simulation two(program::read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
+    step::Simulation one(program::read_tracker(scene));
+    const mesh::Mesh& part = two.tracked();
     const Index cells = one.tracked().cell_count();
     EXPECT_LT(part.cell_count(), cells);
     EXPECT_GT(part.ghosts, 0);
@@ -533,7 +534,7 @@ TEST(TwoRanks, EachRankTracksOnItsPartAndHandsMovesOver) {
     EXPECT_EQ(static_cast<bool>(two.decomposition().owners().bricks()), box);
     two.advance(0.0, 0.2);
     one.advance(0.0, 0.2);
-    const MoveTally a = one.moves(), b = two.moves();
+    const tracking::MoveTally a = one.moves(), b = two.moves();
     EXPECT_EQ(b.moves, a.moves);
     EXPECT_EQ(b.faces_crossed, a.faces_crossed);
     EXPECT_EQ(b.object_events, a.object_events);
@@ -562,9 +563,9 @@ struct HoledZone {
 // Where particle i's record (simulation_state.cpp: position, velocity, cell in the whole
 // mesh, then its states) starts in the gas's state: found by its values, not by the layout
 // of what comes before it.
-std::size_t record_of(const std::vector<double>& state, const Simulation& gas, std::size_t i) {
-  const Particle p = gas.swarm().particle(i);
-  StateWriter key;
+std::size_t record_of(const std::vector<double>& state, const step::Simulation& gas, std::size_t i) {
+  const tracking::Particle p = gas.swarm().particle(i);
+  step::StateWriter key;
   key.put(p.x, p.v, gas.tracked().global_cell(p.cell));
   const std::vector<double> values = key.take();
   return static_cast<std::size_t>(std::search(state.begin(), state.end(), values.begin(), values.end()) -
@@ -602,13 +603,13 @@ TEST(TwoRanks, StraysInGhostsReachTheOwnerClassifiedAnew) {
          << "}, " << ball(zones[z].centre, zones[z].radius) << "]}}\n";
   text << "      particles: {per_cell: 1, temperature: 0, mass: 1.0e-26, seed: 1}\n";
   const scene::Scene scene = scene::load_scene_from_string(text.str(), "strays.yaml");
-  const TrackerScene whole = read_tracker(scene);  // one rank's registration: the owners'
-  Simulation gas(read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
-  const Mesh& part = gas.tracked();
-  const PartCells numbers(part);
+  const program::TrackerScene whole = program::read_tracker(scene);  // one rank's registration: the owners'
+  step::Simulation gas(program::read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
+  const mesh::Mesh& part = gas.tracked();
+  const mesh::PartCells numbers(part);
   const auto cell_at = [&](const Vec3& x) {
     for (Index c = 0; c < whole.mesh->cell_count(); ++c)
-      if (contains(*whole.mesh, c, x)) return c;
+      if (mesh::contains(*whole.mesh, c, x)) return c;
     return Index{-1};
   };
   const auto next_to_own = [&](Index ghost) {
@@ -649,7 +650,7 @@ TEST(TwoRanks, StraysInGhostsReachTheOwnerClassifiedAnew) {
     }
     const std::size_t at = record_of(state, gas, held++);
     ASSERT_LT(at, state.size());
-    StateWriter record;
+    step::StateWriter record;
     record.put(s.x, Vec3::Zero(), s.cell);
     for (const csg::State bits : states) record.put_bits(bits);
     const std::vector<double> values = record.take();
@@ -663,7 +664,7 @@ TEST(TwoRanks, StraysInGhostsReachTheOwnerClassifiedAnew) {
   EXPECT_EQ(gas.migrated(), strays.size());  // the strays alone: the gas is at rest
   std::vector<long long> found(strays.size(), 0);
   for (std::size_t i = 0; i < gas.swarm().size(); ++i) {
-    const Particle p = gas.swarm().particle(i);
+    const tracking::Particle p = gas.swarm().particle(i);
     for (std::size_t k = 0; k < strays.size(); ++k) {
       const Stray& s = strays[k];
       if (p.x != s.x) continue;
@@ -699,7 +700,7 @@ TEST(TwoRanks, AFaultOnOneRanksPartStopsEveryRank) {
       "fault.yaml");
   std::string message;
   try {
-    Simulation gas(read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
+    step::Simulation gas(program::read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
   } catch (const scene::SceneError& e) {
     message = e.what();
   }
@@ -720,17 +721,17 @@ TEST(TwoRanks, ABrickCountsTheStraysTheOtherRankHolds) {
       "      mesh: {type: box, cells: [8, 4, 4]}\n      boundaries: {default: {kind: specular}}\n"
       "      particles: {per_cell: 3, temperature: 0, mass: 1.0e-26, seed: 1}\n",
       "strays.yaml");
-  Simulation gas(read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
+  step::Simulation gas(program::read_tracker(scene, Ranks(MPI_COMM_WORLD)), Ranks(MPI_COMM_WORLD));
   // The bricks are cut at x = 1: the stray goes a cell beyond it, into hexahedron (4, 1, 1)
   // from rank 0 and (3, 1, 1) from rank 1.
   const Vec3 x{rank() == 0 ? 1.1 : 0.9, 0.4, 0.4};
   const std::array<int, 3> hex{rank() == 0 ? 4 : 3, 1, 1};
-  const Index cell = box_cell_index({hex}, {8, 4, 4}, 1);
+  const Index cell = mesh::box_cell_index({hex}, {8, 4, 4}, 1);
   ASSERT_FALSE(gas.decomposition().owns(cell));
   std::vector<double> state = gas.state();
   const std::size_t at = record_of(state, gas, 0);
   ASSERT_LT(at, state.size());
-  StateWriter record;
+  step::StateWriter record;
   record.put(x, Vec3::Zero(), cell);
   const std::vector<double> values = record.take();
   std::copy(values.begin(), values.end(), state.begin() + static_cast<std::ptrdiff_t>(at));
@@ -739,13 +740,13 @@ TEST(TwoRanks, ABrickCountsTheStraysTheOtherRankHolds) {
     const std::size_t cells = static_cast<std::size_t>(gas.tracked().cell_count());
     return state.size() - 16 * cells + 16 * static_cast<std::size_t>(local);
   };
-  const PartCells numbers(gas.tracked());
+  const mesh::PartCells numbers(gas.tracked());
   state[sums_of(numbers.local(cell))] += 5.0;
-  const Index strays_cell = box_cell_index({{rank() == 0 ? 3 : 4, 1, 1}}, {8, 4, 4}, 1);
+  const Index strays_cell = mesh::box_cell_index({{rank() == 0 ? 3 : 4, 1, 1}}, {8, 4, 4}, 1);
   const double samples = state[sums_of(0) - 1], sampled_here = state[sums_of(numbers.local(strays_cell))];
   gas.restore(state);
 
-  const Simulation::BrickSamples mine = gas.take_brick();
+  const step::Simulation::BrickSamples mine = gas.take_brick();
   const double counted = std::accumulate(mine.count.begin(), mine.count.end(), 0.0);
   std::vector<double> total{counted};
   gas.decomposition().ranks().sum(total);
@@ -758,16 +759,16 @@ TEST(TwoRanks, ABrickCountsTheStraysTheOtherRankHolds) {
       strays_hex[0] - lo[0] + (hi[0] - lo[0]) * (strays_hex[1] - lo[1] + (hi[1] - lo[1]) * (strays_hex[2] - lo[2])));
   double own = 0;  // this rank's particles in that cell, the restored stray not among them
   for (std::size_t i = 0; i < gas.swarm().size(); ++i)
-    own += gas.tracked().global_cell(gas.swarm().cell(i)) == box_cell_index({strays_hex}, {8, 4, 4}, 1) ? 1 : 0;
+    own += gas.tracked().global_cell(gas.swarm().cell(i)) == mesh::box_cell_index({strays_hex}, {8, 4, 4}, 1) ? 1 : 0;
   EXPECT_EQ(mine.count.at(in_brick), own + 1);
   EXPECT_EQ(mine.moments.at(in_brick).count, (sampled_here + 5.0) / samples);
 }
 
 // Coupled, the frame of rank 0 carries every rank's particles, at the windows the option names.
 TEST(TwoRanks, TheCoupledFrameCarriesEveryRanksParticles) {
-  TrackerSolver solver{Ranks(MPI_COMM_WORLD)};
+  program::TrackerSolver solver{Ranks(MPI_COMM_WORLD)};
   const scene::Scene scene = deterministic_gas("1");
-  Simulation one(read_tracker(scene));  // rank 0's, for its counts
+  step::Simulation one(program::read_tracker(scene));  // rank 0's, for its counts
   participant::run_on_ranks(solver, MPI_COMM_WORLD, [&](participant::Solver& lead) {
     lead.initialise(scene, "tracker", {}, {});
     for (std::uint64_t k = 0; k <= 2; ++k) {
@@ -795,4 +796,4 @@ TEST(TwoRanks, TheCoupledFrameCarriesEveryRanksParticles) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::parallel

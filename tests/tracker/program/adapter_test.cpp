@@ -13,7 +13,7 @@
 #include "tracker/program/adapter.hpp"
 #include "tracker/step/state_array.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // Gas at 1 K with mass 2 k_B (most probable speed 1 m/s), at rest in a periodic box of
@@ -83,7 +83,7 @@ TEST(TrackerAdapter, BallMovedThroughGasAtRestFeelsTheFreeMolecularDrag) {
   EXPECT_LT(force.tail<2>().norm(), 0.04 * expected);
   EXPECT_LT(torque.norm(), 0.04 * expected * radius);
   EXPECT_EQ(solver.gas().moves().lost, 0);
-  for (const ObstacleTally& t : solver.gas().tallies()) EXPECT_EQ(t.released, 0);
+  for (const tracking::ObstacleTally& t : solver.gas().tallies()) EXPECT_EQ(t.released, 0);
 }
 
 // Guards against: an implicit window repeated after a restore giving other forces (state or random stream not
@@ -129,7 +129,7 @@ TEST(TrackerAdapter, StateOfAnotherSceneIsRefused) {
 TEST(TrackerState, ANumberThatNoIntegerHoldsIsRefused) {
   const auto read = [](double x) {
     const std::vector<double> values{x};
-    StateReader reader(values);
+    step::StateReader reader(values);
     return reader.get<std::int32_t>();
   };
   EXPECT_EQ(read(-7.0), -7);
@@ -137,9 +137,9 @@ TEST(TrackerState, ANumberThatNoIntegerHoldsIsRefused) {
   for (const double bad : {0.5, 2147483648.0, -2147483649.0, std::nan(""), 1e300})
     EXPECT_THROW(read(bad), std::runtime_error) << bad;
   const std::vector<double> negative{-1.0};
-  StateReader reader(negative);
+  step::StateReader reader(negative);
   EXPECT_THROW(reader.get<std::size_t>(), std::runtime_error);
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -19,7 +19,7 @@
 #include "tests/integration/h5_read.hpp"
 #include "tracker/dsmc/free_molecular.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // Argon at 300 K streaming at 2500 m/s (speed ratio 7.1) through an open box of 11^3 cells
@@ -314,4 +314,4 @@ TEST(TrackerCoupled, WithoutTracersNoFieldsAreForwarded) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

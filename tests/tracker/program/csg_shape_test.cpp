@@ -12,7 +12,7 @@
 
 #include "tests/tracker/program/scene_error.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 namespace fs = std::filesystem;
@@ -94,4 +94,4 @@ TEST(CsgShape, MistakesNameFileLineAndKey) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -20,7 +20,7 @@
 #include "tracker/program/standalone.hpp"
 #include "tests/integration/xdmf_check.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // The unit box of 8 x 4 x 4 cells, 10 windows of 10 steps, fields every window; mass = k_B,
@@ -115,7 +115,8 @@ TEST(ParticleOutput, EveryParticleWithItsVelocityCellAndStatesAtTheStepsItNames)
       if (i > 0) {
         EXPECT_LE(d["cell"][i - 1], d["cell"][i]);  // in cell order
       }
-      EXPECT_FALSE(is_lost(*t.domain, {x, Vec3::Zero(), cell})) << d.step << " particle " << i;  // in its cell
+      EXPECT_FALSE(tracking::is_lost(*t.domain, {x, Vec3::Zero(), cell}))
+          << d.step << " particle " << i;  // in its cell
       // The states are those of direct evaluation (the particles are not within round-off
       // of a surface), bit for bit: no bits a particle carried into a cell that does not
       // look at them.
@@ -179,4 +180,4 @@ TEST(ParticleOutput, AFractionIsASampleOfTheSameParticlesAndTheSeedPicksIt) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

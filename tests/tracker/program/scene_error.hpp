@@ -5,7 +5,7 @@
 
 #include "coupler/scene/error.hpp"
 
-namespace cosim::tracker::testing {
+namespace cosim::tracker::program::testing {
 
 template <typename Read>
 std::string scene_error_of(const Read& read) {
@@ -17,4 +17,4 @@ std::string scene_error_of(const Read& read) {
   return "no error";
 }
 
-}  // namespace cosim::tracker::testing
+}  // namespace cosim::tracker::program::testing

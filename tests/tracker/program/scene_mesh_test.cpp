@@ -7,7 +7,7 @@
 
 #include "tests/tracker/program/scene_error.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 scene::Scene with_mesh(const std::string& mesh) {
@@ -18,7 +18,7 @@ scene::Scene with_mesh(const std::string& mesh) {
       "scene.yaml");
 }
 
-Mesh mesh_of(const std::string& mesh) {
+mesh::Mesh mesh_of(const std::string& mesh) {
   const scene::Scene s = with_mesh(mesh);
   return read_mesh(scene::options_of(s, *s.participant("tracker")).map("mesh"), s).mesh;
 }
@@ -28,26 +28,26 @@ std::string error_of(const std::string& mesh) {
 }
 
 TEST(SceneMesh, BoxOverTheDomainWithTetrahedraAndPerturbation) {
-  const Mesh hex = mesh_of("{type: box, cells: [4, 2, 2], ratio: [2, 1, 1]}");
+  const mesh::Mesh hex = mesh_of("{type: box, cells: [4, 2, 2], ratio: [2, 1, 1]}");
   EXPECT_EQ(hex.cell_count(), 16);
-  EXPECT_NEAR(test::total_volume(hex), 2.0, 1e-12);
-  const Mesh tets = mesh_of("{type: box, cells: [4, 2, 2], tetrahedra: true, perturb: {fraction: 0.1, seed: 3}}");
+  EXPECT_NEAR(mesh::test::total_volume(hex), 2.0, 1e-12);
+  const mesh::Mesh tets = mesh_of("{type: box, cells: [4, 2, 2], tetrahedra: true, perturb: {fraction: 0.1, seed: 3}}");
   EXPECT_EQ(tets.cell_count(), 96);
-  test::expect_consistent(tets);
-  EXPECT_NEAR(test::total_volume(tets), 2.0, 1e-9);
+  mesh::test::expect_consistent(tets);
+  EXPECT_NEAR(mesh::test::total_volume(tets), 2.0, 1e-9);
 }
 
 TEST(SceneMesh, PeriodicVoronoiHasNoWalls) {
-  const Mesh m = mesh_of("{type: voronoi, points: 60, seed: 2, periodic: [true, true, true]}");
+  const mesh::Mesh m = mesh_of("{type: voronoi, points: 60, seed: 2, periodic: [true, true, true]}");
   EXPECT_EQ(m.cell_count(), 60);
-  for (const Face& f : m.faces) EXPECT_GE(f.neighbour, 0);
-  EXPECT_NEAR(test::total_volume(m), 2.0, 1e-9);
+  for (const mesh::Face& f : m.faces) EXPECT_GE(f.neighbour, 0);
+  EXPECT_NEAR(mesh::test::total_volume(m), 2.0, 1e-9);
 }
 
 TEST(SceneMesh, PeriodicBoxHasWallsOnlyWhereAsked) {
-  const Mesh m = mesh_of("{type: box, cells: [4, 2, 2], periodic: [true, false, true]}");
-  EXPECT_EQ(test::boundary_faces(m), 2 * 4 * 2);  // the y sides
-  test::expect_consistent(m);
+  const mesh::Mesh m = mesh_of("{type: box, cells: [4, 2, 2], periodic: [true, false, true]}");
+  EXPECT_EQ(mesh::test::boundary_faces(m), 2 * 4 * 2);  // the y sides
+  mesh::test::expect_consistent(m);
 }
 
 TEST(SceneMesh, MistakesNameTheKey) {
@@ -71,4 +71,4 @@ TEST(SceneMesh, MistakesNameTheKey) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -9,7 +9,7 @@
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/step/seed_particles.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 TrackerScene tracker_with(const std::string& particles, const std::string& mesh = "{type: box, cells: [2, 2, 2]}") {
@@ -25,16 +25,17 @@ TrackerScene tracker_with(const std::string& particles, const std::string& mesh 
       "scene.yaml"));
 }
 
-Swarm seeded(const TrackerScene& t) {
-  return seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), volumes_of(*t.mesh));
+tracking::Swarm seeded(const TrackerScene& t) {
+  return step::seed_particles(*t.mesh, t.obstacles, t.particles, parallel::Decomposition(*t.mesh, {}),
+                              step::volumes_of(*t.mesh));
 }
 
 // A box's volumes from its nodes are its mesh's, up to round-off, at every cell number.
 TEST(Seeding, ABoxsVolumesWithoutItsMesh) {
-  BoxSpec box = cube(5, true);
+  mesh::BoxSpec box = mesh::cube(5, true);
   box.axes[0] = {.min = -2.0, .max = 3.0, .cells = 7, .ratio = 4.0};
   box.axes[1].nodes = {0.0, 0.1, 0.5, 0.55, 1.0};
-  const CellVolumes exact = volumes_of(box_mesh(box)), from_nodes = volumes_of(box);
+  const step::CellVolumes exact = step::volumes_of(mesh::box_mesh(box)), from_nodes = step::volumes_of(box);
   ASSERT_EQ(from_nodes.cells, exact.cells);
   const double all = exact.below(exact.cells);
   for (Index c = 0; c <= exact.cells; ++c) ASSERT_NEAR(from_nodes.below(c), exact.below(c), 1e-13 * all) << c;
@@ -43,14 +44,14 @@ TEST(Seeding, ABoxsVolumesWithoutItsMesh) {
 TEST(Seeding, UniformInTheCellsOutsideTheWallsWithAMaxwellian) {
   // mass = k_B: the velocity variance per component is T.
   const TrackerScene t = tracker_with("{total: 20000, temperature: 4, drift: [1, 0, -2], mass: 1.380649e-23, seed: 5}");
-  const Swarm swarm = seeded(t);
+  const tracking::Swarm swarm = seeded(t);
   ASSERT_EQ(swarm.size(), 20000u);  // exactly: the draws inside the ball are made up for
   ASSERT_EQ(swarm.objects(), 1);
   Vec3 mean = Vec3::Zero(), square = Vec3::Zero();
   int octant0 = 0;
   for (std::size_t i = 0; i < swarm.size(); ++i) {
-    const Particle p = swarm.particle(i);
-    EXPECT_TRUE(contains(*t.mesh, p.cell, p.x));
+    const tracking::Particle p = swarm.particle(i);
+    EXPECT_TRUE(mesh::contains(*t.mesh, p.cell, p.x));
     EXPECT_GT((p.x - Vec3(0.5, 0.5, 0.5)).norm(), 0.4);
     mean += p.v / 20000.0;
     square += p.v.cwiseProduct(p.v) / 20000.0;
@@ -67,7 +68,7 @@ TEST(Seeding, TotalFollowsTheFreeVolumeOfUnequalCells) {
   // its share of the free volume (estimated from a fine lattice of points).
   const TrackerScene t =
       tracker_with("{total: 30000, temperature: 1, mass: 1.380649e-23, seed: 3}", "{type: box, cells: [5, 3, 2]}");
-  const Swarm swarm = seeded(t);
+  const tracking::Swarm swarm = seeded(t);
   ASSERT_EQ(swarm.size(), 30000u);
   std::vector<double> count(30, 0.0), free(30, 0.0);
   for (std::size_t i = 0; i < swarm.size(); ++i) count[static_cast<std::size_t>(swarm.cell(i))] += 1;
@@ -92,12 +93,12 @@ TEST(Seeding, TotalFollowsTheFreeVolumeOfUnequalCells) {
 TEST(Seeding, PerCellDropsDrawsInsideWallsAndRepeatsForItsSeed) {
   // 8 cells, each a corner of the ball: every cell keeps its free part's share of 2000 draws.
   const TrackerScene t = tracker_with("{per_cell: 2000, temperature: 1, mass: 1.380649e-23, seed: 9}");
-  const Swarm swarm = seeded(t);
+  const tracking::Swarm swarm = seeded(t);
   const double free_share = 1 - 4.0 / 3 * 3.141592653589793 * 0.064;  // of the unit box
   EXPECT_NEAR(static_cast<double>(swarm.size()), 16000 * free_share, 4 * std::sqrt(16000 * free_share));
   // A cell's particles depend on the seed and the cell alone: another seed moves every one.
   TrackerScene other = tracker_with("{per_cell: 2000, temperature: 1, mass: 1.380649e-23, seed: 10}");
-  const Swarm again = seeded(t), moved = seeded(other);
+  const tracking::Swarm again = seeded(t), moved = seeded(other);
   ASSERT_EQ(again.size(), swarm.size());
   for (std::size_t i = 0; i < swarm.size(); ++i) EXPECT_EQ(swarm.particle(i).x, again.particle(i).x);
   EXPECT_NE(moved.particle(0).x, swarm.particle(0).x);
@@ -109,11 +110,11 @@ TEST(Seeding, CountedWithoutMakingThemAsSeeded) {
   for (const char* mesh : {"{type: box, cells: [10, 10, 10]}", "{type: box, cells: [5, 5, 5], tetrahedra: true}"}) {
     const TrackerScene t = tracker_with("{per_cell: 3, temperature: 1, mass: 1.380649e-23, seed: 4}", mesh);
     const std::size_t made = seeded(t).size();
-    EXPECT_EQ(seeded_count(*t.mesh, t.obstacles, t.particles), made) << mesh;
+    EXPECT_EQ(step::seeded_count(*t.mesh, t.obstacles, t.particles), made) << mesh;
     EXPECT_LT(made, 3u * static_cast<std::size_t>(t.mesh->cell_count()) * 3 / 4) << mesh;  // the ball is 27 %
   }
   const TrackerScene total = tracker_with("{total: 777, temperature: 1, mass: 1.380649e-23}");
-  EXPECT_EQ(seeded_count(*total.mesh, total.obstacles, total.particles), 777u);
+  EXPECT_EQ(step::seeded_count(*total.mesh, total.obstacles, total.particles), 777u);
   EXPECT_EQ(seeded(total).size(), 777u);
 }
 
@@ -131,4 +132,4 @@ TEST(Seeding, AlmostNoFreeSpaceIsAnError) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

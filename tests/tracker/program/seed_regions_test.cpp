@@ -15,7 +15,7 @@
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/step/seed_particles.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // mass = k_B: a gas at T has velocity variance T per component.
@@ -31,8 +31,9 @@ TrackerScene tracker_with(const std::string& regions, const std::string& mesh = 
       "scene.yaml"));
 }
 
-Swarm seeded(const TrackerScene& t) {
-  return seed_particles(*t.mesh, t.obstacles, t.particles, Decomposition(*t.mesh, {}), volumes_of(*t.mesh));
+tracking::Swarm seeded(const TrackerScene& t) {
+  return step::seed_particles(*t.mesh, t.obstacles, t.particles, parallel::Decomposition(*t.mesh, {}),
+                              step::volumes_of(*t.mesh));
 }
 
 // The particles `where` picks, their count and velocity moments.
@@ -41,11 +42,11 @@ struct Moments {
   Vec3 mean = Vec3::Zero(), variance = Vec3::Zero();
 };
 
-Moments moments(const Swarm& swarm, const std::function<bool(const Vec3&)>& where) {
+Moments moments(const tracking::Swarm& swarm, const std::function<bool(const Vec3&)>& where) {
   Moments m;
   Vec3 square = Vec3::Zero();
   for (std::size_t i = 0; i < swarm.size(); ++i) {
-    const Particle p = swarm.particle(i);
+    const tracking::Particle p = swarm.particle(i);
     if (!where(p.x)) continue;
     m.count += 1;
     m.mean += p.v;
@@ -78,7 +79,7 @@ TEST(SeedRegions, TwoBoxesAtTheirOwnStates) {
       "             number_density: 40000, temperature: 4, velocity: [1, 0, 0]}\n"
       "          - {region: {box: {centre: [0.725, 0.5, 0.5], half_extents: [0.275, 0.5, 0.5]}},\n"
       "             number_density: 10000, temperature: 1, velocity: [0, 0, -2]}\n");
-  const Swarm swarm = seeded(t);
+  const tracking::Swarm swarm = seeded(t);
   // weight 2: n V / 2 each.
   expect_gas(moments(swarm, [](const Vec3& x) { return x.x() < 0.45; }), 20000 * 0.45, {1, 0, 0}, 4);
   expect_gas(moments(swarm, [](const Vec3& x) { return x.x() >= 0.45; }), 5000 * 0.55, {0, 0, -2}, 1);
@@ -86,8 +87,9 @@ TEST(SeedRegions, TwoBoxesAtTheirOwnStates) {
   const double sliver = 20000 * (0.45 - 3.0 / 7);
   EXPECT_NEAR(moments(swarm, [](const Vec3& x) { return x.x() > 3.0 / 7 && x.x() < 0.45; }).count, sliver,
               4 * std::sqrt(sliver));
-  for (std::size_t i = 0; i < swarm.size(); ++i) ASSERT_TRUE(contains(*t.mesh, swarm.cell(i), swarm.particle(i).x));
-  EXPECT_EQ(seeded_count(*t.mesh, t.obstacles, t.particles), swarm.size());  // counted as drawn
+  for (std::size_t i = 0; i < swarm.size(); ++i)
+    ASSERT_TRUE(mesh::contains(*t.mesh, swarm.cell(i), swarm.particle(i).x));
+  EXPECT_EQ(step::seeded_count(*t.mesh, t.obstacles, t.particles), swarm.size());  // counted as drawn
 }
 
 // A CSG region: a box minus a ball, on tetrahedra, a wall ball in its corner; only its free
@@ -99,7 +101,7 @@ TEST(SeedRegions, ABoxMinusABallOutsideTheWalls) {
       "            number_density: 30000\n            temperature: 2\n            velocity: [0, 3, 0]\n",
       "{type: box, cells: [4, 4, 4], tetrahedra: true}",
       "      obstacles:\n        - {name: wall, shape: {ball: {centre: [0.1, 0.1, 0.1], radius: 0.2}}}\n");
-  const Swarm swarm = seeded(t);
+  const tracking::Swarm swarm = seeded(t);
   const Vec3 centre(0.5, 0.5, 0.5), corner(0.1, 0.1, 0.1);
   const auto in_region = [&](const Vec3& x) {
     return (x - centre).cwiseAbs().maxCoeff() < 0.4 && (x - centre).norm() > 0.3 && (x - corner).norm() > 0.2;
@@ -120,7 +122,7 @@ TEST(SeedRegions, OverlappingRegionsAddUp) {
       " temperature: 1}\n"
       "          - {region: {ball: {centre: [0.5, 0.5, 0.5], radius: 0.35}}, number_density: 60000,"
       " temperature: 5}\n");
-  const Swarm swarm = seeded(t);
+  const tracking::Swarm swarm = seeded(t);
   const double ball = 4.0 / 3 * std::numbers::pi * std::pow(0.35, 3);
   const auto inside = [](const Vec3& x) { return (x - Vec3(0.5, 0.5, 0.5)).norm() < 0.35; };
   expect_gas(moments(swarm, [&](const Vec3& x) { return !inside(x); }), 10000 * (1 - ball), Vec3::Zero(), 1);
@@ -133,8 +135,8 @@ TEST(SeedRegions, OverlappingRegionsAddUp) {
 TEST(SeedRegions, ARegionAddedLeavesTheOthersParticles) {
   const std::string first =
       "          - {region: {ball: {centre: [0.3, 0.5, 0.5], radius: 0.25}}, number_density: 3000, temperature: 1}\n";
-  const Swarm alone = seeded(tracker_with(first));
-  const Swarm both = seeded(
+  const tracking::Swarm alone = seeded(tracker_with(first));
+  const tracking::Swarm both = seeded(
       tracker_with(first + "          - {region: {ball: {centre: [0.7, 0.5, 0.5], radius: 0.25}}, number_density: 3000,"
                            " temperature: 1}\n"));
   std::size_t k = 0;
@@ -155,7 +157,7 @@ TEST(SeedRegions, CountedWithoutKeepingThemAsSeeded) {
       "{type: box, cells: [10, 10, 10]}",
       "      obstacles:\n        - {name: wall, shape: {ball: {centre: [0.6, 0.6, 0.6], radius: 0.3}}}\n");
   const std::size_t made = seeded(t).size();
-  EXPECT_EQ(seeded_count(*t.mesh, t.obstacles, t.particles), made);
+  EXPECT_EQ(step::seeded_count(*t.mesh, t.obstacles, t.particles), made);
   const double free = 1 - 4.0 / 3 * std::numbers::pi * 0.027;  // of the box's gas
   EXPECT_LT(static_cast<double>(made), 1500 * free + 2500 * 4.0 / 3 * std::numbers::pi * std::pow(0.45, 3));
 }
@@ -163,7 +165,7 @@ TEST(SeedRegions, CountedWithoutKeepingThemAsSeeded) {
 // per_cell and total draw the same particles as before regions were added: sums of positions
 // and velocities, to 1e-12, fixed when the single gas was the only seeding.
 TEST(SeedRegions, TheSingleGasDrawsWhatItDrew) {
-  const auto sums = [](const Swarm& s) {
+  const auto sums = [](const tracking::Swarm& s) {
     double x = 0, v = 0;
     for (std::size_t i = 0; i < s.size(); ++i) {
       x += s.particle(i).x.sum() * static_cast<double>(i % 7 + 1);
@@ -181,8 +183,9 @@ TEST(SeedRegions, TheSingleGasDrawsWhatItDrew) {
             particles + "\n",
         "scene.yaml"));
   };
-  const Swarm per_cell = seeded(scene("{per_cell: 20, temperature: 300, drift: [5, 0, 0], mass: 6.63e-26, seed: 7}"));
-  const Swarm total = seeded(scene("{total: 999, temperature: 30, mass: 6.63e-26, seed: 8}"));
+  const tracking::Swarm per_cell =
+      seeded(scene("{per_cell: 20, temperature: 300, drift: [5, 0, 0], mass: 6.63e-26, seed: 7}"));
+  const tracking::Swarm total = seeded(scene("{total: 999, temperature: 30, mass: 6.63e-26, seed: 8}"));
   const auto [px, pv] = sums(per_cell);
   const auto [tx, tv] = sums(total);
   EXPECT_EQ(per_cell.size(), 1268u);
@@ -194,4 +197,4 @@ TEST(SeedRegions, TheSingleGasDrawsWhatItDrew) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -26,7 +26,7 @@
 #include "tracker/dsmc/species.hpp"
 #include "tracker/program/standalone.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // Unit box, 100 steps; mass = k_B so that the thermal speed is sqrt(T) m/s.
@@ -51,9 +51,9 @@ struct RunFileView {
 };
 
 double RunFileView::column(const char* name) const {
-  const auto at = std::find_if(kMoveCounters.begin(), kMoveCounters.end(),
-                               [&](const MoveCounter& c) { return std::string_view(c.name) == name; });
-  return moves[static_cast<std::size_t>(at - kMoveCounters.begin())];
+  const auto at = std::find_if(tracking::kMoveCounters.begin(), tracking::kMoveCounters.end(),
+                               [&](const tracking::MoveCounter& c) { return std::string_view(c.name) == name; });
+  return moves[static_cast<std::size_t>(at - tracking::kMoveCounters.begin())];
 }
 RunFileView read_run(const std::filesystem::path& path, bool objects) {
   output::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + path.string());
@@ -61,7 +61,7 @@ RunFileView read_run(const std::filesystem::path& path, bool objects) {
   RunFileView run;
   run.particles = series("/tracker/particles");
   const std::vector<double> moves = series("/tracker/moves");
-  run.moves.assign(moves.end() - static_cast<std::ptrdiff_t>(kMoveCounters.size()), moves.end());
+  run.moves.assign(moves.end() - static_cast<std::ptrdiff_t>(tracking::kMoveCounters.size()), moves.end());
   output::Handle fields = output::open_group(file.get(), "/fields/tracker");
   for (const std::string& step : output::link_names(fields.get())) {
     if (step == "grid") continue;
@@ -189,13 +189,13 @@ TEST(TrackerStandalone, WritesTheLastStepWithoutFieldsEveryAndNoObstacles) {
   EXPECT_EQ(s.remaining, 64u);
   EXPECT_TRUE(std::filesystem::exists(out("bare.xmf")));
   // The step's stages timed: moves and sorts took time, collisions none (there are none).
-  EXPECT_GT(s.stages[Stage::move], 0.0);
-  EXPECT_GT(s.stages[Stage::sort], 0.0);
-  EXPECT_EQ(s.stages[Stage::collide], 0.0);
+  EXPECT_GT(s.stages[step::Stage::move], 0.0);
+  EXPECT_GT(s.stages[step::Stage::sort], 0.0);
+  EXPECT_EQ(s.stages[step::Stage::collide], 0.0);
   double stages = 0;
-  for (std::size_t k = 0; k < kStageNames.size(); ++k) stages += s.stages[static_cast<Stage>(k)];
+  for (std::size_t k = 0; k < step::kStageNames.size(); ++k) stages += s.stages[static_cast<step::Stage>(k)];
   EXPECT_LE(stages + s.setup_seconds, s.wall_seconds);
-  const std::string summary = participant::stage_summary(kStageNames, s.stages.all());
+  const std::string summary = participant::stage_summary(step::kStageNames, s.stages.all());
   EXPECT_EQ(summary.find("collide"), std::string::npos) << summary;
   EXPECT_NE(summary.find("move "), std::string::npos) << summary;
 }
@@ -210,11 +210,11 @@ TEST(TrackerStandalone, AGradedBoxsVolumesAreShapedAsItsFields) {
   run_tracker(scene, out("graded.h5"));
   output::Handle file(H5Fopen(out("graded.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open graded.h5");
   EXPECT_EQ(output::array_dims(file.get(), "/fields/tracker/grid/volume"), (std::vector<hsize_t>{4, 2, 3}));
-  BoxSpec spec;
+  mesh::BoxSpec spec;
   for (int a = 0; a < 3; ++a)
     spec.axes[a] = {.min = 0, .max = 1, .cells = std::array{3, 2, 4}[a], .ratio = std::array{2.0, 3.0, 0.5}[a]};
   const std::vector<double> volume = output::read_array(file.get(), "/fields/tracker/grid/volume");
-  EXPECT_EQ(volume, cell_volumes(spec));
+  EXPECT_EQ(volume, step::cell_volumes(spec));
   EXPECT_NEAR(sum(volume), 1.0, 1e-14);
 }
 
@@ -357,10 +357,10 @@ TEST(TrackerConfigs, CouettePlatesFeelEqualAndOppositeShearBetweenTheLimits) {
 TEST(PolyhedraXdmf, MixedTopologyReadsBackAsTheCells) {
   // A Voronoi mesh: cells of many faces, faces of many vertices.
   std::vector<Vec3> sites;
-  Random random(3);
+  tracking::Random random(3);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int i = 0; i < 40; ++i) sites.emplace_back(unit(random), unit(random), unit(random));
-  const Mesh mesh = voronoi_mesh(sites, {});
+  const mesh::Mesh mesh = mesh::voronoi_mesh(sites, {});
   const std::vector<std::int64_t> topology = mixed_topology(mesh);
   std::size_t at = 0;
   for (Index c = 0; c < mesh.cell_count(); ++c) {
@@ -390,7 +390,7 @@ TEST(PolyhedraXdmf, MixedTopologyReadsBackAsTheCells) {
 // What the tracker hands the run file (and the coupler): its cells as a grid that the
 // writer's checks accept, with each sample's fields in cell order.
 TEST(TrackerFields, TheSamplesPerCellInCellOrder) {
-  std::vector<CellMoments> moments(12);
+  std::vector<tracking::CellMoments> moments(12);
   std::vector<double> count(12);
   for (std::size_t c = 0; c < 12; ++c) {
     count[c] = double(c);
@@ -416,11 +416,11 @@ TEST(TrackerFields, TheSamplesPerCellInCellOrder) {
 
 // The patch areas and cell volumes the mesh's own geometry gives (faces' areas, cells'
 // volumes), to compare with what a box's nodes give without the mesh.
-void expect_geometry_of(const OutputGrid& grid, const Mesh& mesh) {
+void expect_geometry_of(const OutputGrid& grid, const mesh::Mesh& mesh) {
   const OutputGrid from_mesh = output_grid(mesh);
   // A box of hexahedra holds no volume per cell: the writer takes them from the box.
   EXPECT_EQ(grid.volume.empty(), grid.box.has_value());
-  const std::vector<double> volume = grid.box ? cell_volumes(*grid.box) : grid.volume;
+  const std::vector<double> volume = grid.box ? step::cell_volumes(*grid.box) : grid.volume;
   ASSERT_EQ(volume.size(), from_mesh.volume.size());
   for (std::size_t c = 0; c < volume.size(); ++c)
     EXPECT_NEAR(volume[c], from_mesh.volume[c], 1e-14 * from_mesh.volume[c]) << "cell " << c;
@@ -434,21 +434,21 @@ void expect_geometry_of(const OutputGrid& grid, const Mesh& mesh) {
 // (graded axes too), a box of tetrahedra as the polyhedra box_mesh would give, both without
 // building the mesh.
 TEST(OutputGrid, ABoxIsShownWithoutItsMesh) {
-  BoxSpec spec;
-  spec.axes = {AxisSpacing{.min = -1, .max = 2, .cells = 3, .ratio = 2.5}, AxisSpacing{.cells = 2},
-               AxisSpacing{.nodes = {0.0, 0.1, 0.5}}};
+  mesh::BoxSpec spec;
+  spec.axes = {mesh::AxisSpacing{.min = -1, .max = 2, .cells = 3, .ratio = 2.5}, mesh::AxisSpacing{.cells = 2},
+               mesh::AxisSpacing{.nodes = {0.0, 0.1, 0.5}}};
   spec.periodic = {false, true, false};
-  const Mesh hexahedra = box_mesh(spec);
+  const mesh::Mesh hexahedra = mesh::box_mesh(spec);
   const OutputGrid rectilinear = output_grid(spec);
   const auto& nodes = std::get<field::RectilinearGrid>(rectilinear.grid);
   EXPECT_EQ(field::grid_problem(rectilinear.grid), "");
-  EXPECT_EQ(nodes.nodes[0], axis_nodes(spec.axes[0]));
+  EXPECT_EQ(nodes.nodes[0], mesh::axis_nodes(spec.axes[0]));
   EXPECT_EQ(nodes.nodes[2], spec.axes[2].nodes);
   expect_geometry_of(rectilinear, hexahedra);
   EXPECT_EQ(rectilinear.patch_area[2], 0.0);  // the periodic y sides have no walls
 
   spec.tetrahedra = true;
-  const Mesh tetrahedra = box_mesh(spec);
+  const mesh::Mesh tetrahedra = mesh::box_mesh(spec);
   const OutputGrid polyhedra = output_grid(spec);
   const auto& cells = std::get<field::PolyhedralGrid>(polyhedra.grid);
   EXPECT_EQ(field::grid_problem(polyhedra.grid), "");
@@ -461,4 +461,4 @@ TEST(OutputGrid, ABoxIsShownWithoutItsMesh) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

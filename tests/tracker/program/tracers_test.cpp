@@ -13,7 +13,7 @@
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/step/simulation.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 // Tracers live in the drum between the post and r = 0.44, inside the grid's outermost
@@ -74,10 +74,10 @@ std::filesystem::path scratch(const char* name) {
   return dir;
 }
 
-std::vector<std::array<double, 3>> positions(const Swarm& swarm) {
+std::vector<std::array<double, 3>> positions(const tracking::Swarm& swarm) {
   std::vector<std::array<double, 3>> out;
   for (std::size_t i = 0; i < swarm.size(); ++i) {
-    const Particle p = swarm.particle(i);
+    const tracking::Particle p = swarm.particle(i);
     out.push_back({p.x.x(), p.x.y(), p.x.z()});
   }
   std::sort(out.begin(), out.end());
@@ -87,7 +87,7 @@ std::vector<std::array<double, 3>> positions(const Swarm& swarm) {
 TEST(TrackerTracers, SolidBodyRotationFromAFluidRunFileReturnsEveryTracer) {
   const auto dir = scratch("tracers_rotation");
   rotation_run_file(dir);
-  Simulation gas(read_tracker(tracer_scene(dir, "{velocity: {file: fluid.h5}, substeps: 2}")));
+  step::Simulation gas(read_tracker(tracer_scene(dir, "{velocity: {file: fluid.h5}, substeps: 2}")));
   const auto start = positions(gas.swarm());
   ASSERT_EQ(start.size(), 300u);
   for (int k = 0; k < 4; ++k) gas.advance(0.25 * k, 0.25 * (k + 1));
@@ -120,7 +120,7 @@ TEST(TrackerTracers, BadSectionsAreRefusedWithTheKeyNamed) {
 
 TEST(TrackerTracers, WithoutAVelocityFieldTheStepSaysWhatIsMissing) {
   const auto dir = scratch("tracers_no_field");
-  Simulation gas(read_tracker(tracer_scene(dir, "{response_time: 0.1}")));
+  step::Simulation gas(read_tracker(tracer_scene(dir, "{response_time: 0.1}")));
   try {
     gas.step(0.01);
     FAIL() << "stepped without a velocity field";
@@ -130,4 +130,4 @@ TEST(TrackerTracers, WithoutAVelocityFieldTheStepSaysWhatIsMissing) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

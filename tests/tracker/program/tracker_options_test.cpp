@@ -11,7 +11,7 @@
 
 #include "tests/tracker/program/scene_error.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 constexpr const char* kParticles = "      particles: {per_cell: 2, temperature: 1, mass: 1}\n";
@@ -42,12 +42,12 @@ TEST(TrackerOptions, ReadsWallsObstaclesAndParticles) {
                  "        - {name: zone, shape: {box: {centre: [0.2, 0.2, 0.2], half_extents: [0.1, 0.1, 0.1]}}, "
                  "permeable: true}\n"));
   ASSERT_EQ(t.domain->boundaries.patches.size(), 6u);
-  EXPECT_EQ(t.domain->boundaries.patches[0].kind, BoundaryKind::maxwell);
+  EXPECT_EQ(t.domain->boundaries.patches[0].kind, tracking::BoundaryKind::maxwell);
   EXPECT_EQ(t.domain->boundaries.patches[0].accommodation, 0.5);
-  EXPECT_EQ(t.domain->boundaries.patches[1].kind, BoundaryKind::open);
+  EXPECT_EQ(t.domain->boundaries.patches[1].kind, tracking::BoundaryKind::open);
   EXPECT_EQ(t.domain->boundaries.mass, 1.0);
   ASSERT_EQ(t.obstacles.count(), 2);
-  EXPECT_EQ(t.obstacles.object(0).wall.kind, BoundaryKind::diffuse);
+  EXPECT_EQ(t.obstacles.object(0).wall.kind, tracking::BoundaryKind::diffuse);
   EXPECT_EQ(t.obstacles.object(0).wall.temperature, 10.0);
   EXPECT_TRUE(t.obstacles.object(1).permeable);
   EXPECT_EQ(t.particles.per_cell, 2);
@@ -236,4 +236,4 @@ TEST(TrackerOptions, ParticleOutputMistakesNameTheKey) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -14,7 +14,7 @@
 #include "tracker/program/scene_tracker.hpp"
 #include "tracker/program/tracker_work.hpp"
 
-namespace cosim::tracker {
+namespace cosim::tracker::program {
 namespace {
 
 namespace fs = std::filesystem;
@@ -48,7 +48,7 @@ participant::WorkReport work_of(const std::string& text) {
 // What the gas seeds when it starts.
 std::size_t gas_seeded(const std::string& text) {
   TrackerScene setup = read_tracker(scene_of(text));
-  return Simulation(std::move(static_cast<GasSetup&>(setup))).seeded();
+  return step::Simulation(std::move(static_cast<step::GasSetup&>(setup))).seeded();
 }
 
 // The float64 values of the participant's frame at the start, in bytes.
@@ -190,4 +190,4 @@ TEST(TrackerWork, TheProgramWritesTheReportWithCheck) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::program

@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <numbers>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
 // Units where c_mp = 1: mass 2 k_B, T = 1 K; unit radius; the box just holds the ball.
@@ -28,9 +28,9 @@ struct Exchange {
 // A unit ball, diffuse at `wall_temperature`, in an open box fed on every side by a
 // Maxwellian stream at 1 K and `velocity`: 60 steps to fill the box, then `measured`.
 Exchange ball_in_stream(const Vec3& velocity, double wall_temperature, int measured, std::uint64_t seed) {
-  BoxSpec spec;
-  for (AxisSpacing& axis : spec.axes) axis = {.min = -1.1, .max = 1.1, .cells = 8};
-  const Mesh mesh = box_mesh(spec);
+  mesh::BoxSpec spec;
+  for (mesh::AxisSpacing& axis : spec.axes) axis = {.min = -1.1, .max = 1.1, .cells = 8};
+  const mesh::Mesh mesh = mesh::box_mesh(spec);
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), kMass});
   const Obstacles ball(mesh, {{"sphere",
                                csg::Tree(csg::ball(Vec3::Zero(), 1.0)),
@@ -85,4 +85,4 @@ TEST(FreeMolecularHeatFlow, BallAtAnotherTemperatureThanTheGasAtRest) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

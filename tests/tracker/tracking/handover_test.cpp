@@ -18,13 +18,13 @@
 #include <tuple>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
 constexpr int kRanks = 3;
 
 // Owners that interleave (slabs in x and y), so moves cross between parts often.
-std::vector<int> interleaved_owners(const Mesh& mesh) {
+std::vector<int> interleaved_owners(const mesh::Mesh& mesh) {
   std::vector<int> owner;
   for (const Vec3& c : mesh.centroid)
     owner.push_back((static_cast<int>(4 * c.x()) + static_cast<int>(3 * c.y())) % kRanks);
@@ -35,23 +35,23 @@ std::function<int(Index)> table(const std::vector<int>& owner) {
   return [&owner](Index c) { return owner[static_cast<std::size_t>(c)]; };
 }
 
-bool same_face(const Face& a, const Face& b) {
+bool same_face(const mesh::Face& a, const mesh::Face& b) {
   return a.normal == b.normal && a.point == b.point && a.shift == b.shift;
 }
 
 TEST(Part, HasItsCellsAndTwoLayersOfNeighboursWithTheWholesFaces) {
-  for (const BoxSpec& spec : {cube(5), cube(4, true)}) {
-    BoxSpec periodic = spec;
+  for (const mesh::BoxSpec& spec : {mesh::cube(5), mesh::cube(4, true)}) {
+    mesh::BoxSpec periodic = spec;
     periodic.periodic = {true, false, false};
-    for (const BoxSpec& s : {spec, periodic}) {
-      const Mesh whole = box_mesh(s);
+    for (const mesh::BoxSpec& s : {spec, periodic}) {
+      const mesh::Mesh whole = mesh::box_mesh(s);
       const std::vector<int> owner = interleaved_owners(whole);
       for (int rank = 0; rank < kRanks; ++rank) {
-        const Mesh part = extract_part(whole, table(owner), rank);
-        const PartCells cells(part);
+        const mesh::Mesh part = mesh::extract_part(whole, table(owner), rank);
+        const mesh::PartCells cells(part);
         const auto owned = static_cast<Index>(std::count(owner.begin(), owner.end(), rank));
         ASSERT_EQ(part.own_cells(), owned);
-        EXPECT_EQ(part.whole_diagonal, whole_diagonal(whole));
+        EXPECT_EQ(part.whole_diagonal, mesh::whole_diagonal(whole));
         std::vector<int> layer(static_cast<std::size_t>(part.cell_count()), 2);
         for (Index c = 0; c < part.cell_count(); ++c) {
           const Index g = part.global_cell(c);
@@ -62,14 +62,14 @@ TEST(Part, HasItsCellsAndTwoLayersOfNeighboursWithTheWholesFaces) {
           ASSERT_EQ(part.cell_faces[c + 1] - part.cell_faces[c], whole.cell_faces[g + 1] - whole.cell_faces[g]);
           for (Index k = 0; k < part.cell_faces[c + 1] - part.cell_faces[c]; ++k) {
             const Index f = part.cell_faces[c] + k, wf = whole.cell_faces[g] + k;
-            const Face &a = part.faces[f], &b = whole.faces[wf];
+            const mesh::Face &a = part.faces[f], &b = whole.faces[wf];
             EXPECT_TRUE(same_face(a, b));
             ASSERT_EQ(part.vertex_count(f), whole.vertex_count(wf));
             for (Index v = 0; v < part.vertex_count(f); ++v)
               EXPECT_EQ(part.face_vertex(f, v), whole.face_vertex(wf, v));
             if (b.neighbour < 0) {
               EXPECT_EQ(a.neighbour, b.neighbour);
-            } else if (a.neighbour == kBeyondPart) {
+            } else if (a.neighbour == mesh::kBeyondPart) {
               EXPECT_EQ(cells.local(b.neighbour), -1);
             } else {
               EXPECT_EQ(part.global_cell(a.neighbour), b.neighbour);
@@ -85,7 +85,7 @@ TEST(Part, HasItsCellsAndTwoLayersOfNeighboursWithTheWholesFaces) {
             if (layer[c] == k)
               for (Index f = part.cell_faces[c]; f < part.cell_faces[c + 1]; ++f) {
                 const Index n = part.faces[f].neighbour;
-                ASSERT_NE(n, kBeyondPart) << "a neighbour of layer " << k << " missing";
+                ASSERT_NE(n, mesh::kBeyondPart) << "a neighbour of layer " << k << " missing";
                 if (n >= 0) layer[n] = std::min(layer[n], k + 1);
               }
         // Layer by layer, each in the whole's order.
@@ -104,23 +104,23 @@ TEST(Part, HasItsCellsAndTwoLayersOfNeighboursWithTheWholesFaces) {
 // A box's part built from a box around the brick is the part of the whole box, to the bit:
 // graded axes, tetrahedra, periodic axes that wrap and that do not.
 TEST(Part, OfABoxIsBuiltWithoutTheWhole) {
-  BoxSpec spec = cube(7, true);
+  mesh::BoxSpec spec = mesh::cube(7, true);
   spec.axes[0] = {.min = -1.0, .max = 2.0, .cells = 11, .ratio = 3.0};
   spec.axes[2].cells = 9;
   for (const std::array<bool, 3> periodic : {std::array{false, false, false}, std::array{true, false, true}}) {
     spec.periodic = periodic;
-    const Mesh whole = box_mesh(spec);
+    const mesh::Mesh whole = mesh::box_mesh(spec);
     // Bricks: a corner, the middle, a slab through the box.
     const std::array<std::array<std::array<int, 3>, 2>, 3> bricks{
         {{{{0, 0, 0}, {4, 3, 2}}}, {{{3, 2, 3}, {8, 5, 6}}}, {{{5, 0, 0}, {6, 7, 9}}}}};
     for (const auto& [lo, hi] : bricks) {
       const auto owner = [&](Index c) {
-        const std::array<int, 3> at = box_cell(c, {11, 7, 9}, 6).hex;
+        const std::array<int, 3> at = mesh::box_cell(c, {11, 7, 9}, 6).hex;
         for (int a = 0; a < 3; ++a)
           if (at[a] < lo[a] || at[a] >= hi[a]) return 1;
         return 0;
       };
-      const Mesh a = box_part(spec, lo, hi, owner, 0), b = extract_part(whole, owner, 0);
+      const mesh::Mesh a = mesh::box_part(spec, lo, hi, owner, 0), b = mesh::extract_part(whole, owner, 0);
       ASSERT_EQ(a.global, b.global);
       EXPECT_EQ(a.ghosts, b.ghosts);
       EXPECT_EQ(a.whole_diagonal, b.whole_diagonal);
@@ -140,17 +140,17 @@ TEST(Part, OfABoxIsBuiltWithoutTheWhole) {
       }
     }
   }
-  EXPECT_THROW(box_part(
+  EXPECT_THROW(mesh::box_part(
                    spec, {0, 0, 0}, {0, 1, 1}, [](Index) { return 0; }, 0),
                std::invalid_argument);
 }
 
 // One "rank": its part, walls and obstacles registered on it, its particles.
 struct Rank {
-  std::unique_ptr<Mesh> mesh;
+  std::unique_ptr<mesh::Mesh> mesh;
   std::unique_ptr<Domain> domain;
   std::unique_ptr<Obstacles> obstacles;
-  std::unique_ptr<PartCells> cells;
+  std::unique_ptr<mesh::PartCells> cells;
   Swarm swarm;
   Handover away;
   std::vector<ObstacleTally> tallies;
@@ -163,7 +163,7 @@ Key key(const Particle& p, Index global, std::span<const csg::State> states) {
 }
 
 TEST(Handover, MovesThroughThreePartsEndWhereTheWholeMeshPutsThem) {
-  const Mesh whole = box_mesh(cube(6, true));
+  const mesh::Mesh whole = mesh::box_mesh(mesh::cube(6, true));
   const Boundaries walls{std::vector<BoundaryCondition>(6), 1.0};  // specular: no random draws
   const std::vector<Obstacle> objects{{"ball", csg::Tree(csg::ball({0.5, 0.45, 0.55}, 0.2)), false, {}},
                                       {"zone", csg::Tree(csg::ball({0.3, 0.3, 0.3}, 0.15)), true, {}}};
@@ -175,10 +175,10 @@ TEST(Handover, MovesThroughThreePartsEndWhereTheWholeMeshPutsThem) {
   for (int r = 0; r < kRanks; ++r) {
     ranks.emplace_back(2);
     Rank& rank = ranks.back();
-    rank.mesh = std::make_unique<Mesh>(extract_part(whole, table(owner), r));
+    rank.mesh = std::make_unique<mesh::Mesh>(mesh::extract_part(whole, table(owner), r));
     rank.domain = std::make_unique<Domain>(*rank.mesh, walls);
     rank.obstacles = std::make_unique<Obstacles>(*rank.mesh, objects);
-    rank.cells = std::make_unique<PartCells>(*rank.mesh);
+    rank.cells = std::make_unique<mesh::PartCells>(*rank.mesh);
     // A first-layer ghost is registered as its owner registers it: states mean the same.
     for (Index c = 0; c < rank.mesh->cell_count(); ++c)
       for (int o = 0; o < 2; ++o)
@@ -281,9 +281,9 @@ TEST(Handover, MovesThroughThreePartsEndWhereTheWholeMeshPutsThem) {
 }
 
 TEST(Handover, APartWithoutAHandoverIsRefused) {
-  const Mesh whole = box_mesh(cube(3));
+  const mesh::Mesh whole = mesh::box_mesh(mesh::cube(3));
   const std::vector<int> owner = interleaved_owners(whole);
-  const Mesh part = extract_part(whole, table(owner), 0);
+  const mesh::Mesh part = mesh::extract_part(whole, table(owner), 0);
   const Domain domain(part, {std::vector<BoundaryCondition>(6), 1.0});
   Swarm swarm(0);
   MoveTally moves;
@@ -294,4 +294,4 @@ TEST(Handover, APartWithoutAHandoverIsRefused) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

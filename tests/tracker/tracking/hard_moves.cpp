@@ -4,14 +4,14 @@
 
 #include <cmath>
 
-namespace cosim::tracker::testing {
+namespace cosim::tracker::tracking::testing {
 
 Vec3 isotropic(Random& random) {
   std::normal_distribution<double> gauss;
   return Vec3(gauss(random), gauss(random), gauss(random)).normalized();
 }
 
-Flight hard_move(const Mesh& mesh, Random& random, Index cell, Index face) {
+Flight hard_move(const mesh::Mesh& mesh, Random& random, Index cell, Index face) {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   const auto pick = [&](Index lo, Index end) { return std::uniform_int_distribution<Index>(lo, end - 1)(random); };
   const Index n = mesh.vertex_count(face), k = pick(0, n);
@@ -26,7 +26,7 @@ Flight hard_move(const Mesh& mesh, Random& random, Index cell, Index face) {
       break;
     default: {
       const double r1 = std::sqrt(uniform(random)), r2 = uniform(random);
-      const Vec3 middle = vertex_mean(mesh, face);
+      const Vec3 middle = mesh::vertex_mean(mesh, face);
       x = middle + r1 * ((1.0 - r2) * (a - middle) + r2 * (b - middle));
     }
   }
@@ -48,7 +48,7 @@ Flight hard_move(const Mesh& mesh, Random& random, Index cell, Index face) {
   return {{x, (target - x).normalized(), cell}, 3.0 * width * uniform(random)};
 }
 
-Flight hard_move(const Mesh& mesh, Random& random) {
+Flight hard_move(const mesh::Mesh& mesh, Random& random) {
   const auto pick = [&](Index lo, Index end) { return std::uniform_int_distribution<Index>(lo, end - 1)(random); };
   const Index cell = pick(0, mesh.cell_count());
   return hard_move(mesh, random, cell, pick(mesh.cell_faces[cell], mesh.cell_faces[cell + 1]));
@@ -62,4 +62,4 @@ std::vector<Vec3> random_points(int count, std::uint64_t seed) {
   return points;
 }
 
-}  // namespace cosim::tracker::testing
+}  // namespace cosim::tracker::tracking::testing

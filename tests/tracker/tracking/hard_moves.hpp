@@ -9,18 +9,18 @@
 
 #include <vector>
 
-namespace cosim::tracker::testing {
+namespace cosim::tracker::tracking::testing {
 
 struct Flight {
   Particle particle;
   double dt;
 };
 
-Flight hard_move(const Mesh& mesh, Random& random);
+Flight hard_move(const mesh::Mesh& mesh, Random& random);
 // The same from a given face of a given cell.
-Flight hard_move(const Mesh& mesh, Random& random, Index cell, Index face);
+Flight hard_move(const mesh::Mesh& mesh, Random& random, Index cell, Index face);
 Vec3 isotropic(Random& random);
 // `count` uniform points in the unit cube: Voronoi sites.
 std::vector<Vec3> random_points(int count, std::uint64_t seed);
 
-}  // namespace cosim::tracker::testing
+}  // namespace cosim::tracker::tracking::testing

@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <numbers>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
 constexpr double sqrt_pi = 1.0 / std::numbers::inv_sqrtpi;
@@ -61,7 +61,7 @@ Stream unit_stream(double density, const Vec3& velocity) {
 }
 
 TEST(Inflow, CountMatchesBirdsFlux) {
-  const Mesh mesh = box_mesh(cube(3));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(3));
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), 2.0 * boltzmann});
   const double s = 0.8;
   const Inflow inflow(mesh, {0}, unit_stream(1000.0, Vec3(s, 0.3, 0.0)));  // x_min, normal +x
@@ -84,7 +84,7 @@ TEST(Inflow, CountMatchesBirdsFlux) {
 }
 
 TEST(Inflow, OpenBoxFillsToTheStreamsDensityAndTemperature) {
-  const Mesh mesh = box_mesh(cube(4));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(4));
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), 2.0 * boltzmann});
   const Inflow inflow(mesh, {0, 1, 2, 3, 4, 5}, unit_stream(4000.0, Vec3::Zero()));
   const Obstacles none;
@@ -115,7 +115,7 @@ TEST(Inflow, OpenBoxFillsToTheStreamsDensityAndTemperature) {
 // The sampled moments of the filled open box are the stream's in every cell: density n,
 // velocity 0, temperature T, pressure n k T (argon-like units here: c_mp = 1).
 TEST(Sampling, OpenBoxCellsHaveTheStreamsMoments) {
-  const Mesh mesh = box_mesh(cube(2));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(2));
   const Domain domain(mesh, {std::vector<BoundaryCondition>(6, {.kind = BoundaryKind::open}), 2.0 * boltzmann});
   const Inflow inflow(mesh, {0, 1, 2, 3, 4, 5}, unit_stream(8000.0, Vec3::Zero()));
   const Obstacles none;
@@ -148,7 +148,7 @@ TEST(Sampling, OpenBoxCellsHaveTheStreamsMoments) {
 // weight 4, mass 2 (n = 64): the pressure tensor is n m c c^T, the heat flux
 // n m <|c|^2 c> / 2 = 0 (symmetric), and with a third at rest the moments follow by hand.
 TEST(Sampling, StressAndHeatFluxFromTheSummedMoments) {
-  const Mesh mesh = box_mesh(cube(2));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(2));
   Swarm swarm(0);
   const Vec3 u(3, 0, 1), c(1, 2, 0);
   swarm.add({Vec3::Constant(0.25), u + c, 0}, {});
@@ -187,10 +187,10 @@ TEST(Tallies, MomentEnergyAndImpulseOfHits) {
 }
 
 TEST(Inflow, RefusesBadStreamsAndEmptyPatches) {
-  const Mesh mesh = box_mesh(cube(2));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(2));
   EXPECT_THROW(Inflow(mesh, {0}, unit_stream(0.0, Vec3::Zero())), std::invalid_argument);
   EXPECT_THROW(Inflow(mesh, {7}, unit_stream(1.0, Vec3::Zero())), std::invalid_argument);
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

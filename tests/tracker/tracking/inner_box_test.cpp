@@ -16,19 +16,19 @@
 #include <limits>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
-Mesh graded_box(bool tetrahedra) {
-  BoxSpec spec;
+mesh::Mesh graded_box(bool tetrahedra) {
+  mesh::BoxSpec spec;
   spec.axes[0] = {.min = -1.0, .max = 2.0, .cells = 5, .ratio = 3.0};
   spec.axes[1] = {.min = 0.0, .max = 1.0, .cells = 4};
   spec.axes[2] = {.min = 10.0, .max = 10.5, .cells = 3, .ratio = 0.5};
   spec.tetrahedra = tetrahedra;
-  return box_mesh(spec);
+  return mesh::box_mesh(spec);
 }
 
-Boundaries specular(const Mesh& mesh) {
+Boundaries specular(const mesh::Mesh& mesh) {
   return {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 1.0};
 }
 
@@ -42,7 +42,7 @@ double volume(const InnerBox& box) {
 
 // All eight corners inside every face plane by the tolerance (to the round-off of the
 // plane's evaluation), and the box a real part of the cell.
-void expect_inside(const char* label, const Mesh& mesh, double least_fraction) {
+void expect_inside(const char* label, const mesh::Mesh& mesh, double least_fraction) {
   const Domain domain(mesh, specular(mesh));
   double smallest = 1.0;
   for (Index c = 0; c < mesh.cell_count(); ++c) {
@@ -50,7 +50,7 @@ void expect_inside(const char* label, const Mesh& mesh, double least_fraction) {
     ASSERT_GT(volume(box), 0.0) << label << " cell " << c;
     for (int k = 0; k < 8; ++k)
       for (Index f = mesh.cell_faces[c]; f < mesh.cell_faces[c + 1]; ++f) {
-        const Face& face = mesh.faces[f];
+        const mesh::Face& face = mesh.faces[f];
         ASSERT_GE(face.normal.dot(corner(box, k) - face.point), domain.tolerance * (1.0 - 1e-3))
             << label << " cell " << c << " face " << f;
       }
@@ -63,17 +63,17 @@ void expect_inside(const char* label, const Mesh& mesh, double least_fraction) {
 TEST(InnerBox, InsideEveryCellByTheTolerance) {
   expect_inside("hexahedra", graded_box(false), 0.99);
   expect_inside("tetrahedra", graded_box(true), 0.003);
-  expect_inside("perturbed hexahedra", perturbed(graded_box(false), {.fraction = 0.2, .seed = 3}), 0.05);
-  expect_inside("Voronoi", voronoi_mesh(testing::random_points(200, 11), {}), 1e-3);
-  expect_inside("periodic Voronoi", voronoi_mesh(testing::random_points(200, 12), {.periodic = {true, true, true}}),
-                1e-3);
+  expect_inside("perturbed hexahedra", mesh::perturbed(graded_box(false), {.fraction = 0.2, .seed = 3}), 0.05);
+  expect_inside("Voronoi", mesh::voronoi_mesh(testing::random_points(200, 11), {}), 1e-3);
+  expect_inside("periodic Voronoi",
+                mesh::voronoi_mesh(testing::random_points(200, 12), {.periodic = {true, true, true}}), 1e-3);
 }
 
 // The cell shrunk by the tolerance, rounded inwards to float: to one float step (the scale
 // s computes to 1 within a double's round-off, which can move a bound to the next float near
 // a coordinate of 0).
 TEST(InnerBox, ABoxMeshsCellShrunkByTheTolerance) {
-  const Mesh mesh = graded_box(false);
+  const mesh::Mesh mesh = graded_box(false);
   const Domain domain(mesh, specular(mesh));
   for (Index c = 0; c < mesh.cell_count(); ++c) {
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -111,8 +111,8 @@ void expect_same(const MoveTally& a, const MoveTally& b) {
 // walls, moved with and without the fast path from the same start with the same random
 // numbers: every position to the last bit, cell, state and tally the same.
 TEST(FastPath, SwarmEndsWhereTheFullAlgorithmPutsIt) {
-  BoxSpec spec = cube(8);
-  const Mesh mesh = box_mesh(spec);
+  mesh::BoxSpec spec = mesh::cube(8);
+  const mesh::Mesh mesh = mesh::box_mesh(spec);
   const double hot = 1.0 / 1.380649e-23;  // sigma = sqrt(k T / m) = 1 for unit mass
   Boundaries walls = specular(mesh);
   walls.patches[0] = {.kind = BoundaryKind::diffuse, .temperature = hot};
@@ -187,7 +187,8 @@ TEST(FastPath, SwarmEndsWhereTheFullAlgorithmPutsIt) {
 // of the two sides of a face differ), through move(): the same MoveResult and end.
 // Guards against: the fast path disagreeing with the full algorithm on non-planar faces.
 TEST(FastPath, PerturbedVoronoiMovesEndWhereTheFullAlgorithmPutsThem) {
-  const Mesh mesh = perturbed(voronoi_mesh(testing::random_points(200, 13), {}), {.fraction = 0.05, .seed = 4});
+  const mesh::Mesh mesh =
+      mesh::perturbed(mesh::voronoi_mesh(testing::random_points(200, 13), {}), {.fraction = 0.05, .seed = 4});
   const Domain fast(mesh, specular(mesh));
   Domain full(mesh, specular(mesh));
   without_fast_path(full);
@@ -218,4 +219,4 @@ TEST(FastPath, PerturbedVoronoiMovesEndWhereTheFullAlgorithmPutsThem) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -19,11 +19,11 @@
 #include <cmath>
 #include <random>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
-BoxSpec graded(bool tetrahedra, std::array<bool, 3> periodic = {false, false, false}) {
-  BoxSpec spec;
+mesh::BoxSpec graded(bool tetrahedra, std::array<bool, 3> periodic = {false, false, false}) {
+  mesh::BoxSpec spec;
   spec.axes[0] = {.min = -1.0, .max = 2.0, .cells = 5, .ratio = 3.0};
   spec.axes[1] = {.min = 0.1, .max = 0.7, .cells = 4};
   spec.axes[2] = {.min = 10.0, .max = 10.5, .cells = 3, .ratio = 0.5};
@@ -32,19 +32,19 @@ BoxSpec graded(bool tetrahedra, std::array<bool, 3> periodic = {false, false, fa
   return spec;
 }
 
-int count_lattice_faces(const Mesh& mesh) {
+int count_lattice_faces(const mesh::Mesh& mesh) {
   int n = 0;
   for (const LatticeFaces& cell : lattice_faces(mesh)) n += cell.holds();
   return n;
 }
 
 TEST(Lattice, EveryCellOfABoxOfHexahedraAndNoOther) {
-  const Mesh hexahedra = box_mesh(graded(false));
+  const mesh::Mesh hexahedra = mesh::box_mesh(graded(false));
   EXPECT_EQ(count_lattice_faces(hexahedra), hexahedra.cell_count());
-  EXPECT_EQ(count_lattice_faces(box_mesh(graded(false, {true, false, true}))), hexahedra.cell_count());
-  EXPECT_TRUE(lattice_faces(box_mesh(graded(true))).empty());
+  EXPECT_EQ(count_lattice_faces(mesh::box_mesh(graded(false, {true, false, true}))), hexahedra.cell_count());
+  EXPECT_TRUE(lattice_faces(mesh::box_mesh(graded(true))).empty());
   // Moved corners tilt the faces: not one cell keeps six axis-aligned planes.
-  EXPECT_TRUE(lattice_faces(perturbed(hexahedra, {.fraction = 0.2, .seed = 3})).empty());
+  EXPECT_TRUE(lattice_faces(mesh::perturbed(hexahedra, {.fraction = 0.2, .seed = 3})).empty());
 }
 
 // A coordinate of the cell's box, often exactly on a face, sometimes up to `out` beyond
@@ -74,7 +74,7 @@ double component(std::mt19937_64& random) {
   }
 }
 
-void expect_the_scans_agree(const Mesh& mesh) {
+void expect_the_scans_agree(const mesh::Mesh& mesh) {
   const std::vector<LatticeFaces> lattice = lattice_faces(mesh);
   ASSERT_EQ(lattice.size(), static_cast<std::size_t>(mesh.cell_count()));
   std::mt19937_64 random(17);
@@ -83,7 +83,7 @@ void expect_the_scans_agree(const Mesh& mesh) {
   for (int i = 0; i < 200000; ++i) {
     const Index cell = static_cast<Index>(random() % static_cast<std::uint64_t>(mesh.cell_count()));
     if (!lattice[static_cast<std::size_t>(cell)].holds()) continue;
-    const Eigen::AlignedBox3d box = cell_box(mesh, cell);
+    const Eigen::AlignedBox3d box = mesh::cell_box(mesh, cell);
     const Vec3 out = (i % 3 == 0 ? 0.1 : 0.0) * box.sizes();
     Vec3 x;
     for (int a = 0; a < 3; ++a) x[a] = coordinate(box.min()[a], box.max()[a], out[a], random);
@@ -111,19 +111,19 @@ void expect_the_scans_agree(const Mesh& mesh) {
 
 // A box of hexahedra with one inner vertex moved: the eight cells around it are no longer
 // axis-aligned, the others are.
-Mesh one_corner_moved() {
-  Mesh mesh = box_mesh(cube(4));
+mesh::Mesh one_corner_moved() {
+  mesh::Mesh mesh = mesh::box_mesh(mesh::cube(4));
   for (Vec3& x : mesh.vertices)
     if (x == Vec3(0.5, 0.5, 0.5)) x += Vec3(0.03, -0.02, 0.04);
-  fit_geometry(mesh);
+  mesh::fit_geometry(mesh);
   return mesh;
 }
 
 TEST(Lattice, FindsTheFaceTheScanFinds) {
-  expect_the_scans_agree(box_mesh(graded(false)));
-  expect_the_scans_agree(box_mesh(graded(false, {true, true, false})));
-  expect_the_scans_agree(box_mesh(cube(7)));
-  const Mesh mixed = one_corner_moved();
+  expect_the_scans_agree(mesh::box_mesh(graded(false)));
+  expect_the_scans_agree(mesh::box_mesh(graded(false, {true, true, false})));
+  expect_the_scans_agree(mesh::box_mesh(mesh::cube(7)));
+  const mesh::Mesh mixed = one_corner_moved();
   EXPECT_EQ(count_lattice_faces(mixed), mixed.cell_count() - 8);
   expect_the_scans_agree(mixed);
 }
@@ -132,7 +132,7 @@ TEST(Lattice, FindsTheFaceTheScanFinds) {
 // one, against the general scan everywhere: the same cells and positions to the bit.
 // Guards against: the scan of one cell used for another (the per-cell dispatch).
 TEST(Lattice, MovesThroughAMixedMeshEndWhereTheGeneralScanPutsThem) {
-  const Mesh mesh = one_corner_moved();
+  const mesh::Mesh mesh = one_corner_moved();
   const Boundaries walls{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 1.0};
   const Domain lattice(mesh, walls);
   Domain general(mesh, walls);
@@ -169,7 +169,7 @@ TEST(Lattice, MovesThroughAMixedMeshEndWhereTheGeneralScanPutsThem) {
 struct ImplicitCount {
   int plain = 0, linked = 0;
 };
-ImplicitCount count_implicit(const Mesh& mesh) {
+ImplicitCount count_implicit(const mesh::Mesh& mesh) {
   const Domain domain(mesh,
                       {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 1.0});
   ImplicitCount n;
@@ -181,24 +181,24 @@ ImplicitCount count_implicit(const Mesh& mesh) {
 }
 
 TEST(Lattice, ImplicitOnAWholeBoxOfHexahedraAndItsInteriorFaces) {
-  const Mesh walled = box_mesh(graded(false));
+  const mesh::Mesh walled = mesh::box_mesh(graded(false));
   // 5 x 4 x 3 cells: the interior faces, each seen from both sides.
   const int interior = 2 * (4 * 4 * 3 + 5 * 3 * 3 + 5 * 4 * 2);
   EXPECT_EQ(count_implicit(walled).plain, 60);
   EXPECT_EQ(count_implicit(walled).linked, interior);
   // Periodic links keep their records (the shift): the same interior faces.
-  const ImplicitCount periodic = count_implicit(box_mesh(graded(false, {true, false, true})));
+  const ImplicitCount periodic = count_implicit(mesh::box_mesh(graded(false, {true, false, true})));
   EXPECT_EQ(periodic.plain, 60);
   EXPECT_EQ(periodic.linked, interior);
-  EXPECT_EQ(count_implicit(box_mesh(graded(true))).plain, 0);
-  EXPECT_EQ(count_implicit(perturbed(walled, {.fraction = 0.2, .seed = 3})).plain, 0);
+  EXPECT_EQ(count_implicit(mesh::box_mesh(graded(true))).plain, 0);
+  EXPECT_EQ(count_implicit(mesh::perturbed(walled, {.fraction = 0.2, .seed = 3})).plain, 0);
   // The eight cells around the moved vertex keep their records; their plain neighbours'
   // faces into them are linked (the scan there then reads the records).
   const ImplicitCount mixed = count_implicit(one_corner_moved());
   EXPECT_EQ(mixed.plain, 64 - 8);
   EXPECT_EQ(mixed.linked, 2 * 3 * (3 * 4 * 4) - 8 * 6);
   // A rank's part is not numbered as a lattice.
-  const Mesh part = box_part(
+  const mesh::Mesh part = mesh::box_part(
       graded(false), {0, 0, 0}, {2, 4, 3}, [](Index c) { return c % 5 < 2 ? 0 : 1; }, 0);
   EXPECT_EQ(count_implicit(part).plain, 0);
 }
@@ -215,7 +215,7 @@ bool same_bits(const Vec3& a, const Vec3& b) {
 // position and velocity to the bit, cell and counts, with the same random numbers for the
 // re-emitting walls. Guards against: a wrong plane, face index, neighbour, twin or skip of
 // the implicit path, or a wall or periodic link taken as a lattice link.
-void expect_implicit_moves_agree(const char* label, const Mesh& mesh, bool periodic) {
+void expect_implicit_moves_agree(const char* label, const mesh::Mesh& mesh, bool periodic) {
   const double hot = 1.0 / 1.380649e-23;  // sigma = sqrt(k T / m) = 1 for unit mass
   Boundaries walls{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 1.0};
   walls.patches[0] = {.kind = BoundaryKind::diffuse, .temperature = hot};
@@ -231,7 +231,7 @@ void expect_implicit_moves_agree(const char* label, const Mesh& mesh, bool perio
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   MoveTally tally_a, tally_b;
   long long wraps = 0;
-  const Vec3 size = cell_box(mesh, 0).sizes();
+  const Vec3 size = mesh::cell_box(mesh, 0).sizes();
   for (int i = 0; i < 100000; ++i) {
     testing::Flight flight = testing::hard_move(mesh, moves);
     Vec3& v = flight.particle.v;
@@ -265,10 +265,10 @@ void expect_implicit_moves_agree(const char* label, const Mesh& mesh, bool perio
 }
 
 TEST(Lattice, ImplicitMovesEndWhereTheFaceRecordsPutThem) {
-  expect_implicit_moves_agree("walled", box_mesh(graded(false)), false);
-  expect_implicit_moves_agree("periodic", box_mesh(graded(false, {true, false, true})), true);
+  expect_implicit_moves_agree("walled", mesh::box_mesh(graded(false)), false);
+  expect_implicit_moves_agree("periodic", mesh::box_mesh(graded(false, {true, false, true})), true);
   expect_implicit_moves_agree("mixed", one_corner_moved(), false);
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <vector>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
 using csg::ball;
@@ -82,7 +82,7 @@ Expression cluster(int count, double radius, unsigned seed) {
 }
 
 TEST(Obstacles, SpecularWallsKeepParticlesOutAndEnergyConstant) {
-  const Mesh mesh = box_mesh(cube(8));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(8));
   const Domain domain(mesh, specular_box());
   // Three intersecting balls, a box and a cylinder piece: curved, flat and edged surfaces.
   const Expression three = ball({0.3, 0.3, 0.3}, 0.15) | ball({0.45, 0.3, 0.3}, 0.15) | ball({0.37, 0.42, 0.3}, 0.15);
@@ -129,7 +129,7 @@ TEST(Obstacles, PeriodicFoamKeepsParticlesOut) {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<Vec3> points(200);
   for (Vec3& x : points) x = Vec3(uniform(sites), uniform(sites), uniform(sites));
-  const Mesh mesh = voronoi_mesh(points, {.periodic = {true, true, true}});
+  const mesh::Mesh mesh = mesh::voronoi_mesh(points, {.periodic = {true, true, true}});
   const Domain domain(mesh,
                       {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::periodic}), 1.0});
   std::vector<Expression> balls{ball({0.5, 0.5, 0.5}, 0.2)};
@@ -158,7 +158,7 @@ TEST(Obstacles, PeriodicFoamKeepsParticlesOut) {
 // thinner than round-off at a cell's size: none gets through.
 // Guards against: particles leaking through a wall lying on cell faces or thinner than round-off.
 TEST(Obstacles, WallsOnFacesAndThinnerThanRoundOffHold) {
-  const Mesh mesh = box_mesh(cube(8));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(8));
   const Domain domain(mesh, specular_box());
   const Obstacles obstacles(mesh, {wall("right half", csg::half_space({0.5, 0.5, 0.5}, {-1.0, 0.0, 0.0})),
                                    wall("slab", csg::box({0.25, 0.5, 0.5}, {5e-15, 1.0, 1.0}))});
@@ -190,7 +190,7 @@ TEST(Obstacles, WallsOnFacesAndThinnerThanRoundOffHold) {
 // A column of particles flying head-on into the flat face of a box: each hits once and
 // gives it twice its momentum.
 TEST(Obstacles, ImpulseOnAWallIsTwiceTheMomentumOfHeadOnHits) {
-  const Mesh mesh = box_mesh(cube(6));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(6));
   const Domain domain(mesh, specular_box());
   const Obstacles obstacles(mesh, {wall("block", csg::box({0.6, 0.5, 0.5}, {0.1, 0.3, 0.3}))});
   Random random(3);
@@ -216,7 +216,7 @@ TEST(Obstacles, ImpulseOnAWallIsTwiceTheMomentumOfHeadOnHits) {
 }
 
 TEST(Obstacles, OpenWallAbsorbsAndPermeableZoneCounts) {
-  const Mesh mesh = box_mesh(cube(8));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(8));
   const Domain domain(mesh, specular_box());
   Obstacle sink = wall("sink", ball({0.25, 0.25, 0.25}, 0.12));
   sink.wall.kind = BoundaryKind::open;
@@ -253,7 +253,7 @@ TEST(Obstacles, OpenWallAbsorbsAndPermeableZoneCounts) {
 }
 
 TEST(Obstacles, SortByCellKeepsStatesWithTheirParticles) {
-  const Mesh mesh = box_mesh(cube(8));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(8));
   const Domain domain(mesh, specular_box());
   const Obstacles obstacles(mesh, {wall("a", cluster(30, 0.06, 16)), wall("b", ball({0.2, 0.8, 0.5}, 0.15))});
   Flights run(domain, obstacles, 3000, 17);
@@ -275,7 +275,7 @@ TEST(Obstacles, SortByCellKeepsStatesWithTheirParticles) {
 // centre: they push the particles they overrun out in front of them, nobody ends inside,
 // and states stay the direct ones.
 TEST(Obstacles, MovingBallSweepsParticlesOut) {
-  const Mesh mesh = box_mesh(cube(10));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(10));
   const Domain domain(mesh, specular_box());
   Obstacles obstacles(mesh, {wall("ball", ball({0.3, 0.5, 0.5}, 0.15)),
                              wall("post", csg::capped_cylinder({0.5, 0.5, 0.2}, {0.5, 0.5, 0.8}, 0.05))});
@@ -316,7 +316,7 @@ TEST(Obstacles, MovingBallSweepsParticlesOut) {
 
 // A particle at rest overrun by a flat specular wall moving at u leaves at 2u.
 TEST(Obstacles, MovingWallReflectsInItsOwnFrame) {
-  const Mesh mesh = box_mesh(cube(8));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(8));
   const Domain domain(mesh, specular_box());
   Obstacles obstacles(mesh, {wall("piston", csg::box({0.2, 0.5, 0.5}, {0.1, 0.4, 0.4}))});
   Swarm swarm(1);
@@ -346,7 +346,7 @@ TEST(Obstacles, MovingWallReflectsInItsOwnFrame) {
 // Guards against: a moving wall from beyond the cell's neighbours overrunning a particle and leaving it
 // inside.
 TEST(Obstacles, MovingWallFromBeyondTheRingLeavesNobodyInside) {
-  const Mesh mesh = box_mesh(cube(10));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(10));
   const Domain domain(mesh, specular_box());
   Obstacles obstacles(mesh, {wall("ball", ball({0.525, 0.525, 0.525}, 0.02))});
   Swarm swarm(1);
@@ -372,7 +372,7 @@ TEST(Obstacles, MovingWallFromBeyondTheRingLeavesNobodyInside) {
 // counted, not reflected back in for ever.
 // Guards against: a particle with a wrong inside state being reflected back in for ever.
 TEST(Obstacles, AWrongInsideStateIsReleasedAtTheSurface) {
-  const Mesh mesh = box_mesh(cube(4));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(4));
   const Domain domain(mesh, specular_box());
   const Obstacles obstacles(mesh, {wall("ball", ball({0.5, 0.5, 0.5}, 0.2))});
   Particle p{{0.2, 0.5, 0.5}, {-1.0, 0.0, 0.0}, 0};
@@ -392,9 +392,9 @@ TEST(Obstacles, AWrongInsideStateIsReleasedAtTheSurface) {
 
 // A wall across a periodic link without its image on the other side is refused.
 TEST(Obstacles, AWallMustBePeriodicAcrossPeriodicLinks) {
-  BoxSpec spec = cube(4);
+  mesh::BoxSpec spec = mesh::cube(4);
   spec.periodic = {true, false, false};
-  const Mesh mesh = box_mesh(spec);
+  const mesh::Mesh mesh = mesh::box_mesh(spec);
   try {
     const Obstacles obstacles(mesh, {wall("ball", ball({0.98, 0.5, 0.5}, 0.05))});
     ADD_FAILURE() << "a ball across the periodic link without its image was accepted";
@@ -407,15 +407,15 @@ TEST(Obstacles, AWallMustBePeriodicAcrossPeriodicLinks) {
 // The correctness check of Table 1 (docs/references.md): the events executed do not depend on
 // which bounding grid the objects are registered with, the events generated do.
 TEST(Obstacles, ExecutedEventsDoNotDependOnTheBoundingGrid) {
-  const Mesh mesh = box_mesh(cube(16));
+  const mesh::Mesh mesh = mesh::box_mesh(mesh::cube(16));
   const Domain domain(mesh, specular_box());
   // Two objects of 40 balls each: together more than a state holds in one bounding cell.
   const Expression a = cluster(40, 0.05, 7), b = cluster(40, 0.05, 8);
   std::vector<long long> executed, generated;
   for (const int n : {1, 2, 4, 8, 16}) {
-    const Mesh grid = box_mesh(cube(n));
+    const mesh::Mesh grid = mesh::box_mesh(mesh::cube(n));
     std::vector<Index> bounding(mesh.cell_count());
-    const PointLocator locator(grid);
+    const mesh::PointLocator locator(grid);
     for (Index c = 0; c < mesh.cell_count(); ++c) bounding[c] = locator.locate(mesh.centroid[c]);
     const Obstacles obstacles(mesh, {wall("a", a), wall("b", b)}, grid, bounding);
     Flights run(domain, obstacles, 2000, 9);
@@ -435,4 +435,4 @@ TEST(Obstacles, ExecutedEventsDoNotDependOnTheBoundingGrid) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

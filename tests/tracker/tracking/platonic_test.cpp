@@ -14,14 +14,14 @@
 #include <numbers>
 #include <set>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
 // The convex hull's faces by brute force (at most 20 points): a plane through three
 // points with all others on one side is a face; its points, ordered counter-clockwise
 // seen from outside, are the loop.
-Polyhedra hull(const std::vector<Vec3>& points) {
-  Polyhedra poly;
+mesh::Polyhedra hull(const std::vector<Vec3>& points) {
+  mesh::Polyhedra poly;
   poly.vertices = points;
   std::set<std::vector<Index>> seen;
   const Index n = static_cast<Index>(points.size());
@@ -84,29 +84,29 @@ std::vector<Solid> platonic_solids() {
           {"icosahedron", cyclic(icosahedron)}};
 }
 
-Mesh unit_volume(const Solid& solid) {
-  const double volume = assemble(hull(solid.vertices)).volume[0];
+mesh::Mesh unit_volume(const Solid& solid) {
+  const double volume = mesh::assemble(hull(solid.vertices)).volume[0];
   std::vector<Vec3> scaled;
   for (const Vec3& x : solid.vertices) scaled.push_back(x / std::cbrt(volume));
-  return assemble(hull(scaled));
+  return mesh::assemble(hull(scaled));
 }
 
 // Uniform isotropic random lines through the solid, by mu-randomness: a point uniform on
 // the surface (face by area, then a triangle of the face's fan by area, then uniform in
 // the triangle) and a direction cosine-weighted about the inward normal. The chord is the
 // way from there to the exit, where the open wall removes the particle.
-double mean_chord(const Mesh& mesh, int chords, std::uint64_t seed) {
+double mean_chord(const mesh::Mesh& mesh, int chords, std::uint64_t seed) {
   const Boundaries open{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::open}), 0.0};
   const Domain domain(mesh, open);
   Random random(seed);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<double> areas;
-  for (Index f = 0; f < mesh.face_count(); ++f) areas.push_back(area_vector(mesh, f).norm());
+  for (Index f = 0; f < mesh.face_count(); ++f) areas.push_back(mesh::area_vector(mesh, f).norm());
   std::discrete_distribution<Index> pick_face(areas.begin(), areas.end());
   double sum = 0.0;
   for (int i = 0; i < chords; ++i) {
     const Index f = pick_face(random);
-    const Vec3 middle = vertex_mean(mesh, f);
+    const Vec3 middle = mesh::vertex_mean(mesh, f);
     const Index n = mesh.vertex_count(f);
     const Index k = std::uniform_int_distribution<Index>(0, n - 1)(random);  // equal triangles: regular faces
     const double r1 = std::sqrt(uniform(random)), r2 = uniform(random);
@@ -128,10 +128,10 @@ double mean_chord(const Mesh& mesh, int chords, std::uint64_t seed) {
 TEST(TransitDistance, PlatonicSolidsByRandomChords) {
   std::uint64_t seed = 1;
   for (const Solid& solid : platonic_solids()) {
-    const Mesh mesh = unit_volume(solid);
+    const mesh::Mesh mesh = unit_volume(solid);
     ASSERT_NEAR(mesh.volume[0], 1.0, 1e-12) << solid.name;
     double surface = 0.0;
-    for (Index f = 0; f < mesh.face_count(); ++f) surface += area_vector(mesh, f).norm();
+    for (Index f = 0; f < mesh.face_count(); ++f) surface += mesh::area_vector(mesh, f).norm();
     const double expected = 4.0 * mesh.volume[0] / surface;
     const double measured = mean_chord(mesh, 200000, seed++);
     const double error = measured / expected - 1.0;
@@ -142,4 +142,4 @@ TEST(TransitDistance, PlatonicSolidsByRandomChords) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

@@ -18,7 +18,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
 int move_count() {
@@ -30,7 +30,7 @@ bool in_unit_box(const Vec3& x, double tolerance) {
   return (x.array() >= -tolerance).all() && (x.array() <= 1.0 + tolerance).all();
 }
 
-void expect_none_lost(const std::string& label, const Mesh& mesh, bool walled) {
+void expect_none_lost(const std::string& label, const mesh::Mesh& mesh, bool walled) {
   const Boundaries walls{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 0.0};
   const Domain domain(mesh, walls);
   Random random(99);
@@ -64,24 +64,26 @@ void expect_none_lost(const std::string& label, const Mesh& mesh, bool walled) {
 // Guards against: a particle starting on or moving through a vertex, edge or face of non-planar hexahedra
 // being lost.
 TEST(NoParticleLost, PerturbedHexahedra) {
-  expect_none_lost("perturbed hexahedra", perturbed(box_mesh(cube(6, false)), {.fraction = 0.2, .seed = 3}), true);
+  expect_none_lost("perturbed hexahedra",
+                   mesh::perturbed(mesh::box_mesh(mesh::cube(6, false)), {.fraction = 0.2, .seed = 3}), true);
 }
 
 // Guards against: a particle on a shared vertex, edge or face of perturbed tetrahedra being lost.
 TEST(NoParticleLost, PerturbedTetrahedra) {
-  expect_none_lost("perturbed tetrahedra", perturbed(box_mesh(cube(4, true)), {.fraction = 0.2, .seed = 4}), true);
+  expect_none_lost("perturbed tetrahedra",
+                   mesh::perturbed(mesh::box_mesh(mesh::cube(4, true)), {.fraction = 0.2, .seed = 4}), true);
 }
 
 // Guards against: a particle being lost in the gaps and overlaps between perturbed Voronoi cells.
 TEST(NoParticleLost, PerturbedVoronoi) {
-  const Mesh voronoi = voronoi_mesh(testing::random_points(200, 5), {});
-  expect_none_lost("perturbed voronoi", perturbed(voronoi, {.fraction = 0.05, .seed = 5}), true);
+  const mesh::Mesh voronoi = mesh::voronoi_mesh(testing::random_points(200, 5), {});
+  expect_none_lost("perturbed voronoi", mesh::perturbed(voronoi, {.fraction = 0.05, .seed = 5}), true);
 }
 
 // Guards against: a particle being lost where a perturbed cell meets its periodic image.
 TEST(NoParticleLost, PerturbedPeriodicVoronoi) {
-  const Mesh voronoi = voronoi_mesh(testing::random_points(200, 6), {.periodic = {true, true, true}});
-  expect_none_lost("perturbed periodic voronoi", perturbed(voronoi, {.fraction = 0.05, .seed = 6}), false);
+  const mesh::Mesh voronoi = mesh::voronoi_mesh(testing::random_points(200, 6), {.periodic = {true, true, true}});
+  expect_none_lost("perturbed periodic voronoi", mesh::perturbed(voronoi, {.fraction = 0.05, .seed = 6}), false);
 }
 
 // 20,000 random points give a few dozen faces some 1e-5 of their cells across (nearly
@@ -90,13 +92,13 @@ TEST(NoParticleLost, PerturbedPeriodicVoronoi) {
 // Guards against: a particle being lost on faces some 1e-5 of their cells across.
 TEST(NoParticleLost, VoronoiWithTinyFaces) {
   for (const bool periodic : {false, true}) {
-    const Mesh mesh =
-        voronoi_mesh(testing::random_points(20000, periodic ? 8 : 7), {.periodic = {periodic, periodic, periodic}});
+    const mesh::Mesh mesh = mesh::voronoi_mesh(testing::random_points(20000, periodic ? 8 : 7),
+                                               {.periodic = {periodic, periodic, periodic}});
     std::vector<Index> small;
     for (Index c = 0; c < mesh.cell_count(); ++c) {
-      const double size = cell_box(mesh, c).diagonal().norm();
+      const double size = mesh::cell_box(mesh, c).diagonal().norm();
       for (Index f = mesh.cell_faces[c]; f < mesh.cell_faces[c + 1]; ++f)
-        if (area_vector(mesh, f).norm() <= 1e-9 * size * size) small.push_back(f);
+        if (mesh::area_vector(mesh, f).norm() <= 1e-9 * size * size) small.push_back(f);
     }
     ASSERT_GT(small.size(), 5u);
     const Boundaries walls{std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::specular}), 0.0};
@@ -128,4 +130,4 @@ TEST(NoParticleLost, VoronoiWithTinyFaces) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

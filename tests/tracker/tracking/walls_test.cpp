@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <numbers>
 
-namespace cosim::tracker {
+namespace cosim::tracker::tracking {
 namespace {
 
 constexpr double argon = 6.63e-26;  // kg
@@ -84,8 +84,8 @@ TEST(Walls, MovingWallsReEmitAboutTheirTangentialVelocity) {
     EXPECT_NEAR(mean.y() / normal, 1.0, 0.01);
   }
   // A mirror sliding along itself is the plain mirror: refused rather than ignored.
-  BoxSpec spec;
-  const Mesh mesh = box_mesh(spec);
+  mesh::BoxSpec spec;
+  const mesh::Mesh mesh = mesh::box_mesh(spec);
   Boundaries sliding{std::vector<BoundaryCondition>(6), argon};
   sliding.patches[2].velocity = Vec3(1.0, 0.0, 0.0);
   EXPECT_THROW(Domain(mesh, sliding), std::invalid_argument);
@@ -97,8 +97,8 @@ TEST(Walls, MovingWallsReEmitAboutTheirTangentialVelocity) {
 TEST(Walls, PatchTalliesBalanceTheParticlesMomentumAndEnergy) {
   // A closed box whose patches re-emit at two temperatures, slide, mirror and absorb: what
   // the patches took is what the particles lost, to round-off (moved as Particles in double).
-  BoxSpec spec = cube(3);
-  const Mesh mesh = box_mesh(spec);
+  mesh::BoxSpec spec = mesh::cube(3);
+  const mesh::Mesh mesh = mesh::box_mesh(spec);
   Boundaries boundaries{std::vector<BoundaryCondition>(6), argon};
   boundaries.patches[0] = {.kind = BoundaryKind::diffuse, .temperature = 200.0, .velocity = Vec3(0, 50, 0)};
   boundaries.patches[1] = {.kind = BoundaryKind::diffuse, .temperature = 400.0};
@@ -143,8 +143,8 @@ TEST(Walls, PatchTalliesBalanceTheParticlesMomentumAndEnergy) {
 }
 
 TEST(Walls, OpenPatchRemovesAndOthersReflect) {
-  BoxSpec spec = cube(3);
-  const Mesh mesh = box_mesh(spec);
+  mesh::BoxSpec spec = mesh::cube(3);
+  const mesh::Mesh mesh = mesh::box_mesh(spec);
   Boundaries boundaries{std::vector<BoundaryCondition>(6), argon};
   boundaries.patches[1] = {.kind = BoundaryKind::open};  // x_max
   const Domain domain(mesh, boundaries);
@@ -159,7 +159,7 @@ TEST(Walls, OpenPatchRemovesAndOthersReflect) {
     const MoveResult back = move(algorithm, domain, bounce, 0.8, random);
     EXPECT_EQ(back.boundary_hits, 1) << name(algorithm);
     EXPECT_LT((bounce.x - Vec3(0.5, 0.7, 0.5)).norm(), 1e-12) << name(algorithm);
-    EXPECT_TRUE(contains(mesh, bounce.cell, bounce.x)) << name(algorithm);
+    EXPECT_TRUE(mesh::contains(mesh, bounce.cell, bounce.x)) << name(algorithm);
   }
 }
 
@@ -169,7 +169,7 @@ TEST(Walls, PeriodicLinksWrapTheFlight) {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<Vec3> points;
   for (int i = 0; i < 100; ++i) points.emplace_back(uniform(random), uniform(random), uniform(random));
-  const Mesh mesh = voronoi_mesh(points, {.periodic = {true, true, true}});
+  const mesh::Mesh mesh = mesh::voronoi_mesh(points, {.periodic = {true, true, true}});
   // The mesh names the six box patches; the links replace them all.
   const Domain domain(mesh,
                       {std::vector<BoundaryCondition>(mesh.patches.size(), {.kind = BoundaryKind::periodic}), 0.0});
@@ -186,4 +186,4 @@ TEST(Walls, PeriodicLinksWrapTheFlight) {
 }
 
 }  // namespace
-}  // namespace cosim::tracker
+}  // namespace cosim::tracker::tracking

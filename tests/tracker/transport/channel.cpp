@@ -46,7 +46,8 @@ double slope(const std::vector<double>& y, const std::vector<double>& f) {
 // The start: the plates' linear profiles shrunk by a guess of the slip and temperature jump
 // (about 1.1 and 2 mean free paths per plate), density as 1/T for a uniform pressure, so
 // that the warm-up only has to relax the Knudsen layers.
-void seed(const ChannelSpec& spec, double H, double lambda, double L, Random& random, Swarm& swarm, std::size_t count) {
+void seed(const ChannelSpec& spec, double H, double lambda, double L, tracking::Random& random, tracking::Swarm& swarm,
+          std::size_t count) {
   const double t_mid = 0.5 * (spec.lower_temperature + spec.upper_temperature);
   const double t_span = (spec.upper_temperature - spec.lower_temperature) / (1.0 + 4.0 * lambda / H);
   const double u_span = spec.wall_speed / (1.0 + 2.2 * lambda / H);
@@ -109,30 +110,32 @@ ChannelResult run_channel(const ChannelSpec& spec) {
   r.dt = spec.dt_over_collision_time * r.mean_free_path / spec.gas.mean_speed(t_mean);
   const double dy = r.width / spec.cells;
   // Cubic cells: one along x and z, linked to itself periodically.
-  BoxSpec box;
+  mesh::BoxSpec box;
   box.axes[0] = {.min = 0.0, .max = dy, .cells = 1};
   box.axes[1] = {.min = 0.0, .max = r.width, .cells = spec.cells};
   box.axes[2] = {.min = 0.0, .max = dy, .cells = 1};
   box.periodic = {true, false, true};
-  const Mesh mesh = box_mesh(box);
+  const mesh::Mesh mesh = mesh::box_mesh(box);
   const double U = spec.wall_speed;
-  std::vector<BoundaryCondition> walls(6, {.kind = BoundaryKind::periodic});
-  walls[2] = {.kind = BoundaryKind::diffuse, .temperature = spec.lower_temperature, .velocity = Vec3(-0.5 * U, 0, 0)};
-  walls[3] = {.kind = BoundaryKind::diffuse, .temperature = spec.upper_temperature, .velocity = Vec3(0.5 * U, 0, 0)};
-  const Domain domain(mesh, {walls, spec.gas.mass});
-  const Obstacles none;
+  std::vector<tracking::BoundaryCondition> walls(6, {.kind = tracking::BoundaryKind::periodic});
+  walls[2] = {
+      .kind = tracking::BoundaryKind::diffuse, .temperature = spec.lower_temperature, .velocity = Vec3(-0.5 * U, 0, 0)};
+  walls[3] = {
+      .kind = tracking::BoundaryKind::diffuse, .temperature = spec.upper_temperature, .velocity = Vec3(0.5 * U, 0, 0)};
+  const tracking::Domain domain(mesh, {walls, spec.gas.mass});
+  const tracking::Obstacles none;
 
   const auto count = static_cast<std::size_t>(std::llround(spec.particles_per_cell * spec.cells));
   const double weight = spec.number_density * r.width * dy * dy / static_cast<double>(count);
-  Random random(spec.seed);
-  Swarm swarm(0);
+  tracking::Random random(spec.seed);
+  tracking::Swarm swarm(0);
   seed(spec, r.width, r.mean_free_path, dy, random, swarm, count);
   r.particles = swarm.size();
-  CellCollider collider(mesh, {.model = spec.gas.model(), .nearest = false}, t_mean, weight, spec.seed + 1);
+  step::CellCollider collider(mesh, {.model = spec.gas.model(), .nearest = false}, t_mean, weight, spec.seed + 1);
 
-  MoveTally moves;
-  std::vector<SurfaceTally> plates(6);
-  CellSampler sampler(mesh);
+  tracking::MoveTally moves;
+  std::vector<tracking::SurfaceTally> plates(6);
+  tracking::CellSampler sampler(mesh);
   // Sampled after the move and after the collisions: the flights build up the stress and
   // heat flux that the collisions relax at once, so either sample alone is off by about
   // dt / (2 tau_viscous), 10 % at dt = tau / 4; their mean is the flights' time average.
@@ -163,7 +166,7 @@ ChannelResult run_channel(const ChannelSpec& spec) {
     bulk_u.clear();
     bulk_theta.clear();
     for (Index c = 0; c < mesh.cell_count(); ++c) {
-      const CellMoments m = sampler.moments(c, spec.gas.mass, weight);
+      const tracking::CellMoments m = sampler.moments(c, spec.gas.mass, weight);
       const double y = (c + 0.5) * dy;
       shear -= m.stress(0, 1) / spec.cells;
       heat -= m.heat_flux.y() / spec.cells;

@@ -7,7 +7,7 @@
 
 #include <span>
 
-namespace cosim::tracker::detail {
+namespace cosim::tracker::tracking::detail {
 
 enum class Crossed { neighbour, wall, removed };
 
@@ -28,7 +28,7 @@ struct FaceEvent {
 // to dt = 0 (`clamp_behind`), the face-intersection baselines do not see it, which is how
 // they lose particles.
 // Faces the particle cannot reach within `horizon` (the rest of its move) are not events.
-FaceEvent first_exit(const Mesh& mesh, const Particle& particle, Index skip, bool clamp_behind, double horizon);
+FaceEvent first_exit(const mesh::Mesh& mesh, const Particle& particle, Index skip, bool clamp_behind, double horizon);
 // An axis-aligned hexahedron's faces: face[2 a] (inward normal +e_a) in the plane x_a =
 // plane[2 a], face[2 a + 1] (-e_a) in x_a = plane[2 a + 1].
 struct BoxFaces {
@@ -39,8 +39,8 @@ struct BoxFaces {
 // `behind` to first_exit's for finite x and v (a zero's sign aside).
 FaceEvent box_exit(const BoxFaces& box, const Particle& particle, Index skip, bool clamp_behind, double horizon);
 // With the planes read from the cell's face records.
-FaceEvent lattice_exit(const Mesh& mesh, LatticeFaces cell, const Particle& particle, Index skip, bool clamp_behind,
-                       double horizon);
+FaceEvent lattice_exit(const mesh::Mesh& mesh, LatticeFaces cell, const Particle& particle, Index skip,
+                       bool clamp_behind, double horizon);
 // With the planes from the lattice's arrays (a plain cell of implicit_lattice.hpp): the same
 // numbers the records hold, no record read.
 FaceEvent implicit_exit(const ImplicitLattice& lattice, const Particle& particle, Index skip, bool clamp_behind,
@@ -120,4 +120,4 @@ enum class Recovery {
 MoveResult move_face_intersection(const Domain& domain, Particle& particle, double dt, Random& random,
                                   Recovery recovery);
 
-}  // namespace cosim::tracker::detail
+}  // namespace cosim::tracker::tracking::detail

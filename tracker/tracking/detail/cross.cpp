@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace cosim::tracker::detail {
+namespace cosim::tracker::tracking::detail {
 
 namespace {
 
@@ -30,12 +30,12 @@ inline void offer(FaceEvent& first, Index face, double rate, double depth, bool 
 
 }  // namespace
 
-FaceEvent first_exit(const Mesh& mesh, const Particle& p, Index skip, bool clamp_behind, double horizon) {
+FaceEvent first_exit(const mesh::Mesh& mesh, const Particle& p, Index skip, bool clamp_behind, double horizon) {
   constexpr double none = std::numeric_limits<double>::infinity();
   FaceEvent first{none, -1, none};
   for (Index f = mesh.cell_faces[p.cell]; f < mesh.cell_faces[p.cell + 1]; ++f) {
     if (f == skip) continue;
-    const Face& face = mesh.faces[f];
+    const mesh::Face& face = mesh.faces[f];
     offer(first, f, face.normal.dot(p.v), face.normal.dot(p.x - face.point), clamp_behind, horizon);
   }
   return first;
@@ -55,7 +55,7 @@ FaceEvent box_exit(const BoxFaces& box, const Particle& p, Index skip, bool clam
   return {first.dt, first.face, first.behind};
 }
 
-FaceEvent lattice_exit(const Mesh& mesh, LatticeFaces cell, const Particle& p, Index skip, bool clamp_behind,
+FaceEvent lattice_exit(const mesh::Mesh& mesh, LatticeFaces cell, const Particle& p, Index skip, bool clamp_behind,
                        double horizon) {
   const Index base = mesh.cell_faces[p.cell];
   BoxFaces box;
@@ -83,7 +83,7 @@ FaceEvent implicit_exit(const ImplicitLattice& lattice, const Particle& p, Index
 
 Crossed cross(const Domain& domain, Particle& particle, Index face_index, Random& random, MoveResult& result,
               std::span<SurfaceTally> patches) {
-  const Face& face = domain.mesh.faces[face_index];
+  const mesh::Face& face = domain.mesh.faces[face_index];
   if (face.neighbour >= 0) {
     particle.x += domain.mesh.shifts[face.shift];
     particle.cell = face.neighbour;
@@ -91,7 +91,7 @@ Crossed cross(const Domain& domain, Particle& particle, Index face_index, Random
     return Crossed::neighbour;
   }
   ++result.boundary_hits;
-  const Index patch = patch_of(face.neighbour);
+  const Index patch = mesh::patch_of(face.neighbour);
   const Vec3 before = particle.v;
   const bool kept = hit_wall(domain.boundaries, patch, face.normal, particle.v, random);
   if (!patches.empty()) {
@@ -105,4 +105,4 @@ Crossed cross(const Domain& domain, Particle& particle, Index face_index, Random
   return Crossed::removed;
 }
 
-}  // namespace cosim::tracker::detail
+}  // namespace cosim::tracker::tracking::detail

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace cosim::tracker::detail {
+namespace cosim::tracker::tracking::detail {
 
 namespace {
 
@@ -29,7 +29,7 @@ void relocate(const Domain& domain, Particle& p, const Carried& carried, MoveRes
 bool settle(const Domain& domain, Particle& p, const Carried& carried, MoveResult& result) {
   const Violation violation = outside(domain.mesh, p.cell, p.x);
   if (violation.depth <= domain.tolerance) return true;
-  const Face& face = domain.mesh.faces[violation.face];
+  const mesh::Face& face = domain.mesh.faces[violation.face];
   if (face.neighbour >= 0) {
     const Vec3 there = p.x + domain.mesh.shifts[face.shift];
     if (outside(domain.mesh, face.neighbour, there).depth <= domain.tolerance) {
@@ -169,4 +169,4 @@ MoveResult follow_events(const Domain& domain, Particle& p, const Flight& flight
   return result;
 }
 
-}  // namespace cosim::tracker::detail
+}  // namespace cosim::tracker::tracking::detail

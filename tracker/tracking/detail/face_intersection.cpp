@@ -1,6 +1,6 @@
 #include "tracker/tracking/detail/algorithms.hpp"
 
-namespace cosim::tracker::detail {
+namespace cosim::tracker::tracking::detail {
 
 namespace {
 
@@ -15,9 +15,9 @@ bool inside(const Domain& domain, Index cell, const Vec3& x) {
 // Stollmeier & Grabe: a particle outside its cell belongs to the neighbour across the
 // first violated face.
 void reassign(const Domain& domain, Particle& p, MoveResult& result) {
-  const Mesh& mesh = domain.mesh;
+  const mesh::Mesh& mesh = domain.mesh;
   for (Index f = mesh.cell_faces[p.cell]; f < mesh.cell_faces[p.cell + 1]; ++f) {
-    const Face& face = mesh.faces[f];
+    const mesh::Face& face = mesh.faces[f];
     if (face.normal.dot(face.point - p.x) <= domain.tolerance) continue;
     if (face.neighbour < 0) return;
     p.x += mesh.shifts[face.shift];
@@ -32,9 +32,9 @@ void reassign(const Domain& domain, Particle& p, MoveResult& result) {
 // crossing point, and going back would cycle). True if it changed cells.
 bool search_neighbours(const Domain& domain, Particle& p, Index from, MoveResult& result) {
   if (inside(domain, p.cell, p.x)) return false;
-  const Mesh& mesh = domain.mesh;
+  const mesh::Mesh& mesh = domain.mesh;
   for (Index f = mesh.cell_faces[p.cell]; f < mesh.cell_faces[p.cell + 1]; ++f) {
-    const Face& face = mesh.faces[f];
+    const mesh::Face& face = mesh.faces[f];
     if (face.neighbour < 0 || face.neighbour == from) continue;
     const Vec3 there = p.x + mesh.shifts[face.shift];
     if (!inside(domain, face.neighbour, there)) continue;
@@ -87,4 +87,4 @@ MoveResult move_face_intersection(const Domain& domain, Particle& p, double dt, 
   return result;
 }
 
-}  // namespace cosim::tracker::detail
+}  // namespace cosim::tracker::tracking::detail

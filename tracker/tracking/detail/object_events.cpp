@@ -2,7 +2,7 @@
 
 #include "tracker/csg/events.hpp"
 
-namespace cosim::tracker::detail {
+namespace cosim::tracker::tracking::detail {
 
 ObjectEvent next_object_event(const Carried& carried, const Particle& p, MoveResult& result) {
   const Obstacles& obstacles = *carried.obstacles;
@@ -68,4 +68,4 @@ bool execute(const Carried& carried, double mass, Particle& p, const ObjectEvent
   return true;
 }
 
-}  // namespace cosim::tracker::detail
+}  // namespace cosim::tracker::tracking::detail
