@@ -5,6 +5,8 @@ calibration, beside what `cosim run` then measured (its record in the store).
 
     bench/estimate/estimate.py [--calibrate] [--max-seconds 130] [--table bench/estimate/results]
 
+--table writes TABLE.csv; scripts/results then renders it into TABLE.md.
+
 --calibrate runs `cosim calibrate` first into the bench's own store; without it the store
 must exist (--store). Scenes whose documented run time (configs/run_times.csv) is above
 --max-seconds are estimated but not run.
@@ -64,7 +66,7 @@ def main():
     parser.add_argument("--calibrate", action="store_true", help="run cosim calibrate into --store first")
     parser.add_argument("--max-seconds", type=float, default=130)
     parser.add_argument("--only", nargs="*", help="these scenes only")
-    parser.add_argument("--table", help="write TABLE.csv and TABLE.md")
+    parser.add_argument("--table", help="write TABLE.csv (scripts/results renders TABLE.md from it)")
     args = parser.parse_args()
 
     store = Path(args.store)
@@ -120,6 +122,7 @@ def main():
                   flush=True)
     if args.table:
         write_table(rows, Path(args.table))
+        subprocess.run([sys.executable, str(ROOT / "scripts" / "results")], check=True)
 
 
 def ratio(a, b):
@@ -127,10 +130,9 @@ def ratio(a, b):
 
 
 def write_table(rows, table):
+    """TABLE.csv, one row per scene; the Markdown table is scripts/results's, from this file."""
     fields = ["scene", "estimate_s", "measured_s", "wall_ratio", "again_ratio", "largest", "estimate_steps", "measured_steps",
               "memory", "estimate_disk_MB", "measured_disk_MB", "disk_ratio"]
-    lines = ["| scene | estimated wall [s] | measured [s] | estimate / measured | after one run: estimate / measured | largest program: steps estimated / run | memory, estimated / measured per program [MB] | run file, estimated / measured [MB] |",
-             "|---|---|---|---|---|---|---|---|"]
     with open(table.with_suffix(".csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
@@ -141,25 +143,16 @@ def write_table(rows, table):
                 (f"{measured_memory[p] / 1e6:.0f}" if p in measured_memory else "–")
                 for p in r["estimate_memory"])
             measured = r.get("measured_s")
-            csv_row = {"scene": r["scene"], "estimate_s": f"{r['estimate_s']:.1f}",
-                       "measured_s": f"{measured:.1f}" if measured else "",
-                       "wall_ratio": ratio(r["estimate_s"], measured),
-                       "again_ratio": ratio(r.get("again_s"), measured), "largest": r["top"],
-                       "estimate_steps": f"{r['estimate_steps']:.0f}",
-                       "measured_steps": f"{r['measured_steps']:.0f}" if "measured_steps" in r else "",
-                       "memory": memory,
-                       "estimate_disk_MB": f"{r['estimate_disk'] / 1e6:.3f}",
-                       "measured_disk_MB": f"{r['measured_disk'] / 1e6:.3f}" if "measured_disk" in r else "",
-                       "disk_ratio": ratio(r["estimate_disk"], r.get("measured_disk"))}
-            w.writerow(csv_row)
-            largest = (f"{r['top']} {csv_row['estimate_steps']} / {csv_row['measured_steps'] or '–'}"
-                       if r["top"] else "")
-            lines.append(f"| {r['scene']} | {csv_row['estimate_s']} | {csv_row['measured_s'] or 'not run'} | "
-                         f"{csv_row['wall_ratio']} | {csv_row['again_ratio']} | {largest} | {memory} | "
-                         f"{csv_row['estimate_disk_MB']} / "
-                         f"{csv_row['measured_disk_MB'] or '–'} |")
-    table.with_suffix(".md").write_text("\n".join(lines) + "\n")
-
+            w.writerow({"scene": r["scene"], "estimate_s": f"{r['estimate_s']:.1f}",
+                        "measured_s": f"{measured:.1f}" if measured else "",
+                        "wall_ratio": ratio(r["estimate_s"], measured),
+                        "again_ratio": ratio(r.get("again_s"), measured), "largest": r["top"],
+                        "estimate_steps": f"{r['estimate_steps']:.0f}" if r["top"] else "",
+                        "measured_steps": f"{r['measured_steps']:.0f}" if "measured_steps" in r else "",
+                        "memory": memory,
+                        "estimate_disk_MB": f"{r['estimate_disk'] / 1e6:.3f}",
+                        "measured_disk_MB": f"{r['measured_disk'] / 1e6:.3f}" if "measured_disk" in r else "",
+                        "disk_ratio": ratio(r["estimate_disk"], r.get("measured_disk"))})
 
 if __name__ == "__main__":
     main()

@@ -12,10 +12,9 @@ stages), and the peak memory of each program (per fluid rank).
 
     bench/particulate/particulate.py [--counts 10 100 1000] [--ranks 1 2] [--windows 4]
         [--out DIR] [--bin DIR] [--table bench/particulate/results]
-    bench/particulate/particulate.py --render bench/particulate/results
 
-Writes DIR/<count>_<ranks>/ (scene, run file, logs) and, with --table, PREFIX.csv and
-PREFIX.md (the table the README links to); --render makes PREFIX.md again from the CSV.
+Writes DIR/<count>_<ranks>/ (scene, run file, logs) and, with --table, PREFIX.csv, from
+which scripts/results renders the table of PREFIX.md that the README links to.
 The programs come from build/release/bin (or --bin).
 """
 
@@ -34,6 +33,7 @@ os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
 import h5py
 import numpy as np
 
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DIAMETER = 0.006  # m: glass beads of 6 mm
 CELLS_PER_DIAMETER = 6
 FRACTION = 0.1
@@ -188,20 +188,11 @@ def run_case(count, ranks, windows, out, bin_dir):
     }
 
 
-def markdown(rows):
-    head = ("| bodies | fluid ranks | cells | start [s] | window [s] | per body [ms] | fluid [s] | rigid [s] "
-            "| coupler and wire [s] | RHS, forcing, viscous, projection, no-slip [ms] | IB share of a step "
-            "| forcing iterations per step | peak MB: fluid (per rank), rigid, cosim |")
-    lines = [head, "|" + "---|" * 13]
-    for r in rows:
-        r = {k: float(v) for k, v in r.items()}
-        stages = ", ".join(f"{r[s + '_ms']:.1f}" for s in STAGES)
-        lines.append(
-            f"| {r['bodies']:.0f} | {r['ranks']:.0f} | {r['cells']:,.0f} | {r['start_s']:.1f} | {r['window_s']:.3f} "
-            f"| {r['per_body_ms']:.2f} | {r['fluid_s']:.3f} | {r['rigid_s']:.3f} | {r['rest_s']:.3f} | {stages} "
-            f"| {100 * r['ibm_share']:.0f} % | {r['iterations_per_step']:.1f} "
-            f"| {r['fluid_MB']:.0f}, {r['rigid_MB']:.0f}, {r['cosim_MB']:.0f} |")
-    return "\n".join(lines) + "\n"
+def summary(row):
+    """One line per case as it finishes."""
+    return (f"{row['bodies']} bodies, {row['ranks']} ranks, {row['cells']:,} cells: window {row['window_s']:.3f} s, "
+            f"per body {row['per_body_ms']:.2f} ms, IB share {100 * row['ibm_share']:.0f} %, "
+            f"peak fluid {row['fluid_MB']:.0f} MB")
 
 
 def main():
@@ -211,34 +202,20 @@ def main():
     p.add_argument("--windows", type=int, default=4)
     p.add_argument("--out", default="runs/particulate")
     p.add_argument("--bin", default=os.path.join("build", os.environ.get("COSIM_PRESET", "release"), "bin"))
-    p.add_argument("--table", help="write PREFIX.csv and PREFIX.md")
-    p.add_argument("--render", metavar="PREFIX", help="only make PREFIX.md again from PREFIX.csv")
+    p.add_argument("--table", help="write PREFIX.csv (scripts/results renders PREFIX.md from it)")
     a = p.parse_args()
-    if a.render:
-        with open(a.render + ".csv") as f:
-            rows = list(csv.DictReader(f))
-        with open(a.render + ".md") as f:
-            made_by = f.readline()
-        with open(a.render + ".md", "w") as f:
-            f.write(made_by + markdown(rows))
-        return
     bin_dir = os.path.abspath(a.bin)
     rows = []
     for count in a.counts:
         for ranks in a.ranks:
             rows.append(run_case(count, ranks, a.windows, os.path.abspath(a.out), bin_dir))
-            print(markdown(rows[-1:]).splitlines()[-1], flush=True)
-    table = markdown(rows)
-    print(table)
+            print(summary(rows[-1]), flush=True)
     if a.table:
         with open(a.table + ".csv", "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=list(rows[0]))
             w.writeheader()
             w.writerows(rows)
-        with open(a.table + ".md", "w") as f:
-            made_by = f"--counts {' '.join(map(str, a.counts))} --ranks {' '.join(map(str, a.ranks))} --windows {a.windows}"
-            f.write(f"<!-- made by bench/particulate/particulate.py {made_by} --table {a.table} -->\n{table}")
-
+        subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "results")], check=True)
 
 if __name__ == "__main__":
     main()

@@ -8,7 +8,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto file = cosim::fuzz::scratch_file(data, size, ".msh");
   try {
-    cosim::tracker::load_gmsh(file);
+    cosim::tracker::mesh::load_gmsh(file);
   } catch (const std::invalid_argument&) {
   }
   return 0;
