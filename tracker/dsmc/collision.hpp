@@ -4,12 +4,9 @@
 
 #include "tracker/dsmc/random.hpp"
 #include "tracker/dsmc/species.hpp"
-
-#include <Eigen/Core>
+#include "tracker/types.hpp"
 
 namespace cosim::tracker::dsmc {
-
-using Vec3 = Eigen::Vector3d;
 
 enum class Model { hard_sphere, vhs, vss };
 
