@@ -11,15 +11,16 @@
 #include "fluid/viscous_stencil.hpp"
 
 namespace cosim::fluid {
-// The viscous solve's right-hand side: u^n, the extrapolated convection (with the cross
-// stresses of a varying viscosity), the explicit Crank-Nicolson half of the viscous term,
-// the body force and the old pressure gradient; boundary faces and the staircase's imposed
-// faces take their prescribed velocity. For a body forcing also the fully explicit estimate
-// u~ of the step, the viscous term wholly at u^n.
+// The viscous solve's right-hand side: u^n, the extrapolated convection (none for Stokes
+// flow, TimeStepOptions::convection) with the cross stresses of a varying viscosity, the
+// explicit Crank-Nicolson half of the viscous term, the body force and the old pressure gradient; boundary faces and
+// the staircase's imposed faces take their prescribed velocity. For a body forcing also the fully explicit estimate u~
+// of the step, the viscous term wholly at u^n.
 void NavierStokes::right_hand_side(double dt, const ImposedFaces* imposed, const StepArrays& arrays) {
   viscosity_.update(local_);
   const double t = time_, t_next = time_ + dt;
   const double theta = controller_.options().theta;
+  const bool advect = controller_.options().convection;
   const bool have_history = previous_dt_ > 0;
   const double ratio = have_history ? dt / previous_dt_ : 0;
   DM pdm = grid_.pressure_dm();
@@ -41,7 +42,7 @@ void NavierStokes::right_hand_side(double dt, const ImposedFaces* imposed, const
         if (estimate) estimate[p[2]][p[1]][p[0]] = out;
         return;
       }
-      conv = convection(grid_, local_, c, p);
+      conv = advect ? convection(grid_, local_, c, p) : 0.0;
       if (!viscosity_.uniform()) conv -= viscous_cross_terms(grid_, local_, viscosity_, c, p);
       const double extrapolated = have_history ? (1 + ratio / 2) * conv - (ratio / 2) * n_old[p[2]][p[1]][p[0]] : conv;
       // div(nu grad u_c) at t, and its wall part at t_next, which the implicit solve takes.

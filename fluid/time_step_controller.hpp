@@ -35,6 +35,9 @@ struct TimeStepOptions {
   // div u* into the pressure too, and the settling test's 50 ms windows then stalled once
   // (tests/fluid/settling_test.cpp).
   PressureUpdate pressure_update = PressureUpdate::standard;
+  // false: unsteady Stokes flow, the momentum's advection left out (creeping flow, where
+  // Stokes's theory is the reference; the step is still limited by `cfl`).
+  bool convection = true;
 };
 
 // max over cells of sum_d |u_d| / h_d (the larger face value per axis), all ranks.

@@ -318,8 +318,10 @@ namespace {
 
 // The case's step with `stepping`'s theta and pressure update.
 TimeStepOptions fixed_step(double dt, const TimeStepOptions& stepping) {
-  return {
-      .cfl = 10, .dt_max = dt, .dt_initial = dt, .theta = stepping.theta, .pressure_update = stepping.pressure_update};
+  TimeStepOptions fixed = stepping;
+  fixed.cfl = 10;
+  fixed.dt_max = fixed.dt_initial = dt;
+  return fixed;
 }
 
 }  // namespace

@@ -38,7 +38,8 @@ std::string describe(const cosim::fluid::TimeStepOptions& stepping) {
   std::string update;
   for (const auto& [name, value] : kPressureUpdates)
     if (value == stepping.pressure_update) update = name;
-  return "theta " + std::to_string(stepping.theta).substr(0, 4) + ", " + update + " pressure update";
+  return "theta " + std::to_string(stepping.theta).substr(0, 4) + ", " + update + " pressure update" +
+         (stepping.convection ? "" : ", Stokes flow");
 }
 
 void print_header() {
@@ -377,6 +378,10 @@ int main(int argc, char** argv) {
                  "The implicit weight of the viscous term (Hasimoto's default 1; the towed sphere's and the wall "
                  "approach's the fluid's default, 0.5)")
       ->check(CLI::Range(0.5, 1.0));
+  app.add_flag(
+      "--stokes", [&](std::int64_t) { moving_steps.convection = false; },
+      "The towed sphere and the wall approach in unsteady Stokes flow: no advection (the scene key "
+      "convection: false)");
   app.add_flag("--hasimoto", only_hasimoto, "Only the Hasimoto sphere");
   app.add_flag("--dfg", only_dfg, "Only the DFG cylinder");
   app.add_flag("--calibrate", calibrating,

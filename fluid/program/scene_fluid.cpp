@@ -213,6 +213,7 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   s.steps.theta = options.number("theta", s.steps.theta, Range::closed(0.5, 1));
   s.steps.pressure_update =
       static_cast<fluid::PressureUpdate>(options.choice("pressure_update", pressure_update_names, 0));
+  s.steps.convection = options.boolean("convection", true);
   s.body_method = read_body_method(options);
   if (s.steps.pressure_update == fluid::PressureUpdate::exact &&
       std::holds_alternative<fluid::FbmOptions>(s.body_method))
