@@ -95,6 +95,7 @@ class NavierStokes {
   const LocalVelocity& local_velocity() const { return local_; }
   const ViscosityField& viscosity() const { return viscosity_; }
   const FluidProperties& fluid() const { return fluid_; }
+  const TimeStepOptions& time_step_options() const { return controller_.options(); }
   // Assemblies of the projection's operator so far (PressureSolver::assemblies).
   int pressure_assemblies() const { return pressure_solver_.assemblies(); }
 

@@ -117,19 +117,22 @@ struct SpeedRise {
 };
 
 // Moves body 0 from `start` at `velocity` (reached over `rise`), one fluid step of dt at a
-// time, and after step k calls after(k, where the body is now) until it returns false.
+// time, and after step k calls after(k, where the body was when the step's load acted)
+// until it returns false: at the step's end, or at t_n + theta dt where the immersed
+// boundary spreads its force from there (IbmOptions::spread_at_theta).
 template <typename After>
 Towing tow(BodyTreatment& bodies, NavierStokes& flow, const Eigen::Vector3d& start, const Eigen::Vector3d& velocity,
            double dt, After after, SpeedRise rise = {}) {
   Towing out;
+  const auto* ibm = dynamic_cast<const ImmersedBoundary*>(&bodies);
+  const double theta = ibm && ibm->options().spread_at_theta ? flow.time_step_options().theta : 1.0;
   for (int k = 1;; ++k) {
-    const Eigen::Vector3d at = start + rise.distance(k * dt) * velocity;
-    bodies.move(0, geometry::Pose(at, Eigen::Quaterniond::Identity()), rise.speed(k * dt) * velocity,
-                Eigen::Vector3d::Zero());
+    bodies.move(0, geometry::Pose(start + rise.distance(k * dt) * velocity, Eigen::Quaterniond::Identity()),
+                rise.speed(k * dt) * velocity, Eigen::Vector3d::Zero());
     const StepReport report = flow.step(dt, bodies.for_step());
     out.corrections += report.no_slip_corrections;
     out.seconds += report.seconds;
-    if (!after(k, at)) return out;
+    if (!after(k, Eigen::Vector3d(start + rise.distance((k - 1 + theta) * dt) * velocity))) return out;
   }
 }
 

@@ -361,6 +361,8 @@ int main(int argc, char** argv) {
   app.add_option("--no-slip-tolerance", ibm.no_slip_tolerance,
                  "IBM root mean square slip after the corrections, of the largest velocity at the markers");
   app.add_option("--spacing", ibm.spacing, "IBM marker spacing in cell widths");
+  app.add_flag("--spread-at-theta", ibm.spread_at_theta,
+               "IBM: a moving marker spreads its impulse from where it was at t_n + theta dt");
   app.add_option("--boxes", s.boxes, "Hasimoto grids (cells per side; d/h = 0.4 n)");
   app.add_option("--diameters", s.diameters, "DFG cells per diameter");
   app.add_option("--positions", s.positions.count, "Hasimoto sphere positions per grid")->check(CLI::PositiveNumber);

@@ -49,7 +49,8 @@ PetscErrorCode converged(KSP ksp, PetscInt it, PetscReal, KSPConvergedReason* re
 
 }  // namespace
 
-ForcingSystem::ForcingSystem(const MarkerStencils& stencils, std::span<const std::size_t> first_marker)
+ForcingSystem::ForcingSystem(const MarkerStencils& stencils, const MarkerStencils& spreading,
+                             std::span<const std::size_t> first_marker)
     : stencils_(stencils) {
   const MarkerSharing& sharing = stencils.sharing();
   const PetscInt first = sharing.first_root(), roots = sharing.roots();
@@ -59,7 +60,7 @@ ForcingSystem::ForcingSystem(const MarkerStencils& stencils, std::span<const std
   // Every row holds its diagonal, also a value no rank holds (a marker inside another body
   // or outside the domain), whose row is then the identity's. PETSc sums the entries the
   // ranks give a row (a marker on a cut between ranks).
-  std::vector<MarkerStencils::Product> entries = stencils.products();
+  std::vector<MarkerStencils::Product> entries = stencils.products(spreading);
   for (PetscInt r = first; r < first + roots; ++r) entries.push_back({r, r, 0.0});
   std::vector<PetscInt> rows, columns;
   std::vector<PetscScalar> values;
@@ -82,7 +83,7 @@ ForcingSystem::ForcingSystem(const MarkerStencils& stencils, std::span<const std
 
   COSIM_PETSC(KSPCreate(sharing.comm(), &ksp_));
   COSIM_PETSC(KSPSetOptionsPrefix(ksp_, "ibm_forcing_"));
-  COSIM_PETSC(KSPSetType(ksp_, KSPCG));
+  COSIM_PETSC(KSPSetType(ksp_, &spreading == &stencils ? KSPCG : KSPGMRES));
   COSIM_PETSC(KSPSetOperators(ksp_, B_, B_));
   PC pc = nullptr;
   COSIM_PETSC(KSPGetPC(ksp_, &pc));

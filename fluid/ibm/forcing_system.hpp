@@ -2,7 +2,8 @@
 // The forcing's linear system B g = r, B = I S: the impulses g spread and interpolated back
 // at the markers (immersed_boundary.hpp). B is assembled once per step from the markers'
 // kernels (MarkerStencils::products), on the markers' roots (marker_sharing.hpp) laid out
-// by whole bodies, and solved by PETSc's conjugate gradients preconditioned by each body's
+// by whole bodies, and solved by PETSc's conjugate gradients (GMRES where the markers
+// spread from elsewhere than they interpolate, which makes B unsymmetric) preconditioned by each body's
 // block solved exactly (block Jacobi, one block per body, LU): a body alone converges in
 // one iteration and bodies whose kernels overlap (a cloud, a bed) in a few more, where
 // sweeps through the grid preconditioned by B's diagonal did not reach the tolerance in 50
@@ -23,8 +24,11 @@ PetscInt roots_by_body(MPI_Comm comm, std::span<const std::size_t> first_marker)
 
 class ForcingSystem {
  public:
-  // The stencils' sharing laid out by roots_by_body(first_marker) (collective).
-  ForcingSystem(const MarkerStencils& stencils, std::span<const std::size_t> first_marker);
+  // B interpolating with `stencils` what is spread with `spreading` (the same markers;
+  // `stencils` itself for the symmetric system), the stencils' sharing laid out by
+  // roots_by_body(first_marker) (collective).
+  ForcingSystem(const MarkerStencils& stencils, const MarkerStencils& spreading,
+                std::span<const std::size_t> first_marker);
   ~ForcingSystem();
   ForcingSystem(const ForcingSystem&) = delete;
   ForcingSystem& operator=(const ForcingSystem&) = delete;

@@ -318,9 +318,10 @@ void ImmersedBoundary::restore(std::span<const double> state) {
 
 // Markers inside the domain's bounded extent and outside every other body (where bodies
 // touch, the other's surface holds the fluid there), with their kernels on the grid and
-// touching this rank's faces.
-void ImmersedBoundary::collect_active_markers() {
+// touching this rank's faces where they are or `lag` earlier, when they spread.
+void ImmersedBoundary::collect_active_markers(double lag) {
   active_.clear();
+  spreading_.clear();
   std::vector<geometry::Aabb> boxes;
   for (const Entry& e : bodies_) boxes.push_back(geometry::world_aabb(e.body.shape, e.body.pose));
   std::array<Box, 3> owned;
@@ -328,9 +329,34 @@ void ImmersedBoundary::collect_active_markers() {
   const Box cells = grid_.owned(grid_.cell_dm());
   // A face's kernel reaches support_radius widths; a face lies half a cell outside its cell.
   const double reach = support_radius(options_.kernel) + 1;
+  const auto inside_domain = [&](const Eigen::Vector3d& x) {
+    for (int d = 0; d < 3; ++d) {
+      const Axis& axis = grid_.axis(d);
+      if (!axis.periodic() && !(x[d] > axis.lo() && x[d] < axis.hi())) return false;
+    }
+    return true;
+  };
+  // The kernels at x, and whether they meet this rank's faces; false where a kernel is off
+  // the grid.
+  const auto place = [&](const Eigen::Vector3d& x, ActiveMarker& a) {
+    const Point p{x[0], x[1], x[2]};
+    a.position = x;
+    for (std::size_t c = 0; c < 3; ++c) {
+      a.stencil[c] = kernel_stencil(grid_, static_cast<int>(c), options_.kernel, p);
+      if (a.stencil[c].empty()) return false;
+      a.local[c] = a.stencil[c].meets(owned[c]);
+    }
+    return true;
+  };
+  const auto local = [](const ActiveMarker& a) { return a.local[0] || a.local[1] || a.local[2]; };
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    if (!near(grid_, cells, boxes[b], reach)) continue;
     const RigidBody& body = bodies_[b].body;
+    // The box the body sweeps over the lag.
+    geometry::Aabb swept = boxes[b];
+    const double radius = (swept.max - swept.min).norm() / 2;
+    swept.min.array() -= lag * (body.velocity.norm() + body.angular_velocity.norm() * radius);
+    swept.max.array() += lag * (body.velocity.norm() + body.angular_velocity.norm() * radius);
+    if (!near(grid_, cells, swept, reach)) continue;
     std::vector<std::size_t> touching;
     for (std::size_t o = 0; o < bodies_.size(); ++o)
       if (o != b && overlap(boxes[b], boxes[o])) touching.push_back(o);
@@ -339,36 +365,30 @@ void ImmersedBoundary::collect_active_markers() {
       ActiveMarker a;
       a.body = b;
       a.marker = k;
-      a.position = body.pose.to_world(m.position);
-      bool inside_domain = true;
-      for (int d = 0; d < 3; ++d) {
-        const Axis& axis = grid_.axis(d);
-        inside_domain = inside_domain && (axis.periodic() || (a.position[d] > axis.lo() && a.position[d] < axis.hi()));
-      }
-      if (!inside_domain) continue;
+      const Eigen::Vector3d x = body.pose.to_world(m.position);
+      if (!inside_domain(x)) continue;
       const bool covered = std::any_of(touching.begin(), touching.end(), [&](std::size_t o) {
-        return boxes[o].contains(a.position) &&
-               geometry::signed_distance(bodies_[o].body.shape, bodies_[o].body.pose, a.position) < 0;
+        return boxes[o].contains(x) && geometry::signed_distance(bodies_[o].body.shape, bodies_[o].body.pose, x) < 0;
       });
-      if (covered) continue;
-      const Point x{a.position[0], a.position[1], a.position[2]};
-      bool empty = false;
-      for (int c = 0; c < 3; ++c) {
-        a.stencil[static_cast<std::size_t>(c)] = kernel_stencil(grid_, c, options_.kernel, x);
-        empty = empty || a.stencil[static_cast<std::size_t>(c)].empty();
-        a.local[static_cast<std::size_t>(c)] =
-            a.stencil[static_cast<std::size_t>(c)].meets(owned[static_cast<std::size_t>(c)]);
-      }
-      if (empty || !(a.local[0] || a.local[1] || a.local[2])) continue;
+      if (covered || !place(x, a)) continue;
       a.id = first_marker_[b] + k;
+      a.target = body.velocity_at(x);
       // dV = area times the width across the surface.
       const Eigen::Vector3d normal = body.pose.direction_to_world(m.normal);
       double across = 0;
       for (int d = 0; d < 3; ++d)
         across += normal[d] * normal[d] * a.stencil[0].axes[static_cast<std::size_t>(d)].width;
       a.volume = m.area * across;
-      a.target = body.velocity_at(a.position);
+      // Where it spreads from: `lag` back along its velocity, or where it is if that is off
+      // the domain.
+      ActiveMarker earlier = a;
+      if (lag > 0) {
+        const Eigen::Vector3d back = x - lag * a.target;
+        if (!inside_domain(back) || !place(back, earlier)) earlier = a;
+      }
+      if (!local(a) && !local(earlier)) continue;
       active_.push_back(a);
+      spreading_.push_back(earlier);
     }
   }
 }
@@ -401,7 +421,8 @@ double root_mean_square(const MarkerSharing& sharing, const std::vector<double>&
 // B = I S, B_lm = sum_x w_l(x) w_m(x) / dV_x, is symmetric positive definite
 // (forcing_system.hpp), solved from the last step's impulses.
 void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingArrays& arrays) {
-  collect_active_markers();
+  const double lag = options_.spread_at_theta && bodies_move() ? (1 - flow.time_step_options().theta) * dt : 0.0;
+  collect_active_markers(lag);
   update_fractions();
   // A body's inner momentum is carried from step to step; at the first step (or a body's
   // first) it is taken from the flow as it is, with the body where it will be.
@@ -417,14 +438,17 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
   const std::size_t n = active_.size();
   // Built once for the step: the corrections after the projection use the same markers.
   system_.reset();
-  const MarkerStencils& stencils = stencils_.emplace(grid_, active_, roots_by_body(grid_.comm(), first_marker_));
-  const ForcingSystem& system = system_.emplace(stencils, first_marker_);
+  const PetscInt roots = roots_by_body(grid_.comm(), first_marker_);
+  const MarkerStencils& stencils = stencils_.emplace(grid_, active_, roots);
+  spread_stencils_.reset();
+  if (lag > 0) spread_stencils_.emplace(grid_, spreading_, roots);
+  const ForcingSystem& system = system_.emplace(stencils, spreading(), first_marker_);
   std::vector<double> g = last_impulses(stencils.sharing(), dt), residual(3 * n);
   stencils.interpolate(arrays.predicted, residual);
   const double scale = slip_against(active_, stencils.sharing(), residual);
   sweeps_ = system.solve(g, residual, options_.tolerance * scale, options_.sweeps);
   slip_ = stencils.sharing().largest(residual);
-  stencils.spread(arrays.rhs, g);
+  spreading().spread(arrays.rhs, g);
   for (Entry& e : bodies_) e.forcing = e.forcing_moment = Eigen::Vector3d::Zero();
   // Markers that leave this rank, or every body, start afresh when they come back.
   for (const auto& [b, k] : held_) {
@@ -480,6 +504,7 @@ namespace {
 // What the correction's Krylov solve reads through PETSc's callbacks.
 struct Correction {
   const MarkerStencils* stencils;
+  const MarkerStencils* spreading;
   StepResponse* response;
   std::function<std::vector<double>(std::vector<double>&)> precondition;
   std::vector<double> image;
@@ -495,7 +520,7 @@ PetscErrorCode respond(Mat A, Vec x, Vec y) {
     const MarkerSharing& sharing = k->stencils->sharing();
     std::vector<double> impulses(k->image.size());
     sharing.from_roots(x, impulses);
-    k->stencils->spread(k->response->rhs(), impulses);
+    k->spreading->spread(k->response->rhs(), impulses);
     k->stencils->interpolate(k->response->change(), k->image);
     sharing.to_roots(k->image, y);
   } catch (const std::exception& e) {
@@ -553,7 +578,7 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
     system_->solve(g, r, options_.tolerance * scale, options_.sweeps);
     return g;
   };
-  Correction k{&stencils, &response, forcing_solve, std::vector<double>(3 * n)};
+  Correction k{&stencils, &spreading(), &response, forcing_solve, std::vector<double>(3 * n)};
   const PetscInt roots = sharing.roots();
   KrylovObjects o;
   COSIM_PETSC(VecCreateMPI(grid_.comm(), roots, PETSC_DETERMINE, &o.rhs));
@@ -582,12 +607,17 @@ int ImmersedBoundary::correct(const NavierStokes& flow, double dt, StepResponse&
   if (iterations == 0) return 0;
   std::vector<double> impulses_found(3 * n);
   sharing.from_roots(o.g, impulses_found);
-  stencils.spread(response.rhs(), impulses_found);
+  spreading().spread(response.rhs(), impulses_found);
   response.apply();
   add_impulses(impulses_found, dt, sharing);
   slip_in(flow, stencils, residual);
   final_slip_ = sharing.largest(residual);
   return static_cast<int>(iterations) + 1;
+}
+
+bool ImmersedBoundary::bodies_move() const {
+  return std::any_of(bodies_.begin(), bodies_.end(),
+                     [](const Entry& e) { return !e.body.velocity.isZero(0) || !e.body.angular_velocity.isZero(0); });
 }
 
 void ImmersedBoundary::add_impulses(const std::vector<double>& g, double dt, const MarkerSharing& sharing) {

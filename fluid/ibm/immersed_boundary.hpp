@@ -21,6 +21,14 @@
 // work grows with the bodies near it and no ghost layer is needed whatever the kernel's width. The projection then runs
 // over the whole domain with the fluid's own, never-changing operators.
 //
+// With `spread_at_theta` a moving body's markers interpolate where they are at the step's
+// end, X_l (the no-slip holds there), and spread their impulses from where they were at
+// t_n + theta dt, X_l - (1 - theta) dt U_l: the force acts over the step, and the step's
+// viscous terms are centred there, so the fluid a step displaces is the fluid the body
+// swept during it rather than the fluid at its end. B = I S is then unsymmetric and solved
+// by GMRES; at theta = 1 both places are the end (fluid/README.md "Time step of a moving
+// body" measures it).
+//
 // Load on a body: the reaction to the forcing plus the rate of change of the momentum of the
 // fluid inside it, whose inertia is then the fluid's own (Kempe & Froehlich):
 //   F = -rho sum_l F_l dV_l + rho d/dt int alpha u dV,
@@ -83,6 +91,9 @@ struct IbmOptions {
   // that needs them asks for a fixed count.
   int corrections = 0;
   double no_slip_tolerance = 3e-3;
+  // A moving body's markers spread their impulses from where they were at t_n + theta dt
+  // (above) rather than from where they are at the step's end; off by default.
+  bool spread_at_theta = false;
   std::optional<Retraction> retraction;  // unset: calibrated_retraction(kernel)
   double spacing = 1.0;                  // marker spacing in cell widths
 };
@@ -156,8 +167,11 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   // retraction (`options` resolved), the crowded ones thinned out.
   static std::vector<Marker> place_markers(const Axes& axes, const IbmOptions& options, const RigidBody& body,
                                            const BodyDistance& distance, geometry::SampledShapes& sampled);
-  // The markers whose kernels touch this rank's faces, of the bodies near it.
-  void collect_active_markers();
+  // The markers whose kernels touch this rank's faces, of the bodies near it, where they are
+  // (active_) or `lag` earlier, where they spread from (spreading_, the same markers).
+  void collect_active_markers(double lag);
+  bool bodies_move() const;  // any body has a velocity or an angular velocity
+  const MarkerStencils& spreading() const { return spread_stencils_ ? *spread_stencils_ : *stencils_; }
   void update_fractions();  // of every body at this rank's faces, where it is now
   std::vector<double> inner_momenta(const NavierStokes& flow) const;  // 6 per body, summed over ranks
   // The interpolated velocity's misses at the markers (3 per marker), and their scale.
@@ -172,11 +186,13 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   const Grid& grid_;
   IbmOptions options_;
   std::vector<Entry> bodies_;
-  geometry::SampledShapes sampled_;           // the bodies' shapes, sampled once each
-  std::vector<ActiveMarker> active_;          // the markers taking part in the current step here
-  std::optional<MarkerStencils> stencils_;    // their kernels, made by force() for the step
-  std::optional<ForcingSystem> system_;       // and their forcing system
-  std::vector<std::size_t> first_marker_{0};  // body b's markers are numbered from first_marker_[b]
+  geometry::SampledShapes sampled_;                // the bodies' shapes, sampled once each
+  std::vector<ActiveMarker> active_;               // the markers taking part in the current step here
+  std::vector<ActiveMarker> spreading_;            // the same markers where they spread from
+  std::optional<MarkerStencils> stencils_;         // their kernels, made by force() for the step
+  std::optional<MarkerStencils> spread_stencils_;  // the kernels they spread with, if elsewhere
+  std::optional<ForcingSystem> system_;            // and their forcing system
+  std::vector<std::size_t> first_marker_{0};       // body b's markers are numbered from first_marker_[b]
   // The markers whose forces this rank holds from the last step (every marker after restore()).
   std::vector<std::pair<std::size_t, std::size_t>> held_;
   double slip_ = 0, final_slip_ = 0;

@@ -62,9 +62,10 @@ void MarkerStencils::interpolate(const FaceArrays& field, std::vector<double>& o
   sharing_.sum(out);
 }
 
-std::vector<MarkerStencils::Product> MarkerStencils::products() const {
+std::vector<MarkerStencils::Product> MarkerStencils::products(const MarkerStencils& spreading) const {
   const std::size_t values = first_.size() - 1;
-  // The touches of each face, as lists threaded through `next` from the face's `head`.
+  // The spreading's touches of each face, as lists threaded through `next` from the face's
+  // `head`.
   std::array<std::vector<std::ptrdiff_t>, 3> head;
   for (std::size_t c = 0; c < 3; ++c) {
     const Box& b = owned_[c];
@@ -72,11 +73,12 @@ std::vector<MarkerStencils::Product> MarkerStencils::products() const {
                        std::max<PetscInt>(0, (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]))),
                    -1);
   }
-  std::vector<std::ptrdiff_t> next(touches_.size());
-  std::vector<std::size_t> value_of(touches_.size());
+  const std::vector<Touch>& spread = spreading.touches_;
+  std::vector<std::ptrdiff_t> next(spread.size());
+  std::vector<std::size_t> value_of(spread.size());
   for (std::size_t i = 0; i < values; ++i)
-    for (std::size_t t = first_[i]; t < first_[i + 1]; ++t) {
-      auto& h = head[i % 3][static_cast<std::size_t>(touches_[t].offset)];
+    for (std::size_t t = spreading.first_[i]; t < spreading.first_[i + 1]; ++t) {
+      auto& h = head[i % 3][static_cast<std::size_t>(spread[t].offset)];
       next[t] = h;
       h = static_cast<std::ptrdiff_t>(t);
       value_of[t] = i;
@@ -95,7 +97,7 @@ std::vector<MarkerStencils::Product> MarkerStencils::products() const {
           seen[j] = 1;
           met.push_back(j);
         }
-        row[j] += touches_[t].weight * touches_[static_cast<std::size_t>(k)].spread;
+        row[j] += touches_[t].weight * spread[static_cast<std::size_t>(k)].spread;
       }
     std::sort(met.begin(), met.end());  // the columns in order, as the matrix keeps them
     for (std::size_t j : met) {

@@ -39,16 +39,17 @@ class MarkerStencils {
   void spread(const FaceArrays& field, const std::vector<double>& g) const;
   // out_l = sum_x w_l field, summed over the ranks that hold marker l (collective).
   void interpolate(const FaceArrays& field, std::vector<double>& out) const;
-  // The entries of B = I S, interpolating what is spread, that this rank's faces make:
-  // sum_x w_i(x) w_j(x) / dV_x over them for each pair of values of one component it holds,
-  // rows and columns by the values' global numbers, in the order of the values this rank
-  // holds and then of the columns. A value's row of B is the sum of its entries over the
-  // ranks.
+  // The entries of B = I S, interpolating with these kernels what is spread with those of
+  // `spreading` (the same markers, elsewhere: symmetric where they are these), that this
+  // rank's faces make: sum_x w_i(x) s_j(x) / dV_x over them for each pair of values of one
+  // component it holds, rows and columns by the values' global numbers, in the order of the
+  // values this rank holds and then of the columns. A value's row of B is the sum of its
+  // entries over the ranks.
   struct Product {
     PetscInt row, column;
     double value;
   };
-  std::vector<Product> products() const;
+  std::vector<Product> products(const MarkerStencils& spreading) const;
   const MarkerSharing& sharing() const { return sharing_; }
 
  private:

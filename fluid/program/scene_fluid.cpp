@@ -123,8 +123,8 @@ void read_boundaries(const Reader& options, const scene::Domain& domain, FluidSe
   list.finish();
 }
 
-// bodies: {method: ibm, kernel, sweeps, tolerance, retraction, curvature_retraction,
-// marker_spacing} or
+// bodies: {method: ibm, kernel, sweeps, corrections, no_slip_tolerance, tolerance,
+// retraction, curvature_retraction, marker_spacing, spread_at_theta} or
 // {method: staircase, subsamples, surface_offset}; a key of the other method is refused.
 fluid::BodyOptions read_body_method(const Reader& options) {
   const fluid::FbmOptions staircase{.offset = fluid::kCalibratedSurfaceOffset};
@@ -133,9 +133,9 @@ fluid::BodyOptions read_body_method(const Reader& options) {
   if (!options.has("bodies")) return defaults;
   const Reader r = options.map("bodies");
   const bool ibm = r.choice("method", method_names, 0) == 0;
-  for (const char* key : ibm ? std::array{"subsamples", "surface_offset", "", "", "", "", "", ""}
+  for (const char* key : ibm ? std::array{"subsamples", "surface_offset", "", "", "", "", "", "", ""}
                              : std::array{"kernel", "sweeps", "corrections", "no_slip_tolerance", "tolerance",
-                                          "retraction", "curvature_retraction", "marker_spacing"})
+                                          "retraction", "curvature_retraction", "marker_spacing", "spread_at_theta"})
     if (*key && r.has(key)) r.fail(key, std::string("applies to method ") + (ibm ? "staircase" : "ibm") + " only");
   fluid::BodyOptions out;
   if (ibm) {
@@ -149,6 +149,7 @@ fluid::BodyOptions read_body_method(const Reader& options) {
     o.retraction = fluid::Retraction{r.number("retraction", calibrated.constant, Range::closed(0, 2)),
                                      r.number("curvature_retraction", calibrated.curvature, Range::closed(-2, 2))};
     o.spacing = r.number("marker_spacing", o.spacing, Range::closed(0.25, 2));
+    o.spread_at_theta = r.boolean("spread_at_theta", o.spread_at_theta);
     out = o;
   } else {
     fluid::FbmOptions o = staircase;

@@ -1,6 +1,8 @@
 // The immersed boundary's forcing system assembled from the markers' kernels: its product
-// is interpolating what is spread through the grid, and its solve meets the markers'
-// velocities to the tolerance, one iteration for one body with each body solved exactly.
+// is interpolating what is spread through the grid, also where the markers spread from
+// elsewhere than they interpolate (a moving body's, unsymmetric), and its solve meets the
+// markers' velocities to the tolerance, one iteration for one body with each body solved
+// exactly.
 #include <gtest/gtest.h>
 #include <petscdmda.h>
 
@@ -17,7 +19,8 @@ namespace cosim::fluid {
 namespace {
 
 // Markers about a cell apart on two spheres whose kernels overlap, on a grid with walls, a
-// stretched axis and a periodic one: body 0's markers first, then body 1's.
+// stretched axis and a periodic one: body 0's markers first, then body 1's, all moved by
+// `shift`.
 struct Cloud {
   Grid grid{
       PETSC_COMM_SELF,
@@ -25,8 +28,9 @@ struct Cloud {
   std::vector<ActiveMarker> markers;
   std::vector<std::size_t> first_marker{0};
 
-  Cloud() {
-    const Eigen::Vector3d centres[] = {{0.62, 0.71, 0.55}, {1.0, 0.69, 0.61}};
+  explicit Cloud(const Eigen::Vector3d& shift = Eigen::Vector3d::Zero()) {
+    const Eigen::Vector3d centres[] = {Eigen::Vector3d(0.62, 0.71, 0.55) + shift,
+                                       Eigen::Vector3d(1.0, 0.69, 0.61) + shift};
     std::array<Box, 3> owned;
     for (int c = 0; c < 3; ++c) owned[static_cast<std::size_t>(c)] = grid.owned(grid.velocity_dm(c));
     for (const Eigen::Vector3d& centre : centres) {
@@ -81,20 +85,25 @@ std::vector<double> random_values(std::size_t n) {
   return out;
 }
 
-TEST(IbmForcingSystem, ProductIsInterpolatingWhatIsSpread) {
-  Cloud cloud;
-  const MarkerStencils stencils(cloud.grid, cloud.markers, roots_by_body(PETSC_COMM_SELF, cloud.first_marker));
+// Where a moving body's markers spread from: a third of a cell back along each axis.
+const Eigen::Vector3d kEarlier(-0.031, 0.027, -0.034);
+
+void expect_product_is_interpolating_what_is_spread(const Eigen::Vector3d& earlier) {
+  Cloud cloud, spreading_cloud(earlier);
+  const PetscInt roots = roots_by_body(PETSC_COMM_SELF, cloud.first_marker);
+  const MarkerStencils stencils(cloud.grid, cloud.markers, roots);
+  const MarkerStencils spreading(cloud.grid, spreading_cloud.markers, roots);
   const std::size_t n = 3 * cloud.markers.size();
   const std::vector<double> g = random_values(n);
   std::vector<double> through_grid(n);
   {
     Fields f(cloud.grid);
-    stencils.spread(f.a, g);
+    spreading.spread(f.a, g);
     stencils.interpolate(f.a, through_grid);
   }
   std::vector<double> assembled(n, 0.0);
   bool coupled = false;  // the two bodies' kernels overlap
-  for (const MarkerStencils::Product& p : stencils.products()) {
+  for (const MarkerStencils::Product& p : stencils.products(spreading)) {
     assembled[static_cast<std::size_t>(p.row)] += p.value * g[static_cast<std::size_t>(p.column)];
     EXPECT_EQ(p.row % 3, p.column % 3);
     coupled = coupled || (p.row < 84) != (p.column < 84);
@@ -108,10 +117,20 @@ TEST(IbmForcingSystem, ProductIsInterpolatingWhatIsSpread) {
   EXPECT_LT(largest, 1e-13 * scale) << "scale " << scale;
 }
 
-TEST(IbmForcingSystem, SolveMeetsTheTolerance) {
-  Cloud cloud;
-  const MarkerStencils stencils(cloud.grid, cloud.markers, roots_by_body(PETSC_COMM_SELF, cloud.first_marker));
-  const ForcingSystem system(stencils, cloud.first_marker);
+TEST(IbmForcingSystem, ProductIsInterpolatingWhatIsSpread) {
+  expect_product_is_interpolating_what_is_spread(Eigen::Vector3d::Zero());
+}
+
+TEST(IbmForcingSystem, ProductIsInterpolatingWhatIsSpreadFromElsewhere) {
+  expect_product_is_interpolating_what_is_spread(kEarlier);
+}
+
+void expect_solve_meets_the_tolerance(const Eigen::Vector3d& earlier) {
+  Cloud cloud, spreading_cloud(earlier);
+  const PetscInt roots = roots_by_body(PETSC_COMM_SELF, cloud.first_marker);
+  const MarkerStencils stencils(cloud.grid, cloud.markers, roots);
+  const MarkerStencils spreading(cloud.grid, spreading_cloud.markers, roots);
+  const ForcingSystem system(stencils, earlier.isZero() ? stencils : spreading, cloud.first_marker);
   const std::size_t n = 3 * cloud.markers.size();
   // The misses of two bodies moving against each other, rotating.
   std::vector<double> r(n);
@@ -128,7 +147,7 @@ TEST(IbmForcingSystem, SolveMeetsTheTolerance) {
   std::vector<double> image(n);
   {
     Fields f(cloud.grid);
-    stencils.spread(f.a, g);
+    (earlier.isZero() ? stencils : spreading).spread(f.a, g);
     stencils.interpolate(f.a, image);
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -137,13 +156,17 @@ TEST(IbmForcingSystem, SolveMeetsTheTolerance) {
   }
 }
 
+TEST(IbmForcingSystem, SolveMeetsTheTolerance) { expect_solve_meets_the_tolerance(Eigen::Vector3d::Zero()); }
+
+TEST(IbmForcingSystem, SolveMeetsTheToleranceSpreadingFromElsewhere) { expect_solve_meets_the_tolerance(kEarlier); }
+
 TEST(IbmForcingSystem, ABodyAloneSolvedExactlyTakesOneIteration) {
   Cloud cloud;
   cloud.markers.resize(cloud.first_marker[1]);
   cloud.first_marker.pop_back();
   COSIM_PETSC(PetscOptionsSetValue(nullptr, "-ibm_forcing_sub_pc_type", "lu"));
   const MarkerStencils stencils(cloud.grid, cloud.markers, roots_by_body(PETSC_COMM_SELF, cloud.first_marker));
-  const ForcingSystem system(stencils, cloud.first_marker);
+  const ForcingSystem system(stencils, stencils, cloud.first_marker);
   COSIM_PETSC(PetscOptionsClearValue(nullptr, "-ibm_forcing_sub_pc_type"));
   const std::size_t n = 3 * cloud.markers.size();
   std::vector<double> g(n, 0.0), residual = random_values(n);

@@ -76,13 +76,15 @@ TEST(FluidScene, BodyMethodAndItsOptions) {
   EXPECT_EQ(std::get<fluid::IbmOptions>(bao.body_method).tolerance, 1e-8);
   const FluidSetup set = setup_of(oscillating_cylinder_scene(
       "      bodies: {method: ibm, kernel: peskin4, sweeps: 4, retraction: 0.5, curvature_retraction: 0.1, "
-      "marker_spacing: 0.8}\n"));
+      "marker_spacing: 0.8, spread_at_theta: true}\n"));
   const auto& ibm = std::get<fluid::IbmOptions>(set.body_method);
   EXPECT_EQ(ibm.kernel, fluid::DeltaKernel::peskin4);
   EXPECT_EQ(ibm.sweeps, 4);
   EXPECT_EQ(ibm.retraction->constant, 0.5);
   EXPECT_EQ(ibm.retraction->curvature, 0.1);
   EXPECT_EQ(ibm.spacing, 0.8);
+  EXPECT_TRUE(ibm.spread_at_theta);
+  EXPECT_FALSE(std::get<fluid::IbmOptions>(plain.body_method).spread_at_theta);
 }
 
 TEST(FluidScene, PrescribedMotionIsFixedConstantOrSinusoidal) {
