@@ -353,9 +353,10 @@ void ImmersedBoundary::collect_active_markers(double lag) {
     const RigidBody& body = bodies_[b].body;
     // The box the body sweeps over the lag.
     geometry::Aabb swept = boxes[b];
-    const double radius = (swept.max - swept.min).norm() / 2;
-    swept.min.array() -= lag * (body.velocity.norm() + body.angular_velocity.norm() * radius);
-    swept.max.array() += lag * (body.velocity.norm() + body.angular_velocity.norm() * radius);
+    const double sweep =
+        lag * (body.velocity.norm() + body.angular_velocity.norm() * (swept.max - swept.min).norm() / 2);
+    swept.min.array() -= sweep;
+    swept.max.array() += sweep;
     if (!near(grid_, cells, swept, reach)) continue;
     std::vector<std::size_t> touching;
     for (std::size_t o = 0; o < bodies_.size(); ++o)
@@ -418,8 +419,9 @@ double root_mean_square(const MarkerSharing& sharing, const std::vector<double>&
 
 // The markers' impulses g_l = dt F_l dV_l (velocity times volume, per component) are those
 // whose spread brings the interpolated velocity to the body's: B g = U - I[u~], where
-// B = I S, B_lm = sum_x w_l(x) w_m(x) / dV_x, is symmetric positive definite
-// (forcing_system.hpp), solved from the last step's impulses.
+// B = I S, B_lm = sum_x w_l(x) s_m(x) / dV_x with s_m the kernel the marker spreads with,
+// is symmetric positive definite where that is its own (forcing_system.hpp), solved from
+// the last step's impulses.
 void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingArrays& arrays) {
   const double lag = options_.spread_at_theta && bodies_move() ? (1 - flow.time_step_options().theta) * dt : 0.0;
   collect_active_markers(lag);
