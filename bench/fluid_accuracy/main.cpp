@@ -218,12 +218,14 @@ void print_film_range(const std::vector<double>& factors, const std::vector<doub
 // over Stokes's, as the finest step's times one plus the error against it (error_against).
 void wall_approach_study(const std::vector<cosim::fluid::BodyOptions>& methods, int cells_per_diameter,
                          std::vector<double> viscous_numbers, double reynolds, std::vector<double> gaps,
-                         const cosim::fluid::TimeStepOptions& stepping) {
+                         const cosim::fluid::TimeStepOptions& stepping, const WallApproachBox& box) {
   std::sort(viscous_numbers.rbegin(), viscous_numbers.rend());
   std::sort(gaps.rbegin(), gaps.rend());
-  if (gaps.front() >= 3 || gaps.back() <= 0) throw std::invalid_argument("--gaps: between 0 and 3 radii");
-  PetscPrintf(PETSC_COMM_WORLD, "sphere driven towards a wall, d/h %d, Re %g, %s: F / (6 pi mu a U) at gaps of",
-              cells_per_diameter, reynolds, describe(stepping).c_str());
+  if (gaps.front() >= box.start_gap || gaps.back() <= 0)
+    throw std::invalid_argument("--gaps: between 0 and --start-gap radii");
+  PetscPrintf(PETSC_COMM_WORLD,
+              "sphere driven towards a wall from a gap of %.2f radii, d/h %d, Re %g, %s: F / (6 pi mu a U) at gaps of",
+              box.start_gap, cells_per_diameter, reynolds, describe(stepping).c_str());
   for (double g : gaps) PetscPrintf(PETSC_COMM_WORLD, " %.2f", g);
   PetscPrintf(PETSC_COMM_WORLD, " radii (Brenner's:");
   for (double g : gaps) PetscPrintf(PETSC_COMM_WORLD, " %.4f", brenner_wall_factor(g));
@@ -232,7 +234,7 @@ void wall_approach_study(const std::vector<cosim::fluid::BodyOptions>& methods, 
   for (const auto& method : methods) {
     std::vector<WallApproach> runs;
     for (double v : viscous_numbers)
-      runs.push_back(sphere_approaching_a_wall(method, cells_per_diameter, v, reynolds, gaps, stepping));
+      runs.push_back(sphere_approaching_a_wall(method, cells_per_diameter, v, reynolds, gaps, stepping, box));
     const WallApproach& finest = runs.back();
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const WallApproach& r = runs[i];
@@ -398,7 +400,10 @@ int main(int argc, char** argv) {
                  "A sphere driven towards a no-slip wall instead (at --reynolds, --diameter cells across), at these "
                  "time steps as nu dt / h^2");
   std::vector<double> gaps{2, 1, 0.5, 0.25};
-  app.add_option("--gaps", gaps, "The wall approach's gaps to the wall in radii (below 3, where it starts)");
+  app.add_option("--gaps", gaps, "The wall approach's gaps to the wall in radii (below --start-gap)");
+  WallApproachBox box;
+  app.add_option("--start-gap", box.start_gap, "The wall approach's gap at the start, from rest, in radii")
+      ->check(CLI::Range(0.5, 5.0));
   int diameter = 6;
   app.add_option("--diameter", diameter, "The towed sphere's and the wall approach's cells per diameter")
       ->check(CLI::Range(2, 32));
@@ -436,7 +441,7 @@ int main(int argc, char** argv) {
     else if (!duct.empty())
       duct_study(s.methods, duct, reynolds);
     else if (!wall.empty())
-      wall_approach_study(s.methods, diameter, wall, reynolds, gaps, moving_steps);
+      wall_approach_study(s.methods, diameter, wall, reynolds, gaps, moving_steps, box);
     else if (!towed.empty())
       towed_study(s.methods, diameter, towed, reynolds, rise, moving_steps);
     else if (oscillating)
