@@ -18,6 +18,7 @@ bool same_shape(const Shape& a, const Shape& b) {
           return s.radius() == t.radius() && s.height() == t.height();
         if constexpr (std::is_same_v<S, ConvexHull> || std::is_same_v<S, TriangleMesh>)
           return &s.vertices() == &t.vertices();
+        if constexpr (std::is_same_v<S, Container>) return same_shape(free_inside(s), free_inside(t));
         return false;  // a half-space has no surface to sample
       },
       a);

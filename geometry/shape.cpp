@@ -13,16 +13,19 @@ constexpr bool kind_is = std::is_same_v<std::variant_alternative_t<static_cast<s
 static_assert(kind_is<ShapeKind::Sphere, Sphere> && kind_is<ShapeKind::Ellipsoid, Ellipsoid> &&
               kind_is<ShapeKind::Box, Box> && kind_is<ShapeKind::Cylinder, Cylinder> &&
               kind_is<ShapeKind::Capsule, Capsule> && kind_is<ShapeKind::HalfSpace, HalfSpace> &&
-              kind_is<ShapeKind::ConvexHull, ConvexHull> && kind_is<ShapeKind::TriangleMesh, TriangleMesh>);
+              kind_is<ShapeKind::ConvexHull, ConvexHull> && kind_is<ShapeKind::TriangleMesh, TriangleMesh> &&
+              kind_is<ShapeKind::Container, Container>);
 
-// Applies f to every kind that has a volume; a half-space gets an error naming `what`.
+// Applies f to every kind that has a volume; a half-space or a container gets an error
+// naming `what`.
 template <class F>
 auto visit_bounded(const Shape& shape, const char* what, F f) {
   using Result = decltype(f(std::declval<const Sphere&>()));
   return std::visit(
       [&](const auto& s) -> Result {
-        if constexpr (std::is_same_v<std::decay_t<decltype(s)>, HalfSpace>)
-          throw std::invalid_argument(std::string("half-space: infinite, it has no ") + what +
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, HalfSpace> || std::is_same_v<S, Container>)
+          throw std::invalid_argument(std::string(name(kind(shape))) + ": infinite, it has no " + what +
                                       "; make it a fixed body");
         else
           return f(s);
@@ -50,12 +53,22 @@ std::string_view name(ShapeKind kind) {
       return "convex hull";
     case ShapeKind::TriangleMesh:
       return "triangle mesh";
+    case ShapeKind::Container:
+      return "container";
   }
   return "unknown shape";
 }
 
-bool is_convex(const Shape& shape) { return kind(shape) != ShapeKind::TriangleMesh; }
-bool is_bounded(const Shape& shape) { return kind(shape) != ShapeKind::HalfSpace; }
+bool is_convex(const Shape& shape) {
+  return kind(shape) != ShapeKind::TriangleMesh && kind(shape) != ShapeKind::Container;
+}
+bool is_bounded(const Shape& shape) {
+  return kind(shape) != ShapeKind::HalfSpace && kind(shape) != ShapeKind::Container;
+}
+
+Shape free_inside(const Container& container) {
+  return std::visit([](const auto& s) { return Shape(s); }, container.inside());
+}
 
 double volume(const Shape& shape) {
   return visit_bounded(shape, "volume", [](const auto& s) { return s.volume(); });

@@ -247,6 +247,12 @@ std::vector<int> nearest(const std::vector<Candidate>& candidates, const std::ve
 // The lattice's candidates around the shape, with `lattice.width` set to the spacing.
 std::vector<Candidate> all_candidates(const Shape& shape, const Pose& pose, double spacing, Lattice& lattice) {
   if (!(spacing > 0)) throw std::invalid_argument("surface sampling: the spacing must be > 0");
+  // A container's surface is its inside's, facing inwards.
+  if (const auto* container = std::get_if<Container>(&shape)) {
+    std::vector<Candidate> out = all_candidates(free_inside(*container), pose, spacing, lattice);
+    for (Candidate& c : out) c.normal = -c.normal;
+    return out;
+  }
   if (!is_bounded(shape)) throw std::invalid_argument("surface sampling: a half-space has no bounded surface");
   const Aabb box = world_aabb(shape, pose);
   lattice.width = spacing;

@@ -5,7 +5,8 @@
 // (plot.py draws error against wall time). --oscillating runs the oscillating-cylinder
 // study instead (--csv: the force histories, plot_oscillating.py), --towed the time-step
 // study of a moving sphere, --wall-approach that of a sphere closing on a wall, --duct the
-// settling sphere's tank seen from the sphere. Serial
+// settling sphere's tank seen from the sphere, --pipe Poiseuille's flow in a round pipe
+// made by a container. Serial
 // or under mpirun (PETSC_COMM_WORLD).
 #include <CLI/CLI.hpp>
 #include <petscsys.h>
@@ -23,6 +24,7 @@
 
 #include "bench/fluid_accuracy/cases.hpp"
 #include "bench/fluid_accuracy/oscillating.hpp"
+#include "bench/fluid_accuracy/round_pipe.hpp"
 
 using namespace cosim::bench;
 
@@ -273,6 +275,22 @@ void duct_study(const std::vector<cosim::fluid::BodyOptions>& methods, const std
     }
 }
 
+// Poiseuille's flow in a round pipe made by a container, per kernel and grid.
+void pipe_study(const std::vector<int>& diameters) {
+  PetscPrintf(PETSC_COMM_WORLD, "round pipe (a container), axis (0.37, 0.61) h off the grid's lines\n");
+  PetscPrintf(PETSC_COMM_WORLD, "| kernel | D/h | flow rate | profile (of u_max) | cells | steps | wall [s] |\n");
+  PetscPrintf(PETSC_COMM_WORLD, "|---|---|---|---|---|---|---|\n");
+  using cosim::fluid::DeltaKernel;
+  for (DeltaKernel kernel : {DeltaKernel::roma3, DeltaKernel::peskin4, DeltaKernel::bao6})
+    for (int n : diameters) {
+      // Room outside the pipe for the solid held beyond the widest kernel.
+      const PipeFlow r = round_pipe(n, {0.37, 0.61}, 14, kernel);
+      PetscPrintf(PETSC_COMM_WORLD, "| %s | %d | %+.2f %% | %.2f %% | %ld | %d | %.1f |\n",
+                  std::string(name(kernel)).c_str(), n, 100 * r.flow_rate_error, 100 * r.profile_error, r.cells,
+                  r.steps, r.seconds);
+    }
+}
+
 // The Galilean check at each time step: the towed sphere's drag against the fixed one's.
 void moving_frame_study(const std::vector<cosim::fluid::BodyOptions>& methods, int n,
                         const std::vector<double>& cells_per_step, double reynolds) {
@@ -411,6 +429,10 @@ int main(int argc, char** argv) {
   app.add_option("--duct", duct,
                  "ten Cate's tank seen from the sphere instead (held in a square duct whose walls slide past, at "
                  "--reynolds), at these cells per diameter (multiples of 3)");
+  std::vector<int> pipe;
+  app.add_option("--pipe", pipe,
+                 "Poiseuille's flow in a round pipe made by a container instead, at these cells per diameter, every "
+                 "kernel");
   CLI11_PARSE(app, argc, argv);
   if (theta) s.stepping.theta = moving_steps.theta = *theta;
   if (retraction >= 0) ibm.retraction = cosim::fluid::Retraction{retraction, curvature};
@@ -438,6 +460,8 @@ int main(int argc, char** argv) {
       moving_frame_study(s.methods, s.boxes.front(), moving, reynolds);
     else if (calibrating)
       calibrate(s.boxes, ibm, s);
+    else if (!pipe.empty())
+      pipe_study(pipe);
     else if (!duct.empty())
       duct_study(s.methods, duct, reynolds);
     else if (!wall.empty())

@@ -8,6 +8,7 @@
 #include "coupler/scene/cell_grid.hpp"
 #include "coupler/scene/extent.hpp"
 #include "coupler/scene/names.hpp"
+#include "coupler/scene/room.hpp"
 #include "coupler/scene/sections.hpp"
 
 namespace cosim::scene {
@@ -64,6 +65,11 @@ Shape read_shape(const Reader& r, bool fixed, const fs::path& dir) {
       s.file = existing_file(r, dir);
       break;
   }
+  s.container = r.boolean("container", false);
+  if (s.container && (s.type == ShapeType::Plane || s.type == ShapeType::Mesh))
+    r.fail("container", "holds bodies in the inside of a sphere, ellipsoid, box, cylinder or capsule, not of a " +
+                            std::string(s.type == ShapeType::Plane ? "plane" : "mesh"));
+  if (s.container && !fixed) r.fail("container", "a container must be a fixed body (add fixed: true)");
   r.finish();
   return s;
 }
@@ -132,6 +138,24 @@ void check_overlaps(const std::vector<Reader>& items, const std::vector<Body>& b
       items[entry_of[j]].fail(generated[j] ? "generate" : "position", problem);
     }
     grid.add(solids[n]);
+  }
+}
+
+// A container's outside is solid: every other body (planes aside) must start inside each
+// container, or the contacts would throw it through the wall.
+void check_inside_containers(const std::vector<Reader>& items, const std::vector<Body>& bodies,
+                             const std::vector<std::size_t>& entry_of, const std::vector<bool>& generated) {
+  for (const Body& c : bodies) {
+    if (!c.shape.container) continue;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const Body& b = bodies[i];
+      if (b.shape.container || b.shape.type == ShapeType::Plane) continue;
+      if (const double gap = room(c, b.position); gap < 0)
+        items[entry_of[i]].fail(generated[i] ? "generate" : "position",
+                                fmt::format("body '{}' at {} is outside container '{}' (its wall by {:g} m): a "
+                                            "container's outside is solid",
+                                            b.name, text(b.position), c.name, -gap));
+    }
   }
 }
 
@@ -207,6 +231,7 @@ Bodies read_bodies(const std::vector<Reader>& items, const Domain& domain, const
     }
   }
   check_overlaps(items, bodies, entry_of, generated);
+  check_inside_containers(items, bodies, entry_of, generated);
   return out;
 }
 

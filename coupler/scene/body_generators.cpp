@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <system_error>
@@ -10,6 +11,7 @@
 #include "coupler/scene/names.hpp"
 #include "coupler/scene/packing.hpp"
 #include "coupler/scene/pose_file.hpp"
+#include "coupler/scene/room.hpp"
 #include "coupler/scene/sections.hpp"
 
 namespace cosim::scene {
@@ -115,6 +117,25 @@ std::vector<Vec3> lattice_centres(const Reader& r, const Body& common, const Dom
   return lattice(axes, jitter, random);
 }
 
+// The region's volume within the containers among `earlier` (all of it without one),
+// from the midpoints of a 64^3 lattice over it.
+double free_volume(const Domain& region, std::span<const Body> earlier) {
+  const double box =
+      (region.max[0] - region.min[0]) * (region.max[1] - region.min[1]) * (region.max[2] - region.min[2]);
+  if (std::none_of(earlier.begin(), earlier.end(), [](const Body& b) { return b.shape.container; })) return box;
+  constexpr int n = 64;
+  long inside = 0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const std::array<int, 3> at{i, j, k};
+        Vec3 x{};
+        for (int d = 0; d < 3; ++d) x[d] = region.min[d] + (at[d] + 0.5) / n * (region.max[d] - region.min[d]);
+        inside += room(earlier, x) > 0;
+      }
+  return box * static_cast<double>(inside) / (n * n * n);
+}
+
 std::vector<Vec3> random_centres(const Reader& r, const Body& common, const GeneratorContext& c) {
   const Domain region = read_region(r, c.domain);
   const Solid body = *solid_of(common.shape, common.orientation, {});
@@ -126,8 +147,7 @@ std::vector<Vec3> random_centres(const Reader& r, const Body& common, const Gene
       r.fail("region", fmt::format("is {:g} wide on {}, less than a body ({:g})", region.max[k] - region.min[k],
                                    axis_names[static_cast<std::size_t>(k)], 2 * body.half[k]));
   }
-  const double region_volume =
-      (region.max[0] - region.min[0]) * (region.max[1] - region.min[1]) * (region.max[2] - region.min[2]);
+  const double region_volume = free_volume(region, c.earlier);
   const double body_volume = volume(common.shape);
   const bool has_count = r.has("count"), has_fraction = r.has("solid_fraction");
   if (has_count == has_fraction)
@@ -147,7 +167,8 @@ std::vector<Vec3> random_centres(const Reader& r, const Body& common, const Gene
   std::vector<Solid> obstacles;
   for (const Body& b : c.earlier)
     if (const auto s = solid_of(b)) obstacles.push_back(*s);
-  std::vector<Vec3> placed = random_addition(body, centres, count, obstacles, attempts, random);
+  const auto room_left = [&](const Vec3& x) { return room(c.earlier, x); };
+  std::vector<Vec3> placed = random_addition(body, centres, count, obstacles, room_left, attempts, random);
   if (placed.size() < count)
     r.fail(key, fmt::format("random addition placed only {} of {} bodies (solid fraction {:.3g}); it stops when no "
                             "room is left or {} draws in a row are refused, and jams near 0.38 for spheres, lower "

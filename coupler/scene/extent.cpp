@@ -13,6 +13,7 @@ Vec3 half_extent(const Shape& shape, const Quat& q) {
   const Eigen::Vector3d axis = R.col(2);  // cylinder and capsule axis in the world
   const Eigen::Vector3d half_axis = 0.5 * shape.height * axis.cwiseAbs();
   Eigen::Vector3d h = Eigen::Vector3d::Zero();
+  if (shape.container) return {0, 0, 0};
   switch (shape.type) {
     case ShapeType::Sphere:
       h.setConstant(shape.radius);
@@ -37,6 +38,7 @@ Vec3 half_extent(const Shape& shape, const Quat& q) {
 }
 
 double bounding_radius(const Shape& shape) {
+  if (shape.container) return 0.0;
   switch (shape.type) {
     case ShapeType::Sphere:
       return shape.radius;
@@ -58,6 +60,7 @@ double bounding_radius(const Shape& shape) {
 double volume(const Shape& shape) {
   using std::numbers::pi;
   const double ball = 4.0 / 3.0 * pi * shape.radius * shape.radius * shape.radius;
+  if (shape.container) return 0.0;
   switch (shape.type) {
     case ShapeType::Sphere:
       return ball;

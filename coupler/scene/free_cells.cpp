@@ -85,4 +85,23 @@ void FreeCells::exclude(const Solid& body, const Solid& placed) {
       }
 }
 
+void FreeCells::keep_within(const Solid& body, const std::function<double(const Vec3&)>& room) {
+  // The room changes by no more than the distance moved: a cell whose centre has less
+  // than the body's radius less half the cell's diagonal has no place for it.
+  const double half_diagonal = 0.5 * std::hypot(edge_[0], edge_[1], edge_[2]);
+  std::vector<std::uint32_t> kept;
+  for (std::uint32_t c : free_) {
+    const Index at = index(c);
+    Vec3 centre{};
+    for (int k = 0; k < 3; ++k) centre[k] = origin_[k] + (static_cast<double>(at[k]) + 0.5) * edge_[k];
+    if (room(centre) + half_diagonal < body.radius) {
+      slot_[c] = none;
+      continue;
+    }
+    slot_[c] = static_cast<std::uint32_t>(kept.size());
+    kept.push_back(c);
+  }
+  free_ = std::move(kept);
+}
+
 }  // namespace cosim::scene

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "coupler/scene/scene.hpp"
@@ -26,6 +27,9 @@ class FreeCells {
   Vec3 draw(Uniform& random) const;  // uniformly from the free cells
   // Drops the cells where `body` centred anywhere would overlap `placed`.
   void exclude(const Solid& body, const Solid& placed);
+  // Drops the cells where `body` centred anywhere would reach beyond a wall: `room(x)` is
+  // the distance from x to the nearest wall, positive on the free side.
+  void keep_within(const Solid& body, const std::function<double(const Vec3&)>& room);
 
  private:
   using Index = std::array<std::int64_t, 3>;

@@ -1,12 +1,15 @@
 #include "coupler/scene/geometry_shape.hpp"
 
 #include <stdexcept>
+#include <type_traits>
 
 #include "coupler/scene/eigen.hpp"
 
 namespace cosim::scene {
 
-geometry::Shape shape_of(const Shape& s) {
+namespace {
+
+geometry::Shape solid_shape(const Shape& s) {
   switch (s.type) {
     case ShapeType::Sphere:
       return geometry::Sphere(s.radius);
@@ -24,6 +27,21 @@ geometry::Shape shape_of(const Shape& s) {
       return geometry::TriangleMesh::from_file(s.file);
   }
   throw std::invalid_argument("unknown shape type");
+}
+
+}  // namespace
+
+geometry::Shape shape_of(const Shape& s) {
+  if (!s.container) return solid_shape(s);
+  return std::visit(
+      [](auto&& inside) -> geometry::Shape {
+        using T = std::decay_t<decltype(inside)>;
+        if constexpr (std::is_constructible_v<geometry::Container::Inside, T>)
+          return geometry::Container(std::move(inside));
+        else
+          throw std::invalid_argument("a container's shape must be convex and bounded");
+      },
+      solid_shape(s));
 }
 
 Eigen::Vector3d com_shift(const geometry::Shape& shape) {

@@ -20,7 +20,8 @@ std::vector<Vec3> lattice(const std::array<LatticeAxis, 3>& axes, const Vec3& ji
 }
 
 std::vector<Vec3> random_addition(const Solid& body, const Domain& centres, std::size_t count,
-                                  std::span<const Solid> obstacles, int attempts, Uniform& random) {
+                                  std::span<const Solid> obstacles, const std::function<double(const Vec3&)>& room,
+                                  int attempts, Uniform& random) {
   // Cells one body wide: a query looks at no more than 2 x 2 x 2 cells.
   CellGrid grid(2 * body.radius);
   // Free cells an eighth of a body wide: small enough that one body rules out most cells
@@ -31,12 +32,13 @@ std::vector<Vec3> random_addition(const Solid& body, const Domain& centres, std:
     grid.add(o);
     free.exclude(body, o);
   }
+  free.keep_within(body, room);
   std::vector<Vec3> placed;
   placed.reserve(count);
   for (int refused = 0; placed.size() < count && refused < attempts && !free.empty();) {
     Solid s = body;
     s.centre = free.draw(random);
-    if (grid.first_overlap(s)) {
+    if (room(s.centre) < body.radius || grid.first_overlap(s)) {
       ++refused;
       continue;
     }

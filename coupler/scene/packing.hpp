@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -26,9 +27,11 @@ std::vector<Vec3> lattice(const std::array<LatticeAxis, 3>& axes, const Vec3& ji
 
 // Random sequential addition: up to `count` copies of `body` (its solid about the origin),
 // each at a centre drawn uniformly from the box `centres` and kept if it overlaps neither
-// an obstacle nor a copy kept before. Gives up once `attempts` draws in a row were
-// refused, and then returns fewer than `count` centres.
+// an obstacle nor a copy kept before, and if its bounding sphere has room (room.hpp) within
+// the containers: `room(x)`, the distance from x to the nearest container's wall. Gives up
+// once `attempts` draws in a row were refused, and then returns fewer than `count` centres.
 std::vector<Vec3> random_addition(const Solid& body, const Domain& centres, std::size_t count,
-                                  std::span<const Solid> obstacles, int attempts, Uniform& random);
+                                  std::span<const Solid> obstacles, const std::function<double(const Vec3&)>& room,
+                                  int attempts, Uniform& random);
 
 }  // namespace cosim::scene

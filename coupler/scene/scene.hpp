@@ -92,6 +92,9 @@ struct Shape {
   double height = 0.0;         // cylinder, capsule: length of the axis (body z)
   Vec3 normal{0, 0, 1};        // plane: outward normal, through the body position
   std::filesystem::path file;  // mesh: STL or OBJ, resolved against the scene dir
+  // The body is the solid outside the shape, whose inside holds the fluid and the other
+  // bodies (a round column, a pipe); convex shapes of a fixed body only.
+  bool container = false;
   bool operator==(const Shape&) const = default;
 };
 

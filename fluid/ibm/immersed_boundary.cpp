@@ -142,9 +142,23 @@ void thin_out(std::vector<Marker>& markers, double gap) {
   markers = std::move(kept);
 }
 
-void require_bounded(const RigidBody& body) {
-  if (!geometry::is_bounded(body.shape))
+void require_body(const RigidBody& body) {
+  if (geometry::kind(body.shape) == geometry::ShapeKind::HalfSpace)
     throw std::invalid_argument("immersed boundary: a half-space is not a body (use a wall boundary)");
+}
+
+// Whether body o may cover a marker of body b: their boxes overlap, or for a container
+// (whose box is everything), the other comes within its bounding radius of the wall.
+bool may_cover(const RigidBody& b, const geometry::Aabb& box_b, const RigidBody& o, const geometry::Aabb& box_o) {
+  const auto near_wall = [](const RigidBody& container, const RigidBody& other) {
+    return !geometry::is_bounded(other.shape) ||
+           geometry::signed_distance(container.shape, container.pose, other.pose.position()) +
+                   geometry::bounding_radius(other.shape) >=
+               0;
+  };
+  if (geometry::kind(b.shape) == geometry::ShapeKind::Container) return near_wall(b, o);
+  if (geometry::kind(o.shape) == geometry::ShapeKind::Container) return near_wall(o, b);
+  return overlap(box_b, box_o);
 }
 
 IbmOptions resolved(IbmOptions options) {
@@ -157,11 +171,11 @@ IbmOptions resolved(IbmOptions options) {
 Retraction calibrated_retraction(DeltaKernel kernel) {
   switch (kernel) {
     case DeltaKernel::roma3:
-      return {0.2985, 0.2274};
+      return {0.2985, 0.2274, -0.796};
     case DeltaKernel::peskin4:
-      return {0.4363, 0.4458};
+      return {0.4363, 0.4458, -1.439};
     default:
-      return {0.3969, 0.8484};
+      return {0.3969, 0.8484, -2.852};
   }
 }
 
@@ -191,14 +205,14 @@ std::size_t ImmersedBoundary::marker_count(const Axes& axes, const IbmOptions& o
   geometry::SampledShapes sampled;
   std::size_t count = 0;
   for (const RigidBody& body : bodies) {
-    require_bounded(body);
+    require_body(body);
     count += place_markers(axes, placing, body, BodyDistance(axes, body), sampled).size();
   }
   return count;
 }
 
 std::size_t ImmersedBoundary::add(RigidBody body) {
-  require_bounded(body);
+  require_body(body);
   Entry e(grid_, std::move(body));
   e.markers = place_markers(grid_.axes(), options_, e.body, e.distance, sampled_);
   first_marker_.push_back(first_marker_.back() + e.markers.size());
@@ -226,7 +240,8 @@ std::vector<ImmersedBoundary::Marker> ImmersedBoundary::place_markers(const Axes
     const geometry::SurfaceSample& s = samples[i];
     const double kappa =
         flat < 0 ? curvature_in_space(body.shape, body.pose, s.point, h) : curvature_in_plane(samples, i, h);
-    const double depth = h * (options.retraction->constant + options.retraction->curvature * h * kappa);
+    const Retraction& law = *options.retraction;
+    const double depth = h * (law.constant + (kappa < 0 ? law.concave : law.curvature) * h * kappa);
     const Eigen::Vector3d x = s.point - depth * s.normal;
     const double inside = distance.at(body, x);
     if (!(inside < 0)) continue;
@@ -329,10 +344,15 @@ void ImmersedBoundary::collect_active_markers(double lag) {
   const Box cells = grid_.owned(grid_.cell_dm());
   // A face's kernel reaches support_radius widths; a face lies half a cell outside its cell.
   const double reach = support_radius(options_.kernel) + 1;
-  const auto inside_domain = [&](const Eigen::Vector3d& x) {
+  // On a periodic axis a bounded body's markers beyond the domain stand for the part of it
+  // that wraps round; a container (a pipe along the axis) is longer than the period, and
+  // only its markers within one period are its own.
+  const auto inside_domain = [&](const Eigen::Vector3d& x, bool bounded) {
     for (int d = 0; d < 3; ++d) {
       const Axis& axis = grid_.axis(d);
-      if (!axis.periodic() && !(x[d] > axis.lo() && x[d] < axis.hi())) return false;
+      if (axis.degenerate() || (axis.periodic() && bounded)) continue;
+      if (axis.periodic() ? !(x[d] >= axis.lo() && x[d] < axis.hi()) : !(x[d] > axis.lo() && x[d] < axis.hi()))
+        return false;
     }
     return true;
   };
@@ -351,23 +371,25 @@ void ImmersedBoundary::collect_active_markers(double lag) {
   const auto local = [](const ActiveMarker& a) { return a.local[0] || a.local[1] || a.local[2]; };
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const RigidBody& body = bodies_[b].body;
+    const bool bounded = geometry::is_bounded(body.shape);
     // The box the body sweeps over the lag.
     geometry::Aabb swept = boxes[b];
-    const double sweep =
-        lag * (body.velocity.norm() + body.angular_velocity.norm() * (swept.max - swept.min).norm() / 2);
+    // A container's box is infinite: spin times its size would be 0 x inf.
+    const double spin = body.angular_velocity.norm();
+    const double sweep = lag * (body.velocity.norm() + (spin > 0 ? spin * (swept.max - swept.min).norm() / 2 : 0.0));
     swept.min.array() -= sweep;
     swept.max.array() += sweep;
     if (!near(grid_, cells, swept, reach)) continue;
     std::vector<std::size_t> touching;
     for (std::size_t o = 0; o < bodies_.size(); ++o)
-      if (o != b && overlap(boxes[b], boxes[o])) touching.push_back(o);
+      if (o != b && may_cover(body, boxes[b], bodies_[o].body, boxes[o])) touching.push_back(o);
     for (std::size_t k = 0; k < bodies_[b].markers.size(); ++k) {
       const Marker& m = bodies_[b].markers[k];
       ActiveMarker a;
       a.body = b;
       a.marker = k;
       const Eigen::Vector3d x = body.pose.to_world(m.position);
-      if (!inside_domain(x)) continue;
+      if (!inside_domain(x, bounded)) continue;
       const bool covered = std::any_of(touching.begin(), touching.end(), [&](std::size_t o) {
         return boxes[o].contains(x) && geometry::signed_distance(bodies_[o].body.shape, bodies_[o].body.pose, x) < 0;
       });
@@ -385,7 +407,7 @@ void ImmersedBoundary::collect_active_markers(double lag) {
       ActiveMarker earlier = a;
       if (lag > 0) {
         const Eigen::Vector3d back = x - lag * a.target;
-        if (!inside_domain(back) || !place(back, earlier)) earlier = a;
+        if (!inside_domain(back, true) || !place(back, earlier)) earlier = a;
       }
       if (!local(a) && !local(earlier)) continue;
       active_.push_back(a);
@@ -463,6 +485,22 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
     held_.emplace_back(a.body, a.marker);
   }
   add_impulses(g, dt, stencils.sharing());
+  hold_solid(dt, arrays);
+}
+
+void ImmersedBoundary::hold_solid(double dt, const ForcingArrays& arrays) {
+  for (Entry& e : bodies_)
+    for (int c = 0; c < 3; ++c)
+      for (const Index& p : e.held[static_cast<std::size_t>(c)]) {
+        const Point at = grid_.position(c, p);
+        const Eigen::Vector3d x(at[0], at[1], at[2]);
+        const double push = e.body.velocity_at(x)[c] - arrays.predicted[static_cast<std::size_t>(c)][p[2]][p[1]][p[0]];
+        arrays.rhs[static_cast<std::size_t>(c)][p[2]][p[1]][p[0]] += push;
+        Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
+        impulse[c] = push * grid_.face_volume(c, p) / dt;
+        e.forcing += impulse;
+        e.forcing_moment += (x - e.body.pose.position()).cross(impulse);
+      }
 }
 
 // A rank that did not hold a marker in the last step does not know its force: the holders
@@ -661,9 +699,32 @@ void ImmersedBoundary::finish_step(const NavierStokes& flow, double dt) {
 
 void ImmersedBoundary::update_fractions() {
   for (Entry& e : bodies_) {
+    // A body where it was (a fixed one: every step, a container over the whole domain) has
+    // the fractions it had.
+    const geometry::Pose& now = e.body.pose;
+    if (e.fraction_pose && e.fraction_pose->position() == now.position() &&
+        e.fraction_pose->orientation().coeffs() == now.orientation().coeffs())
+      continue;
+    e.fraction_pose = now;
     e.fraction.clear();
     for (int c = 0; c < 3; ++c)
       e.fraction.push_back(volume_fraction(grid_, c, e.body, e.distance, grid_.owned(grid_.velocity_dm(c))));
+    if (geometry::is_bounded(e.body.shape)) continue;
+    // Beyond the markers' kernels: their depth and reach, and half a face's width.
+    double widest = 0;
+    for (int d = 0; d < 3; ++d)
+      if (!grid_.axis(d).degenerate()) widest = std::max(widest, grid_.axis(d).max_width());
+    const double beyond = (options_.retraction->constant + support_radius(options_.kernel) + 0.5) * widest;
+    for (int c = 0; c < 3; ++c) {
+      std::vector<Index>& held = e.held[static_cast<std::size_t>(c)];
+      held.clear();
+      for_each_index(grid_.owned(grid_.velocity_dm(c)), [&](const Index& p) {
+        const Point at = grid_.position(c, p);
+        if (!grid_.on_boundary(c, p) &&
+            geometry::signed_distance(e.body.shape, e.body.pose, Eigen::Vector3d(at[0], at[1], at[2])) < -beyond)
+          held.push_back(p);
+      });
+    }
   }
 }
 

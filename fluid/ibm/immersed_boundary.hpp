@@ -62,15 +62,20 @@ namespace cosim::fluid {
 // has more room than its inner one. So a marker moves in by
 //   h (constant + curvature h kappa),   kappa = kappa_1 + kappa_2,
 // the sum of the principal curvatures where it sits (2 / r on a sphere, 1 / r on a
-// cylinder, the section's curvature on a two-dimensional grid).
+// cylinder, the section's curvature on a two-dimensional grid). Where the surface is
+// concave (kappa < 0: a container's wall, a hollow in a mesh) the no-slip surface lies
+// further into the fluid the more it curves, not less, so there the slope is `concave`.
 struct Retraction {
   double constant = 0;
   double curvature = 0;
+  double concave = 0;
 };
 
 // Per kernel, the retraction calibrated on the Hasimoto array (`fluid_accuracy
-// --calibrate`): for each kernel both parts, zeroing the mean error over sphere positions
-// at d/h = 8 and 12 (the wider kernels' markers go deeper, as their shell is thicker).
+// --calibrate`): for each kernel the constant and the convex slope, zeroing the mean error
+// over sphere positions at d/h = 8 and 12 (the wider kernels' markers go deeper, as their
+// shell is thicker); the concave slope zeroes the flow rate of Poiseuille's flow in a round
+// pipe at D/h 20 (tests/fluid/ibm_container_test.cpp, which validates it at D/h 30 and 40).
 Retraction calibrated_retraction(DeltaKernel kernel);
 
 struct IbmOptions {
@@ -159,7 +164,9 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
     std::array<double, 6> inner{};  // int alpha u dV, int alpha (x - x_c) x u dV
     bool inner_known = false;
     Eigen::Vector3d forcing = Eigen::Vector3d::Zero(), forcing_moment = Eigen::Vector3d::Zero();  // sum F dV
-    std::vector<IndicatorPatch> fraction;  // alpha at this rank's faces of each component, where the body is
+    std::vector<IndicatorPatch> fraction;         // alpha at this rank's faces of each component, where the body is
+    std::optional<geometry::Pose> fraction_pose;  // where the body was when `fraction` was found
+    std::array<std::vector<Index>, 3> held;       // a container's faces beyond its kernels (hold_solid)
     HydrodynamicLoad load;
   };
   static void check(const Axes& axes, const IbmOptions& options);  // what the constructor refuses
@@ -172,7 +179,12 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   void collect_active_markers(double lag);
   bool bodies_move() const;  // any body has a velocity or an angular velocity
   const MarkerStencils& spreading() const { return spread_stencils_ ? *spread_stencils_ : *stencils_; }
-  void update_fractions();  // of every body at this rank's faces, where it is now
+  void update_fractions();  // of every body at this rank's faces, where it is now (and a container's held faces)
+  // A container's solid beyond its markers' kernels is held at the container's velocity:
+  // left free, the fluid there flows wherever a drive reaches it (a pipe's pressure
+  // gradient, an inflow over a whole face) and leaks through the kernels' width into the
+  // inside. Adds the impulses to `rhs` and to the container's forcing.
+  void hold_solid(double dt, const ForcingArrays& arrays);
   std::vector<double> inner_momenta(const NavierStokes& flow) const;  // 6 per body, summed over ranks
   // The interpolated velocity's misses at the markers (3 per marker), and their scale.
   double slip_in(const NavierStokes& flow, const MarkerStencils& stencils, std::vector<double>& residual) const;

@@ -1,5 +1,6 @@
 #include "fluid/ibm/volume_fraction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -37,17 +38,27 @@ IndicatorPatch volume_fraction(const Grid& grid, int location, const RigidBody& 
     }
     if (range.hi[d] > range.lo[d]) corner[d].push_back(control_interval(axis, d == location, range.hi[d] - 1).hi);
   }
-  std::vector<Eigen::Vector3d> nodes;
-  for (double z : corner[2])
-    for (double y : corner[1])
-      for (double x : corner[0]) nodes.emplace_back(x, y, z);
-  std::vector<double> phi(nodes.size());
-  distance(body, nodes, phi);
   const std::array<std::size_t, 3> n{corner[0].size(), corner[1].size(), corner[2].size()};
   std::array<int, 3> split{};
   for (int d = 0; d < 3; ++d) split[d] = n[d] == 1 ? 1 : kSplit;
+  // The distances at one layer of control volumes' corner planes at a time: a container's
+  // lattice spans the whole domain, eight nodes a cell.
+  std::vector<Eigen::Vector3d> nodes;
+  std::vector<double> phi;
+  std::size_t first_plane = 0;
+  const auto fill_layer = [&](PetscInt k) {
+    first_plane = n[2] == 1 ? 0 : static_cast<std::size_t>(kSplit * (k - range.lo[2]));
+    nodes.clear();
+    for (std::size_t z = first_plane; z < std::min(n[2], first_plane + kSplit + 1); ++z)
+      for (double y : corner[1])
+        for (double x : corner[0]) nodes.emplace_back(x, y, corner[2][z]);
+    phi.resize(nodes.size());
+    distance(body, nodes, phi);
+  };
   std::vector<double> values;
+  PetscInt layer = range.lo[2] - 1;
   for_each_index(range, [&](const Index& p) {
+    if (p[2] != layer) fill_layer(layer = p[2]);
     double sum = 0;
     for (int a = 0; a < split[0]; ++a)
       for (int b = 0; b < split[1]; ++b)
@@ -55,7 +66,7 @@ IndicatorPatch volume_fraction(const Grid& grid, int location, const RigidBody& 
           const std::array<std::size_t, 3> first{
               n[0] == 1 ? 0 : static_cast<std::size_t>(kSplit * (p[0] - range.lo[0]) + a),
               n[1] == 1 ? 0 : static_cast<std::size_t>(kSplit * (p[1] - range.lo[1]) + b),
-              n[2] == 1 ? 0 : static_cast<std::size_t>(kSplit * (p[2] - range.lo[2]) + c)};
+              n[2] == 1 ? 0 : static_cast<std::size_t>(kSplit * (p[2] - range.lo[2]) + c) - first_plane};
           std::array<double, 8> corners{};
           for (std::size_t m = 0; m < 8; ++m) {
             std::array<std::size_t, 3> at{};

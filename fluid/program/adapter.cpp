@@ -67,12 +67,14 @@ participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const st
   const bool moving = std::any_of(scene.bodies.begin(), scene.bodies.end(), [](const auto& b) { return !b.fixed; });
   if (std::holds_alternative<fluid::IbmOptions>(setup_.body_method) && moving) {
     std::vector<std::size_t> same_shape;
+    std::vector<bool> fixed;
     for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+      fixed.push_back(scene.bodies[b].fixed);
       std::size_t first = 0;
-      while (!(scene.bodies[first].shape == scene.bodies[b].shape)) ++first;
+      while (first < b && (scene.bodies[first].fixed || !(scene.bodies[first].shape == scene.bodies[b].shape))) ++first;
       same_shape.push_back(first);
     }
-    flow_->responses.emplace(flow_->grid, setup_.bodies, same_shape, setup_.properties, setup_.steps,
+    flow_->responses.emplace(flow_->grid, setup_.bodies, same_shape, fixed, setup_.properties, setup_.steps,
                              setup_.body_method, scene.coupling.window);
   }
   const fluid::Point u0 = setup_.initial_velocity;

@@ -23,8 +23,9 @@ constexpr std::size_t kRemembered = fluid::kResponseWindows - 1;
 }  // namespace
 
 BodyResponses::BodyResponses(const fluid::Grid& grid, const std::vector<fluid::RigidBody>& bodies,
-                             const std::vector<std::size_t>& same_shape, const fluid::FluidProperties& fluid,
-                             const fluid::TimeStepOptions& steps, const fluid::BodyOptions& method, double window)
+                             const std::vector<std::size_t>& same_shape, const std::vector<bool>& fixed,
+                             const fluid::FluidProperties& fluid, const fluid::TimeStepOptions& steps,
+                             const fluid::BodyOptions& method, double window)
     : changes_(bodies.size()) {
   const auto width = [&](const fluid::RigidBody& body) {
     const Eigen::Vector3d& x = body.pose.position();
@@ -34,10 +35,12 @@ BodyResponses::BodyResponses(const fluid::Grid& grid, const std::vector<fluid::R
     corrections_.emplace_back(window, width(bodies[b]));
     const std::size_t first = same_shape.at(b);
     // The same width to round-off: a uniform axis's cells differ in their last bits.
-    if (first < b && std::abs(width(bodies[first]) - width(bodies[b])) <= 1e-9 * width(bodies[b]))
-      body_frame_.push_back(body_frame_[first]);
-    else
-      body_frame_.push_back(fluid::window_response(grid, bodies[b], fluid, steps, method, window));
+    const bool shared = first < b && std::abs(width(bodies[first]) - width(bodies[b])) <= 1e-9 * width(bodies[b]);
+    fluid::WindowResponse still;
+    still.kernel.assign(fluid::kResponseWindows, fluid::WindowResponse::Matrix6d::Zero());
+    body_frame_.push_back(fixed.at(b) ? still
+                          : shared    ? body_frame_[first]
+                                      : fluid::window_response(grid, bodies[b], fluid, steps, method, window));
   }
 }
 

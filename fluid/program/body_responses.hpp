@@ -22,11 +22,14 @@ namespace cosim::fluid::program {
 class BodyResponses {
  public:
   using Vector6d = Eigen::Matrix<double, 6, 1>;
-  // `bodies` where they start; `same_shape[b]` the first body with b's shape (b itself if
-  // none before it), whose tensors b shares where the grid is as fine as there.
+  // `bodies` where they start; `same_shape[b]` the first body that is not fixed with b's
+  // shape (b itself if none before it), whose tensors b shares where the grid is as fine as there. A fixed
+  // body's velocity never changes: its tensors are zero, not measured (a container's could
+  // not be).
   BodyResponses(const fluid::Grid& grid, const std::vector<fluid::RigidBody>& bodies,
-                const std::vector<std::size_t>& same_shape, const fluid::FluidProperties& fluid,
-                const fluid::TimeStepOptions& steps, const fluid::BodyOptions& method, double window);
+                const std::vector<std::size_t>& same_shape, const std::vector<bool>& fixed,
+                const fluid::FluidProperties& fluid, const fluid::TimeStepOptions& steps,
+                const fluid::BodyOptions& method, double window);
 
   // The rows after a window in which the bodies' velocities (linear, then angular; scene
   // order) changed from `start` to `end` and their orientations became `orientations`, with

@@ -147,7 +147,8 @@ fluid::BodyOptions read_body_method(const Reader& options) {
     o.tolerance = r.number("tolerance", o.tolerance, Range::open(0, 1));
     const fluid::Retraction calibrated = fluid::calibrated_retraction(o.kernel);
     o.retraction = fluid::Retraction{r.number("retraction", calibrated.constant, Range::closed(0, 2)),
-                                     r.number("curvature_retraction", calibrated.curvature, Range::closed(-2, 2))};
+                                     r.number("curvature_retraction", calibrated.curvature, Range::closed(-2, 2)),
+                                     calibrated.concave};
     o.spacing = r.number("marker_spacing", o.spacing, Range::closed(0.25, 2));
     o.spread_at_theta = r.boolean("spread_at_theta", o.spread_at_theta);
     out = o;

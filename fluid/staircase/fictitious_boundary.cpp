@@ -11,7 +11,7 @@ FictitiousBoundary::FictitiousBoundary(const Grid& grid, FbmOptions options)
 }
 
 std::size_t FictitiousBoundary::add(RigidBody body) {
-  if (!geometry::is_bounded(body.shape))
+  if (geometry::kind(body.shape) == geometry::ShapeKind::HalfSpace)
     throw std::invalid_argument("fictitious boundary: a half-space is not a body (use a wall boundary)");
   bodies_.push_back({std::move(body), {}});
   build(bodies_.back());

@@ -21,17 +21,20 @@ struct ContactPoint {
   std::uint32_t feature = 0;
 };
 
-// All points between one pair of bodies (face contact between boxes has up to 4; the
-// solver treats each point separately, with its own normal and friction impulses).
+// All points between one pair of bodies (face contact between boxes has up to 4 per
+// surface; the solver treats each point separately, with its own normal and friction
+// impulses). A body in a container's corner touches up to three of its walls at once.
 struct Manifold {
-  static constexpr std::size_t kMaxPoints = 4;
+  static constexpr std::size_t kMaxPoints = 4;  // per surface
+  static constexpr std::size_t kMaxSurfaces = 3;
+  static constexpr std::size_t kCapacity = kMaxPoints * kMaxSurfaces;
   std::uint32_t a = 0;
   std::uint32_t b = 0;
-  std::array<ContactPoint, kMaxPoints> points{};
+  std::array<ContactPoint, kCapacity> points{};
   std::uint8_t count = 0;
 
   void add(const ContactPoint& p) {
-    if (count < kMaxPoints) points[count++] = p;
+    if (count < kCapacity) points[count++] = p;
   }
 };
 

@@ -1,6 +1,6 @@
 // One substep's contacts, stored compactly: the points of all pairs in one array and a
-// range per pair. A Manifold reserves room for four points; most pairs (spheres) have
-// one, so in a dense granular bed this layout holds a quarter of the bytes.
+// range per pair. A Manifold reserves room for twelve points; most pairs (spheres) have
+// one, so in a dense granular bed this layout holds a fraction of the bytes.
 #pragma once
 
 #include <algorithm>

@@ -15,6 +15,9 @@ using Vec3 = Eigen::Vector3d;
 struct Candidates {
   double margin = 0.0;
   std::vector<contact::ContactPoint> points;
+  // Set by a pair function that kept its points per surface itself (a container's walls);
+  // otherwise collide() keeps a spread of Manifold::kMaxPoints.
+  bool reduced = false;
 
   // `on_a` is on a's surface, `normal` the unit normal from a to b and `distance` the
   // signed gap along it; the point is stored midway between the surfaces. Points farther

@@ -13,13 +13,20 @@ using namespace detail;
 template <class A, class B>
 bool run(const A& a, const Pose& pa, const B& b, const Pose& pb, const Shape& sa, const Shape& sb, MeshMaps& maps,
          Candidates& out) {
-  if constexpr (requires { pair(a, pa, b, pb, out); }) {
+  constexpr bool a_infinite = std::is_same_v<A, HalfSpace> || std::is_same_v<A, Container>;
+  constexpr bool b_infinite = std::is_same_v<B, HalfSpace> || std::is_same_v<B, Container>;
+  if constexpr (a_infinite && b_infinite) {
+    // Both are fixed: nothing to solve.
+  } else if constexpr (std::is_same_v<A, Container>) {
+    container_pair(a, pa, sb, pb, out);
+  } else if constexpr (std::is_same_v<B, Container>) {
+    container_pair(b, pb, sa, pa, out);
+    return true;
+  } else if constexpr (requires { pair(a, pa, b, pb, out); }) {
     pair(a, pa, b, pb, out);
   } else if constexpr (requires { pair(b, pb, a, pa, out); }) {
     pair(b, pb, a, pa, out);
     return true;
-  } else if constexpr (std::is_same_v<A, HalfSpace> || std::is_same_v<B, HalfSpace>) {
-    // Only two half-spaces get here: both are fixed walls, nothing to solve.
   } else if constexpr (std::is_same_v<A, TriangleMesh>) {
     mesh_pair(a, pa, sb, pb, maps, out);
   } else if constexpr (std::is_same_v<B, TriangleMesh>) {
@@ -55,7 +62,7 @@ bool collide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, dou
   found.margin = margin;
   const bool swapped =
       std::visit([&](const auto& x, const auto& y) { return run(x, pa, y, pb, a, b, maps, found); }, a, b);
-  keep_spread(found.points);
+  if (!found.reduced) keep_spread(found.points);
   out.count = 0;
   for (auto& p : found.points) {
     if (swapped) p.normal = -p.normal;

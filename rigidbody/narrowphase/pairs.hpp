@@ -13,6 +13,7 @@ namespace cosim::rigidbody::narrowphase::detail {
 
 using geometry::Box;
 using geometry::Capsule;
+using geometry::Container;
 using geometry::ConvexHull;
 using geometry::Cylinder;
 using geometry::Ellipsoid;
@@ -50,6 +51,9 @@ void pair(const HalfSpace& a, const Pose& pa, const TriangleMesh& b, const Pose&
 // Any two bounded convex shapes: GJK distance, libccd EPA when they overlap, then the
 // features facing each other along that normal clipped (clip.hpp, feature.hpp).
 void convex_pair(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Candidates& out);
+
+// A bounded shape inside a container, against the container's exact distance.
+void container_pair(const Container& a, const Pose& pa, const Shape& b, const Pose& pb, Candidates& out);
 
 // A mesh against any bounded shape (another mesh included), through distance maps.
 void mesh_pair(const TriangleMesh& a, const Pose& pa, const Shape& b, const Pose& pb, MeshMaps& maps, Candidates& out);

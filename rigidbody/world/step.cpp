@@ -19,6 +19,8 @@ broadphase::Object object_of(std::uint32_t id, const geometry::Shape& shape, con
     const Eigen::Vector3d n = s.orientation * wall->normal();
     o.infinite = true;
     o.half_space = broadphase::HalfSpace{n, n.dot(s.position)};
+  } else if (std::holds_alternative<geometry::Container>(shape)) {
+    o.infinite = true;  // its wall may meet any body inside it
   } else {
     o.radius = geometry::bounding_radius(shape);
   }

@@ -37,7 +37,7 @@ TEST(Validation, UnknownNestedKey) {
             "scene.yaml:5: bodies[0].colour = red: unknown key; expected one of: "
             "generate, name, fixed, shape, material, orientation, velocity, angular_velocity, position");
   EXPECT_EQ(load_error(head + "bodies:\n  - name: ball\n    shape: {type: sphere, radius: 0.1, height: 1}\n"),
-            "scene.yaml:6: bodies[0].shape.height = 1: unknown key; expected one of: type, radius");
+            "scene.yaml:6: bodies[0].shape.height = 1: unknown key; expected one of: type, radius, container");
 }
 
 // `study` is cosim study's (docs/study.md): the loader checks its shape, not the expressions.

@@ -11,20 +11,24 @@
 namespace cosim::tracker::program {
 namespace {
 
-// The body's own shape in its frame, as the rigid-body program and the fluid see it.
+// The body's own shape in its frame, as the rigid-body program and the fluid see it: a
+// container is the solid outside its shape.
 csg::Expression body_shape(const scene::Reader& r, const scene::Body& body) {
   using scene::ShapeType;
   const scene::Shape& s = body.shape;
-  switch (s.type) {
-    case ShapeType::Sphere:
-      return csg::ball(Eigen::Vector3d::Zero(), s.radius);
-    case ShapeType::Box:
-      return csg::box(Eigen::Vector3d::Zero(), scene::to_eigen(s.half_extents));
-    case ShapeType::Cylinder:
-      return csg::capped_cylinder({0, 0, -s.height / 2}, {0, 0, s.height / 2}, s.radius);
-    default:
-      r.fail("body", "body '" + body.name + "' has a shape CSG has no primitive for: give the obstacle a shape");
-  }
+  const auto solid = [&]() -> csg::Expression {
+    switch (s.type) {
+      case ShapeType::Sphere:
+        return csg::ball(Eigen::Vector3d::Zero(), s.radius);
+      case ShapeType::Box:
+        return csg::box(Eigen::Vector3d::Zero(), scene::to_eigen(s.half_extents));
+      case ShapeType::Cylinder:
+        return csg::capped_cylinder({0, 0, -s.height / 2}, {0, 0, s.height / 2}, s.radius);
+      default:
+        r.fail("body", "body '" + body.name + "' has a shape CSG has no primitive for: give the obstacle a shape");
+    }
+  };
+  return s.container ? ~solid() : solid();
 }
 
 int body_index(const scene::Reader& r, const scene::Scene& scene, const std::string& name) {
