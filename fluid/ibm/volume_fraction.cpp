@@ -41,19 +41,24 @@ IndicatorPatch volume_fraction(const Grid& grid, int location, const RigidBody& 
   const std::array<std::size_t, 3> n{corner[0].size(), corner[1].size(), corner[2].size()};
   std::array<int, 3> split{};
   for (int d = 0; d < 3; ++d) split[d] = n[d] == 1 ? 1 : kSplit;
-  // The distances at one layer of control volumes' corner planes at a time: a container's
-  // lattice spans the whole domain, eight nodes a cell.
+  // The distances at one layer of control volumes' corner planes at a time (a container's
+  // lattice spans the whole domain, eight nodes a cell); the layers come in order, and each
+  // starts at the plane the one below ended at.
+  const std::size_t plane = n[0] * n[1];
   std::vector<Eigen::Vector3d> nodes;
   std::vector<double> phi;
   std::size_t first_plane = 0;
   const auto fill_layer = [&](PetscInt k) {
     first_plane = n[2] == 1 ? 0 : static_cast<std::size_t>(kSplit * (k - range.lo[2]));
+    const std::size_t planes = std::min(n[2], first_plane + kSplit + 1) - first_plane;
+    const std::size_t known = phi.empty() ? 0 : 1;
+    if (known) std::copy(phi.end() - static_cast<std::ptrdiff_t>(plane), phi.end(), phi.begin());
     nodes.clear();
-    for (std::size_t z = first_plane; z < std::min(n[2], first_plane + kSplit + 1); ++z)
+    for (std::size_t z = first_plane + known; z < first_plane + planes; ++z)
       for (double y : corner[1])
         for (double x : corner[0]) nodes.emplace_back(x, y, corner[2][z]);
-    phi.resize(nodes.size());
-    distance(body, nodes, phi);
+    phi.resize(planes * plane);
+    distance(body, nodes, std::span<double>(phi).subspan(known * plane));
   };
   std::vector<double> values;
   PetscInt layer = range.lo[2] - 1;
