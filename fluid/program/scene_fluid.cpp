@@ -8,6 +8,7 @@
 #include "coupler/scene/eigen.hpp"
 #include "coupler/scene/error.hpp"
 #include "coupler/scene/reader.hpp"
+#include "fluid/program/confined_inflow.hpp"
 
 namespace cosim::fluid::program {
 namespace {
@@ -84,10 +85,20 @@ fluid::VelocityFunction inflow(fluid::Point u, bool parabolic, int axis, const s
   };
 }
 
-// Faces not listed are no-slip walls; periodic must hold for both faces of an axis.
-void read_boundaries(const Reader& options, const scene::Domain& domain, FluidSetup& s, std::array<bool, 3>& periodic) {
+// An inflow face that feeds only the inside of the container named by its `within`.
+struct Confinement {
+  std::size_t face;
+  std::string body;
+  Reader keys;  // the face's, for errors
+};
+
+// Faces not listed are no-slip walls; periodic must hold for both faces of an axis. Returns
+// the inflow faces confined to a container, applied once the grid and the bodies are read.
+std::vector<Confinement> read_boundaries(const Reader& options, const scene::Domain& domain, FluidSetup& s,
+                                         std::array<bool, 3>& periodic) {
   s.boundaries.fill(Boundary::no_slip());
-  if (!options.has("boundaries")) return;
+  std::vector<Confinement> confined;
+  if (!options.has("boundaries")) return confined;
   std::array<std::size_t, 6> kind{};
   const Reader list = options.map("boundaries");
   for (std::size_t f = 0; f < 6; ++f)
@@ -110,6 +121,10 @@ void read_boundaries(const Reader& options, const scene::Domain& domain, FluidSe
         const fluid::Point u = point(r.vec3("velocity"));
         const bool parabolic = r.choice("profile", profile_names, 0) == 1;
         s.boundaries[f] = Boundary::inflow(inflow(u, parabolic, axis, domain, periodic));
+        if (r.has("within")) {
+          if (parabolic) r.fail("within", "takes profile uniform: a parabola across the box is not the container's");
+          confined.push_back({f, r.string("within"), r});
+        }
         break;
       }
       case 2:
@@ -121,6 +136,25 @@ void read_boundaries(const Reader& options, const scene::Domain& domain, FluidSe
     r.finish();
   }
   list.finish();
+  return confined;
+}
+
+void confine_inflows(const std::vector<Confinement>& confined, FluidSetup& s) {
+  for (const Confinement& c : confined) {
+    const auto named = std::find(s.body_names.begin(), s.body_names.end(), c.body);
+    if (named == s.body_names.end()) c.keys.fail("within", "no body of that name");
+    const fluid::RigidBody& body = s.bodies[static_cast<std::size_t>(named - s.body_names.begin())];
+    const auto* container = std::get_if<geometry::Container>(&body.shape);
+    if (container == nullptr) c.keys.fail("within", "not a container (a fixed body with shape: {container: true})");
+    const int axis = static_cast<int>(c.face / 2);
+    const auto side = c.face % 2 == 0 ? fluid::Side::lower : fluid::Side::upper;
+    try {
+      s.boundaries[c.face] =
+          Boundary::inflow(confined_inflow(s.boundaries[c.face].velocity, *container, body.pose, axis, side, s.axes));
+    } catch (const std::invalid_argument& e) {
+      c.keys.fail("within", e.what());
+    }
+  }
 }
 
 // bodies: {method: ibm, kernel, sweeps, corrections, no_slip_tolerance, tolerance,
@@ -191,7 +225,7 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   FluidSetup s;
 
   std::array<bool, 3> periodic{};
-  read_boundaries(options, scene.domain, s, periodic);
+  const std::vector<Confinement> confined = read_boundaries(options, scene.domain, s, periodic);
   const Reader grid = options.map("grid");
   const std::array<int, 3> n = cells(grid);
   std::array<double, 3> beta{};
@@ -228,6 +262,7 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
     options.fail("petsc", e.what());
   }
   read_bodies(scene, p, s);
+  confine_inflows(confined, s);
   s.motions = read_motions(scene, options, std::move(s.motions));
   options.finish();
   return s;

@@ -1,0 +1,197 @@
+// An inflow face `within` a container: the flow rate through the face is the profile's over
+// the container's cross section, nothing enters outside it, and a bad `within` is refused
+// naming file, key and value.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <petscsys.h>
+
+#include "coupler/scene/error.hpp"
+#include "coupler/scene/scene.hpp"
+#include "fluid/ibm/immersed_boundary.hpp"
+#include "fluid/navier_stokes.hpp"
+#include "fluid/program/confined_inflow.hpp"
+#include "fluid/program/scene_fluid.hpp"
+
+namespace cosim::fluid::program {
+namespace {
+
+// A round column of radius `radius` centred at (cx, cy) in a box of n x n x 8 cells, fed
+// through its floor (`inflow` holds the z_min face's keys) and open at the top.
+std::string column_scene(
+    double radius, double cx, double cy, int n, const std::string& inflow,
+    const std::string& column_shape = "type: cylinder, radius: {r}, height: 0.3, container: true") {
+  std::string shape = column_shape;
+  if (const auto at = shape.find("{r}"); at != std::string::npos) shape.replace(at, 3, std::to_string(radius));
+  return "time: {end: 0.1}\ncoupling: {window: 0.01}\n"
+         "domain: {min: [-0.05, -0.05, 0], max: [0.05, 0.05, 0.2]}\n"
+         "bodies:\n"
+         "  - {name: column, fixed: true, shape: {" +
+         shape + "}, position: [" + std::to_string(cx) + ", " + std::to_string(cy) +
+         ", 0.1]}\n"
+         "  - {name: bead, shape: {type: sphere, radius: 0.003}, material: {density: 2000}, position: [" +
+         std::to_string(cx) + ", " + std::to_string(cy) +
+         ", 0.1]}\n"
+         "effects: [hydrodynamics]\n"
+         "participants:\n"
+         "  rigidbody: {dt: 0.01}\n"
+         "  fluid:\n"
+         "    dt: 0.01\n"
+         "    options:\n"
+         "      density: 1000\n"
+         "      viscosity: {model: newtonian, mu: 1.0e-3}\n"
+         "      grid: {cells: [" +
+         std::to_string(n) + ", " + std::to_string(n) +
+         ", 8]}\n"
+         "      boundaries:\n"
+         "        z_min: {" +
+         inflow +
+         "}\n"
+         "        z_max: {type: outflow}\n";
+}
+
+FluidSetup setup_of(const std::string& text) { return fluid_setup(scene::load_scene_from_string(text, "s.yaml")); }
+
+// The flow rate through the z_min face, summed over its cells' centres, and the largest
+// speed on a cell whose whole face lies outside the circle of `radius` about (cx, cy).
+struct FaceFlow {
+  double rate = 0, outside = 0;
+};
+
+FaceFlow face_flow(const FluidSetup& s, double radius, double cx, double cy) {
+  const fluid::Boundary& floor = s.boundaries[4];
+  EXPECT_EQ(floor.kind, fluid::BoundaryKind::inflow);
+  FaceFlow out;
+  const fluid::Axis &x = s.axes[0], &y = s.axes[1];
+  for (int j = 0; j < y.cells(); ++j)
+    for (int i = 0; i < x.cells(); ++i) {
+      const fluid::Point u = floor.velocity({x.centre(i), y.centre(j), 0.0}, 0.0);
+      out.rate += u[2] * x.width(i) * y.width(j);
+      const double nearest = std::hypot(std::max({x.face(i) - cx, cx - x.face(i + 1), 0.0}),
+                                        std::max({y.face(j) - cy, cy - y.face(j + 1), 0.0}));
+      if (nearest > radius) out.outside = std::max(out.outside, std::abs(u[2]));
+    }
+  return out;
+}
+
+// Calibrated on nothing: the flow rate follows from the sampled fractions, checked at radii
+// and offsets that put the wall across the cells in different ways, on a coarse and a fine
+// face, and on a box-shaped basket whose section the cells cut off-grid.
+TEST(ConfinedInflow, FlowRateIsTheProfilesOverTheSection) {
+  const double u = 0.12;
+  for (const int n : {20, 50})
+    for (const double radius : {0.04, 0.0337})
+      for (const double offset : {0.0, 0.0013}) {
+        const FluidSetup s =
+            setup_of(column_scene(radius, offset, -offset, n, "type: inflow, velocity: [0, 0, 0.12], within: column"));
+        const FaceFlow f = face_flow(s, radius, offset, -offset);
+        const double expected = u * std::numbers::pi * radius * radius;
+        // Sampling 16 x 16 per cell: the cut cells' fractions within 1/16 each, and their
+        // errors of both signs cancel along the rim.
+        EXPECT_NEAR(f.rate / expected, 1.0, 0.005) << "n " << n << " radius " << radius << " offset " << offset;
+        EXPECT_EQ(f.outside, 0.0) << "n " << n << " radius " << radius;
+      }
+  const FluidSetup basket =
+      setup_of(column_scene(0, 0.0011, 0.0, 20, "type: inflow, velocity: [0, 0, 0.12], within: column",
+                            "type: box, half_extents: [0.0302, 0.0217, 0.15], container: true"));
+  // A straight wall along the grid's lines does not cancel: it may be off by half a sample
+  // width all along its length, here 1.2 % of the section.
+  const double perimeter = 2 * (0.0604 + 0.0434), area = 0.0604 * 0.0434, sample = 0.1 / 20 / 16;
+  EXPECT_NEAR(face_flow(basket, 0, 0.0011, 0.0).rate / (u * area), 1.0, perimeter * sample / 2 / area);
+}
+
+// Without `within` the whole face feeds the box, corners included.
+TEST(ConfinedInflow, AnUnconfinedInflowFeedsTheWholeFace) {
+  const FluidSetup s = setup_of(column_scene(0.04, 0, 0, 20, "type: inflow, velocity: [0, 0, 0.12]"));
+  EXPECT_NEAR(face_flow(s, 0.04, 0, 0).rate, 0.12 * 0.1 * 0.1, 1e-12);
+}
+
+TEST(ConfinedInflow, RefusesWhatIsNotAContainersInside) {
+  struct Bad {
+    std::string inflow, shape, problem;
+  };
+  const std::string cylinder = "type: cylinder, radius: 0.04, height: 0.3, container: true";
+  const Bad cases[] = {
+      {"type: inflow, velocity: [0, 0, 0.1], within: pipe", cylinder, "no body of that name"},
+      {"type: inflow, velocity: [0, 0, 0.1], within: bead", cylinder, "not a container"},
+      {"type: inflow, velocity: [0, 0, 0.1], profile: parabolic, within: column", cylinder, "profile uniform"},
+      // Its floor cap at z = 0.05 is inside the box: none of the face is inside.
+      {"type: inflow, velocity: [0, 0, 0.1], within: column",
+       "type: cylinder, radius: 0.04, height: 0.1, container: true", "no part of the face"},
+  };
+  for (const Bad& c : cases) {
+    try {
+      setup_of(column_scene(0.04, 0, 0, 10, c.inflow, c.shape));
+      ADD_FAILURE() << "accepted " << c.inflow << " with " << c.shape;
+    } catch (const scene::SceneError& e) {
+      EXPECT_EQ(e.file, "s.yaml");
+      EXPECT_EQ(e.key, "participants.fluid.options.boundaries.z_min.within") << e.what();
+      EXPECT_NE(std::string(e.what()).find(c.problem), std::string::npos) << e.what();
+    }
+  }
+}
+
+// Guards against: a plug fed into a round column through the whole floor of the box around it
+// (the held corners refusing it), and fluid leaking between the column and the held solid.
+// A plug u0 at Re = u0 D / nu = 5 enters a column of D/h 12, three diameters long, and
+// develops into Poiseuille's flow (entry length about (0.6 + 0.056 Re) D): two diameters
+// up, the flow rate through the column is the inflow's and the centreline speed twice u0.
+TEST(ConfinedInflow, PlugDevelopsIntoPoiseuillesFlowInARoundColumn) {
+  const double radius = 0.5, nu = 1.0, u0 = 5.0 * nu / (2 * radius);
+  const int across = 12, margin = 6, length = 3 * across;
+  const double h = 2 * radius / across, side = (across + margin) * h;
+  const Axis box = Axis::uniform(across + margin, -side / 2, side / 2, false);
+  const std::vector<Axis> axes{box, box, Axis::uniform(length, 0, length * h, false)};
+  Grid grid(PETSC_COMM_WORLD, {axes[0], axes[1], axes[2]});
+  // The axis off the grid's lines; the caps beyond both ends of the box.
+  const geometry::Container column(geometry::Cylinder(radius, 2 * length * h));
+  const geometry::Pose pose({0.29 * h, -0.13 * h, length * h / 2}, Eigen::Quaterniond::Identity());
+  BoundaryConditions bc(grid);
+  bc.set(2, Side::lower,
+         Boundary::inflow(confined_inflow(
+             [&](const Point&, double) {
+               return Point{0, 0, u0};
+             },
+             column, pose, 2, Side::lower, axes)));
+  bc.set(2, Side::upper, Boundary::outflow());
+  const double dt = h * h / nu;
+  NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(nu), {0, 0, 0}},
+                    {.cfl = 10, .dt_max = dt, .dt_initial = dt});
+  ImmersedBoundary bodies(grid, {});
+  bodies.add({column, pose});
+  flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
+  // Through the column in 0.6, the slowest viscous mode down to 1e-6 of itself by 2.4 R^2 / nu.
+  while (flow.time() < 0.6 - dt / 2) flow.step(dt, bodies.for_step());
+
+  DM dm = grid.velocity_dm(2);
+  const PetscScalar*** w = nullptr;
+  DMDAVecGetArrayRead(dm, flow.velocity(2), &w);
+  double rate = 0, centre = 0, held = 0;
+  const int level = 2 * across;  // two diameters up
+  for_each_index(grid.owned(dm), [&](const Index& p) {
+    if (p[2] != level) return;
+    const Point x = grid.position(2, p);
+    const double r = std::hypot(x[0] - pose.position().x(), x[1] - pose.position().y());
+    const double u = w[p[2]][p[1]][p[0]];
+    if (r < radius) rate += u * h * h;
+    if (r < h / 2) centre = std::max(centre, u);
+    if (r > radius + 3 * h) held = std::max(held, std::abs(u));
+  });
+  DMDAVecRestoreArrayRead(dm, flow.velocity(2), &w);
+  MPI_Allreduce(MPI_IN_PLACE, &rate, 1, MPI_DOUBLE, MPI_SUM, grid.comm());
+  MPI_Allreduce(MPI_IN_PLACE, &centre, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
+  MPI_Allreduce(MPI_IN_PLACE, &held, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
+  const double inflow = u0 * std::numbers::pi * radius * radius;
+  PetscPrintf(PETSC_COMM_WORLD,
+              "column D/h %d, Re 5: flow rate %+.4f of the inflow's, centreline %.4f u0, held %.2g u0\n", across,
+              rate / inflow - 1, centre / u0, held / u0);
+  EXPECT_NEAR(rate / inflow, 1.0, 0.02);
+  EXPECT_NEAR(centre / u0, 2.0, 0.06);
+  EXPECT_LT(held / u0, 1e-3);
+}
+
+}  // namespace
+}  // namespace cosim::fluid::program
