@@ -6,7 +6,6 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "geometry/queries.hpp"
 
@@ -150,45 +149,74 @@ std::vector<Candidate> candidates(const Shape& shape, const Pose& pose, const La
   return out;
 }
 
-// Points of a set by the lattice cell of width `width` they fall in.
-class PointHash {
+// Points of a set (candidates, by their index) by the cell of width `width` they fall in, on
+// a dense grid of such cells from the lattice's origin over the candidates' box (at most
+// twice as many cells as the lattice has coarse nodes there), each a list threaded through `next_`.
+class PointGrid {
  public:
-  PointHash(const Lattice& lattice, double width) : lattice_(lattice), width_(width) {}
+  PointGrid(const Lattice& lattice, double width, const std::vector<Candidate>& candidates)
+      : lattice_(lattice), width_(width) {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d hi = -lo;
+    for (const Candidate& c : candidates) {
+      lo = lo.cwiseMin(c.point);
+      hi = hi.cwiseMax(c.point);
+    }
+    std::size_t cells = 1;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(lattice.dims()) && !candidates.empty(); ++d) {
+      first_[d] = unclamped(lo, d);
+      count_[d] = unclamped(hi, d) - first_[d] + 1;
+      cells *= static_cast<std::size_t>(count_[d]);
+    }
+    head_.assign(candidates.empty() ? 0 : cells, -1);
+    next_.assign(candidates.size(), -1);
+  }
 
-  void insert(const Eigen::Vector3d& x, int id) { cells_[key(cell_of(x))].push_back(id); }
+  // `id` indexes the candidates the grid was made for; x is that candidate's point.
+  void insert(const Eigen::Vector3d& x, int id) {
+    auto& h = head_[index(cell_of(x))];
+    next_[static_cast<std::size_t>(id)] = h;
+    h = id;
+  }
   // Calls f(id) for the points in the cells within `rings` of x's.
   template <typename F>
   void near(const Eigen::Vector3d& x, int rings, F&& f) const {
-    const std::array<std::int64_t, 3> c = cell_of(x);
-    const int dims = lattice_.dims();
-    std::array<int, 3> lo{0, 0, 0}, hi{0, 0, 0};
-    for (int d = 0; d < dims; ++d) {
-      lo[d] = -rings;
-      hi[d] = rings;
+    const Cell c = cell_of(x);
+    Cell lo{0, 0, 0}, hi{0, 0, 0};
+    for (std::size_t d = 0; d < static_cast<std::size_t>(lattice_.dims()); ++d) {
+      lo[d] = std::max<std::int64_t>(c[d] - rings, 0);
+      hi[d] = std::min<std::int64_t>(c[d] + rings, count_[d] - 1);
     }
-    for (int k = lo[2]; k <= hi[2]; ++k)
-      for (int j = lo[1]; j <= hi[1]; ++j)
-        for (int i = lo[0]; i <= hi[0]; ++i) {
-          const auto it = cells_.find(key({c[0] + i, c[1] + j, c[2] + k}));
-          if (it != cells_.end())
-            for (int id : it->second) f(id);
-        }
+    for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
+      for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
+        for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+          for (int id = head_[index({i, j, k})]; id >= 0; id = next_[static_cast<std::size_t>(id)]) f(id);
   }
+  // The cell x lies in, as one number.
+  std::size_t cell_number(const Eigen::Vector3d& x) const { return index(cell_of(x)); }
 
  private:
-  std::array<std::int64_t, 3> cell_of(const Eigen::Vector3d& x) const {
-    std::array<std::int64_t, 3> c{0, 0, 0};
-    for (int d = 0; d < lattice_.dims(); ++d)
-      c[d] = static_cast<std::int64_t>(std::floor((x[lattice_.axes[d]] - lattice_.origin[lattice_.axes[d]]) / width_));
+  using Cell = std::array<std::int64_t, 3>;
+  // The lattice's cells of this width, numbered from its origin.
+  std::int64_t unclamped(const Eigen::Vector3d& x, std::size_t d) const {
+    const int axis = lattice_.axes[d];
+    return static_cast<std::int64_t>(std::floor((x[axis] - lattice_.origin[axis]) / width_));
+  }
+  Cell cell_of(const Eigen::Vector3d& x) const {
+    Cell c{0, 0, 0};
+    for (std::size_t d = 0; d < static_cast<std::size_t>(lattice_.dims()); ++d)
+      c[d] = std::clamp<std::int64_t>(unclamped(x, d) - first_[d], 0, count_[d] - 1);
     return c;
   }
-  static std::int64_t key(const std::array<std::int64_t, 3>& c) {
-    return (c[0] & 0x1fffff) | ((c[1] & 0x1fffff) << 21) | ((c[2] & 0x1fffff) << 42);
+  std::size_t index(const Cell& c) const {
+    return static_cast<std::size_t>(c[0] + count_[0] * (c[1] + count_[1] * c[2]));
   }
 
   const Lattice& lattice_;
   double width_;
-  std::unordered_map<std::int64_t, std::vector<int>> cells_;
+  Cell first_{0, 0, 0}, count_{1, 1, 1};  // the grid's cells of the lattice's, per axis
+  std::vector<int> head_;                 // per cell: its last point, or -1
+  std::vector<int> next_;                 // per point: the one before it in its cell, or -1
 };
 
 double squared_distance(const Lattice& lattice, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
@@ -205,7 +233,7 @@ std::vector<int> adsorb(const std::vector<Candidate>& candidates, const Lattice&
   std::mt19937_64 random(20261126);
   for (std::size_t i = order.size(); i > 1; --i)  // Fisher-Yates: the same on every library
     std::swap(order[i - 1], order[static_cast<std::size_t>(random() % i)]);
-  PointHash kept(lattice, gap);
+  PointGrid kept(lattice, gap, candidates);
   std::vector<int> out;
   for (int c : order) {
     bool free = true;
@@ -220,29 +248,65 @@ std::vector<int> adsorb(const std::vector<Candidate>& candidates, const Lattice&
   return out;
 }
 
-// For each candidate, the index (into `points`) of the nearest point: the cells within one
-// ring of width 2 spacing hold every point closer than that, and the points lie about one
-// spacing apart; farther rings only for a candidate with none so close.
-std::vector<int> nearest(const std::vector<Candidate>& candidates, const std::vector<int>& points,
-                         const Lattice& lattice, double spacing) {
-  PointHash hash(lattice, 2 * spacing);
-  for (std::size_t p = 0; p < points.size(); ++p)
-    hash.insert(candidates[static_cast<std::size_t>(points[p])].point, static_cast<int>(p));
-  std::vector<int> out(candidates.size(), -1);
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    double best = std::numeric_limits<double>::infinity();
-    for (int rings = 1; out[c] < 0 && !points.empty(); ++rings)
-      hash.near(candidates[c].point, rings, [&](int p) {
-        const double d =
-            squared_distance(lattice, candidates[c].point, candidates[static_cast<std::size_t>(points[p])].point);
-        if (d < best || (d == best && p < out[c])) {
-          best = d;
-          out[c] = p;
-        }
-      });
+// For each candidate, the index (into `points`) of the nearest point, of equals the first:
+// the cells within one ring of width 2 spacing hold every point closer than that, and the
+// points lie about one spacing apart; farther rings only for a candidate with none so close.
+// The candidates are taken cell by cell (`order_`, made once for all the iterations), so the
+// points around a cell are gathered once for every candidate in it.
+class NearestPoint {
+ public:
+  NearestPoint(const std::vector<Candidate>& candidates, const Lattice& lattice, double spacing)
+      : candidates_(candidates), lattice_(lattice), width_(2 * spacing) {
+    const PointGrid grid(lattice, width_, candidates);
+    std::vector<std::pair<std::size_t, int>> by_cell;
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+      by_cell.emplace_back(grid.cell_number(candidates[c].point), static_cast<int>(c));
+    std::sort(by_cell.begin(), by_cell.end());
+    for (std::size_t i = 0; i < by_cell.size(); ++i) {
+      if (i == 0 || by_cell[i].first != by_cell[i - 1].first) first_.push_back(i);
+      order_.push_back(by_cell[i].second);
+    }
+    first_.push_back(order_.size());
   }
-  return out;
-}
+
+  std::vector<int> owners(const std::vector<int>& points) const {
+    std::vector<int> out(candidates_.size(), -1);
+    if (points.empty()) return out;
+    PointGrid grid(lattice_, width_, candidates_);
+    for (int p : points) grid.insert(candidates_[static_cast<std::size_t>(p)].point, p);
+    std::vector<int> rank(candidates_.size(), -1);  // a point's index into `points`
+    for (std::size_t p = 0; p < points.size(); ++p) rank[static_cast<std::size_t>(points[p])] = static_cast<int>(p);
+    std::vector<int> around;
+    for (std::size_t g = 0; g + 1 < first_.size(); ++g) {
+      around.clear();
+      grid.near(candidates_[static_cast<std::size_t>(order_[first_[g]])].point, 1,
+                [&](int p) { around.push_back(rank[static_cast<std::size_t>(p)]); });
+      for (std::size_t i = first_[g]; i < first_[g + 1]; ++i) {
+        const auto c = static_cast<std::size_t>(order_[i]);
+        double best = std::numeric_limits<double>::infinity();
+        const auto consider = [&](int p) {
+          const double d =
+              squared_distance(lattice_, candidates_[c].point, candidates_[static_cast<std::size_t>(points[p])].point);
+          if (d < best || (d == best && p < out[c])) {
+            best = d;
+            out[c] = p;
+          }
+        };
+        for (int p : around) consider(p);
+        for (int rings = 2; out[c] < 0; ++rings)
+          grid.near(candidates_[c].point, rings, [&](int p) { consider(rank[static_cast<std::size_t>(p)]); });
+      }
+    }
+    return out;
+  }
+
+ private:
+  const std::vector<Candidate>& candidates_;
+  const Lattice& lattice_;
+  double width_;
+  std::vector<int> order_;          // the candidates, cell by cell
+  std::vector<std::size_t> first_;  // cell g's candidates: order_[first_[g]] .. order_[first_[g + 1]]
+};
 
 // The lattice's candidates around the shape, with `lattice.width` set to the spacing.
 std::vector<Candidate> all_candidates(const Shape& shape, const Pose& pose, double spacing, Lattice& lattice) {
@@ -274,9 +338,10 @@ std::vector<SurfaceSample> sample(const Shape& shape, const Pose& pose, double s
   if (all.empty()) return {};
   const double gap = (lattice.dims() == 3 ? 0.8 : 0.748) * spacing;
   std::vector<int> points = adsorb(all, lattice, gap);
+  const NearestPoint nearest(all, lattice, spacing);
   std::vector<int> owner;
   for (int iteration = 0; iteration < 30; ++iteration) {
-    owner = nearest(all, points, lattice, spacing);
+    owner = nearest.owners(points);
     std::vector<Eigen::Vector3d> centroid(points.size(), Eigen::Vector3d::Zero());
     std::vector<double> weight(points.size(), 0.0);
     for (std::size_t c = 0; c < all.size(); ++c) {
@@ -297,7 +362,7 @@ std::vector<SurfaceSample> sample(const Shape& shape, const Pose& pose, double s
     if (moved == points) break;
     points = std::move(moved);
   }
-  owner = nearest(all, points, lattice, spacing);
+  owner = nearest.owners(points);
   std::vector<SurfaceSample> out(points.size());
   for (std::size_t p = 0; p < points.size(); ++p)
     out[p] = {all[static_cast<std::size_t>(points[p])].point, all[static_cast<std::size_t>(points[p])].normal, 0.0};
