@@ -3,7 +3,10 @@
 dkt-spheres.yaml): the deepest overlap of any two spheres and of a sphere with a wall of
 cosim-rigidbody, over all written rows, as a fraction of the radius; with --bed, the bed
 height h_b = 2 mean(z) (centres spread evenly over the bed), its solid fraction
-alpha = N (4/3) pi R^3 / (A h_b) averaged over the second half of the run (or from --since),
+alpha = N (4/3) pi R^3 / (A h_b) (A the box's section, or a container's: a round column's
+or a basket's along z) averaged over the second half of the run (or from --since), with the
+standard error of the mean from ten batch means (each batch far longer than the bed's
+fluctuations last, so that the batches are about independent),
 and Richardson-Zaki's alpha = 1 - (u0 / u_t)^(1/m) for the scene's inflow u0, also with
 their wall correction log10 u_i = log10 u_t - d/D for a column of width D; with --lone RUN,
 also with the settling velocity u_i of one bead in the same column on the same grid (a run
@@ -15,8 +18,8 @@ at which the higher one becomes the lower; with --settle, a settling cloud's mea
 over a time window, how many spheres end on the floor, its fastest sphere and its largest
 fluid force.
 
-    bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4 --since 1.0 --lone lone.h5] [--swap]
-        [--settle 0.2 0.6]
+    bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4 --since 1.0 --lone lone.h5
+        --series bed.csv --plot bed.png] [--swap] [--settle 0.2 0.6]
 
 Reference: docs/references.md (Aguilar et al.; Richardson-Zaki, m = 2.4 at Re_p 500);
 the wall correction is Richardson & Zaki's (Trans. Inst. Chem. Eng. 32, 1954).
@@ -64,6 +67,38 @@ def bodies_of(scene, names):
     return bodies
 
 
+def column_of(scene, lo, hi):
+    """The section A the bed fills, its narrowest width D, and a function giving each
+    sphere's overlap with the column's side (as a fraction of its radius): a container (a
+    cylinder or a box along z) if the scene has one, else the box of the domain."""
+    for b in scene["bodies"]:
+        shape = b.get("shape", {})
+        if not shape.get("container", False):
+            continue
+        if "orientation" in b:
+            raise SystemExit(f"beds.py: the container {b['name']} is turned; only one along z is read")
+        centre = np.array(b.get("position", [0, 0, 0]), dtype=float)
+        if shape["type"] == "cylinder":
+            radius = shape["radius"]
+            return (math.pi * radius**2, 2 * radius,
+                    lambda row, r: (np.linalg.norm(row[:, :2] - centre[:2], axis=1) + r - radius) / r)
+        if shape["type"] == "box":
+            half = np.array(shape["half_extents"], dtype=float)
+            return (4 * half[0] * half[1], 2 * min(half[0], half[1]),
+                    lambda row, r: ((np.abs(row[:, :2] - centre[:2]) - half[:2]).max(axis=1) + r) / r)
+        raise SystemExit(f"beds.py: the container {b['name']} is a {shape['type']}; only a cylinder or a box is read")
+    return (hi[0] - lo[0]) * (hi[1] - lo[1]), min(hi[0] - lo[0], hi[1] - lo[1]), None
+
+
+def batch_error(values, batches=10):
+    """The standard error of the mean of a correlated series from `batches` batch means (nan
+    for a series too short to split)."""
+    if len(values) < 2 * batches:
+        return math.nan
+    means = np.array([chunk.mean() for chunk in np.array_split(values, batches)])
+    return means.std(ddof=1) / math.sqrt(batches)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("run")
@@ -72,6 +107,8 @@ def main():
     parser.add_argument("--exponent", type=float, default=2.4, help="Richardson-Zaki m (2.4 for Re_p >= 500)")
     parser.add_argument("--since", type=float, help="average the bed over t >= this (default: the run's second half)")
     parser.add_argument("--lone", help="a run of one bead settling in the same column: its u_i for Richardson-Zaki")
+    parser.add_argument("--series", help="with --bed: write t, h_b and alpha per written row to this CSV")
+    parser.add_argument("--plot", help="with --bed: plot h_b and alpha over time into this PNG")
     parser.add_argument("--swap", action="store_true", help="closest approach and order swaps of the first two spheres")
     parser.add_argument("--settle", type=float, nargs=2, metavar=("T0", "T1"),
                         help="a settling cloud: its mean fall speed over [T0, T1], how it ends on the floor, its "
@@ -90,9 +127,14 @@ def main():
     lo, hi = np.array(scene["domain"]["min"]), np.array(scene["domain"]["max"])
     walls = scene["participants"]["rigidbody"].get("options", {}).get("walls", [])
 
+    area, width, side = column_of(scene, lo, hi)
+
     pair = np.triu(np.ones((len(r), len(r)), dtype=bool), 1)
     deepest_pair = deepest_wall = 0.0
+    deepest_side = -math.inf
     for row in x:
+        if side is not None:
+            deepest_side = max(deepest_side, float(side(row, r).max()))
         gap = np.linalg.norm(row[:, None, :] - row[None, :, :], axis=2) - (r[:, None] + r[None, :])
         deepest_pair = max(deepest_pair, float(-(gap[pair] / np.minimum.outer(r, r)[pair]).min()))
         for wall in walls:
@@ -100,7 +142,8 @@ def main():
             distance = row[:, axis] - lo[axis] if wall.endswith("min") else hi[axis] - row[:, axis]
             deepest_wall = max(deepest_wall, float(((r - distance) / r).max()))
     print(f"{len(r)} spheres, {len(t)} rows to t = {t[-1]:.3f} s: deepest overlap sphere-sphere "
-          f"{deepest_pair:.2%} of the radius, sphere-wall {deepest_wall:.2%} (negative: never touched)")
+          f"{deepest_pair:.2%} of the radius, sphere-wall {deepest_wall:.2%}"
+          + (f", sphere-container {deepest_side:.2%}" if side is not None else "") + " (negative: never touched)")
 
     if args.swap:
         distance = np.linalg.norm(x[:, 0] - x[:, 1], axis=1) / (r[0] + r[1])
@@ -124,23 +167,42 @@ def main():
               f"times a sphere's weight in the fluid")
 
     if args.bed:
-        area = (hi[0] - lo[0]) * (hi[1] - lo[1])
         since = t[-1] / 2 if args.since is None else args.since
         half = t >= since
-        height = 2 * (x[half, :, 2].mean(axis=1) - lo[2])
+        heights = 2 * (x[:, :, 2].mean(axis=1) - lo[2])
         volume = sum(4 / 3 * math.pi * ri**3 for ri in r)
-        alpha = volume / (area * height)
+        alphas = volume / (area * heights)
+        height, alpha = heights[half], alphas[half]
         u0 = scene["participants"]["fluid"]["options"]["boundaries"]["z_min"]["velocity"][2]
         rz = 1 - (u0 / args.terminal) ** (1 / args.exponent)
         # Richardson and Zaki's own wall correction, log10 u_i = log10 u_t - d/D, with D the
-        # column's narrower side.
-        d_over_d = 2 * max(r) / min(hi[0] - lo[0], hi[1] - lo[1])
+        # column's diameter or narrower side.
+        d_over_d = 2 * max(r) / width
         rz_wall = 1 - (u0 / (args.terminal * 10 ** -d_over_d)) ** (1 / args.exponent)
         print(f"bed over t >= {since:.2f} s: h_b {height.mean() * 1e3:.1f} mm (from {height.min() * 1e3:.1f} to "
-              f"{height.max() * 1e3:.1f}), alpha {alpha.mean():.3f}; Richardson-Zaki with u0 = {u0} m/s, "
+              f"{height.max() * 1e3:.1f}), alpha {alpha.mean():.4f} +- {batch_error(alpha):.4f} (standard error, "
+              f"10 batch means of {(t[-1] - since) / 10:.2f} s); Richardson-Zaki with u0 = {u0} m/s, "
               f"u_t = {args.terminal} m/s, m = {args.exponent}: alpha {rz:.3f} ({alpha.mean() / rz - 1:+.1%}); "
               f"with the wall correction for d/D = {d_over_d:.3f}: alpha {rz_wall:.3f} "
               f"({alpha.mean() / rz_wall - 1:+.1%})")
+        if args.series:
+            np.savetxt(args.series, np.column_stack([t, heights, alphas]), delimiter=",", fmt="%.6g",
+                       header="t [s],h_b [m],alpha", comments="")
+        if args.plot:
+            import matplotlib
+            matplotlib.use("Agg")
+            import matplotlib.pyplot as plt
+            fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7, 5))
+            top.plot(t, heights * 1e3)
+            top.set_ylabel("bed height h_b [mm]")
+            bottom.plot(t, alphas, label="the bed")
+            bottom.axhline(rz, color="k", linestyle="--", label=f"Richardson-Zaki, m = {args.exponent}")
+            bottom.axvspan(since, t[-1], color="0.9", label="averaged")
+            bottom.set_ylabel("solid fraction alpha")
+            bottom.set_xlabel("t [s]")
+            bottom.legend()
+            fig.tight_layout()
+            fig.savefig(args.plot, dpi=120)
         if args.lone:
             u_i, start, end = settling_velocity(args.lone)
             rz_lone = 1 - (u0 / u_i) ** (1 / args.exponent)
