@@ -1,6 +1,7 @@
 #include "fluid/ibm/forcing_system.hpp"
 
 #include <algorithm>
+#include <exception>
 
 #include "fluid/petsc_check.hpp"
 #include "fluid/step_stages.hpp"
@@ -47,10 +48,24 @@ PetscErrorCode converged(KSP ksp, PetscInt it, PetscReal, KSPConvergedReason* re
   PetscFunctionReturn(0);
 }
 
+// The preconditioner: each body's block solved on its own. An exception must not cross
+// PETSc's C frames: it becomes PETSc's error, which KSPSolve returns.
+PetscErrorCode apply_blocks(PC pc, Vec x, Vec y) {
+  PetscFunctionBeginUser;
+  void* context = nullptr;
+  PetscCall(PCShellGetContext(pc, &context));
+  try {
+    static_cast<const BodyBlockSolvers*>(context)->apply(x, y);
+  } catch (const std::exception& e) {
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
+  }
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 ForcingSystem::ForcingSystem(const MarkerStencils& stencils, const MarkerStencils& spreading,
-                             std::span<const std::size_t> first_marker)
+                             std::span<const std::size_t> first_marker, BodyBlockSolvers& blocks)
     : stencils_(stencils) {
   const MarkerSharing& sharing = stencils.sharing();
   const PetscInt first = sharing.first_root(), roots = sharing.roots();
@@ -87,35 +102,15 @@ ForcingSystem::ForcingSystem(const MarkerStencils& stencils, const MarkerStencil
   COSIM_PETSC(KSPSetOperators(ksp_, B_, B_));
   PC pc = nullptr;
   COSIM_PETSC(KSPGetPC(ksp_, &pc));
-  COSIM_PETSC(PCSetType(pc, PCBJACOBI));
-  std::vector<PetscInt> blocks;
-  for (std::size_t b = 0; b + 1 < first_marker.size(); ++b) {
-    const auto lo = static_cast<PetscInt>(3 * first_marker[b]), hi = static_cast<PetscInt>(3 * first_marker[b + 1]);
-    if (hi > lo && lo >= first && hi <= first + roots) blocks.push_back(hi - lo);
-  }
-  // Block Jacobi asks for a block on every rank: one of no values where a rank has no body.
-  if (blocks.empty()) blocks.push_back(0);
-  COSIM_PETSC(PCBJacobiSetLocalBlocks(pc, static_cast<PetscInt>(blocks.size()), blocks.data()));
+  COSIM_PETSC(PCSetType(pc, PCSHELL));
+  COSIM_PETSC(PCShellSetName(pc, "each body's block solved on its own"));
+  COSIM_PETSC(PCShellSetContext(pc, &blocks));
+  COSIM_PETSC(PCShellSetApply(pc, apply_blocks));
   COSIM_PETSC(KSPSetFromOptions(ksp_));
+  PetscBool shell = PETSC_FALSE;
+  COSIM_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCSHELL, &shell));
+  if (shell) blocks.update(B_, first_marker);
   COSIM_PETSC(KSPSetUp(ksp_));
-  // Each body's block solved exactly unless the options say otherwise: a body alone then
-  // converges in one iteration whatever its size, where incomplete Cholesky
-  // (`-ibm_forcing_sub_pc_type icc`) took the limit of 50 for one sphere of d/h 16, and 23
-  // against 16 per step in a cloud of 1,000 spheres of d/h 6 at three quarters of the cost
-  // (bench/particulate/README.md, fluid/README.md "Throughput").
-  PetscBool bjacobi = PETSC_FALSE, chosen = PETSC_FALSE;
-  COSIM_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCBJACOBI, &bjacobi));
-  COSIM_PETSC(PetscOptionsHasName(nullptr, "ibm_forcing_", "-sub_pc_type", &chosen));
-  if (bjacobi && !chosen) {
-    PetscInt local = 0;
-    KSP* sub = nullptr;
-    COSIM_PETSC(PCBJacobiGetSubKSP(pc, &local, nullptr, &sub));
-    for (PetscInt k = 0; k < local; ++k) {
-      PC block = nullptr;
-      COSIM_PETSC(KSPGetPC(sub[k], &block));
-      COSIM_PETSC(PCSetType(block, PCLU));
-    }
-  }
 }
 
 ForcingSystem::~ForcingSystem() {

@@ -466,7 +466,7 @@ void ImmersedBoundary::force(const NavierStokes& flow, double dt, const ForcingA
   const MarkerStencils& stencils = stencils_.emplace(grid_, active_, roots);
   spread_stencils_.reset();
   if (lag > 0) spread_stencils_.emplace(grid_, spreading_, roots);
-  const ForcingSystem& system = system_.emplace(stencils, spreading(), first_marker_);
+  const ForcingSystem& system = system_.emplace(stencils, spreading(), first_marker_, block_solvers_);
   std::vector<double> g = last_impulses(stencils.sharing(), dt), residual(3 * n);
   stencils.interpolate(arrays.predicted, residual);
   const double scale = slip_against(active_, stencils.sharing(), residual);

@@ -203,6 +203,7 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   std::vector<ActiveMarker> spreading_;            // the same markers where they spread from
   std::optional<MarkerStencils> stencils_;         // their kernels, made by force() for the step
   std::optional<MarkerStencils> spread_stencils_;  // the kernels they spread with, if elsewhere
+  BodyBlockSolvers block_solvers_;                 // each body's block of it, kept from step to step
   std::optional<ForcingSystem> system_;            // and their forcing system
   std::vector<std::size_t> first_marker_{0};       // body b's markers are numbered from first_marker_[b]
   // The markers whose forces this rank holds from the last step (every marker after restore()).

@@ -169,7 +169,7 @@ TEST(ConfinedInflow, PlugDevelopsIntoPoiseuillesFlowInARoundColumn) {
   DM dm = grid.velocity_dm(2);
   const PetscScalar*** w = nullptr;
   DMDAVecGetArrayRead(dm, flow.velocity(2), &w);
-  double rate = 0, centre = 0, held = 0;
+  double rate = 0, centre = 0, held = 0, leak = 0, gap = 0;
   const int level = 2 * across;  // two diameters up
   for_each_index(grid.owned(dm), [&](const Index& p) {
     if (p[2] != level) return;
@@ -179,15 +179,20 @@ TEST(ConfinedInflow, PlugDevelopsIntoPoiseuillesFlowInARoundColumn) {
     if (r < radius) rate += u * h * h;
     if (r < h / 2) centre = std::max(centre, u);
     if (r > radius + 3 * h) held = std::max(held, std::abs(u));
+    if (r > radius) leak += u * h * h;
+    if (r > radius + 1.5 * h) gap = std::max(gap, std::abs(u));
   });
   DMDAVecRestoreArrayRead(dm, flow.velocity(2), &w);
   MPI_Allreduce(MPI_IN_PLACE, &rate, 1, MPI_DOUBLE, MPI_SUM, grid.comm());
   MPI_Allreduce(MPI_IN_PLACE, &centre, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
   MPI_Allreduce(MPI_IN_PLACE, &held, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
+  MPI_Allreduce(MPI_IN_PLACE, &gap, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
+  MPI_Allreduce(MPI_IN_PLACE, &leak, 1, MPI_DOUBLE, MPI_SUM, grid.comm());
   const double inflow = u0 * std::numbers::pi * radius * radius;
   PetscPrintf(PETSC_COMM_WORLD,
-              "column D/h %d, Re 5: flow rate %+.4f of the inflow's, centreline %.4f u0, held %.2g u0\n", across,
-              rate / inflow - 1, centre / u0, held / u0);
+              "column D/h %d, Re 5: flow rate %+.4f of the inflow's, centreline %.4f u0, held %.2g u0, "
+              "outside %.2g of the inflow, beyond 1.5 h %.2g u0\n",
+              across, rate / inflow - 1, centre / u0, held / u0, leak / inflow, gap / u0);
   EXPECT_NEAR(rate / inflow, 1.0, 0.02);
   EXPECT_NEAR(centre / u0, 2.0, 0.06);
   EXPECT_LT(held / u0, 1e-3);

@@ -2,7 +2,7 @@
 // is interpolating what is spread through the grid, also where the markers spread from
 // elsewhere than they interpolate (a moving body's, unsymmetric), and its solve meets the
 // markers' velocities to the tolerance, one iteration for one body with each body solved
-// exactly.
+// exactly, and a body's block is factored again only when it changes.
 #include <gtest/gtest.h>
 #include <petscdmda.h>
 
@@ -10,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 
 #include "fluid/ibm/forcing_system.hpp"
 #include "fluid/ibm/marker_stencils.hpp"
@@ -20,7 +21,7 @@ namespace {
 
 // Markers about a cell apart on two spheres whose kernels overlap, on a grid with walls, a
 // stretched axis and a periodic one: body 0's markers first, then body 1's, all moved by
-// `shift`.
+// `shift` and body 1's also by `second`.
 struct Cloud {
   Grid grid{
       PETSC_COMM_SELF,
@@ -28,9 +29,10 @@ struct Cloud {
   std::vector<ActiveMarker> markers;
   std::vector<std::size_t> first_marker{0};
 
-  explicit Cloud(const Eigen::Vector3d& shift = Eigen::Vector3d::Zero()) {
+  explicit Cloud(const Eigen::Vector3d& shift = Eigen::Vector3d::Zero(),
+                 const Eigen::Vector3d& second = Eigen::Vector3d::Zero()) {
     const Eigen::Vector3d centres[] = {Eigen::Vector3d(0.62, 0.71, 0.55) + shift,
-                                       Eigen::Vector3d(1.0, 0.69, 0.61) + shift};
+                                       Eigen::Vector3d(1.0, 0.69, 0.61) + shift + second};
     std::array<Box, 3> owned;
     for (int c = 0; c < 3; ++c) owned[static_cast<std::size_t>(c)] = grid.owned(grid.velocity_dm(c));
     for (const Eigen::Vector3d& centre : centres) {
@@ -130,7 +132,8 @@ void expect_solve_meets_the_tolerance(const Eigen::Vector3d& earlier) {
   const PetscInt roots = roots_by_body(PETSC_COMM_SELF, cloud.first_marker);
   const MarkerStencils stencils(cloud.grid, cloud.markers, roots);
   const MarkerStencils spreading(cloud.grid, spreading_cloud.markers, roots);
-  const ForcingSystem system(stencils, earlier.isZero() ? stencils : spreading, cloud.first_marker);
+  BodyBlockSolvers blocks;
+  const ForcingSystem system(stencils, earlier.isZero() ? stencils : spreading, cloud.first_marker, blocks);
   const std::size_t n = 3 * cloud.markers.size();
   // The misses of two bodies moving against each other, rotating.
   std::vector<double> r(n);
@@ -166,12 +169,39 @@ TEST(IbmForcingSystem, ABodyAloneSolvedExactlyTakesOneIteration) {
   cloud.first_marker.pop_back();
   COSIM_PETSC(PetscOptionsSetValue(nullptr, "-ibm_forcing_sub_pc_type", "lu"));
   const MarkerStencils stencils(cloud.grid, cloud.markers, roots_by_body(PETSC_COMM_SELF, cloud.first_marker));
-  const ForcingSystem system(stencils, stencils, cloud.first_marker);
+  BodyBlockSolvers blocks;
+  const ForcingSystem system(stencils, stencils, cloud.first_marker, blocks);
   COSIM_PETSC(PetscOptionsClearValue(nullptr, "-ibm_forcing_sub_pc_type"));
   const std::size_t n = 3 * cloud.markers.size();
   std::vector<double> g(n, 0.0), residual = random_values(n);
   EXPECT_EQ(system.solve(g, residual, 1e-10, 200), 1);
   for (double x : residual) EXPECT_LE(std::abs(x), 1e-10);
+}
+
+// The solution of a random right-hand side and the iterations it took.
+std::pair<int, std::vector<double>> solved(const Cloud& cloud, BodyBlockSolvers& blocks) {
+  const MarkerStencils stencils(cloud.grid, cloud.markers, roots_by_body(PETSC_COMM_SELF, cloud.first_marker));
+  const ForcingSystem system(stencils, stencils, cloud.first_marker, blocks);
+  const std::size_t n = 3 * cloud.markers.size();
+  std::vector<double> g(n, 0.0), residual = random_values(n);
+  const int iterations = system.solve(g, residual, 1e-10, 200);
+  return {iterations, g};
+}
+
+TEST(IbmForcingSystem, ABodysBlockIsFactoredOnceWhileItStaysTheSame) {
+  const Cloud cloud, moved(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.013, -0.007, 0.004));
+  BodyBlockSolvers blocks;
+  const auto first = solved(cloud, blocks);
+  EXPECT_EQ(blocks.factorizations(), 2);
+  // Neither body moved: the same factors give the same solution.
+  EXPECT_EQ(solved(cloud, blocks), first);
+  EXPECT_EQ(blocks.factorizations(), 2);
+  // Body 1 moved: its block alone is factored again, and the solution is a fresh solver's.
+  const auto after = solved(moved, blocks);
+  EXPECT_EQ(blocks.factorizations(), 3);
+  BodyBlockSolvers fresh;
+  EXPECT_EQ(solved(moved, fresh), after);
+  EXPECT_NE(after.second, first.second);
 }
 
 }  // namespace
