@@ -3,6 +3,7 @@
 // naming file, key and value.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -134,19 +135,23 @@ TEST(ConfinedInflow, RefusesWhatIsNotAContainersInside) {
   }
 }
 
-// Guards against: a plug fed into a round column through the whole floor of the box around it
-// (the held corners refusing it), and fluid leaking between the column and the held solid.
-// A plug u0 at Re = u0 D / nu = 5 enters a column of D/h 12, three diameters long, and
-// develops into Poiseuille's flow (entry length about (0.6 + 0.056 Re) D): two diameters
-// up, the flow rate through the column is the inflow's and the centreline speed twice u0.
-TEST(ConfinedInflow, PlugDevelopsIntoPoiseuillesFlowInARoundColumn) {
-  const double radius = 0.5, nu = 1.0, u0 = 5.0 * nu / (2 * radius);
+// A plug u0 at Reynolds number u0 D / nu fed into a round column of D/h 12, three diameters
+// long, its axis off the grid's lines, run for `transits` times the column's length over u0:
+// at two diameters up, the flow rate through the column's section and outside it (as
+// fractions of the inflow), the centreline speed and the largest speed in the held solid
+// (over u0).
+struct ColumnFlow {
+  double inside, outside, centre, held;
+};
+
+ColumnFlow plug_into_a_round_column(double reynolds, double transits) {
+  const double radius = 0.5, nu = 1.0, u0 = reynolds * nu / (2 * radius);
   const int across = 12, margin = 6, length = 3 * across;
   const double h = 2 * radius / across, side = (across + margin) * h;
   const Axis box = Axis::uniform(across + margin, -side / 2, side / 2, false);
   const std::vector<Axis> axes{box, box, Axis::uniform(length, 0, length * h, false)};
   Grid grid(PETSC_COMM_WORLD, {axes[0], axes[1], axes[2]});
-  // The axis off the grid's lines; the caps beyond both ends of the box.
+  // The caps beyond both ends of the box.
   const geometry::Container column(geometry::Cylinder(radius, 2 * length * h));
   const geometry::Pose pose({0.29 * h, -0.13 * h, length * h / 2}, Eigen::Quaterniond::Identity());
   BoundaryConditions bc(grid);
@@ -157,45 +162,66 @@ TEST(ConfinedInflow, PlugDevelopsIntoPoiseuillesFlowInARoundColumn) {
              },
              column, pose, 2, Side::lower, axes)));
   bc.set(2, Side::upper, Boundary::outflow());
-  const double dt = h * h / nu;
+  const double dt = std::min(h * h / nu, 0.5 * h / u0);
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(nu), {0, 0, 0}},
                     {.cfl = 10, .dt_max = dt, .dt_initial = dt});
   ImmersedBoundary bodies(grid, {});
   bodies.add({column, pose});
   flow.set_velocity([](const Point&) { return Point{0, 0, 0}; });
-  // Through the column in 0.6, the slowest viscous mode down to 1e-6 of itself by 2.4 R^2 / nu.
-  while (flow.time() < 0.6 - dt / 2) flow.step(dt, bodies.for_step());
+  const double end = transits * length * h / u0;
+  while (flow.time() < end - dt / 2) flow.step(dt, bodies.for_step());
 
   DM dm = grid.velocity_dm(2);
   const PetscScalar*** w = nullptr;
   DMDAVecGetArrayRead(dm, flow.velocity(2), &w);
-  double rate = 0, centre = 0, held = 0, leak = 0, gap = 0;
+  ColumnFlow out{0, 0, 0, 0};
   const int level = 2 * across;  // two diameters up
   for_each_index(grid.owned(dm), [&](const Index& p) {
     if (p[2] != level) return;
     const Point x = grid.position(2, p);
     const double r = std::hypot(x[0] - pose.position().x(), x[1] - pose.position().y());
     const double u = w[p[2]][p[1]][p[0]];
-    if (r < radius) rate += u * h * h;
-    if (r < h / 2) centre = std::max(centre, u);
-    if (r > radius + 3 * h) held = std::max(held, std::abs(u));
-    if (r > radius) leak += u * h * h;
-    if (r > radius + 1.5 * h) gap = std::max(gap, std::abs(u));
+    (r < radius ? out.inside : out.outside) += u * h * h;
+    if (r < h / 2) out.centre = std::max(out.centre, u);
+    if (r > radius + 3 * h) out.held = std::max(out.held, std::abs(u));
   });
   DMDAVecRestoreArrayRead(dm, flow.velocity(2), &w);
-  MPI_Allreduce(MPI_IN_PLACE, &rate, 1, MPI_DOUBLE, MPI_SUM, grid.comm());
-  MPI_Allreduce(MPI_IN_PLACE, &centre, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
-  MPI_Allreduce(MPI_IN_PLACE, &held, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
-  MPI_Allreduce(MPI_IN_PLACE, &gap, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
-  MPI_Allreduce(MPI_IN_PLACE, &leak, 1, MPI_DOUBLE, MPI_SUM, grid.comm());
+  MPI_Allreduce(MPI_IN_PLACE, &out.inside, 2, MPI_DOUBLE, MPI_SUM, grid.comm());
+  MPI_Allreduce(MPI_IN_PLACE, &out.centre, 2, MPI_DOUBLE, MPI_MAX, grid.comm());
   const double inflow = u0 * std::numbers::pi * radius * radius;
+  out.inside /= inflow;
+  out.outside /= inflow;
+  out.centre /= u0;
+  out.held /= u0;
   PetscPrintf(PETSC_COMM_WORLD,
-              "column D/h %d, Re 5: flow rate %+.4f of the inflow's, centreline %.4f u0, held %.2g u0, "
-              "outside %.2g of the inflow, beyond 1.5 h %.2g u0\n",
-              across, rate / inflow - 1, centre / u0, held / u0, leak / inflow, gap / u0);
-  EXPECT_NEAR(rate / inflow, 1.0, 0.02);
-  EXPECT_NEAR(centre / u0, 2.0, 0.06);
-  EXPECT_LT(held / u0, 1e-3);
+              "column D/h %d, Re %.0f: flow rate through the column %+.4f of the inflow's, outside it %+.4f; centreline "
+              "%.4f u0, held %.2g u0\n",
+              across, reynolds, out.inside - 1, out.outside, out.centre, out.held);
+  return out;
+}
+
+// Guards against: a plug fed into a round column through the whole floor of the box around it
+// (the held corners refusing it), and fluid leaking between the column and the held solid.
+// At Re 5 the plug develops into Poiseuille's flow (entry length about (0.6 + 0.056 Re) D)
+// within two diameters: the flow rate through the column is the inflow's and the centreline
+// speed twice u0.
+TEST(ConfinedInflow, PlugDevelopsIntoPoiseuillesFlowInARoundColumn) {
+  // Through the column once: the slowest viscous mode down to 1e-6 of itself by 2.4 R^2 / nu.
+  const ColumnFlow flow = plug_into_a_round_column(5, 1);
+  EXPECT_NEAR(flow.inside, 1.0, 0.02);
+  EXPECT_NEAR(flow.centre, 2.0, 0.06);
+  EXPECT_LT(flow.held, 1e-3);
+}
+
+// At Re 300 the plug is still developing two diameters up, driven hardest next to the wall,
+// and part of it passes outside the wall: through the faces between the markers' kernels
+// and the held solid, which nothing forces (docs/limits.md). Measured: 3.7 % of the flow at
+// D/h 12; this guards against more.
+TEST(ConfinedInflow, FlowPastTheColumnsWallAtReynoldsNumber300IsBounded) {
+  const ColumnFlow flow = plug_into_a_round_column(300, 1.5);
+  EXPECT_NEAR(flow.inside + flow.outside, 1.0, 1e-3);
+  EXPECT_LT(flow.outside, 0.05);
+  EXPECT_LT(flow.held, 1e-3);
 }
 
 }  // namespace
