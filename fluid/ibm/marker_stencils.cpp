@@ -64,41 +64,46 @@ void MarkerStencils::interpolate(const FaceArrays& field, std::vector<double>& o
 
 std::vector<MarkerStencils::Product> MarkerStencils::products(const MarkerStencils& spreading) const {
   const std::size_t values = first_.size() - 1;
-  // The spreading's touches of each face, as lists threaded through `next` from the face's
-  // `head`.
-  std::array<std::vector<std::ptrdiff_t>, 3> head;
+  // The spreading's touches grouped by face: face f of component c is key base[c] + f, its
+  // touches entries at[key] .. at[key + 1] - 1 of `by_face`.
+  struct Spread {
+    std::size_t value;
+    double spread;
+  };
+  const std::vector<Touch>& spread = spreading.touches_;
+  std::array<std::size_t, 4> base{};
   for (std::size_t c = 0; c < 3; ++c) {
     const Box& b = owned_[c];
-    head[c].assign(static_cast<std::size_t>(
-                       std::max<PetscInt>(0, (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]))),
-                   -1);
+    base[c + 1] = base[c] + static_cast<std::size_t>(
+                                std::max<PetscInt>(0, (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2])));
   }
-  const std::vector<Touch>& spread = spreading.touches_;
-  std::vector<std::ptrdiff_t> next(spread.size());
-  std::vector<std::size_t> value_of(spread.size());
+  const auto key = [&](std::size_t i, const Touch& t) { return base[i % 3] + static_cast<std::size_t>(t.offset); };
+  std::vector<std::size_t> at(base[3] + 1, 0);
   for (std::size_t i = 0; i < values; ++i)
-    for (std::size_t t = spreading.first_[i]; t < spreading.first_[i + 1]; ++t) {
-      auto& h = head[i % 3][static_cast<std::size_t>(spread[t].offset)];
-      next[t] = h;
-      h = static_cast<std::ptrdiff_t>(t);
-      value_of[t] = i;
-    }
+    for (std::size_t t = spreading.first_[i]; t < spreading.first_[i + 1]; ++t) ++at[key(i, spread[t])];
+  for (std::size_t k = 1; k < at.size(); ++k) at[k] += at[k - 1];  // each face's end ...
+  std::vector<Spread> by_face(spread.size());
+  for (std::size_t i = values; i-- > 0;)
+    for (std::size_t t = spreading.first_[i + 1]; t-- > spreading.first_[i];)
+      by_face[--at[key(i, spread[t])]] = {i, spread[t].spread};  // ... becomes its start
   // Row i gathers its products in `row`, the columns it met in `met`.
   std::vector<double> row(values, 0.0);
   std::vector<char> seen(values, 0);
   std::vector<std::size_t> met;
   std::vector<Product> out;
   for (std::size_t i = 0; i < values; ++i) {
-    for (std::size_t t = first_[i]; t < first_[i + 1]; ++t)
-      for (std::ptrdiff_t k = head[i % 3][static_cast<std::size_t>(touches_[t].offset)]; k >= 0;
-           k = next[static_cast<std::size_t>(k)]) {
-        const std::size_t j = value_of[static_cast<std::size_t>(k)];
+    for (std::size_t t = first_[i]; t < first_[i + 1]; ++t) {
+      const std::size_t f = key(i, touches_[t]);
+      const double w = touches_[t].weight;
+      for (std::size_t k = at[f]; k < at[f + 1]; ++k) {
+        const std::size_t j = by_face[k].value;
         if (!seen[j]) {
           seen[j] = 1;
           met.push_back(j);
         }
-        row[j] += touches_[t].weight * spread[static_cast<std::size_t>(k)].spread;
+        row[j] += w * by_face[k].spread;
       }
+    }
     std::sort(met.begin(), met.end());  // the columns in order, as the matrix keeps them
     for (std::size_t j : met) {
       out.push_back({ids_[i], ids_[j], row[j]});

@@ -193,10 +193,11 @@ ColumnFlow plug_into_a_round_column(double reynolds, double transits) {
   out.outside /= inflow;
   out.centre /= u0;
   out.held /= u0;
-  PetscPrintf(PETSC_COMM_WORLD,
-              "column D/h %d, Re %.0f: flow rate through the column %+.4f of the inflow's, outside it %+.4f; centreline "
-              "%.4f u0, held %.2g u0\n",
-              across, reynolds, out.inside - 1, out.outside, out.centre, out.held);
+  PetscPrintf(
+      PETSC_COMM_WORLD,
+      "column D/h %d, Re %.0f: flow rate through the column %+.4f of the inflow's, outside it %+.4f; centreline "
+      "%.4f u0, held %.2g u0\n",
+      across, reynolds, out.inside - 1, out.outside, out.centre, out.held);
   return out;
 }
 
