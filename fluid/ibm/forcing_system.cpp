@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <exception>
 
+#include "fluid/ibm/summed_rows.hpp"
 #include "fluid/petsc_check.hpp"
 #include "fluid/step_stages.hpp"
 
@@ -68,33 +69,12 @@ ForcingSystem::ForcingSystem(const MarkerStencils& stencils, const MarkerStencil
                              std::span<const std::size_t> first_marker, BodyBlockSolvers& blocks)
     : stencils_(stencils) {
   const MarkerSharing& sharing = stencils.sharing();
-  const PetscInt first = sharing.first_root(), roots = sharing.roots();
-  COSIM_PETSC(MatCreate(sharing.comm(), &B_));
-  COSIM_PETSC(MatSetSizes(B_, roots, roots, PETSC_DETERMINE, PETSC_DETERMINE));
-  COSIM_PETSC(MatSetType(B_, MATAIJ));
-  // Every row holds its diagonal, also a value no rank holds (a marker inside another body
-  // or outside the domain), whose row is then the identity's. PETSc sums the entries the
-  // ranks give a row (a marker on a cut between ranks).
-  std::vector<MarkerStencils::Product> entries = stencils.products(spreading);
-  for (PetscInt r = first; r < first + roots; ++r) entries.push_back({r, r, 0.0});
-  std::vector<PetscInt> rows, columns;
-  std::vector<PetscScalar> values;
-  for (const auto& e : entries) {
-    rows.push_back(e.row);
-    columns.push_back(e.column);
-    values.push_back(e.value);
-  }
-  COSIM_PETSC(MatSetPreallocationCOO(B_, static_cast<PetscCount>(rows.size()), rows.data(), columns.data()));
-  COSIM_PETSC(MatSetValuesCOO(B_, values.data(), ADD_VALUES));
+  // A value no rank holds (a marker inside another body or outside the domain) has the
+  // identity's row.
+  B_ = summed_rows(sharing.comm(), sharing.roots(), stencils.products(spreading));
   COSIM_PETSC(MatCreateVecs(B_, &g_, &rhs_));
   COSIM_PETSC(VecDuplicate(g_, &work_));
   COSIM_PETSC(VecDuplicate(g_, &left_));
-  COSIM_PETSC(MatGetDiagonal(B_, work_));
-  PetscScalar* d = nullptr;
-  COSIM_PETSC(VecGetArray(work_, &d));
-  for (PetscInt r = 0; r < roots; ++r) d[r] = d[r] == 0 ? 1.0 : 0.0;
-  COSIM_PETSC(VecRestoreArray(work_, &d));
-  COSIM_PETSC(MatDiagonalSet(B_, work_, ADD_VALUES));
 
   COSIM_PETSC(KSPCreate(sharing.comm(), &ksp_));
   COSIM_PETSC(KSPSetOptionsPrefix(ksp_, "ibm_forcing_"));
