@@ -6,6 +6,23 @@
 
 namespace cosim::fluid {
 
+namespace {
+
+// Whether two sequential AIJ matrices have their entries in the same places.
+bool same_pattern(Mat a, Mat b) {
+  PetscInt m = 0, n = 0;
+  const PetscInt *ai = nullptr, *aj = nullptr, *bi = nullptr, *bj = nullptr;
+  PetscBool done_a = PETSC_FALSE, done_b = PETSC_FALSE;
+  COSIM_PETSC(MatGetRowIJ(a, 0, PETSC_FALSE, PETSC_FALSE, &m, &ai, &aj, &done_a));
+  COSIM_PETSC(MatGetRowIJ(b, 0, PETSC_FALSE, PETSC_FALSE, &n, &bi, &bj, &done_b));
+  const bool same = done_a && done_b && m == n && std::equal(ai, ai + m + 1, bi) && std::equal(aj, aj + ai[m], bj);
+  COSIM_PETSC(MatRestoreRowIJ(a, 0, PETSC_FALSE, PETSC_FALSE, &m, &ai, &aj, &done_a));
+  COSIM_PETSC(MatRestoreRowIJ(b, 0, PETSC_FALSE, PETSC_FALSE, &n, &bi, &bj, &done_b));
+  return same;
+}
+
+}  // namespace
+
 BodyBlockSolvers::~BodyBlockSolvers() {
   for (Block& block : blocks_) destroy(block);
 }
@@ -55,20 +72,23 @@ void BodyBlockSolvers::update(Mat B, std::span<const std::size_t> first_marker) 
     COSIM_PETSC(MatCreateSubMatrix(local, rows, rows, MAT_INITIAL_MATRIX, &matrix));
     COSIM_PETSC(ISDestroy(&rows));
     const auto old = std::find_if(blocks_.begin(), blocks_.end(), [&](const Block& k) { return k.body == b; });
-    PetscBool same = PETSC_FALSE;
-    if (old != blocks_.end() && old->matrix != nullptr) {
-      PetscInt size = 0;
-      COSIM_PETSC(MatGetLocalSize(old->matrix, &size, nullptr));
-      if (size == hi - lo) COSIM_PETSC(MatEqual(old->matrix, matrix, &same));
-    }
-    if (same) {
-      COSIM_PETSC(MatDestroy(&matrix));
-      kept.push_back(*old);
-      kept.back().offset = lo - first;
-      *old = Block{};
-    } else {
+    if (old == blocks_.end() || !same_pattern(old->matrix, matrix)) {
       kept.push_back(factored(b, lo - first, matrix));
+      continue;
     }
+    PetscBool same = PETSC_FALSE;
+    COSIM_PETSC(MatEqual(old->matrix, matrix, &same));
+    if (!same) {
+      // New values where the old ones were: the solver sees the same pattern and keeps its
+      // ordering and symbolic factors.
+      COSIM_PETSC(MatCopy(matrix, old->matrix, SAME_NONZERO_PATTERN));
+      COSIM_PETSC(KSPSetUp(old->ksp));
+      ++refactorizations_;
+    }
+    COSIM_PETSC(MatDestroy(&matrix));
+    kept.push_back(*old);
+    kept.back().offset = lo - first;
+    *old = Block{};
   }
   for (Block& block : blocks_) destroy(block);
   blocks_ = std::move(kept);

@@ -4,7 +4,9 @@
 // factored (LU unless the options `-ibm_forcing_sub_*` say otherwise) when it first appears
 // and kept, with its factors, for as long as its entries stay the same: a body that does
 // not move (a container, a fixed sphere) is factored once, not at every step, unless
-// another body comes to cover some of its markers. The solvers outlive the steps' systems.
+// another body comes to cover some of its markers. A block whose entries changed but not
+// where they are (a body moved a little) keeps its ordering and symbolic factors and is
+// factored numerically only. The solvers outlive the steps' systems.
 #include <petscksp.h>
 
 #include <cstddef>
@@ -27,8 +29,10 @@ class BodyBlockSolvers {
   // y = x with each block's rows solved by its block (collective only through B's layout:
   // the blocks are this rank's).
   void apply(Vec x, Vec y) const;
-  // The blocks set up (factored) since construction.
+  // The blocks factored from scratch since construction, and those factored again on the
+  // same pattern.
   int factorizations() const { return factorizations_; }
+  int refactorizations() const { return refactorizations_; }
 
  private:
   struct Block {
@@ -42,7 +46,7 @@ class BodyBlockSolvers {
   Block factored(std::size_t body, PetscInt offset, Mat matrix);
 
   std::vector<Block> blocks_;
-  int factorizations_ = 0;
+  int factorizations_ = 0, refactorizations_ = 0;
 };
 
 }  // namespace cosim::fluid
