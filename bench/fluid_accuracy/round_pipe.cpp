@@ -28,7 +28,9 @@ PipeFlow round_pipe(int cells_across, const Eigen::Vector2d& offset, int margin,
   const double dt = h * h / kNu;
   NavierStokes flow(grid, bc, {1.0, ViscosityModel::newtonian(kNu), {0, 0, kDrive}},
                     {.cfl = 10, .dt_max = dt, .dt_initial = dt});
-  ImmersedBoundary bodies(grid, {.kernel = kernel});
+  IbmOptions options;
+  options.kernel = kernel;
+  ImmersedBoundary bodies(grid, options);
   // Twice the period long: its caps lie beyond both ends.
   const Eigen::Vector2d axis = h * offset;
   bodies.add({geometry::Container(geometry::Cylinder(kRadius, 12 * h)),
