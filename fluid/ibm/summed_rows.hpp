@@ -4,8 +4,7 @@
 // entries sent to the rows' owners, summed there and laid out row by row. Where the entries
 // come grouped by row in ascending order, each row's columns ascending, as
 // MarkerStencils::products gives them, nothing is sorted but the few rows that arrive from
-// more than one rank; PETSc's COO assembly sorts them all, which in a bed of a thousand
-// spheres in a round column was a third of the forcing.
+// more than one rank, where PETSc's COO assembly sorts them all.
 #include <petscmat.h>
 
 #include <vector>
