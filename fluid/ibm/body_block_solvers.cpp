@@ -63,6 +63,7 @@ void BodyBlockSolvers::update(Mat B, std::span<const std::size_t> first_marker) 
   Mat local = nullptr;  // B's rows and columns on this rank, numbered from 0
   COSIM_PETSC(MatGetDiagonalBlock(B, &local));
   std::vector<Block> kept;
+  auto next = blocks_.begin();
   for (std::size_t b = 0; b + 1 < first_marker.size(); ++b) {
     const auto lo = static_cast<PetscInt>(3 * first_marker[b]), hi = static_cast<PetscInt>(3 * first_marker[b + 1]);
     if (hi <= lo || lo < first || hi > end) continue;
@@ -71,7 +72,9 @@ void BodyBlockSolvers::update(Mat B, std::span<const std::size_t> first_marker) 
     Mat matrix = nullptr;
     COSIM_PETSC(MatCreateSubMatrix(local, rows, rows, MAT_INITIAL_MATRIX, &matrix));
     COSIM_PETSC(ISDestroy(&rows));
-    const auto old = std::find_if(blocks_.begin(), blocks_.end(), [&](const Block& k) { return k.body == b; });
+    // The last step's blocks come by ascending body, as the bodies do here.
+    while (next != blocks_.end() && next->body < b) ++next;
+    const auto old = next != blocks_.end() && next->body == b ? next : blocks_.end();
     if (old == blocks_.end() || !same_pattern(old->matrix, matrix)) {
       kept.push_back(factored(b, lo - first, matrix));
       continue;

@@ -14,14 +14,17 @@ using Product = MarkerStencils::Product;
 bool by_row(const Product& a, const Product& b) { return a.row < b.row; }
 
 // Every rank's entries for the rows this rank owns, rank after rank, each rank's in the order
-// it gave them (by ascending row); rank r's are from_rank[r] .. from_rank[r + 1] - 1.
+// it gave them (by ascending row); rank r's are from_rank[r] .. from_rank[r + 1] - 1, and
+// `first` is this rank's first row.
 std::vector<Product> gathered(MPI_Comm comm, PetscInt rows, const std::vector<Product>& entries,
-                              std::vector<std::size_t>& from_rank) {
-  int size = 1;
+                              std::vector<std::size_t>& from_rank, PetscInt& first) {
+  int size = 1, rank = 0;
   MPI_Comm_size(comm, &size);
+  MPI_Comm_rank(comm, &rank);
   std::vector<PetscInt> ends(static_cast<std::size_t>(size));
   MPI_Allgather(&rows, 1, MPIU_INT, ends.data(), 1, MPIU_INT, comm);
   for (std::size_t r = 1; r < ends.size(); ++r) ends[r] += ends[r - 1];
+  first = ends[static_cast<std::size_t>(rank)] - rows;
   // The entries for rank r's rows are consecutive: the entries come by ascending row.
   std::vector<int> send(static_cast<std::size_t>(size), 0), receive(send.size()), sent_at(send.size()),
       received_at(send.size());
@@ -59,13 +62,9 @@ std::vector<Product> gathered(MPI_Comm comm, PetscInt rows, const std::vector<Pr
 
 Mat summed_rows(MPI_Comm comm, PetscInt rows, std::vector<Product> entries) {
   if (!std::is_sorted(entries.begin(), entries.end(), by_row)) std::stable_sort(entries.begin(), entries.end(), by_row);
-  PetscInt first = 0;
-  MPI_Exscan(&rows, &first, 1, MPIU_INT, MPI_SUM, comm);
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  if (rank == 0) first = 0;
+  PetscInt first = 0;  // this rank's first row
   std::vector<std::size_t> from_rank;
-  const std::vector<Product> mine = gathered(comm, rows, entries, from_rank);
+  const std::vector<Product> mine = gathered(comm, rows, entries, from_rank, first);
   entries = {};
   std::vector<std::size_t> cursor(from_rank.begin(), from_rank.end() - 1);
   std::vector<PetscInt> starts{0}, columns;
