@@ -35,6 +35,8 @@ import h5py
 import numpy as np
 import yaml
 
+from scene_bodies import bodies_of
+
 
 def settling_velocity(run):
     """The first sphere's mean speed over the lower half of its fall, stopping one diameter
@@ -48,23 +50,6 @@ def settling_velocity(run):
     rows = np.flatnonzero((z <= (z[0] + lowest) / 2) & (z >= lowest + 2 * radius))
     first, last = rows[0], rows[-1]
     return (z[first] - z[last]) / (t[last] - t[first]), t[first], t[last]
-
-
-def bodies_of(scene, names):
-    """The scene's body entries, one per body of the run file (`names`, scene order): an entry
-    with `generate` stands for the bodies its name pattern names in a row (Python's format
-    reads the patterns {} and {:03d} as cosim does)."""
-    bodies, k = [], 0
-    for entry in scene["bodies"]:
-        if "generate" not in entry:
-            bodies.append(entry)
-            k += 1
-            continue
-        i = 0
-        while k < len(names) and names[k] == entry["name"].format(i):
-            bodies.append(dict(entry, name=names[k]))
-            k, i = k + 1, i + 1
-    return bodies
 
 
 def column_of(scene, lo, hi):
