@@ -10,10 +10,42 @@
 # are drawn as black points. Needs ParaView (Debian paraview, python3-paraview).
 import sys
 
-from paraview.simple import (Clip, ColorBy, CreateView, Glyph, GetColorTransferFunction, Render, SaveScreenshot, Show,
-                             Slice, Transform, XDMFReader)
+from paraview.simple import (Clip, ColorBy, CreateView, Glyph, GetColorTransferFunction, Render, SaveScreenshot, ProgrammableFilter,
+                             Show, Slice, Transform, XDMFReader)
 
 AXES = "xyz"
+
+# A ProgrammableFilter's script: the points of every block that is not the grid of cells
+# (the point sets), as one vtkPolyData of vertices.
+GATHER_POINTS = """
+import vtk
+points, vertices = vtk.vtkPoints(), vtk.vtkCellArray()
+blocks = self.GetInputDataObject(0, 0).NewIterator()
+blocks.InitTraversal()
+while not blocks.IsDoneWithTraversal():
+    block = blocks.GetCurrentDataObject()
+    if not block.IsA("vtkRectilinearGrid"):
+        for i in range(block.GetNumberOfPoints()):
+            vertices.InsertNextCell(1)
+            vertices.InsertCellPoint(points.InsertNextPoint(block.GetPoint(i)))
+    blocks.GoToNextItem()
+output = self.GetPolyDataOutput()
+output.SetPoints(points)
+output.SetVerts(vertices)
+"""
+
+
+def cells_bounds(reader):
+    """The bounds and extent of the reader's grid of cells."""
+    from paraview import servermanager
+    blocks = servermanager.Fetch(reader).NewIterator()
+    blocks.InitTraversal()
+    while not blocks.IsDoneWithTraversal():
+        block = blocks.GetCurrentDataObject()
+        if block.IsA("vtkRectilinearGrid"):
+            return block.GetBounds(), block.GetExtent()
+        blocks.GoToNextItem()
+    fail("no grid of cells (a run with fields writes one)")
 
 
 def fail(message):
@@ -29,18 +61,16 @@ def main(xmf, plane, at, png):
     normal = [0.0, 0.0, 0.0]
     normal[axis] = 1.0
 
-    # Two readers of one sidecar: the grid's cells, and the point sets (every other grid).
-    # A grid's name carries its field write as a suffix: cells, cells[1], ...
+    # The reader gives per field write a block of cells (a rectilinear grid) and a block of
+    # points per point set; the slice cuts the cells, and the points are gathered apart.
     fluid = XDMFReader(FileNames=[xmf])
-    names = list(fluid.GridStatus)
-    fluid.GridStatus = [n for n in names if n.split("[")[0] == "cells"]
-    if not fluid.GridStatus:
-        fail(f"{xmf}: no grid of cells (a run with fields writes one)")
     times = list(fluid.TimestepValues) or [0.0]
     time = min(times, key=lambda t: abs(t - float(at)))
     fluid.UpdatePipeline(time)
     info = fluid.GetDataInformation()
-    bounds, extent = info.GetBounds(), info.GetExtent()
+    if info.DataInformation.GetNumberOfCells() == 0:
+        fail(f"{xmf}: no cells (a run with fields writes them)")
+    bounds, extent = cells_bounds(fluid)
     lo, hi = bounds[2 * axis], bounds[2 * axis + 1]
     if not lo <= value <= hi:
         fail(f"{axis_name}={value} is outside the grid's [{lo:g}, {hi:g}]")
@@ -70,9 +100,9 @@ def main(xmf, plane, at, png):
     glyphs.ColorArrayName = [None, ""]
     glyphs.AmbientColor = glyphs.DiffuseColor = [1, 1, 1]
 
-    markers = XDMFReader(FileNames=[xmf])
-    markers.GridStatus = [n for n in names if n.split("[")[0] != "cells"]
-    if markers.GridStatus:
+    markers = ProgrammableFilter(Input=fluid, OutputDataSetType="vtkPolyData", Script=GATHER_POINTS)
+    markers.UpdatePipeline(time)
+    if markers.GetDataInformation().GetNumberOfPoints() > 0:
         above = Clip(Input=markers)
         above.ClipType.Origin = [value - half_cell if a == axis else 0 for a in range(3)]
         above.ClipType.Normal = normal
