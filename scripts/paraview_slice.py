@@ -10,8 +10,8 @@
 # are drawn as black points. Needs ParaView (Debian paraview, python3-paraview).
 import sys
 
-from paraview.simple import (Clip, ColorBy, CreateView, Glyph, GetColorTransferFunction, Render, SaveScreenshot, ProgrammableFilter,
-                             Show, Slice, Transform, XDMFReader)
+from paraview.simple import (Clip, ColorBy, CreateView, GetColorTransferFunction, Glyph, ProgrammableFilter, Render,
+                             SaveScreenshot, Show, Slice, Transform, XDMFReader)
 
 AXES = "xyz"
 
@@ -45,7 +45,7 @@ def cells_bounds(reader):
         if block.IsA("vtkRectilinearGrid"):
             return block.GetBounds(), block.GetExtent()
         blocks.GoToNextItem()
-    fail("no grid of cells (a run with fields writes one)")
+    fail(f"{reader.FileNames[0]}: no grid of cells (a run with fields writes one)")
 
 
 def fail(message):
@@ -55,9 +55,10 @@ def fail(message):
 
 def main(xmf, plane, at, png):
     axis_name, _, value = plane.partition("=")
-    if axis_name not in AXES or not value:
-        fail(f"'{plane}' is not AXIS=VALUE with AXIS x, y or z (e.g. y=0.125)")
-    axis, value = AXES.index(axis_name), float(value)
+    try:
+        axis, value, at = AXES.index(axis_name), float(value), float(at)
+    except ValueError:
+        fail(f"'{plane}' is not AXIS=VALUE with AXIS x, y or z (e.g. y=0.125), or '{at}' is not a time")
     normal = [0.0, 0.0, 0.0]
     normal[axis] = 1.0
 
@@ -65,11 +66,8 @@ def main(xmf, plane, at, png):
     # points per point set; the slice cuts the cells, and the points are gathered apart.
     fluid = XDMFReader(FileNames=[xmf])
     times = list(fluid.TimestepValues) or [0.0]
-    time = min(times, key=lambda t: abs(t - float(at)))
+    time = min(times, key=lambda t: abs(t - at))
     fluid.UpdatePipeline(time)
-    info = fluid.GetDataInformation()
-    if info.DataInformation.GetNumberOfCells() == 0:
-        fail(f"{xmf}: no cells (a run with fields writes them)")
     bounds, extent = cells_bounds(fluid)
     lo, hi = bounds[2 * axis], bounds[2 * axis + 1]
     if not lo <= value <= hi:
