@@ -19,6 +19,26 @@ test ! -e "$work/out/empty-trajectories.png"
 
 "$plot" "$work/run.h5" --out "$work/one" --bodies ball --slice z=0.05 --at 1.0
 test -s "$work/one/run-slice.png" && test -s "$work/one/run-trajectories.png"
+# The plane's velocity against the sample's u = (-y, x, 0), and the ball's surface points
+# (radius 0.1 at height 0.1 cos(2 pi t)) picked within half a cell of the plane.
+/usr/bin/python3 - "$plot" "$work/run.h5" <<'PY'
+import importlib.machinery, importlib.util, sys
+import numpy as np
+loader = importlib.machinery.SourceFileLoader("plot", sys.argv[1])
+plot = importlib.util.module_from_spec(importlib.util.spec_from_loader("plot", loader))
+loader.exec_module(plot)
+time, nodes, u, points = plot.plane_of_run(sys.argv[2], (2, 0.05), 1.0)  # z = 0.05 cuts the layer -0.1 .. 0.1
+assert time == 1.0, time
+x, y = (0.5 * (n[1:] + n[:-1]) for n in nodes[:2])
+assert u.shape == (4, 6, 3), u.shape
+assert np.allclose(u[..., 0], -y[:, None]) and np.allclose(u[..., 1], x[None, :]) and np.allclose(u[..., 2], 0)
+assert len(points) == 8 and np.allclose(points[:, 2], 0.1), points  # the ball at z = 0.1, inside the layer
+time, nodes, u, points = plot.plane_of_run(sys.argv[2], (0, 0.1), 1.0)  # x = 0.1 cuts the cells 0 .. 1/3
+assert u.shape == (5, 4, 3) and np.allclose(u[..., 1], 1 / 6), u[..., 1]
+assert len(points) == 5 and np.all(points[:, 0] >= 0.1 - 1 / 6), points  # x within 1/6 of the plane
+time, _, _, points = plot.plane_of_run(sys.argv[2], (2, 0.05), 0.6)  # the write at 0.5: the ball at -0.1
+assert time == 0.5 and len(points) == 0, (time, points)
+PY
 "$plot" "$work/empty.h5" --slice x=0 2>"$work/err" && { echo "a slice without fields"; exit 1; }
 for bad in "--slice q=1" "--slice z=3" "--bodies nobody"; do
   status=0
