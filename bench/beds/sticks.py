@@ -2,8 +2,11 @@
 """Capsules settling in a box from a run file (configs/sedimenting-sticks.yaml): the
 deepest overlap over all written rows, as a fraction of the capsules' radius, of two
 capsules, of a capsule with a fixed sphere and of a capsule with a wall of cosim-rigidbody;
-the cloud's mean fall speed over a time window; where the capsules end; and what the run
-took (its wall time and seconds per window).
+the cloud's mean fall speed over a time window; where the capsules end; the capsules'
+jitter, the sign of an unstable coupling (the root mean square over the capsules of each
+one's velocity less its running mean over five rows: a coupling that turns a velocity over
+every few windows shows there first when the rows are windows, `output.every: 1`); and what
+the run took (its wall time and seconds per window).
 
     bench/beds/sticks.py run.h5 [--settle 1 3] [--plot cloud.png]
 
@@ -40,6 +43,16 @@ def deepest_pair(a, b, radius, reach):
     if len(i) == 0:
         return -math.inf
     return float(((2 * radius - segment_distances(a[i], b[i], a[j], b[j])) / radius).max())
+
+
+def jitter(v):
+    """Per row of velocities (rows, capsules, 3): the root mean square over the capsules of
+    the velocity less its centred running mean over five rows (NaN on the first and last two)."""
+    out = np.full(len(v), math.nan)
+    if len(v) >= 5:
+        mean = sum(v[k:len(v) - 4 + k] for k in range(5)) / 5
+        out[2:-2] = np.sqrt((np.linalg.norm(v[2:-2] - mean, axis=2) ** 2).mean(axis=1))
+    return out
 
 
 def main():
@@ -94,6 +107,9 @@ def main():
     print(f"at t = {t[-1]:.3f} s {on_floor.sum()} of {len(sticks)} on the floor, the cloud's mean height "
           f"{x[-1, :, 2].mean() - lo[2]:.4f} m (from {x[0, :, 2].mean() - lo[2]:.4f}), the fastest capsule at "
           f"{np.linalg.norm(v[-1], axis=1).max():.4f} m/s; the fastest ever {np.linalg.norm(v, axis=2).max():.4f} m/s")
+    shaking = jitter(v)
+    marks = [k for k in range(len(t)) if np.isfinite(shaking[k]) and abs(t[k] - round(t[k])) < 1e-9]
+    print("jitter [m/s] at whole seconds: " + ", ".join(f"{t[k]:g} s {shaking[k]:.4f}" for k in marks))
     if args.settle:
         window = (t >= args.settle[0] - 1e-9) & (t <= args.settle[1] + 1e-9)
         print(f"falls at {-v[window, :, 2].mean():.4f} m/s on average over {args.settle[0]}-{args.settle[1]} s")
