@@ -67,11 +67,24 @@ TEST(CapsuleCapsule, CrossingParallelAndThroughEachOther) {
   const Shape a = Capsule(0.5, 2.0), b = Capsule(0.5, 2.0);
   const auto along_x = about(Y, M_PI / 2);
   expect_single(contacts(a, at(), b, at(0.9 * Y, along_x)), -0.1, Y, {0, 0.45, 0});
+  // Parallel axes overlapping over z in [-0.5, 1]: the closest point (a's middle) and the
+  // far end of the overlap (the near end is within a radius of the closest point).
   const auto parallel = contacts(a, at(), b, at({0.8, 0, 0.5}));
-  ASSERT_EQ(parallel.count, 1);
-  EXPECT_NEAR(parallel.points[0].distance, -0.2, 1e-12);
-  EXPECT_TRUE(parallel.points[0].normal.isApprox(X, 1e-12));
-  EXPECT_NEAR(parallel.points[0].position.x(), 0.4, 1e-12);
+  ASSERT_EQ(parallel.count, 2);
+  for (const Vec3& p : {Vec3(0.4, 0, 0), Vec3(0.4, 0, 1)}) EXPECT_TRUE(has_point(parallel, p, 1e-12)) << p.transpose();
+  for (int k = 0; k < parallel.count; ++k) {
+    EXPECT_NEAR(parallel.points[k].distance, -0.2, 1e-12);
+    EXPECT_TRUE(parallel.points[k].normal.isApprox(X, 1e-12));
+  }
+  // Axes 0.1 rad apart, closest at b's lower end (gap -sin 0.1 against a's axis): the top of
+  // the overlap, a's point at z = cos 0.1, is a point too with its gap to b's axis
+  // (cos 0.1 (1 + sin 0.1) less both radii), kept within the margin and dropped beyond it.
+  const auto turned = contacts(a, at(), b, at({1.0, 0, 0}, about(Y, 0.1)), 0.5);
+  ASSERT_EQ(turned.count, 2);
+  const double top = std::cos(0.1) * (1.0 + std::sin(0.1)) - 1.0;
+  EXPECT_NEAR(std::min(turned.points[0].distance, turned.points[1].distance), -std::sin(0.1), 1e-12);
+  EXPECT_NEAR(std::max(turned.points[0].distance, turned.points[1].distance), top, 1e-12);
+  EXPECT_EQ(contacts(a, at(), b, at({1.0, 0, 0}, about(Y, 0.1)), 0.05).count, 1);
   // Axes that cross: any normal across both is right, the depth is both radii.
   const auto through = contacts(a, at(), b, at(Vec3::Zero(), along_x));
   ASSERT_EQ(through.count, 1);

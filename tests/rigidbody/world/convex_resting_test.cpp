@@ -143,5 +143,52 @@ TEST(ConvexResting, TiltedDropsSettleOnAFlatSide) {
   }
 }
 
+// A capsule dropped from 2 mm into the groove of two parallel capsules on the floor, its
+// axis along theirs or turned a little, its middle over theirs or a quarter of its length
+// off: it comes to rest along a line on each, still, and sinks into neither.
+// Guards against: one contact point per capsule pair, on which the upper capsule
+// see-saws and pushes an end into a lower one (a pile of sticks, bench/beds/sticks.py).
+TEST(ConvexResting, CapsuleInTheGrooveOfTwoLiesStill) {
+  const double radius = 0.01, height = 0.18;
+  const geometry::Capsule capsule(radius, height);
+  const Eigen::Quaterniond along_x(Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitY()));
+  for (const double turn : {0.0, 0.03})
+    for (const double offset : {0.0, 0.25 * height}) {
+      SCOPED_TRACE(testing::Message() << "turned " << turn << " rad, " << offset << " m along the axis");
+      World world;
+      add_ground(world);
+      std::vector<std::uint32_t> below;
+      for (const double y : {-radius, radius}) {
+        BodyDesc d{.shape = capsule};
+        d.state.position = {0.0, y, radius};
+        d.state.orientation = along_x;
+        below.push_back(world.add(d));
+      }
+      BodyDesc d{.shape = capsule};
+      d.state.position = {offset, 0.0, radius * (1.0 + std::sqrt(3.0)) + 0.002};
+      d.state.orientation = Eigen::AngleAxisd(turn, Vector3d::UnitZ()) * along_x;
+      const auto top = world.add(d);
+      const int steps = 2000;
+      double overlap = 0.0, turning = 0.0;
+      Vector3d settled = Vector3d::Zero();
+      for (int i = 0; i < steps; ++i) {
+        world.advance(world.settings().dt);
+        const auto& s = world.states()[top];
+        const Vector3d axis = s.orientation * Vector3d::UnitZ();
+        if (i == steps / 2) settled = axis;
+        if (i > steps / 2) turning = std::max(turning, std::acos(std::min(1.0, axis.dot(settled))));
+        for (const auto other : below) {
+          const auto& o = world.states()[other];
+          contact::Manifold m;
+          narrowphase::collide(capsule, geometry::Pose(o.position, o.orientation), capsule,
+                               geometry::Pose(s.position, s.orientation), 0.0, m);
+          for (int k = 0; k < m.count; ++k) overlap = std::max(overlap, -m.points[k].distance);
+        }
+      }
+      EXPECT_LT(turning, 1e-3);
+      EXPECT_LT(overlap, 1e-2 * radius);
+    }
+}
+
 }  // namespace
 }  // namespace cosim::rigidbody::world::test
