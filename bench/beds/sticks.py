@@ -1,14 +1,14 @@
 #!/usr/bin/python3
 """Capsules settling in a box from a run file (configs/sedimenting-sticks.yaml): the
-deepest overlap over all written rows, as a fraction of the capsules' radius, of two
-capsules, of a capsule with a fixed sphere and of a capsule with a wall of cosim-rigidbody;
-the cloud's mean fall speed over a time window; where the capsules end; the capsules'
-jitter, the sign of an unstable coupling (the root mean square over the capsules of each
-one's velocity less its running mean over five rows: a coupling that turns a velocity over
-every few windows shows there first when the rows are windows, `output.every: 1`); and what
-the run took (its wall time and seconds per window).
+deepest overlap over the written rows (all, or those from a time on), as a fraction of the
+capsules' radius, of two capsules, of a capsule with a fixed sphere and of a capsule with a
+wall of cosim-rigidbody; the cloud's mean fall speed over a time window; where the capsules
+end; the capsules' jitter, the sign of an unstable coupling (the root mean square over the
+capsules of each one's velocity less its running mean over five rows: a coupling that turns
+a velocity over every few windows shows there first when the rows are windows,
+`output.every: 1`); and what the run took (its wall time and seconds per window).
 
-    bench/beds/sticks.py run.h5 [--settle 1 3] [--plot cloud.png]
+    bench/beds/sticks.py run.h5 [--settle 1 3] [--overlap-from T] [--plot cloud.png]
 
 A capsule is the segment of `height` along its body z axis, centred on its position, grown
 by `radius`; two overlap by 2 radius - the distance of their segments.
@@ -60,6 +60,8 @@ def main():
     parser.add_argument("run")
     parser.add_argument("--settle", type=float, nargs=2, metavar=("T0", "T1"),
                         help="the cloud's mean fall speed over [T0, T1]")
+    parser.add_argument("--overlap-from", type=float, default=-math.inf, metavar="T",
+                        help="the deepest overlaps over the rows from time T on (a run resumed from a checkpoint)")
     parser.add_argument("--plot", help="the cloud's mean height and fall speed over time into this PNG")
     args = parser.parse_args()
 
@@ -87,7 +89,8 @@ def main():
     half = 0.5 * height * axis_of(q)
     ends_a, ends_b = x - half, x + half
     stick_stick = stick_sphere = stick_wall = -math.inf
-    for row in range(len(t)):
+    rows = [row for row in range(len(t)) if t[row] >= args.overlap_from - 1e-9]
+    for row in rows:
         a, b = ends_a[row], ends_b[row]
         stick_stick = max(stick_stick, deepest_pair(a, b, radius, height + 2 * radius))
         for s in spheres:
@@ -100,7 +103,8 @@ def main():
                         else hi[k] - np.maximum(a[:, k], b[:, k]))
             stick_wall = max(stick_wall, float(((radius - distance) / radius).max()))
     print(f"{len(sticks)} capsules (radius {radius}, {height + 2 * radius:g} long), {len(t)} rows to "
-          f"t = {t[-1]:.3f} s ({status}): deepest overlap capsule-capsule {stick_stick:.2%} of the radius, "
+          f"t = {t[-1]:.3f} s ({status}); over {len(rows)} rows from t = {t[rows[0]]:.3f} s the "
+          f"deepest overlap capsule-capsule {stick_stick:.2%} of the radius, "
           f"capsule-sphere {stick_sphere:.2%}, capsule-wall {stick_wall:.2%} (negative: never touched)")
 
     on_floor = np.minimum(ends_a[-1, :, 2], ends_b[-1, :, 2]) - lo[2] < 1.1 * radius
