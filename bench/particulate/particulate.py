@@ -53,6 +53,7 @@ time:
 coupling:
   window: {WINDOW}
   scheme: serial-explicit
+  timeout: 600  # the first window of ten thousand spheres takes over a minute
 output:
   file: run.h5
   every: 1

@@ -11,6 +11,10 @@
 namespace cosim::output {
 
 Handle create_group(hid_t parent, const std::string& name);
+// A group whose attributes live in its dense storage (a heap) rather than in its header,
+// whose messages hold 64 KiB at most: a list of ten thousand names is 160 KiB of
+// references (RunFileTest.TenThousandBodiesAreNamed).
+Handle create_group_for_large_attributes(hid_t parent, const std::string& name);
 Handle open_group(hid_t parent, const std::string& name);
 Handle open_or_create_group(hid_t parent, const std::string& name);
 bool has_link(hid_t parent, const std::string& name);

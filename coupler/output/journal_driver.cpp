@@ -433,6 +433,9 @@ Handle journaled_access() {
   if (driver < 0) fail("register the journal driver");
   Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "make file access properties");
   check(H5Pset_driver(fapl.get(), driver, nullptr), "select the journal driver");
+  // Objects in HDF5 1.8's format at least, which can keep a group's attributes densely
+  // (create_group_for_large_attributes); readers since 1.8 (2008) read it.
+  check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST), "ask for the 1.8 format");
   return fapl;
 }
 

@@ -26,7 +26,7 @@
 
 namespace cosim::output {
 
-// File access properties that select the driver.
+// File access properties that select the driver, in HDF5 1.8's format at least.
 Handle journaled_access();
 // Where the driver keeps the journal of `file`.
 std::filesystem::path journal_of(const std::filesystem::path& file);

@@ -107,7 +107,7 @@ RunFile RunFile::create(const std::filesystem::path& path, const RunInfo& info, 
       const Handle file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, journaled_access().get()), H5Fclose,
                         "create file");
       {
-        Handle run = create_group(file.get(), "run");
+        Handle run = create_group_for_large_attributes(file.get(), "run");
         write_text(run.get(), "scene_text", info.scene_text);
         write_attribute(run.get(), "scene_file", info.scene_file);
         write_attribute(run.get(), "git_hash", info.git_hash);

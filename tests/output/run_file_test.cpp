@@ -108,6 +108,19 @@ TEST_F(RunFileTest, RunGroupDescribesTheRun) {
   EXPECT_EQ(f.text("/run/scene_text"), info.scene_text);
 }
 
+// Guards against: the body names as an attribute in the group's header, whose messages
+// hold 64 KiB, so that a scene of some thousands of bodies could not create its run file.
+TEST_F(RunFileTest, TenThousandBodiesAreNamed) {
+  const auto path = file("run.h5");
+  std::vector<std::string> bodies;
+  for (int i = 0; i < 10000; ++i) bodies.push_back("sphere" + std::to_string(i));
+  {
+    RunFile run = RunFile::create(path, sample_info(), bodies, kParticipants);
+    run.set_status("finished", 1.0);
+  }
+  EXPECT_EQ(RunFile::peek(path).bodies, bodies);
+}
+
 TEST_F(RunFileTest, NoBodiesNoParticipants) {
   const auto path = file("run.h5");
   {
