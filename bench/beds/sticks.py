@@ -90,6 +90,8 @@ def main():
     ends_a, ends_b = x - half, x + half
     stick_stick = stick_sphere = stick_wall = -math.inf
     rows = [row for row in range(len(t)) if t[row] >= args.overlap_from - 1e-9]
+    if not rows:
+        raise SystemExit(f"sticks.py: --overlap-from {args.overlap_from}: the run's rows end at t = {t[-1]:g} s")
     for row in rows:
         a, b = ends_a[row], ends_b[row]
         stick_stick = max(stick_stick, deepest_pair(a, b, radius, height + 2 * radius))

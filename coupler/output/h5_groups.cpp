@@ -1,17 +1,16 @@
 #include "coupler/output/h5_groups.hpp"
 
 namespace cosim::output {
-Handle create_group(hid_t parent, const std::string& name) {
+Handle create_group(hid_t parent, const std::string& name, hid_t properties) {
   const std::string where = "group " + child_path(parent, name);
-  return Handle(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create " + where);
+  return Handle(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, properties, H5P_DEFAULT), H5Gclose, "create " + where);
 }
 
 Handle create_group_for_large_attributes(hid_t parent, const std::string& name) {
   const std::string where = "group " + child_path(parent, name);
   const Handle properties(H5Pcreate(H5P_GROUP_CREATE), H5Pclose, "make the properties of " + where);
   check(H5Pset_attr_phase_change(properties.get(), 0, 0), "store the attributes of " + where + " densely");
-  return Handle(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, properties.get(), H5P_DEFAULT), H5Gclose,
-                "create " + where);
+  return create_group(parent, name, properties.get());
 }
 
 Handle open_group(hid_t parent, const std::string& name) {

@@ -10,7 +10,8 @@
 
 namespace cosim::output {
 
-Handle create_group(hid_t parent, const std::string& name);
+// `properties`: the group's creation properties.
+Handle create_group(hid_t parent, const std::string& name, hid_t properties = H5P_DEFAULT);
 // A group whose attributes live in its dense storage (a heap) rather than in its header,
 // whose messages hold 64 KiB at most: a list of ten thousand names is 160 KiB of
 // references (RunFileTest.TenThousandBodiesAreNamed).

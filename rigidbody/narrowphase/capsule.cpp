@@ -45,16 +45,9 @@ std::array<Vec3, 2> closest_points(const Segment& p, const Segment& q) {
   return {p.start + s * d1, q.start + t * d2};
 }
 
-// The point of segment q nearest to x.
-Vec3 nearest(const Segment& q, const Vec3& x) {
-  const Vec3 d = q.end - q.start;
-  const double e = d.squaredNorm();
-  return e > 0.0 ? Vec3(q.start + std::clamp(d.dot(x - q.start) / e, 0.0, 1.0) * d) : q.start;
-}
-
 // Axes near parallel touch along a line, which one closest point does not hold: the upper
 // of two sticks see-saws on it and sinks an end into the lower (ConvexResting.
-// CapsuleInTheGrooveOfTwoLiesLevel). The ends of the stretch of p that q's axis spans,
+// CapsuleInTheGrooveOfTwoLiesStill). The ends of the stretch of p that q's axis spans,
 // each against its nearest point on q, are points too: two balls inside the capsules, so
 // keeping them apart is implied by the capsules not overlapping. Where the axes part, the
 // ends' gaps exceed the margin and Candidates::add drops them.
@@ -68,7 +61,7 @@ void line_ends(const Segment& p, const Segment& q, const Vec3& closest, double r
   std::uint32_t feature = 1;
   for (const double s : {lo, hi}) {
     const Vec3 on_p = p.start + s * d;
-    const Vec3 gap = nearest(q, on_p) - on_p;
+    const Vec3 gap = closest_points({on_p, on_p}, q)[1] - on_p;
     const double length = gap.norm();
     if (length > 0.0 && (on_p - closest).norm() > apart)
       out.add(on_p + ra * gap / length, gap / length, length - ra - rb, feature);

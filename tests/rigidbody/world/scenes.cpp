@@ -1,6 +1,9 @@
 #include "tests/rigidbody/world/scenes.hpp"
 
+#include <algorithm>
+
 #include "rigidbody/dynamics/invariants.hpp"
+#include "rigidbody/narrowphase/narrowphase.hpp"
 
 namespace cosim::rigidbody::world::test {
 
@@ -37,6 +40,17 @@ double total_energy(const World& world) {
     if (!body.is_fixed()) e -= g.dot(world.states()[i].position) / body.inverse_mass;
   }
   return e;
+}
+
+double overlap(const World& world, std::uint32_t i, std::uint32_t j) {
+  const auto& a = world.states()[i];
+  const auto& b = world.states()[j];
+  contact::Manifold m;
+  narrowphase::collide(world.shape(i), geometry::Pose(a.position, a.orientation), world.shape(j),
+                       geometry::Pose(b.position, b.orientation), 0.0, m);
+  double deepest = 0.0;
+  for (int k = 0; k < m.count; ++k) deepest = std::max(deepest, -m.points[k].distance);
+  return deepest;
 }
 
 }  // namespace cosim::rigidbody::world::test

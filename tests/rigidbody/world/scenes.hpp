@@ -22,4 +22,7 @@ std::vector<std::uint32_t> add_box_stack(World& world, int count, double half);
 // Kinetic plus gravitational potential energy (g from the world's settings).
 double total_energy(const World& world);
 
+// How deep bodies i and j overlap [m]: the narrow phase's deepest point, 0 when apart.
+double overlap(const World& world, std::uint32_t i, std::uint32_t j);
+
 }  // namespace cosim::rigidbody::world::test

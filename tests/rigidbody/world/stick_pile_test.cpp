@@ -11,7 +11,6 @@
 #include <random>
 #include <vector>
 
-#include "rigidbody/narrowphase/narrowphase.hpp"
 #include "tests/rigidbody/world/scenes.hpp"
 
 namespace cosim::rigidbody::world::test {
@@ -72,10 +71,7 @@ Pile drop_sticks(unsigned seed) {
         const auto& sb = states[sticks[b]];
         if ((sa.position - sb.position).norm() > height + 2 * radius) continue;
         if (std::max(sa.velocity.norm(), sb.velocity.norm()) > kResting) continue;
-        contact::Manifold m;
-        narrowphase::collide(stick, geometry::Pose(sa.position, sa.orientation), stick,
-                             geometry::Pose(sb.position, sb.orientation), 0.0, m);
-        for (int k = 0; k < m.count; ++k) pile.overlap = std::max(pile.overlap, -m.points[k].distance / radius);
+        pile.overlap = std::max(pile.overlap, overlap(world, sticks[a], sticks[b]) / radius);
       }
   }
   for (const auto s : sticks) pile.resting += world.states()[s].velocity.norm() < kResting ? 1 : 0;
