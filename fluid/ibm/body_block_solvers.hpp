@@ -1,7 +1,8 @@
 #pragma once
 // Each body's block of the forcing's system B (forcing_system.hpp) solved on its own: the
 // preconditioner of B's Krylov solve, block Jacobi with one block per body. A block is
-// factored (LU unless the options `-ibm_forcing_sub_*` say otherwise) when it first appears
+// factored (Cholesky by CHOLMOD where B is symmetric, LU otherwise, unless the options
+// `-ibm_forcing_sub_*` say otherwise) when it first appears
 // and kept, with its factors, for as long as its entries stay the same: a body that does
 // not move (a container, a fixed sphere) is factored once, not at every step, unless
 // another body comes to cover some of its markers. A block whose entries changed but not
@@ -25,7 +26,9 @@ class BodyBlockSolvers {
   // Takes the blocks of B's bodies whose values this rank holds (body b's rows
   // 3 first_marker[b] .. 3 first_marker[b + 1] - 1), keeping the solvers of blocks that
   // did not change and factoring the others; drops those of bodies no longer here.
-  void update(Mat B, std::span<const std::size_t> first_marker);
+  // `symmetric`: B is (the forcing spreads where it interpolates), so its blocks are
+  // symmetric positive definite.
+  void update(Mat B, std::span<const std::size_t> first_marker, bool symmetric);
   // y = x with each block's rows solved by its block (collective only through B's layout:
   // the blocks are this rank's).
   void apply(Vec x, Vec y) const;
@@ -43,7 +46,7 @@ class BodyBlockSolvers {
     Vec x = nullptr, y = nullptr;  // views of the rows in apply()
   };
   static void destroy(Block& block);
-  Block factored(std::size_t body, PetscInt offset, Mat matrix);
+  static Block factored(std::size_t body, PetscInt offset, Mat matrix, bool symmetric);
 
   std::vector<Block> blocks_;
   int factorizations_ = 0, refactorizations_ = 0;

@@ -89,7 +89,7 @@ ForcingSystem::ForcingSystem(const MarkerStencils& stencils, const MarkerStencil
   COSIM_PETSC(KSPSetFromOptions(ksp_));
   PetscBool shell = PETSC_FALSE;
   COSIM_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCSHELL, &shell));
-  if (shell) blocks.update(B_, first_marker);
+  if (shell) blocks.update(B_, first_marker, &spreading == &stencils);
   COSIM_PETSC(KSPSetUp(ksp_));
 }
 

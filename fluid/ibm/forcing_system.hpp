@@ -4,7 +4,7 @@
 // kernels (MarkerStencils::products), on the markers' roots (marker_sharing.hpp) laid out
 // by whole bodies, and solved by PETSc's conjugate gradients (GMRES where the markers
 // spread from elsewhere than they interpolate, which makes B unsymmetric) preconditioned
-// by each body's block solved exactly (block Jacobi, one block per body, LU;
+// by each body's block solved exactly (block Jacobi, one block per body, Cholesky or LU;
 // body_block_solvers.hpp): a body alone converges in one iteration and bodies whose
 // kernels overlap (a cloud, a bed) in a few more, where sweeps through the grid
 // preconditioned by B's diagonal did not reach the tolerance in 50 in a falling cloud. The
