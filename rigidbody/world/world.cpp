@@ -37,6 +37,21 @@ World::World(const Settings& settings)
     throw std::invalid_argument("world: lubrication needs 0 < roughness < range");
 }
 
+namespace {
+
+// The radius of curvature the film force takes (solver/lubrication.hpp). A sphere's is
+// exact, and so is a capsule's where its cap meets a surface; along its side a capsule is a
+// cylinder of that radius, whose film is stronger than a sphere's (a line, not a point),
+// so the sphere's law is a lower bound there. Other shapes get their bounding sphere's
+// radius, an estimate; a plane's is infinite.
+double film_radius(const geometry::Shape& shape) {
+  if (const auto* sphere = std::get_if<geometry::Sphere>(&shape)) return sphere->radius();
+  if (const auto* capsule = std::get_if<geometry::Capsule>(&shape)) return capsule->radius();
+  return geometry::is_bounded(shape) ? geometry::bounding_radius(shape) : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
 std::uint32_t World::add(const BodyDesc& body) {
   const bool bounded = geometry::is_bounded(body.shape);
   if (!bounded && !body.fixed)
@@ -50,8 +65,7 @@ std::uint32_t World::add(const BodyDesc& body) {
     inertia.density = body.density;
   }
   shapes_.push_back(body.shape);
-  // A sphere's film force is exact; other shapes get their bounding sphere's (an estimate).
-  radii_.push_back(bounded ? geometry::bounding_radius(body.shape) : std::numeric_limits<double>::infinity());
+  radii_.push_back(film_radius(body.shape));
   states_.push_back(body.state);
   states_.back().orientation.normalize();
   inertias_.push_back(inertia);

@@ -79,6 +79,26 @@ TEST(Lubrication, TwoSpheresClosingHeadOnFollowTheFilmsLaw) {
   EXPECT_LT(st[upper].velocity.z() - st[lower].velocity.z(), 1e-3 * w0);
 }
 
+// A capsule arriving end-on: its cap is a sphere of its radius, so the film is a sphere's
+// of that radius on the capsule's mass (its bounding sphere's radius, half its length more,
+// would stop it 43 times farther out: 1.8 mm against 0.042 mm).
+TEST(Lubrication, CapsuleArrivingEndOnFollowsItsCapsFilm) {
+  World world(film_settings(1e-5));
+  add_ground(world);
+  const double radius = 0.3 * a, height = 6 * a, s0 = 2e-3, w0 = 0.02;
+  const geometry::Capsule shape(radius, height);
+  BodyDesc d{.shape = shape, .density = density};
+  d.state.position = {0, 0, height / 2 + radius + s0};
+  d.state.velocity = {0, 0, -w0};
+  const auto stick = world.add(d);
+  const double mass = density * geometry::volume(shape);
+  const double s_stop = stopping_gap(w0, s0, radius, mass);
+  ASSERT_GT(s_stop, 1e-5);
+  world.advance(0.4);
+  EXPECT_NEAR(world.states()[stick].position.z() - height / 2 - radius, s_stop, 0.01 * s_stop);
+  EXPECT_LT(std::abs(world.states()[stick].velocity.z()), 1e-3 * w0);
+}
+
 // The film's time scale m s / (6 pi mu R^2) is 3 microseconds at the roughness; a step of a
 // millisecond must neither overshoot nor bounce the sphere that gravity pushes into it.
 TEST(Lubrication, StepsFarAboveTheFilmsTimeScaleStayMonotone) {
