@@ -46,7 +46,11 @@ double finest_width_at(const Axes& axes, const Point& x);
 
 class Grid {
  public:
-  Grid(MPI_Comm comm, std::array<Axis, 3> axes);
+  // `ranks`: how many ranks share each axis (their product the communicator's size), or
+  // PETSC_DECIDE along an axis for PETSc's choice (its default cut keeps the ranks' shared
+  // faces few, which for a grid taller than wide is across its height).
+  Grid(MPI_Comm comm, std::array<Axis, 3> axes,
+       std::array<PetscInt, 3> ranks = {PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE});
   ~Grid();
   Grid(const Grid&) = delete;
   Grid& operator=(const Grid&) = delete;
@@ -79,6 +83,7 @@ class Grid {
   void release();
 
   MPI_Comm comm_;
+  std::array<PetscInt, 3> ranks_;  // as asked; the DMDAs hold the layout
   std::array<Axis, 3> axes_;
   DM pressure_ = nullptr;
   std::array<DM, 3> velocity_{};

@@ -31,11 +31,18 @@ fluid::BoundaryConditions boundary_conditions(const fluid::Grid& grid, const Flu
   return bc;
 }
 
+// The scene's grid.ranks, or PETSc's choice where it has none.
+std::array<PetscInt, 3> rank_layout(const FluidSetup& s) {
+  std::array<PetscInt, 3> out{};
+  for (std::size_t a = 0; a < 3; ++a) out[a] = s.ranks[a] > 0 ? s.ranks[a] : PETSC_DECIDE;
+  return out;
+}
+
 }  // namespace
 
 struct FluidSolver::Flow {
   explicit Flow(const FluidSetup& s)
-      : grid(PETSC_COMM_WORLD, {s.axes[0], s.axes[1], s.axes[2]}),
+      : grid(PETSC_COMM_WORLD, {s.axes[0], s.axes[1], s.axes[2]}, rank_layout(s)),
         bc(boundary_conditions(grid, s)),
         flow(grid, bc, s.properties, s.steps),
         bodies(fluid::make_bodies(grid, s.body_method)) {}

@@ -47,6 +47,25 @@ std::array<int, 3> cells(const Reader& grid) {
   return out;
 }
 
+// How many of the participant's ranks share each axis: whole numbers, at most the axis's
+// cells, their product the participant's `ranks`.
+std::array<int, 3> rank_layout(const Reader& grid, const std::array<int, 3>& cells, int ranks) {
+  std::array<double, 3> r{};
+  grid.numbers("ranks", r, Range::at_least(1));
+  std::array<int, 3> out{};
+  int product = 1;
+  for (int a = 0; a < 3; ++a) {
+    if (r[a] != std::floor(r[a]) || r[a] > cells[a])
+      grid.fail("ranks", "expected whole numbers, each at most the axis's cells");
+    out[a] = static_cast<int>(r[a]);
+    product *= out[a];
+  }
+  if (product != ranks)
+    grid.fail("ranks", "their product is " + std::to_string(product) + ", the participant runs on " +
+                           std::to_string(ranks) + " (participants.fluid.ranks)");
+  return out;
+}
+
 fluid::ViscosityModel viscosity(const Reader& r) {
   fluid::ViscosityModel model = fluid::ViscosityModel::newtonian(1);
   switch (r.choice("model", viscosity_names)) {
@@ -230,6 +249,7 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   const std::array<int, 3> n = cells(grid);
   std::array<double, 3> beta{};
   if (grid.has("stretching")) grid.numbers("stretching", beta, Range::at_least(0));
+  if (grid.has("ranks")) s.ranks = rank_layout(grid, n, p.ranks);
   grid.finish();
   for (int a = 0; a < 3; ++a) {
     const double lo = scene.domain.min[a], hi = scene.domain.max[a];

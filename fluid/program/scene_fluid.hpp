@@ -18,6 +18,7 @@ namespace cosim::fluid::program {
 
 struct FluidSetup {
   std::vector<fluid::Axis> axes;  // x, y, z
+  std::array<int, 3> ranks{};     // grid.ranks: ranks along each axis; 0: PETSc's choice
   // Per domain face, index 2 * axis + side (lower 0, upper 1).
   std::array<fluid::Boundary, 6> boundaries;
   fluid::FluidProperties properties;

@@ -56,6 +56,24 @@ TEST(FluidRanks, TwoRanksStandaloneMatchOneRank) {
             read_array(dir / "two.h5", "/fields/fluid/000002/alpha").values);
 }
 
+// The ranks as the scene lays them out: across y, where PETSc would cut the longer x.
+TEST(FluidRanks, RanksAcrossTheAxisTheSceneAsksMatchOneRank) {
+  const auto dir = scratch_dir("fluid_ranks_across_y");
+  write_file(dir / "channel.yaml", channel_scene());
+  std::string across = with_ranks(channel_scene(), 2);
+  const std::string grid = "cells: [16, 8, 1], stretching: [1, 0, 0]";
+  across.replace(across.find(grid), grid.size(), grid + ", ranks: [1, 2, 1]");
+  write_file(dir / "across.yaml", across);
+  ASSERT_EQ(run_standalone("cosim-fluid", dir / "channel.yaml", dir / "one.h5"), 0);
+  ASSERT_EQ(run_standalone("cosim-fluid", dir / "across.yaml", dir / "two.h5", 2), 0);
+  EXPECT_LT(relative_difference(read_series(dir / "one.h5", "/bodies/cyl/force").values,
+                                read_series(dir / "two.h5", "/bodies/cyl/force").values),
+            1e-6);
+  const Array one = read_array(dir / "one.h5", "/fields/fluid/000002/velocity"),
+              two = read_array(dir / "two.h5", "/fields/fluid/000002/velocity");
+  EXPECT_LT(relative_difference(one.values, two.values), 1e-6);
+}
+
 // Only the fluid starts (the cylinder is fixed); the coupler asks for the fields every window.
 TEST(FluidRanks, CosimRunOnTwoRanksWritesWhatStandaloneWrites) {
   const auto dir = scratch_dir("fluid_ranks_coupled");

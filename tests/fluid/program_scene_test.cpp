@@ -61,6 +61,19 @@ TEST(FluidScene, ReadsGridFluidBoundariesAndBodies) {
   EXPECT_EQ(s.petsc, flags);
   ASSERT_EQ(s.bodies.size(), 1u);
   EXPECT_EQ(s.bodies[0].pose.position(), Eigen::Vector3d(0.2, 0.1, 0.005));
+  EXPECT_EQ(s.ranks, (std::array<int, 3>{0, 0, 0}));  // PETSc's choice
+}
+
+// grid.ranks: how the participant's ranks share the axes, their product its `ranks`.
+TEST(FluidScene, RanksAlongEachAxis) {
+  const std::string two = replaced(oscillating_cylinder_scene(), "  fluid:\n", "  fluid:\n    ranks: 2\n");
+  EXPECT_EQ(setup_of(replaced(two, "grid: {cells: [16, 8, 1]}", "grid: {cells: [16, 8, 1], ranks: [1, 2, 1]}")).ranks,
+            (std::array<int, 3>{1, 2, 1}));
+  const scene::SceneError e =
+      error_of(replaced(two, "grid: {cells: [16, 8, 1]}", "grid: {cells: [16, 8, 1], ranks: [2, 2, 1]}"));
+  EXPECT_NE(std::string(e.what()).find("product is 4"), std::string::npos) << e.what();
+  // More ranks along an axis than it has cells.
+  error_of(replaced(two, "grid: {cells: [16, 8, 1]}", "grid: {cells: [16, 8, 1], ranks: [1, 1, 2]}"));
 }
 
 // The immersed boundary unless the scene asks for the staircase; its options under bodies.
@@ -156,6 +169,8 @@ TEST(FluidScene, ErrorsNameFileLineKeyAndValue) {
       {"cells: [16, 8, 1]", "cells: [16.5, 8, 1]", "grid.cells", ""},
       {"cells: [16, 8, 1]", "cells: [16, 0, 1]", "grid.cells", ""},
       {"grid: {cells: [16, 8, 1]}", "grid: {cells: [16, 8, 1], stretch: 1}", "grid.stretch", "1"},
+      {"grid: {cells: [16, 8, 1]}", "grid: {cells: [16, 8, 1], ranks: [2, 1, 1]}", "grid.ranks", ""},
+      {"grid: {cells: [16, 8, 1]}", "grid: {cells: [16, 8, 1], ranks: [1, 1, 1.5]}", "grid.ranks", ""},
       {"density: 1000", "density: -1", "density", "-1"},
       {"model: newtonian", "model: bingham", "viscosity.model", "bingham"},
       {"z_max: {type: periodic}", "z_max: {type: wall}", "boundaries.z_max", ""},

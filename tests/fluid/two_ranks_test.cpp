@@ -35,6 +35,24 @@ TEST(TwoRanks, SameAnswerAsOneRankCarreau) {
   expect_same_on_one_and_two_ranks(ViscosityModel::carreau(0.05, 0.005, 1.0, 0.5), "Carreau");
 }
 
+// The ranks along each axis as asked, where PETSc would cut the longest axis.
+TEST(TwoRanks, GridTakesTheRanksAlongEachAxisAsAsked) {
+  PetscMPIInt size = 0, rank = 0;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  ASSERT_EQ(size, 2) << "run this test with mpirun -n 2";
+  const std::array<Axis, 3> axes{Axis::uniform(12, 0, 1, false), Axis::uniform(8, 0, 1, false),
+                                 Axis::uniform(6, 0, 1, false)};
+  const Grid decided(PETSC_COMM_WORLD, axes);
+  EXPECT_EQ(decided.owned(decided.pressure_dm()).hi[0] - decided.owned(decided.pressure_dm()).lo[0], 6);
+  const Grid across(PETSC_COMM_WORLD, axes, {1, 1, 2});
+  for (DM dm : {across.pressure_dm(), across.cell_dm(), across.velocity_dm(0), across.velocity_dm(2)}) {
+    const Box owned = across.owned(dm);
+    EXPECT_EQ(owned.hi[0] - owned.lo[0], dm == across.velocity_dm(0) ? 13 : 12);
+    EXPECT_EQ(owned.lo[2], rank == 0 ? 0 : 3);
+  }
+}
+
 struct BodyRun {
   testing::GatheredVelocity velocity;
   HydrodynamicLoad load;
