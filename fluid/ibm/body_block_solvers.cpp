@@ -35,7 +35,7 @@ void BodyBlockSolvers::destroy(Block& block) {
 }
 
 BodyBlockSolvers::Block BodyBlockSolvers::factored(std::size_t body, PetscInt offset, Mat matrix, bool symmetric) {
-  Block block{body, offset, matrix};
+  Block block{body, offset, symmetric, matrix};
   PetscInt size = 0;
   COSIM_PETSC(MatGetLocalSize(matrix, &size, nullptr));
   COSIM_PETSC(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, size, nullptr, &block.x));
@@ -49,19 +49,13 @@ BodyBlockSolvers::Block BodyBlockSolvers::factored(std::size_t body, PetscInt of
   COSIM_PETSC(KSPSetType(block.ksp, KSPPREONLY));
   PC pc = nullptr;
   COSIM_PETSC(KSPGetPC(block.ksp, &pc));
-  // A symmetric block by CHOLMOD's supernodal Cholesky: on Aguilar's bed (a round column's
-  // 65,000 markers and 1,000 beads) the forcing took 20 % less than with PETSc's LU, its
-  // triangular solves 23 % less, and the column's block is factored in a few seconds
-  // instead of ten (bench/particulate/README.md).
-#ifdef PETSC_HAVE_SUITESPARSE
-  if (symmetric) {
-    COSIM_PETSC(PCSetType(pc, PCCHOLESKY));
-    COSIM_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERCHOLMOD));
-  } else {
-    COSIM_PETSC(PCSetType(pc, PCLU));
-  }
-#else
+  // A symmetric block by Cholesky, half the factor's memory and its triangular solves of
+  // LU's; CHOLMOD's where PETSc has it, the fastest of the factors tried on Aguilar's bed
+  // (bench/particulate/README.md).
   COSIM_PETSC(PCSetType(pc, symmetric ? PCCHOLESKY : PCLU));
+  if (symmetric) COSIM_PETSC(MatSetOption(matrix, MAT_SYMMETRIC, PETSC_TRUE));
+#ifdef PETSC_HAVE_SUITESPARSE
+  if (symmetric) COSIM_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERCHOLMOD));
 #endif
   COSIM_PETSC(KSPSetOperators(block.ksp, matrix, matrix));
   COSIM_PETSC(KSPSetFromOptions(block.ksp));
@@ -87,7 +81,9 @@ void BodyBlockSolvers::update(Mat B, std::span<const std::size_t> first_marker, 
     // The last step's blocks come by ascending body, as the bodies do here.
     while (next != blocks_.end() && next->body < b) ++next;
     const auto old = next != blocks_.end() && next->body == b ? next : blocks_.end();
-    if (old == blocks_.end() || !same_pattern(old->matrix, matrix)) {
+    // A factor chosen for the other kind of system (spread_at_theta's B is symmetric
+    // while the bodies rest) is chosen again.
+    if (old == blocks_.end() || old->symmetric != symmetric || !same_pattern(old->matrix, matrix)) {
       kept.push_back(factored(b, lo - first, matrix, symmetric));
       ++factorizations_;
       continue;

@@ -1,8 +1,8 @@
 #pragma once
 // Each body's block of the forcing's system B (forcing_system.hpp) solved on its own: the
 // preconditioner of B's Krylov solve, block Jacobi with one block per body. A block is
-// factored (Cholesky by CHOLMOD where B is symmetric, LU otherwise, unless the options
-// `-ibm_forcing_sub_*` say otherwise) when it first appears
+// factored (Cholesky where B is symmetric, by CHOLMOD where PETSc has SuiteSparse, LU
+// otherwise, unless the options `-ibm_forcing_sub_*` say otherwise) when it first appears
 // and kept, with its factors, for as long as its entries stay the same: a body that does
 // not move (a container, a fixed sphere) is factored once, not at every step, unless
 // another body comes to cover some of its markers. A block whose entries changed but not
@@ -27,7 +27,7 @@ class BodyBlockSolvers {
   // 3 first_marker[b] .. 3 first_marker[b + 1] - 1), keeping the solvers of blocks that
   // did not change and factoring the others; drops those of bodies no longer here.
   // `symmetric`: B is (the forcing spreads where it interpolates), so its blocks are
-  // symmetric positive definite.
+  // symmetric (and positive definite while no two markers' kernels coincide).
   void update(Mat B, std::span<const std::size_t> first_marker, bool symmetric);
   // y = x with each block's rows solved by its block (collective only through B's layout:
   // the blocks are this rank's).
@@ -40,7 +40,8 @@ class BodyBlockSolvers {
  private:
   struct Block {
     std::size_t body = 0;
-    PetscInt offset = 0;  // its first row among this rank's
+    PetscInt offset = 0;     // its first row among this rank's
+    bool symmetric = false;  // factored as symmetric (Cholesky)
     Mat matrix = nullptr;
     KSP ksp = nullptr;
     Vec x = nullptr, y = nullptr;  // views of the rows in apply()

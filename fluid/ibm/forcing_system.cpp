@@ -78,7 +78,8 @@ ForcingSystem::ForcingSystem(const MarkerStencils& stencils, const MarkerStencil
 
   COSIM_PETSC(KSPCreate(sharing.comm(), &ksp_));
   COSIM_PETSC(KSPSetOptionsPrefix(ksp_, "ibm_forcing_"));
-  COSIM_PETSC(KSPSetType(ksp_, &spreading == &stencils ? KSPCG : KSPGMRES));
+  const bool symmetric = &spreading == &stencils;
+  COSIM_PETSC(KSPSetType(ksp_, symmetric ? KSPCG : KSPGMRES));
   COSIM_PETSC(KSPSetOperators(ksp_, B_, B_));
   PC pc = nullptr;
   COSIM_PETSC(KSPGetPC(ksp_, &pc));
@@ -89,7 +90,7 @@ ForcingSystem::ForcingSystem(const MarkerStencils& stencils, const MarkerStencil
   COSIM_PETSC(KSPSetFromOptions(ksp_));
   PetscBool shell = PETSC_FALSE;
   COSIM_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCSHELL, &shell));
-  if (shell) blocks.update(B_, first_marker, &spreading == &stencils);
+  if (shell) blocks.update(B_, first_marker, symmetric);
   COSIM_PETSC(KSPSetUp(ksp_));
 }
 

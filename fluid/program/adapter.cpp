@@ -31,18 +31,23 @@ fluid::BoundaryConditions boundary_conditions(const fluid::Grid& grid, const Flu
   return bc;
 }
 
-// The scene's grid.ranks, or PETSc's choice where it has none.
-std::array<PetscInt, 3> rank_layout(const FluidSetup& s) {
-  std::array<PetscInt, 3> out{};
-  for (std::size_t a = 0; a < 3; ++a) out[a] = s.ranks[a] > 0 ? s.ranks[a] : PETSC_DECIDE;
-  return out;
+// The scene's grid.ranks for the DMDAs, or PETSc's choice where it has none.
+std::array<PetscInt, 3> dmda_ranks(const FluidSetup& s) {
+  if (s.ranks == std::array<int, 3>{}) return {PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE};
+  int size = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  if (s.ranks[0] * s.ranks[1] * s.ranks[2] != size)
+    throw std::invalid_argument("participants.fluid.options.grid.ranks [" + std::to_string(s.ranks[0]) + ", " +
+                                std::to_string(s.ranks[1]) + ", " + std::to_string(s.ranks[2]) +
+                                "]: their product is not the " + std::to_string(size) + " ranks cosim-fluid runs on");
+  return {s.ranks[0], s.ranks[1], s.ranks[2]};
 }
 
 }  // namespace
 
 struct FluidSolver::Flow {
   explicit Flow(const FluidSetup& s)
-      : grid(PETSC_COMM_WORLD, {s.axes[0], s.axes[1], s.axes[2]}, rank_layout(s)),
+      : grid(PETSC_COMM_WORLD, {s.axes[0], s.axes[1], s.axes[2]}, dmda_ranks(s)),
         bc(boundary_conditions(grid, s)),
         flow(grid, bc, s.properties, s.steps),
         bodies(fluid::make_bodies(grid, s.body_method)) {}

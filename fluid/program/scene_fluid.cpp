@@ -48,19 +48,20 @@ std::array<int, 3> cells(const Reader& grid) {
 }
 
 // How many of the participant's ranks share each axis: whole numbers, at most the axis's
-// cells, their product the participant's `ranks`.
+// cells, their product the participant's `ranks` where the scene gives more than one
+// (standalone, mpirun's count rules: the grid checks it then).
 std::array<int, 3> rank_layout(const Reader& grid, const std::array<int, 3>& cells, int ranks) {
   std::array<double, 3> r{};
   grid.numbers("ranks", r, Range::at_least(1));
   std::array<int, 3> out{};
-  int product = 1;
+  long long product = 1;
   for (int a = 0; a < 3; ++a) {
     if (r[a] != std::floor(r[a]) || r[a] > cells[a])
       grid.fail("ranks", "expected whole numbers, each at most the axis's cells");
     out[a] = static_cast<int>(r[a]);
     product *= out[a];
   }
-  if (product != ranks)
+  if (ranks > 1 && product != ranks)
     grid.fail("ranks", "their product is " + std::to_string(product) + ", the participant runs on " +
                            std::to_string(ranks) + " (participants.fluid.ranks)");
   return out;
