@@ -23,12 +23,12 @@ Box corners(DM dm, CornersFunction get) {
 }  // namespace
 
 Grid::Grid(MPI_Comm comm, std::array<Axis, 3> axes, std::array<PetscInt, 3> ranks)
-    : comm_(comm), ranks_(ranks), axes_(std::move(axes)) {
+    : comm_(comm), axes_(std::move(axes)) {
   // Too many ranks for the cells fails here.
-  create_or_release([this] { create(); }, [this] { release(); });
+  create_or_release([this, &ranks] { create(ranks); }, [this] { release(); });
 }
 
-void Grid::create() {
+void Grid::create(const std::array<PetscInt, 3>& layout) {
   MPI_Comm comm = comm_;
   const auto n = cells();
   // Pressure needs no ghost points outside the domain (boundary fluxes are closed in the
@@ -36,7 +36,7 @@ void Grid::create() {
   COSIM_PETSC(DMDACreate3d(comm, axes_[0].periodic() ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE,
                            axes_[1].periodic() ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE,
                            axes_[2].periodic() ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE, DMDA_STENCIL_STAR, n[0], n[1],
-                           n[2], ranks_[0], ranks_[1], ranks_[2], 1, 1, nullptr, nullptr, nullptr, &pressure_));
+                           n[2], layout[0], layout[1], layout[2], 1, 1, nullptr, nullptr, nullptr, &pressure_));
   COSIM_PETSC(DMSetOptionsPrefix(pressure_, "pressure_"));
   // Cell-centred values: a multigrid hierarchy halves the cell count and interpolates
   // piecewise constant (PETSc's DMDA cannot coarsen a one-cell axis, so geometric

@@ -79,11 +79,10 @@ class Grid {
   double finest_width_at(const Point& x) const { return fluid::finest_width_at(axes_, x); }
 
  private:
-  void create();
+  void create(const std::array<PetscInt, 3>& layout);  // ranks along each axis, as Grid() takes them
   void release();
 
   MPI_Comm comm_;
-  std::array<PetscInt, 3> ranks_;  // as asked; the DMDAs hold the layout
   std::array<Axis, 3> axes_;
   DM pressure_ = nullptr;
   std::array<DM, 3> velocity_{};

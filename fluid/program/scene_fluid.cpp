@@ -35,32 +35,29 @@ const scene::Participant& section(const scene::Scene& scene) {
 
 fluid::Point point(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 
-// Cells per axis: whole numbers, at least 1 (a one-cell periodic axis is a 2D problem).
-std::array<int, 3> cells(const Reader& grid) {
+// Whole numbers per axis under `key`, from 1 to each axis's `most`.
+std::array<int, 3> whole_per_axis(const Reader& grid, const char* key, const std::array<double, 3>& most,
+                                  const std::string& limit) {
   std::array<double, 3> n{};
-  grid.numbers("cells", n, Range::at_least(1));
+  grid.numbers(key, n, Range::at_least(1));
   std::array<int, 3> out{};
-  for (int a = 0; a < 3; ++a) {
-    if (n[a] != std::floor(n[a]) || n[a] > 1e8) grid.fail("cells", "expected whole numbers of cells");
+  for (std::size_t a = 0; a < 3; ++a) {
+    if (n[a] != std::floor(n[a]) || n[a] > most[a]) grid.fail(key, "expected whole numbers, each at most " + limit);
     out[a] = static_cast<int>(n[a]);
   }
   return out;
 }
 
+// Cells per axis (a one-cell periodic axis is a 2D problem).
+std::array<int, 3> cells(const Reader& grid) { return whole_per_axis(grid, "cells", {1e8, 1e8, 1e8}, "1e8"); }
+
 // How many of the participant's ranks share each axis: whole numbers, at most the axis's
 // cells, their product the participant's `ranks` where the scene gives more than one
 // (standalone, mpirun's count rules: the grid checks it then).
 std::array<int, 3> rank_layout(const Reader& grid, const std::array<int, 3>& cells, int ranks) {
-  std::array<double, 3> r{};
-  grid.numbers("ranks", r, Range::at_least(1));
-  std::array<int, 3> out{};
-  long long product = 1;
-  for (int a = 0; a < 3; ++a) {
-    if (r[a] != std::floor(r[a]) || r[a] > cells[a])
-      grid.fail("ranks", "expected whole numbers, each at most the axis's cells");
-    out[a] = static_cast<int>(r[a]);
-    product *= out[a];
-  }
+  const std::array<int, 3> out =
+      whole_per_axis(grid, "ranks", {double(cells[0]), double(cells[1]), double(cells[2])}, "the axis's cells");
+  const long long product = static_cast<long long>(out[0]) * out[1] * out[2];
   if (ranks > 1 && product != ranks)
     grid.fail("ranks", "their product is " + std::to_string(product) + ", the participant runs on " +
                            std::to_string(ranks) + " (participants.fluid.ranks)");
