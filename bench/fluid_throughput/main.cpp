@@ -111,7 +111,7 @@ bool physical(const ThroughputRun& r) {
   return ok;
 }
 
-// What a moving body adds to a step (the goal: at most 1.1 times the step without).
+// What a moving body adds to a step (the goal: at most 1.1 times the step without).
 void print_body_cost(const ThroughputRun& with, const ThroughputRun& without) {
   const double ratio = with.cpu_seconds_per_step / without.cpu_seconds_per_step;
   PetscPrintf(PETSC_COMM_WORLD,

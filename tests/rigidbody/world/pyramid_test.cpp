@@ -20,7 +20,7 @@ TEST_P(Pyramid, SpheresSettleWithoutPenetrationOrEnergyGain) {
   World world({.solver = GetParam()});
   const BodyMaterial rough{.friction = 0.6};
   add_ground(world, rough);
-  // The 100 spheres: layers 8x5, 7x4, 6x3, 5x2, 4x1, each in the hollows of the
+  // A pyramid of 100 spheres: layers 8x5, 7x4, 6x3, 5x2, 4x1, each in the hollows of the
   // one below, dropped from a small gap so every contact closes during the run. Spheres
   // have no rolling resistance, so the base rolls apart: energy must only go down.
   for (int layer = 0; layer < 5; ++layer) {

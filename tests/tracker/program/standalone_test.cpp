@@ -243,7 +243,7 @@ TEST(TrackerStandalone, CollisionsAtTheEquilibriumRate) {
   EXPECT_NEAR(static_cast<double>(s.collisions) / expected, 1.0, 0.02);
 }
 
-// The configs of the issue, shortened: the sphere-cluster channel and the open-cell foam
+// Two shipped configs, shortened: the sphere-cluster channel and the open-cell foam
 // keep every particle (periodic sides, mirrors, re-emitting walls), lose none, and their
 // walls are hit; the gas drifting along +x pushes the cluster along +x.
 // `window` empty: one window of `end`.

@@ -1,7 +1,7 @@
 // No particle lost: random moves that start on vertices, edges and faces and run through
 // vertices and along faces, on perturbed hexahedra, tetrahedra and Voronoi cells, for the
 // three algorithms on the same particles. The count per mesh is COSIM_TRACKING_MOVES
-// (default 1e5; the 1e6 by hand).
+// (default 1e5; 1e6 by hand for a longer search).
 
 #include "tracker/mesh/box_mesh.hpp"
 #include "tracker/mesh/geometry.hpp"
