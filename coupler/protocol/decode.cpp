@@ -23,12 +23,13 @@ void check_preamble(Bytes head) {
     throw ProtocolError("header frame of " + std::to_string(head.size()) + " bytes is too short for a cosim message");
   if (const auto magic = L::get<std::uint32_t>(head.data(), L::kMagic); magic != kMagic)
     throw ProtocolError("not a cosim message (magic " + hex(magic) + ", expected " + hex(kMagic) + ")");
-  if (const auto version = L::get<std::uint16_t>(head.data(), L::kVersion); version != kVersion)
+  if (const auto version = L::get<std::uint16_t>(head.data(), L::kVersion);
+      version < kOldestVersion || version > kVersion)
     throw ProtocolError("protocol version " + std::to_string(version) + ", this build speaks " +
-                        std::to_string(kVersion));
+                        std::to_string(kOldestVersion) + " to " + std::to_string(kVersion));
   if (head.size() < L::kFixedSize)
-    throw ProtocolError("header frame of " + std::to_string(head.size()) + " bytes is too short, protocol version " +
-                        std::to_string(kVersion) + " needs at least " + std::to_string(L::kFixedSize));
+    throw ProtocolError("header frame of " + std::to_string(head.size()) +
+                        " bytes is too short, a cosim header needs " + "at least " + std::to_string(L::kFixedSize));
 }
 
 // NUL padding is required all the way so that every valid header has one encoding.
@@ -52,12 +53,13 @@ Header read_header(const std::byte* p) {
   h.ranks = L::get<std::uint32_t>(p, L::kRanks);
   h.t0 = L::get<double>(p, L::kT0);
   h.t1 = L::get<double>(p, L::kT1);
+  h.version = L::get<std::uint16_t>(p, L::kVersion);
   rules::check_header(h);
   return h;
 }
 
 // Checks descriptor `index` against its payload frame; returns the array without data.
-Array read_descriptor(std::size_t index, const std::byte* d, Bytes payload) {
+Array read_descriptor(std::size_t index, const std::byte* d, Bytes payload, std::uint16_t version) {
   const auto tag = static_cast<Tag>(L::get<std::uint16_t>(d, L::kTag));
   const auto dtype = L::get<std::uint16_t>(d, L::kDType);
   const auto rows = L::get<std::uint32_t>(d, L::kRows);
@@ -65,7 +67,7 @@ Array read_descriptor(std::size_t index, const std::byte* d, Bytes payload) {
   const std::string label = "array " + std::to_string(index);
   if (dtype != static_cast<std::uint16_t>(DType::Float64) && dtype != static_cast<std::uint16_t>(DType::Bytes))
     throw ProtocolError(label + " has unknown dtype " + std::to_string(dtype));
-  rules::check_shape(index, tag, rows, cols);
+  rules::check_shape(index, tag, rows, cols, version);
   if (static_cast<DType>(dtype) != rules::dtype_of(tag))
     throw ProtocolError(label + " (" + to_string(tag) + ") has dtype " +
                         (dtype == static_cast<std::uint16_t>(DType::Bytes) ? "Bytes" : "Float64") +
@@ -113,7 +115,8 @@ Message decode(std::span<const Bytes> frames) {
 
   // Every size is checked before any payload is copied.
   m.arrays.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) m.arrays.push_back(read_descriptor(i, p + L::header_size(i), frames[1 + i]));
+  for (std::size_t i = 0; i < n; ++i)
+    m.arrays.push_back(read_descriptor(i, p + L::header_size(i), frames[1 + i], m.header.version));
   for (std::size_t i = 0; i < n; ++i) fill(i, m.arrays[i], frames[1 + i]);
   return m;
 }

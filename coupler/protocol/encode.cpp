@@ -9,8 +9,8 @@ namespace {
 namespace L = layout;
 
 // The bytes of array `index` as they go on the wire, once its shape and values are valid.
-std::span<const std::byte> payload(std::size_t index, const Array& a) {
-  rules::check_shape(index, a.tag, a.rows, a.cols);
+std::span<const std::byte> payload(std::size_t index, const Array& a, std::uint16_t version) {
+  rules::check_shape(index, a.tag, a.rows, a.cols, version);
   const bool text = rules::dtype_of(a.tag) == DType::Bytes;
   const std::uint64_t held = text ? a.bytes.size() : a.values.size();
   if (held != std::uint64_t{a.rows} * a.cols)
@@ -26,7 +26,7 @@ zmq::message_t header_frame(const Header& h, std::span<const Array> arrays) {
   auto* p = static_cast<std::byte*>(frame.data());
   std::memset(p, 0, frame.size());  // the NUL padding of the name
   L::put(p, L::kMagic, kMagic);
-  L::put(p, L::kVersion, kVersion);
+  L::put(p, L::kVersion, h.version);
   L::put(p, L::kType, static_cast<std::uint16_t>(h.type));
   std::memcpy(p + L::kName, h.participant.data(), h.participant.size());
   L::put(p, L::kWindow, h.window);
@@ -56,7 +56,7 @@ std::vector<zmq::message_t> encode(const Header& header, std::span<const Array> 
                         std::to_string(kMaxArrays) + " are allowed");
   std::vector<std::span<const std::byte>> payloads;
   payloads.reserve(arrays.size());
-  for (std::size_t i = 0; i < arrays.size(); ++i) payloads.push_back(payload(i, arrays[i]));
+  for (std::size_t i = 0; i < arrays.size(); ++i) payloads.push_back(payload(i, arrays[i], header.version));
 
   std::vector<zmq::message_t> frames;
   frames.reserve(1 + arrays.size());

@@ -22,6 +22,11 @@ inline constexpr std::uint32_t kMagic = 0x4d495343;  // "CSIM" read as little-en
 // 3: PointAttributes arrays, for the values per point of those sets (point_set_arrays.hpp).
 // 4: Responses arrays, the response tensors a force provider may send with its forces.
 inline constexpr std::uint16_t kVersion = 4;
+// Each version only added arrays, so every version from the first is still read: a message
+// of version v carries only arrays v had (rules::first_version), and the coupler answers each
+// participant in the version of its Hello (Server::send), so a participant built for an
+// earlier version runs unchanged until the scene needs an array its version lacks.
+inline constexpr std::uint16_t kOldestVersion = 1;
 inline constexpr std::size_t kNameSize = 32;  // participant name, NUL padded
 inline constexpr std::size_t kMaxArrays = 64;
 
@@ -80,9 +85,10 @@ struct Header {
   std::uint32_t iteration = 0;  // implicit-coupling iteration within the window, from 1
   double t0 = 0.0;
   double t1 = 0.0;
-  std::uint32_t provides = 0;  // Hello: bit set of scene::Data
-  std::uint32_t needs = 0;     // Hello: bit set of scene::Data
-  std::uint32_t ranks = 1;     // Hello: MPI size of the participant
+  std::uint32_t provides = 0;        // Hello: bit set of scene::Data
+  std::uint32_t needs = 0;           // Hello: bit set of scene::Data
+  std::uint32_t ranks = 1;           // Hello: MPI size of the participant
+  std::uint16_t version = kVersion;  // the protocol version the message is written in
 };
 
 // A payload array: float64 values (row-major) or bytes.
@@ -111,7 +117,7 @@ struct Message {
 std::vector<zmq::message_t> encode(const Message& m);
 // The same for a header and arrays kept apart (sending one payload under another name).
 std::vector<zmq::message_t> encode(const Header& header, std::span<const Array> arrays);
-// Validates magic, version, type, name, frame count, sizes against the header, dtype,
+// Validates magic, version (kOldestVersion to kVersion), type, name, frame count, sizes against the header, dtype,
 // and finite values in Poses/Forces/Stats arrays.
 Message decode(std::span<const zmq::message_t> frames);
 // Same checks on raw buffers (used by the fuzz test and the decoder itself).

@@ -49,7 +49,23 @@ DType dtype_of(Tag tag) {
   throw ProtocolError("unknown array tag " + std::to_string(static_cast<unsigned>(tag)));
 }
 
+std::uint16_t first_version(Tag tag) {
+  switch (tag) {
+    case Tag::Points:
+      return 2;
+    case Tag::PointAttributes:
+      return 3;
+    case Tag::Responses:
+      return 4;
+    default:
+      return 1;
+  }
+}
+
 void check_header(const Header& h) {
+  if (h.version < kOldestVersion || h.version > kVersion)
+    throw ProtocolError("protocol version " + std::to_string(h.version) + ", this build speaks " +
+                        std::to_string(kOldestVersion) + " to " + std::to_string(kVersion));
   if (!known(h.type)) throw ProtocolError("unknown message type " + std::to_string(static_cast<unsigned>(h.type)));
   check_participant_name(h.participant);
   if (!std::isfinite(h.t0) || !std::isfinite(h.t1) || h.t1 < h.t0)
@@ -58,8 +74,11 @@ void check_header(const Header& h) {
   if (h.type == Type::Hello && h.ranks < 1) throw ProtocolError("Hello from '" + h.participant + "' announces 0 ranks");
 }
 
-void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t cols) {
+void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t cols, std::uint16_t version) {
   dtype_of(tag);  // rejects unknown tags
+  if (first_version(tag) > version)
+    throw ProtocolError(array_label(index, tag) + " came with protocol version " + std::to_string(first_version(tag)) +
+                        ", the message is version " + std::to_string(version));
   const auto need_cols = [&](std::uint32_t n) {
     if (cols != n)
       throw ProtocolError(array_label(index, tag) + " has " + std::to_string(cols) + " columns, expected " +

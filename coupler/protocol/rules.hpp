@@ -22,9 +22,12 @@ DType dtype_of(Tag tag);
 // Names reach error messages from untrusted bytes: keep them on one readable line.
 std::string printable(std::string_view name);
 
+// The protocol version that added arrays with this tag.
+std::uint16_t first_version(Tag tag);
+
 void check_header(const Header& header);
-// Tag, shape and size of array number `index`.
-void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t cols);
+// Tag, shape and size of array number `index` of a message of `version`.
+void check_shape(std::size_t index, Tag tag, std::uint32_t rows, std::uint32_t cols, std::uint16_t version);
 // NaN/Inf where physics is expected (Poses, Forces, Stats).
 void check_values(std::size_t index, Tag tag, std::uint32_t cols, std::span<const double> values);
 

@@ -49,7 +49,16 @@ Server::Server(const std::string& endpoint, ServerOptions options)
 void Server::send(const std::string& participant, const Message& m) {
   Header header = m.header;
   header.participant = participant;
-  auto frames = encode(header, m.arrays);
+  if (const auto it = versions_.find(participant); it != versions_.end()) header.version = it->second;
+  std::vector<zmq::message_t> frames;
+  try {
+    frames = encode(header, m.arrays);
+  } catch (const ProtocolError& e) {
+    if (header.version == kVersion) throw;
+    throw PeerError(participant, "speaks protocol version " + std::to_string(header.version) + ", in which the " +
+                                     to_string(header.type) + " message the coupler sends cannot be written (" +
+                                     e.what() + "): build it against this coupler's participant library");
+  }
   try {
     socket_.send(zmq::buffer(participant), zmq::send_flags::sndmore);
   } catch (const zmq::error_t& e) {
@@ -119,6 +128,7 @@ std::optional<Message> Server::receive(std::chrono::milliseconds timeout) {
       throw PeerError(peer, std::string("sent a message the coupler cannot read: ") + e.what());
     }
     if (m.header.participant != identity) throw PeerError(peer, "sent a message signed '" + m.header.participant + "'");
+    versions_[m.header.participant] = m.header.version;
     return m;
   }
 }

@@ -45,8 +45,9 @@ class Server {
   // The bound address, with the chosen port for tcp; give this to participants.
   const std::string& endpoint() const { return endpoint_; }
 
-  // Sends m with its participant field set to the addressee. A name that is not connected
-  // throws ProtocolError.
+  // Sends m with its participant field set to the addressee, in the protocol version of the
+  // addressee's last message (kVersion before it sent one). A name that is not connected, or
+  // an array the addressee's version lacks, throws PeerError.
   void send(const std::string& participant, const Message& m);
   // Next message from any participant, or nullopt after timeout (or sooner, when a signal
   // interrupts the wait). The ZeroMQ identity must match the name in the header, else
@@ -72,7 +73,8 @@ class Server {
   zmq::socket_t socket_;
   SocketEvents events_;  // failed handshakes, ended connections
   std::string endpoint_;
-  std::map<int, std::string> names_by_fd_;  // connections that sent messages, by their name
+  std::map<int, std::string> names_by_fd_;         // connections that sent messages, by their name
+  std::map<std::string, std::uint16_t> versions_;  // each participant's protocol version, answered in
   std::vector<std::string> refusals_;
   std::vector<std::string> lost_;
 };

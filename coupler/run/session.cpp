@@ -170,6 +170,9 @@ void Session::handshake(Peers& peers) {
                                "runs on " + std::to_string(hello.header.ranks) + " ranks, the scene asks for " +
                                    std::to_string(planned.ranks),
                                when);
+    if (hello.header.version < protocol::kVersion)
+      spdlog::info("{} speaks protocol version {} (the coupler {}): answered in its version", name,
+                   hello.header.version, protocol::kVersion);
   }
 
   // A resumed run starts from exactly what was committed: the participants' Ready answers

@@ -225,6 +225,39 @@ TEST_P(Transport, UndecodableMessageNamesItsSender) {
   }
 }
 
+TEST_P(Transport, AnEarlierVersionsParticipantIsAnsweredInItsVersion) {
+  Server server(bind_address());
+  zmq::context_t context;
+  zmq::socket_t peer(context, zmq::socket_type::dealer);
+  peer.set(zmq::sockopt::routing_id, "rigid");
+  peer.set(zmq::sockopt::linger, 0);
+  peer.connect(server.endpoint());
+  Message hello = make(Type::Hello);
+  hello.header.participant = "rigid";
+  hello.header.version = 3;  // before Responses arrays
+  zmq::send_multipart(peer, encode(hello));
+  EXPECT_EQ(first(server).header.version, 3);
+
+  server.send("rigid", make(Type::Advance, {Array::of(Tag::Forces, 1, kForceWidth, std::vector<double>(6, 1.0))}));
+  std::vector<zmq::message_t> frames;
+  peer.set(zmq::sockopt::rcvtimeo, static_cast<int>(std::chrono::milliseconds(kWait).count()));
+  ASSERT_TRUE(zmq::recv_multipart(peer, std::back_inserter(frames)));
+  const Message advance = decode(frames);
+  EXPECT_EQ(advance.header.version, 3);
+  EXPECT_EQ(advance.get(Tag::Forces).values, std::vector<double>(6, 1.0));
+
+  try {
+    server.send(
+        "rigid",
+        make(Type::Advance, {Array::of(Tag::Responses, 1, kResponseWidth, std::vector<double>(kResponseWidth, 0.0))}));
+    FAIL() << "no PeerError";
+  } catch (const PeerError& e) {
+    EXPECT_EQ(e.peer, "rigid");
+    EXPECT_THAT(e.what(), HasSubstr("'rigid' speaks protocol version 3, in which the Advance message"));
+    EXPECT_THAT(e.what(), HasSubstr("(Responses) came with protocol version 4"));
+  }
+}
+
 TEST_P(Transport, SendingToUnknownParticipantThrows) {
   Server server(bind_address());
   try {

@@ -76,14 +76,41 @@ TEST(Validation, WrongMagic) {
   EXPECT_THAT(decode_error(f), HasSubstr("not a cosim message"));
 }
 
-TEST(Validation, VersionMismatch) {
+TEST(Validation, VersionOutsideThoseThisBuildSpeaks) {
   Frames f = valid_frames();
   poke(f[0], L::kVersion, std::uint16_t{kVersion + 1});
   f[0].resize(20);  // a future header may be laid out differently: the version still shows
-  EXPECT_THAT(decode_error(f), HasSubstr("protocol version " + std::to_string(kVersion + 1) + ", this build speaks " +
-                                         std::to_string(kVersion)));
-  poke(f[0], L::kVersion, std::uint16_t{1});  // a peer from before Points arrays
-  EXPECT_THAT(decode_error(f), HasSubstr("protocol version 1, this build speaks " + std::to_string(kVersion)));
+  const std::string speaks = ", this build speaks 1 to " + std::to_string(kVersion);
+  EXPECT_THAT(decode_error(f), HasSubstr("protocol version " + std::to_string(kVersion + 1) + speaks));
+  poke(f[0], L::kVersion, std::uint16_t{0});
+  EXPECT_THAT(decode_error(f), HasSubstr("protocol version 0" + speaks));
+  Message m = valid();
+  m.header.version = kVersion + 1;
+  EXPECT_THAT(encode_error(m), HasSubstr("protocol version " + std::to_string(kVersion + 1) + speaks));
+}
+
+TEST(Validation, AnEarlierVersionsMessageIsReadAsItsVersion) {
+  // Forces, Poses, Stats, Text and State: all of them arrays of the first version.
+  Message m = valid();
+  m.header.version = 1;
+  const Message back = decode(encode(m));
+  EXPECT_EQ(back.header.version, 1);
+  ASSERT_EQ(back.arrays.size(), m.arrays.size());
+  EXPECT_EQ(back.arrays[0].values, m.arrays[0].values);
+  EXPECT_EQ(decode(encode(valid())).header.version, kVersion);
+}
+
+TEST(Validation, AnArrayNewerThanItsMessagesVersionIsRefused) {
+  Message m = valid();
+  m.arrays.push_back(Array::of(Tag::Responses, 2, kResponseWidth, std::vector<double>(2 * kResponseWidth, 0.0)));
+  m.arrays.push_back(Array::of(Tag::Points, 1, 3, {0.0, 0.0, 0.0}));
+  Frames f = to_bytes(encode(m));
+  poke(f[0], L::kVersion, std::uint16_t{3});
+  EXPECT_THAT(decode_error(f), HasSubstr("array 5 (Responses) came with protocol version 4, the message is version 3"));
+  m.header.version = 1;
+  EXPECT_THAT(encode_error(m), HasSubstr("array 5 (Responses) came with protocol version 4, the message is version 1"));
+  m.arrays.erase(m.arrays.begin() + 5);
+  EXPECT_THAT(encode_error(m), HasSubstr("array 5 (Points) came with protocol version 2, the message is version 1"));
 }
 
 TEST(Validation, UnknownType) {
