@@ -14,6 +14,30 @@ namespace {
 // The shortest text that reads back as the same double: 0.005 / 4 is written 0.00125.
 YAML::Node number(double value) { return YAML::Node(fmt::format("{}", value)); }
 
+// node[key] where node is a map that has it, else a null node (neither scalar, list nor
+// map). IsDefined() comes before anything else: yaml-cpp throws on any other question to a
+// missing key.
+YAML::Node at(const YAML::Node& node, const char* key) {
+  return node.IsDefined() && node.IsMap() && node[key].IsDefined() ? node[key] : YAML::Node();
+}
+
+// Cells per axis at `ratio` times the resolution; a single layer is a two-dimensional
+// scene's (or a channel's periodic depth) and stays one cell.
+YAML::Node cells_at(const YAML::Node& base, double ratio) {
+  YAML::Node level(YAML::NodeType::Sequence);
+  level.SetStyle(YAML::EmitterStyle::Flow);
+  for (const auto& c : base)
+    level.push_back(c.as<double>() == 1 ? 1L : std::max(1L, std::lround(c.as<double>() * ratio)));
+  return level;
+}
+
+// How many times the cells of cells_at(base, ratio) outnumber base's.
+double cell_count_ratio(const YAML::Node& base, double ratio) {
+  double count = 1;
+  for (std::size_t k = 0; k < base.size(); ++k) count *= cells_at(base, ratio)[k].as<double>() / base[k].as<double>();
+  return count;
+}
+
 }  // namespace
 
 Varied parse_vary(const std::string& argument) {
@@ -51,49 +75,82 @@ Setting parse_set(const std::string& argument) {
 
 std::vector<Varied> scaled(const scene::Scene& scene, const std::vector<double>& scales, const std::string& argument) {
   const auto windows = static_cast<double>(scene.windows());
-  std::vector<double> counts;  // windows per level
-  for (double s : scales) counts.push_back(std::max(1.0, std::round(windows * s)));
+  std::vector<double> counts, ratios;  // windows per level, and their ratio to the scene's
+  for (double s : scales) {
+    counts.push_back(std::max(1.0, std::round(windows * s)));
+    ratios.push_back(counts.back() / windows);
+  }
   // One division each, so that a value reads back as the shortest decimal: 1 / 400 = 0.0025.
   const auto each = [&](double total, double per_window) {
     std::vector<YAML::Node> values;
     for (double n : counts) values.push_back(number(total / (n * per_window)));
     return values;
   };
+  const auto of_ratio = [&](const auto& value) {
+    std::vector<YAML::Node> values;
+    for (double r : ratios) values.push_back(value(r));
+    return values;
+  };
   const double end = scene.time.end;
   std::vector<Varied> out{{"coupling.window", each(end, 1), argument}};
   for (const scene::Participant& p : scene.participants)
     out.push_back({"participants." + p.name + ".dt", each(end, std::round(scene.coupling.window / p.dt)), argument});
-  // IsDefined() before anything else: yaml-cpp throws on any other question to a missing key.
-  const scene::Participant* fluid = scene.participant("fluid");
-  const YAML::Node options = fluid != nullptr && fluid->options.IsMap() ? fluid->options : YAML::Node();
-  const YAML::Node first = options.IsDefined() ? options["dt_initial"] : YAML::Node();
-  if (first.IsDefined() && first.IsScalar())
+  // What the scene writes, so that a default is left to its program.
+  const YAML::Node document = YAML::Load(scene.text);
+  const YAML::Node fluid = at(at(at(document, "participants"), "fluid"), "options");
+  if (const YAML::Node first = at(fluid, "dt_initial"); first.IsScalar())
     out.push_back(
         {"participants.fluid.options.dt_initial", each(end, scene.coupling.window / first.as<double>()), argument});
   // Field frames at the same times on every level, as far as whole windows allow, so that a
   // field measure reads the same instants and each level writes as many frames.
-  const YAML::Node written = YAML::Load(scene.text)["output"];
-  const YAML::Node frames = written.IsDefined() && written.IsMap() ? written["fields_every"] : YAML::Node();
-  if (frames.IsDefined() && frames.IsScalar() && scene.output.fields_every > 0) {
-    Varied every{"output.fields_every", {}, argument};
-    for (double n : counts)
-      every.values.push_back(YAML::Node(std::max(1L, std::lround(scene.output.fields_every * n / windows))));
-    out.push_back(std::move(every));
+  if (at(at(document, "output"), "fields_every").IsScalar() && scene.output.fields_every > 0)
+    out.push_back({"output.fields_every", of_ratio([&](double r) {
+                     return YAML::Node(std::max(1L, std::lround(scene.output.fields_every * r)));
+                   }),
+                   argument});
+  if (const YAML::Node grid = at(at(fluid, "grid"), "cells"); grid.IsSequence())
+    out.push_back(
+        {"participants.fluid.options.grid.cells", of_ratio([&](double r) { return cells_at(grid, r); }), argument});
+  // The tracker's mesh refines as the grid does, and its particles per cell stay as written:
+  // `per_cell` as it is, `total` and (for gas by region) each simulator's `weight` by how
+  // many times the cells grew, so that the statistical error falls with the cells.
+  const YAML::Node tracker = at(at(at(document, "participants"), "tracker"), "options");
+  const YAML::Node mesh = at(tracker, "mesh");
+  std::vector<double> grown;  // the tracker's cells over the scene's, per level
+  if (const YAML::Node box = at(mesh, "cells"); box.IsSequence()) {
+    out.push_back(
+        {"participants.tracker.options.mesh.cells", of_ratio([&](double r) { return cells_at(box, r); }), argument});
+    for (double r : ratios) grown.push_back(cell_count_ratio(box, r));
+  } else if (const YAML::Node points = at(mesh, "points"); points.IsScalar()) {
+    const auto seeds = [&](double r) { return std::max(1L, std::lround(points.as<double>() * r * r * r)); };
+    out.push_back({"participants.tracker.options.mesh.points", of_ratio([&](double r) { return YAML::Node(seeds(r)); }),
+                   argument});
+    for (double r : ratios) grown.push_back(static_cast<double>(seeds(r)) / points.as<double>());
   }
-  const YAML::Node grid = options.IsDefined() ? options["grid"] : YAML::Node();
-  const YAML::Node base = grid.IsDefined() && grid.IsMap() ? grid["cells"] : YAML::Node();
-  if (base.IsDefined() && base.IsSequence()) {
-    Varied cells{"participants.fluid.options.grid.cells", {}, argument};
-    for (double n : counts) {
-      YAML::Node level(YAML::NodeType::Sequence);
-      level.SetStyle(YAML::EmitterStyle::Flow);
-      // A single layer is a two-dimensional scene's: it stays one cell.
-      for (const auto& c : base)
-        level.push_back(c.as<double>() == 1 ? 1L : std::max(1L, std::lround(c.as<double>() * n / windows)));
-      cells.values.push_back(level);
-    }
-    out.push_back(std::move(cells));
+  const YAML::Node particles = at(tracker, "particles");
+  if (const YAML::Node total = at(particles, "total"); !grown.empty() && total.IsScalar()) {
+    Varied v{"participants.tracker.options.particles.total", {}, argument};
+    for (double g : grown) v.values.push_back(YAML::Node(std::lround(total.as<double>() * g)));
+    out.push_back(std::move(v));
+  } else if (!grown.empty() && at(particles, "regions").IsSequence()) {
+    const YAML::Node weight = at(particles, "weight");
+    Varied v{"participants.tracker.options.particles.weight", {}, argument};
+    for (double g : grown) v.values.push_back(number((weight.IsScalar() ? weight.as<double>() : 1.0) / g));
+    out.push_back(std::move(v));
   }
+  // A tolerance the scene sets shrinks on finer levels as a second-order discretization error
+  // does (s^-2), so that what the iterations leave stays the same small part of each level's
+  // error; a coarser level (--target's) keeps it, never looser than the scene asks.
+  const std::pair<const char*, YAML::Node> tolerances[] = {
+      {"coupling.tolerance", at(at(document, "coupling"), "tolerance")},
+      {"participants.rigidbody.options.tolerance",
+       at(at(at(at(document, "participants"), "rigidbody"), "options"), "tolerance")},
+      {"participants.fluid.options.bodies.tolerance", at(at(fluid, "bodies"), "tolerance")}};
+  for (const auto& [key, tolerance] : tolerances)
+    if (tolerance.IsScalar())
+      out.push_back({key,
+                     of_ratio([&](double r) { return number(tolerance.as<double>() / std::pow(std::max(r, 1.0), 2)); }),
+                     argument});
   return out;
 }
 

@@ -78,7 +78,10 @@ TEST(Study, OscillatorShowsTheSchemesOrderAndTheExtrapolateBeatsTheFinestLevel) 
   EXPECT_EQ(finest.at("coupling.window"), "0.005");
   EXPECT_THAT(r.output, HasSubstr("in the asymptotic range"));
   const std::string report = read_file(dir / "study" / "report.md");
-  EXPECT_THAT(report, HasSubstr("| level | coupling.window | participants.mass.dt | participants.spring.dt | value |"));
+  // The oscillator's scene writes its coupling tolerance, which shrinks as the square of the scale.
+  EXPECT_THAT(report, HasSubstr("| level | coupling.window | participants.mass.dt | participants.spring.dt | "
+                                "coupling.tolerance | value |"));
+  EXPECT_EQ(finest.at("coupling.tolerance"), "6.25e-12");
   EXPECT_THAT(report, HasSubstr("Set on every level: time.end = 1.0."));
   for (const char* f : {"level_1.yaml", "level_3.h5", "level_2.log"})
     EXPECT_TRUE(std::filesystem::exists(dir / "study" / f)) << f;

@@ -106,6 +106,81 @@ TEST(Refine, DividesStepsAndMultipliesCellsFromTheScenesValues) {
   EXPECT_EQ(doc["coupling"]["window"].as<double>(), 0.01);  // the scene itself is left as it was
 }
 
+const char* kGas = R"(time: {end: 2.0e-4}
+coupling: {window: 2.0e-5, scheme: serial-explicit}
+domain: {min: [0, 0, 0], max: [2.0e-5, 1.0e-3, 2.0e-5]}
+effects: [rarefied_gas]
+participants:
+  tracker:
+    dt: 5.0e-8
+    options:
+      mesh: {type: box, cells: [1, 50, 1], periodic: [true, false, true]}
+      particles: {total: 5000, temperature: 273, mass: 6.63e-26, weight: 1.0e6}
+)";
+
+const Varied* find_key(const std::vector<Varied>& keys, const std::string& key) {
+  const auto it = std::find_if(keys.begin(), keys.end(), [&](const Varied& v) { return v.key == key; });
+  return it == keys.end() ? nullptr : &*it;
+}
+
+// The tracker's cells refine as a fluid grid's do, and its particles grow with them.
+TEST(Refine, TheTrackersCellsAndParticlesGrowTogether) {
+  const std::vector<Varied> keys = refine(scene::load_scene_from_string(kGas), 2, 3);
+  const Varied* cells = find_key(keys, "participants.tracker.options.mesh.cells");
+  ASSERT_NE(cells, nullptr);
+  EXPECT_EQ(text(cells->values[2]), "[1, 200, 1]");  // the periodic single layers stay one cell
+  const Varied* total = find_key(keys, "participants.tracker.options.particles.total");
+  ASSERT_NE(total, nullptr);
+  EXPECT_EQ(text(total->values[1]), "10000");
+  EXPECT_EQ(text(total->values[2]), "20000");
+  EXPECT_EQ(find_key(keys, "participants.tracker.options.particles.weight"), nullptr);
+
+  // Gas by region: as many real molecules, each simulator standing for fewer of them.
+  std::string regions = kGas;
+  regions.replace(regions.find("total: 5000"), 11, "regions: [{number_density: 1.0e20}]");
+  const auto by_region = refine(scene::load_scene_from_string(regions), 2, 2);
+  const Varied* weight = find_key(by_region, "participants.tracker.options.particles.weight");
+  ASSERT_NE(weight, nullptr);
+  EXPECT_EQ(text(weight->values[1]), "500000");
+  EXPECT_EQ(find_key(by_region, "participants.tracker.options.particles.total"), nullptr);
+
+  // Particles per cell are kept as they are; a Voronoi mesh's seeds grow as the cube.
+  std::string voronoi = kGas;
+  voronoi.replace(voronoi.find("{type: box, cells: [1, 50, 1], periodic: [true, false, true]}"), 61,
+                  "{type: voronoi, points: 1000}");
+  voronoi.replace(voronoi.find("total: 5000"), 11, "per_cell: 20");
+  const auto seeded = refine(scene::load_scene_from_string(voronoi), 2, 2);
+  const Varied* points = find_key(seeded, "participants.tracker.options.mesh.points");
+  ASSERT_NE(points, nullptr);
+  EXPECT_EQ(text(points->values[1]), "8000");
+  EXPECT_EQ(find_key(seeded, "participants.tracker.options.particles.per_cell"), nullptr);
+  EXPECT_EQ(find_key(seeded, "participants.tracker.options.particles.weight"), nullptr);
+}
+
+// A tolerance the scene writes shrinks as the square of the scale; one it leaves to its
+// default stays the program's.
+TEST(Refine, WrittenTolerancesShrinkAsTheSquareOfTheScale) {
+  std::string yaml = kScene;
+  yaml.replace(yaml.find("coupling: {window: 0.01}"), 24, "coupling: {window: 0.01, tolerance: 1.0e-4}");
+  yaml.replace(yaml.find("options: {grid"), 14, "options: {bodies: {tolerance: 1.0e-5}, grid");
+  const std::vector<Varied> keys = refine(scene::load_scene_from_string(yaml), 2, 3);
+  const Varied* coupling = find_key(keys, "coupling.tolerance");
+  ASSERT_NE(coupling, nullptr);
+  EXPECT_EQ(text(coupling->values[0]), "0.0001");
+  EXPECT_EQ(text(coupling->values[2]), "6.25e-06");
+  const Varied* forcing = find_key(keys, "participants.fluid.options.bodies.tolerance");
+  ASSERT_NE(forcing, nullptr);
+  EXPECT_EQ(text(forcing->values[1]), "2.5e-06");
+  EXPECT_EQ(find_key(keys, "participants.rigidbody.options.tolerance"), nullptr);
+  const YAML::Node doc = YAML::Load(yaml);
+  YAML::Emitter out;
+  out << variant(doc, keys, 2);
+  EXPECT_DOUBLE_EQ(scene::load_scene_from_string(out.c_str()).coupling.tolerance, 6.25e-6);
+  // Levels coarser than the scene (--target's) keep what it asks.
+  const auto coarse = scaled(scene::load_scene_from_string(yaml), {0.5, 1}, "--target x=1%");
+  EXPECT_EQ(text(find_key(coarse, "coupling.tolerance")->values[0]), "0.0001");
+}
+
 // A scale that is not a whole ratio keeps time.end a whole number of windows and each
 // window the same whole number of steps; the fluid's first step shrinks with them.
 TEST(Scaled, AnyScaleGivesWholeWindowsAndStepsPerWindow) {
