@@ -1,5 +1,6 @@
 #include "coupler/output/run_file.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -207,6 +208,20 @@ void RunFile::write_checkpoint(const Checkpoint& c) {
   in_file(impl_->path, [&] {
     output::write_checkpoint(impl_->file.get(), c, impl_->bodies.size(), impl_->participants);
     impl_->checkpoint = c;
+  });
+}
+
+void RunFile::set_peak_bytes(const std::map<std::string, double>& peak_bytes) {
+  in_file(impl_->path, [&] {
+    const Handle participants = open_group(impl_->file.get(), "coupling/participants");
+    for (const auto& [name, bytes] : peak_bytes) {
+      if (!has_link(participants.get(), name)) continue;
+      const Handle group = open_group(participants.get(), name);
+      const double earlier =
+          has_attribute(group.get(), "peak_bytes") ? read_attribute<double>(group.get(), "peak_bytes") : 0.0;
+      write_attribute(group.get(), "peak_bytes", std::max(earlier, bytes));
+    }
+    flush(impl_->file.get());
   });
 }
 

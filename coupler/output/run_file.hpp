@@ -17,7 +17,9 @@
 //   /coupling/participants/<name>/  wall_seconds (n), substeps (n), field_bytes (n: the
 //                        payload bytes of the grid fields the coupler forwarded to it in
 //                        the window, over all iterations; 0 for a participant that needs
-//                        none); NaN where a window's record had no value for that participant
+//                        none); NaN where a window's record had no value for that
+//                        participant; attr peak_bytes once a session finished (the largest
+//                        peak resident set of its processes, one rank's, over the sessions)
 //   /fields/<participant>/grid/  written with the first fields (coupler/field), either
 //                        rectilinear: x, y, z, node coordinates per axis (so stretched
 //                        axes are exact); or polyhedral: vertices (v x 3), topology
@@ -162,6 +164,9 @@ class RunFile {
   void write_checkpoint(const Checkpoint& c);
   // wall_seconds: this session's; the file stores it added to the earlier sessions' total.
   void set_status(const std::string& status, double wall_seconds);
+  // Each participant's peak resident set in bytes (its largest process), kept as the larger
+  // of this session's and what the file holds from earlier ones.
+  void set_peak_bytes(const std::map<std::string, double>& peak_bytes);
 
  private:
   struct Impl;

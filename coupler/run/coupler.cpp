@@ -109,6 +109,7 @@ int run(const RunRequest& request) {
     spdlog::error("{}", resume_hint());
     return 1;
   }
+  session->file().set_peak_bytes(session->totals().peak_bytes);
   session->file().set_status("finished", wall());
   if (!request.resume) learn(session->scene(), work, session->totals(), wall(), path);
   spdlog::info("finished in {:.2f} s; wrote {}", wall(), path.string());

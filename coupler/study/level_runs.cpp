@@ -101,8 +101,15 @@ bool run_levels(std::vector<Level>& levels, std::size_t first, const std::vector
   const std::vector<Usage> usage = run_all(runs, jobs, started, finished);
   bool ok = true;
   for (std::size_t j = 0; j < usage.size(); ++j) {
-    levels[first + j].usage = usage[j];
+    Level& l = levels[first + j];
+    l.usage = usage[j];
     ok = ok && usage[j].ended.empty();
+    if (!usage[j].ended.empty()) continue;
+    try {
+      l.programs = output::program_costs(l.run_file, scene::is_serial(scene::load_scene(l.scene).coupling.scheme));
+    } catch (const std::exception& e) {
+      std::cout << fmt::format("{}: level {}: no cost per program: {}", who, first + j + 1, e.what()) << std::endl;
+    }
   }
   return ok;
 }

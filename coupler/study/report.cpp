@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -106,6 +107,46 @@ void write_csv(const Results& r, const fs::path& file) {
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
+void write_costs_csv(const Results& r, const fs::path& file) {
+  std::ofstream out(file);
+  out << "level,program,share,peak_mb\n";
+  for (std::size_t k = 0; k < r.levels.size(); ++k)
+    for (const output::ProgramCost& p : r.levels[k].programs)
+      out << fmt::format("{},{},{:.4f},{}\n", k + 1, csv_field(p.name), p.share,
+                         p.peak_bytes >= 0 ? fmt::format("{:.1f}", p.peak_bytes / 1e6) : "");
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+std::string costs_section(const Results& r) {
+  std::vector<std::string> programs;  // every program any level has, in its first order
+  for (const Level& l : r.levels)
+    for (const output::ProgramCost& p : l.programs)
+      if (std::find(programs.begin(), programs.end(), p.name) == programs.end()) programs.push_back(p.name);
+  if (programs.empty()) return {};
+  std::vector<std::string> header{"level", "wall s"};
+  header.insert(header.end(), programs.begin(), programs.end());
+  std::string out = fmt::format(
+      "\n## What each level cost\n\nEach program's share of the windows' wall time and its "
+      "peak resident set (one process: a rank), from the run file; the coupler's share "
+      "is what is left of the windows, the wire included.\n\n| {} |\n|{}\n",
+      fmt::join(header, " | "), fmt::join(std::vector<std::string>(header.size(), "---|"), ""));
+  for (std::size_t k = 0; k < r.levels.size(); ++k) {
+    const Level& l = r.levels[k];
+    std::vector<std::string> row{std::to_string(k + 1), fmt::format("{:.2f}", l.usage.wall_seconds)};
+    for (const std::string& name : programs) {
+      const auto p = std::find_if(l.programs.begin(), l.programs.end(),
+                                  [&](const output::ProgramCost& c) { return c.name == name; });
+      if (p == l.programs.end())
+        row.emplace_back();
+      else
+        row.push_back(p->peak_bytes >= 0 ? fmt::format("{:.0f} %, {:.0f} MB", 100 * p->share, p->peak_bytes / 1e6)
+                                         : fmt::format("{:.0f} %", 100 * p->share));
+    }
+    out += fmt::format("| {} |\n", fmt::join(row, " | "));
+  }
+  return out;
+}
+
 std::string quantity_sections(const Results& r, bool plots) {
   std::string out;
   for (const Quantity& q : r.quantities) {
@@ -138,7 +179,7 @@ void write_report(const Results& r, const fs::path& file) {
     if (!r.levels[k].usage.ended.empty())
       out << fmt::format("\nLevel {} failed: `cosim run` {} (see {}).\n", k + 1, r.levels[k].usage.ended,
                          r.levels[k].log.filename().string());
-  out << quantity_sections(r, true);
+  out << quantity_sections(r, true) << costs_section(r);
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 

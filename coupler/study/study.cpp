@@ -96,10 +96,12 @@ int study(const Request& request) {
   for (const Measure& m : measures) r.quantities.push_back(measure_quantity(m, r));
   const fs::path csv = dir / "results.csv";
   write_csv(r, csv);
+  write_costs_csv(r, dir / "costs.csv");
   set_plots(r, csv);
   write_report(r, dir / "report.md");
-  std::cout << quantity_sections(r, false)
-            << fmt::format("\nwrote {}, {} and the plots beside them\n", (dir / "report.md").string(), csv.string());
+  std::cout << quantity_sections(r, false) << costs_section(r)
+            << fmt::format("\nwrote {}, {}, {} and the plots beside them\n", (dir / "report.md").string(), csv.string(),
+                           (dir / "costs.csv").string());
   return failed ? 1 : 0;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "coupler/output/program_costs.hpp"
 #include "coupler/study/convergence.hpp"
 #include "coupler/study/measure.hpp"
 #include "coupler/study/refinement.hpp"
@@ -33,6 +34,9 @@ struct Level {
   std::vector<std::string> values;  // of each varied key, as text
   std::filesystem::path scene, run_file, log;
   Usage usage;
+  // Each program's share of the windows' wall time and its peak memory, then the coupler's
+  // share, from the run file (output/program_costs.hpp); empty where the run failed.
+  std::vector<output::ProgramCost> programs;
 };
 
 struct Quantity {

@@ -85,6 +85,20 @@ TEST(Study, OscillatorShowsTheSchemesOrderAndTheExtrapolateBeatsTheFinestLevel) 
   EXPECT_THAT(report, HasSubstr("Set on every level: time.end = 1.0."));
   for (const char* f : {"level_1.yaml", "level_3.h5", "level_2.log"})
     EXPECT_TRUE(std::filesystem::exists(dir / "study" / f)) << f;
+  // What each level's programs took: the two participants and the coupler, whose shares
+  // make up the windows of a serial scheme, and the participants' peak memory.
+  EXPECT_THAT(report, HasSubstr("## What each level cost"));
+  const auto costs = read_csv(dir / "study" / "costs.csv");
+  ASSERT_EQ(costs.size(), 9u);
+  for (int level = 1; level <= 3; ++level) {
+    double shares = 0;
+    for (const auto& row : costs)
+      if (row.at("level") == std::to_string(level)) {
+        shares += std::stod(row.at("share"));
+        if (row.at("program") != "coupler") EXPECT_GT(std::stod(row.at("peak_mb")), 1.0) << row.at("program");
+      }
+    EXPECT_NEAR(shares, 1.0, 0.01) << "level " << level;
+  }
 }
 
 // The finest level's row of a study of `scene`, after checking it ran.
