@@ -168,8 +168,8 @@ void write_report(const Results& r, const fs::path& file) {
   out << (r.expected_order ? fmt::format(" Expected order: {:g}.", *r.expected_order) : std::string());
   if (!r.set.empty()) out << fmt::format(" Set on every level: {}.", fmt::join(r.set, ", "));
   out << "\n\n";
-  out << (r.jobs > 1 ? fmt::format("Up to {} runs went side by side: they share the cores, so their wall times are "
-                                   "longer than alone.",
+  out << (r.jobs > 1 ? fmt::format("Up to {} runs went side by side, each on its share of the cores, so their wall "
+                                   "times are longer than alone.",
                                    r.jobs)
                      : std::string("The runs went one at a time."))
       << " CPU s is the user and system time of `cosim run` and every participant; peak MB the largest peak resident "

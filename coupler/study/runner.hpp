@@ -24,7 +24,9 @@ struct Usage {
 };
 
 // Runs every job, `parallel` at a time in order, and returns their usage in the jobs' order;
-// `started` and `finished` are told as it happens.
+// `started` and `finished` are told as it happens. With `parallel` above 1 and at least as
+// many CPUs allowed to this process, each job runs pinned to its even share of them (the
+// slot it took, whole CPUs), inherited by everything it starts.
 std::vector<Usage> run_all(const std::vector<Job>& jobs, int parallel, const std::function<void(std::size_t)>& started,
                            const std::function<void(std::size_t, const Usage&)>& finished);
 
