@@ -164,7 +164,8 @@ int main(int argc, char** argv) {
   auto* refine_opt = study_cmd
                          ->add_option("--refine", study_request.refine,
                                       "F: instead of --vary, divide coupling.window and every participant's dt by F "
-                                      "per level and multiply the fluid's grid cells by F")
+                                      "per level, multiply the fluid's grid cells and the tracker's mesh cells by F "
+                                      "and shrink the tolerances the scene writes by F^2 (docs/study.md)")
                          ->excludes(vary_opt);
   study_cmd->add_option("--levels", study_request.levels, "N: levels with --refine (default 3)")->needs(refine_opt);
   study_cmd

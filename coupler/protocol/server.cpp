@@ -49,7 +49,8 @@ Server::Server(const std::string& endpoint, ServerOptions options)
 void Server::send(const std::string& participant, const Message& m) {
   Header header = m.header;
   header.participant = participant;
-  if (const auto it = versions_.find(participant); it != versions_.end()) header.version = it->second;
+  const auto known = versions_.find(participant);
+  header.version = known != versions_.end() ? known->second : kVersion;
   std::vector<zmq::message_t> frames;
   try {
     frames = encode(header, m.arrays);
@@ -57,7 +58,9 @@ void Server::send(const std::string& participant, const Message& m) {
     if (header.version == kVersion) throw;
     throw PeerError(participant, "speaks protocol version " + std::to_string(header.version) + ", in which the " +
                                      to_string(header.type) + " message the coupler sends cannot be written (" +
-                                     e.what() + "): build it against this coupler's participant library");
+                                     e.what() +
+                                     "): build it against this coupler's participant library (C++) or "
+                                     "run it with this coupler's cosim_participant (Python)");
   }
   try {
     socket_.send(zmq::buffer(participant), zmq::send_flags::sndmore);

@@ -11,6 +11,10 @@
 namespace cosim::study {
 namespace {
 
+// Relative tolerances below this are round-off's (a few thousand times the double's
+// epsilon, accumulated over a solve's sums): --refine shrinks none beyond it.
+constexpr double kTightestTolerance = 1e-12;
+
 // The shortest text that reads back as the same double: 0.005 / 4 is written 0.00125.
 YAML::Node number(double value) { return YAML::Node(fmt::format("{}", value)); }
 
@@ -103,18 +107,24 @@ std::vector<Varied> scaled(const scene::Scene& scene, const std::vector<double>&
         {"participants.fluid.options.dt_initial", each(end, scene.coupling.window / first.as<double>()), argument});
   // Field frames at the same times on every level, as far as whole windows allow, so that a
   // field measure reads the same instants and each level writes as many frames.
-  if (at(at(document, "output"), "fields_every").IsScalar() && scene.output.fields_every > 0)
-    out.push_back({"output.fields_every", of_ratio([&](double r) {
-                     return YAML::Node(std::max(1L, std::lround(scene.output.fields_every * r)));
-                   }),
-                   argument});
+  const auto frames_every = [&](double r) { return std::max(1L, std::lround(scene.output.fields_every * r)); };
+  const bool frames = at(at(document, "output"), "fields_every").IsScalar() && scene.output.fields_every > 0;
+  if (frames)
+    out.push_back({"output.fields_every", of_ratio([&](double r) { return YAML::Node(frames_every(r)); }), argument});
   if (const YAML::Node grid = at(at(fluid, "grid"), "cells"); grid.IsSequence())
     out.push_back(
         {"participants.fluid.options.grid.cells", of_ratio([&](double r) { return cells_at(grid, r); }), argument});
-  // The tracker's mesh refines as the grid does, and its particles per cell stay as written:
-  // `per_cell` as it is, `total` and (for gas by region) each simulator's `weight` by how
-  // many times the cells grew, so that the statistical error falls with the cells.
+  // The tracker's mesh refines as the grid does, and its particles per cell stay as written
+  // (`per_cell` as it is, `total` times the cells' growth g) with each simulator standing for
+  // 1/g as many molecules (`weight`), so that the gas is the same and its statistical error
+  // falls with the cells.
   const YAML::Node tracker = at(at(at(document, "participants"), "tracker"), "options");
+  // Particles are written with the fields: every the same number of field frames.
+  if (const YAML::Node every = at(at(tracker, "particle_output"), "every"); frames && every.IsScalar())
+    out.push_back({"participants.tracker.options.particle_output.every", of_ratio([&](double r) {
+                     return YAML::Node(every.as<long>() / scene.output.fields_every * frames_every(r));
+                   }),
+                   argument});
   const YAML::Node mesh = at(tracker, "mesh");
   std::vector<double> grown;  // the tracker's cells over the scene's, per level
   if (const YAML::Node box = at(mesh, "cells"); box.IsSequence()) {
@@ -132,7 +142,8 @@ std::vector<Varied> scaled(const scene::Scene& scene, const std::vector<double>&
     Varied v{"participants.tracker.options.particles.total", {}, argument};
     for (double g : grown) v.values.push_back(YAML::Node(std::lround(total.as<double>() * g)));
     out.push_back(std::move(v));
-  } else if (!grown.empty() && at(particles, "regions").IsSequence()) {
+  }
+  if (!grown.empty() && particles.IsMap()) {
     const YAML::Node weight = at(particles, "weight");
     Varied v{"participants.tracker.options.particles.weight", {}, argument};
     for (double g : grown) v.values.push_back(number((weight.IsScalar() ? weight.as<double>() : 1.0) / g));
@@ -140,16 +151,21 @@ std::vector<Varied> scaled(const scene::Scene& scene, const std::vector<double>&
   }
   // A tolerance the scene sets shrinks on finer levels as a second-order discretization error
   // does (s^-2), so that what the iterations leave stays the same small part of each level's
-  // error; a coarser level (--target's) keeps it, never looser than the scene asks.
+  // error, down to kTightestTolerance; a coarser level (--target's) keeps it, never looser
+  // than the scene asks. The coupling's counts only where the scheme iterates.
   const std::pair<const char*, YAML::Node> tolerances[] = {
-      {"coupling.tolerance", at(at(document, "coupling"), "tolerance")},
+      {"coupling.tolerance",
+       scene::is_implicit(scene.coupling.scheme) ? at(at(document, "coupling"), "tolerance") : YAML::Node()},
       {"participants.rigidbody.options.tolerance",
        at(at(at(at(document, "participants"), "rigidbody"), "options"), "tolerance")},
       {"participants.fluid.options.bodies.tolerance", at(at(fluid, "bodies"), "tolerance")}};
   for (const auto& [key, tolerance] : tolerances)
     if (tolerance.IsScalar())
-      out.push_back({key,
-                     of_ratio([&](double r) { return number(tolerance.as<double>() / std::pow(std::max(r, 1.0), 2)); }),
+      out.push_back({key, of_ratio([&](double r) {
+                       const double written = tolerance.as<double>();
+                       return number(
+                           std::max(std::min(written, kTightestTolerance), written / std::pow(std::max(r, 1.0), 2)));
+                     }),
                      argument});
   return out;
 }

@@ -36,8 +36,10 @@ Setting parse_set(const std::string& argument);
 // dt_initial shrunk with the window (so that a window stays the same whole number of
 // steps), participants.fluid.options.grid.cells (when the scene sets it) multiplied by the
 // windows' ratio and rounded to whole cells, the tracker's box or Voronoi mesh refined alike
-// with its particles per cell kept, and each tolerance the scene writes divided by the
-// ratio's square where the ratio is above 1. The window comes first, so the refinement ratio is the windows'.
+// with its particles per cell kept and the gas the same (each simulator's weight divided by
+// the cells' growth), and the coupling's (implicit schemes), the rigid bodies' and the fluid
+// forcing's tolerance, where the scene writes them, divided by the ratio's square where the
+// ratio is above 1, down to 1e-12. The window comes first, so the refinement ratio is the windows'.
 // `argument` names what asked for it, for messages.
 std::vector<Varied> scaled(const scene::Scene& scene, const std::vector<double>& scales, const std::string& argument);
 

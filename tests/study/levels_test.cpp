@@ -123,7 +123,8 @@ const Varied* find_key(const std::vector<Varied>& keys, const std::string& key) 
   return it == keys.end() ? nullptr : &*it;
 }
 
-// The tracker's cells refine as a fluid grid's do, and its particles grow with them.
+// The tracker's cells refine as a fluid grid's do, and its particles grow with them, each
+// standing for fewer molecules, so that the gas stays the same.
 TEST(Refine, TheTrackersCellsAndParticlesGrowTogether) {
   const std::vector<Varied> keys = refine(scene::load_scene_from_string(kGas), 2, 3);
   const Varied* cells = find_key(keys, "participants.tracker.options.mesh.cells");
@@ -133,7 +134,19 @@ TEST(Refine, TheTrackersCellsAndParticlesGrowTogether) {
   ASSERT_NE(total, nullptr);
   EXPECT_EQ(text(total->values[1]), "10000");
   EXPECT_EQ(text(total->values[2]), "20000");
-  EXPECT_EQ(find_key(keys, "participants.tracker.options.particles.weight"), nullptr);
+  const Varied* fewer = find_key(keys, "participants.tracker.options.particles.weight");
+  ASSERT_NE(fewer, nullptr);
+  EXPECT_EQ(text(fewer->values[2]), "250000");
+
+  // Particles written every other field frame stay so.
+  std::string written = kGas;
+  written.replace(written.find("domain:"), 0, "output: {fields_every: 5}\n");
+  written.replace(written.find("      particles:"), 0, "      particle_output: {every: 10}\n");
+  const auto frames = refine(scene::load_scene_from_string(written), 2, 3);
+  const Varied* every = find_key(frames, "participants.tracker.options.particle_output.every");
+  ASSERT_NE(every, nullptr);
+  EXPECT_EQ(text(every->values[2]), "40");
+  EXPECT_EQ(text(find_key(frames, "output.fields_every")->values[2]), "20");
 
   // Gas by region: as many real molecules, each simulator standing for fewer of them.
   std::string regions = kGas;
@@ -144,7 +157,8 @@ TEST(Refine, TheTrackersCellsAndParticlesGrowTogether) {
   EXPECT_EQ(text(weight->values[1]), "500000");
   EXPECT_EQ(find_key(by_region, "participants.tracker.options.particles.total"), nullptr);
 
-  // Particles per cell are kept as they are; a Voronoi mesh's seeds grow as the cube.
+  // Particles per cell are kept as they are; a Voronoi mesh's seeds grow as the cube, and so
+  // do its particles.
   std::string voronoi = kGas;
   voronoi.replace(voronoi.find("{type: box, cells: [1, 50, 1], periodic: [true, false, true]}"), 61,
                   "{type: voronoi, points: 1000}");
@@ -154,7 +168,9 @@ TEST(Refine, TheTrackersCellsAndParticlesGrowTogether) {
   ASSERT_NE(points, nullptr);
   EXPECT_EQ(text(points->values[1]), "8000");
   EXPECT_EQ(find_key(seeded, "participants.tracker.options.particles.per_cell"), nullptr);
-  EXPECT_EQ(find_key(seeded, "participants.tracker.options.particles.weight"), nullptr);
+  const Varied* seeded_weight = find_key(seeded, "participants.tracker.options.particles.weight");
+  ASSERT_NE(seeded_weight, nullptr);
+  EXPECT_EQ(text(seeded_weight->values[1]), "125000");
 }
 
 // A tolerance the scene writes shrinks as the square of the scale; one it leaves to its
@@ -176,9 +192,14 @@ TEST(Refine, WrittenTolerancesShrinkAsTheSquareOfTheScale) {
   YAML::Emitter out;
   out << variant(doc, keys, 2);
   EXPECT_DOUBLE_EQ(scene::load_scene_from_string(out.c_str()).coupling.tolerance, 6.25e-6);
-  // Levels coarser than the scene (--target's) keep what it asks.
-  const auto coarse = scaled(scene::load_scene_from_string(yaml), {0.5, 1}, "--target x=1%");
+  // Levels coarser than the scene (--target's) keep what it asks, and none goes below
+  // round-off's.
+  const auto coarse = scaled(scene::load_scene_from_string(yaml), {0.5, 1, 1e5}, "--target x=1%");
   EXPECT_EQ(text(find_key(coarse, "coupling.tolerance")->values[0]), "0.0001");
+  EXPECT_EQ(text(find_key(coarse, "coupling.tolerance")->values[2]), "1e-12");
+  // An explicit scheme does not iterate: its coupling tolerance is read by nothing.
+  yaml.replace(yaml.find("tolerance: 1.0e-4}"), 18, "tolerance: 1.0e-4, scheme: serial-explicit}");
+  EXPECT_EQ(find_key(refine(scene::load_scene_from_string(yaml), 2, 2), "coupling.tolerance"), nullptr);
 }
 
 // A scale that is not a whole ratio keeps time.end a whole number of windows and each
