@@ -5,7 +5,7 @@
 // Next to a no-slip wall they do not: on the first row of tangential faces the difference
 // is a force of 2 theta (nu dt / h^2) grad phi, which slides the fluid along the wall by a
 // few per cent of the wall-normal flow wherever the pressure changes quickly from step to
-// step, as under a body closing on a wall (fluid/README.md "Sphere closing on a wall").
+// step, as under a body closing on a wall (bench/fluid_accuracy/README.md "Sphere closing on a wall").
 // Here phi solves the step's Schur complement instead,
 //   dt div (I - theta dt L)^{-1} grad phi = div u*,
 // and u = u* - dt (I - theta dt L)^{-1} grad phi, p += rho phi: the implicit step with the

@@ -121,7 +121,7 @@ int NavierStokes::project_standard(double dt, const ImposedFaces* imposed, const
 // The forcing acted on the step's explicit estimate; the implicit viscous solve and the
 // projection then moved the fluid at the bodies' surfaces again (at low Reynolds number by
 // several per cent of the body's speed where it moves a good part of a cell per step:
-// fluid/README.md "Time step of a moving body"). The forcing corrects that through the
+// bench/fluid_accuracy/README.md "Time step of a moving body"). The forcing corrects that through the
 // step's response to further impulses, which is linear in them: the step it ends with is
 // the one its corrected forces would have given.
 int NavierStokes::enforce_no_slip(double dt, BodyForcing& forcing) {

@@ -81,10 +81,10 @@ void ViscousSolver::create() {
     COSIM_PETSC(KSPCreate(grid.comm(), &ksp_[c]));
     COSIM_PETSC(KSPSetOptionsPrefix(ksp_[c], "viscous_"));
     // SOR needs no storage beyond the matrix, where ILU(0), PETSc's default, keeps a copy:
-    // 0.26 KB per cell less at the same speed and iterations (fluid/README.md, Throughput).
+    // 0.26 KB per cell less at the same speed and iterations (bench/fluid_throughput/README.md).
     // Without a matrix, Jacobi, which needs more iterations; GMRES restarted after 4 keeps 6
     // vectors where 30 keeps up to 32, and was as fast on the cavity and on Hasimoto's
-    // array at nu dt / h^2 = 1 (fluid/README.md, Throughput). BiCGStab, with fewer still,
+    // array at nu dt / h^2 = 1 (bench/fluid_throughput/README.md). BiCGStab, with fewer still,
     // broke down on the staircase's identity rows.
     COSIM_PETSC(KSPSetType(ksp_[c], KSPGMRES));
     if (weights_) COSIM_PETSC(KSPGMRESSetRestart(ksp_[c], 4));

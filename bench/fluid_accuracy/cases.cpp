@@ -164,7 +164,7 @@ double mean_between(const std::vector<double>& x, const std::vector<double>& y, 
 
 // Steady flow through the periodic array in the unit box on n^3 cells. The incremental
 // scheme's slow splitting mode decays per step, and far more slowly at large viscous
-// numbers (fluid/README.md, "Accuracy study"), hence steps of nu dt / h^2 = 1 by default;
+// numbers (bench/fluid_accuracy/README.md, "Accuracy study"), hence steps of nu dt / h^2 = 1 by default;
 // the steady state does not depend on them (the immersed boundary's Hasimoto drag by
 // 0.003 % from nu dt / h^2 = 0.08 to 1).
 class StokesArray {

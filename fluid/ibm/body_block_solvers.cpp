@@ -45,7 +45,7 @@ BodyBlockSolvers::Block BodyBlockSolvers::factored(std::size_t body, PetscInt of
   // Solved exactly: a body alone then converges in one iteration whatever its size, where
   // incomplete Cholesky (`-ibm_forcing_sub_pc_type icc`) took the limit of 50 for one
   // sphere of d/h 16, and 23 against 16 per step in a cloud of 1,000 spheres of d/h 6 at
-  // three quarters of the cost (bench/particulate/README.md, fluid/README.md "Throughput").
+  // three quarters of the cost (bench/particulate/README.md, bench/fluid_throughput/README.md).
   COSIM_PETSC(KSPSetType(block.ksp, KSPPREONLY));
   PC pc = nullptr;
   COSIM_PETSC(KSPGetPC(block.ksp, &pc));

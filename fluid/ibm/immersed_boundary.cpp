@@ -58,7 +58,7 @@ bool near(const Grid& grid, const Box& cells, const geometry::Aabb& box, double 
 }
 
 // The retraction's law was calibrated at h kappa = 1/3 and 1/2 (spheres of twelve and eight
-// cells across) and holds at 2/3 (six: the Hasimoto error +0.3 %, fluid/README.md); it is
+// cells across) and holds at 2/3 (six: the Hasimoto error +0.3 %, bench/fluid_accuracy/README.md); it is
 // held at a sphere of four cells across, beyond which (small or sharp features) the markers
 // would meet the opposite side's kernels.
 constexpr double kLargestCurvature = 1.0;  // times 1 / h

@@ -26,7 +26,7 @@
 // t_n + theta dt, X_l - (1 - theta) dt U_l: the force acts over the step, and the step's
 // viscous terms are centred there, so the fluid a step displaces is the fluid the body
 // swept during it rather than the fluid at its end. B = I S is then unsymmetric and solved
-// by GMRES; at theta = 1 both places are the end (fluid/README.md "Time step of a moving
+// by GMRES; at theta = 1 both places are the end (bench/fluid_accuracy/README.md "Time step of a moving
 // body" measures it).
 //
 // Load on a body: the reaction to the forcing plus the rate of change of the momentum of the

@@ -71,7 +71,7 @@ std::vector<world::BodyDesc> walls(const scene::Scene& scene, const scene::Reade
 // follows Brenner's drag of a sphere closing on a wall to a fraction of a cell; the range
 // is where the leading-order correction added to its drag comes nearest Brenner's at every
 // gap, calibrated at d/h 6 and Re 0.1 and 0.5, checked at d/h 8 (fluid_accuracy
-// --wall-approach; fluid/README.md "Sphere closing on a wall"). The staircase's surfaces
+// --wall-approach; bench/fluid_accuracy/README.md "Sphere closing on a wall"). The staircase's surfaces
 // sit on cell faces, so it loses the whole film below a cell (not measured).
 constexpr double kResolvedFilmCellsIbm = 0.4, kResolvedFilmCellsStaircase = 1.0;
 

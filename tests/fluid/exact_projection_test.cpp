@@ -62,7 +62,7 @@ TEST(ExactProjection, OneLongStepIsTheSteadyStokesFlow) {
 // step, against steps sixteen times smaller. With the exact pressure and backward Euler
 // the large step keeps the drag; the standard update and Crank-Nicolson lose a good part
 // of it, as they lag the film's pressure and viscous stress a step behind the sphere
-// (fluid/README.md "Sphere closing on a wall").
+// (bench/fluid_accuracy/README.md "Sphere closing on a wall").
 TEST(ExactProjection, KeepsTheDragOfASphereClosingOnAWallAtLargeSteps) {
   IbmOptions ibm;
   ibm.corrections = 20;

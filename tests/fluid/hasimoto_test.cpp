@@ -20,7 +20,7 @@ using bench::FluidRun;
 const Eigen::Vector3d kCentre(0.5, 0.5, 0.5), kGenericCentre(0.511, 0.523, 0.537);
 
 // At most `max_steps` steps: the staircase settles within them, the immersed boundary comes
-// within about 0.3 % of its steady error (fluid/README.md, "Accuracy study").
+// within about 0.3 % of its steady error (bench/fluid_accuracy/README.md, "Accuracy study").
 std::vector<double> errors_at(const BodyOptions& method, const Eigen::Vector3d& centre, const std::vector<int>& levels,
                               int max_steps = 1000) {
   std::vector<double> errors;

@@ -1,7 +1,7 @@
 // ten Cate's tank seen from its settling sphere at E1's Reynolds number 1.5: the sphere held
 // in a square duct 20/3 diameters wide whose walls slide past, against OpenFOAM's
 // body-fitted solution of the same steady problem (bench/fluid_accuracy/openfoam_duct.py,
-// converged over three mesh levels to F / (3 pi mu U d) = 1.425; fluid/README.md "ten
+// converged over three mesh levels to F / (3 pi mu U d) = 1.425; bench/fluid_accuracy/README.md "ten
 // Cate's tank seen from the sphere"). The case is in bench/fluid_accuracy/cases.hpp.
 #include <gtest/gtest.h>
 
