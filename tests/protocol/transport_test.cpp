@@ -27,6 +27,15 @@ Message make(Type type, std::vector<Array> arrays = {}) {
   return m;
 }
 
+// A bare DEALER socket under `name`, as a participant of any build would connect.
+zmq::socket_t raw_peer(zmq::context_t& context, const char* name, const std::string& endpoint) {
+  zmq::socket_t peer(context, zmq::socket_type::dealer);
+  peer.set(zmq::sockopt::routing_id, name);
+  peer.set(zmq::sockopt::linger, 0);
+  peer.connect(endpoint);
+  return peer;
+}
+
 class Transport : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
@@ -192,10 +201,7 @@ TEST_P(Transport, ClosedCouplerEndsTheWaitNamingIt) {
 TEST_P(Transport, IdentityMustMatchHeader) {
   Server server(bind_address());
   zmq::context_t context;
-  zmq::socket_t impostor(context, zmq::socket_type::dealer);
-  impostor.set(zmq::sockopt::routing_id, "fluid");
-  impostor.set(zmq::sockopt::linger, 0);
-  impostor.connect(server.endpoint());
+  zmq::socket_t impostor = raw_peer(context, "fluid", server.endpoint());
   Message m = make(Type::Ready);
   m.header.participant = "rigid";
   zmq::send_multipart(impostor, encode(m));
@@ -211,10 +217,7 @@ TEST_P(Transport, IdentityMustMatchHeader) {
 TEST_P(Transport, UndecodableMessageNamesItsSender) {
   Server server(bind_address());
   zmq::context_t context;
-  zmq::socket_t peer(context, zmq::socket_type::dealer);
-  peer.set(zmq::sockopt::routing_id, "fluid");
-  peer.set(zmq::sockopt::linger, 0);
-  peer.connect(server.endpoint());
+  zmq::socket_t peer = raw_peer(context, "fluid", server.endpoint());
   peer.send(zmq::str_buffer("GET / HTTP/1.0"));
   try {
     server.receive(kWait);
@@ -228,10 +231,7 @@ TEST_P(Transport, UndecodableMessageNamesItsSender) {
 TEST_P(Transport, AnEarlierVersionsParticipantIsAnsweredInItsVersion) {
   Server server(bind_address());
   zmq::context_t context;
-  zmq::socket_t peer(context, zmq::socket_type::dealer);
-  peer.set(zmq::sockopt::routing_id, "rigid");
-  peer.set(zmq::sockopt::linger, 0);
-  peer.connect(server.endpoint());
+  zmq::socket_t peer = raw_peer(context, "rigid", server.endpoint());
   Message hello = make(Type::Hello);
   hello.header.participant = "rigid";
   hello.header.version = 3;  // before Responses arrays

@@ -123,39 +123,36 @@ const Varied* find_key(const std::vector<Varied>& keys, const std::string& key) 
   return it == keys.end() ? nullptr : &*it;
 }
 
+// The value `key` takes on `level` (0-based) as text, or "not varied".
+std::string value_at(const std::vector<Varied>& keys, const std::string& key, std::size_t level) {
+  const Varied* v = find_key(keys, key);
+  return v == nullptr ? "not varied" : text(v->values.at(level));
+}
+
 // The tracker's cells refine as a fluid grid's do, and its particles grow with them, each
 // standing for fewer molecules, so that the gas stays the same.
 TEST(Refine, TheTrackersCellsAndParticlesGrowTogether) {
   const std::vector<Varied> keys = refine(scene::load_scene_from_string(kGas), 2, 3);
-  const Varied* cells = find_key(keys, "participants.tracker.options.mesh.cells");
-  ASSERT_NE(cells, nullptr);
-  EXPECT_EQ(text(cells->values[2]), "[1, 200, 1]");  // the periodic single layers stay one cell
-  const Varied* total = find_key(keys, "participants.tracker.options.particles.total");
-  ASSERT_NE(total, nullptr);
-  EXPECT_EQ(text(total->values[1]), "10000");
-  EXPECT_EQ(text(total->values[2]), "20000");
-  const Varied* fewer = find_key(keys, "participants.tracker.options.particles.weight");
-  ASSERT_NE(fewer, nullptr);
-  EXPECT_EQ(text(fewer->values[2]), "250000");
+  EXPECT_EQ(value_at(keys, "participants.tracker.options.mesh.cells", 2),
+            "[1, 200, 1]");  // the periodic single layers stay one cell
+  EXPECT_EQ(value_at(keys, "participants.tracker.options.particles.total", 1), "10000");
+  EXPECT_EQ(value_at(keys, "participants.tracker.options.particles.total", 2), "20000");
+  EXPECT_EQ(value_at(keys, "participants.tracker.options.particles.weight", 2), "250000");
 
   // Particles written every other field frame stay so.
   std::string written = kGas;
   written.replace(written.find("domain:"), 0, "output: {fields_every: 5}\n");
   written.replace(written.find("      particles:"), 0, "      particle_output: {every: 10}\n");
   const auto frames = refine(scene::load_scene_from_string(written), 2, 3);
-  const Varied* every = find_key(frames, "participants.tracker.options.particle_output.every");
-  ASSERT_NE(every, nullptr);
-  EXPECT_EQ(text(every->values[2]), "40");
-  EXPECT_EQ(text(find_key(frames, "output.fields_every")->values[2]), "20");
+  EXPECT_EQ(value_at(frames, "participants.tracker.options.particle_output.every", 2), "40");
+  EXPECT_EQ(value_at(frames, "output.fields_every", 2), "20");
 
   // Gas by region: as many real molecules, each simulator standing for fewer of them.
   std::string regions = kGas;
   regions.replace(regions.find("total: 5000"), 11, "regions: [{number_density: 1.0e20}]");
   const auto by_region = refine(scene::load_scene_from_string(regions), 2, 2);
-  const Varied* weight = find_key(by_region, "participants.tracker.options.particles.weight");
-  ASSERT_NE(weight, nullptr);
-  EXPECT_EQ(text(weight->values[1]), "500000");
-  EXPECT_EQ(find_key(by_region, "participants.tracker.options.particles.total"), nullptr);
+  EXPECT_EQ(value_at(by_region, "participants.tracker.options.particles.weight", 1), "500000");
+  EXPECT_EQ(value_at(by_region, "participants.tracker.options.particles.total", 0), "not varied");
 
   // Particles per cell are kept as they are; a Voronoi mesh's seeds grow as the cube, and so
   // do its particles.
@@ -164,13 +161,9 @@ TEST(Refine, TheTrackersCellsAndParticlesGrowTogether) {
                   "{type: voronoi, points: 1000}");
   voronoi.replace(voronoi.find("total: 5000"), 11, "per_cell: 20");
   const auto seeded = refine(scene::load_scene_from_string(voronoi), 2, 2);
-  const Varied* points = find_key(seeded, "participants.tracker.options.mesh.points");
-  ASSERT_NE(points, nullptr);
-  EXPECT_EQ(text(points->values[1]), "8000");
-  EXPECT_EQ(find_key(seeded, "participants.tracker.options.particles.per_cell"), nullptr);
-  const Varied* seeded_weight = find_key(seeded, "participants.tracker.options.particles.weight");
-  ASSERT_NE(seeded_weight, nullptr);
-  EXPECT_EQ(text(seeded_weight->values[1]), "125000");
+  EXPECT_EQ(value_at(seeded, "participants.tracker.options.mesh.points", 1), "8000");
+  EXPECT_EQ(value_at(seeded, "participants.tracker.options.particles.per_cell", 0), "not varied");
+  EXPECT_EQ(value_at(seeded, "participants.tracker.options.particles.weight", 1), "125000");
 }
 
 // A tolerance the scene writes shrinks as the square of the scale; one it leaves to its
@@ -180,14 +173,10 @@ TEST(Refine, WrittenTolerancesShrinkAsTheSquareOfTheScale) {
   yaml.replace(yaml.find("coupling: {window: 0.01}"), 24, "coupling: {window: 0.01, tolerance: 1.0e-4}");
   yaml.replace(yaml.find("options: {grid"), 14, "options: {bodies: {tolerance: 1.0e-5}, grid");
   const std::vector<Varied> keys = refine(scene::load_scene_from_string(yaml), 2, 3);
-  const Varied* coupling = find_key(keys, "coupling.tolerance");
-  ASSERT_NE(coupling, nullptr);
-  EXPECT_EQ(text(coupling->values[0]), "0.0001");
-  EXPECT_EQ(text(coupling->values[2]), "6.25e-06");
-  const Varied* forcing = find_key(keys, "participants.fluid.options.bodies.tolerance");
-  ASSERT_NE(forcing, nullptr);
-  EXPECT_EQ(text(forcing->values[1]), "2.5e-06");
-  EXPECT_EQ(find_key(keys, "participants.rigidbody.options.tolerance"), nullptr);
+  EXPECT_EQ(value_at(keys, "coupling.tolerance", 0), "0.0001");
+  EXPECT_EQ(value_at(keys, "coupling.tolerance", 2), "6.25e-06");
+  EXPECT_EQ(value_at(keys, "participants.fluid.options.bodies.tolerance", 1), "2.5e-06");
+  EXPECT_EQ(value_at(keys, "participants.rigidbody.options.tolerance", 0), "not varied");
   const YAML::Node doc = YAML::Load(yaml);
   YAML::Emitter out;
   out << variant(doc, keys, 2);
@@ -195,8 +184,8 @@ TEST(Refine, WrittenTolerancesShrinkAsTheSquareOfTheScale) {
   // Levels coarser than the scene (--target's) keep what it asks, and none goes below
   // round-off's.
   const auto coarse = scaled(scene::load_scene_from_string(yaml), {0.5, 1, 1e5}, "--target x=1%");
-  EXPECT_EQ(text(find_key(coarse, "coupling.tolerance")->values[0]), "0.0001");
-  EXPECT_EQ(text(find_key(coarse, "coupling.tolerance")->values[2]), "1e-12");
+  EXPECT_EQ(value_at(coarse, "coupling.tolerance", 0), "0.0001");
+  EXPECT_EQ(value_at(coarse, "coupling.tolerance", 2), "1e-12");
   // An explicit scheme does not iterate: its coupling tolerance is read by nothing.
   yaml.replace(yaml.find("tolerance: 1.0e-4}"), 18, "tolerance: 1.0e-4, scheme: serial-explicit}");
   EXPECT_EQ(find_key(refine(scene::load_scene_from_string(yaml), 2, 2), "coupling.tolerance"), nullptr);
