@@ -20,6 +20,7 @@ fluid force.
 
     bench/beds/beds.py run.h5 [--bed --terminal 0.226 --exponent 2.4 --since 1.0 --lone lone.h5
         --series bed.csv --plot bed.png] [--swap] [--settle 0.2 0.6]
+        [--record bench/beds/results.csv fluidized-bed.yaml]
 
 Reference: docs/references.md (Aguilar et al.; Richardson-Zaki, m = 2.4 at Re_p 500);
 the wall correction is Richardson & Zaki's (Trans. Inst. Chem. Eng. 32, 1954).
@@ -28,6 +29,8 @@ the wall correction is Richardson & Zaki's (Trans. Inst. Chem. Eng. 32, 1954).
 import argparse
 import math
 import os
+import sys
+from pathlib import Path
 
 os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")  # a run still being written
 
@@ -35,6 +38,8 @@ import h5py
 import numpy as np
 import yaml
 
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))  # bench/results_table.py
+from results_table import add_option, overlap_text, record, run_figures
 from scene_bodies import bodies_of
 
 
@@ -98,6 +103,7 @@ def main():
     parser.add_argument("--settle", type=float, nargs=2, metavar=("T0", "T1"),
                         help="a settling cloud: its mean fall speed over [T0, T1], how it ends on the floor, its "
                         "fastest sphere and largest fluid force")
+    add_option(parser)
     args = parser.parse_args()
 
     with h5py.File(args.run, "r") as f:
@@ -108,6 +114,7 @@ def main():
         x = np.stack([f[f"bodies/{b['name']}/position"][:] for b in spheres], axis=1)  # rows, bodies, 3
         v = np.stack([f[f"bodies/{b['name']}/velocity"][:] for b in spheres], axis=1)
         force = np.stack([f[f"bodies/{b['name']}/force"][:] for b in spheres], axis=1)
+        cost = run_figures(f)
     r = np.array([b["shape"]["radius"] for b in spheres])
     lo, hi = np.array(scene["domain"]["min"]), np.array(scene["domain"]["max"])
     walls = scene["participants"]["rigidbody"].get("options", {}).get("walls", [])
@@ -129,6 +136,12 @@ def main():
     print(f"{len(r)} spheres, {len(t)} rows to t = {t[-1]:.3f} s: deepest overlap sphere-sphere "
           f"{deepest_pair:.2%} of the radius, sphere-wall {deepest_wall:.2%}"
           + (f", sphere-container {deepest_side:.2%}" if side is not None else "") + " (negative: never touched)")
+    speed = np.linalg.norm(v, axis=2)
+    figures = [("the fastest sphere", f"{speed.max():.3f} m/s at t = {t[speed.max(axis=1).argmax()]:g} s", "")]
+    overlaps = [("deepest overlap sphere-sphere", overlap_text(deepest_pair), ""),
+                ("deepest overlap sphere-wall", overlap_text(deepest_wall), "")]
+    if side is not None:
+        overlaps.append(("deepest overlap sphere-container", overlap_text(deepest_side), ""))
 
     if args.swap:
         distance = np.linalg.norm(x[:, 0] - x[:, 1], axis=1) / (r[0] + r[1])
@@ -137,10 +150,11 @@ def main():
         k = distance.argmin()
         print(f"{spheres[0]['name']} and {spheres[1]['name']}: closest centre distance {distance[k]:.3f} d at "
               f"t = {t[k]:.3f} s; order swapped at t = {', '.join(swaps) or 'never'} s")
+        figures += [("the first two spheres' closest approach", f"{distance[k]:.3f} d at t = {t[k]:.3f} s", ""),
+                    ("the first two spheres' order swaps", f"at t = {', '.join(swaps)} s" if swaps else "never", "")]
 
     if args.settle:
         window = (t >= args.settle[0] - 1e-9) & (t <= args.settle[1] + 1e-9)
-        speed = np.linalg.norm(v, axis=2)
         on_floor = x[-1, :, 2] - lo[2] - r < 0.1 * r  # the centre within a tenth of a radius of resting on it
         rho_f = scene["participants"]["fluid"]["options"]["density"]
         rho_p = np.array([b["material"]["density"] for b in spheres])
@@ -150,6 +164,13 @@ def main():
               f"z = {x[-1, :, 2].max() - lo[2]:.4f} m, the fastest sphere at {speed[-1].max():.4f} m/s; the fastest "
               f"ever {speed.max():.4f} m/s, the largest fluid force {(np.linalg.norm(force, axis=2) / weight).max():.2f} "
               f"times a sphere's weight in the fluid")
+        figures += [
+            (f"the mean fall speed over {args.settle[0]:g}-{args.settle[1]:g} s", f"{-v[window, :, 2].mean():.4f} m/s",
+             ""),
+            ("spheres on the floor", f"{on_floor.sum()} of {len(r)} at t = {t[-1]:g} s, the highest centre at "
+             f"z = {x[-1, :, 2].max() - lo[2]:.3f} m, the fastest then at {speed[-1].max():.3f} m/s", ""),
+            ("the largest fluid force", f"{(np.linalg.norm(force, axis=2) / weight).max():.2f} times a sphere's weight "
+             "in the fluid", "")]
 
     if args.bed:
         since = t[-1] / 2 if args.since is None else args.since
@@ -170,6 +191,13 @@ def main():
               f"u_t = {args.terminal} m/s, m = {args.exponent}: alpha {rz:.3f} ({alpha.mean() / rz - 1:+.1%}); "
               f"with the wall correction for d/D = {d_over_d:.3f}: alpha {rz_wall:.3f} "
               f"({alpha.mean() / rz_wall - 1:+.1%})")
+        figures += [
+            (f"bed height h_b over t >= {since:.2f} s", f"{height.mean() * 1e3:.1f} mm ({height.min() * 1e3:.1f} to "
+             f"{height.max() * 1e3:.1f})", ""),
+            (f"solid fraction alpha over t >= {since:.2f} s", f"{alpha.mean():.4f}" + (
+                f" ± {batch_error(alpha):.4f} (standard error)" if math.isfinite(batch_error(alpha)) else ""),
+             f"Richardson–Zaki {rz:.3f} ({alpha.mean() / rz - 1:+.1%}); with their wall correction {rz_wall:.3f} "
+             f"({alpha.mean() / rz_wall - 1:+.1%})".replace("-", "−").replace("%", " %"))]
         if args.series:
             np.savetxt(args.series, np.column_stack([t, heights, alphas]), delimiter=",", fmt="%.6g",
                        header="t [s],h_b [m],alpha", comments="")
@@ -194,6 +222,12 @@ def main():
             print(f"a lone bead settles at u_i = {u_i:.4f} m/s ({start:.2f} to {end:.2f} s in {args.lone}): "
                   f"Richardson-Zaki alpha {rz_lone:.3f} ({alpha.mean() / rz_lone - 1:+.1%}); the bed's alpha "
                   f"implies n = {math.log(u0 / u_i) / math.log(1 - alpha.mean()):.2f} against m = {args.exponent}")
+            figures += [
+                ("a lone bead's settling velocity u_i in the same column", f"{u_i:.3f} m/s",
+                 f"Richardson–Zaki with it: alpha {rz_lone:.3f}"),
+                ("the exponent n the bed's alpha implies", f"{math.log(u0 / u_i) / math.log(1 - alpha.mean()):.2f}",
+                 f"m = {args.exponent}")]
+    record(args.record, args.run, figures + overlaps + cost)
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@ a velocity over every few windows shows there first when the rows are windows,
 `output.every: 1`); and what the run took (its wall time and seconds per window).
 
     bench/beds/sticks.py run.h5 [--settle 1 3] [--overlap-from T] [--plot cloud.png]
+        [--record bench/beds/results.csv sedimenting-sticks.yaml]
 
 A capsule is the segment of `height` along its body z axis, centred on its position, grown
 by `radius`; two overlap by 2 radius - the distance of their segments.
@@ -17,6 +18,8 @@ by `radius`; two overlap by 2 radius - the distance of their segments.
 import argparse
 import math
 import os
+import sys
+from pathlib import Path
 
 os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")  # a run still being written
 
@@ -24,6 +27,8 @@ import h5py
 import numpy as np
 import yaml
 
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))  # bench/results_table.py
+from results_table import add_option, overlap_text, record, run_figures
 from scene_bodies import bodies_of
 from segments import segment_distances
 
@@ -63,6 +68,7 @@ def main():
     parser.add_argument("--overlap-from", type=float, default=-math.inf, metavar="T",
                         help="the deepest overlaps over the rows from time T on (a run resumed from a checkpoint)")
     parser.add_argument("--plot", help="the cloud's mean height and fall speed over time into this PNG")
+    add_option(parser)
     args = parser.parse_args()
 
     with h5py.File(args.run, "r") as f:
@@ -79,6 +85,7 @@ def main():
         status = f["run"].attrs.get("status", b"unknown")
         status = status.decode() if isinstance(status, bytes) else str(status)
         run_seconds = float(f["run"].attrs.get("wall_seconds", math.nan))
+        cost = run_figures(f)
     shapes = {(b["shape"]["radius"], b["shape"]["height"]) for b in sticks}
     if len(shapes) != 1:
         raise SystemExit("sticks.py: the capsules differ in size; one size is read")
@@ -109,19 +116,37 @@ def main():
           f"deepest overlap capsule-capsule {stick_stick:.2%} of the radius, "
           f"capsule-sphere {stick_sphere:.2%}, capsule-wall {stick_wall:.2%} (negative: never touched)")
 
+    since = f" over the rows from t = {t[rows[0]]:g} s" if rows[0] else ""
+    overlaps = [(f"deepest overlap capsule-{other}{since}", overlap_text(depth), "")
+                for other, depth in (("capsule", stick_stick), ("sphere", stick_sphere), ("wall", stick_wall))]
+
     on_floor = np.minimum(ends_a[-1, :, 2], ends_b[-1, :, 2]) - lo[2] < 1.1 * radius
+    speed = np.linalg.norm(v, axis=2)
     print(f"at t = {t[-1]:.3f} s {on_floor.sum()} of {len(sticks)} on the floor, the cloud's mean height "
           f"{x[-1, :, 2].mean() - lo[2]:.4f} m (from {x[0, :, 2].mean() - lo[2]:.4f}), the fastest capsule at "
-          f"{np.linalg.norm(v[-1], axis=1).max():.4f} m/s; the fastest ever {np.linalg.norm(v, axis=2).max():.4f} m/s")
+          f"{speed[-1].max():.4f} m/s; the fastest ever {speed.max():.4f} m/s")
+    figures = [
+        ("the cloud's mean height", f"{x[-1, :, 2].mean() - lo[2]:.3f} m at t = {t[-1]:g} s (from "
+         f"{x[0, :, 2].mean() - lo[2]:.3f} m)", ""),
+        ("capsules on the floor", f"{on_floor.sum()} of {len(sticks)} at t = {t[-1]:g} s, the fastest then at "
+         f"{speed[-1].max():.3f} m/s", ""),
+        ("the fastest capsule", f"{speed.max():.3f} m/s at t = {t[speed.max(axis=1).argmax()]:g} s", "")]
     shaking = jitter(v)
     marks = [k for k in range(len(t)) if np.isfinite(shaking[k]) and abs(t[k] - round(t[k])) < 1e-9]
     print("jitter [m/s] at whole seconds: " + ", ".join(f"{t[k]:g} s {shaking[k]:.4f}" for k in marks))
+    if marks:
+        worst = max(marks, key=lambda k: shaking[k])
+        figures.append(("the largest jitter at a whole second", f"{shaking[worst]:.4f} m/s at t = {t[worst]:g} s", ""))
     if args.settle:
         window = (t >= args.settle[0] - 1e-9) & (t <= args.settle[1] + 1e-9)
-        print(f"falls at {-v[window, :, 2].mean():.4f} m/s on average over {args.settle[0]}-{args.settle[1]} s")
+        fall = -v[window, :, 2].mean()
+        print(f"falls at {fall:.4f} m/s on average over {args.settle[0]}-{args.settle[1]} s")
+        figures.insert(0, (f"the cloud's mean fall speed over {args.settle[0]:g}-{args.settle[1]:g} s",
+                           f"{fall:.4f} m/s", ""))
     done = wall_seconds[1:]  # the first row is the start
     print(f"wall time {run_seconds:.0f} s for the run; {done.mean():.2f} s per window on average "
           f"(rows of the run file: the last window of each)")
+    record(args.record, args.run, figures + overlaps + cost)
 
     if args.plot:
         import matplotlib
