@@ -31,7 +31,7 @@ std::vector<std::string> sanity_failures(const std::vector<Run>& runs) {
     check(r, "energy rise (NaN)", m.energy_rise, std::numeric_limits<double>::infinity());
     // Sequential impulses at (at least) their default iterations and dt: the settings the
     // world's tests and the rigid-body program relied on, on the scenes they hold (the hard
-    // cases are where they are known to fail, docs/results.md).
+    // cases are where they are known to fail, bench/rigidbody_accuracy/results.md).
     if (s.solver == rigidbody::world::SolverKind::sequential_impulses && s.impulse_options().max_iterations >= 50 &&
         s.dt <= 1e-3 && !r.scene.hard) {
       check(r, "penetration / size", m.penetration, 0.01);
