@@ -4,6 +4,16 @@
 
 namespace cosim::fluid {
 
+using bodies::BodyTreatment;
+using grid::Grid;
+using ibm::calibrated_retraction;
+using ibm::IbmOptions;
+using ibm::ImmersedBoundary;
+using ibm::name;
+using ibm::Retraction;
+using staircase::FbmOptions;
+using staircase::FictitiousBoundary;
+
 std::unique_ptr<BodyTreatment> make_bodies(const Grid& grid, const BodyOptions& options) {
   if (const auto* ibm = std::get_if<IbmOptions>(&options)) return std::make_unique<ImmersedBoundary>(grid, *ibm);
   return std::make_unique<FictitiousBoundary>(grid, std::get<FbmOptions>(options));

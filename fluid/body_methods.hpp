@@ -9,10 +9,10 @@
 
 namespace cosim::fluid {
 
-using BodyOptions = std::variant<IbmOptions, FbmOptions>;
+using BodyOptions = std::variant<ibm::IbmOptions, staircase::FbmOptions>;
 
 // grid must outlive the result.
-std::unique_ptr<BodyTreatment> make_bodies(const Grid& grid, const BodyOptions& options);
+std::unique_ptr<bodies::BodyTreatment> make_bodies(const grid::Grid& grid, const BodyOptions& options);
 
 // A short label for tables: "ibm roma3 s3 r0.30", "staircase offset 0.28".
 std::string label(const BodyOptions& options);

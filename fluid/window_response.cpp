@@ -4,6 +4,19 @@
 #include <numbers>
 
 namespace cosim::fluid {
+
+using bodies::BodyTreatment;
+using bodies::HydrodynamicLoad;
+using bodies::RigidBody;
+using grid::Axis;
+using grid::BoundaryConditions;
+using grid::Grid;
+using grid::Point;
+using navier_stokes::FluidProperties;
+using navier_stokes::NavierStokes;
+using navier_stokes::StepReport;
+using navier_stokes::TimeStepOptions;
+
 namespace {
 
 using Vector6d = Eigen::Matrix<double, 6, 1>;

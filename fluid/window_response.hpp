@@ -33,10 +33,10 @@
 
 #include <vector>
 
+#include "fluid/bodies/rigid_body.hpp"
 #include "fluid/body_methods.hpp"
-#include "fluid/grid.hpp"
-#include "fluid/navier_stokes.hpp"
-#include "fluid/rigid_body.hpp"
+#include "fluid/grid/grid.hpp"
+#include "fluid/navier_stokes/navier_stokes.hpp"
 
 namespace cosim::fluid {
 
@@ -52,7 +52,8 @@ struct WindowResponse {
 // In the body's frame, with the cells `grid` has where the body is (on a two-dimensional
 // grid: per its layer), for windows of length `window`. Each rank measures it alone.
 // Throws std::invalid_argument for a half-space.
-WindowResponse window_response(const Grid& grid, const RigidBody& body, const FluidProperties& fluid,
-                               const TimeStepOptions& steps, const BodyOptions& method, double window);
+WindowResponse window_response(const grid::Grid& grid, const bodies::RigidBody& body,
+                               const navier_stokes::FluidProperties& fluid, const navier_stokes::TimeStepOptions& steps,
+                               const BodyOptions& method, double window);
 
 }  // namespace cosim::fluid

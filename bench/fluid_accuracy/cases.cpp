@@ -12,6 +12,21 @@ namespace cosim::bench {
 namespace {
 
 using namespace cosim::fluid;
+using fluid::bodies::BodyTreatment;
+using fluid::bodies::StepBodies;
+using fluid::grid::Axis;
+using fluid::grid::Boundary;
+using fluid::grid::BoundaryConditions;
+using fluid::grid::Grid;
+using fluid::grid::Point;
+using fluid::grid::Side;
+using fluid::ibm::ImmersedBoundary;
+using fluid::navier_stokes::NavierStokes;
+using fluid::navier_stokes::StageSeconds;
+using fluid::navier_stokes::StepReport;
+using fluid::navier_stokes::TimeStepOptions;
+using fluid::staircase::FictitiousBoundary;
+using fluid::viscous::ViscosityModel;
 
 // Cylinder at (0.2, 0.2) in the channel, U_max 0.3, nu 1e-3. Along x: cells of h to
 // x = 0.6, then 6 % wider each.

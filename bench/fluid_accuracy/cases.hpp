@@ -67,7 +67,7 @@ struct Towed {
 };
 // `stepping`: its theta and pressure update (the step is the case's).
 Towed towed_sphere(const fluid::BodyOptions& method, int cells_per_diameter, double cells_per_step, double reynolds,
-                   double rise, const fluid::TimeStepOptions& stepping);
+                   double rise, const fluid::navier_stokes::TimeStepOptions& stepping);
 
 // A sphere driven towards a no-slip wall: a sphere of `cells_per_diameter` cells across in
 // a closed cube `box.diameters` wide (by default ten Cate's tank's width, 6.7), moved at
@@ -81,7 +81,7 @@ struct WallApproach {
   int steps = 0;
   std::vector<double> factors;                        // F / (6 pi mu a U) at each gap
   std::vector<double> sampled_gaps, sampled_factors;  // after each step
-  fluid::StageSeconds stages;                         // wall seconds per stage, all steps
+  fluid::navier_stokes::StageSeconds stages;          // wall seconds per stage, all steps
 };
 struct WallApproachBox {
   double diameters = 6.7;  // the cube's width
@@ -89,7 +89,8 @@ struct WallApproachBox {
 };
 WallApproach sphere_approaching_a_wall(const fluid::BodyOptions& method, int cells_per_diameter, double viscous_number,
                                        double reynolds, const std::vector<double>& gaps,
-                                       const fluid::TimeStepOptions& stepping, const WallApproachBox& box = {});
+                                       const fluid::navier_stokes::TimeStepOptions& stepping,
+                                       const WallApproachBox& box = {});
 
 // The relative error of `run`'s drag against `finest`'s at `gap`: at the two steps of `run`
 // around it, each against the finest's drag where that step ended, then linear between them.

@@ -31,12 +31,12 @@ using namespace cosim::bench;
 namespace {
 
 // The scene key pressure_update's values.
-const std::map<std::string, cosim::fluid::PressureUpdate> kPressureUpdates{
-    {"standard", cosim::fluid::PressureUpdate::standard},
-    {"rotational", cosim::fluid::PressureUpdate::rotational},
-    {"exact", cosim::fluid::PressureUpdate::exact}};
+const std::map<std::string, cosim::fluid::navier_stokes::PressureUpdate> kPressureUpdates{
+    {"standard", cosim::fluid::navier_stokes::PressureUpdate::standard},
+    {"rotational", cosim::fluid::navier_stokes::PressureUpdate::rotational},
+    {"exact", cosim::fluid::navier_stokes::PressureUpdate::exact}};
 
-std::string describe(const cosim::fluid::TimeStepOptions& stepping) {
+std::string describe(const cosim::fluid::navier_stokes::TimeStepOptions& stepping) {
   std::string update;
   for (const auto& [name, value] : kPressureUpdates)
     if (value == stepping.pressure_update) update = name;
@@ -101,7 +101,7 @@ Eigen::Vector3d sphere_centre(int n, int k) { return Eigen::Vector3d::Constant(0
 double sphere_h_kappa(int n) { return 10.0 / n; }
 
 // Mean Hasimoto error of the immersed boundary over the given positions on n^3 cells.
-double mean_hasimoto_error(int n, const cosim::fluid::IbmOptions& ibm, const Settings& s) {
+double mean_hasimoto_error(int n, const cosim::fluid::ibm::IbmOptions& ibm, const Settings& s) {
   double mean = 0;
   const Positions& p = s.positions;
   for (int k = p.first; k < p.first + p.count; ++k)
@@ -112,13 +112,13 @@ double mean_hasimoto_error(int n, const cosim::fluid::IbmOptions& ibm, const Set
 // The constant retraction (no curvature term) that zeroes the mean Hasimoto error on n^3
 // cells, by the secant method (the error falls about linearly with the retraction), from
 // the calibrated law's retraction there.
-double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, const Settings& s) {
-  const cosim::fluid::Retraction law = cosim::fluid::calibrated_retraction(ibm.kernel);
+double zeroing_retraction(int n, cosim::fluid::ibm::IbmOptions ibm, const Settings& s) {
+  const cosim::fluid::ibm::Retraction law = cosim::fluid::ibm::calibrated_retraction(ibm.kernel);
   double r0 = law.constant + law.curvature * sphere_h_kappa(n), r1 = r0 + 0.02;
-  ibm.retraction = cosim::fluid::Retraction{r0, 0};
+  ibm.retraction = cosim::fluid::ibm::Retraction{r0, 0};
   double e0 = mean_hasimoto_error(n, ibm, s);
   for (int i = 0; i < 8; ++i) {
-    ibm.retraction = cosim::fluid::Retraction{r1, 0};
+    ibm.retraction = cosim::fluid::ibm::Retraction{r1, 0};
     const double e1 = mean_hasimoto_error(n, ibm, s);
     PetscPrintf(PETSC_COMM_WORLD, "  %s, d/h %.1f: retraction %.4f -> mean error %+.3f %%\n",
                 std::string(name(ibm.kernel)).c_str(), 0.4 * n, r1, 100 * e1);
@@ -136,7 +136,7 @@ double zeroing_retraction(int n, cosim::fluid::IbmOptions ibm, const Settings& s
 // h kappa, the line through (sphere_h_kappa(n), R_n).
 // With one box, only its zeroing constant retraction (run the two boxes as two processes
 // and put the line through them by hand to use both cores).
-void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ibm, const Settings& s) {
+void calibrate(const std::vector<int>& boxes, const cosim::fluid::ibm::IbmOptions& ibm, const Settings& s) {
   if (boxes.size() == 1) {
     PetscPrintf(PETSC_COMM_WORLD, "zeroing retraction for %s at d/h %.1f: %.4f\n",
                 std::string(name(ibm.kernel)).c_str(), 0.4 * boxes[0], zeroing_retraction(boxes[0], ibm, s));
@@ -156,7 +156,7 @@ void calibrate(const std::vector<int>& boxes, const cosim::fluid::IbmOptions& ib
 // step's and its observed order in the step.
 void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, int cells_per_diameter,
                  std::vector<double> cells_per_step, double reynolds, double rise,
-                 const cosim::fluid::TimeStepOptions& stepping) {
+                 const cosim::fluid::navier_stokes::TimeStepOptions& stepping) {
   std::sort(cells_per_step.rbegin(), cells_per_step.rend());
   PetscPrintf(PETSC_COMM_WORLD, "towed sphere, d/h %d, Re %g, speed reached over %g d/U, %s\n", cells_per_diameter,
               reynolds, rise, describe(stepping).c_str());
@@ -175,7 +175,7 @@ void towed_study(const std::vector<cosim::fluid::BodyOptions>& methods, int cell
         order = std::log(std::abs((runs[i].drag - runs[i + 1].drag) / (runs[i + 1].drag - runs[i + 2].drag))) /
                 std::log(runs[i].cells_per_step / runs[i + 1].cells_per_step);
       PetscPrintf(PETSC_COMM_WORLD, "%-26s %10.3f %9.3f %6d %9.1f %10.6f %+11.3f%% %7.2f %10.2f\n",
-                  label(method).c_str(), r.cells_per_step, r.viscous_number, r.steps, r.seconds, r.drag,
+                  cosim::fluid::label(method).c_str(), r.cells_per_step, r.viscous_number, r.steps, r.seconds, r.drag,
                   100 * (r.drag - finest) / finest, order, r.corrections);
     }
   }
@@ -220,7 +220,7 @@ void print_film_range(const std::vector<double>& factors, const std::vector<doub
 // over Stokes's, as the finest step's times one plus the error against it (error_against).
 void wall_approach_study(const std::vector<cosim::fluid::BodyOptions>& methods, int cells_per_diameter,
                          std::vector<double> viscous_numbers, double reynolds, std::vector<double> gaps,
-                         const cosim::fluid::TimeStepOptions& stepping, const WallApproachBox& box) {
+                         const cosim::fluid::navier_stokes::TimeStepOptions& stepping, const WallApproachBox& box) {
   std::sort(viscous_numbers.rbegin(), viscous_numbers.rend());
   std::sort(gaps.rbegin(), gaps.rend());
   if (gaps.front() >= box.start_gap || gaps.back() <= 0)
@@ -240,8 +240,8 @@ void wall_approach_study(const std::vector<cosim::fluid::BodyOptions>& methods, 
     const WallApproach& finest = runs.back();
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const WallApproach& r = runs[i];
-      PetscPrintf(PETSC_COMM_WORLD, "%-26s %9.3f %10.4f %6d %9.1f %10.2f ", label(method).c_str(), viscous_numbers[i],
-                  r.cells_per_step, r.steps, r.seconds, r.corrections);
+      PetscPrintf(PETSC_COMM_WORLD, "%-26s %9.3f %10.4f %6d %9.1f %10.2f ", cosim::fluid::label(method).c_str(),
+                  viscous_numbers[i], r.cells_per_step, r.steps, r.seconds, r.corrections);
       for (std::size_t g = 0; g < gaps.size(); ++g) {
         const double error = &r == &finest ? 0.0 : error_against(r, finest, gaps[g]);
         PetscPrintf(PETSC_COMM_WORLD, " %8.4f (%+6.2f%%)", finest.factors[g] * (1 + error), 100 * error);
@@ -250,7 +250,7 @@ void wall_approach_study(const std::vector<cosim::fluid::BodyOptions>& methods, 
     }
     print_film_range(finest.factors, gaps, cells_per_diameter);
     PetscPrintf(PETSC_COMM_WORLD, "wall ms per step, by stage:");
-    for (const char* stage : cosim::fluid::kStageNames) PetscPrintf(PETSC_COMM_WORLD, " %s,", stage);
+    for (const char* stage : cosim::fluid::navier_stokes::kStageNames) PetscPrintf(PETSC_COMM_WORLD, " %s,", stage);
     PetscPrintf(PETSC_COMM_WORLD, " at each nu dt / h^2\n");
     for (std::size_t i = 0; i < runs.size(); ++i) {
       PetscPrintf(PETSC_COMM_WORLD, "  %6.3f:", viscous_numbers[i]);
@@ -270,8 +270,8 @@ void duct_study(const std::vector<cosim::fluid::BodyOptions>& methods, const std
   for (const auto& method : methods)
     for (int n : diameters) {
       const DuctDrag r = sphere_in_sliding_duct(method, n, reynolds);
-      PetscPrintf(PETSC_COMM_WORLD, "%-26s %5d %8ld %6d %9.1f %14.5f\n", label(method).c_str(), n, r.cells, r.steps,
-                  r.seconds, r.factor);
+      PetscPrintf(PETSC_COMM_WORLD, "%-26s %5d %8ld %6d %9.1f %14.5f\n", cosim::fluid::label(method).c_str(), n,
+                  r.cells, r.steps, r.seconds, r.factor);
     }
 }
 
@@ -280,7 +280,7 @@ void pipe_study(const std::vector<int>& diameters) {
   PetscPrintf(PETSC_COMM_WORLD, "round pipe (a container), axis (0.37, 0.61) h off the grid's lines\n");
   PetscPrintf(PETSC_COMM_WORLD, "| kernel | D/h | flow rate | profile (of u_max) | cells | steps | wall [s] |\n");
   PetscPrintf(PETSC_COMM_WORLD, "|---|---|---|---|---|---|---|\n");
-  using cosim::fluid::DeltaKernel;
+  using cosim::fluid::ibm::DeltaKernel;
   for (DeltaKernel kernel : {DeltaKernel::roma3, DeltaKernel::peskin4, DeltaKernel::bao6})
     for (int n : diameters) {
       // Room outside the pipe for the solid held beyond the widest kernel.
@@ -300,9 +300,9 @@ void moving_frame_study(const std::vector<cosim::fluid::BodyOptions>& methods, i
   for (const auto& method : methods)
     for (double c : cells_per_step) {
       const MovingFrame r = moving_frame(n, method, reynolds, c);
-      PetscPrintf(PETSC_COMM_WORLD, "%-26s %6.3f %10.4f %9.4f %9.1f %11.4f %11.4f %+10.3f%%\n", label(method).c_str(),
-                  r.reynolds, r.cells_per_step, r.viscous_number, r.seconds, r.fixed_drag, r.moving_drag,
-                  100 * r.error());
+      PetscPrintf(PETSC_COMM_WORLD, "%-26s %6.3f %10.4f %9.4f %9.1f %11.4f %11.4f %+10.3f%%\n",
+                  cosim::fluid::label(method).c_str(), r.reynolds, r.cells_per_step, r.viscous_number, r.seconds,
+                  r.fixed_drag, r.moving_drag, 100 * r.error());
     }
 }
 
@@ -324,8 +324,8 @@ void study(const Settings& s, const std::string& csv) {
       const auto [lo, hi] = std::minmax_element(errors.begin(), errors.end());
       PetscPrintf(PETSC_COMM_WORLD,
                   "  Hasimoto d/h %.1f, %s: mean error %+.3f %%, spread over %d positions %.3f %% (%+.3f .. %+.3f)\n",
-                  0.4 * n, label(method).c_str(), 100 * mean, s.positions.count, 100 * (*hi - *lo), 100 * *lo,
-                  100 * *hi);
+                  0.4 * n, cosim::fluid::label(method).c_str(), 100 * mean, s.positions.count, 100 * (*hi - *lo),
+                  100 * *lo, 100 * *hi);
       // The observed order of the mean error; meaningless where a calibration makes it cross zero.
       if (last_n > 0)
         PetscPrintf(PETSC_COMM_WORLD, "  observed order of the mean error from d/h %.1f to %.1f: %.2f\n", 0.4 * last_n,
@@ -348,7 +348,7 @@ void study(const Settings& s, const std::string& csv) {
 int main(int argc, char** argv) {
   std::string csv, method = "both", kernel = "roma3";
   bool quick = false, oscillating = false, only_hasimoto = false, only_dfg = false, calibrating = false;
-  cosim::fluid::IbmOptions ibm;
+  cosim::fluid::ibm::IbmOptions ibm;
   Settings s;
   s.boxes = {20, 30, 40, 60};
   s.diameters = {10, 20, 40};
@@ -392,7 +392,7 @@ int main(int argc, char** argv) {
   app.add_option("--viscous-number", s.stepping.viscous_number, "Hasimoto's step as nu dt / h^2")
       ->check(CLI::PositiveNumber);
   std::optional<double> theta;
-  cosim::fluid::TimeStepOptions moving_steps;  // the towed sphere's and the wall approach's
+  cosim::fluid::navier_stokes::TimeStepOptions moving_steps;  // the towed sphere's and the wall approach's
   app.add_option("--pressure-update", moving_steps.pressure_update,
                  "The towed sphere's and the wall approach's pressure update (the scene key pressure_update)")
       ->transform(CLI::CheckedTransformer(kPressureUpdates));
@@ -435,12 +435,14 @@ int main(int argc, char** argv) {
                  "kernel");
   CLI11_PARSE(app, argc, argv);
   if (theta) s.stepping.theta = moving_steps.theta = *theta;
-  if (retraction >= 0) ibm.retraction = cosim::fluid::Retraction{retraction, curvature};
-  ibm.kernel = kernel == "roma3"     ? cosim::fluid::DeltaKernel::roma3
-               : kernel == "peskin4" ? cosim::fluid::DeltaKernel::peskin4
-                                     : cosim::fluid::DeltaKernel::bao6;
+  if (retraction >= 0) ibm.retraction = cosim::fluid::ibm::Retraction{retraction, curvature};
+  ibm.kernel = kernel == "roma3"     ? cosim::fluid::ibm::DeltaKernel::roma3
+               : kernel == "peskin4" ? cosim::fluid::ibm::DeltaKernel::peskin4
+                                     : cosim::fluid::ibm::DeltaKernel::bao6;
   if (method != "staircase") s.methods.push_back(ibm);
-  if (method != "ibm") s.methods.push_back(cosim::fluid::FbmOptions{.offset = cosim::fluid::kCalibratedSurfaceOffset});
+  if (method != "ibm")
+    s.methods.push_back(
+        cosim::fluid::staircase::FbmOptions{.offset = cosim::fluid::staircase::kCalibratedSurfaceOffset});
   s.hasimoto = !only_dfg;
   s.dfg = !only_hasimoto;
   if (quick) {  // the pipeline end to end, not the steady state

@@ -9,6 +9,13 @@ namespace cosim::bench {
 
 OscillatingRun oscillating_cylinder(int cells_per_diameter, double periods, const fluid::BodyOptions& method) {
   using namespace fluid;
+  using fluid::bodies::HydrodynamicLoad;
+  using fluid::grid::Axis;
+  using fluid::grid::BoundaryConditions;
+  using fluid::grid::Grid;
+  using fluid::grid::Point;
+  using fluid::navier_stokes::NavierStokes;
+  using fluid::viscous::ViscosityModel;
   using namespace channel;
   constexpr double x0 = 1.1, y0 = 0.2, omega = 2 * std::numbers::pi * kOscillationFrequency;
   constexpr double U = omega * kOscillationAmplitude;  // the largest body velocity, 0.3927 m/s

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "fluid/ibm/immersed_boundary.hpp"
-#include "fluid/navier_stokes.hpp"
+#include "fluid/navier_stokes/navier_stokes.hpp"
 
 namespace cosim::bench {
 namespace {
@@ -17,8 +17,17 @@ double poiseuille(double r) { return r < kRadius ? kDrive * (kRadius * kRadius -
 
 }  // namespace
 
-PipeFlow round_pipe(int cells_across, const Eigen::Vector2d& offset, int margin, fluid::DeltaKernel kernel) {
-  using namespace cosim::fluid;
+PipeFlow round_pipe(int cells_across, const Eigen::Vector2d& offset, int margin, fluid::ibm::DeltaKernel kernel) {
+  using fluid::grid::Axis;
+  using fluid::grid::BoundaryConditions;
+  using fluid::grid::for_each_index;
+  using fluid::grid::Grid;
+  using fluid::grid::Index;
+  using fluid::grid::Point;
+  using fluid::ibm::IbmOptions;
+  using fluid::ibm::ImmersedBoundary;
+  using fluid::navier_stokes::NavierStokes;
+  using fluid::viscous::ViscosityModel;
   const double start = MPI_Wtime();
   const double h = 2 * kRadius / cells_across;
   const int n = cells_across + margin;

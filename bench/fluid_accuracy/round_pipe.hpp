@@ -19,6 +19,6 @@ struct PipeFlow {
 // A pipe of D/h = `cells_across` whose axis lies `offset` cell widths off the grid's centre
 // lines, in a box `margin` cells wider than it, with the immersed boundary's `kernel`; steps
 // of nu dt / h^2 = 1 from rest to the steady state.
-PipeFlow round_pipe(int cells_across, const Eigen::Vector2d& offset, int margin, fluid::DeltaKernel kernel);
+PipeFlow round_pipe(int cells_across, const Eigen::Vector2d& offset, int margin, fluid::ibm::DeltaKernel kernel);
 
 }  // namespace cosim::bench

@@ -4,13 +4,29 @@
 #include <ctime>
 
 #include "fluid/body_methods.hpp"
-#include "fluid/navier_stokes.hpp"
+#include "fluid/navier_stokes/navier_stokes.hpp"
 #include "fluid/petsc_check.hpp"
 
 namespace cosim::bench {
 namespace {
 
 using namespace cosim::fluid;
+using fluid::bodies::BodyTreatment;
+using fluid::bodies::RigidBody;
+using fluid::bodies::StepBodies;
+using fluid::grid::Axis;
+using fluid::grid::Boundary;
+using fluid::grid::BoundaryConditions;
+using fluid::grid::for_each_index;
+using fluid::grid::Grid;
+using fluid::grid::Index;
+using fluid::grid::Point;
+using fluid::grid::Side;
+using fluid::ibm::IbmOptions;
+using fluid::navier_stokes::NavierStokes;
+using fluid::navier_stokes::StepReport;
+using fluid::staircase::FbmOptions;
+using fluid::viscous::ViscosityModel;
 
 // This rank's time so far in one of the library's events (FluidPressureSolve: the pressure
 // KSP with its multigrid setup; FluidBodyForcing: the immersed boundary's forcing and

@@ -4,7 +4,7 @@
 
 #include "fluid/petsc_check.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 namespace {
 
@@ -123,4 +123,4 @@ void BodyBlockSolvers::apply(Vec x, Vec y) const {
   COSIM_PETSC(VecRestoreArrayRead(x, &in));
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -14,7 +14,7 @@
 #include <span>
 #include <vector>
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 class BodyBlockSolvers {
  public:
@@ -53,4 +53,4 @@ class BodyBlockSolvers {
   int factorizations_ = 0, refactorizations_ = 0;
 };
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -6,7 +6,11 @@
 #include "geometry/queries.hpp"
 #include "geometry/surface_sampling.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
+
+using bodies::RigidBody;
+using grid::Axes;
+using grid::Axis;
 
 BodyDistance::BodyDistance(const Axes& axes, const RigidBody& body) {
   double h = std::numeric_limits<double>::infinity();
@@ -86,4 +90,4 @@ double BodyDistance::at(const RigidBody& body, const Eigen::Vector3d& point) con
   return d;
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -16,19 +16,19 @@
 #include <unordered_map>
 #include <vector>
 
-#include "fluid/grid.hpp"
-#include "fluid/rigid_body.hpp"
+#include "fluid/bodies/rigid_body.hpp"
+#include "fluid/grid/grid.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 class BodyDistance {
  public:
   // `body` where it is first placed: a section's points are kept in its frame.
-  BodyDistance(const Axes& axes, const RigidBody& body);
-  BodyDistance(const Grid& grid, const RigidBody& body) : BodyDistance(grid.axes(), body) {}
+  BodyDistance(const grid::Axes& axes, const bodies::RigidBody& body);
+  BodyDistance(const grid::Grid& grid, const bodies::RigidBody& body) : BodyDistance(grid.axes(), body) {}
   // out[i]: the signed distance of points[i] (world) to `body`, the same body now.
-  void operator()(const RigidBody& body, std::span<const Eigen::Vector3d> points, std::span<double> out) const;
-  double at(const RigidBody& body, const Eigen::Vector3d& point) const;
+  void operator()(const bodies::RigidBody& body, std::span<const Eigen::Vector3d> points, std::span<double> out) const;
+  double at(const bodies::RigidBody& body, const Eigen::Vector3d& point) const;
 
  private:
   std::int64_t key(const Eigen::Vector3d& body_point) const;
@@ -40,4 +40,4 @@ class BodyDistance {
   std::unordered_map<std::int64_t, std::vector<int>> near_;
 };
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 namespace {
 
 // K = 59/60 - sqrt(29)/20: the smallest second moment that keeps the kernel non-negative,
@@ -95,4 +95,4 @@ double phi(DeltaKernel kernel, double r) {
   }
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -12,7 +12,7 @@
 //   better translation invariance at twice the 4-point kernel's width.
 #include <string_view>
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 enum class DeltaKernel { roma3, peskin4, bao6 };
 
@@ -24,4 +24,4 @@ double support_radius(DeltaKernel kernel);
 double sum_of_squares(DeltaKernel kernel);
 double phi(DeltaKernel kernel, double r);
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

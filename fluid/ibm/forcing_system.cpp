@@ -4,10 +4,12 @@
 #include <exception>
 
 #include "fluid/ibm/summed_rows.hpp"
+#include "fluid/navier_stokes/step_stages.hpp"
 #include "fluid/petsc_check.hpp"
-#include "fluid/step_stages.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
+
+using navier_stokes::forcing_iteration_event;
 
 PetscInt roots_by_body(MPI_Comm comm, std::span<const std::size_t> first_marker) {
   int rank = 0, size = 1;
@@ -120,4 +122,4 @@ int ForcingSystem::solve(std::vector<double>& g, std::vector<double>& residual, 
   return static_cast<int>(iterations);
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -18,7 +18,7 @@
 #include "fluid/ibm/body_block_solvers.hpp"
 #include "fluid/ibm/marker_stencils.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 // The roots this rank keeps: whole bodies' values (3 per marker, body b's markers numbered
 // first_marker[b] .. first_marker[b + 1] - 1), about as many on each rank.
@@ -49,4 +49,4 @@ class ForcingSystem {
   Vec rhs_ = nullptr, g_ = nullptr, work_ = nullptr, left_ = nullptr;
 };
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -12,13 +12,30 @@
 
 #include "fluid/ibm/marker_stencils.hpp"
 #include "fluid/ibm/volume_fraction.hpp"
-#include "fluid/navier_stokes.hpp"
+#include "fluid/navier_stokes/navier_stokes.hpp"
+#include "fluid/navier_stokes/step_stages.hpp"
 #include "fluid/petsc_check.hpp"
-#include "fluid/step_stages.hpp"
 #include "geometry/queries.hpp"
 #include "geometry/surface_sampling.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
+
+using bodies::ForcingArrays;
+using bodies::HydrodynamicLoad;
+using bodies::IndicatorPatch;
+using bodies::RigidBody;
+using bodies::StepResponse;
+using grid::Axes;
+using grid::Axis;
+using grid::Box;
+using grid::finest_width_at;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
+using grid::kCellCentre;
+using grid::Point;
+using navier_stokes::NavierStokes;
+
 namespace {
 
 constexpr std::size_t kInnerWidth = 6;  // momentum and angular momentum
@@ -758,4 +775,4 @@ std::vector<double> ImmersedBoundary::inner_momenta(const NavierStokes& flow) co
   return out;
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -43,9 +43,9 @@
 #include <utility>
 #include <vector>
 
-#include "fluid/body_forcing.hpp"
-#include "fluid/body_treatment.hpp"
-#include "fluid/grid.hpp"
+#include "fluid/bodies/body_forcing.hpp"
+#include "fluid/bodies/body_treatment.hpp"
+#include "fluid/grid/grid.hpp"
 #include "fluid/ibm/body_distance.hpp"
 #include "fluid/ibm/delta_kernel.hpp"
 #include "fluid/ibm/forcing_system.hpp"
@@ -54,7 +54,7 @@
 #include "fluid/ibm/marker_stencils.hpp"
 #include "geometry/sampled_shapes.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 // How deep the markers sit under the surface, in cell widths h: the kernel spreads a
 // marker's force over a shell about as wide as itself, so the no-slip surface the markers
@@ -103,39 +103,40 @@ struct IbmOptions {
   double spacing = 1.0;                  // marker spacing in cell widths
 };
 
-class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
+class ImmersedBoundary final : public bodies::BodyTreatment, public bodies::BodyForcing {
  public:
   // grid must outlive this object. Throws std::invalid_argument for options out of range or
   // a grid it cannot work on (more than one flat axis, a periodic axis narrower than the
   // kernel's reach twice).
-  explicit ImmersedBoundary(const Grid& grid, IbmOptions options = {});
+  explicit ImmersedBoundary(const grid::Grid& grid, IbmOptions options = {});
 
   // The markers add() gives `bodies` on a grid of `axes`, counted without a grid (whose
   // arrays a large one would make costly): what the forcing works on, for an estimate of a
   // run's cost. Throws as the constructor and add() do.
-  static std::size_t marker_count(const Axes& axes, const IbmOptions& options, std::span<const RigidBody> bodies);
+  static std::size_t marker_count(const grid::Axes& axes, const IbmOptions& options,
+                                  std::span<const bodies::RigidBody> bodies);
 
   // Throws std::invalid_argument for a half-space, or a body none of whose markers stays
   // inside it once retracted (thinner than twice the retraction, or off a two-dimensional
   // grid's plane).
-  std::size_t add(RigidBody body) override;
+  std::size_t add(bodies::RigidBody body) override;
   void move(std::size_t body, const geometry::Pose& pose, const Eigen::Vector3d& velocity,
             const Eigen::Vector3d& angular_velocity) override;
-  const RigidBody& body(std::size_t i) const override { return bodies_.at(i).body; }
+  const bodies::RigidBody& body(std::size_t i) const override { return bodies_.at(i).body; }
   std::size_t size() const override { return bodies_.size(); }
 
-  StepBodies for_step() override { return {.forcing = this}; }
+  bodies::StepBodies for_step() override { return {.forcing = this}; }
   // Measured in the last step (zero before the first).
-  std::vector<HydrodynamicLoad> loads(const NavierStokes& flow) const override;
-  IndicatorPatch cell_fraction(std::size_t i) const override;
+  std::vector<bodies::HydrodynamicLoad> loads(const navier_stokes::NavierStokes& flow) const override;
+  bodies::IndicatorPatch cell_fraction(std::size_t i) const override;
   // Per body the inner fluid's momentum and angular momentum at the last step's end, and
   // its markers' forces.
   std::vector<double> state() const override;
   void restore(std::span<const double> state) override;
 
-  void force(const NavierStokes& flow, double dt, const ForcingArrays& arrays) override;
-  int correct(const NavierStokes& flow, double dt, StepResponse& response) override;
-  void finish_step(const NavierStokes& flow, double dt) override;
+  void force(const navier_stokes::NavierStokes& flow, double dt, const bodies::ForcingArrays& arrays) override;
+  int correct(const navier_stokes::NavierStokes& flow, double dt, bodies::StepResponse& response) override;
+  void finish_step(const navier_stokes::NavierStokes& flow, double dt) override;
 
   // Body i's markers where it is now, world frame.
   std::vector<Eigen::Vector3d> markers(std::size_t i) const;
@@ -157,23 +158,24 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
     bool known = false;                               // this rank held it in the last step, so `force` is that step's
   };
   struct Entry {
-    Entry(const Grid& grid, RigidBody b) : body(std::move(b)), distance(grid, body) {}
-    RigidBody body;
+    Entry(const grid::Grid& grid, bodies::RigidBody b) : body(std::move(b)), distance(grid, body) {}
+    bodies::RigidBody body;
     BodyDistance distance;
     std::vector<Marker> markers;
     std::array<double, 6> inner{};  // int alpha u dV, int alpha (x - x_c) x u dV
     bool inner_known = false;
     Eigen::Vector3d forcing = Eigen::Vector3d::Zero(), forcing_moment = Eigen::Vector3d::Zero();  // sum F dV
-    std::vector<IndicatorPatch> fraction;         // alpha at this rank's faces of each component, where the body is
-    std::optional<geometry::Pose> fraction_pose;  // where the body was when `fraction` was found
-    std::array<std::vector<Index>, 3> held;       // a container's faces beyond its kernels (hold_solid)
-    HydrodynamicLoad load;
+    std::vector<bodies::IndicatorPatch> fraction;  // alpha at this rank's faces of each component, where the body is
+    std::optional<geometry::Pose> fraction_pose;   // where the body was when `fraction` was found
+    std::array<std::vector<grid::Index>, 3> held;  // a container's faces beyond its kernels (hold_solid)
+    bodies::HydrodynamicLoad load;
   };
-  static void check(const Axes& axes, const IbmOptions& options);  // what the constructor refuses
+  static void check(const grid::Axes& axes, const IbmOptions& options);  // what the constructor refuses
   // The body's markers, placed about one cell apart on its surface and moved in by the
   // retraction (`options` resolved), the crowded ones thinned out.
-  static std::vector<Marker> place_markers(const Axes& axes, const IbmOptions& options, const RigidBody& body,
-                                           const BodyDistance& distance, geometry::SampledShapes& sampled);
+  static std::vector<Marker> place_markers(const grid::Axes& axes, const IbmOptions& options,
+                                           const bodies::RigidBody& body, const BodyDistance& distance,
+                                           geometry::SampledShapes& sampled);
   // The markers whose kernels touch this rank's faces, of the bodies near it, where they are
   // (active_) or `lag` earlier, where they spread from (spreading_, the same markers).
   void collect_active_markers(double lag);
@@ -184,10 +186,11 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   // left free, the fluid there flows wherever a drive reaches it (a pipe's pressure
   // gradient, an inflow over a whole face) and leaks through the kernels' width into the
   // inside. Adds the impulses to `rhs` and to the container's forcing.
-  void hold_solid(double dt, const ForcingArrays& arrays);
-  std::vector<double> inner_momenta(const NavierStokes& flow) const;  // 6 per body, summed over ranks
+  void hold_solid(double dt, const bodies::ForcingArrays& arrays);
+  std::vector<double> inner_momenta(const navier_stokes::NavierStokes& flow) const;  // 6 per body, summed over ranks
   // The interpolated velocity's misses at the markers (3 per marker), and their scale.
-  double slip_in(const NavierStokes& flow, const MarkerStencils& stencils, std::vector<double>& residual) const;
+  double slip_in(const navier_stokes::NavierStokes& flow, const MarkerStencils& stencils,
+                 std::vector<double>& residual) const;
   // Adds the markers' impulses dt F_l dV_l to their forces and their bodies' forcing (each
   // marker's share on this rank).
   void add_impulses(const std::vector<double>& g, double dt, const MarkerSharing& sharing);
@@ -195,7 +198,7 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   std::vector<double> last_impulses(const MarkerSharing& sharing, double dt) const;
   std::size_t total_markers() const { return first_marker_.empty() ? 0 : first_marker_.back(); }
 
-  const Grid& grid_;
+  const grid::Grid& grid_;
   IbmOptions options_;
   std::vector<Entry> bodies_;
   geometry::SampledShapes sampled_;                // the bodies' shapes, sampled once each
@@ -212,4 +215,4 @@ class ImmersedBoundary final : public BodyTreatment, public BodyForcing {
   int sweeps_ = 0;
 };
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

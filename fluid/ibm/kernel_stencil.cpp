@@ -3,7 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
+
+using grid::Axis;
+using grid::Box;
+using grid::Grid;
+using grid::Point;
+
 AxisWeights axis_weights(const Axis& a, bool faces, DeltaKernel kernel, double x) {
   AxisWeights out;
   if (a.degenerate()) {
@@ -70,4 +76,4 @@ KernelStencil kernel_stencil(const Grid& grid, int component, DeltaKernel kernel
   return s;
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

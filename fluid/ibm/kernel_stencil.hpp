@@ -14,10 +14,10 @@
 // local width).
 #include <array>
 
-#include "fluid/grid.hpp"
+#include "fluid/grid/grid.hpp"
 #include "fluid/ibm/delta_kernel.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 struct AxisWeights {
   static constexpr int kMax = 6;  // the widest kernel's points
@@ -30,20 +30,20 @@ struct AxisWeights {
 // Along `axis` for a marker at coordinate x, at the faces (`faces`: the component's own
 // axis) or the cell centres. A degenerate axis (one periodic cell) gives its one point with
 // weight one. Empty (size 0) when no unknown lies within reach: x outside the domain.
-AxisWeights axis_weights(const Axis& axis, bool faces, DeltaKernel kernel, double x);
+AxisWeights axis_weights(const grid::Axis& axis, bool faces, DeltaKernel kernel, double x);
 
 struct KernelStencil {
   std::array<AxisWeights, 3> axes;
   bool empty() const { return axes[0].size == 0 || axes[1].size == 0 || axes[2].size == 0; }
   // Whether any of its points lies in `box`.
-  bool meets(const Box& box) const;
+  bool meets(const grid::Box& box) const;
 };
 
-KernelStencil kernel_stencil(const Grid& grid, int component, DeltaKernel kernel, const Point& x);
+KernelStencil kernel_stencil(const grid::Grid& grid, int component, DeltaKernel kernel, const grid::Point& x);
 
 // Calls f(p, weight) for the stencil's points inside `box` (a rank's owned points).
 template <typename F>
-void for_each_point(const KernelStencil& s, const Box& box, F&& f) {
+void for_each_point(const KernelStencil& s, const grid::Box& box, F&& f) {
   const auto inside = [&](int d, PetscInt i) { return i >= box.lo[d] && i < box.hi[d]; };
   for (int c = 0; c < s.axes[2].size; ++c) {
     const PetscInt k = s.axes[2].index[static_cast<std::size_t>(c)];
@@ -54,10 +54,10 @@ void for_each_point(const KernelStencil& s, const Box& box, F&& f) {
       const double wjk = s.axes[2].weight[static_cast<std::size_t>(c)] * s.axes[1].weight[static_cast<std::size_t>(b)];
       for (int a = 0; a < s.axes[0].size; ++a) {
         const PetscInt i = s.axes[0].index[static_cast<std::size_t>(a)];
-        if (inside(0, i)) f(Index{i, j, k}, wjk * s.axes[0].weight[static_cast<std::size_t>(a)]);
+        if (inside(0, i)) f(grid::Index{i, j, k}, wjk * s.axes[0].weight[static_cast<std::size_t>(a)]);
       }
     }
   }
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

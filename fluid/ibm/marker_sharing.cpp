@@ -5,7 +5,7 @@
 
 #include "fluid/petsc_check.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 MarkerSharing::MarkerSharing(MPI_Comm comm, std::span<const PetscInt> ids, PetscInt roots)
     : comm_(comm), roots_(roots) {
@@ -80,4 +80,4 @@ void MarkerSharing::from_roots(Vec roots, std::vector<double>& leaves) const {
   COSIM_PETSC(VecRestoreArrayRead(roots, &a));
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 class MarkerSharing {
  public:
@@ -58,4 +58,4 @@ class MarkerSharing {
   double count_ = 0;
 };
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
+
+using grid::Box;
+using grid::Grid;
+using grid::Index;
 
 namespace {
 
@@ -115,4 +119,4 @@ std::vector<MarkerStencils::Product> MarkerStencils::products(const MarkerStenci
   return out;
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -12,11 +12,11 @@
 #include <span>
 #include <vector>
 
-#include "fluid/grid.hpp"
+#include "fluid/grid/grid.hpp"
 #include "fluid/ibm/kernel_stencil.hpp"
 #include "fluid/ibm/marker_sharing.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 struct ActiveMarker {
   std::size_t body = 0, marker = 0;
@@ -33,7 +33,7 @@ using FaceArrays = std::array<PetscScalar***, 3>;
 class MarkerStencils {
  public:
   // `roots`: the values whose roots this rank keeps (marker_sharing.hpp; collective).
-  MarkerStencils(const Grid& grid, std::span<const ActiveMarker> markers, PetscInt roots);
+  MarkerStencils(const grid::Grid& grid, std::span<const ActiveMarker> markers, PetscInt roots);
 
   // field += sum_l g_l w_l / dV, g holding 3 values (x, y, z) per marker.
   void spread(const FaceArrays& field, const std::vector<double>& g) const;
@@ -60,12 +60,12 @@ class MarkerStencils {
   };
   std::array<PetscScalar*, 3> origins(const FaceArrays& field) const;
 
-  const Grid& grid_;
-  std::array<Box, 3> owned_;
+  const grid::Grid& grid_;
+  std::array<grid::Box, 3> owned_;
   std::vector<Touch> touches_;
   std::vector<std::size_t> first_;  // value i's touches: first_[i] .. first_[i + 1]
   std::vector<PetscInt> ids_;       // value i's global number
   MarkerSharing sharing_;
 };
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

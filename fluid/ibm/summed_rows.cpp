@@ -5,7 +5,7 @@
 
 #include "fluid/petsc_check.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 namespace {
 
@@ -104,4 +104,4 @@ Mat summed_rows(MPI_Comm comm, PetscInt rows, std::vector<Product> entries) {
   return B;
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

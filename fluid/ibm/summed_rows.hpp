@@ -11,11 +11,11 @@
 
 #include "fluid/ibm/marker_stencils.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 // The matrix of `rows` rows on this rank (the next range of global numbers after the lower
 // ranks'), square, holding the sum of the entries every rank gives; every row holds its
 // diagonal, 1 where nothing else is on it (a row no rank gives entries for). Collective.
 Mat summed_rows(MPI_Comm comm, PetscInt rows, std::vector<MarkerStencils::Product> entries);
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

@@ -4,10 +4,21 @@
 #include <cmath>
 #include <vector>
 
-#include "fluid/control_volumes.hpp"
+#include "fluid/bodies/control_volumes.hpp"
 #include "geometry/aabb.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
+
+using bodies::control_interval;
+using bodies::control_volumes_meeting;
+using bodies::IndicatorPatch;
+using bodies::Interval;
+using bodies::RigidBody;
+using grid::Axis;
+using grid::Box;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
 
 double level_set_fraction(std::span<const double> phi) {
   double inside = 0, total = 0;
@@ -85,4 +96,4 @@ IndicatorPatch volume_fraction(const Grid& grid, int location, const RigidBody& 
   return {range, std::move(values)};
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

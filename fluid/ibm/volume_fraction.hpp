@@ -9,12 +9,12 @@
 // the body's force, then changes smoothly as the body moves across the grid.
 #include <span>
 
-#include "fluid/staircase/fbm_indicator.hpp"
-#include "fluid/grid.hpp"
+#include "fluid/bodies/control_volumes.hpp"
+#include "fluid/bodies/rigid_body.hpp"
+#include "fluid/grid/grid.hpp"
 #include "fluid/ibm/body_distance.hpp"
-#include "fluid/rigid_body.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::ibm {
 
 // From the corners' signed distances (negative inside); 1 when all are zero.
 double level_set_fraction(std::span<const double> phi);
@@ -23,7 +23,7 @@ double level_set_fraction(std::span<const double> phi);
 // whose control volumes meet the body's bounding box, with the body's distance as the
 // grid sees it; zero elsewhere. On a one-cell periodic axis the control volume's midplane
 // stands for it.
-IndicatorPatch volume_fraction(const Grid& grid, int location, const RigidBody& body, const BodyDistance& distance,
-                               const Box& within);
+bodies::IndicatorPatch volume_fraction(const grid::Grid& grid, int location, const bodies::RigidBody& body,
+                                       const BodyDistance& distance, const grid::Box& within);
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::ibm

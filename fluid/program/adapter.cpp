@@ -22,11 +22,11 @@ void check_size(const std::vector<participant::PoseRow>& poses, std::size_t bodi
 }
 
 // Periodic axes have their faces from the grid already.
-fluid::BoundaryConditions boundary_conditions(const fluid::Grid& grid, const FluidSetup& s) {
-  fluid::BoundaryConditions bc(grid);
+fluid::grid::BoundaryConditions boundary_conditions(const fluid::grid::Grid& grid, const FluidSetup& s) {
+  fluid::grid::BoundaryConditions bc(grid);
   for (int a = 0; a < 3; ++a)
     if (!s.axes[static_cast<std::size_t>(a)].periodic())
-      for (fluid::Side side : {fluid::Side::lower, fluid::Side::upper})
+      for (fluid::grid::Side side : {fluid::grid::Side::lower, fluid::grid::Side::upper})
         bc.set(a, side, s.boundaries[static_cast<std::size_t>(2 * a + static_cast<int>(side))]);
   return bc;
 }
@@ -52,10 +52,10 @@ struct FluidSolver::Flow {
         flow(grid, bc, s.properties, s.steps),
         bodies(fluid::make_bodies(grid, s.body_method)) {}
 
-  fluid::Grid grid;
-  fluid::BoundaryConditions bc;
-  fluid::NavierStokes flow;
-  std::unique_ptr<fluid::BodyTreatment> bodies;
+  fluid::grid::Grid grid;
+  fluid::grid::BoundaryConditions bc;
+  fluid::navier_stokes::NavierStokes flow;
+  std::unique_ptr<fluid::bodies::BodyTreatment> bodies;
   std::unique_ptr<BodySurfaces> surfaces;  // once the bodies are added
   std::optional<BodyResponses> responses;  // with the immersed boundary, once the bodies are added
 };
@@ -63,7 +63,7 @@ struct FluidSolver::Flow {
 FluidSolver::FluidSolver(bool prescribed) : prescribed_(prescribed) {}
 FluidSolver::~FluidSolver() = default;
 
-const fluid::NavierStokes& FluidSolver::flow() const { return flow_->flow; }
+const fluid::navier_stokes::NavierStokes& FluidSolver::flow() const { return flow_->flow; }
 
 participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const std::string&,
                                              const std::vector<participant::PoseRow>& poses,
@@ -72,12 +72,12 @@ participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const st
   // Before the solvers exist: they read the flags when they are created.
   insert_petsc_flags(setup_.petsc);
   flow_ = std::make_unique<Flow>(setup_);
-  for (const fluid::RigidBody& b : setup_.bodies) flow_->bodies->add(b);
+  for (const fluid::bodies::RigidBody& b : setup_.bodies) flow_->bodies->add(b);
   flow_->surfaces = std::make_unique<BodySurfaces>(flow_->grid, *flow_->bodies, setup_.body_names);
   // Fixed bodies never move, so a scene of them alone (Hasimoto's array) needs no responses,
   // whose measurement runs 96 windows of the scene's steps.
   const bool moving = std::any_of(scene.bodies.begin(), scene.bodies.end(), [](const auto& b) { return !b.fixed; });
-  if (std::holds_alternative<fluid::IbmOptions>(setup_.body_method) && moving) {
+  if (std::holds_alternative<fluid::ibm::IbmOptions>(setup_.body_method) && moving) {
     std::vector<std::size_t> same_shape;
     std::vector<bool> fixed;
     for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
@@ -89,8 +89,8 @@ participant::Outputs FluidSolver::initialise(const scene::Scene& scene, const st
     flow_->responses.emplace(flow_->grid, setup_.bodies, same_shape, fixed, setup_.properties, setup_.steps,
                              setup_.body_method, scene.coupling.window);
   }
-  const fluid::Point u0 = setup_.initial_velocity;
-  flow_->flow.set_velocity([&](const fluid::Point&) { return u0; });
+  const fluid::grid::Point u0 = setup_.initial_velocity;
+  flow_->flow.set_velocity([&](const fluid::grid::Point&) { return u0; });
   // The coupler's poses (the rigid-body program's centres of mass) win over the scene's.
   place(prescribed_ || poses.empty() ? program::poses_at(setup_.motions, 0) : poses);
   if (!state.empty()) restore(state);
@@ -112,7 +112,7 @@ participant::Outputs FluidSolver::advance(const participant::Window& w, const pa
   const double length = w.t1 - w.t0;
   const auto steps = flow_->flow.advance_to(
       w.t1, flow_->bodies->for_step(), [&](double t) { place(poses_at(w, in, t)); },
-      [&](const fluid::StepReport& r) {
+      [&](const fluid::navier_stokes::StepReport& r) {
         if (!std::isfinite(r.max_divergence))
           throw std::runtime_error("fluid diverged at t = " + std::to_string(r.time) + " (non-finite velocity)");
         const std::vector<participant::ForceRow> f = forces();
@@ -122,7 +122,7 @@ participant::Outputs FluidSolver::advance(const participant::Window& w, const pa
         }
       });
   steps_ += steps.size();
-  for (const fluid::StepReport& r : steps) stage_seconds_ += r.seconds;
+  for (const fluid::navier_stokes::StepReport& r : steps) stage_seconds_ += r.seconds;
   return {prescribed_ ? poses_ : std::vector<participant::PoseRow>{}, mean, static_cast<double>(steps.size()),
           responses(start, mean)};
 }
@@ -145,7 +145,7 @@ void FluidSolver::place(const std::vector<participant::PoseRow>& poses) {
 
 std::vector<participant::ForceRow> FluidSolver::forces() const {
   std::vector<participant::ForceRow> out;
-  for (const fluid::HydrodynamicLoad& l : flow_->bodies->loads(flow_->flow)) out.push_back({l.force, l.torque});
+  for (const fluid::bodies::HydrodynamicLoad& l : flow_->bodies->loads(flow_->flow)) out.push_back({l.force, l.torque});
   return out;
 }
 

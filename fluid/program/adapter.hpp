@@ -31,10 +31,10 @@ class FluidSolver final : public participant::Solver {
   // Cell-centred velocity, pressure and alpha (cell_fields.hpp), whole on rank 0; collective.
   field::FieldFrame fields() const override;
 
-  const fluid::NavierStokes& flow() const;
+  const fluid::navier_stokes::NavierStokes& flow() const;
   // The steps taken on this rank so far, and the seconds of each stage of them summed.
   std::size_t steps() const { return steps_; }
-  const fluid::StageSeconds& stage_seconds() const { return stage_seconds_; }
+  const fluid::navier_stokes::StageSeconds& stage_seconds() const { return stage_seconds_; }
 
  private:
   struct Flow;
@@ -52,7 +52,7 @@ class FluidSolver final : public participant::Solver {
   std::unique_ptr<Flow> flow_;
   std::vector<participant::PoseRow> poses_;  // where the bodies are now
   std::size_t steps_ = 0;
-  fluid::StageSeconds stage_seconds_;
+  fluid::navier_stokes::StageSeconds stage_seconds_;
 };
 
 }  // namespace cosim::fluid::program

@@ -22,12 +22,13 @@ constexpr std::size_t kRemembered = fluid::kResponseWindows - 1;
 
 }  // namespace
 
-BodyResponses::BodyResponses(const fluid::Grid& grid, const std::vector<fluid::RigidBody>& bodies,
+BodyResponses::BodyResponses(const fluid::grid::Grid& grid, const std::vector<fluid::bodies::RigidBody>& bodies,
                              const std::vector<std::size_t>& same_shape, const std::vector<bool>& fixed,
-                             const fluid::FluidProperties& fluid, const fluid::TimeStepOptions& steps,
-                             const fluid::BodyOptions& method, double window)
+                             const fluid::navier_stokes::FluidProperties& fluid,
+                             const fluid::navier_stokes::TimeStepOptions& steps, const fluid::BodyOptions& method,
+                             double window)
     : changes_(bodies.size()) {
-  const auto width = [&](const fluid::RigidBody& body) {
+  const auto width = [&](const fluid::bodies::RigidBody& body) {
     const Eigen::Vector3d& x = body.pose.position();
     return grid.finest_width_at({x[0], x[1], x[2]});
   };

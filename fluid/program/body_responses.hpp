@@ -26,9 +26,9 @@ class BodyResponses {
   // shape (b itself if none before it), whose tensors b shares where the grid is as fine as there. A fixed
   // body's velocity never changes: its tensors are zero, not measured (a container's could
   // not be).
-  BodyResponses(const fluid::Grid& grid, const std::vector<fluid::RigidBody>& bodies,
+  BodyResponses(const fluid::grid::Grid& grid, const std::vector<fluid::bodies::RigidBody>& bodies,
                 const std::vector<std::size_t>& same_shape, const std::vector<bool>& fixed,
-                const fluid::FluidProperties& fluid, const fluid::TimeStepOptions& steps,
+                const fluid::navier_stokes::FluidProperties& fluid, const fluid::navier_stokes::TimeStepOptions& steps,
                 const fluid::BodyOptions& method, double window);
 
   // The rows after a window in which the bodies' velocities (linear, then angular; scene

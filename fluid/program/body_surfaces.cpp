@@ -5,9 +5,9 @@
 
 namespace cosim::fluid::program {
 
-std::vector<Eigen::Vector3d> surface_points(const fluid::Axes& axes, const fluid::RigidBody& body,
+std::vector<Eigen::Vector3d> surface_points(const fluid::grid::Axes& axes, const fluid::bodies::RigidBody& body,
                                             geometry::SampledShapes& sampled) {
-  const auto axis = [&](int d) -> const fluid::Axis& { return axes[static_cast<std::size_t>(d)]; };
+  const auto axis = [&](int d) -> const fluid::grid::Axis& { return axes[static_cast<std::size_t>(d)]; };
   int flat = -1;
   for (int d = 0; d < 3; ++d)
     if (axis(d).degenerate()) flat = d;
@@ -24,14 +24,15 @@ std::vector<Eigen::Vector3d> surface_points(const fluid::Axes& axes, const fluid
   return frame;
 }
 
-BodySurfaces::BodySurfaces(const fluid::Grid& grid, const fluid::BodyTreatment& bodies, std::vector<std::string> names)
+BodySurfaces::BodySurfaces(const fluid::grid::Grid& grid, const fluid::bodies::BodyTreatment& bodies,
+                           std::vector<std::string> names)
     : names_(std::move(names)) {
   geometry::SampledShapes sampled;
   for (std::size_t b = 0; b < bodies.size(); ++b)
     points_.push_back(surface_points(grid.axes(), bodies.body(b), sampled));
 }
 
-std::vector<field::PointSet> BodySurfaces::where(const fluid::BodyTreatment& bodies) const {
+std::vector<field::PointSet> BodySurfaces::where(const fluid::bodies::BodyTreatment& bodies) const {
   std::vector<field::PointSet> out;
   for (std::size_t b = 0; b < points_.size(); ++b) {
     field::PointSet set{names_.at(b), {}};

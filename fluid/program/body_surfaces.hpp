@@ -7,24 +7,25 @@
 #include <string>
 #include <vector>
 
-#include "fluid/body_treatment.hpp"
-#include "fluid/grid.hpp"
-#include "geometry/sampled_shapes.hpp"
 #include "coupler/field/field_frame.hpp"
+#include "fluid/bodies/body_treatment.hpp"
+#include "fluid/grid/grid.hpp"
+#include "geometry/sampled_shapes.hpp"
 
 namespace cosim::fluid::program {
 
 // Body `body`'s surface points in its frame on a grid of `axes`, as BodySurfaces keeps them
 // (`sampled` reuses a shape's sampling for the bodies that share it).
-std::vector<Eigen::Vector3d> surface_points(const fluid::Axes& axes, const fluid::RigidBody& body,
+std::vector<Eigen::Vector3d> surface_points(const fluid::grid::Axes& axes, const fluid::bodies::RigidBody& body,
                                             geometry::SampledShapes& sampled);
 
 class BodySurfaces {
  public:
   // `bodies` where they start, named as in the scene.
-  BodySurfaces(const fluid::Grid& grid, const fluid::BodyTreatment& bodies, std::vector<std::string> names);
+  BodySurfaces(const fluid::grid::Grid& grid, const fluid::bodies::BodyTreatment& bodies,
+               std::vector<std::string> names);
   // One set per body, named after it, where `bodies` places it now.
-  std::vector<field::PointSet> where(const fluid::BodyTreatment& bodies) const;
+  std::vector<field::PointSet> where(const fluid::bodies::BodyTreatment& bodies) const;
 
  private:
   std::vector<std::string> names_;

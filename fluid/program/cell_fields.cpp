@@ -9,9 +9,9 @@
 namespace cosim::fluid::program {
 namespace {
 
-using fluid::Index;
+using fluid::grid::Index;
 
-std::vector<double> nodes(const fluid::Axis& axis) {
+std::vector<double> nodes(const fluid::grid::Axis& axis) {
   std::vector<double> x;
   for (int i = 0; i <= axis.cells(); ++i) x.push_back(axis.face(i));
   return x;
@@ -41,7 +41,7 @@ std::vector<double> on_rank_zero(DM dm, Vec global) {
 }
 
 // A cell field that starts at zero and `fill` sets on owned cells, gathered on rank 0.
-std::vector<double> cell_values(const fluid::Grid& grid, const std::function<void(PetscScalar***)>& fill) {
+std::vector<double> cell_values(const fluid::grid::Grid& grid, const std::function<void(PetscScalar***)>& fill) {
   DM dm = grid.cell_dm();
   Vec v = nullptr;
   PetscScalar*** a = nullptr;
@@ -58,7 +58,7 @@ std::vector<double> cell_values(const fluid::Grid& grid, const std::function<voi
 // Component c at the cell centres: the mean of the cell's two faces normal to c. The upper
 // face may be the next rank's (or, on a periodic axis, the first face again), so the faces
 // are read from a ghosted copy.
-std::vector<double> centred_velocity(const fluid::Grid& grid, Vec u, int c) {
+std::vector<double> centred_velocity(const fluid::grid::Grid& grid, Vec u, int c) {
   DM dm = grid.velocity_dm(c);
   Vec local = nullptr;
   const PetscScalar*** a = nullptr;
@@ -67,8 +67,8 @@ std::vector<double> centred_velocity(const fluid::Grid& grid, Vec u, int c) {
   COSIM_PETSC(DMGlobalToLocalEnd(dm, u, INSERT_VALUES, local));
   COSIM_PETSC(DMDAVecGetArrayRead(dm, local, &a));
   std::vector<double> out = cell_values(grid, [&](PetscScalar*** cell) {
-    fluid::for_each_index(grid.owned(grid.cell_dm()), [&](const Index& p) {
-      const Index q = fluid::shifted(p, c, 1);
+    fluid::grid::for_each_index(grid.owned(grid.cell_dm()), [&](const Index& p) {
+      const Index q = fluid::grid::shifted(p, c, 1);
       cell[p[2]][p[1]][p[0]] = 0.5 * (a[p[2]][p[1]][p[0]] + a[q[2]][q[1]][q[0]]);
     });
   });
@@ -79,8 +79,9 @@ std::vector<double> centred_velocity(const fluid::Grid& grid, Vec u, int c) {
 
 }  // namespace
 
-field::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::BodyTreatment& bodies) {
-  const fluid::Grid& grid = flow.grid();
+field::FieldFrame cell_fields(const fluid::navier_stokes::NavierStokes& flow,
+                              const fluid::bodies::BodyTreatment& bodies) {
+  const fluid::grid::Grid& grid = flow.grid();
   field::RectilinearGrid axes;
   for (int a = 0; a < 3; ++a) axes.nodes[static_cast<std::size_t>(a)] = nodes(grid.axis(a));
   field::FieldFrame frame{std::move(axes), {}};
@@ -91,8 +92,8 @@ field::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::Body
   // Only each body's own cells are visited (its patch lies within this rank's cells).
   std::vector<double> alpha = cell_values(grid, [&](PetscScalar*** a) {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      const fluid::IndicatorPatch body = bodies.cell_fraction(b);
-      fluid::for_each_index(body.range(), [&](const Index& m) {
+      const fluid::bodies::IndicatorPatch body = bodies.cell_fraction(b);
+      fluid::grid::for_each_index(body.range(), [&](const Index& m) {
         PetscScalar& largest = a[m[2]][m[1]][m[0]];
         largest = std::max(largest, body(m));
       });

@@ -3,14 +3,15 @@
 // pressure, and alpha (the bodies' volume fraction, the largest over the bodies).
 #pragma once
 
-#include "fluid/body_treatment.hpp"
-#include "fluid/navier_stokes.hpp"
 #include "coupler/field/field_frame.hpp"
+#include "fluid/bodies/body_treatment.hpp"
+#include "fluid/navier_stokes/navier_stokes.hpp"
 
 namespace cosim::fluid::program {
 
 // Collective: every rank computes its own cells and rank 0 receives the whole grid in the
 // frame's order (other ranks get the grid's nodes and no fields).
-field::FieldFrame cell_fields(const fluid::NavierStokes& flow, const fluid::BodyTreatment& bodies);
+field::FieldFrame cell_fields(const fluid::navier_stokes::NavierStokes& flow,
+                              const fluid::bodies::BodyTreatment& bodies);
 
 }  // namespace cosim::fluid::program

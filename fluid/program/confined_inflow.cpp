@@ -12,15 +12,16 @@ constexpr int kSamples = 16;
 
 }  // namespace
 
-fluid::VelocityFunction confined_inflow(fluid::VelocityFunction profile, const geometry::Container& container,
-                                        const geometry::Pose& pose, int axis, fluid::Side side,
-                                        const std::vector<fluid::Axis>& axes) {
+fluid::grid::VelocityFunction confined_inflow(fluid::grid::VelocityFunction profile,
+                                              const geometry::Container& container, const geometry::Pose& pose,
+                                              int axis, fluid::grid::Side side,
+                                              const std::vector<fluid::grid::Axis>& axes) {
   const int t1 = (axis + 1) % 3, t2 = (axis + 2) % 3;
-  const fluid::Axis a1 = axes[static_cast<std::size_t>(t1)], a2 = axes[static_cast<std::size_t>(t2)];
-  const fluid::Axis& normal = axes[static_cast<std::size_t>(axis)];
+  const fluid::grid::Axis a1 = axes[static_cast<std::size_t>(t1)], a2 = axes[static_cast<std::size_t>(t2)];
+  const fluid::grid::Axis& normal = axes[static_cast<std::size_t>(axis)];
   auto fraction = std::make_shared<std::vector<double>>(static_cast<std::size_t>(a1.cells() * a2.cells()));
   Eigen::Vector3d x;
-  x[axis] = side == fluid::Side::lower ? normal.lo() : normal.hi();
+  x[axis] = side == fluid::grid::Side::lower ? normal.lo() : normal.hi();
   double open = 0;
   for (int j = 0; j < a2.cells(); ++j)
     for (int i = 0; i < a1.cells(); ++i) {
@@ -36,11 +37,11 @@ fluid::VelocityFunction confined_inflow(fluid::VelocityFunction profile, const g
       open += f;
     }
   if (open == 0) throw std::invalid_argument("no part of the face lies inside the container");
-  return [=](const fluid::Point& p, double t) {
+  return [=](const fluid::grid::Point& p, double t) {
     const double f = (*fraction)[static_cast<std::size_t>(a2.cell_at(p[static_cast<std::size_t>(t2)]) * a1.cells() +
                                                           a1.cell_at(p[static_cast<std::size_t>(t1)]))];
-    const fluid::Point u = profile(p, t);
-    return fluid::Point{f * u[0], f * u[1], f * u[2]};
+    const fluid::grid::Point u = profile(p, t);
+    return fluid::grid::Point{f * u[0], f * u[1], f * u[2]};
   };
 }
 

@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "fluid/axis.hpp"
-#include "fluid/boundary_conditions.hpp"
+#include "fluid/grid/axis.hpp"
+#include "fluid/grid/boundary_conditions.hpp"
 #include "geometry/container.hpp"
 
 namespace cosim::fluid::program {
@@ -15,8 +15,9 @@ namespace cosim::fluid::program {
 // points. The flow rate through the face is then the profile's over the container's cross
 // section, not over the face cells whose centres lie inside it. Throws std::invalid_argument
 // when no part of the face lies inside (a cap across the face, or the face beside it).
-fluid::VelocityFunction confined_inflow(fluid::VelocityFunction profile, const geometry::Container& container,
-                                        const geometry::Pose& pose, int axis, fluid::Side side,
-                                        const std::vector<fluid::Axis>& axes);
+fluid::grid::VelocityFunction confined_inflow(fluid::grid::VelocityFunction profile,
+                                              const geometry::Container& container, const geometry::Pose& pose,
+                                              int axis, fluid::grid::Side side,
+                                              const std::vector<fluid::grid::Axis>& axes);
 
 }  // namespace cosim::fluid::program

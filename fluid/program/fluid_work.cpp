@@ -7,9 +7,9 @@
 #include <variant>
 
 #include "fluid/ibm/immersed_boundary.hpp"
+#include "fluid/navier_stokes/time_step_controller.hpp"
 #include "fluid/program/body_surfaces.hpp"
 #include "fluid/program/settling_speed.hpp"
-#include "fluid/time_step_controller.hpp"
 
 namespace cosim::fluid::program {
 namespace {
@@ -42,14 +42,14 @@ double peak_rate(const FluidSetup& setup, const scene::Scene& scene) {
       if (setup.axes[d].cells() > 1) r += std::abs(u[static_cast<Eigen::Index>(d)]) / h[d];
     return r;
   };
-  const auto point = [](const fluid::Point& u) { return Eigen::Vector3d(u[0], u[1], u[2]); };
+  const auto point = [](const fluid::grid::Point& u) { return Eigen::Vector3d(u[0], u[1], u[2]); };
   double flow = rate(point(setup.initial_velocity));
   constexpr int kSamples = 9;  // per direction across a face
   for (std::size_t face = 0; face < setup.boundaries.size(); ++face) {
-    const fluid::Boundary& b = setup.boundaries[face];
+    const fluid::grid::Boundary& b = setup.boundaries[face];
     if (!b.velocity) continue;
     const std::size_t normal = face / 2, u = (normal + 1) % 3, v = (normal + 2) % 3;
-    fluid::Point x{};
+    fluid::grid::Point x{};
     x[normal] = face % 2 == 0 ? setup.axes[normal].lo() : setup.axes[normal].hi();
     for (int i = 0; i < kSamples; ++i)
       for (int j = 0; j < kSamples; ++j) {
@@ -63,7 +63,7 @@ double peak_rate(const FluidSetup& setup, const scene::Scene& scene) {
   const bool falling = scene.has_effect(scene::Effect::Gravity) && g.norm() > 0;
   for (std::size_t b = 0; b < setup.bodies.size() && b < scene.bodies.size(); ++b) {
     const scene::Body& body = scene.bodies[b];
-    const fluid::RigidBody& held = setup.bodies[b];
+    const fluid::bodies::RigidBody& held = setup.bodies[b];
     flow = std::max(flow, rate(held.velocity));
     if (body.fixed || !falling) continue;
     const double diameter = std::cbrt(6 * geometry::volume(held.shape) / std::numbers::pi);
@@ -79,7 +79,7 @@ double peak_rate(const FluidSetup& setup, const scene::Scene& scene) {
 double expected_dt(const FluidSetup& setup, const scene::Scene& scene) {
   const double window = scene.coupling.window;
   const auto windows = static_cast<long>(scene.windows());
-  const fluid::TimeStepController controller(setup.steps);
+  const fluid::navier_stokes::TimeStepController controller(setup.steps);
   const double steps = controller.steps_per_window(peak_rate(setup, scene), window, std::max(1L, windows));
   return steps > 0 ? window / steps : setup.steps.dt_max;
 }
@@ -87,20 +87,20 @@ double expected_dt(const FluidSetup& setup, const scene::Scene& scene) {
 }  // namespace
 
 participant::WorkReport fluid_work(const FluidSetup& setup, const scene::Scene& scene) {
-  const fluid::Axes axes{setup.axes[0], setup.axes[1], setup.axes[2]};
+  const fluid::grid::Axes axes{setup.axes[0], setup.axes[1], setup.axes[2]};
   std::uint64_t cells = 1;
-  for (const fluid::Axis& axis : axes) cells *= static_cast<std::uint64_t>(axis.cells());
+  for (const fluid::grid::Axis& axis : axes) cells *= static_cast<std::uint64_t>(axis.cells());
 
   // The solver's own placement (retraction, thinning, the section on a two-dimensional
   // grid): the count depends on each body's cell width and curvature, so no formula would
   // match it. Equal shapes are sampled once (geometry::SampledShapes).
   std::uint64_t markers = 0;
-  if (const auto* ibm = std::get_if<fluid::IbmOptions>(&setup.body_method))
-    markers = fluid::ImmersedBoundary::marker_count(axes, *ibm, setup.bodies);
+  if (const auto* ibm = std::get_if<fluid::ibm::IbmOptions>(&setup.body_method))
+    markers = fluid::ibm::ImmersedBoundary::marker_count(axes, *ibm, setup.bodies);
 
   geometry::SampledShapes sampled;
   std::uint64_t points = 0;
-  for (const fluid::RigidBody& body : setup.bodies) points += surface_points(axes, body, sampled).size();
+  for (const fluid::bodies::RigidBody& body : setup.bodies) points += surface_points(axes, body, sampled).size();
 
   return {.program = "fluid",
           .per_step = {{"cells", cells}, {"markers", markers}},

@@ -13,7 +13,7 @@
 namespace cosim::fluid::program {
 namespace {
 
-using fluid::Boundary;
+using fluid::grid::Boundary;
 using scene::Range;
 using scene::Reader;
 
@@ -33,7 +33,7 @@ const scene::Participant& section(const scene::Scene& scene) {
   return *p;
 }
 
-fluid::Point point(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
+fluid::grid::Point point(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 
 // Whole numbers per axis under `key`, from 1 to each axis's `most`.
 std::array<int, 3> whole_per_axis(const Reader& grid, const char* key, const std::array<double, 3>& most,
@@ -64,23 +64,23 @@ std::array<int, 3> rank_layout(const Reader& grid, const std::array<int, 3>& cel
   return out;
 }
 
-fluid::ViscosityModel viscosity(const Reader& r) {
-  fluid::ViscosityModel model = fluid::ViscosityModel::newtonian(1);
+fluid::viscous::ViscosityModel viscosity(const Reader& r) {
+  fluid::viscous::ViscosityModel model = fluid::viscous::ViscosityModel::newtonian(1);
   switch (r.choice("model", viscosity_names)) {
     case 0:
-      model = fluid::ViscosityModel::newtonian(r.number("mu", Range::above(0)));
+      model = fluid::viscous::ViscosityModel::newtonian(r.number("mu", Range::above(0)));
       break;
     case 1: {
       const double k = r.number("consistency", Range::above(0)), n = r.number("index", Range::above(0));
       const double lo = r.number("mu_min", Range::above(0)), hi = r.number("mu_max", Range::above(0));
       if (hi < lo) r.fail("mu_max", "must be >= mu_min");
-      model = fluid::ViscosityModel::power_law(k, n, lo, hi);
+      model = fluid::viscous::ViscosityModel::power_law(k, n, lo, hi);
       break;
     }
     default: {
       const double mu0 = r.number("mu_zero", Range::above(0)), mu_inf = r.number("mu_infinity", Range::at_least(0));
-      model = fluid::ViscosityModel::carreau(mu0, mu_inf, r.number("time_constant", Range::above(0)),
-                                             r.number("index", Range::above(0)));
+      model = fluid::viscous::ViscosityModel::carreau(mu0, mu_inf, r.number("time_constant", Range::above(0)),
+                                                      r.number("index", Range::above(0)));
     }
   }
   r.finish();
@@ -89,16 +89,16 @@ fluid::ViscosityModel viscosity(const Reader& r) {
 
 // Peak velocity `u`, times prod 4 s (1 - s) over the face's bounded tangential axes when
 // parabolic (s the position across the axis).
-fluid::VelocityFunction inflow(fluid::Point u, bool parabolic, int axis, const scene::Domain& d,
-                               const std::array<bool, 3>& periodic) {
-  return [=](const fluid::Point& x, double) {
+fluid::grid::VelocityFunction inflow(fluid::grid::Point u, bool parabolic, int axis, const scene::Domain& d,
+                                     const std::array<bool, 3>& periodic) {
+  return [=](const fluid::grid::Point& x, double) {
     double f = 1;
     for (int t = 0; t < 3; ++t)
       if (parabolic && t != axis && !periodic[t]) {
         const double s = (x[t] - d.min[t]) / (d.max[t] - d.min[t]);
         f *= 4 * s * (1 - s);
       }
-    return fluid::Point{f * u[0], f * u[1], f * u[2]};
+    return fluid::grid::Point{f * u[0], f * u[1], f * u[2]};
   };
 }
 
@@ -135,7 +135,7 @@ std::vector<Confinement> read_boundaries(const Reader& options, const scene::Dom
         s.boundaries[f] = Boundary::moving_wall(point(r.vec3("velocity", {0, 0, 0})));
         break;
       case 1: {
-        const fluid::Point u = point(r.vec3("velocity"));
+        const fluid::grid::Point u = point(r.vec3("velocity"));
         const bool parabolic = r.choice("profile", profile_names, 0) == 1;
         s.boundaries[f] = Boundary::inflow(inflow(u, parabolic, axis, domain, periodic));
         if (r.has("within")) {
@@ -160,11 +160,11 @@ void confine_inflows(const std::vector<Confinement>& confined, FluidSetup& s) {
   for (const Confinement& c : confined) {
     const auto named = std::find(s.body_names.begin(), s.body_names.end(), c.body);
     if (named == s.body_names.end()) c.keys.fail("within", "no body of that name");
-    const fluid::RigidBody& body = s.bodies[static_cast<std::size_t>(named - s.body_names.begin())];
+    const fluid::bodies::RigidBody& body = s.bodies[static_cast<std::size_t>(named - s.body_names.begin())];
     const auto* container = std::get_if<geometry::Container>(&body.shape);
     if (container == nullptr) c.keys.fail("within", "not a container (a fixed body with shape: {container: true})");
     const int axis = static_cast<int>(c.face / 2);
-    const auto side = c.face % 2 == 0 ? fluid::Side::lower : fluid::Side::upper;
+    const auto side = c.face % 2 == 0 ? fluid::grid::Side::lower : fluid::grid::Side::upper;
     try {
       s.boundaries[c.face] =
           Boundary::inflow(confined_inflow(s.boundaries[c.face].velocity, *container, body.pose, axis, side, s.axes));
@@ -178,9 +178,9 @@ void confine_inflows(const std::vector<Confinement>& confined, FluidSetup& s) {
 // retraction, curvature_retraction, marker_spacing, spread_at_theta} or
 // {method: staircase, subsamples, surface_offset}; a key of the other method is refused.
 fluid::BodyOptions read_body_method(const Reader& options) {
-  const fluid::FbmOptions staircase{.offset = fluid::kCalibratedSurfaceOffset};
-  fluid::IbmOptions defaults;
-  defaults.retraction = fluid::calibrated_retraction(defaults.kernel);
+  const fluid::staircase::FbmOptions staircase{.offset = fluid::staircase::kCalibratedSurfaceOffset};
+  fluid::ibm::IbmOptions defaults;
+  defaults.retraction = fluid::ibm::calibrated_retraction(defaults.kernel);
   if (!options.has("bodies")) return defaults;
   const Reader r = options.map("bodies");
   const bool ibm = r.choice("method", method_names, 0) == 0;
@@ -190,21 +190,22 @@ fluid::BodyOptions read_body_method(const Reader& options) {
     if (*key && r.has(key)) r.fail(key, std::string("applies to method ") + (ibm ? "staircase" : "ibm") + " only");
   fluid::BodyOptions out;
   if (ibm) {
-    fluid::IbmOptions o;
-    o.kernel = static_cast<fluid::DeltaKernel>(r.choice("kernel", kernel_names, static_cast<std::size_t>(o.kernel)));
+    fluid::ibm::IbmOptions o;
+    o.kernel =
+        static_cast<fluid::ibm::DeltaKernel>(r.choice("kernel", kernel_names, static_cast<std::size_t>(o.kernel)));
     o.sweeps = r.integer("sweeps", o.sweeps, Range::at_least(1));
     o.corrections = r.integer("corrections", o.corrections, Range::at_least(0));
     o.no_slip_tolerance = r.number("no_slip_tolerance", o.no_slip_tolerance, Range::open(0, 1));
     o.tolerance = r.number("tolerance", o.tolerance, Range::open(0, 1));
-    const fluid::Retraction calibrated = fluid::calibrated_retraction(o.kernel);
-    o.retraction = fluid::Retraction{r.number("retraction", calibrated.constant, Range::closed(0, 2)),
-                                     r.number("curvature_retraction", calibrated.curvature, Range::closed(-2, 2)),
-                                     calibrated.concave};
+    const fluid::ibm::Retraction calibrated = fluid::ibm::calibrated_retraction(o.kernel);
+    o.retraction = fluid::ibm::Retraction{r.number("retraction", calibrated.constant, Range::closed(0, 2)),
+                                          r.number("curvature_retraction", calibrated.curvature, Range::closed(-2, 2)),
+                                          calibrated.concave};
     o.spacing = r.number("marker_spacing", o.spacing, Range::closed(0.25, 2));
     o.spread_at_theta = r.boolean("spread_at_theta", o.spread_at_theta);
     out = o;
   } else {
-    fluid::FbmOptions o = staircase;
+    fluid::staircase::FbmOptions o = staircase;
     o.subsamples = r.integer("subsamples", o.subsamples, Range::at_least(1));
     o.offset = r.number("surface_offset", o.offset, Range::at_least(0));
     out = o;
@@ -221,7 +222,7 @@ void read_bodies(const scene::Scene& scene, const scene::Participant& p, FluidSe
     if (body.shape.type == scene::ShapeType::Plane)
       throw scene::SceneError(scene.file.string(), p.line, key, "plane",
                               "cosim-fluid cannot hold a plane body: make it a wall boundary (participants.fluid)");
-    fluid::RigidBody r{.shape = scene::shape_of(body.shape), .pose = {}};
+    fluid::bodies::RigidBody r{.shape = scene::shape_of(body.shape), .pose = {}};
     const Eigen::Quaterniond q = scene::to_eigen(body.orientation);
     const Eigen::Vector3d x = scene::to_eigen(body.position) + q * scene::com_shift(r.shape);
     r.pose = geometry::Pose(x, q);
@@ -251,8 +252,8 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   grid.finish();
   for (int a = 0; a < 3; ++a) {
     const double lo = scene.domain.min[a], hi = scene.domain.max[a];
-    s.axes.push_back(beta[a] > 0 ? fluid::Axis::stretched(n[a], lo, hi, beta[a], periodic[a])
-                                 : fluid::Axis::uniform(n[a], lo, hi, periodic[a]));
+    s.axes.push_back(beta[a] > 0 ? fluid::grid::Axis::stretched(n[a], lo, hi, beta[a], periodic[a])
+                                 : fluid::grid::Axis::uniform(n[a], lo, hi, periodic[a]));
   }
 
   s.properties.density = options.number("density", Range::above(0));
@@ -266,11 +267,11 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   s.steps.dt_initial = options.number("dt_initial", std::min(s.steps.dt_initial, p.dt), Range::left_open(0, p.dt));
   s.steps.theta = options.number("theta", s.steps.theta, Range::closed(0.5, 1));
   s.steps.pressure_update =
-      static_cast<fluid::PressureUpdate>(options.choice("pressure_update", pressure_update_names, 0));
+      static_cast<fluid::navier_stokes::PressureUpdate>(options.choice("pressure_update", pressure_update_names, 0));
   s.steps.convection = options.boolean("convection", true);
   s.body_method = read_body_method(options);
-  if (s.steps.pressure_update == fluid::PressureUpdate::exact &&
-      std::holds_alternative<fluid::FbmOptions>(s.body_method))
+  if (s.steps.pressure_update == fluid::navier_stokes::PressureUpdate::exact &&
+      std::holds_alternative<fluid::staircase::FbmOptions>(s.body_method))
     options.fail("pressure_update",
                  "exact needs bodies: {method: ibm}: the staircase's imposed faces take the "
                  "standard projection");

@@ -25,7 +25,7 @@ double balance_reynolds(double archimedes) {
 }  // namespace
 
 double settling_speed(double diameter, double body_density, double fluid_density,
-                      const fluid::ViscosityModel& viscosity, double gravity) {
+                      const fluid::viscous::ViscosityModel& viscosity, double gravity) {
   const double excess = std::abs(body_density - fluid_density);
   if (!(excess > 0) || !(gravity > 0) || !(diameter > 0) || !(fluid_density > 0)) return 0;
   // A shear-thinning fluid's viscosity depends on the speed: a few rounds settle it.

@@ -2,7 +2,7 @@
 // run expects the fluid around a free body to reach (fluid_work.hpp).
 #pragma once
 
-#include "fluid/viscosity_model.hpp"
+#include "fluid/viscous/viscosity_model.hpp"
 
 namespace cosim::fluid::program {
 
@@ -14,6 +14,6 @@ namespace cosim::fluid::program {
 // other bodies slow a body down, so this is an upper bound for the estimate. 0 for a body
 // as dense as the fluid or without gravity.
 double settling_speed(double diameter, double body_density, double fluid_density,
-                      const fluid::ViscosityModel& viscosity, double gravity);
+                      const fluid::viscous::ViscosityModel& viscosity, double gravity);
 
 }  // namespace cosim::fluid::program

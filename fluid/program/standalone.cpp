@@ -16,7 +16,7 @@ int run_fluid_standalone(const std::filesystem::path& scene_file, std::filesyste
   return participant::run_on_ranks(solver, PETSC_COMM_WORLD, [&](participant::Solver& lead) {
     participant::run_standalone(scene::load_scene(scene_file), lead, "fluid", std::move(output));
     std::fprintf(stderr, "cosim-fluid: %zu steps: %s\n", solver.steps(),
-                 participant::stage_summary(fluid::kStageNames, solver.stage_seconds().all()).c_str());
+                 participant::stage_summary(fluid::navier_stokes::kStageNames, solver.stage_seconds().all()).c_str());
     return 0;
   });
 }

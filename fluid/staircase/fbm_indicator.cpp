@@ -4,20 +4,21 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fluid/control_volumes.hpp"
+#include "fluid/bodies/control_volumes.hpp"
 #include "geometry/queries.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::staircase {
 
-double IndicatorPatch::operator()(const Index& p) const {
-  std::size_t at = 0, stride = 1;
-  for (int d = 0; d < 3; ++d) {
-    if (p[d] < range_.lo[d] || p[d] >= range_.hi[d]) return 0;
-    at += static_cast<std::size_t>(p[d] - range_.lo[d]) * stride;
-    stride *= static_cast<std::size_t>(range_.hi[d] - range_.lo[d]);
-  }
-  return values_[at];
-}
+using bodies::control_interval;
+using bodies::control_volumes_meeting;
+using bodies::IndicatorPatch;
+using bodies::Interval;
+using bodies::RigidBody;
+using grid::Axis;
+using grid::Box;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
 
 IndicatorPatch indicator(const Grid& grid, int location, const RigidBody& body, const IndicatorOptions& options,
                          const Box& within) {
@@ -83,4 +84,4 @@ IndicatorPatch indicator(const Grid& grid, int location, const RigidBody& body, 
   return {range, std::move(values)};
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::staircase

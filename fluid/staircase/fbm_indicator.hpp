@@ -4,25 +4,11 @@
 // inside the body. Only the points whose control volumes meet the body's bounding box are
 // tested, so the cost follows the body's size in cells, not the grid's; alpha is zero
 // everywhere else.
-#include <vector>
+#include "fluid/bodies/control_volumes.hpp"
+#include "fluid/bodies/rigid_body.hpp"
+#include "fluid/grid/grid.hpp"
 
-#include "fluid/grid.hpp"
-#include "fluid/rigid_body.hpp"
-
-namespace cosim::fluid {
-
-class IndicatorPatch {
- public:
-  IndicatorPatch(Box range, std::vector<double> values) : range_(range), values_(std::move(values)) {}
-  const Box& range() const { return range_; }
-  // Number of grid points the body was tested against.
-  std::size_t tested() const { return values_.size(); }
-  double operator()(const Index& p) const;
-
- private:
-  Box range_;
-  std::vector<double> values_;  // over range_, i fastest
-};
+namespace cosim::fluid::staircase {
 
 struct IndicatorOptions {
   // 1: alpha is 1 or 0 by whether the control volume's midpoint is inside. n > 1: the
@@ -45,7 +31,7 @@ inline constexpr double kCalibratedSurfaceOffset = 0.28;
 // `location` is a velocity component or kCellCentre; `within` limits the
 // points to a rank's share (owned, or with its ghost layer). Bodies must not straddle a
 // periodic boundary: points are not wrapped.
-IndicatorPatch indicator(const Grid& grid, int location, const RigidBody& body, const IndicatorOptions& options,
-                         const Box& within);
+bodies::IndicatorPatch indicator(const grid::Grid& grid, int location, const bodies::RigidBody& body,
+                                 const IndicatorOptions& options, const grid::Box& within);
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::staircase

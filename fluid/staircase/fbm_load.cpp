@@ -4,7 +4,21 @@
 
 #include "fluid/petsc_check.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::staircase {
+
+using bodies::HydrodynamicLoad;
+using bodies::IndicatorPatch;
+using grid::Axis;
+using grid::Box;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
+using grid::kCellCentre;
+using grid::LocalVelocity;
+using grid::Point;
+using grid::shifted;
+using navier_stokes::NavierStokes;
+using viscous::ViscosityField;
 
 namespace {
 
@@ -119,4 +133,4 @@ HydrodynamicLoad hydrodynamic_load(const NavierStokes& flow, const std::array<co
   return {Eigen::Vector3d(load[0], load[1], load[2]), Eigen::Vector3d(load[3], load[4], load[5])};
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::staircase

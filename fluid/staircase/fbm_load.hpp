@@ -12,17 +12,18 @@
 #include <Eigen/Core>
 #include <array>
 
-#include "fluid/body_treatment.hpp"
+#include "fluid/bodies/body_treatment.hpp"
+#include "fluid/navier_stokes/navier_stokes.hpp"
 #include "fluid/staircase/fbm_indicator.hpp"
-#include "fluid/navier_stokes.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::staircase {
 
 // Collective: sums over all ranks. face_alpha[i] covers the ghosted faces of component i;
 // a face counts as the body's where it is >= 1/2 (the imposition rule). The stress is that
 // of the flow's current velocity and pressure, with the generalized-Newtonian viscosity
 // of its last step.
-HydrodynamicLoad hydrodynamic_load(const NavierStokes& flow, const std::array<const IndicatorPatch*, 3>& face_alpha,
-                                   const Eigen::Vector3d& centre);
+bodies::HydrodynamicLoad hydrodynamic_load(const navier_stokes::NavierStokes& flow,
+                                           const std::array<const bodies::IndicatorPatch*, 3>& face_alpha,
+                                           const Eigen::Vector3d& centre);
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::staircase

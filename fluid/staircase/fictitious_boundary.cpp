@@ -2,7 +2,17 @@
 
 #include <stdexcept>
 
-namespace cosim::fluid {
+namespace cosim::fluid::staircase {
+
+using bodies::HydrodynamicLoad;
+using bodies::IndicatorPatch;
+using bodies::RigidBody;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
+using grid::kCellCentre;
+using grid::Point;
+using navier_stokes::NavierStokes;
 
 FictitiousBoundary::FictitiousBoundary(const Grid& grid, FbmOptions options)
     : grid_(grid), options_(options), imposed_(grid) {
@@ -80,4 +90,4 @@ std::size_t FictitiousBoundary::points_tested(std::size_t i) const {
   return n;
 }
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::staircase

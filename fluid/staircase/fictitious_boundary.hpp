@@ -11,40 +11,40 @@
 //   flow.step(fbm.for_step());  fbm.loads(flow)[sphere].force;  fbm.move(sphere, pose, velocity, omega);
 #include <vector>
 
-#include "fluid/body_treatment.hpp"
+#include "fluid/bodies/body_treatment.hpp"
+#include "fluid/bodies/imposed_faces.hpp"
+#include "fluid/bodies/rigid_body.hpp"
+#include "fluid/navier_stokes/navier_stokes.hpp"
 #include "fluid/staircase/fbm_indicator.hpp"
 #include "fluid/staircase/fbm_load.hpp"
-#include "fluid/imposed_faces.hpp"
-#include "fluid/navier_stokes.hpp"
-#include "fluid/rigid_body.hpp"
 
-namespace cosim::fluid {
+namespace cosim::fluid::staircase {
 
 // The offset grows the body at the velocity faces only (what is imposed and what the
 // force integral sees); the cell-centre fractions stay the body's own volume.
 using FbmOptions = IndicatorOptions;
 
-class FictitiousBoundary final : public BodyTreatment {
+class FictitiousBoundary final : public bodies::BodyTreatment {
  public:
   // grid must outlive this object.
-  explicit FictitiousBoundary(const Grid& grid, FbmOptions options = {});
+  explicit FictitiousBoundary(const grid::Grid& grid, FbmOptions options = {});
 
-  std::size_t add(RigidBody body) override;
+  std::size_t add(bodies::RigidBody body) override;
   void move(std::size_t body, const geometry::Pose& pose, const Eigen::Vector3d& velocity,
             const Eigen::Vector3d& angular_velocity) override;
-  const RigidBody& body(std::size_t i) const override { return bodies_.at(i).body; }
+  const bodies::RigidBody& body(std::size_t i) const override { return bodies_.at(i).body; }
   std::size_t size() const override { return bodies_.size(); }
 
-  StepBodies for_step() override { return {.imposed = &imposed_}; }
+  bodies::StepBodies for_step() override { return {.imposed = &imposed_}; }
   // The faces inside bodies with their rigid velocities, which every step imposes.
-  const ImposedFaces& imposed_faces() const { return imposed_; }
+  const bodies::ImposedFaces& imposed_faces() const { return imposed_; }
   // From the flow's current state: the load of the imposed faces (fbm_load.hpp).
-  std::vector<HydrodynamicLoad> loads(const NavierStokes& flow) const override;
+  std::vector<bodies::HydrodynamicLoad> loads(const navier_stokes::NavierStokes& flow) const override;
   // sum of alpha times cell volume over the grid: the body's volume as the grid sees it.
   // Collective.
   double grid_volume(std::size_t i) const;
   // The point-sampled (or sub-sampled) indicator.
-  IndicatorPatch cell_fraction(std::size_t i) const override { return bodies_.at(i).patches[kCellPatch]; }
+  bodies::IndicatorPatch cell_fraction(std::size_t i) const override { return bodies_.at(i).patches[kCellPatch]; }
   // Grid points tested against body i's shape on this rank at its last move (faces of the
   // three components and cell centres).
   std::size_t points_tested(std::size_t i) const;
@@ -52,16 +52,16 @@ class FictitiousBoundary final : public BodyTreatment {
  private:
   static constexpr std::size_t kCellPatch = 3;
   struct Entry {
-    RigidBody body;
-    std::vector<IndicatorPatch> patches;  // velocity components 0..2, then cell centres
+    bodies::RigidBody body;
+    std::vector<bodies::IndicatorPatch> patches;  // velocity components 0..2, then cell centres
   };
   void build(Entry& e) const;
   void collect_imposed_faces();
 
-  const Grid& grid_;
+  const grid::Grid& grid_;
   FbmOptions options_;
   std::vector<Entry> bodies_;
-  ImposedFaces imposed_;
+  bodies::ImposedFaces imposed_;
 };
 
-}  // namespace cosim::fluid
+}  // namespace cosim::fluid::staircase

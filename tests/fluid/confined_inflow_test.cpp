@@ -13,11 +13,24 @@
 #include "coupler/scene/error.hpp"
 #include "coupler/scene/scene.hpp"
 #include "fluid/ibm/immersed_boundary.hpp"
-#include "fluid/navier_stokes.hpp"
+#include "fluid/navier_stokes/navier_stokes.hpp"
 #include "fluid/program/confined_inflow.hpp"
 #include "fluid/program/scene_fluid.hpp"
 
 namespace cosim::fluid::program {
+
+using grid::Axis;
+using grid::Boundary;
+using grid::BoundaryConditions;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
+using grid::Point;
+using grid::Side;
+using ibm::ImmersedBoundary;
+using navier_stokes::NavierStokes;
+using viscous::ViscosityModel;
+
 namespace {
 
 // A round column of radius `radius` centred at (cx, cy) in a box of n x n x 8 cells, fed
@@ -63,13 +76,13 @@ struct FaceFlow {
 };
 
 FaceFlow face_flow(const FluidSetup& s, double radius, double cx, double cy) {
-  const fluid::Boundary& floor = s.boundaries[4];
-  EXPECT_EQ(floor.kind, fluid::BoundaryKind::inflow);
+  const fluid::grid::Boundary& floor = s.boundaries[4];
+  EXPECT_EQ(floor.kind, fluid::grid::BoundaryKind::inflow);
   FaceFlow out;
-  const fluid::Axis &x = s.axes[0], &y = s.axes[1];
+  const fluid::grid::Axis &x = s.axes[0], &y = s.axes[1];
   for (int j = 0; j < y.cells(); ++j)
     for (int i = 0; i < x.cells(); ++i) {
-      const fluid::Point u = floor.velocity({x.centre(i), y.centre(j), 0.0}, 0.0);
+      const fluid::grid::Point u = floor.velocity({x.centre(i), y.centre(j), 0.0}, 0.0);
       out.rate += u[2] * x.width(i) * y.width(j);
       const double nearest = std::hypot(std::max({x.face(i) - cx, cx - x.face(i + 1), 0.0}),
                                         std::max({y.face(j) - cy, cy - y.face(j + 1), 0.0}));

@@ -13,6 +13,19 @@
 #include "tests/fluid/flow_checks.hpp"
 
 namespace cosim::fluid {
+
+using grid::Axis;
+using grid::Boundary;
+using grid::BoundaryConditions;
+using grid::Grid;
+using grid::Point;
+using grid::Side;
+using ibm::IbmOptions;
+using navier_stokes::NavierStokes;
+using navier_stokes::PressureUpdate;
+using navier_stokes::TimeStepOptions;
+using viscous::ViscosityModel;
+
 namespace {
 
 // A closed box whose lid (y = 1) slides along x and, at a generic angle, z; so slow and

@@ -7,14 +7,14 @@
 #include <numbers>
 #include <string>
 
+#include "fluid/navier_stokes/time_step_controller.hpp"
 #include "fluid/program/fluid_work.hpp"
 #include "fluid/program/settling_speed.hpp"
-#include "fluid/time_step_controller.hpp"
 
 namespace cosim::fluid::program {
 namespace {
 
-const fluid::ViscosityModel kOil = fluid::ViscosityModel::newtonian(0.058);
+const fluid::viscous::ViscosityModel kOil = fluid::viscous::ViscosityModel::newtonian(0.058);
 
 // ten Cate et al. (2002), case E4: d = 15 mm, 1120 kg/m^3 in 960 kg/m^3 silicone oil of
 // 0.058 Pa s; measured u_inf = 0.128 m/s in a box 6.7 diameters wide.
@@ -29,7 +29,7 @@ TEST(SettlingSpeed, ASmallSphereSettlesAtStokessSpeed) {
 
 TEST(SettlingSpeed, AHeavyBallSettlesAtNewtonsSpeed) {
   // Re far above 1000: C_D = 0.44, so speed^2 = 4 g d (rho_b - rho_f) / (3 * 0.44 rho_f).
-  const double d = 0.05, speed = settling_speed(d, 7800, 1000, fluid::ViscosityModel::newtonian(1e-3), 9.81);
+  const double d = 0.05, speed = settling_speed(d, 7800, 1000, fluid::viscous::ViscosityModel::newtonian(1e-3), 9.81);
   EXPECT_NEAR(speed, std::sqrt(4 * 9.81 * d * 6800 / (3 * 0.44 * 1000)), 1e-6 * speed);
 }
 
@@ -40,8 +40,8 @@ TEST(SettlingSpeed, ABodyAsDenseAsTheFluidOrWithoutGravityStays) {
   EXPECT_DOUBLE_EQ(settling_speed(0.015, 800, 960, kOil, 9.81), settling_speed(0.015, 1120, 960, kOil, 9.81));
 }
 
-fluid::TimeStepController controller(double window) {
-  return fluid::TimeStepController({.cfl = 0.5, .dt_max = window, .dt_initial = window});
+fluid::navier_stokes::TimeStepController controller(double window) {
+  return fluid::navier_stokes::TimeStepController({.cfl = 0.5, .dt_max = window, .dt_initial = window});
 }
 
 TEST(StepsPerWindow, AStepTheWindowAllowsIsOnePerWindow) {
@@ -63,7 +63,7 @@ TEST(StepsPerWindow, AStepJustShortOfTheWindowSplitsItInTwo) {
 TEST(StepsPerWindow, TheFirstWindowGrowsFromTheFirstStep) {
   // From 1 % of the window, growing by 1.2 a step towards a CFL step of 0.3: 17 steps
   // (0.01, 0.012, ... 0.128, then the rest in two); the second 5, later ones 4.
-  fluid::TimeStepController c({.cfl = 0.5, .dt_max = 1, .dt_initial = 0.01});
+  fluid::navier_stokes::TimeStepController c({.cfl = 0.5, .dt_max = 1, .dt_initial = 0.01});
   EXPECT_DOUBLE_EQ(c.steps_per_window(0.5 / 0.3, 1, 1), 17);
   EXPECT_NEAR(c.steps_per_window(0.5 / 0.3, 1, 1000), (17 + 5 + 998 * 4) / 1000.0, 1e-9);
 }

@@ -12,6 +12,17 @@
 #include "fluid/staircase/fictitious_boundary.hpp"
 
 namespace cosim::fluid {
+
+using bodies::HydrodynamicLoad;
+using bodies::ImposedFace;
+using grid::Axis;
+using grid::BoundaryConditions;
+using grid::Grid;
+using grid::Point;
+using navier_stokes::NavierStokes;
+using staircase::FictitiousBoundary;
+using viscous::ViscosityModel;
+
 namespace {
 
 constexpr double kDensity = 2.0, kGravity = 3.0;

@@ -14,6 +14,18 @@
 #include "fluid/staircase/fictitious_boundary.hpp"
 
 namespace cosim::fluid {
+
+using grid::Axis;
+using grid::Boundary;
+using grid::BoundaryConditions;
+using grid::Grid;
+using grid::Point;
+using grid::Side;
+using navier_stokes::NavierStokes;
+using navier_stokes::StepReport;
+using staircase::FictitiousBoundary;
+using viscous::ViscosityModel;
+
 namespace {
 
 constexpr double kLength = 2.2, kHeight = 0.41, kDiameter = 0.1, kUMax = 0.3, kThickness = 0.01;

@@ -11,6 +11,16 @@
 #include "geometry/queries.hpp"
 
 namespace cosim::fluid {
+
+using bodies::ImposedFace;
+using bodies::RigidBody;
+using grid::Axis;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
+using grid::Point;
+using staircase::FictitiousBoundary;
+
 namespace {
 
 Grid cube(MPI_Comm comm, int n, double size) {

@@ -7,14 +7,36 @@
 #include <cmath>
 #include <vector>
 
-#include "tests/fluid/flow_checks.hpp"
-#include "fluid/connected_cells.hpp"
+#include "fluid/grid/local_velocity.hpp"
+#include "fluid/grid/mac_operators.hpp"
+#include "fluid/pressure/connected_cells.hpp"
+#include "fluid/pressure/region_means.hpp"
 #include "fluid/staircase/fictitious_boundary.hpp"
-#include "fluid/local_velocity.hpp"
-#include "fluid/mac_operators.hpp"
-#include "fluid/region_means.hpp"
+#include "tests/fluid/flow_checks.hpp"
 
 namespace cosim::fluid {
+
+using bodies::HydrodynamicLoad;
+using bodies::ImposedFace;
+using bodies::ImposedFaces;
+using grid::Axis;
+using grid::Boundary;
+using grid::BoundaryConditions;
+using grid::Box;
+using grid::divergence;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
+using grid::LocalVelocity;
+using grid::Point;
+using grid::Side;
+using navier_stokes::NavierStokes;
+using navier_stokes::StepReport;
+using pressure::ConnectedCells;
+using pressure::RegionMeans;
+using staircase::FictitiousBoundary;
+using viscous::ViscosityModel;
+
 namespace {
 
 // max |u - imposed value| over the imposed faces of all ranks.

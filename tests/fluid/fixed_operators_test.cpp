@@ -12,15 +12,39 @@
 #include <stdexcept>
 #include <string>
 
-#include "fluid/fast_poisson.hpp"
-#include "fluid/fast_viscous.hpp"
-#include "fluid/imposed_faces.hpp"
-#include "fluid/local_velocity.hpp"
-#include "fluid/pressure_solver.hpp"
-#include "fluid/viscous_axis_basis.hpp"
-#include "fluid/viscous_solver.hpp"
+#include "fluid/bodies/imposed_faces.hpp"
+#include "fluid/grid/local_velocity.hpp"
+#include "fluid/pressure/fast_poisson.hpp"
+#include "fluid/pressure/pressure_solver.hpp"
+#include "fluid/viscous/fast_viscous.hpp"
+#include "fluid/viscous/viscous_axis_basis.hpp"
+#include "fluid/viscous/viscous_solver.hpp"
 
 namespace cosim::fluid {
+
+using bodies::ImposedFace;
+using bodies::ImposedFaces;
+using grid::Axis;
+using grid::Boundary;
+using grid::BoundaryConditions;
+using grid::BoundaryKind;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
+using grid::LocalVelocity;
+using grid::Point;
+using grid::Side;
+using pressure::FastPoisson;
+using pressure::PressureSolver;
+using viscous::FastViscous;
+using viscous::UniformViscousWeights;
+using viscous::ViscosityField;
+using viscous::ViscosityModel;
+using viscous::viscous_axis_basis;
+using viscous::viscous_axis_matrix;
+using viscous::ViscousAxisBasis;
+using viscous::ViscousSolver;
+
 namespace {
 
 // Runs f with extra PETSc options in a database of its own.

@@ -8,6 +8,19 @@
 
 namespace cosim::fluid::testing {
 
+using bodies::StepBodies;
+using grid::Axis;
+using grid::Boundary;
+using grid::BoundaryConditions;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
+using grid::Point;
+using grid::Side;
+using navier_stokes::NavierStokes;
+using navier_stokes::StepReport;
+using viscous::ViscosityModel;
+
 double max_error(const NavierStokes& flow, int c, const std::function<double(const Point&)>& exact) {
   const Grid& grid = flow.grid();
   DM dm = grid.velocity_dm(c);

@@ -5,12 +5,29 @@
 #include <cmath>
 #include <vector>
 
+#include "fluid/grid/local_velocity.hpp"
+#include "fluid/viscous/viscous_cross_terms.hpp"
+#include "fluid/viscous/viscous_stencil.hpp"
 #include "tests/fluid/flow_checks.hpp"
-#include "fluid/local_velocity.hpp"
-#include "fluid/viscous_cross_terms.hpp"
-#include "fluid/viscous_stencil.hpp"
 
 namespace cosim::fluid {
+
+using grid::Axis;
+using grid::Boundary;
+using grid::BoundaryConditions;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
+using grid::LocalVelocity;
+using grid::Point;
+using grid::Side;
+using navier_stokes::NavierStokes;
+using viscous::Stencil;
+using viscous::ViscosityField;
+using viscous::ViscosityModel;
+using viscous::viscous_cross_terms;
+using viscous::viscous_stencil;
+
 namespace {
 
 TEST(ViscosityModel, LimitsAndClipping) {

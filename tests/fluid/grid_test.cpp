@@ -4,9 +4,18 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "fluid/navier_stokes.hpp"
+#include "fluid/navier_stokes/navier_stokes.hpp"
 
 namespace cosim::fluid {
+
+using grid::Axis;
+using grid::Boundary;
+using grid::BoundaryConditions;
+using grid::Grid;
+using grid::Point;
+using grid::Side;
+using navier_stokes::NavierStokes;
+
 namespace {
 
 TEST(Axis, StretchedClustersAtBothEndsAndKeepsTheEnds) {

@@ -11,6 +11,12 @@
 #include "bench/fluid_accuracy/cases.hpp"
 
 namespace cosim::fluid {
+
+using ibm::DeltaKernel;
+using ibm::IbmOptions;
+using staircase::FbmOptions;
+using staircase::kCalibratedSurfaceOffset;
+
 namespace {
 
 using bench::FluidRun;

@@ -12,6 +12,24 @@
 #include "fluid/ibm/volume_fraction.hpp"
 
 namespace cosim::fluid {
+
+using bodies::BodyTreatment;
+using bodies::HydrodynamicLoad;
+using bodies::IndicatorPatch;
+using grid::Axis;
+using grid::BoundaryConditions;
+using grid::for_each_index;
+using grid::Grid;
+using grid::Index;
+using grid::Point;
+using ibm::IbmOptions;
+using ibm::ImmersedBoundary;
+using ibm::level_set_fraction;
+using navier_stokes::NavierStokes;
+using staircase::FbmOptions;
+using staircase::kCalibratedSurfaceOffset;
+using viscous::ViscosityModel;
+
 namespace {
 
 constexpr double pi = std::numbers::pi;

@@ -12,6 +12,9 @@
 #include "bench/fluid_accuracy/round_pipe.hpp"
 
 namespace cosim::fluid {
+
+using ibm::DeltaKernel;
+
 namespace {
 
 // Guards against: a concave wall's markers retracted the wrong way (the profile's radius

@@ -18,6 +18,19 @@
 #include "fluid/petsc_check.hpp"
 
 namespace cosim::fluid {
+
+using grid::Axis;
+using grid::Box;
+using grid::Grid;
+using ibm::ActiveMarker;
+using ibm::BodyBlockSolvers;
+using ibm::DeltaKernel;
+using ibm::FaceArrays;
+using ibm::ForcingSystem;
+using ibm::kernel_stencil;
+using ibm::MarkerStencils;
+using ibm::roots_by_body;
+
 namespace {
 
 // Markers about a cell apart on two spheres whose kernels overlap, on a grid with walls, a

@@ -11,6 +11,23 @@
 #include "fluid/ibm/kernel_stencil.hpp"
 
 namespace cosim::fluid {
+
+using grid::Axis;
+using grid::Box;
+using grid::Grid;
+using grid::Index;
+using grid::Point;
+using ibm::axis_weights;
+using ibm::AxisWeights;
+using ibm::DeltaKernel;
+using ibm::for_each_point;
+using ibm::kernel_stencil;
+using ibm::KernelStencil;
+using ibm::name;
+using ibm::phi;
+using ibm::sum_of_squares;
+using ibm::support_radius;
+
 namespace {
 
 constexpr DeltaKernel kKernels[] = {DeltaKernel::roma3, DeltaKernel::peskin4, DeltaKernel::bao6};

@@ -9,9 +9,19 @@
 #include <cmath>
 
 #include "fluid/ibm/immersed_boundary.hpp"
-#include "fluid/navier_stokes.hpp"
+#include "fluid/navier_stokes/navier_stokes.hpp"
 
 namespace cosim::fluid {
+
+using grid::Axis;
+using grid::BoundaryConditions;
+using grid::Grid;
+using grid::Point;
+using ibm::IbmOptions;
+using ibm::ImmersedBoundary;
+using navier_stokes::NavierStokes;
+using viscous::ViscosityModel;
+
 namespace {
 
 constexpr int kCorrections = 20;

@@ -9,6 +9,10 @@
 #include "fluid/petsc_check.hpp"
 
 namespace cosim::fluid {
+
+using ibm::MarkerStencils;
+using ibm::summed_rows;
+
 namespace {
 
 TEST(IbmSummedRows, EachRowIsTheSumOfEveryRanksEntries) {

@@ -10,6 +10,17 @@
 #include "tests/fluid/flow_checks.hpp"
 
 namespace cosim::fluid {
+
+using grid::Axis;
+using grid::Boundary;
+using grid::BoundaryConditions;
+using grid::Box;
+using grid::Grid;
+using grid::Point;
+using grid::Side;
+using navier_stokes::NavierStokes;
+using viscous::ViscosityModel;
+
 namespace {
 
 constexpr double kMu = 1.0;

@@ -14,6 +14,16 @@
 #include "fluid/staircase/fictitious_boundary.hpp"
 
 namespace cosim::fluid {
+
+using grid::Axis;
+using grid::BoundaryConditions;
+using grid::Grid;
+using grid::Point;
+using navier_stokes::NavierStokes;
+using navier_stokes::PressureUpdate;
+using staircase::FictitiousBoundary;
+using viscous::ViscosityModel;
+
 namespace {
 
 constexpr double kNu = 0.1, kSpeed = 0.1, kEnd = 0.4, kH = 1.0 / 15;

@@ -43,20 +43,21 @@ TEST(FluidScene, ReadsGridFluidBoundariesAndBodies) {
   EXPECT_TRUE(s.axes[2].degenerate());
   EXPECT_FALSE(s.axes[0].periodic());
   EXPECT_DOUBLE_EQ(s.axes[0].hi(), 0.4);
-  EXPECT_EQ(s.boundaries[0].kind, fluid::BoundaryKind::wall);
+  EXPECT_EQ(s.boundaries[0].kind, fluid::grid::BoundaryKind::wall);
   EXPECT_EQ(s.properties.density, 1000);
   EXPECT_DOUBLE_EQ(s.properties.viscosity(5.0), 0.01);
-  EXPECT_EQ(s.properties.body_force, (fluid::Point{1.5, 0, -2}));
-  EXPECT_EQ(setup_of(oscillating_cylinder_scene()).properties.body_force, (fluid::Point{0, 0, 0}));
+  EXPECT_EQ(s.properties.body_force, (fluid::grid::Point{1.5, 0, -2}));
+  EXPECT_EQ(setup_of(oscillating_cylinder_scene()).properties.body_force, (fluid::grid::Point{0, 0, 0}));
   EXPECT_EQ(s.steps.dt_max, 0.01);
   EXPECT_EQ(s.steps.cfl, 0.4);
-  ASSERT_TRUE(std::holds_alternative<fluid::FbmOptions>(s.body_method));
-  EXPECT_EQ(std::get<fluid::FbmOptions>(s.body_method).subsamples, 2);
-  EXPECT_EQ(std::get<fluid::FbmOptions>(s.body_method).offset, fluid::kCalibratedSurfaceOffset);
-  EXPECT_EQ(s.steps.pressure_update, fluid::PressureUpdate::rotational);
-  EXPECT_EQ(setup_of(oscillating_cylinder_scene()).steps.pressure_update, fluid::PressureUpdate::standard);
+  ASSERT_TRUE(std::holds_alternative<fluid::staircase::FbmOptions>(s.body_method));
+  EXPECT_EQ(std::get<fluid::staircase::FbmOptions>(s.body_method).subsamples, 2);
+  EXPECT_EQ(std::get<fluid::staircase::FbmOptions>(s.body_method).offset, fluid::staircase::kCalibratedSurfaceOffset);
+  EXPECT_EQ(s.steps.pressure_update, fluid::navier_stokes::PressureUpdate::rotational);
+  EXPECT_EQ(setup_of(oscillating_cylinder_scene()).steps.pressure_update,
+            fluid::navier_stokes::PressureUpdate::standard);
   EXPECT_EQ(setup_of(oscillating_cylinder_scene("      pressure_update: exact\n")).steps.pressure_update,
-            fluid::PressureUpdate::exact);
+            fluid::navier_stokes::PressureUpdate::exact);
   const PetscFlags flags{{"-pressure_pc_type", "hypre"}, {"-pressure_ksp_rtol", "1e-9"}};
   EXPECT_EQ(s.petsc, flags);
   ASSERT_EQ(s.bodies.size(), 1u);
@@ -86,25 +87,25 @@ TEST(FluidScene, RanksAlongEachAxis) {
 // The immersed boundary unless the scene asks for the staircase; its options under bodies.
 TEST(FluidScene, BodyMethodAndItsOptions) {
   const FluidSetup plain = setup_of(oscillating_cylinder_scene());
-  ASSERT_TRUE(std::holds_alternative<fluid::IbmOptions>(plain.body_method));
-  EXPECT_EQ(std::get<fluid::IbmOptions>(plain.body_method).kernel, fluid::DeltaKernel::roma3);
-  EXPECT_EQ(std::get<fluid::IbmOptions>(plain.body_method).retraction->constant,
-            fluid::calibrated_retraction(fluid::DeltaKernel::roma3).constant);
+  ASSERT_TRUE(std::holds_alternative<fluid::ibm::IbmOptions>(plain.body_method));
+  EXPECT_EQ(std::get<fluid::ibm::IbmOptions>(plain.body_method).kernel, fluid::ibm::DeltaKernel::roma3);
+  EXPECT_EQ(std::get<fluid::ibm::IbmOptions>(plain.body_method).retraction->constant,
+            fluid::ibm::calibrated_retraction(fluid::ibm::DeltaKernel::roma3).constant);
   const FluidSetup bao = setup_of(oscillating_cylinder_scene("      bodies: {kernel: bao6, tolerance: 1e-8}\n"));
-  EXPECT_EQ(std::get<fluid::IbmOptions>(bao.body_method).retraction->constant,
-            fluid::calibrated_retraction(fluid::DeltaKernel::bao6).constant);
-  EXPECT_EQ(std::get<fluid::IbmOptions>(bao.body_method).tolerance, 1e-8);
+  EXPECT_EQ(std::get<fluid::ibm::IbmOptions>(bao.body_method).retraction->constant,
+            fluid::ibm::calibrated_retraction(fluid::ibm::DeltaKernel::bao6).constant);
+  EXPECT_EQ(std::get<fluid::ibm::IbmOptions>(bao.body_method).tolerance, 1e-8);
   const FluidSetup set = setup_of(oscillating_cylinder_scene(
       "      bodies: {method: ibm, kernel: peskin4, sweeps: 4, retraction: 0.5, curvature_retraction: 0.1, "
       "marker_spacing: 0.8, spread_at_theta: true}\n"));
-  const auto& ibm = std::get<fluid::IbmOptions>(set.body_method);
-  EXPECT_EQ(ibm.kernel, fluid::DeltaKernel::peskin4);
+  const auto& ibm = std::get<fluid::ibm::IbmOptions>(set.body_method);
+  EXPECT_EQ(ibm.kernel, fluid::ibm::DeltaKernel::peskin4);
   EXPECT_EQ(ibm.sweeps, 4);
   EXPECT_EQ(ibm.retraction->constant, 0.5);
   EXPECT_EQ(ibm.retraction->curvature, 0.1);
   EXPECT_EQ(ibm.spacing, 0.8);
   EXPECT_TRUE(ibm.spread_at_theta);
-  EXPECT_FALSE(std::get<fluid::IbmOptions>(plain.body_method).spread_at_theta);
+  EXPECT_FALSE(std::get<fluid::ibm::IbmOptions>(plain.body_method).spread_at_theta);
 }
 
 TEST(FluidScene, PrescribedMotionIsFixedConstantOrSinusoidal) {

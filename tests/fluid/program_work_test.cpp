@@ -46,10 +46,10 @@ FluidSetup setup_of(const std::string& text) { return fluid_setup(scene_of(text)
 
 // The markers ImmersedBoundary::add() places for each body of the setup, on a real grid.
 std::size_t solver_markers(const FluidSetup& s) {
-  const fluid::Grid grid(PETSC_COMM_WORLD, {s.axes[0], s.axes[1], s.axes[2]});
-  fluid::ImmersedBoundary bodies(grid, std::get<fluid::IbmOptions>(s.body_method));
+  const fluid::grid::Grid grid(PETSC_COMM_WORLD, {s.axes[0], s.axes[1], s.axes[2]});
+  fluid::ibm::ImmersedBoundary bodies(grid, std::get<fluid::ibm::IbmOptions>(s.body_method));
   std::size_t n = 0;
-  for (const fluid::RigidBody& b : s.bodies) n += bodies.markers(bodies.add(b)).size();
+  for (const fluid::bodies::RigidBody& b : s.bodies) n += bodies.markers(bodies.add(b)).size();
   return n;
 }
 

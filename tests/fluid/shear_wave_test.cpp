@@ -10,6 +10,15 @@
 #include "tests/fluid/flow_checks.hpp"
 
 namespace cosim::fluid {
+
+using grid::Axis;
+using grid::BoundaryConditions;
+using grid::Grid;
+using grid::Point;
+using navier_stokes::NavierStokes;
+using navier_stokes::TimeStepOptions;
+using viscous::ViscosityModel;
+
 namespace {
 
 constexpr double kPi = std::numbers::pi;

@@ -8,6 +8,9 @@
 #include "bench/fluid_accuracy/cases.hpp"
 
 namespace cosim::fluid {
+
+using ibm::IbmOptions;
+
 namespace {
 
 constexpr double kOpenFoam = 1.425;

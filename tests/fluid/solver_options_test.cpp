@@ -9,6 +9,9 @@
 #include "tests/fluid/flow_checks.hpp"
 
 namespace cosim::fluid {
+
+using viscous::ViscosityModel;
+
 namespace {
 
 // Runs the mixed-boundary flow with extra options in a database of its own.

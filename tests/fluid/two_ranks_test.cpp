@@ -10,6 +10,19 @@
 #include "fluid/ibm/immersed_boundary.hpp"
 
 namespace cosim::fluid {
+
+using bodies::HydrodynamicLoad;
+using grid::Axis;
+using grid::BoundaryConditions;
+using grid::Box;
+using grid::Grid;
+using grid::Point;
+using ibm::IbmOptions;
+using ibm::ImmersedBoundary;
+using navier_stokes::NavierStokes;
+using staircase::FbmOptions;
+using viscous::ViscosityModel;
+
 namespace {
 
 void expect_same_on_one_and_two_ranks(const ViscosityModel& viscosity, const char* name) {

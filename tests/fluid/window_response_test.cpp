@@ -10,6 +10,20 @@
 #include "fluid/window_response.hpp"
 
 namespace cosim::fluid {
+
+using bodies::BodyTreatment;
+using bodies::RigidBody;
+using grid::Axis;
+using grid::BoundaryConditions;
+using grid::Grid;
+using grid::Point;
+using ibm::IbmOptions;
+using navier_stokes::FluidProperties;
+using navier_stokes::NavierStokes;
+using navier_stokes::StepReport;
+using navier_stokes::TimeStepOptions;
+using viscous::ViscosityModel;
+
 namespace {
 
 constexpr double kRadius = 0.0075, kRho = 970, kMu = 0.373, kWindow = 0.005;
