@@ -14,6 +14,8 @@ import shlex
 import sys
 from pathlib import Path
 
+import yaml
+
 COLUMNS = ["scene", "figure", "value", "against", "command"]
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -51,7 +53,9 @@ def run_figures(f):
     window (of the written windows, the last of each row)."""
     wall = float(f["run"].attrs["wall_seconds"])
     window = f["coupling/wall_seconds"][1:].mean()
-    figures = [("wall time", f"{wall:,.0f} s ({window:.2f} s a window)", "")]
+    end = yaml.safe_load(f["run/scene_text"][()].decode())["time"]["end"]
+    figures = [("simulated", f"to t = {f['coupling/time'][-1]:.3g} s of the scene's {end:g} s", ""),
+               ("wall time", f"{wall:,.0f} s ({window:.2f} s a window)", "")]
     iterations = f["coupling/iterations"][1:]
     if iterations.size and iterations.max() > 1:
         figures.append(("coupling iterations per window", f"{iterations.mean():.2f} (at most {iterations.max():.0f})",
