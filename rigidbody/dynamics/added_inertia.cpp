@@ -1,21 +1,22 @@
 #include "rigidbody/dynamics/added_inertia.hpp"
 
-#include <Eigen/LU>
-
 namespace cosim::rigidbody::dynamics {
 
-BodyInertia with_added(const BodyInertia& body, const AddedInertia& added, const Eigen::Quaterniond& q) {
-  if (body.is_fixed() || added.empty()) return body;
+WithLiquid with_added(const BodyInertia& body, const AddedInertia& added, const Eigen::Quaterniond& q) {
+  WithLiquid out{.inertia = body, .liquid = {}};
+  if (body.is_fixed() || added.empty()) return out;
   const Eigen::Matrix3d r = q.toRotationMatrix();
-  BodyInertia out = body;
   const double mass = 1.0 / body.inverse_mass;
-  out.inverse_mass = 1.0 / (mass + added.mass);
-  out.own_mass_fraction = body.own_mass_fraction * mass / (mass + added.mass);
-  out.damping = body.damping + added.damping;
+  out.inertia.inverse_mass = 1.0 / (mass + added.mass);
+  out.liquid.own_mass_fraction = mass / (mass + added.mass);
+  out.liquid.damping = added.damping;
   if (body.rotates) {
-    out.inertia_body = body.inertia_body + r.transpose() * added.inertia * r;
-    out.inverse_inertia_body = out.inertia_body.inverse();
-    out.rotational_damping = body.rotational_damping + r.transpose() * added.rotational_damping * r;
+    if (!added.inertia.isZero(0.0)) {
+      const BodyInertia sum = BodyInertia::of(mass, body.inertia_body() + r.transpose() * added.inertia * r);
+      out.inertia.principal_axes = sum.principal_axes;
+      out.inertia.principal_moments = sum.principal_moments;
+    }
+    out.liquid.rotational_damping = r.transpose() * added.rotational_damping * r;
   }
   return out;
 }

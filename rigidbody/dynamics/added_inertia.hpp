@@ -24,9 +24,26 @@ struct AddedInertia {
   bool empty() const { return mass == 0.0 && damping == 0.0 && inertia.isZero(0.0) && rotational_damping.isZero(0.0); }
 };
 
+// What a body moving with the liquid has that a body in none does without (Substeps takes
+// none then); held apart from BodyInertia, which every body of a world has.
+struct InLiquid {
+  // Gravity and buoyancy act on the body's own mass, this share of the mass it moves with:
+  // m / (m + added mass).
+  double own_mass_fraction = 1.0;
+  // The liquid's resistance to the body's velocity, F = -damping v and, in the body frame,
+  // T = -rotational_damping omega; integrated implicitly (Substeps).
+  double damping = 0.0;
+  Eigen::Matrix3d rotational_damping = Eigen::Matrix3d::Zero();
+};
+
+struct WithLiquid {
+  BodyInertia inertia;
+  InLiquid liquid;
+};
+
 // The body as it moves with the liquid: mass m + added mass, inertia I + added inertia
 // (turned into the body frame at orientation q), and the damping; gravity and buoyancy act
 // on m alone (own_mass_fraction). A fixed body stays fixed.
-BodyInertia with_added(const BodyInertia& body, const AddedInertia& added, const Eigen::Quaterniond& q);
+WithLiquid with_added(const BodyInertia& body, const AddedInertia& added, const Eigen::Quaterniond& q);
 
 }  // namespace cosim::rigidbody::dynamics

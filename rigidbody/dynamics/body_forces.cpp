@@ -11,13 +11,13 @@ Wrench WindowWrench::at(double t0, double t1, double s) const {
   return {start.force + w * (end.force - start.force), start.torque + w * (end.torque - start.torque)};
 }
 
-Eigen::Vector3d BodyForces::acceleration(const BodyInertia& body) const {
+Eigen::Vector3d BodyForces::acceleration(const BodyInertia& body, double own_mass_fraction) const {
   double factor = gravity ? 1.0 : 0.0;
   if (buoyancy) {
     if (!(body.density > 0.0)) throw std::invalid_argument("buoyancy needs a positive body density");
     factor -= fluid_density / body.density;
   }
-  return body.own_mass_fraction * factor * g;
+  return own_mass_fraction * factor * g;
 }
 
 }  // namespace cosim::rigidbody::dynamics

@@ -25,9 +25,10 @@ struct BodyForces {
   Eigen::Vector3d g = Eigen::Vector3d(0.0, 0.0, -9.81);
   double fluid_density = 0.0;
 
-  // Acceleration of the centre of mass: g (gravity) - (rho_f / rho_body) g (buoyancy).
+  // Acceleration of the centre of mass: g (gravity) - (rho_f / rho_body) g (buoyancy), times
+  // the share of the mass they act on (InLiquid::own_mass_fraction; 1 out of a liquid).
   // Throws std::invalid_argument for buoyancy on a body without a positive density.
-  Eigen::Vector3d acceleration(const BodyInertia& body) const;
+  Eigen::Vector3d acceleration(const BodyInertia& body, double own_mass_fraction = 1.0) const;
 };
 
 }  // namespace cosim::rigidbody::dynamics

@@ -13,10 +13,12 @@ namespace cosim::rigidbody::dynamics {
 namespace {
 
 void check(std::span<BodyState> states, std::span<const BodyInertia> inertia, std::span<const WindowWrench> external,
-           double t0, double t1, double dt) {
+           std::span<const InLiquid> liquid, double t0, double t1, double dt) {
   if (inertia.size() != states.size()) throw std::invalid_argument("advance: one inertia per body state is needed");
   if (!external.empty() && external.size() != states.size())
     throw std::invalid_argument("advance: external wrenches must be one per body or none");
+  if (!liquid.empty() && liquid.size() != states.size())
+    throw std::invalid_argument("advance: the liquid's share must be one per body or none");
   if (!(t1 >= t0)) throw std::invalid_argument("advance: t1 must not be before t0");
   if (!(dt > 0.0)) throw std::invalid_argument("advance: dt must be positive");
 }
@@ -29,28 +31,38 @@ long substep_count(double span, double dt) { return std::max(1L, static_cast<lon
 // The liquid's damping over h, implicitly: m (v' - v) = -h c v', and likewise for omega in
 // the body frame with I and the rotational damping. Implicit, so a damping far above m / h
 // (a body in a narrow gap) slows the body without overshooting.
-void damp(BodyState& state, const BodyInertia& body, double h) {
-  if (body.damping > 0.0) state.velocity /= 1.0 + h * body.damping * body.inverse_mass;
-  if (!body.rotates || body.rotational_damping.isZero(0.0)) return;
+void damp(BodyState& state, const BodyInertia& body, const InLiquid& liquid, double h) {
+  if (liquid.damping > 0.0) state.velocity /= 1.0 + h * liquid.damping * body.inverse_mass;
+  if (!body.rotates || liquid.rotational_damping.isZero(0.0)) return;
   const Eigen::Matrix3d r = state.orientation.toRotationMatrix();
   const Eigen::Vector3d w = r.transpose() * state.angular_velocity;
-  const Eigen::Matrix3d lhs = body.inertia_body + h * body.rotational_damping;
-  state.angular_velocity = r * Eigen::Vector3d(lhs.partialPivLu().solve(body.inertia_body * w));
+  const Eigen::Matrix3d inertia = body.inertia_body();
+  const Eigen::Matrix3d lhs = inertia + h * liquid.rotational_damping;
+  state.angular_velocity = r * Eigen::Vector3d(lhs.partialPivLu().solve(inertia * w));
 }
 
 }  // namespace
 
 Substeps::Substeps(std::span<BodyState> states, std::span<const BodyInertia> inertia,
-                   std::span<const WindowWrench> external, double t0, double t1, const IntegratorSettings& settings)
-    : states_(states), inertia_(inertia), external_(external), t0_(t0), t1_(t1), scheme_(settings.scheme) {
-  check(states, inertia, external, t0, t1, settings.dt);
+                   std::span<const WindowWrench> external, double t0, double t1, const IntegratorSettings& settings,
+                   std::span<const InLiquid> liquid)
+    : states_(states),
+      inertia_(inertia),
+      external_(external),
+      liquid_(liquid),
+      t0_(t0),
+      t1_(t1),
+      scheme_(settings.scheme) {
+  check(states, inertia, external, liquid, t0, t1, settings.dt);
   const long n = substep_count(t1 - t0, settings.dt);
   count_ = t1 == t0 ? 0 : n;
   length_ = (t1 - t0) / static_cast<double>(n);
   acceleration_.resize(states.size());
   start_.resize(states.size());
   for (std::size_t i = 0; i < states.size(); ++i) {
-    if (!inertia[i].is_fixed()) acceleration_[i] = settings.body_forces.acceleration(inertia[i]);
+    if (!inertia[i].is_fixed())
+      acceleration_[i] =
+          settings.body_forces.acceleration(inertia[i], liquid.empty() ? 1.0 : liquid[i].own_mass_fraction);
     if (inertia[i].is_fixed() || !inertia[i].rotates) held_.push_back(i);
   }
 }
@@ -73,7 +85,7 @@ void Substeps::integrate_velocities(long k) {
       leapfrog_velocity(states_[i], inertia_[i], w, acceleration_[i], h);
     else
       semi_implicit_velocity(states_[i], inertia_[i], w, acceleration_[i], h);
-    damp(states_[i], inertia_[i], h);
+    if (!liquid_.empty()) damp(states_[i], inertia_[i], liquid_[i], h);
   }
 }
 
@@ -95,8 +107,8 @@ void Substeps::integrate_positions() {
 }
 
 void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia, std::span<const WindowWrench> external,
-             double t0, double t1, const IntegratorSettings& settings) {
-  Substeps substeps(states, inertia, external, t0, t1, settings);
+             double t0, double t1, const IntegratorSettings& settings, std::span<const InLiquid> liquid) {
+  Substeps substeps(states, inertia, external, t0, t1, settings, liquid);
   for (long k = 0; k < substeps.count(); ++k) {
     substeps.integrate_velocities(k);
     substeps.integrate_positions();

@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "rigidbody/dynamics/added_inertia.hpp"
 #include "rigidbody/dynamics/body.hpp"
 #include "rigidbody/dynamics/body_forces.hpp"
 
@@ -24,7 +25,8 @@ struct IntegratorSettings {
 // velocity, then every body's position with the velocities the states then hold. Between
 // the halves a caller may change velocities (the world's contact solver does), after them
 // too (the soft step's relax). `inertia` is parallel to `states`; `external` is either
-// parallel to it (the coupler's wrench per body, see WindowWrench) or empty (none).
+// parallel to it (the coupler's wrench per body, see WindowWrench) or empty (none); so is
+// `liquid` (bodies moving with a liquid, with_added; empty: none is).
 // Fixed bodies (inverse_mass == 0) are not touched, not even by velocities set between the
 // halves; translation-only bodies (rotates == false) keep their orientation and angular
 // velocity.
@@ -32,7 +34,7 @@ class Substeps {
  public:
   // Throws std::invalid_argument for mismatched spans, t1 < t0 or dt <= 0.
   Substeps(std::span<BodyState> states, std::span<const BodyInertia> inertia, std::span<const WindowWrench> external,
-           double t0, double t1, const IntegratorSettings& settings);
+           double t0, double t1, const IntegratorSettings& settings, std::span<const InLiquid> liquid = {});
 
   long count() const { return count_; }  // 0 for an empty window
   double length() const { return length_; }
@@ -46,6 +48,7 @@ class Substeps {
   std::span<BodyState> states_;
   std::span<const BodyInertia> inertia_;
   std::span<const WindowWrench> external_;
+  std::span<const InLiquid> liquid_;
   double t0_, t1_;
   Scheme scheme_;
   long count_;
@@ -57,8 +60,8 @@ class Substeps {
 };
 
 // Moves `states` from t0 to t1 with nothing between the halves: free flight under the
-// body forces and `external`. Throws as Substeps does.
+// body forces, `external` and `liquid`. Throws as Substeps does.
 void advance(std::span<BodyState> states, std::span<const BodyInertia> inertia, std::span<const WindowWrench> external,
-             double t0, double t1, const IntegratorSettings& settings);
+             double t0, double t1, const IntegratorSettings& settings, std::span<const InLiquid> liquid = {});
 
 }  // namespace cosim::rigidbody::dynamics

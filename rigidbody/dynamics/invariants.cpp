@@ -10,7 +10,7 @@ double mass(const BodyInertia& body) { return body.is_fixed() ? 0.0 : 1.0 / body
 Eigen::Vector3d spin_angular_momentum(const BodyState& state, const BodyInertia& body) {
   if (body.is_fixed() || !body.rotates) return Eigen::Vector3d::Zero();
   const Eigen::Matrix3d r = state.orientation.toRotationMatrix();
-  return r * (body.inertia_body * (r.transpose() * state.angular_velocity));
+  return r * (body.inertia_body() * (r.transpose() * state.angular_velocity));
 }
 
 double kinetic_energy(const BodyState& state, const BodyInertia& body) {

@@ -7,7 +7,7 @@ namespace {
 
 Eigen::Vector3d world_angular_momentum(const BodyState& state, const BodyInertia& body) {
   const Eigen::Matrix3d r = state.orientation.toRotationMatrix();
-  return r * (body.inertia_body * (r.transpose() * state.angular_velocity));
+  return r * (body.inertia_body() * (r.transpose() * state.angular_velocity));
 }
 
 }  // namespace
@@ -27,7 +27,7 @@ void leapfrog_position(BodyState& state, const BodyState& start, const BodyInert
   // omega at fixed orientation.
   const Eigen::Vector3d l_end = world_angular_momentum(state, body);
   const Eigen::Vector3d l_mean = 0.5 * (world_angular_momentum(start, body) + l_end);
-  state.orientation = free_rotation(start.orientation, body.inertia_body, l_mean, h);
+  state.orientation = free_rotation(start.orientation, body.inertia_body(), l_mean, h);
   state.angular_velocity = body.inverse_inertia_world(state.orientation) * l_end;
 }
 

@@ -8,7 +8,7 @@
 namespace cosim::rigidbody::dynamics {
 
 // v += h (a + F / m); omega gets the gyroscopic term implicitly, by one Newton step on
-// I (w' - w) + h w' x I w' = 0 in the body frame (E. Catto, "Numerical Methods", GDC 2015;
+// I (w' - w) + h w' x I w' = 0 in the principal frame (E. Catto, "Numerical Methods", GDC 2015;
 // Bullet's btRigidBody::computeGyroscopicImpulseImplicit_Body), then the torque explicitly.
 // Explicit gyroscopic updates make fast-spinning asymmetric bodies gain energy; this one
 // does not. `acceleration` is the body-force acceleration (gravity, buoyancy).

@@ -41,12 +41,18 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
   const auto start = std::chrono::steady_clock::now();
   StepReport report;
   stepping_ = inertias_;
+  std::span<const dynamics::InLiquid> liquid;
   if (!added.empty()) {
     if (added.size() != size()) throw std::invalid_argument("advance: added inertia must be one per body or none");
     moving_.resize(size());
-    for (std::size_t i = 0; i < size(); ++i)
-      moving_[i] = dynamics::with_added(inertias_[i], added[i], states_[i].orientation);
+    liquid_.resize(size());
+    for (std::size_t i = 0; i < size(); ++i) {
+      const dynamics::WithLiquid moving = dynamics::with_added(inertias_[i], added[i], states_[i].orientation);
+      moving_[i] = moving.inertia;
+      liquid_[i] = moving.liquid;
+    }
     stepping_ = moving_;
+    liquid = liquid_;
   }
   // "Only what the scene needs": without contacts (or with nothing to collide with) no
   // broad or narrow phase is ever called.
@@ -57,7 +63,8 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
   const int split = relax ? soft_.options().substeps : 1;
   const int collide_every = settings_.lubrication.active() ? 1 : split;
   dynamics::Substeps substeps(states_, stepping_, external, time_, time_ + window,
-                              {dynamics::Scheme::semi_implicit_euler, settings_.dt / split, settings_.body_forces});
+                              {dynamics::Scheme::semi_implicit_euler, settings_.dt / split, settings_.body_forces},
+                              liquid);
   // A window shorter than dt has fewer substeps than a narrow phase covers.
   if (contacts) check_tunnelling(window, substeps.length() * std::min<long>(collide_every, substeps.count()), report);
   StageClock clock(report.seconds);

@@ -91,8 +91,9 @@ class World {
   std::vector<dynamics::BodyState> states_;
   std::vector<dynamics::BodyInertia> inertias_;
   // What the bodies move with in the current window: inertias_, or with a liquid's added
-  // inertia, moving_.
+  // inertia, moving_ and liquid_.
   std::vector<dynamics::BodyInertia> moving_;
+  std::vector<dynamics::InLiquid> liquid_;
   std::span<const dynamics::BodyInertia> stepping_;
   std::vector<BodyMaterial> materials_;
   TunnellingWarnings tunnelling_;

@@ -122,9 +122,9 @@ TEST(FreeRotation, SpinAboutAStableAxisStaysPut) {
 TEST(FreeRotation, NonPrincipalBodyFrameGivesTheSameMotion) {
   const BodyInertia principal = asymmetric_box();
   const Eigen::Quaterniond tilt(Eigen::AngleAxisd(0.9, Eigen::Vector3d(-1, 2, 0.5).normalized()));
-  BodyInertia tilted = principal;  // body frame = principal frame turned by tilt
-  tilted.inertia_body = tilt * principal.inertia_body * tilt.conjugate().toRotationMatrix();
-  tilted.inverse_inertia_body = tilted.inertia_body.inverse();
+  // Body frame = principal frame turned by tilt.
+  const BodyInertia tilted = BodyInertia::of(1 / principal.inverse_mass,
+                                             tilt * principal.inertia_body() * tilt.conjugate().toRotationMatrix());
   BodyState start = tumbling();
   BodyState start_tilted = start;
   start_tilted.orientation = start.orientation * tilt.conjugate();

@@ -62,7 +62,7 @@ double World::kinetic_energy() const {
     if (inertias[i].is_fixed()) continue;
     const auto& s = states[i];
     const Eigen::Matrix3d r = s.orientation.toRotationMatrix();
-    const Eigen::Matrix3d inertia = r * inertias[i].inertia_body * r.transpose();
+    const Eigen::Matrix3d inertia = r * inertias[i].inertia_body() * r.transpose();
     e += 0.5 * s.velocity.squaredNorm() / inertias[i].inverse_mass +
          0.5 * s.angular_velocity.dot(inertia * s.angular_velocity);
   }
