@@ -58,13 +58,14 @@ Substeps::Substeps(std::span<BodyState> states, std::span<const BodyInertia> ine
   count_ = t1 == t0 ? 0 : n;
   length_ = (t1 - t0) / static_cast<double>(n);
   acceleration_.resize(states.size());
-  start_.resize(states.size());
+  if (scheme_ == Scheme::leapfrog) start_.resize(states.size());
   for (std::size_t i = 0; i < states.size(); ++i) {
     if (!inertia[i].is_fixed())
       acceleration_[i] =
           settings.body_forces.acceleration(inertia[i], liquid.empty() ? 1.0 : liquid[i].own_mass_fraction);
     if (inertia[i].is_fixed() || !inertia[i].rotates) held_.push_back(i);
   }
+  held_start_.resize(held_.size());
 }
 
 void Substeps::integrate_velocities(long k) {
@@ -74,10 +75,8 @@ void Substeps::integrate_velocities(long k) {
   // Semi-implicit Euler takes the wrench at the start of the substep, leapfrog at its midpoint.
   const double s = leapfrog ? t + 0.5 * h : t;
   // integrate_positions() restores what the solvers may have changed of the held bodies.
-  if (leapfrog)
-    std::copy(states_.begin(), states_.end(), start_.begin());
-  else
-    for (const std::size_t i : held_) start_[i] = states_[i];
+  if (leapfrog) std::copy(states_.begin(), states_.end(), start_.begin());
+  for (std::size_t k = 0; k < held_.size(); ++k) held_start_[k] = states_[held_[k]];
   for (std::size_t i = 0; i < states_.size(); ++i) {
     if (inertia_[i].is_fixed()) continue;
     const Wrench w = external_.empty() ? Wrench{} : external_[i].at(t0_, t1_, s);
@@ -91,18 +90,22 @@ void Substeps::integrate_velocities(long k) {
 
 void Substeps::integrate_positions() {
   for (std::size_t i = 0; i < states_.size(); ++i) {
-    if (inertia_[i].is_fixed()) {
-      states_[i] = start_[i];
-      continue;
-    }
-    if (!inertia_[i].rotates) {
-      states_[i].orientation = start_[i].orientation;
-      states_[i].angular_velocity = start_[i].angular_velocity;
-    }
+    if (inertia_[i].is_fixed()) continue;
     if (scheme_ == Scheme::leapfrog)
       leapfrog_position(states_[i], start_[i], inertia_[i], length_);
     else
       semi_implicit_position(states_[i], inertia_[i], length_);
+  }
+  // What the solvers may have changed of the held bodies goes back: all of a fixed body's
+  // state, a translation-only body's rotation (which neither scheme turns, so after the move).
+  for (std::size_t k = 0; k < held_.size(); ++k) {
+    BodyState& s = states_[held_[k]];
+    if (inertia_[held_[k]].is_fixed()) {
+      s = held_start_[k];
+    } else {
+      s.orientation = held_start_[k].orientation;
+      s.angular_velocity = held_start_[k].angular_velocity;
+    }
   }
 }
 

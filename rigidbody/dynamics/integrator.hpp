@@ -54,9 +54,12 @@ class Substeps {
   long count_;
   double length_;
   std::vector<Eigen::Vector3d> acceleration_;  // body forces' per body
-  std::vector<BodyState> start_;               // the states before the velocity half: of every
-                                               // body for leapfrog, else of the held ones
+  std::vector<BodyState> start_;               // leapfrog's: every body's state before the velocity half
   std::vector<std::size_t> held_;              // fixed or translation-only bodies
+  // Their states before the velocity half, parallel to held_: semi-implicit Euler keeps no
+  // copy of the others (112 bytes a body, bench/rigidbody_granular/README.md "Where the
+  // memory goes").
+  std::vector<BodyState> held_start_;
 };
 
 // Moves `states` from t0 to t1 with nothing between the halves: free flight under the
