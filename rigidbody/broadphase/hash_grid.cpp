@@ -1,9 +1,10 @@
-// Building the grid. Objects are counting-sorted by bucket (layout.hpp) into one contiguous
-// array over a table of next_pow2(N) buckets: O(N) per update, memory proportional to N
-// whatever the domain, and the objects of a bucket lie side by side for the pair search.
-// Different cells sharing a bucket are told apart by their stored cell. Sorting by the
-// full cell key instead would cost O(N log N) plus a binary search per neighbour lookup;
-// open addressing would add an indirection per lookup and an array of keys.
+// Building the grid. Each object is read once, into an entry; the entries are then
+// counting-sorted by bucket (layout.hpp) in place, over a table of next_pow2(N) buckets:
+// O(N) per update, memory proportional to N whatever the domain, and the objects of a
+// bucket lie side by side for the pair search. Different cells sharing a bucket are told
+// apart by their stored cell. Sorting by the full cell key instead would cost O(N log N)
+// plus a binary search per neighbour lookup; open addressing would add an indirection per
+// lookup and an array of keys.
 #include "rigidbody/broadphase/hash_grid.hpp"
 
 #include <algorithm>
@@ -55,17 +56,23 @@ HashGrid::HashGrid(const HashGridConfig& config)
     : config_(checked(config)), levels_(config.level_factor, config.safety, config.margin) {}
 
 void HashGrid::update(std::span<const Object> objects) {
-  require(objects.size() < std::numeric_limits<std::uint32_t>::max(), "too many objects");
+  update(objects.size(), [objects](std::size_t n) { return objects[n]; });
+}
+
+void HashGrid::update(std::size_t count, const std::function<Object(std::size_t)>& object) {
+  require(count < std::numeric_limits<std::uint32_t>::max(), "too many objects");
   walls_.clear();
+  entries_.clear();
+  entries_.reserve(count);  // not left to doubling, which could hold twice the entries
   double smallest = std::numeric_limits<double>::infinity();
-  std::size_t finite = 0;
-  for (const Object& o : objects) {
+  for (std::size_t n = 0; n < count; ++n) {
+    const Object o = object(n);
     check(o);
     if (o.infinite) {
       walls_.push_back(o);
       continue;
     }
-    ++finite;
+    entries_.push_back({o.centre, o.radius, Cell{}, o.id, 0, o.fixed});
     const double span = levels_.span(o.radius);
     if (span > 0.0) smallest = std::min(smallest, span);
   }
@@ -73,21 +80,18 @@ void HashGrid::update(std::span<const Object> objects) {
   // width finds them.
   const double automatic = std::isfinite(smallest) ? smallest : 1.0;
   levels_.reset(config_.base_cell_size > 0.0 ? config_.base_cell_size : automatic);
-  assign_levels(objects);
-  sort_by_bucket(objects, finite);
+  assign_levels();
+  sort_by_bucket();
 }
 
-void HashGrid::assign_levels(std::span<const Object> objects) {
-  slots_.resize(objects.size());
+void HashGrid::assign_levels() {
   per_level_.clear();
-  for (std::size_t n = 0; n < objects.size(); ++n) {
-    const Object& o = objects[n];
-    if (o.infinite) continue;
-    const std::uint32_t level = levels_.level_of(levels_.span(o.radius));
-    slots_[n].level = level;
-    if (level >= per_level_.size()) per_level_.resize(level + 1);
-    per_level_[level].layout.include(cell_of_slot(o, slots_[n]));
-    per_level_[level].max_radius = std::max(per_level_[level].max_radius, o.radius);
+  for (Entry& e : entries_) {
+    e.level = levels_.level_of(levels_.span(e.radius));
+    e.cell = cell_of(e.centre, levels_.inv_size(e.level));
+    if (e.level >= per_level_.size()) per_level_.resize(e.level + 1);
+    per_level_[e.level].layout.include(e.cell);
+    per_level_[e.level].max_radius = std::max(per_level_[e.level].max_radius, e.radius);
   }
   occupied_.clear();
   std::uint64_t offset = 0;
@@ -98,32 +102,30 @@ void HashGrid::assign_levels(std::span<const Object> objects) {
   }
 }
 
-void HashGrid::sort_by_bucket(std::span<const Object> objects, std::size_t finite) {
-  const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(finite, 1));
+void HashGrid::sort_by_bucket() {
+  const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(entries_.size(), 1));
   mask_ = buckets - 1;
   start_.assign(buckets + 1, 0);
-  for (std::size_t n = 0; n < objects.size(); ++n) {
-    if (objects[n].infinite) continue;
-    slots_[n].bucket = bucket_of(slots_[n].level, cell_of_slot(objects[n], slots_[n]));
-    ++start_[slots_[n].bucket];
-  }
-  // Running sum: start_[b] is now the end of bucket b. Placing backwards moves it to the
-  // bucket's first entry and keeps input order within a bucket.
-  std::partial_sum(start_.begin(), start_.end() - 1, start_.begin());
-  start_.back() = static_cast<std::uint32_t>(finite);
-  entries_.resize(finite);
-  for (std::size_t n = objects.size(); n-- > 0;) {
-    const Object& o = objects[n];
-    if (o.infinite) continue;
-    const Slot slot = slots_[n];
-    entries_[--start_[slot.bucket]] = {o.centre, o.radius, cell_of_slot(o, slot), o.id, slot.level, o.fixed};
-  }
+  for (const Entry& e : entries_) ++start_[bucket_of(e) + 1];
+  std::partial_sum(start_.begin(), start_.end(), start_.begin());
+  // In place (American flag sort): next[b] is where bucket b's next entry goes; an entry
+  // found in another bucket's place is swapped into its own, so each moves once.
+  std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+  for (std::uint32_t b = 0; b < buckets; ++b)
+    while (next[b] < start_[b + 1]) {
+      Entry& e = entries_[next[b]];
+      const std::uint32_t target = bucket_of(e);
+      if (target == b)
+        ++next[b];
+      else
+        std::swap(e, entries_[next[target]++]);
+    }
 }
 
 std::size_t HashGrid::memory_bytes() const {
   return entries_.capacity() * sizeof(Entry) + start_.capacity() * sizeof(std::uint32_t) +
-         slots_.capacity() * sizeof(Slot) + per_level_.capacity() * sizeof(PerLevel) +
-         occupied_.capacity() * sizeof(std::uint32_t) + walls_.capacity() * sizeof(Object) + levels_.memory_bytes();
+         per_level_.capacity() * sizeof(PerLevel) + occupied_.capacity() * sizeof(std::uint32_t) +
+         walls_.capacity() * sizeof(Object) + levels_.memory_bytes();
 }
 
 }  // namespace cosim::rigidbody::broadphase

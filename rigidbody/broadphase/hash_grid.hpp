@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -40,6 +41,10 @@ class HashGrid {
   // std::invalid_argument for a negative or non-finite radius, a non-finite centre, or a
   // half-space with a zero or non-finite normal or offset.
   void update(std::span<const Object> objects);
+  // The same for `count` objects made on the fly, object(n) for n < count, each asked for
+  // once: a caller whose bodies already say what an Object does (a world) keeps no copy
+  // of them beside the grid's own.
+  void update(std::size_t count, const std::function<Object(std::size_t)>& object);
 
   // The candidate pairs of the last update, replacing out's contents (its capacity is
   // reused). Order: the grid's traversal, the same for the same input, but not sorted.
@@ -53,7 +58,8 @@ class HashGrid {
   std::size_t memory_bytes() const;
 
  private:
-  // A finite object in the table. 56 bytes.
+  // A finite object in the table: what update() reads of it, then its level and cell.
+  // 56 bytes.
   struct Entry {
     Eigen::Vector3d centre;
     double radius;
@@ -68,19 +74,13 @@ class HashGrid {
     Layout layout;
     double max_radius = 0.0;  // of the objects on the level
   };
-  // Where an input object goes, kept between the passes of update().
-  struct Slot {
-    std::uint32_t level;
-    std::uint32_t bucket;
-  };
-
   // For a cell inside its level's layout.
   std::uint32_t bucket_of(std::uint32_t level, const Cell& cell) const {
     return static_cast<std::uint32_t>(per_level_[level].layout.index(cell) & mask_);
   }
-  Cell cell_of_slot(const Object& o, const Slot& slot) const { return cell_of(o.centre, levels_.inv_size(slot.level)); }
-  void assign_levels(std::span<const Object> objects);
-  void sort_by_bucket(std::span<const Object> objects, std::size_t finite);
+  std::uint32_t bucket_of(const Entry& e) const { return bucket_of(e.level, e.cell); }
+  void assign_levels();
+  void sort_by_bucket();
   // Pairs of a with the objects of a level in the cells around a that can hold a partner;
   // half: only the half neighbourhood (for a's own level).
   void visit(const Entry& a, std::uint32_t level, bool half, std::vector<Pair>& out) const;
@@ -93,7 +93,6 @@ class HashGrid {
   // Finite objects grouped by bucket: bucket b holds entries [start_[b], start_[b + 1]).
   std::vector<Entry> entries_;
   std::vector<std::uint32_t> start_ = {0};
-  std::vector<Slot> slots_;              // one per input object
   std::vector<PerLevel> per_level_;      // indexed by level
   std::vector<std::uint32_t> occupied_;  // the levels holding objects, ascending
   std::vector<Object> walls_;            // the infinite objects

@@ -97,10 +97,10 @@ StepReport World::advance(double window, std::span<const dynamics::WindowWrench>
 }
 
 void World::broad_phase(StepReport& report) {
-  objects_.clear();
-  for (std::uint32_t i = 0; i < states_.size(); ++i)
-    objects_.push_back(object_of(i, shapes_[i], states_[i], inertias_[i].is_fixed()));
-  grid_.update(objects_);
+  grid_.update(states_.size(), [this](std::size_t n) {
+    const auto i = static_cast<std::uint32_t>(n);
+    return object_of(i, shapes_[i], states_[i], inertias_[i].is_fixed());
+  });
   grid_.find_pairs(pairs_);
   ++report.broadphase_updates;
   graph_.update(pairs_);

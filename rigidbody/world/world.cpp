@@ -84,7 +84,6 @@ void World::reserve(std::size_t bodies) {
   inertias_.reserve(bodies);
   materials_.reserve(bodies);
   tunnelling_.reserve(bodies);
-  objects_.reserve(bodies);
 }
 
 // Pairs within the lubrication range must reach the narrow phase whatever the margin.
