@@ -14,6 +14,12 @@ double width(const geometry::Shape& shape, const Eigen::Vector3d& n) {
   return n.dot(geometry::support(shape, n) - geometry::support(shape, -n));
 }
 
+std::string name_of(std::span<const NamedBody> names, std::uint32_t body) {
+  const auto it = std::lower_bound(names.begin(), names.end(), body,
+                                   [](const NamedBody& n, std::uint32_t b) { return n.body < b; });
+  return it != names.end() && it->body == body ? it->name : std::string();
+}
+
 }  // namespace
 
 double thinnest_extent(const geometry::Shape& shape) {
@@ -59,11 +65,11 @@ std::string describe(const TunnellingRisk& risk, const std::string& name, double
       risk.body, name.empty() ? "" : " (" + name + ")", risk.travel, dt, limits, fix);
 }
 
-std::string summarise(std::span<const TunnellingRisk> risks, std::span<const std::string> names, double dt) {
+std::string summarise(std::span<const TunnellingRisk> risks, std::span<const NamedBody> names, double dt) {
   const auto worst = std::max_element(risks.begin(), risks.end(), [](const TunnellingRisk& x, const TunnellingRisk& y) {
     return excess(x) < excess(y);
   });
-  const std::string message = describe(*worst, names[worst->body], dt);
+  const std::string message = describe(*worst, name_of(names, worst->body), dt);
   if (risks.size() == 1) return message;
   return fmt::format(
       "{} bodies may move farther per substep than the contact margin or half their thinnest extent; "
@@ -72,7 +78,7 @@ std::string summarise(std::span<const TunnellingRisk> risks, std::span<const std
 }
 
 void TunnellingWarnings::add(std::string name, const geometry::Shape& shape) {
-  names_.push_back(std::move(name));
+  if (!name.empty()) names_.push_back({static_cast<std::uint32_t>(thinnest_.size()), std::move(name)});
   thinnest_.push_back(thinnest_extent(shape));
 }
 

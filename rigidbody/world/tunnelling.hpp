@@ -44,10 +44,17 @@ double excess(const TunnellingRisk& risk);
 // planes; lower the rigidbody dt by a factor 20, to 4.99e-05 s"
 std::string describe(const TunnellingRisk& risk, const std::string& name, double dt);
 
+// A body's name, for warnings.
+struct NamedBody {
+  std::uint32_t body = 0;
+  std::string name;
+};
+
 // One message for all of a window's risks: describe() of the one with the largest excess,
 // whose safe dt is safe for all, preceded by the count when there are several ("12 bodies
-// may move farther per substep than ...; the worst: body 17 (grain) may move ...").
-std::string summarise(std::span<const TunnellingRisk> risks, std::span<const std::string> names, double dt);
+// may move farther per substep than ...; the worst: body 17 (grain) may move ..."). `names`:
+// the bodies that have one, in body order.
+std::string summarise(std::span<const TunnellingRisk> risks, std::span<const NamedBody> names, double dt);
 
 // Decides when summarise() is worth saying: one warning, not one per body, the first time
 // any body is at risk, and again only when the count or the worst excess has doubled since
@@ -56,16 +63,15 @@ std::string summarise(std::span<const TunnellingRisk> risks, std::span<const std
 class TunnellingWarnings {
  public:
   void add(std::string name, const geometry::Shape& shape);  // one per body, in body order
-  void reserve(std::size_t bodies) {
-    names_.reserve(bodies);
-    thinnest_.reserve(bodies);
-  }
+  void reserve(std::size_t bodies) { thinnest_.reserve(bodies); }
   std::span<const double> thinnest() const { return thinnest_; }
   // summarise() when it is to be said now; nothing otherwise.
   std::optional<std::string> warning(std::span<const TunnellingRisk> risks, double dt);
 
  private:
-  std::vector<std::string> names_;
+  // Only the bodies that have a name: most have none, and an empty string in every body's
+  // place would hold 32 bytes per body.
+  std::vector<NamedBody> names_;
   std::vector<double> thinnest_;  // thinnest_extent per body, computed once
   std::size_t warned_count_ = 0;  // at the last warning; 0: none yet
   double warned_excess_ = 0.0;

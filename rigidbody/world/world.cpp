@@ -65,7 +65,7 @@ std::uint32_t World::add(const BodyDesc& body) {
     inertia.density = body.density;
   }
   shapes_.push_back(body.shape);
-  radii_.push_back(film_radius(body.shape));
+  if (settings_.lubrication.active()) radii_.push_back(film_radius(body.shape));
   states_.push_back(body.state);
   states_.back().orientation.normalize();
   inertias_.push_back(inertia);
@@ -79,7 +79,7 @@ std::uint32_t World::add(const BodyDesc& body) {
 
 void World::reserve(std::size_t bodies) {
   shapes_.reserve(bodies);
-  radii_.reserve(bodies);
+  if (settings_.lubrication.active()) radii_.reserve(bodies);
   states_.reserve(bodies);
   inertias_.reserve(bodies);
   materials_.reserve(bodies);

@@ -87,7 +87,8 @@ class World {
   solver::SoftStep soft_;
   double time_ = 0.0;
   std::vector<geometry::Shape> shapes_;
-  std::vector<double> radii_;  // of curvature, for the lubrication force (infinite: a plane)
+  // Of curvature, for the lubrication force (infinite: a plane); none without lubrication.
+  std::vector<double> radii_;
   std::vector<dynamics::BodyState> states_;
   std::vector<dynamics::BodyInertia> inertias_;
   // What the bodies move with in the current window: inertias_, or with a liquid's added
