@@ -27,7 +27,7 @@ ContactBlock::ContactBlock(std::span<const ContactFrame> frames, int axes, std::
       const Eigen::Vector3d d = f.basis.row(axis).transpose();
       for (const auto& [body, sign, r] : {std::tuple{f.a, -1.0, f.ra}, std::tuple{f.b, 1.0, f.rb}}) {
         const Eigen::Vector3d arm = r.cross(d);
-        sides.push_back({body, sign, d, arm, mobility[body].inverse_inertia * arm});
+        sides.push_back({body, sign, d, arm, mobility[body].turn(arm)});
       }
     }
   const auto n = static_cast<Eigen::Index>(sides.size() / 2);

@@ -16,7 +16,7 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
 // Change of point velocity per unit impulse at offset r from the centre of mass.
 Eigen::Matrix3d point_response(const Mobility& m, const Eigen::Vector3d& r) {
   const Eigen::Matrix3d rx = cross_matrix(r);
-  return m.inverse_mass * Eigen::Matrix3d::Identity() - rx * m.inverse_inertia * rx;
+  return m.inverse_mass * Eigen::Matrix3d::Identity() - rx * m.inverse_inertia_matrix() * rx;
 }
 
 Eigen::Vector3d any_tangent(const Eigen::Vector3d& n) {
@@ -26,11 +26,22 @@ Eigen::Vector3d any_tangent(const Eigen::Vector3d& n) {
 
 }  // namespace
 
+Mobility Mobility::of(double inverse_mass, const Eigen::Matrix3d& m) {
+  return {inverse_mass, {m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(0, 2), m(1, 2)}};
+}
+
+Eigen::Matrix3d Mobility::inverse_inertia_matrix() const {
+  const std::array<double, 6>& m = inverse_inertia;
+  Eigen::Matrix3d out;
+  out << m[0], m[3], m[4], m[3], m[1], m[5], m[4], m[5], m[2];
+  return out;
+}
+
 std::vector<Mobility> mobilities(std::span<const dynamics::BodyState> states,
                                  std::span<const dynamics::BodyInertia> inertias) {
   std::vector<Mobility> out(states.size());
   for (std::size_t i = 0; i < states.size(); ++i)
-    out[i] = {inertias[i].inverse_mass, inertias[i].inverse_inertia_world(states[i].orientation)};
+    out[i] = Mobility::of(inertias[i].inverse_mass, inertias[i].inverse_inertia_world(states[i].orientation));
   return out;
 }
 
