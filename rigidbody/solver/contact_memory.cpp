@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "rigidbody/contact/room.hpp"
+
 namespace cosim::rigidbody::solver {
 
 namespace {
@@ -37,6 +39,7 @@ void ContactMemory::remember(const contact::ContactSet& contacts, std::span<cons
     throw std::invalid_argument("contact memory: pairs must be sorted by (a, b)");
   pairs_ = contacts.pairs;
   entries_.clear();
+  contact::make_room(entries_, contacts.points.size());
   for (std::size_t k = 0; k < contacts.points.size(); ++k) entries_.push_back({contacts.points[k].feature, memory[k]});
 }
 

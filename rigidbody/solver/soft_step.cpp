@@ -5,8 +5,9 @@
 #include <optional>
 #include <utility>
 
-#include "rigidbody/solver/contact_groups.hpp"
+#include "rigidbody/contact/room.hpp"
 #include "rigidbody/solver/contact_block.hpp"
+#include "rigidbody/solver/contact_groups.hpp"
 
 namespace cosim::rigidbody::solver {
 
@@ -21,8 +22,11 @@ constexpr double kRigidCompliance = 1e-6;  // relative to the row's own W_kk
 void SoftStep::build_rows(const ContactScene& scene, std::span<const CachedContact> memory) {
   rows_.clear();
   groups_.clear();
+  const std::vector<std::vector<std::uint32_t>> groups = contact_groups(scene.inertias, scene.contacts.pairs);
+  contact::make_room(rows_, scene.contacts.points.size());
+  contact::make_room(groups_, groups.size());
   std::vector<char> counted(scene.states.size(), 0);
-  for (const auto& pairs : contact_groups(scene.inertias, scene.contacts.pairs)) {
+  for (const auto& pairs : groups) {
     Group g;
     g.first = rows_.size();
     double mass = 0.0, lightest = std::numeric_limits<double>::infinity(), heaviest = 0.0;

@@ -1,11 +1,12 @@
 #include "rigidbody/world/contact_graph.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace cosim::rigidbody::world {
 
-void ContactGraph::update(std::span<const broadphase::Pair> pairs) {
-  edges_.assign(pairs.begin(), pairs.end());
+void ContactGraph::update(std::vector<broadphase::Pair> pairs) {
+  edges_ = std::move(pairs);
   std::sort(edges_.begin(), edges_.end());
 }
 

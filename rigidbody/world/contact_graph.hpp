@@ -21,8 +21,9 @@ namespace cosim::rigidbody::world {
 // the same pair and feature (solver::ContactMemory); a point that vanished is forgotten.
 class ContactGraph {
  public:
-  // Replaces the edge set by `pairs` (each a < b, any order).
-  void update(std::span<const broadphase::Pair> pairs);
+  // Replaces the edge set by `pairs` (each a < b, any order), which it keeps as the edges:
+  // the broad phase's list moved in is the only one held.
+  void update(std::vector<broadphase::Pair> pairs);
   std::span<const broadphase::Pair> edges() const { return edges_; }
 
   // This narrow phase's contacts: clear, then add one manifold per touching edge in edge order.

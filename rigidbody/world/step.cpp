@@ -5,6 +5,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "rigidbody/contact/room.hpp"
 #include "rigidbody/dynamics/integrator.hpp"
 #include "rigidbody/world/world.hpp"
 
@@ -101,15 +102,21 @@ void World::broad_phase(StepReport& report) {
     const auto i = static_cast<std::uint32_t>(n);
     return object_of(i, shapes_[i], states_[i], inertias_[i].is_fixed());
   });
-  grid_.find_pairs(pairs_);
+  // About as many pairs as last time, in a list of their own that becomes the edges.
+  std::vector<broadphase::Pair> pairs;
+  contact::make_room(pairs, graph_.edges().size());
+  grid_.find_pairs(pairs);
   ++report.broadphase_updates;
-  graph_.update(pairs_);
+  graph_.update(std::move(pairs));
 }
 
 void World::narrow_phase(StepReport& report) {
   const double margin = this->margin();
   contact::ContactSet& contacts = graph_.contacts();
   contacts.clear();
+  // A sphere pair has one point: other shapes take the points past this.
+  contact::make_room(contacts.pairs, graph_.edges().size());
+  contact::make_room(contacts.points, graph_.edges().size());
   for (const auto& [a, b] : graph_.edges()) {
     contact::Manifold m{.a = a, .b = b};
     const geometry::Pose pa(states_[a].position, states_[a].orientation);
@@ -121,6 +128,7 @@ void World::narrow_phase(StepReport& report) {
   report.contacts = contacts.points.size();
 
   pair_materials_.clear();
+  contact::make_room(pair_materials_, contacts.pairs.size());
   for (const contact::PairContacts& p : contacts.pairs)
     pair_materials_.push_back(combine(materials_[p.a], materials_[p.b]));
 }

@@ -101,7 +101,6 @@ class World {
   double smallest_radius_ = 0.0;  // of the bounded bodies, for the default margin
 
   broadphase::HashGrid grid_;  // made from the bodies at each broad phase, no copy of them kept
-  std::vector<broadphase::Pair> pairs_;
   ContactGraph graph_;
   std::vector<solver::Material> pair_materials_;
   std::vector<solver::Mobility> mobility_;
