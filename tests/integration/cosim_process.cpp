@@ -94,15 +94,15 @@ CosimProcess::~CosimProcess() {
 
 std::string CosimProcess::output() const { return read_file(log_); }
 
-Finished CosimProcess::wait() {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+Finished CosimProcess::wait(std::chrono::seconds limit) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
   int status = 0;
   while (waitpid(pid_, &status, WNOHANG) == 0) {
     if (std::chrono::steady_clock::now() > deadline) {
       kill(pid_, SIGKILL);
       waitpid(pid_, &status, 0);
       pid_ = -1;
-      throw std::runtime_error("cosim did not finish within 60 s");
+      throw std::runtime_error("cosim did not finish within " + std::to_string(limit.count()) + " s");
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }

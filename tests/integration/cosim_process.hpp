@@ -4,6 +4,7 @@
 
 #include <sys/types.h>
 
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -26,14 +27,17 @@ class CosimProcess {
   CosimProcess& operator=(const CosimProcess&) = delete;
   pid_t pid() const { return pid_; }
   std::string output() const;  // what it printed so far
-  Finished wait();             // fails the test (exception) after 60 s
+  // Fails the test (exception) after `limit`.
+  Finished wait(std::chrono::seconds limit = std::chrono::seconds(60));
 
  private:
   pid_t pid_ = -1;
   std::filesystem::path log_;
 };
 
-inline Finished run_cosim(const std::vector<std::string>& args) { return CosimProcess(args).wait(); }
+inline Finished run_cosim(const std::vector<std::string>& args, std::chrono::seconds limit = std::chrono::seconds(60)) {
+  return CosimProcess(args).wait(limit);
+}
 
 // Writes dir/<stem>.yaml and runs `cosim run` on it, writing dir/<stem>.h5.
 Finished run_scene_text(const std::filesystem::path& dir, const std::string& yaml, const std::string& stem = "scene");
