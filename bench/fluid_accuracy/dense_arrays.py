@@ -21,7 +21,6 @@ over them being the method's dependence on how the body meets the grid; --csv wr
 case (at each of the --positions) and exits 1 when K is off Zick & Homsy's by more than --within percent (the ctest).
 """
 import argparse
-import csv
 import math
 import os
 import re
@@ -32,6 +31,7 @@ import time
 from pathlib import Path
 
 import h5py
+import yaml
 
 ROOT = Path(__file__).resolve().parent.parent.parent
 sys.path.insert(0, str(ROOT / "bench"))
@@ -54,44 +54,43 @@ def within_box(offset, radius, n):
     return [o * scale for o in offset]
 
 
-def scene_text(c, n, offset, run_file):
+def array_scene(c, n, offset, run_file):
     """The Hasimoto scene with the radius of fraction c, n^3 cells, the sphere `offset` cells
-    off the box's centre, to t = 6."""
-    text = (ROOT / "configs/hasimoto-sphere.yaml").read_text()
-    radius = (3 * c / (4 * math.pi)) ** (1 / 3)
-    replaced = [("radius: 0.2}", f"radius: {radius:.9f}}}"), ("cells: [20, 20, 20]", f"cells: [{n}, {n}, {n}]"),
-                ("file: runs/hasimoto-sphere.h5", f"file: {run_file}"), ("end: 3.0", "end: 6.0"),
-                ("position: [0.5, 0.5, 0.5]", "position: [{}]".format(", ".join(f"{0.5 + o / n:.9f}" for o in
-                                                                         within_box(offset, radius, n))))]
-    for old, new in replaced:
-        if old not in text:
-            sys.exit(f"dense_arrays.py: configs/hasimoto-sphere.yaml no longer holds {old!r}")
-        text = text.replace(old, new)
-    return text, radius
+    off the box's centre, to t = 6; and the sphere's radius."""
+    scene = yaml.safe_load((ROOT / "configs/hasimoto-sphere.yaml").read_text())
+    radius = (3 * c / (4 * math.pi)) ** (1 / 3)  # in a unit box
+    sphere = scene["bodies"][0]
+    sphere["shape"]["radius"] = radius
+    sphere["position"] = [0.5 + o / n for o in within_box(offset, radius, n)]
+    scene["participants"]["fluid"]["options"]["grid"]["cells"] = [n, n, n]
+    scene["output"]["file"] = str(run_file)
+    scene["time"]["end"] = 6.0
+    return scene, radius
 
 
-def drive_and_viscosity(text):
-    force = float(re.search(r"body_force: \[([^,]+),", text).group(1))
-    mu = float(re.search(r"mu: ([0-9.eE+-]+)", text).group(1))
-    return force, mu
+def drive(scene):
+    """rho f L^3, the drive on the whole cell, and the viscosity."""
+    options = scene["participants"]["fluid"]["options"]
+    box = [hi - lo for lo, hi in zip(scene["domain"]["min"], scene["domain"]["max"])]
+    return options["density"] * options["body_force"][0] * math.prod(box), options["viscosity"]["mu"]
 
 
 def run_case(fluid, c, n, position, folder):
     run_file = Path(folder) / f"c{c}_n{n}_p{position}.h5"
-    text, radius = scene_text(c, n, OFFSETS[position], run_file)
-    scene = Path(folder) / f"c{c}_n{n}_p{position}.yaml"
-    scene.write_text(text)
+    scene, radius = array_scene(c, n, OFFSETS[position], run_file)
+    scene_file = Path(folder) / f"c{c}_n{n}_p{position}.yaml"
+    scene_file.write_text(yaml.safe_dump(scene))
     start = time.monotonic()
-    done = subprocess.run([fluid, "--standalone", str(scene)], capture_output=True, text=True)
+    done = subprocess.run([fluid, "--standalone", str(scene_file)], capture_output=True, text=True)
     wall = time.monotonic() - start
     if done.returncode != 0:
-        sys.exit(f"dense_arrays.py: {fluid} --standalone {scene} failed:\n{done.stdout}{done.stderr}")
+        sys.exit(f"dense_arrays.py: {fluid} --standalone {scene_file} failed:\n{done.stdout}{done.stderr}")
     steps = re.search(r"(\d+) steps", done.stdout + done.stderr)
     with h5py.File(run_file, "r") as f:
         fields = f["fields/fluid"]
         last = max((g for g in fields.values() if "velocity" in g), key=lambda g: g.attrs["time"])
         u = float(last["velocity"][..., 0].mean())
-    force, mu = drive_and_viscosity(text)  # rho f L^3 with rho = 1 and L = 1
+    force, mu = drive(scene)
     k = force / (6 * math.pi * mu * radius * u)
     reference = ZICK_HOMSY[c]
     return {"c": c, "cells": n, "d_over_h": f"{2 * radius * n:.2f}", "position": position, "K": f"{k:.4f}", "zick_homsy": reference,
