@@ -15,7 +15,7 @@ which the dilute Hasimoto array, where the retraction is calibrated, does not te
 --cases takes c:n pairs (n cells a side; d/h = 2 a n with a = (3 c / (4 pi))^(1/3)), by
 default four fractions of the table at about d/h 6 and 12; --positions runs each at the
 first K of four places of the sphere's centre relative to the grid (on a grid point, then
-three generic ones, moved less where the sphere would reach out of the box), the spread
+three generic ones; a sphere reaching across the box's faces wraps round them), the spread
 over them being the method's dependence on how the body meets the grid; --csv writes the rows
 (bench/fluid_accuracy/dense_arrays.csv, rendered by scripts/results); --check runs the one
 case (at each of the --positions) and exits 1 when K is off Zick & Homsy's by more than --within percent (the ctest).
@@ -23,15 +23,11 @@ case (at each of the --positions) and exits 1 when K is off Zick & Homsy's by mo
 import argparse
 import math
 import os
-import re
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
-import h5py
-import yaml
+import periodic_box
 
 ROOT = Path(__file__).resolve().parent.parent.parent
 sys.path.insert(0, str(ROOT / "bench"))
@@ -45,57 +41,28 @@ OFFSETS = [(0, 0, 0), (0.37, 0.61, 0.19), (0.73, 0.11, 0.53), (0.23, 0.89, 0.71)
 COLUMNS = ["c", "cells", "d_over_h", "position", "K", "zick_homsy", "error", "steps", "wall_s", "command"]
 
 
-def within_box(offset, radius, n):
-    """`offset` (cells) shrunk where the sphere would reach out of the box: a body may not
-    cross a periodic face (the scene loader refuses it), so the densest arrays move less."""
-    room = (0.5 - radius) * n * 0.999
-    largest = max(offset)
-    scale = min(1.0, room / largest) if largest > 0 else 1.0
-    return [o * scale for o in offset]
-
-
-def array_scene(c, n, offset, run_file):
+def array_scene(c, n, offset):
     """The Hasimoto scene with the radius of fraction c, n^3 cells, the sphere `offset` cells
     off the box's centre, to t = 6; and the sphere's radius."""
-    scene = yaml.safe_load((ROOT / "configs/hasimoto-sphere.yaml").read_text())
+    scene = periodic_box.hasimoto_scene()
     radius = (3 * c / (4 * math.pi)) ** (1 / 3)  # in a unit box
     sphere = scene["bodies"][0]
     sphere["shape"]["radius"] = radius
-    sphere["position"] = [0.5 + o / n for o in within_box(offset, radius, n)]
+    sphere["position"] = [0.5 + o / n for o in offset]
     scene["participants"]["fluid"]["options"]["grid"]["cells"] = [n, n, n]
-    scene["output"]["file"] = str(run_file)
     scene["time"]["end"] = 6.0
     return scene, radius
 
 
-def drive(scene):
-    """rho f L^3, the drive on the whole cell, and the viscosity."""
-    options = scene["participants"]["fluid"]["options"]
-    box = [hi - lo for lo, hi in zip(scene["domain"]["min"], scene["domain"]["max"])]
-    return options["density"] * options["body_force"][0] * math.prod(box), options["viscosity"]["mu"]
-
-
 def run_case(fluid, c, n, position, folder):
-    run_file = Path(folder) / f"c{c}_n{n}_p{position}.h5"
-    scene, radius = array_scene(c, n, OFFSETS[position], run_file)
-    scene_file = Path(folder) / f"c{c}_n{n}_p{position}.yaml"
-    scene_file.write_text(yaml.safe_dump(scene))
-    start = time.monotonic()
-    done = subprocess.run([fluid, "--standalone", str(scene_file)], capture_output=True, text=True)
-    wall = time.monotonic() - start
-    if done.returncode != 0:
-        sys.exit(f"dense_arrays.py: {fluid} --standalone {scene_file} failed:\n{done.stdout}{done.stderr}")
-    steps = re.search(r"(\d+) steps", done.stdout + done.stderr)
-    with h5py.File(run_file, "r") as f:
-        fields = f["fields/fluid"]
-        last = max((g for g in fields.values() if "velocity" in g), key=lambda g: g.attrs["time"])
-        u = float(last["velocity"][..., 0].mean())
-    force, mu = drive(scene)
-    k = force / (6 * math.pi * mu * radius * u)
+    scene, radius = array_scene(c, n, OFFSETS[position])
+    result = periodic_box.run(fluid, scene, folder, f"c{c}_n{n}_p{position}")
+    force, mu = periodic_box.drive(scene)
+    k = force / (6 * math.pi * mu * radius * result["u"])
     reference = ZICK_HOMSY[c]
-    return {"c": c, "cells": n, "d_over_h": f"{2 * radius * n:.2f}", "position": position, "K": f"{k:.4f}", "zick_homsy": reference,
-            "error": f"{k / reference - 1:.4f}", "steps": steps.group(1) if steps else "",
-            "wall_s": f"{wall:.0f}"}
+    return {"c": c, "cells": n, "d_over_h": f"{2 * radius * n:.2f}", "position": position, "K": f"{k:.4f}",
+            "zick_homsy": reference, "error": f"{k / reference - 1:.4f}", "steps": result["steps"],
+            "wall_s": f"{result['wall']:.0f}"}
 
 
 def parse_case(text):

@@ -181,10 +181,14 @@ std::optional<std::string> outside_domain(const Body& b, const Domain& d) {
     lo[k] = b.position[k] - h[k];
     hi[k] = b.position[k] + h[k];
   }
-  for (int k = 0; k < 3; ++k)
-    if (lo[k] < d.min[k] - domain_slack || hi[k] > d.max[k] + domain_slack)
-      return fmt::format("(extent {} .. {}) is outside the domain {} .. {}", text(lo), text(hi), text(d.min),
-                         text(d.max));
+  const auto problem = [&](const char* where) {
+    return fmt::format("(extent {} .. {}) {} the domain {} .. {}", text(lo), text(hi), where, text(d.min), text(d.max));
+  };
+  for (int k = 0; k < 3; ++k) {
+    if (b.fixed && (hi[k] < d.min[k] - domain_slack || lo[k] > d.max[k] + domain_slack))
+      return problem("lies wholly outside");
+    if (!b.fixed && (lo[k] < d.min[k] - domain_slack || hi[k] > d.max[k] + domain_slack)) return problem("is outside");
+  }
   return std::nullopt;
 }
 

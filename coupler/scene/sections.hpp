@@ -42,7 +42,10 @@ Body read_common(const Reader& r, const std::filesystem::path& dir);
 // The entry's `file` resolved against `dir`; it must exist.
 std::filesystem::path existing_file(const Reader& r, const std::filesystem::path& dir);
 
-// "(extent [..] .. [..]) is outside the domain [..] .. [..]" if some of `b` is outside `d`.
+// "(extent [..] .. [..]) is outside the domain [..] .. [..]" if some of a moving body `b`
+// is outside `d`; for a fixed body, "lies wholly outside" if none of it is inside: a fixed
+// body may reach out of the domain, cut by its walls or, where the fluid's immersed boundary
+// holds it, wrapping round a periodic face.
 std::optional<std::string> outside_domain(const Body& b, const Domain& d);
 
 // Scales `q` to unit length, or says why not ("not a unit quaternion (norm 1.1)").

@@ -38,8 +38,9 @@ class BodyTreatment {
   virtual StepBodies for_step() = 0;
   // Force and torque on every body from the flow's last step. Collective.
   virtual std::vector<HydrodynamicLoad> loads(const navier_stokes::NavierStokes& flow) const = 0;
-  // Body i's volume fraction at this rank's owned cell centres (zero outside its patch).
-  virtual IndicatorPatch cell_fraction(std::size_t i) const = 0;
+  // Body i's volume fraction at this rank's owned cell centres (zero outside its patches):
+  // one patch for the body and one for each periodic image of it that reaches them.
+  virtual std::vector<IndicatorPatch> cell_fractions(std::size_t i) const = 0;
 
   // What the bodies carry from one step to the next besides the flow (this rank's part),
   // for the rollback of an implicitly coupled window; empty if nothing.

@@ -164,6 +164,27 @@ void require_body(const RigidBody& body) {
     throw std::invalid_argument("immersed boundary: a half-space is not a body (use a wall boundary)");
 }
 
+// The shift by whole periods that brings box o nearest to box b (zero on other axes): a
+// fixed body reaching across a periodic face meets its neighbours there through an image.
+Eigen::Vector3d nearest_image(const Grid& grid, const geometry::Aabb& b, const geometry::Aabb& o) {
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+  if (!b.is_bounded() || !o.is_bounded()) return shift;
+  for (int d = 0; d < 3; ++d) {
+    const Axis& axis = grid.axis(d);
+    if (!axis.periodic() || axis.degenerate()) continue;
+    const double period = axis.hi() - axis.lo();
+    double nearest = HUGE_VAL;
+    for (double s : {0.0, -period, period}) {
+      const double gap = std::max({0.0, o.min[d] + s - b.max[d], b.min[d] - o.max[d] - s});
+      if (gap < nearest) {
+        nearest = gap;
+        shift[d] = s;
+      }
+    }
+  }
+  return shift;
+}
+
 // Whether body o may cover a marker of body b: their boxes overlap, or for a container
 // (whose box is everything), the other comes within its bounding radius of the wall.
 bool may_cover(const RigidBody& b, const geometry::Aabb& box_b, const RigidBody& o, const geometry::Aabb& box_o) {
@@ -291,9 +312,12 @@ std::vector<HydrodynamicLoad> ImmersedBoundary::loads(const NavierStokes&) const
   return out;
 }
 
-IndicatorPatch ImmersedBoundary::cell_fraction(std::size_t i) const {
+std::vector<IndicatorPatch> ImmersedBoundary::cell_fractions(std::size_t i) const {
   const Entry& e = bodies_.at(i);
-  return volume_fraction(grid_, kCellCentre, e.body, e.distance, grid_.owned(grid_.cell_dm()));
+  std::vector<IndicatorPatch> out;
+  for (FractionImage& image : volume_fractions(grid_, kCellCentre, e.body, e.distance, grid_.owned(grid_.cell_dm())))
+    out.push_back(std::move(image.patch));
+  return out;
 }
 
 std::vector<Eigen::Vector3d> ImmersedBoundary::markers(std::size_t i) const {
@@ -397,9 +421,14 @@ void ImmersedBoundary::collect_active_markers(double lag) {
     swept.min.array() -= sweep;
     swept.max.array() += sweep;
     if (!near(grid_, cells, swept, reach)) continue;
-    std::vector<std::size_t> touching;
-    for (std::size_t o = 0; o < bodies_.size(); ++o)
-      if (o != b && may_cover(body, boxes[b], bodies_[o].body, boxes[o])) touching.push_back(o);
+    // The bodies that may cover b's markers, each by its image nearest b.
+    std::vector<std::pair<std::size_t, Eigen::Vector3d>> touching;
+    for (std::size_t o = 0; o < bodies_.size(); ++o) {
+      if (o == b) continue;
+      const Eigen::Vector3d shift = nearest_image(grid_, boxes[b], boxes[o]);
+      const geometry::Aabb image{boxes[o].min + shift, boxes[o].max + shift};
+      if (may_cover(body, boxes[b], bodies_[o].body, image)) touching.emplace_back(o, shift);
+    }
     for (std::size_t k = 0; k < bodies_[b].markers.size(); ++k) {
       const Marker& m = bodies_[b].markers[k];
       ActiveMarker a;
@@ -407,8 +436,10 @@ void ImmersedBoundary::collect_active_markers(double lag) {
       a.marker = k;
       const Eigen::Vector3d x = body.pose.to_world(m.position);
       if (!inside_domain(x, bounded)) continue;
-      const bool covered = std::any_of(touching.begin(), touching.end(), [&](std::size_t o) {
-        return boxes[o].contains(x) && geometry::signed_distance(bodies_[o].body.shape, bodies_[o].body.pose, x) < 0;
+      const bool covered = std::any_of(touching.begin(), touching.end(), [&](const auto& other) {
+        const auto& [o, shift] = other;
+        const Eigen::Vector3d at = x - shift;
+        return boxes[o].contains(at) && geometry::signed_distance(bodies_[o].body.shape, bodies_[o].body.pose, at) < 0;
       });
       if (covered || !place(x, a)) continue;
       a.id = first_marker_[b] + k;
@@ -723,9 +754,9 @@ void ImmersedBoundary::update_fractions() {
         e.fraction_pose->orientation().coeffs() == now.orientation().coeffs())
       continue;
     e.fraction_pose = now;
-    e.fraction.clear();
     for (int c = 0; c < 3; ++c)
-      e.fraction.push_back(volume_fraction(grid_, c, e.body, e.distance, grid_.owned(grid_.velocity_dm(c))));
+      e.fraction[static_cast<std::size_t>(c)] =
+          volume_fractions(grid_, c, e.body, e.distance, grid_.owned(grid_.velocity_dm(c)));
     if (geometry::is_bounded(e.body.shape)) continue;
     // Beyond the markers' kernels: their depth and reach, and half a face's width.
     double widest = 0;
@@ -753,17 +784,20 @@ std::vector<double> ImmersedBoundary::inner_momenta(const NavierStokes& flow) co
     COSIM_PETSC(DMDAVecGetArrayRead(dm, flow.velocity(c), &u));
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
       const RigidBody& body = bodies_[b].body;
-      const IndicatorPatch& alpha = bodies_[b].fraction[static_cast<std::size_t>(c)];
       Eigen::Vector3d momentum = Eigen::Vector3d::Zero(), angular = Eigen::Vector3d::Zero();
-      for_each_index(alpha.range(), [&](const Index& p) {
-        const double a = alpha(p);
-        if (a == 0 || grid_.on_boundary(c, p)) return;
-        const Point x = grid_.position(c, p);
-        Eigen::Vector3d m = Eigen::Vector3d::Zero();
-        m[c] = a * u[p[2]][p[1]][p[0]] * grid_.face_volume(c, p);
-        momentum += m;
-        angular += (Eigen::Vector3d(x[0], x[1], x[2]) - body.pose.position()).cross(m);
-      });
+      for (const FractionImage& image : bodies_[b].fraction[static_cast<std::size_t>(c)]) {
+        const IndicatorPatch& alpha = image.patch;
+        const Eigen::Vector3d centre = body.pose.position() + image.shift;
+        for_each_index(alpha.range(), [&](const Index& p) {
+          const double a = alpha(p);
+          if (a == 0 || grid_.on_boundary(c, p)) return;
+          const Point x = grid_.position(c, p);
+          Eigen::Vector3d m = Eigen::Vector3d::Zero();
+          m[c] = a * u[p[2]][p[1]][p[0]] * grid_.face_volume(c, p);
+          momentum += m;
+          angular += (Eigen::Vector3d(x[0], x[1], x[2]) - centre).cross(m);
+        });
+      }
       for (int d = 0; d < 3; ++d) {
         out[kInnerWidth * b + static_cast<std::size_t>(d)] += momentum[d];
         out[kInnerWidth * b + 3 + static_cast<std::size_t>(d)] += angular[d];

@@ -52,6 +52,7 @@
 #include "fluid/ibm/kernel_stencil.hpp"
 #include "fluid/ibm/marker_sharing.hpp"
 #include "fluid/ibm/marker_stencils.hpp"
+#include "fluid/ibm/volume_fraction.hpp"
 #include "geometry/sampled_shapes.hpp"
 
 namespace cosim::fluid::ibm {
@@ -128,7 +129,7 @@ class ImmersedBoundary final : public bodies::BodyTreatment, public bodies::Body
   bodies::StepBodies for_step() override { return {.forcing = this}; }
   // Measured in the last step (zero before the first).
   std::vector<bodies::HydrodynamicLoad> loads(const navier_stokes::NavierStokes& flow) const override;
-  bodies::IndicatorPatch cell_fraction(std::size_t i) const override;
+  std::vector<bodies::IndicatorPatch> cell_fractions(std::size_t i) const override;
   // Per body the inner fluid's momentum and angular momentum at the last step's end, and
   // its markers' forces.
   std::vector<double> state() const override;
@@ -165,7 +166,8 @@ class ImmersedBoundary final : public bodies::BodyTreatment, public bodies::Body
     std::array<double, 6> inner{};  // int alpha u dV, int alpha (x - x_c) x u dV
     bool inner_known = false;
     Eigen::Vector3d forcing = Eigen::Vector3d::Zero(), forcing_moment = Eigen::Vector3d::Zero();  // sum F dV
-    std::vector<bodies::IndicatorPatch> fraction;  // alpha at this rank's faces of each component, where the body is
+    // alpha at this rank's faces of each component, where the body and its periodic images are
+    std::array<std::vector<FractionImage>, 3> fraction;
     std::optional<geometry::Pose> fraction_pose;   // where the body was when `fraction` was found
     std::array<std::vector<grid::Index>, 3> held;  // a container's faces beyond its kernels (hold_solid)
     bodies::HydrodynamicLoad load;

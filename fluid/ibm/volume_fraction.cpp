@@ -96,4 +96,30 @@ IndicatorPatch volume_fraction(const Grid& grid, int location, const RigidBody& 
   return {range, std::move(values)};
 }
 
+std::vector<FractionImage> volume_fractions(const Grid& grid, int location, const RigidBody& body,
+                                            const BodyDistance& distance, const Box& within) {
+  std::array<std::vector<double>, 3> shifts{std::vector<double>{0.0}, {0.0}, {0.0}};
+  if (geometry::is_bounded(body.shape)) {
+    const geometry::Aabb box = geometry::world_aabb(body.shape, body.pose);
+    for (int d = 0; d < 3; ++d) {
+      const Axis& axis = grid.axis(d);
+      if (!axis.periodic() || axis.degenerate()) continue;
+      const double period = axis.hi() - axis.lo();
+      if (box.min[d] < axis.lo()) shifts[d].push_back(period);
+      if (box.max[d] > axis.hi()) shifts[d].push_back(-period);
+    }
+  }
+  std::vector<FractionImage> out;
+  for (double x : shifts[0])
+    for (double y : shifts[1])
+      for (double z : shifts[2]) {
+        const Eigen::Vector3d shift(x, y, z);
+        RigidBody image = body;
+        image.pose.set_position(body.pose.position() + shift);
+        IndicatorPatch patch = volume_fraction(grid, location, image, distance, within);
+        if (out.empty() || patch.tested() > 0) out.push_back({std::move(patch), shift});
+      }
+  return out;
+}
+
 }  // namespace cosim::fluid::ibm

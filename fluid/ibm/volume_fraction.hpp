@@ -8,6 +8,7 @@
 // immersed boundary's inner-fluid momentum int alpha u dV, whose rate of change is part of
 // the body's force, then changes smoothly as the body moves across the grid.
 #include <span>
+#include <vector>
 
 #include "fluid/bodies/control_volumes.hpp"
 #include "fluid/bodies/rigid_body.hpp"
@@ -25,5 +26,16 @@ double level_set_fraction(std::span<const double> phi);
 // stands for it.
 bodies::IndicatorPatch volume_fraction(const grid::Grid& grid, int location, const bodies::RigidBody& body,
                                        const BodyDistance& distance, const grid::Box& within);
+
+// The body's fraction and those of its images a period away along the periodic axes that
+// reach into `within` (a fixed body may reach across a periodic face, and the part beyond
+// it lies at the opposite face): one patch per image, with the image's shift from the body.
+// The body itself comes first, its patch empty where it lies wholly beyond the domain.
+struct FractionImage {
+  bodies::IndicatorPatch patch;
+  Eigen::Vector3d shift;
+};
+std::vector<FractionImage> volume_fractions(const grid::Grid& grid, int location, const bodies::RigidBody& body,
+                                            const BodyDistance& distance, const grid::Box& within);
 
 }  // namespace cosim::fluid::ibm

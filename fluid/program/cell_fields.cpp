@@ -92,11 +92,11 @@ field::FieldFrame cell_fields(const fluid::navier_stokes::NavierStokes& flow,
   // Only each body's own cells are visited (its patch lies within this rank's cells).
   std::vector<double> alpha = cell_values(grid, [&](PetscScalar*** a) {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      const fluid::bodies::IndicatorPatch body = bodies.cell_fraction(b);
-      fluid::grid::for_each_index(body.range(), [&](const Index& m) {
-        PetscScalar& largest = a[m[2]][m[1]][m[0]];
-        largest = std::max(largest, body(m));
-      });
+      for (const fluid::bodies::IndicatorPatch& body : bodies.cell_fractions(b))
+        fluid::grid::for_each_index(body.range(), [&](const Index& m) {
+          PetscScalar& largest = a[m[2]][m[1]][m[0]];
+          largest = std::max(largest, body(m));
+        });
     }
   });
   if (pressure.empty()) return frame;  // not rank 0

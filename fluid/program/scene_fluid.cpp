@@ -1,5 +1,7 @@
 #include "fluid/program/scene_fluid.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -7,6 +9,8 @@
 #include "coupler/scene/geometry_shape.hpp"
 #include "coupler/scene/eigen.hpp"
 #include "coupler/scene/error.hpp"
+#include "coupler/scene/extent.hpp"
+#include "coupler/scene/sections.hpp"
 #include "coupler/scene/reader.hpp"
 #include "fluid/program/confined_inflow.hpp"
 
@@ -214,14 +218,42 @@ fluid::BodyOptions read_body_method(const Reader& options) {
   return out;
 }
 
-// Neither method holds a half-space, and a body reaching across a periodic face would be cut.
-void read_bodies(const scene::Scene& scene, const scene::Participant& p, FluidSetup& s) {
+// A fixed body may reach across a periodic face (the scene lets fixed bodies reach out of the
+// domain): the immersed boundary wraps its markers and volume fractions round. The staircase
+// does not, and cosim-rigidbody does not wrap bodies, so moving bodies would pass through the
+// part beyond the face.
+void check_wrapping(const scene::Scene& scene, std::size_t b, const std::array<bool, 3>& periodic,
+                    const FluidSetup& s) {
+  const scene::Body& body = scene.bodies[b];
+  const scene::Vec3 reach = scene::half_extent(body.shape, body.orientation);
+  for (std::size_t a = 0; a < 3; ++a) {
+    const bool across = body.position[a] - reach[a] < scene.domain.min[a] - scene::domain_slack ||
+                        body.position[a] + reach[a] > scene.domain.max[a] + scene::domain_slack;
+    if (!periodic[a] || !across) continue;
+    const auto fail = [&](const std::string& why) {
+      throw scene::SceneError(
+          scene.file.string(), body.material_line, "bodies[" + std::to_string(b) + "].position",
+          scene::text(body.position),
+          fmt::format("body '{}' reaches across the periodic {} faces: {}", body.name, "xyz"[a], why));
+    };
+    if (std::holds_alternative<fluid::staircase::FbmOptions>(s.body_method))
+      fail("the staircase does not wrap bodies round (participants.fluid.options.bodies.method: ibm does)");
+    const auto moving = std::find_if(scene.bodies.begin(), scene.bodies.end(), [](const auto& o) { return !o.fixed; });
+    if (moving != scene.bodies.end())
+      fail("cosim-rigidbody does not wrap it round, so body '" + moving->name + "' would pass through its part beyond");
+  }
+}
+
+// Neither method holds a half-space.
+void read_bodies(const scene::Scene& scene, const scene::Participant& p, const std::array<bool, 3>& periodic,
+                 FluidSetup& s) {
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& body = scene.bodies[b];
     const std::string key = "bodies[" + std::to_string(b) + "].shape.type";
     if (body.shape.type == scene::ShapeType::Plane)
       throw scene::SceneError(scene.file.string(), p.line, key, "plane",
                               "cosim-fluid cannot hold a plane body: make it a wall boundary (participants.fluid)");
+    check_wrapping(scene, b, periodic, s);
     fluid::bodies::RigidBody r{.shape = scene::shape_of(body.shape), .pose = {}};
     const Eigen::Quaterniond q = scene::to_eigen(body.orientation);
     const Eigen::Vector3d x = scene::to_eigen(body.position) + q * scene::com_shift(r.shape);
@@ -280,7 +312,7 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   } catch (const std::invalid_argument& e) {
     options.fail("petsc", e.what());
   }
-  read_bodies(scene, p, s);
+  read_bodies(scene, p, periodic, s);
   confine_inflows(confined, s);
   s.motions = read_motions(scene, options, std::move(s.motions));
   options.finish();

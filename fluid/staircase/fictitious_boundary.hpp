@@ -44,7 +44,9 @@ class FictitiousBoundary final : public bodies::BodyTreatment {
   // Collective.
   double grid_volume(std::size_t i) const;
   // The point-sampled (or sub-sampled) indicator.
-  bodies::IndicatorPatch cell_fraction(std::size_t i) const override { return bodies_.at(i).patches[kCellPatch]; }
+  std::vector<bodies::IndicatorPatch> cell_fractions(std::size_t i) const override {
+    return {bodies_.at(i).patches[kCellPatch]};
+  }
   // Grid points tested against body i's shape on this rank at its last move (faces of the
   // three components and cell centres).
   std::size_t points_tested(std::size_t i) const;

@@ -36,9 +36,9 @@ constexpr double pi = std::numbers::pi;
 
 // sum alpha dV over this rank's cells, summed over the ranks.
 double grid_volume(const Grid& grid, const BodyTreatment& bodies, std::size_t b) {
-  const IndicatorPatch alpha = bodies.cell_fraction(b);
   double v = 0;
-  for_each_index(alpha.range(), [&](const Index& m) { v += alpha(m) * grid.cell_volume(m); });
+  for (const IndicatorPatch& alpha : bodies.cell_fractions(b))
+    for_each_index(alpha.range(), [&](const Index& m) { v += alpha(m) * grid.cell_volume(m); });
   MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_DOUBLE, MPI_SUM, grid.comm());
   return v;
 }
@@ -75,6 +75,28 @@ TEST(IbmVolumeFraction, SphereVolumeIsContinuousInThePose) {
               100 * worst, jump);
   EXPECT_LT(worst, 0.01);
   EXPECT_LT(jump, 2e-4);
+}
+
+// A sphere reaching across a corner of a periodic box has its whole volume on the grid,
+// the parts beyond the faces wrapped round as images; across walls it is cut.
+TEST(IbmVolumeFraction, ASphereAcrossPeriodicFacesWrapsRound) {
+  const int n = 20;
+  const double r = 0.2, exact = 4.0 / 3 * pi * r * r * r;
+  const Eigen::Vector3d corner(0.011, 0.023, 0.987);
+  Grid periodic(PETSC_COMM_WORLD,
+                {Axis::uniform(n, 0, 1, true), Axis::uniform(n, 0, 1, true), Axis::uniform(n, 0, 1, true)});
+  ImmersedBoundary wrapped(periodic);
+  wrapped.add({geometry::Sphere(r), geometry::Pose(corner, Eigen::Quaterniond::Identity())});
+  const double v = grid_volume(periodic, wrapped, 0);
+  PetscPrintf(PETSC_COMM_WORLD, "IBM grid volume of a sphere across a periodic corner: %.6f, exact %.6f\n", v, exact);
+  EXPECT_NEAR(v, exact, 0.01 * exact);
+  Grid walled(PETSC_COMM_WORLD,
+              {Axis::uniform(n, 0, 1, false), Axis::uniform(n, 0, 1, false), Axis::uniform(n, 0, 1, false)});
+  ImmersedBoundary cut(walled);
+  cut.add({geometry::Sphere(r), geometry::Pose(corner, Eigen::Quaterniond::Identity())});
+  const double inside = grid_volume(walled, cut, 0);  // an eighth of it, and a little more
+  EXPECT_GT(inside, 0.125 * exact);
+  EXPECT_LT(inside, 0.25 * exact);
 }
 
 // On a two-dimensional grid the fractions are the section's: a cylinder as thick as the

@@ -223,5 +223,27 @@ TEST(FluidScene, RefusesAPlaneBody) {
   EXPECT_NE(std::string(e.what()).find("wall boundary"), std::string::npos) << e.what();
 }
 
+// A fixed body may reach across a periodic face with the immersed boundary, which wraps it
+// round; the staircase does not, and a moving body would pass through its part beyond.
+TEST(FluidScene, AFixedBodyAcrossAPeriodicFaceNeedsTheImmersedBoundaryAndNoMovingBodies) {
+  const std::string across =
+      replaced(testing::channel_scene(), "position: [0.2, 0.1, 0.005]", "position: [0.2, 0.01, 0.005]");
+  EXPECT_EQ(setup_of(across).bodies.size(), 1u);
+  const scene::SceneError staircase =
+      error_of(replaced(across, "bodies: {tolerance: 1.0e-9}", "bodies: {method: staircase}"));
+  EXPECT_EQ(staircase.key, "bodies[0].position");
+  EXPECT_NE(std::string(staircase.what()).find("body 'cyl' reaches across the periodic y faces: the staircase"),
+            std::string::npos)
+      << staircase.what();
+  const std::string with_ball = replaced(
+      across, "bodies:\n",
+      "bodies:\n  - {name: ball, shape: {type: sphere, radius: 0.005}, material: {density: 2000}, position: [0.1, "
+      "0.1, 0.005]}\n");
+  const scene::SceneError moving =
+      error_of(replaced(with_ball, "participants:\n", "participants:\n  rigidbody:\n    dt: 0.01\n"));
+  EXPECT_EQ(moving.key, "bodies[1].position");
+  EXPECT_NE(std::string(moving.what()).find("body 'ball' would pass through"), std::string::npos) << moving.what();
+}
+
 }  // namespace
 }  // namespace cosim::fluid::program

@@ -179,7 +179,22 @@ TEST(Validation, PlanePositionMustBeInside) {
       load_error(head + "bodies:\n  - {name: floor, fixed: true, shape: {type: plane, normal: [0, 0, 1]},"
                         " position: [0.5, 0.5, -0.1]}\n"),
       "scene.yaml:5: bodies[0].position = [0.5, 0.5, -0.1]: body 'floor' (extent [0.5, 0.5, -0.1] .. [0.5, 0.5, -0.1])"
-      " is outside the domain [0, 0, 0] .. [1, 1, 1]");
+      " lies wholly outside the domain [0, 0, 0] .. [1, 1, 1]");
+}
+
+// A fixed body may reach out of the domain (cut by a wall, or wrapped round a periodic face
+// by the fluid), but not lie wholly outside it.
+TEST(Validation, FixedBodyMayReachOutOfTheDomain) {
+  const auto fixed_ball = [](const std::string& position) {
+    return head + "bodies:\n  - {name: ball, fixed: true, shape: {type: sphere, radius: 0.1}, position: " + position +
+           "}\n";
+  };
+  EXPECT_EQ(load_error(fixed_ball("[0.5, 0.5, 0.95]")), "");
+  EXPECT_EQ(load_error(fixed_ball("[1.05, 0.5, 0.5]")), "");
+  EXPECT_EQ(
+      load_error(fixed_ball("[0.5, 0.5, 1.2]")),
+      "scene.yaml:5: bodies[0].position = [0.5, 0.5, 1.2]: body 'ball' (extent [0.4, 0.4, 1.1] .. [0.6, 0.6, 1.3])"
+      " lies wholly outside the domain [0, 0, 0] .. [1, 1, 1]");
 }
 
 TEST(Validation, DomainMustHaveVolume) {
