@@ -45,7 +45,7 @@ from results_table import upsert  # noqa: E402
 # (fluid/ibm/README.md), the faster the smaller dt nu / h^2: at about 2 the mean velocity
 # changes by about 1e-4 of itself over the last 500 of 4000 steps (the `change` column).
 STEPS = 4000
-COLUMNS = ["phi", "spheres", "cells", "d_over_h", "seed", "F", "van_der_hoef", "error", "change", "steps", "wall_s",
+COLUMNS = ["phi", "spheres", "cells", "d_over_h", "seed", "near", "F", "van_der_hoef", "error", "change", "steps", "wall_s",
            "command"]
 
 
@@ -85,9 +85,19 @@ def place(n_spheres, radius, gap, seed, sweeps=200):
     return centres
 
 
+def near_pairs(centres, radius, h):
+    """Pairs of spheres whose surfaces come within a cell h of each other (nearest images),
+    per sphere: where the immersed boundary's drag is too high at d/h 6 (dense_arrays.py)."""
+    d = centres[:, None, :] - centres[None, :, :]
+    d -= np.round(d)
+    gap = np.sqrt(np.einsum("ijk,ijk->ij", d, d)) - 2 * radius
+    upper = np.triu_indices(len(centres), 1)
+    return float((gap[upper] < h).sum()) / len(centres)
+
+
 def array_scene(phi, n_spheres, d_over_h, gap_cells, seed):
     """The Hasimoto scene holding the random array, its time step dt nu / h^2 about 2, to
-    4000 steps in windows of 50; its radius and cells."""
+    4000 steps in windows of 50; its radius, cells and near pairs per sphere."""
     radius = (3 * phi / (4 * math.pi * n_spheres)) ** (1 / 3)  # in a unit box
     cells = round(d_over_h / (2 * radius))
     centres = place(n_spheres, radius, gap_cells / cells, seed)
@@ -101,17 +111,17 @@ def array_scene(phi, n_spheres, d_over_h, gap_cells, seed):
     fluid["dt"] = fluid["options"]["dt_initial"] = dt
     scene["coupling"]["window"] = 50 * dt
     scene["time"]["end"] = STEPS * dt
-    return scene, radius, cells
+    return scene, radius, cells, near_pairs(centres, radius, 1 / cells)
 
 
 def run_case(fluid, phi, n_spheres, d_over_h, gap, seed, folder):
-    scene, radius, cells = array_scene(phi, n_spheres, d_over_h, gap, seed)
+    scene, radius, cells, near = array_scene(phi, n_spheres, d_over_h, gap, seed)
     result = periodic_box.run(fluid, scene, folder, f"phi{phi}_n{n_spheres}_s{seed}")
     drive, mu = periodic_box.drive(scene)
     f = (1 - phi) * drive / n_spheres / (3 * math.pi * mu * 2 * radius * result["u"])
     reference = van_der_hoef(phi)
     return {"phi": phi, "spheres": n_spheres, "cells": cells, "d_over_h": f"{2 * radius * cells:.2f}", "seed": seed,
-            "F": f"{f:.4f}", "van_der_hoef": f"{reference:.4f}", "error": f"{f / reference - 1:.4f}",
+            "near": f"{near:.2f}", "F": f"{f:.4f}", "van_der_hoef": f"{reference:.4f}", "error": f"{f / reference - 1:.4f}",
             "change": f"{result['change']:.1e}", "steps": result["steps"], "wall_s": f"{result['wall']:.0f}"}
 
 
@@ -145,7 +155,7 @@ def main():
                     upsert(args.csv, COLUMNS, [{k: str(v) for k, v in row.items()}],
                            ("phi", "spheres", "cells", "seed"))
                 print(f"phi {phi:g}, {args.spheres} spheres, {row['cells']}^3 cells (d/h {row['d_over_h']}), seed "
-                      f"{seed}: F {row['F']} against van der Hoef et al.'s {row['van_der_hoef']}: "
+                      f"{seed} ({row['near']} pairs a cell apart per sphere): F {row['F']} against van der Hoef et al.'s {row['van_der_hoef']}: "
                       f"{float(row['error']):+.2%}; U changed by {row['change']} over the last 500 steps; "
                       f"{row['steps']} steps, {row['wall_s']} s", flush=True)
             mean = statistics.fmean(values)
