@@ -15,7 +15,7 @@ feel among their neighbours, where a single sphere or a simple cubic array (dens
 leaves out the near pairs a random bed has.
 
     bench/fluid_accuracy/random_arrays.py [--fractions 0.1 0.2 0.3] [--spheres N]
-        [--d-over-h 6] [--seeds K] [--csv FILE] [--check PHI --within PERCENT]
+        [--d-over-h 6] [--seeds K] [--gap CELLS] [--csv FILE] [--check --within PERCENT]
 
 The placement is random sequential addition followed by Monte Carlo sweeps of hard-sphere
 moves (a hard-sphere fluid's structure, near pairs included, up to phi about 0.35), each

@@ -164,27 +164,6 @@ void require_body(const RigidBody& body) {
     throw std::invalid_argument("immersed boundary: a half-space is not a body (use a wall boundary)");
 }
 
-// The shift by whole periods that brings box o nearest to box b (zero on other axes): a
-// fixed body reaching across a periodic face meets its neighbours there through an image.
-Eigen::Vector3d nearest_image(const Grid& grid, const geometry::Aabb& b, const geometry::Aabb& o) {
-  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
-  if (!b.is_bounded() || !o.is_bounded()) return shift;
-  for (int d = 0; d < 3; ++d) {
-    const Axis& axis = grid.axis(d);
-    if (!axis.periodic() || axis.degenerate()) continue;
-    const double period = axis.hi() - axis.lo();
-    double nearest = HUGE_VAL;
-    for (double s : {0.0, -period, period}) {
-      const double gap = std::max({0.0, o.min[d] + s - b.max[d], b.min[d] - o.max[d] - s});
-      if (gap < nearest) {
-        nearest = gap;
-        shift[d] = s;
-      }
-    }
-  }
-  return shift;
-}
-
 // Whether body o may cover a marker of body b: their boxes overlap, or for a container
 // (whose box is everything), the other comes within its bounding radius of the wall.
 bool may_cover(const RigidBody& b, const geometry::Aabb& box_b, const RigidBody& o, const geometry::Aabb& box_o) {
@@ -421,13 +400,15 @@ void ImmersedBoundary::collect_active_markers(double lag) {
     swept.min.array() -= sweep;
     swept.max.array() += sweep;
     if (!near(grid_, cells, swept, reach)) continue;
-    // The bodies that may cover b's markers, each by its image nearest b.
+    // The bodies that may cover b's markers, each by every image of it (across periodic
+    // faces) whose box meets b's.
     std::vector<std::pair<std::size_t, Eigen::Vector3d>> touching;
     for (std::size_t o = 0; o < bodies_.size(); ++o) {
       if (o == b) continue;
-      const Eigen::Vector3d shift = nearest_image(grid_, boxes[b], boxes[o]);
-      const geometry::Aabb image{boxes[o].min + shift, boxes[o].max + shift};
-      if (may_cover(body, boxes[b], bodies_[o].body, image)) touching.emplace_back(o, shift);
+      for (const Eigen::Vector3d& shift : periodic_shifts(grid_, boxes[o], boxes[b])) {
+        const geometry::Aabb image{boxes[o].min + shift, boxes[o].max + shift};
+        if (may_cover(body, boxes[b], bodies_[o].body, image)) touching.emplace_back(o, shift);
+      }
     }
     for (std::size_t k = 0; k < bodies_[b].markers.size(); ++k) {
       const Marker& m = bodies_[b].markers[k];

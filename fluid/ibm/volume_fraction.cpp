@@ -1,6 +1,7 @@
 #include "fluid/ibm/volume_fraction.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -96,29 +97,43 @@ IndicatorPatch volume_fraction(const Grid& grid, int location, const RigidBody& 
   return {range, std::move(values)};
 }
 
-std::vector<FractionImage> volume_fractions(const Grid& grid, int location, const RigidBody& body,
-                                            const BodyDistance& distance, const Box& within) {
-  std::array<std::vector<double>, 3> shifts{std::vector<double>{0.0}, {0.0}, {0.0}};
-  if (geometry::is_bounded(body.shape)) {
-    const geometry::Aabb box = geometry::world_aabb(body.shape, body.pose);
+std::vector<Eigen::Vector3d> periodic_shifts(const Grid& grid, const geometry::Aabb& box,
+                                             const geometry::Aabb& target) {
+  std::array<std::vector<double>, 3> along{std::vector<double>{0.0}, {0.0}, {0.0}};
+  if (box.is_bounded() && target.is_bounded())
     for (int d = 0; d < 3; ++d) {
       const Axis& axis = grid.axis(d);
       if (!axis.periodic() || axis.degenerate()) continue;
       const double period = axis.hi() - axis.lo();
-      if (box.min[d] < axis.lo()) shifts[d].push_back(period);
-      if (box.max[d] > axis.hi()) shifts[d].push_back(-period);
+      along[d].clear();
+      const auto first = static_cast<long>(std::ceil((target.min[d] - box.max[d]) / period));
+      const auto last = static_cast<long>(std::floor((target.max[d] - box.min[d]) / period));
+      for (long k = first; k <= last; ++k) along[d].push_back(static_cast<double>(k) * period);
     }
+  std::vector<Eigen::Vector3d> out;
+  for (double x : along[0])
+    for (double y : along[1])
+      for (double z : along[2]) out.emplace_back(x, y, z);
+  return out;
+}
+
+std::vector<FractionImage> volume_fractions(const Grid& grid, int location, const RigidBody& body,
+                                            const BodyDistance& distance, const Box& within) {
+  // A face's control volume reaches half a cell beyond the domain (face 0's below its
+  // bottom), so images within a cell of it count.
+  geometry::Aabb domain;
+  for (int d = 0; d < 3; ++d) {
+    const Axis& axis = grid.axis(d);
+    domain.min[d] = axis.lo() - axis.max_width();
+    domain.max[d] = axis.hi() + axis.max_width();
   }
   std::vector<FractionImage> out;
-  for (double x : shifts[0])
-    for (double y : shifts[1])
-      for (double z : shifts[2]) {
-        const Eigen::Vector3d shift(x, y, z);
-        RigidBody image = body;
-        image.pose.set_position(body.pose.position() + shift);
-        IndicatorPatch patch = volume_fraction(grid, location, image, distance, within);
-        if (out.empty() || patch.tested() > 0) out.push_back({std::move(patch), shift});
-      }
+  for (const Eigen::Vector3d& shift : periodic_shifts(grid, geometry::world_aabb(body.shape, body.pose), domain)) {
+    RigidBody image = body;
+    image.pose.set_position(body.pose.position() + shift);
+    IndicatorPatch patch = volume_fraction(grid, location, image, distance, within);
+    if (patch.tested() > 0) out.push_back({std::move(patch), shift});
+  }
   return out;
 }
 

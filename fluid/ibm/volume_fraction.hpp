@@ -27,10 +27,15 @@ double level_set_fraction(std::span<const double> phi);
 bodies::IndicatorPatch volume_fraction(const grid::Grid& grid, int location, const bodies::RigidBody& body,
                                        const BodyDistance& distance, const grid::Box& within);
 
-// The body's fraction and those of its images a period away along the periodic axes that
-// reach into `within` (a fixed body may reach across a periodic face, and the part beyond
-// it lies at the opposite face): one patch per image, with the image's shift from the body.
-// The body itself comes first, its patch empty where it lies wholly beyond the domain.
+// The shifts by whole periods along the periodic axes (zero along the others, and for an
+// unbounded box or target) that make `box` meet `target` along every periodic axis.
+std::vector<Eigen::Vector3d> periodic_shifts(const grid::Grid& grid, const geometry::Aabb& box,
+                                             const geometry::Aabb& target);
+
+// The fractions of the body and of its images whole periods away along the periodic axes
+// (a fixed body may reach across a periodic face, and the part beyond it lies at the
+// opposite face) at the points of `within` they reach: one patch per image, with the
+// image's shift from the body.
 struct FractionImage {
   bodies::IndicatorPatch patch;
   Eigen::Vector3d shift;

@@ -9,10 +9,11 @@
 #include "coupler/scene/geometry_shape.hpp"
 #include "coupler/scene/eigen.hpp"
 #include "coupler/scene/error.hpp"
-#include "coupler/scene/extent.hpp"
 #include "coupler/scene/sections.hpp"
 #include "coupler/scene/reader.hpp"
 #include "fluid/program/confined_inflow.hpp"
+#include "geometry/aabb.hpp"
+#include "geometry/shape.hpp"
 
 namespace cosim::fluid::program {
 namespace {
@@ -218,42 +219,56 @@ fluid::BodyOptions read_body_method(const Reader& options) {
   return out;
 }
 
+// Body b's entry in the scene file's `bodies` list, as a key: a generated body's is its
+// generator's.
+std::string entry_key(const scene::Scene& scene, std::size_t b) {
+  std::size_t entry = b;
+  for (const scene::BodyGenerator& g : scene.generators) {
+    if (b >= g.first && b < g.first + g.count) return "bodies[" + std::to_string(g.entry) + "].generate";
+    if (b >= g.first + g.count) entry = entry + 1 - g.count;
+  }
+  return "bodies[" + std::to_string(entry) + "].position";
+}
+
 // A fixed body may reach across a periodic face (the scene lets fixed bodies reach out of the
 // domain): the immersed boundary wraps its markers and volume fractions round. The staircase
-// does not, and cosim-rigidbody does not wrap bodies, so moving bodies would pass through the
-// part beyond the face.
-void check_wrapping(const scene::Scene& scene, std::size_t b, const std::array<bool, 3>& periodic,
-                    const FluidSetup& s) {
-  const scene::Body& body = scene.bodies[b];
-  const scene::Vec3 reach = scene::half_extent(body.shape, body.orientation);
-  for (std::size_t a = 0; a < 3; ++a) {
-    const bool across = body.position[a] - reach[a] < scene.domain.min[a] - scene::domain_slack ||
-                        body.position[a] + reach[a] > scene.domain.max[a] + scene::domain_slack;
-    if (!periodic[a] || !across) continue;
-    const auto fail = [&](const std::string& why) {
-      throw scene::SceneError(
-          scene.file.string(), body.material_line, "bodies[" + std::to_string(b) + "].position",
-          scene::text(body.position),
-          fmt::format("body '{}' reaches across the periodic {} faces: {}", body.name, "xyz"[a], why));
-    };
-    if (std::holds_alternative<fluid::staircase::FbmOptions>(s.body_method))
-      fail("the staircase does not wrap bodies round (participants.fluid.options.bodies.method: ibm does)");
-    const auto moving = std::find_if(scene.bodies.begin(), scene.bodies.end(), [](const auto& o) { return !o.fixed; });
-    if (moving != scene.bodies.end())
-      fail("cosim-rigidbody does not wrap it round, so body '" + moving->name + "' would pass through its part beyond");
+// does not, cosim-rigidbody does not wrap bodies, so its moving bodies would pass through
+// the part beyond the face, and a body as long as the period would meet itself.
+void check_wrapping(const scene::Scene& scene, const FluidSetup& s) {
+  const auto moving = std::find_if(scene.bodies.begin(), scene.bodies.end(), [](const auto& o) { return !o.fixed; });
+  const bool rigid = std::any_of(scene.participants.begin(), scene.participants.end(),
+                                 [](const scene::Participant& p) { return p.name == "rigidbody"; });
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    if (!geometry::is_bounded(s.bodies[b].shape)) continue;
+    const geometry::Aabb box = geometry::world_aabb(s.bodies[b].shape, s.bodies[b].pose);
+    for (std::size_t a = 0; a < 3; ++a) {
+      const fluid::grid::Axis& axis = s.axes[a];
+      if (!axis.periodic() || axis.degenerate() || (box.min[a] >= axis.lo() && box.max[a] <= axis.hi())) continue;
+      const auto fail = [&](const std::string& why) {
+        const scene::Body& body = scene.bodies[b];
+        throw scene::SceneError(
+            scene.file.string(), body.material_line, entry_key(scene, b), scene::text(body.position),
+            fmt::format("body '{}' reaches across the periodic {} faces: {}", body.name, "xyz"[a], why));
+      };
+      if (box.max[a] - box.min[a] >= axis.hi() - axis.lo())
+        fail("it is as long as the period or longer, and would meet itself");
+      if (std::holds_alternative<fluid::staircase::FbmOptions>(s.body_method))
+        fail("the staircase does not wrap bodies round (participants.fluid.options.bodies.method: ibm does)");
+      if (rigid && moving != scene.bodies.end())
+        fail("cosim-rigidbody does not wrap it round, so body '" + moving->name +
+             "' would pass through its part beyond");
+    }
   }
 }
 
 // Neither method holds a half-space.
-void read_bodies(const scene::Scene& scene, const scene::Participant& p, const std::array<bool, 3>& periodic,
-                 FluidSetup& s) {
+void read_bodies(const scene::Scene& scene, const scene::Participant& p, FluidSetup& s) {
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& body = scene.bodies[b];
     const std::string key = "bodies[" + std::to_string(b) + "].shape.type";
     if (body.shape.type == scene::ShapeType::Plane)
       throw scene::SceneError(scene.file.string(), p.line, key, "plane",
                               "cosim-fluid cannot hold a plane body: make it a wall boundary (participants.fluid)");
-    check_wrapping(scene, b, periodic, s);
     fluid::bodies::RigidBody r{.shape = scene::shape_of(body.shape), .pose = {}};
     const Eigen::Quaterniond q = scene::to_eigen(body.orientation);
     const Eigen::Vector3d x = scene::to_eigen(body.position) + q * scene::com_shift(r.shape);
@@ -312,9 +327,10 @@ FluidSetup fluid_setup(const scene::Scene& scene) {
   } catch (const std::invalid_argument& e) {
     options.fail("petsc", e.what());
   }
-  read_bodies(scene, p, periodic, s);
+  read_bodies(scene, p, s);
   confine_inflows(confined, s);
   s.motions = read_motions(scene, options, std::move(s.motions));
+  check_wrapping(scene, s);
   options.finish();
   return s;
 }

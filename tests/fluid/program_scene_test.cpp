@@ -243,6 +243,14 @@ TEST(FluidScene, AFixedBodyAcrossAPeriodicFaceNeedsTheImmersedBoundaryAndNoMovin
       error_of(replaced(with_ball, "participants:\n", "participants:\n  rigidbody:\n    dt: 0.01\n"));
   EXPECT_EQ(moving.key, "bodies[1].position");
   EXPECT_NE(std::string(moving.what()).find("body 'ball' would pass through"), std::string::npos) << moving.what();
+  // Wider than the period (0.2 m across y) it would meet itself.
+  const scene::SceneError wide = error_of(replaced(across, "radius: 0.03", "radius: 0.11"));
+  EXPECT_NE(std::string(wide.what()).find("as long as the period"), std::string::npos) << wide.what();
+  // The one-cell periodic axis of a two-dimensional grid has no faces to reach across.
+  EXPECT_EQ(setup_of(replaced(replaced(testing::channel_scene(), "height: 0.01", "height: 0.03"),
+                              "bodies: {tolerance: 1.0e-9}", "bodies: {method: staircase}"))
+                .bodies.size(),
+            1u);
 }
 
 }  // namespace
