@@ -15,7 +15,7 @@ feel among their neighbours, where a single sphere or a simple cubic array (dens
 leaves out the near pairs a random bed has.
 
     bench/fluid_accuracy/random_arrays.py [--fractions 0.1 0.2 0.3] [--spheres N]
-        [--d-over-h 6] [--seeds K] [--gap CELLS] [--csv FILE] [--check --within PERCENT]
+        [--d-over-h 6] [--seeds K] [--first-seed S] [--gap CELLS] [--csv FILE] [--check --within PERCENT]
 
 The placement is random sequential addition followed by Monte Carlo sweeps of hard-sphere
 moves (a hard-sphere fluid's structure, near pairs included, up to phi about 0.35), each
@@ -131,6 +131,7 @@ def main():
     parser.add_argument("--spheres", type=int, default=32, help="spheres in the box")
     parser.add_argument("--d-over-h", type=float, default=6.0, help="cells per diameter")
     parser.add_argument("--seeds", type=int, default=3, help="arrays per fraction")
+    parser.add_argument("--first-seed", type=int, default=1, help="the first array's seed")
     parser.add_argument("--gap", type=float, default=0.0, help="least gap between surfaces, in cells")
     parser.add_argument("--csv", help="write the rows into this CSV")
     parser.add_argument("--check", action="store_true", help="compare the first fraction's mean and exit 1 if off")
@@ -142,12 +143,13 @@ def main():
     fractions = args.fractions[:1] if args.check else args.fractions
     command = (f"bench/fluid_accuracy/random_arrays.py --fractions {' '.join(f'{p:g}' for p in fractions)} "
                f"--spheres {args.spheres} --d-over-h {args.d_over_h:g} --seeds {args.seeds}")
+    command += f" --first-seed {args.first_seed}" if args.first_seed != 1 else ""
     command += f" --gap {args.gap:g}" if args.gap else ""
     means = {}
     with tempfile.TemporaryDirectory() as folder:
         for phi in fractions:
             values = []
-            for seed in range(1, args.seeds + 1):
+            for seed in range(args.first_seed, args.first_seed + args.seeds):
                 row = run_case(args.fluid, phi, args.spheres, args.d_over_h, args.gap, seed, folder)
                 row["command"] = command
                 values.append(float(row["F"]))
