@@ -26,7 +26,6 @@ import sys
 import tempfile
 from pathlib import Path
 
-import h5py
 import yaml
 
 ROOT = Path(__file__).resolve().parent.parent.parent
@@ -75,12 +74,10 @@ def array_scene(alpha, beads, seed, end):
     return scene, alpha, cells
 
 
-def superficial_velocity(run_file, since):
-    """The mean z velocity over the box, averaged over the fields from `since` on, and its
-    standard deviation over them."""
-    with h5py.File(run_file, "r") as f:
-        frames = [g for g in f["fields/fluid"].values() if "velocity" in g and g.attrs["time"] >= since]
-        values = [float(g["velocity"][..., 2].mean()) for g in frames]
+def superficial_velocity(result, since):
+    """The mean z velocity over the box (periodic_box.run's `means`), averaged over the
+    fields from `since` on, and its standard deviation over them."""
+    values = [m[2] for t, m in zip(result["times"], result["means"]) if t >= since]
     return statistics.fmean(values), statistics.stdev(values) if len(values) > 1 else 0.0
 
 
@@ -103,7 +100,7 @@ def main():
                 scene, alpha, cells = array_scene(asked, args.beads, seed, args.end)
                 name = f"alpha{asked}_seed{seed}"
                 result = periodic_box.run(args.fluid, scene, folder, name)
-                u, spread = superficial_velocity(Path(folder) / f"{name}.h5", args.end / 2)
+                u, spread = superficial_velocity(result, args.end / 2)
                 values.append(u)
                 print(f"alpha {alpha:.3f} ({args.beads} beads, {cells}^3 cells), seed {seed}: U_s {u:.4f} m/s "
                       f"(+- {spread:.4f} over the second half); {result['steps']} steps, {result['wall']:.0f} s",

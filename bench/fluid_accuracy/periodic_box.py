@@ -3,7 +3,8 @@ spheres in: a unit box, periodic on every face, the fluid driven through it by a
 force. `run` runs a variant through `cosim-fluid --standalone` and reads the mean velocity
 over the box (spheres included) from its last field: in the steady state the drive on the
 whole box, rho f L^3, is the drag on all its spheres, and the mean velocity is the
-superficial velocity through them. dense_arrays.py and random_arrays.py use it.
+superficial velocity through them. dense_arrays.py, random_arrays.py and
+bench/beds/bed_drag.py use it.
 """
 import math
 import re
@@ -30,9 +31,10 @@ def drive(scene):
 
 
 def run(fluid, scene, folder, name):
-    """Runs `scene` (its output into `folder`/`name`.h5); returns the mean x velocity over the
-    box at the last field, its relative change since the field before, the steps and the
-    wall time."""
+    """Runs `scene` (its output into `folder`/`name`.h5); returns the mean velocity over the
+    box at each field (`times`, `means`: a 3-vector each), the mean x velocity at the last
+    field (`u`) and its relative change since the field before (`change`), the steps and
+    the wall time."""
     run_file = Path(folder) / f"{name}.h5"
     scene["output"]["file"] = str(run_file)
     scene_file = Path(folder) / f"{name}.yaml"
@@ -45,5 +47,8 @@ def run(fluid, scene, folder, name):
     steps = re.search(r"(\d+) steps", done.stdout + done.stderr)
     with h5py.File(run_file, "r") as f:
         frames = sorted((g for g in f["fields/fluid"].values() if "velocity" in g), key=lambda g: g.attrs["time"])
-        u, before = (float(g["velocity"][..., 0].mean()) for g in (frames[-1], frames[-2]))
-    return {"u": u, "change": abs(u - before) / abs(u), "steps": steps.group(1) if steps else "", "wall": wall}
+        times = [float(g.attrs["time"]) for g in frames]
+        means = [[float(g["velocity"][..., c].mean()) for c in range(3)] for g in frames]
+    u, before = means[-1][0], means[-2][0]
+    return {"times": times, "means": means, "u": u, "change": abs(u - before) / abs(u),
+            "steps": steps.group(1) if steps else "", "wall": wall}

@@ -57,21 +57,17 @@ bool overlap(const geometry::Aabb& a, const geometry::Aabb& b) {
 }
 
 // Whether `box` comes within `reach` of the largest cell width of the cells `cells` on
-// every axis (on a periodic axis also a period away): a body that does not has no marker
-// whose kernel touches them.
+// every axis (on a periodic axis also whole periods away): a body that does not has no
+// marker whose kernel touches them.
 bool near(const Grid& grid, const Box& cells, const geometry::Aabb& box, double reach) {
+  geometry::Aabb target;
   for (int d = 0; d < 3; ++d) {
     const Axis& axis = grid.axis(d);
-    if (axis.degenerate()) continue;
     const double margin = reach * axis.max_width();
-    const double lo = axis.face(static_cast<int>(cells.lo[d])) - margin;
-    const double hi = axis.face(static_cast<int>(cells.hi[d])) + margin;
-    const double period = axis.periodic() ? axis.hi() - axis.lo() : 0;
-    bool meets = false;
-    for (double shift : {0.0, -period, period}) meets = meets || (box.min[d] + shift <= hi && box.max[d] + shift >= lo);
-    if (!meets) return false;
+    target.min[d] = axis.face(static_cast<int>(cells.lo[d])) - margin;
+    target.max[d] = axis.face(static_cast<int>(cells.hi[d])) + margin;
   }
-  return true;
+  return !periodic_shifts(grid, box, target).empty();
 }
 
 // The retraction's law was calibrated at h kappa = 1/3 and 1/2 (spheres of twelve and eight

@@ -103,9 +103,13 @@ std::vector<Eigen::Vector3d> periodic_shifts(const Grid& grid, const geometry::A
   if (box.is_bounded() && target.is_bounded())
     for (int d = 0; d < 3; ++d) {
       const Axis& axis = grid.axis(d);
-      if (!axis.periodic() || axis.degenerate()) continue;
-      const double period = axis.hi() - axis.lo();
+      if (axis.degenerate()) continue;
       along[d].clear();
+      if (!axis.periodic()) {
+        if (box.min[d] <= target.max[d] && box.max[d] >= target.min[d]) along[d].push_back(0.0);
+        continue;
+      }
+      const double period = axis.hi() - axis.lo();
       const auto first = static_cast<long>(std::ceil((target.min[d] - box.max[d]) / period));
       const auto last = static_cast<long>(std::floor((target.max[d] - box.min[d]) / period));
       for (long k = first; k <= last; ++k) along[d].push_back(static_cast<double>(k) * period);

@@ -27,8 +27,9 @@ double level_set_fraction(std::span<const double> phi);
 bodies::IndicatorPatch volume_fraction(const grid::Grid& grid, int location, const bodies::RigidBody& body,
                                        const BodyDistance& distance, const grid::Box& within);
 
-// The shifts by whole periods along the periodic axes (zero along the others, and for an
-// unbounded box or target) that make `box` meet `target` along every periodic axis.
+// The shifts by whole periods along the periodic axes that make `box` meet `target`: none
+// if no shift does; along the other axes zero, where the two must meet as they are, and
+// zero everywhere for an unbounded box or target (a container meets everything).
 std::vector<Eigen::Vector3d> periodic_shifts(const grid::Grid& grid, const geometry::Aabb& box,
                                              const geometry::Aabb& target);
 
